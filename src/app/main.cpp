@@ -1,0 +1,103 @@
+// cablefilm: argument parsing only; the work is in commands.cpp.
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "app/commands.h"
+#include "core/error.h"
+
+namespace {
+
+const char* kUsage =
+    "usage: cablefilm run SCENE [options]   simulate, write the results and the film\n"
+    "       cablefilm check SCENE           validate a scene and print its summary\n"
+    "\n"
+    "run options:\n"
+    "  --out DIR              output folder (default output/<scene name>)\n"
+    "  --no-film              result files only, no rendering\n"
+    "  --frames               also keep every frame as PNG under DIR/frames/\n"
+    "  --size WxH             film size in pixels, even numbers (default 1920x1080)\n"
+    "  --fps N                film frames per second (default 30)\n"
+    "  --speed X              simulated seconds per second of film (default 1: real time)\n"
+    "  --colormap NAME        viridis (default), cividis, magma, inferno or plasma\n"
+    "  --tension-range A,B    colour and plot range in N (default: the run's range)\n"
+    "  --shaders DIR          GLSL shader folder (default: $CABLEFILM_SHADERS or built-in)\n";
+
+[[noreturn]] void UsageError(const std::string& message) {
+  std::fprintf(stderr, "cablefilm: %s\n%s", message.c_str(), kUsage);
+  std::exit(2);
+}
+
+double ParseNumber(const std::string& option, const char* text) {
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(v > 0))
+    UsageError(option + ": expected a positive number, got \"" + text + "\"");
+  return v;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) UsageError("missing command");
+  const std::string command = argv[1];
+  if (command == "--help" || command == "-h" || command == "help") {
+    std::printf("%s", kUsage);
+    return 0;
+  }
+  if (command != "run" && command != "check") UsageError("unknown command \"" + command + "\"");
+  std::string scene;
+  cablefilm::RunOptions options;
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> const char* {
+      if (i + 1 >= argc) UsageError(arg + ": missing value");
+      return argv[++i];
+    };
+    if (command == "run" && arg == "--out") {
+      options.out_dir = value();
+    } else if (command == "run" && arg == "--no-film") {
+      options.film = 0;
+    } else if (command == "run" && arg == "--film") {
+      options.film = 1;
+    } else if (command == "run" && arg == "--frames") {
+      options.frames = 1;
+      if (options.film < 0) options.film = 1;
+    } else if (command == "run" && arg == "--size") {
+      const char* v = value();
+      if (std::sscanf(v, "%dx%d", &options.width, &options.height) != 2 || options.width < 16 ||
+          options.height < 16 || options.width % 2 || options.height % 2)
+        UsageError("--size: expected WxH with even numbers of pixels, got \"" + std::string(v) + "\"");
+    } else if (command == "run" && arg == "--fps") {
+      options.fps = ParseNumber(arg, value());
+    } else if (command == "run" && arg == "--speed") {
+      options.speed = ParseNumber(arg, value());
+    } else if (command == "run" && arg == "--colormap") {
+      options.colormap = value();
+    } else if (command == "run" && arg == "--tension-range") {
+      const char* v = value();
+      if (std::sscanf(v, "%lf,%lf", &options.tension_min, &options.tension_max) != 2 ||
+          !(options.tension_min >= 0) || !(options.tension_max > options.tension_min))
+        UsageError("--tension-range: expected MIN,MAX in N with MAX > MIN >= 0, got \"" +
+                   std::string(v) + "\"");
+    } else if (command == "run" && arg == "--shaders") {
+      options.shader_dir = value();
+    } else if (!arg.empty() && arg[0] == '-') {
+      UsageError("unknown option \"" + arg + "\" for " + command);
+    } else if (scene.empty()) {
+      scene = arg;
+    } else {
+      UsageError("more than one scene given");
+    }
+  }
+  if (scene.empty()) UsageError("missing SCENE");
+  try {
+    return command == "run" ? cablefilm::RunCommand(scene, options)
+                            : cablefilm::CheckCommand(scene);
+  } catch (const cablefilm::Error& e) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "cablefilm: error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,34 @@
+#include "app/result_files.h"
+
+namespace cablefilm {
+
+void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const CableState& state,
+                         const Eigen::VectorXd& tension) {
+  AtomicFile file(path);
+  std::FILE* f = file.stream();
+  std::fprintf(f, "j,s,x,y,tension\n");
+  for (int j = 0; j <= m.links; ++j) {
+    std::fprintf(f, "%d,%.10g,%.12g,%.12g,", j, m.arc_length[j], state.x(0, j), state.x(1, j));
+    if (j < m.links) std::fprintf(f, "%.10g", tension[j]);
+    std::fprintf(f, "\n");
+  }
+  file.Commit();
+}
+
+TimeseriesWriter::TimeseriesWriter(const std::string& path) : file_(path) {
+  std::fprintf(file_.stream(), "t,x_end,y_end,tension_start,tension_end,tension_max,link_max\n");
+}
+
+void TimeseriesWriter::Append(const CableModel& m, const CableState& s,
+                              const Eigen::VectorXd& tension) {
+  Eigen::Index link_max = 0;
+  const double t_max = tension.maxCoeff(&link_max);
+  std::fprintf(file_.stream(), "%.10g,%.12g,%.12g,%.10g,%.10g,%.10g,%d\n", s.t, s.x(0, m.links),
+               s.x(1, m.links), tension[0], tension[m.links - 1], t_max,
+               static_cast<int>(link_max));
+}
+
+void TimeseriesWriter::Commit() { file_.Commit(); }
+void TimeseriesWriter::CommitPartial(const std::string& path) { file_.CommitAs(path); }
+
+}  // namespace cablefilm

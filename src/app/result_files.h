@@ -1,0 +1,29 @@
+#pragma once
+// The result files of scene-format.md, each written whole or not at all.
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+
+#include "core/cable_model.h"
+#include "core/cable_state.h"
+#include "io/atomic_file.h"
+
+namespace cablefilm {
+
+// equilibrium.csv: j,s,x,y,tension (tension of link j+1/2; empty on the last row).
+void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const CableState& state,
+                         const Eigen::VectorXd& tension);
+
+// timeseries.csv: t,x_end,y_end,tension_start,tension_end,tension_max,link_max.
+class TimeseriesWriter {
+ public:
+  explicit TimeseriesWriter(const std::string& path);
+  void Append(const CableModel& m, const CableState& state, const Eigen::VectorXd& tension);
+  void Commit();                                  // the complete file, under its name
+  void CommitPartial(const std::string& path);    // an incomplete run, under another name
+
+ private:
+  AtomicFile file_;
+};
+
+}  // namespace cablefilm

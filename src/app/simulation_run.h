@@ -1,0 +1,41 @@
+#pragma once
+// The simulation loop shared by the commands and the benchmarks: the time grid, the initial
+// state, and stepping from output to output.
+#include <Eigen/Core>
+#include <functional>
+
+#include "core/cable_model.h"
+#include "core/cable_state.h"
+#include "core/equilibrium.h"
+#include "core/integrator.h"
+#include "core/stability.h"
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+struct TimeGrid {
+  double interval = 0;       // between outputs [s]
+  double dt = 0;             // time step [s], interval / steps_per_output
+  int steps_per_output = 1;
+  long outputs = 0;          // outputs after t = 0; the run ends at outputs * interval
+  bool automatic = true;     // dt from the stability limit (else the scene's time_step)
+  StabilityLimit limit;      // of the explicit scheme
+  double safety_factor = 0.8;
+};
+
+// The largest step not above the requested one (or safety x limit) that divides the interval.
+TimeGrid ChooseTimeGrid(const CableModel& m, const SimulationDef& sim, double interval);
+
+// The scene's initial state: static equilibrium (the report is filled) or the straight chord.
+CableState MakeInitialState(const SceneDef& scene, const CableModel& m,
+                            EquilibriumReport* report);
+
+// Called at t = 0 and after every interval with the state and its link tensions [N]; return
+// false to stop early.
+using OutputCallback = std::function<bool(const CableState&, const Eigen::VectorXd& tension)>;
+
+// Returns true if the run reached its end, false if the callback stopped it. Throws BlowUpError.
+bool Simulate(const CableModel& m, Integrator& integrator, CableState& state,
+              const TimeGrid& grid, const OutputCallback& on_output);
+
+}  // namespace cablefilm

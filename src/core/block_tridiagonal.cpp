@@ -1,0 +1,44 @@
+#include "core/block_tridiagonal.h"
+
+#include <Eigen/LU>
+#include <cmath>
+
+namespace cablefilm {
+
+void BlockTridiagonal::Resize(int n) {
+  lower.resize(n);
+  diag.resize(n);
+  upper.resize(n);
+  rhs.resize(n);
+  c_prime_.resize(n);
+}
+
+void BlockTridiagonal::SetZero() {
+  for (int i = 0; i < size(); ++i) {
+    lower[i].setZero();
+    diag[i].setZero();
+    upper[i].setZero();
+    rhs[i].setZero();
+  }
+}
+
+bool BlockTridiagonal::Solve() {
+  const int n = size();
+  for (int i = 0; i < n; ++i) {
+    Eigen::Matrix2d pivot = diag[i];
+    if (i > 0) {
+      pivot.noalias() -= lower[i] * c_prime_[i - 1];
+      rhs[i].noalias() -= lower[i] * rhs[i - 1];
+    }
+    const double det = pivot.determinant();
+    const double scale = pivot.cwiseAbs().maxCoeff();
+    if (!(std::abs(det) > 1e-14 * scale * scale)) return false;
+    const Eigen::Matrix2d inv = pivot.inverse();
+    if (i + 1 < n) c_prime_[i].noalias() = inv * upper[i];
+    rhs[i] = inv * rhs[i];
+  }
+  for (int i = n - 2; i >= 0; --i) rhs[i].noalias() -= c_prime_[i] * rhs[i + 1];
+  return true;
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,121 @@
+#include "core/end_motion.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace cablefilm {
+
+EndMotion EndMotion::Fixed(Eigen::Vector2d rest) {
+  EndMotion m;
+  m.kind_ = EndKind::kFixed;
+  m.rest_ = rest;
+  return m;
+}
+
+EndMotion EndMotion::Free(Eigen::Vector2d start) {
+  EndMotion m;
+  m.kind_ = EndKind::kFree;
+  m.rest_ = start;
+  return m;
+}
+
+EndMotion EndMotion::Trochoid(Eigen::Vector2d rest, double a, double b, double c, double d,
+                              double omega, double nu) {
+  EndMotion m;
+  m.kind_ = EndKind::kTrochoid;
+  m.rest_ = rest;
+  m.a_ = a;
+  m.b_ = b;
+  m.c_ = c;
+  m.d_ = d;
+  m.omega_ = omega;
+  m.nu_ = nu;
+  return m;
+}
+
+EndMotion EndMotion::Table(Eigen::Vector2d rest, const std::vector<Eigen::Vector3d>& rows) {
+  if (rows.size() < 2) throw Error("end motion table needs at least two rows");
+  EndMotion m;
+  m.kind_ = EndKind::kTable;
+  m.rest_ = rest;
+  const size_t n = rows.size();
+  m.knot_t_.resize(n);
+  m.knot_p_.resize(n);
+  m.knot_m_.assign(n, Eigen::Vector2d::Zero());
+  for (size_t i = 0; i < n; ++i) {
+    m.knot_t_[i] = rows[i][0];
+    m.knot_p_[i] = rows[i].tail<2>();
+    if (i > 0 && !(m.knot_t_[i] > m.knot_t_[i - 1]))
+      throw Error("end motion table: times must increase strictly (row " + std::to_string(i + 1) +
+                  ")");
+  }
+  // Natural cubic spline (zero second derivative at both ends): tridiagonal solve for the
+  // second derivatives M_i, so position, velocity and acceleration are all continuous.
+  std::vector<double> c_prime(n, 0.0);
+  std::vector<Eigen::Vector2d> d_prime(n, Eigen::Vector2d::Zero());
+  for (size_t i = 1; i + 1 < n; ++i) {
+    const double h0 = m.knot_t_[i] - m.knot_t_[i - 1];
+    const double h1 = m.knot_t_[i + 1] - m.knot_t_[i];
+    const Eigen::Vector2d rhs =
+        6.0 * ((m.knot_p_[i + 1] - m.knot_p_[i]) / h1 - (m.knot_p_[i] - m.knot_p_[i - 1]) / h0);
+    const double diag = 2.0 * (h0 + h1) - h0 * c_prime[i - 1];
+    c_prime[i] = h1 / diag;
+    d_prime[i] = (rhs - h0 * d_prime[i - 1]) / diag;
+  }
+  for (size_t i = n - 1; i-- > 1;) m.knot_m_[i] = d_prime[i] - c_prime[i] * m.knot_m_[i + 1];
+  return m;
+}
+
+Eigen::Vector2d EndMotion::Position(double t) const { return Evaluate(t, 0); }
+Eigen::Vector2d EndMotion::Velocity(double t) const { return Evaluate(t, 1); }
+Eigen::Vector2d EndMotion::Acceleration(double t) const { return Evaluate(t, 2); }
+
+Eigen::Vector2d EndMotion::Evaluate(double t, int order) const {
+  switch (kind_) {
+    case EndKind::kTrochoid:
+      return EvaluateTrochoid(t, order);
+    case EndKind::kTable:
+      return EvaluateTable(t, order);
+    case EndKind::kFixed:
+    case EndKind::kFree:
+      break;
+  }
+  return order == 0 ? rest_ : Eigen::Vector2d::Zero();
+}
+
+Eigen::Vector2d EndMotion::EvaluateTrochoid(double t, int order) const {
+  if (t <= 0) return order == 0 ? rest_ : Eigen::Vector2d::Zero();
+  // Ramp R(t) = 1 - (1 + nu t) e^{-nu t}; R' = nu^2 t e^{-nu t}; R'' = nu^2 (1 - nu t) e^{-nu t}.
+  const double e = std::exp(-nu_ * t);
+  const double ramp[3] = {1.0 - (1.0 + nu_ * t) * e, nu_ * nu_ * t * e,
+                          nu_ * nu_ * (1.0 - nu_ * t) * e};
+  // Orbit P(t) = (a cos wt + b sin wt, c cos wt + d sin wt) and its derivatives.
+  const double co = std::cos(omega_ * t), si = std::sin(omega_ * t);
+  const Eigen::Vector2d p0(a_ * co + b_ * si, c_ * co + d_ * si);
+  const Eigen::Vector2d p1 = omega_ * Eigen::Vector2d(-a_ * si + b_ * co, -c_ * si + d_ * co);
+  const Eigen::Vector2d p2 = -omega_ * omega_ * p0;
+  if (order == 0) return rest_ + ramp[0] * p0;
+  if (order == 1) return ramp[1] * p0 + ramp[0] * p1;
+  return ramp[2] * p0 + 2.0 * ramp[1] * p1 + ramp[0] * p2;
+}
+
+Eigen::Vector2d EndMotion::EvaluateTable(double t, int order) const {
+  const size_t n = knot_t_.size();
+  if (t <= knot_t_.front()) return order == 0 ? Eigen::Vector2d(rest_ + knot_p_.front()) : Eigen::Vector2d::Zero();
+  if (t >= knot_t_.back()) return order == 0 ? Eigen::Vector2d(rest_ + knot_p_.back()) : Eigen::Vector2d::Zero();
+  const size_t i =
+      std::min<size_t>(n - 2, std::upper_bound(knot_t_.begin(), knot_t_.end(), t) - knot_t_.begin() - 1);
+  const double h = knot_t_[i + 1] - knot_t_[i];
+  const double A = (knot_t_[i + 1] - t) / h, B = (t - knot_t_[i]) / h;
+  const Eigen::Vector2d &p0 = knot_p_[i], &p1 = knot_p_[i + 1];
+  const Eigen::Vector2d &m0 = knot_m_[i], &m1 = knot_m_[i + 1];
+  if (order == 0)
+    return rest_ + A * p0 + B * p1 + ((A * A * A - A) * m0 + (B * B * B - B) * m1) * (h * h / 6.0);
+  if (order == 1)
+    return (p1 - p0) / h + (-(3 * A * A - 1) * m0 + (3 * B * B - 1) * m1) * (h / 6.0);
+  return A * m0 + B * m1;
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,55 @@
+#pragma once
+// How an end of the cable (station 0 or s) moves. A prescribed end's position, velocity and
+// acceleration are exact functions of time, evaluated at every stage of every step: a
+// piecewise-constant end velocity would shake the stiff axial modes.
+#include <Eigen/Core>
+#include <vector>
+
+namespace cablefilm {
+
+enum class EndKind {
+  kFixed,     // stays at its rest position
+  kFree,      // an ordinary station with one link (a dangling or towed end)
+  kTrochoid,  // eq. (3) of the paper
+  kTable,     // offsets (t, dx, dy) from a table, natural cubic spline in time
+};
+
+class EndMotion {
+ public:
+  static EndMotion Fixed(Eigen::Vector2d rest);
+  static EndMotion Free(Eigen::Vector2d start);
+  // Eq. (3): x = x0 + R(t)(a cos wt + b sin wt), y = y0 + R(t)(c cos wt + d sin wt),
+  // R(t) = 1 - (1 + nu t) exp(-nu t).
+  static EndMotion Trochoid(Eigen::Vector2d rest, double a, double b, double c, double d,
+                            double omega, double nu);
+  // Rows (t [s], dx [m], dy [m]), t strictly increasing, at least two rows. Offsets are added
+  // to `rest`; before the first row and after the last the end holds still at that row.
+  static EndMotion Table(Eigen::Vector2d rest, const std::vector<Eigen::Vector3d>& rows);
+
+  EndKind kind() const { return kind_; }
+  bool prescribed() const { return kind_ != EndKind::kFree; }
+  bool moves() const { return kind_ == EndKind::kTrochoid || kind_ == EndKind::kTable; }
+  const Eigen::Vector2d& rest() const { return rest_; }
+
+  Eigen::Vector2d Position(double t) const;      // [m]
+  Eigen::Vector2d Velocity(double t) const;      // [m/s]
+  Eigen::Vector2d Acceleration(double t) const;  // [m/s^2]
+
+ private:
+  // Value (order 0), velocity (1) or acceleration (2).
+  Eigen::Vector2d Evaluate(double t, int order) const;
+  Eigen::Vector2d EvaluateTrochoid(double t, int order) const;
+  Eigen::Vector2d EvaluateTable(double t, int order) const;
+
+  EndKind kind_ = EndKind::kFixed;
+  Eigen::Vector2d rest_ = Eigen::Vector2d::Zero();  // x_s^0, y_s^0 [m]
+  // Trochoid, eq. (3).
+  double a_ = 0, b_ = 0, c_ = 0, d_ = 0;  // [m]
+  double omega_ = 0;                      // omega_s [rad/s]
+  double nu_ = 0;                         // nu_s [1/s]
+  // Table: knots and the spline's second derivatives at the knots.
+  std::vector<double> knot_t_;
+  std::vector<Eigen::Vector2d> knot_p_, knot_m_;
+};
+
+}  // namespace cablefilm

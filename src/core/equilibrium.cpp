@@ -1,0 +1,308 @@
+#include "core/equilibrium.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/block_tridiagonal.h"
+#include "core/error.h"
+#include "core/forces.h"
+
+namespace cablefilm {
+namespace {
+
+double MinAxialStiffness(const CableModel& m) { return m.axial_stiffness.minCoeff(); }
+
+// Stations hanging from the prescribed end along the net weight, each link stretched by the
+// weight it carries (exact for a vertical chain in still fluid).
+Eigen::Matrix2Xd HangingGuess(const CableModel& m) {
+  const bool from_start = m.start.prescribed();
+  const Eigen::Vector2d top = from_start ? m.start.Position(0) : m.end.Position(0);
+  const double total = m.net_weight.sum();
+  const Eigen::Vector2d dir(0.0, total >= 0 ? -1.0 : 1.0);
+  Eigen::Matrix2Xd x(2, m.stations());
+  const int s = m.links;
+  double carried = 0, along = 0;  // weight below the link [N], stretched length so far [m]
+  // Walk from the free end towards the prescribed one, accumulating the carried weight.
+  Eigen::VectorXd stretched(s);
+  for (int k = 0; k < s; ++k) {
+    const int link = from_start ? s - 1 - k : k;
+    const int below = from_start ? link + 1 : link;
+    carried += m.net_weight[below];
+    stretched[link] = m.rest_length[link] * (1.0 + std::abs(carried) / m.axial_stiffness[link]);
+  }
+  for (int k = 0; k <= s; ++k) {
+    const int j = from_start ? k : s - k;
+    x.col(j) = top + along * dir;
+    if (k < s) along += stretched[from_start ? j : j - 1];
+  }
+  return x;
+}
+
+// Stations on the catenary of length `length` through a and b, at arc length proportional to
+// the unstretched arc length; `sag_up` flips it for a buoyant cable.
+Eigen::Matrix2Xd CatenaryGuess(const CableModel& m, const Eigen::Vector2d& a,
+                               const Eigen::Vector2d& b, double length, bool sag_up) {
+  const double sx = b.x() >= a.x() ? 1.0 : -1.0, sy = sag_up ? -1.0 : 1.0;
+  const double h = std::abs(b.x() - a.x());
+  const double v = sy * (b.y() - a.y());
+  const double S = std::sqrt(length * length - v * v);
+  // Solve sinh(z)/z = S/h for z = h/(2a) by bisection (the left side increases with z).
+  double lo = 1e-9, hi = 700.0;
+  for (int it = 0; it < 200; ++it) {
+    const double z = 0.5 * (lo + hi);
+    (std::sinh(z) / z < S / h ? lo : hi) = z;
+  }
+  const double z = 0.5 * (lo + hi);
+  const double c = h / (2.0 * z);                       // catenary parameter H/w [m]
+  const double xm = 0.5 * h - c * std::atanh(v / length);  // abscissa of the lowest point
+  const double s0 = std::sinh(-xm / c), c0 = std::cosh(-xm / c);
+  Eigen::Matrix2Xd x(2, m.stations());
+  for (int j = 0; j <= m.links; ++j) {
+    const double arc = m.arc_length[j] / m.total_length() * length;
+    const double xl = xm + c * std::asinh(arc / c + s0);
+    const double yl = c * (std::cosh((xl - xm) / c) - c0);
+    x.col(j) = a + Eigen::Vector2d(sx * xl, sy * yl);
+  }
+  x.col(0) = a;
+  x.col(m.links) = b;
+  return x;
+}
+
+// Residual (out-of-balance force on every station, ends at rest) and, when `system` is given,
+// the negated Jacobian -dR/dx of the free stations plus beta on the diagonal.
+class StaticProblem {
+ public:
+  explicit StaticProblem(const CableModel& m)
+      : m_(m), ws_(m.links), zero_v_(Eigen::Matrix2Xd::Zero(2, m.stations())),
+        system_(m.last_free() - m.first_free() + 1) {}
+
+  const Eigen::Matrix2Xd& Residual(const Eigen::Matrix2Xd& x) {
+    ComputeGeometry(x, ws_.geometry);
+    ComputeHookeTensions(m_, ws_.geometry, ws_.tension);
+    ComputeStationForces(m_, ws_.geometry, ws_.tension, zero_v_, ws_.force);
+    return ws_.force;
+  }
+  double MaxResidual(int* station = nullptr) const {
+    double r = 0;
+    for (int j = m_.first_free(); j <= m_.last_free(); ++j) {
+      const double f = ws_.force.col(j).lpNorm<Eigen::Infinity>();
+      if (!(f <= r)) {  // also catches NaN
+        r = f;
+        if (station) *station = j;
+      }
+    }
+    return r;
+  }
+  double ResidualDot(const Eigen::Matrix2Xd& dx) const {
+    double d = 0;
+    for (int j = m_.first_free(); j <= m_.last_free(); ++j) d += ws_.force.col(j).dot(dx.col(j));
+    return d;
+  }
+  double ResidualNorm2() const {
+    return ws_.force.middleCols(m_.first_free(), m_.last_free() - m_.first_free() + 1)
+        .squaredNorm();
+  }
+  // Total potential energy of the conservative forces: strain energy plus net weight [J].
+  double Energy(const Eigen::Matrix2Xd& x) {
+    ComputeGeometry(x, ws_.geometry);
+    return ElasticEnergy(m_, ws_.geometry) + PotentialEnergy(m_, x);
+  }
+
+  // Solves (-J + beta I) dx = R at x (Residual(x) must be current). Returns false if singular.
+  bool NewtonStep(double beta, Eigen::Matrix2Xd& dx) {
+    const int j0 = m_.first_free(), j1 = m_.last_free();
+    system_.SetZero();
+    const Eigen::Vector2d w(-m_.current, 0.0);  // velocity of a still cable relative to the fluid
+    for (int k = 0; k < m_.links; ++k) {
+      const double L = ws_.geometry.length[k];
+      const Eigen::Vector2d t = ws_.geometry.tangent.col(k);
+      const Eigen::Matrix2d tt = t * t.transpose();
+      const Eigen::Matrix2d P = Eigen::Matrix2d::Identity() - tt;
+      const double dTdL = L > m_.rest_length[k] ? m_.axial_stiffness[k] / m_.rest_length[k] : 0.0;
+      Eigen::Matrix2d G = dTdL * tt;  // d(T t)/dd, d = x_{k+1} - x_k
+      if (L > 0) G += (ws_.tension[k] / L) * P;
+      Eigen::Matrix2d H = Eigen::Matrix2d::Zero();  // d(D n / 2)/dd, drag of the current
+      if (m_.current != 0 && m_.drag_factor[k] != 0 && L > 0) {
+        const Eigen::Vector2d n(-t.y(), t.x());
+        Eigen::Matrix2d dn;  // dn/dd = R P / L with R the quarter turn
+        dn << -P(1, 0), -P(1, 1), P(0, 0), P(0, 1);
+        dn /= L;
+        const double q = w.dot(n);
+        const Eigen::RowVector2d dq = w.transpose() * dn;
+        H = -0.5 * m_.drag_factor[k] * (2.0 * std::abs(q) * n * dq + q * std::abs(q) * dn);
+      }
+      const int a = k, b = k + 1;
+      const bool fa = a >= j0 && a <= j1, fb = b >= j0 && b <= j1;
+      if (fa) system_.diag[a - j0] += G + H;
+      if (fa && fb) system_.upper[a - j0] -= G + H;
+      if (fa && fb) system_.lower[b - j0] -= G - H;
+      if (fb) system_.diag[b - j0] += G - H;
+    }
+    for (int j = j0; j <= j1; ++j) {
+      system_.diag[j - j0].diagonal().array() += beta;
+      system_.rhs[j - j0] = ws_.force.col(j);
+    }
+    if (!system_.Solve()) return false;
+    dx.setZero();
+    for (int j = j0; j <= j1; ++j) dx.col(j) = system_.rhs[j - j0];
+    return dx.allFinite();
+  }
+
+ private:
+  const CableModel& m_;
+  ForceWorkspace ws_;
+  Eigen::Matrix2Xd zero_v_;
+  BlockTridiagonal system_;
+};
+
+// Newton with Levenberg-Marquardt damping. Without current the problem is the minimum of the
+// potential energy, and (-J + beta I) is positive definite for beta > 0 (tensions are never
+// negative), so the step descends the energy: an Armijo line search on it makes the iteration
+// converge from slack starts where the links carry nothing. With current the drag is not
+// conservative and the residual norm is the merit function instead. Returns true if converged.
+bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_iter,
+            EquilibriumReport& report) {
+  StaticProblem problem(m);
+  const bool conservative = m.current == 0;
+  Eigen::Matrix2Xd dx(2, m.stations()), trial(2, m.stations());
+  const double length_scale = m.total_length();
+  problem.Residual(x);
+  double r_inf = problem.MaxResidual();
+  double beta = 0;
+  const double beta_start = std::max(r_inf, 1e-12) / (0.05 * length_scale);
+  for (; report.iterations < max_iter; ++report.iterations) {
+    if (r_inf <= tol_force) return true;
+    const double r2 = problem.ResidualNorm2();
+    if (!problem.NewtonStep(beta, dx)) {
+      beta = std::max(10.0 * beta, beta_start);
+      continue;
+    }
+    const double descent = problem.ResidualDot(dx);  // -dEnergy/dalpha at alpha = 0
+    const double energy = conservative ? problem.Energy(x) : 0.0;
+    bool accepted = false;
+    double alpha = 1.0;
+    for (int ls = 0; ls < 30 && !accepted; ++ls, alpha *= 0.5) {
+      trial = x + alpha * dx;
+      const double e_trial = conservative ? problem.Energy(trial) : 0.0;
+      problem.Residual(trial);
+      const double r2_trial = problem.ResidualNorm2();
+      const bool energy_ok = conservative && e_trial <= energy - 1e-4 * alpha * descent;
+      accepted = energy_ok || r2_trial < r2 * (1.0 - 1e-4 * alpha);
+    }
+    alpha *= 2.0;  // undo the last halving of the loop
+    if (!accepted) {
+      problem.Residual(x);
+      beta = std::max(10.0 * beta, beta_start);
+      continue;
+    }
+    const double step = (alpha * dx).lpNorm<Eigen::Infinity>();
+    x = trial;
+    r_inf = problem.MaxResidual();
+    beta = alpha == 1.0 ? beta * 0.1 : std::max(2.0 * beta, beta_start * 1e-3);
+    if (beta < 1e-12 * beta_start) beta = 0;
+    // Round-off floor: a negligible step with a small residual is as converged as it gets.
+    if (step <= 1e-13 * length_scale && r_inf <= 1e3 * tol_force) return true;
+  }
+  return r_inf <= tol_force;
+}
+
+}  // namespace
+
+Eigen::Matrix2Xd StraightChord(const CableModel& m) {
+  if (!m.start.prescribed() && !m.end.prescribed())
+    throw Error("the cable needs at least one prescribed end (fixed or moving)");
+  const Eigen::Vector2d a = m.start.Position(0), b = m.end.Position(0);
+  Eigen::Matrix2Xd x(2, m.stations());
+  for (int j = 0; j <= m.links; ++j) {
+    const double f = m.arc_length[j] / m.total_length();
+    x.col(j) = (1.0 - f) * a + f * b;
+  }
+  return x;
+}
+
+Eigen::Matrix2Xd EquilibriumGuess(const CableModel& m) {
+  if (!m.start.prescribed() || !m.end.prescribed()) {
+    StraightChord(m);  // throws when both ends are free
+    return HangingGuess(m);
+  }
+  const Eigen::Vector2d a = m.start.Position(0), b = m.end.Position(0);
+  const double chord = (b - a).norm(), length = m.total_length();
+  const double w = m.net_weight.sum() / length;  // mean net weight [N/m]
+  // Stretch the guess by the tension a catenary of the mean weight would have, so that its
+  // links are taut (a guess at exactly the rest length sits on the slack switch).
+  const double tension_guess = std::abs(w) * length;
+  const double stretched = length * (1.0 + std::max(1e-6, tension_guess / MinAxialStiffness(m)));
+  const double h = std::abs(b.x() - a.x());
+  if (chord >= stretched || h < 1e-6 * length) return StraightChord(m);
+  return CatenaryGuess(m, a, b, stretched, w < 0);
+}
+
+CableState SolveEquilibrium(const CableModel& m, EquilibriumReport* report,
+                            const EquilibriumOptions& options) {
+  return SolveEquilibrium(m, EquilibriumGuess(m), report, options);
+}
+
+CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
+                            EquilibriumReport* report_out, const EquilibriumOptions& options) {
+  if (!m.start.prescribed() && !m.end.prescribed())
+    throw Error("the cable needs at least one prescribed end (fixed or moving)");
+  EquilibriumReport report;
+  Eigen::Matrix2Xd x = guess;
+  x.col(0) = m.start.prescribed() ? m.start.Position(0) : x.col(0);
+  x.col(m.links) = m.end.prescribed() ? m.end.Position(0) : x.col(m.links);
+
+  // The forces the residual is measured against: the cable's and prisms' weights and the
+  // drag of the current on them (as if broadside).
+  const double current_load = 0.5 * m.current * m.current *
+                              (m.drag_factor.sum() * 2.0 + m.prism_drag.colwise().sum().sum());
+  report.force_scale = std::max(m.net_weight.cwiseAbs().sum() + current_load, 1e-9);
+  const double tol = options.tolerance * report.force_scale;
+
+  // Continuation in the current: solve still water first, then raise the current in steps,
+  // each starting from the last equilibrium (the drag load is not conservative).
+  CableModel still = m;
+  still.current = 0;
+  bool ok = Newton(still, x, tol, options.max_iterations, report);
+  double reached = 0;
+  double increment = 0.25 * m.current;
+  while (ok && reached != m.current) {
+    const double target = std::abs(m.current - reached) <= std::abs(increment) * 1.0000001
+                              ? m.current
+                              : reached + increment;
+    CableModel step = m;
+    step.current = target;
+    Eigen::Matrix2Xd trial = x;
+    ++report.current_steps;
+    if (Newton(step, trial, tol, options.max_iterations, report)) {
+      x = trial;
+      reached = target;
+    } else if (std::abs(increment) > 1e-3 * std::abs(m.current) &&
+               report.iterations < options.max_iterations) {
+      increment *= 0.5;
+    } else {
+      ok = false;
+    }
+  }
+
+  StaticProblem problem(m);
+  problem.Residual(x);
+  int worst = 0;
+  report.residual = problem.MaxResidual(&worst);
+  if (report_out) *report_out = report;
+  if (!ok || !(report.residual <= 1e3 * tol)) {
+    std::ostringstream os;
+    os << "static equilibrium did not converge after " << report.iterations
+       << " Newton iterations: the largest out-of-balance force is " << report.residual
+       << " N at station " << worst << " (tolerance " << tol
+       << " N); check that the cable can hang between its ends";
+    throw Error(os.str());
+  }
+  CableState state;
+  state.t = 0;
+  state.x = x;
+  state.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+  return state;
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,40 @@
+#pragma once
+// Static equilibrium of the cable with its ends at rest at their t = 0 positions: the initial
+// state of the paper. Newton's method on the free stations' positions; the Jacobian is block
+// tridiagonal (2x2 blocks), so each iteration costs O(s).
+#include <Eigen/Core>
+
+#include "core/cable_model.h"
+#include "core/cable_state.h"
+
+namespace cablefilm {
+
+struct EquilibriumReport {
+  int iterations = 0;       // Newton iterations, all continuation steps together
+  int current_steps = 0;    // continuation steps in the current (0 without current)
+  double residual = 0;      // largest out-of-balance force on a station at the end [N]
+  double force_scale = 0;   // the force the residual is measured against [N]
+};
+
+struct EquilibriumOptions {
+  int max_iterations = 500;     // Newton iterations in all
+  double tolerance = 1e-9;      // converged when residual <= tolerance * force_scale
+};
+
+// A first guess that is close for most cables: an elastic catenary of the mean net weight
+// through the two ends (straight and uniformly stretched when taut), or a line hanging from
+// the prescribed end along the net weight when the other end is free.
+Eigen::Matrix2Xd EquilibriumGuess(const CableModel& m);
+
+// The stations evenly spaced on the chord between the ends (the "straight" initial state and
+// the poorest reasonable start of the solver).
+Eigen::Matrix2Xd StraightChord(const CableModel& m);
+
+// Throws Error with the iterations and the residual if it does not converge.
+CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
+                            EquilibriumReport* report = nullptr,
+                            const EquilibriumOptions& options = {});
+CableState SolveEquilibrium(const CableModel& m, EquilibriumReport* report = nullptr,
+                            const EquilibriumOptions& options = {});
+
+}  // namespace cablefilm

@@ -1,0 +1,54 @@
+#pragma once
+// The right-hand side of eq. (1): link tensions (eq. 2), weight and buoyancy, normal drag on the
+// links with the current, the prisms' drag, and the inertia tensor (I, J, K) of each station.
+// Every function is O(s) and allocates nothing once the Workspace is sized.
+#include <Eigen/Core>
+
+#include "core/cable_model.h"
+
+namespace cablefilm {
+
+struct LinkGeometry {
+  Eigen::VectorXd length;    // L_{j+1/2} = |x_{j+1} - x_j| [m] (size s)
+  Eigen::Matrix2Xd tangent;  // (cos theta, sin theta)_{j+1/2} (2 x s); zero for a zero-length link
+};
+
+struct ForceWorkspace {
+  LinkGeometry geometry;
+  Eigen::VectorXd tension;   // T_{j+1/2} [N] (size s)
+  Eigen::Matrix2Xd force;    // right-hand side of eq. (1) per station (X + tension terms) [N]
+
+  explicit ForceWorkspace(int links = 0) { Resize(links); }
+  void Resize(int links);
+};
+
+void ComputeGeometry(const Eigen::Matrix2Xd& x, LinkGeometry& g);
+
+// Eq. (2), with a compressed link slack: T = max(0, sigma E (L/l - 1)).
+void ComputeHookeTensions(const CableModel& m, const LinkGeometry& g, Eigen::VectorXd& tension);
+
+// force_j = T_{j+1/2} t_{j+1/2} - T_{j-1/2} t_{j-1/2} + (X_j, Y_j), for every station.
+// v: station velocities; the current enters through the relative velocity.
+void ComputeStationForces(const CableModel& m, const LinkGeometry& g,
+                          const Eigen::VectorXd& tension, const Eigen::Matrix2Xd& v,
+                          Eigen::Matrix2Xd& force);
+
+// The external part (X_j, Y_j) only: drag, prism drag, weight and buoyancy.
+void AddExternalForces(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
+                       Eigen::Matrix2Xd& force);
+
+// The inertia tensor of eq. (1) at station j: [[I_j, -K_j], [-K_j, J_j]] [kg].
+Eigen::Matrix2d StationInertia(const CableModel& m, const LinkGeometry& g, int j);
+
+// Accelerations of the stations whose motion is computed (free stations); prescribed ends get
+// their exact acceleration. Fills ws.geometry, ws.tension and ws.force along the way.
+void ComputeAccelerations(const CableModel& m, double t, const Eigen::Matrix2Xd& x,
+                          const Eigen::Matrix2Xd& v, ForceWorkspace& ws, Eigen::Matrix2Xd& a);
+
+// Energies for conservation checks [J]: kinetic (with the normal added mass), elastic strain
+// energy of the links, and potential of the net weight (y = 0 datum).
+double KineticEnergy(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v);
+double ElasticEnergy(const CableModel& m, const LinkGeometry& g);
+double PotentialEnergy(const CableModel& m, const Eigen::Matrix2Xd& x);
+
+}  // namespace cablefilm

@@ -1,0 +1,46 @@
+#pragma once
+// Time stepping: one interface for every scheme, Step(model, state, dt), so that an implicit
+// scheme slots in beside the explicit one. Each integrator owns its scratch memory, sized once.
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+
+#include "core/cable_model.h"
+#include "core/cable_state.h"
+#include "core/error.h"
+
+namespace cablefilm {
+
+enum class IntegratorKind {
+  kExplicit,  // central differences (velocity Verlet form), second order, step below the limit
+};
+
+// Thrown when the solution stops being finite or physically possible.
+class BlowUpError : public Error {
+ public:
+  BlowUpError(const std::string& what, double t, int station)
+      : Error(what), time(t), station(station) {}
+  double time;   // [s]
+  int station;   // the first station found broken
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual std::string name() const = 0;
+  // Prepares for stepping from `state` (computes what the scheme carries between steps).
+  virtual void Initialize(const CableModel& m, const CableState& state) = 0;
+  // Advances state from t to t + dt. Throws BlowUpError if the new state is not finite or a
+  // link is stretched beyond any physical meaning.
+  virtual void Step(const CableModel& m, CableState& state, double dt) = 0;
+  // Link tensions T_{j+1/2} [N] of the current state (after Initialize or Step).
+  virtual const Eigen::VectorXd& tensions() const = 0;
+};
+
+std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel& m);
+
+// Throws BlowUpError naming the time and the first station with a non-finite position or
+// velocity, or the first link stretched beyond `max_strain`.
+void CheckStateSane(const CableModel& m, const CableState& state, const Eigen::VectorXd& length);
+
+}  // namespace cablefilm

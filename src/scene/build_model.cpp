@@ -1,0 +1,82 @@
+#include "scene/build_model.h"
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace cablefilm {
+namespace {
+
+EndMotion MakeEndMotion(const EndDef& e) {
+  const Eigen::Vector2d rest(e.position[0], e.position[1]);
+  switch (e.motion) {
+    case EndMotionKind::kFixed:
+      return EndMotion::Fixed(rest);
+    case EndMotionKind::kFree:
+      return EndMotion::Free(rest);
+    case EndMotionKind::kTrochoid:
+      return EndMotion::Trochoid(rest, e.x_amplitudes[0], e.x_amplitudes[1], e.y_amplitudes[0],
+                                 e.y_amplitudes[1], 2.0 * M_PI / e.period, e.ramp_rate);
+    case EndMotionKind::kTable: {
+      std::vector<Eigen::Vector3d> rows;
+      for (const auto& r : e.table) rows.emplace_back(r[0], r[1], r[2]);
+      return EndMotion::Table(rest, rows);
+    }
+  }
+  throw Error("unknown end motion");
+}
+
+}  // namespace
+
+int StationAt(const SceneDef& scene, double arc_length) {
+  int station = 0;
+  double start = 0;
+  for (const SectionDef& sec : scene.sections) {
+    const double l = sec.length / sec.segments;
+    const double k = std::round((arc_length - start) / l);
+    if (k >= 0 && k <= sec.segments && std::abs(arc_length - start - k * l) <= 1e-6 * l)
+      return station + static_cast<int>(k);
+    station += sec.segments;
+    start += sec.length;
+  }
+  throw Error(scene.path + ": a weight at " + std::to_string(arc_length) +
+              " m is not on a station");
+}
+
+CableModel BuildModel(const SceneDef& scene) {
+  std::vector<SectionSpec> sections;
+  for (const SectionDef& def : scene.sections) {
+    const MaterialDef& mat = scene.materials.at(def.material);
+    SectionSpec s;
+    s.length = def.length;
+    s.segments = def.segments;
+    s.diameter = mat.diameter;
+    s.area = mat.area;
+    s.mass_per_length = mat.mass_per_length;
+    s.youngs_modulus = mat.youngs_modulus;
+    s.drag_coefficient = mat.drag_coefficient;
+    s.added_mass_coefficient = mat.added_mass_coefficient;
+    sections.push_back(s);
+  }
+  std::vector<PrismSpec> prisms;
+  for (const WeightDef& w : scene.weights) {
+    PrismSpec p;
+    p.station = StationAt(scene, w.at);
+    p.mass = w.mass;
+    p.volume = w.volume;
+    p.added_volume = {w.added_volume[0], w.added_volume[1]};
+    p.drag_coefficient = {w.drag_coefficient[0], w.drag_coefficient[1]};
+    p.drag_area = {w.drag_area[0], w.drag_area[1]};
+    prisms.push_back(p);
+  }
+  EnvironmentSpec env;
+  env.gravity = scene.environment.gravity;
+  env.fluid_density = scene.environment.fluid_density;
+  env.current = scene.environment.current;
+  const LinkLaw law =
+      scene.model == CableModelKind::kElastic ? LinkLaw::kElastic : LinkLaw::kInextensible;
+  return BuildCableModel(sections, prisms, env, MakeEndMotion(scene.start),
+                         MakeEndMotion(scene.end), law);
+}
+
+}  // namespace cablefilm

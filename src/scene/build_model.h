@@ -1,0 +1,13 @@
+#pragma once
+// From the scene's plain data to the physics model (parse, then build).
+#include "core/cable_model.h"
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+CableModel BuildModel(const SceneDef& scene);
+
+// The station a weight's arc length falls on (the loader has checked that it does).
+int StationAt(const SceneDef& scene, double arc_length);
+
+}  // namespace cablefilm

@@ -1,0 +1,97 @@
+#pragma once
+// The scene as read from its TOML file: plain data with defaults and units, no behaviour.
+// Field names follow scene-format.md; symbols in brackets are those of Polachek et al. (1963).
+#include <array>
+#include <string>
+#include <vector>
+
+namespace cablefilm {
+
+struct EnvironmentDef {
+  double gravity = 9.80665;       // g [m/s^2]
+  double fluid_density = 1025.0;  // rho [kg/m^3]; 0 = vacuum
+  double current = 0.0;           // c [m/s], uniform, along +x
+};
+
+struct MaterialDef {
+  std::string name;
+  double diameter = 0;                 // d [m], for drag
+  double area = 0;                     // sigma [m^2], for stiffness and buoyancy
+  double mass_per_length = 0;          // mu [kg/m]
+  double youngs_modulus = 0;           // E [Pa]
+  double drag_coefficient = 1.2;       // C^D, normal drag
+  double added_mass_coefficient = 1.0; // k, normal virtual inertia
+};
+
+struct SectionDef {
+  int material = 0;     // index into SceneDef::materials
+  double length = 0;    // unstretched [m]
+  int segments = 0;     // links in this section
+};
+
+struct WeightDef {                      // a suspended prism at a station
+  double at = 0;                        // unstretched arc length from station 0 [m]
+  double mass = 0;                      // m* [kg]
+  double volume = 0;                    // V* [m^3], buoyancy
+  std::array<double, 2> added_volume{};      // [V^x, V^y] [m^3]
+  std::array<double, 2> drag_coefficient{};  // [C^x, C^y]
+  std::array<double, 2> drag_area{};         // [S^x, S^y] [m^2]
+};
+
+enum class EndMotionKind { kFixed, kFree, kTrochoid, kTable };
+
+struct EndDef {
+  EndMotionKind motion = EndMotionKind::kFixed;
+  std::array<double, 2> position{};       // rest position [x^0, y^0] [m]
+  std::array<double, 2> x_amplitudes{};   // [a, b] [m], eq. (3)
+  std::array<double, 2> y_amplitudes{};   // [c, d] [m], eq. (3)
+  double period = 0;                      // 2 pi / omega [s]
+  double ramp_rate = 0;                   // nu [1/s]
+  std::string table_file;                 // resolved path of the CSV (t, x, y), offsets from position
+  std::vector<std::array<double, 3>> table;  // rows (t [s], dx [m], dy [m])
+};
+
+enum class CableModelKind { kElastic, kInextensible };
+enum class InitialStateKind { kEquilibrium, kStraight };
+
+struct SimulationDef {
+  double duration = 60.0;        // [s]
+  double time_step = 0.0;        // [s]; 0 = "auto" (from the stability limit)
+  double safety_factor = 0.8;    // fraction of the stability limit used by "auto"
+};
+
+struct OutputDef {
+  double interval = 0.0;         // [s] between timeseries rows; 0 = one row per film frame
+  bool film = true;
+  bool frames = false;
+};
+
+struct FilmDef {                 // [film]: how the film looks (all optional)
+  int width = 1920;
+  int height = 1080;
+  double fps = 30.0;             // frames per second of film
+  double speed = 1.0;            // simulated seconds per second of film
+  int crf = 20;                  // H.264 quality (lower is better)
+  std::string colormap = "viridis";
+  double tension_min = -1;       // colour range [N]; negative = from the run
+  double tension_max = -1;
+};
+
+struct SceneDef {
+  std::string path;              // the scene file, as given
+  std::string name;              // its stem: the default output folder name
+  std::string title;
+  EnvironmentDef environment;
+  std::vector<MaterialDef> materials;
+  CableModelKind model = CableModelKind::kElastic;
+  std::vector<SectionDef> sections;
+  std::vector<WeightDef> weights;
+  EndDef start;                  // station 0
+  EndDef end;                    // station s
+  InitialStateKind initial = InitialStateKind::kEquilibrium;
+  SimulationDef simulation;
+  OutputDef output;
+  FilmDef film;
+};
+
+}  // namespace cablefilm

@@ -1,0 +1,409 @@
+#include "scene/scene_loader.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "core/error.h"
+#include "scene/table_file.h"
+
+namespace cablefilm {
+namespace {
+
+std::string Quote(const std::string& s) { return "\"" + s + "\""; }
+
+// Reads the keys of one TOML table, remembering which were read, so that Finish() can report
+// every key left over as unknown. Errors carry "file:line: key: expected ...".
+class TableReader {
+ public:
+  TableReader(const toml::table& table, std::string prefix, const std::string& file)
+      : table_(table), prefix_(std::move(prefix)), file_(file) {}
+
+  std::string Key(const std::string& key) const {
+    return prefix_.empty() ? key : prefix_ + "." + key;
+  }
+  [[noreturn]] void Fail(const toml::node* node, const std::string& key,
+                         const std::string& expected) const {
+    const auto& src = node ? node->source() : table_.source();
+    std::ostringstream os;
+    os << file_ << ":" << src.begin.line << ": " << Key(key) << ": " << expected;
+    throw Error(os.str());
+  }
+  const toml::node* Get(const std::string& key) {
+    used_.insert(key);
+    return table_.get(key);
+  }
+  bool Has(const std::string& key) const { return table_.contains(key); }
+
+  double Number(const std::string& key, const toml::node* n, const std::string& what) const {
+    if (!n->is_number()) Fail(n, key, "expected " + what);
+    const double v = n->value<double>().value();
+    if (!std::isfinite(v)) Fail(n, key, "expected " + what + ", got a non-finite number");
+    return v;
+  }
+  // what: the expectation in words, e.g. "a positive length in m".
+  double Required(const std::string& key, const std::string& what) {
+    const toml::node* n = Get(key);
+    if (!n) Fail(nullptr, key, "missing; expected " + what);
+    return Number(key, n, what);
+  }
+  double Optional(const std::string& key, double fallback, const std::string& what) {
+    const toml::node* n = Get(key);
+    return n ? Number(key, n, what) : fallback;
+  }
+  double Positive(const std::string& key, const std::string& unit) {
+    const std::string what = "a positive number" + unit;
+    const double v = Required(key, what);
+    if (!(v > 0)) Fail(table_.get(key), key, "expected " + what + ", got " + Fmt(v));
+    return v;
+  }
+  double OptionalPositive(const std::string& key, double fallback, const std::string& unit) {
+    if (!Has(key)) {
+      Get(key);
+      return fallback;
+    }
+    return Positive(key, unit);
+  }
+  double OptionalNonNegative(const std::string& key, double fallback, const std::string& unit) {
+    const std::string what = "a number >= 0" + unit;
+    const double v = Optional(key, fallback, what);
+    if (!(v >= 0)) Fail(table_.get(key), key, "expected " + what + ", got " + Fmt(v));
+    return v;
+  }
+  int Integer(const std::string& key, int fallback, int min, int max, bool required) {
+    const toml::node* n = Get(key);
+    const std::string what = "a whole number from " + std::to_string(min) + " to " +
+                             std::to_string(max);
+    if (!n) {
+      if (required) Fail(nullptr, key, "missing; expected " + what);
+      return fallback;
+    }
+    if (!n->is_integer()) Fail(n, key, "expected " + what);
+    const int64_t v = n->value<int64_t>().value();
+    if (v < min || v > max) Fail(n, key, "expected " + what + ", got " + std::to_string(v));
+    return static_cast<int>(v);
+  }
+  std::array<double, 2> Pair(const std::string& key, std::array<double, 2> fallback,
+                             bool required, bool non_negative, const std::string& unit) {
+    const toml::node* n = Get(key);
+    const std::string what =
+        std::string("an array of two ") + (non_negative ? "numbers >= 0" : "numbers") + unit;
+    if (!n) {
+      if (required) Fail(nullptr, key, "missing; expected " + what);
+      return fallback;
+    }
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != 2) Fail(n, key, "expected " + what);
+    std::array<double, 2> out{};
+    for (size_t i = 0; i < 2; ++i) {
+      out[i] = Number(key, a->get(i), what);
+      if (non_negative && out[i] < 0) Fail(n, key, "expected " + what + ", got " + Fmt(out[i]));
+    }
+    return out;
+  }
+  std::string String(const std::string& key, const std::string& fallback, bool required) {
+    const toml::node* n = Get(key);
+    if (!n) {
+      if (required) Fail(nullptr, key, "missing; expected a string");
+      return fallback;
+    }
+    if (!n->is_string()) Fail(n, key, "expected a string");
+    return n->value<std::string>().value();
+  }
+  std::string Choice(const std::string& key, const std::string& fallback,
+                     const std::vector<std::string>& choices) {
+    std::string list;
+    for (const auto& c : choices) list += (list.empty() ? "" : ", ") + Quote(c);
+    const toml::node* n = Get(key);
+    if (!n) return fallback;
+    if (!n->is_string()) Fail(n, key, "expected one of " + list);
+    const std::string v = n->value<std::string>().value();
+    for (const auto& c : choices)
+      if (v == c) return v;
+    Fail(n, key, "expected one of " + list + ", got " + Quote(v));
+  }
+  bool Bool(const std::string& key, bool fallback) {
+    const toml::node* n = Get(key);
+    if (!n) return fallback;
+    if (!n->is_boolean()) Fail(n, key, "expected true or false");
+    return n->value<bool>().value();
+  }
+  const toml::table* SubTable(const std::string& key, bool required) {
+    const toml::node* n = Get(key);
+    if (!n) {
+      if (required) Fail(nullptr, key, "missing; expected a table [" + Key(key) + "]");
+      return nullptr;
+    }
+    if (!n->is_table()) Fail(n, key, "expected a table [" + Key(key) + "]");
+    return n->as_table();
+  }
+  const toml::array* TableArray(const std::string& key, bool required) {
+    const toml::node* n = Get(key);
+    if (!n) {
+      if (required) Fail(nullptr, key, "missing; expected one or more [[" + Key(key) + "]]");
+      return nullptr;
+    }
+    const toml::array* a = n->as_array();
+    if (!a || !a->is_array_of_tables())
+      Fail(n, key, "expected an array of tables [[" + Key(key) + "]]");
+    return a;
+  }
+  // Every key present but never read is a mistake; `hint` says why some keys may be unused.
+  void Finish(const std::string& hint = "") const {
+    for (auto&& [k, node] : table_) {
+      const std::string key(k.str());
+      if (used_.count(key)) continue;
+      std::ostringstream os;
+      os << file_ << ":" << k.source().begin.line << ": " << Key(key) << ": unknown key"
+         << hint;
+      throw Error(os.str());
+    }
+  }
+  static std::string Fmt(double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+  }
+
+ private:
+  const toml::table& table_;
+  std::string prefix_;
+  const std::string& file_;
+  std::set<std::string> used_;
+};
+
+void ReadEnvironment(TableReader& top, SceneDef& scene, const std::string& file) {
+  const toml::table* t = top.SubTable("environment", false);
+  if (!t) return;
+  TableReader r(*t, "environment", file);
+  scene.environment.gravity = r.OptionalNonNegative("gravity", 9.80665, " in m/s^2");
+  scene.environment.fluid_density = r.OptionalNonNegative("fluid_density", 1025.0, " in kg/m^3");
+  scene.environment.current = r.Optional("current", 0.0, "a speed in m/s");
+  r.Finish();
+}
+
+void ReadMaterials(TableReader& top, SceneDef& scene, const std::string& file, bool elastic) {
+  const toml::array* arr = top.TableArray("material", true);
+  for (size_t i = 0; i < arr->size(); ++i) {
+    const std::string prefix = "material[" + std::to_string(i) + "]";
+    TableReader r(*arr->get(i)->as_table(), prefix, file);
+    MaterialDef m;
+    m.name = r.String("name", "", true);
+    for (const MaterialDef& other : scene.materials)
+      if (other.name == m.name)
+        r.Fail(arr->get(i)->as_table()->get("name"), "name",
+               "expected a unique name, " + Quote(m.name) + " is defined twice");
+    m.diameter = r.Positive("diameter", " in m");
+    m.area = r.Positive("area", " in m^2");
+    m.mass_per_length = r.Positive("mass_per_length", " in kg/m");
+    if (elastic) {
+      m.youngs_modulus = r.Positive("youngs_modulus", " in Pa");
+    } else {
+      m.youngs_modulus = r.OptionalPositive("youngs_modulus", 0.0, " in Pa");
+    }
+    m.drag_coefficient = r.OptionalNonNegative("drag_coefficient", 1.2, "");
+    m.added_mass_coefficient = r.OptionalNonNegative("added_mass_coefficient", 1.0, "");
+    r.Finish();
+    scene.materials.push_back(m);
+  }
+}
+
+void ReadCable(TableReader& top, SceneDef& scene, const std::string& file) {
+  const toml::table* t = top.SubTable("cable", true);
+  TableReader r(*t, "cable", file);
+  // The model is read first by the caller (materials depend on it); mark it used here.
+  r.Get("model");
+  const toml::array* sections = r.TableArray("section", true);
+  if (sections->empty()) r.Fail(nullptr, "section", "expected at least one [[cable.section]]");
+  for (size_t i = 0; i < sections->size(); ++i) {
+    const std::string prefix = "cable.section[" + std::to_string(i) + "]";
+    TableReader s(*sections->get(i)->as_table(), prefix, file);
+    SectionDef sec;
+    const std::string material = s.String("material", "", true);
+    sec.material = -1;
+    for (size_t k = 0; k < scene.materials.size(); ++k)
+      if (scene.materials[k].name == material) sec.material = static_cast<int>(k);
+    if (sec.material < 0)
+      s.Fail(sections->get(i)->as_table()->get("material"), "material",
+             "expected the name of a [[material]], no material is named " + Quote(material));
+    sec.length = s.Positive("length", " in m");
+    sec.segments = s.Integer("segments", 0, 1, 10000000, true);
+    s.Finish();
+    scene.sections.push_back(sec);
+  }
+  double total = 0, segment_length_min = 1e300;
+  for (const SectionDef& sec : scene.sections) {
+    total += sec.length;
+    segment_length_min = std::min(segment_length_min, sec.length / sec.segments);
+  }
+  const toml::array* weights = r.TableArray("weight", false);
+  for (size_t i = 0; weights && i < weights->size(); ++i) {
+    const std::string prefix = "cable.weight[" + std::to_string(i) + "]";
+    const toml::table* wt = weights->get(i)->as_table();
+    TableReader w(*wt, prefix, file);
+    WeightDef def;
+    def.at = w.Required("at", "an arc length in m from station 0");
+    // The station arc lengths, section by section.
+    bool on_station = false;
+    double start = 0;
+    for (const SectionDef& sec : scene.sections) {
+      const double l = sec.length / sec.segments;
+      const double k = std::round((def.at - start) / l);
+      if (k >= 0 && k <= sec.segments && std::abs(def.at - start - k * l) <= 1e-6 * l)
+        on_station = true;
+      start += sec.length;
+    }
+    if (def.at < -1e-6 * segment_length_min || def.at > total * (1 + 1e-9) || !on_station)
+      w.Fail(wt->get("at"), "at",
+             "expected the arc length of a station (0 to " + TableReader::Fmt(total) +
+                 " m, on a segment boundary), got " + TableReader::Fmt(def.at));
+    def.mass = w.Positive("mass", " in kg");
+    def.volume = w.OptionalNonNegative("volume", 0.0, " in m^3");
+    def.added_volume = w.Pair("added_volume", {0, 0}, false, true, " in m^3");
+    def.drag_coefficient = w.Pair("drag_coefficient", {0, 0}, false, true, "");
+    def.drag_area = w.Pair("drag_area", {0, 0}, false, true, " in m^2");
+    w.Finish();
+    scene.weights.push_back(def);
+  }
+  r.Finish();
+}
+
+void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std::string& file) {
+  const toml::table* t = ends.SubTable(which, true);
+  TableReader r(*t, "ends." + which, file);
+  end.position = r.Pair("position", {0, 0}, true, false, " in m");
+  const std::string motion =
+      r.Choice("motion", "fixed", {"fixed", "free", "trochoid", "table"});
+  if (motion == "fixed") end.motion = EndMotionKind::kFixed;
+  if (motion == "free") end.motion = EndMotionKind::kFree;
+  if (motion == "trochoid") {
+    end.motion = EndMotionKind::kTrochoid;
+    end.x_amplitudes = r.Pair("x_amplitudes", {0, 0}, false, false, " in m");
+    end.y_amplitudes = r.Pair("y_amplitudes", {0, 0}, false, false, " in m");
+    end.period = r.Positive("period", " in s");
+    end.ramp_rate = r.Positive("ramp_rate", " in 1/s");
+  }
+  if (motion == "table") {
+    end.motion = EndMotionKind::kTable;
+    const std::string name = r.String("file", "", true);
+    const std::filesystem::path base = std::filesystem::path(file).parent_path();
+    end.table_file = (base / name).string();
+    try {
+      end.table = ReadMotionTable(end.table_file);
+    } catch (const Error& e) {
+      r.Fail(t->get("file"), "file", e.what());
+    }
+  }
+  r.Finish(" (motion = " + Quote(motion) + " uses only the keys it needs)");
+}
+
+}  // namespace
+
+SceneDef ParseScene(const std::string& text, const std::string& file) {
+  toml::table root;
+  try {
+    root = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream os;
+    os << file << ":" << e.source().begin.line << ": not valid TOML: " << e.description();
+    throw Error(os.str());
+  }
+  SceneDef scene;
+  scene.path = file;
+  scene.name = std::filesystem::path(file).stem().string();
+  TableReader top(root, "", file);
+  scene.title = top.String("title", scene.name, false);
+  ReadEnvironment(top, scene, file);
+
+  bool elastic = true;
+  if (const toml::table* cable = root.get_as<toml::table>("cable")) {
+    TableReader r(*cable, "cable", file);
+    const std::string model = r.Choice("model", "elastic", {"elastic", "inextensible"});
+    elastic = model == "elastic";
+    scene.model = elastic ? CableModelKind::kElastic : CableModelKind::kInextensible;
+  }
+  ReadMaterials(top, scene, file, elastic);
+  ReadCable(top, scene, file);
+
+  {
+    const toml::table* ends = top.SubTable("ends", true);
+    TableReader r(*ends, "ends", file);
+    ReadEnd(r, "start", scene.start, file);
+    ReadEnd(r, "end", scene.end, file);
+    if (scene.start.motion == EndMotionKind::kFree && scene.end.motion == EndMotionKind::kFree)
+      r.Fail(ends, "end.motion",
+             "expected at least one end that is not \"free\" (a cable with two free ends has no "
+             "equilibrium)");
+    r.Finish();
+  }
+  if (const toml::table* t = top.SubTable("initial", false)) {
+    TableReader r(*t, "initial", file);
+    scene.initial = r.Choice("state", "equilibrium", {"equilibrium", "straight"}) == "straight"
+                        ? InitialStateKind::kStraight
+                        : InitialStateKind::kEquilibrium;
+    r.Finish();
+  }
+  if (const toml::table* t = top.SubTable("simulation", false)) {
+    TableReader r(*t, "simulation", file);
+    scene.simulation.duration = r.OptionalPositive("duration", 60.0, " of seconds");
+    if (const toml::node* n = r.Get("time_step")) {
+      if (n->is_string()) {
+        if (n->value<std::string>().value() != "auto")
+          r.Fail(n, "time_step", "expected \"auto\" or a positive number of seconds");
+      } else {
+        scene.simulation.time_step = r.Number("time_step", n, "\"auto\" or a positive number of seconds");
+        if (!(scene.simulation.time_step > 0))
+          r.Fail(n, "time_step", "expected \"auto\" or a positive number of seconds");
+      }
+    }
+    scene.simulation.safety_factor = r.OptionalPositive("safety_factor", 0.8, " (fraction of the stability limit)");
+    if (scene.simulation.safety_factor > 1)
+      r.Fail(t->get("safety_factor"), "safety_factor",
+             "expected a fraction of the stability limit in (0, 1]");
+    r.Choice("integrator", "explicit", {"explicit"});
+    r.Finish();
+  }
+  if (const toml::table* t = top.SubTable("film", false)) {
+    TableReader r(*t, "film", file);
+    FilmDef& f = scene.film;
+    f.width = r.Integer("width", f.width, 16, 7680, false);
+    f.height = r.Integer("height", f.height, 16, 4320, false);
+    if (f.width % 2) r.Fail(t->get("width"), "width", "expected an even number of pixels");
+    if (f.height % 2) r.Fail(t->get("height"), "height", "expected an even number of pixels");
+    f.fps = r.OptionalPositive("fps", f.fps, " of frames per second");
+    f.speed = r.OptionalPositive("speed", f.speed, " (simulated seconds per second of film)");
+    f.crf = r.Integer("crf", f.crf, 0, 51, false);
+    f.colormap = r.Choice("colormap", f.colormap, {"viridis", "cividis", "magma", "inferno", "plasma"});
+    if (r.Has("tension_range")) {
+      const auto range = r.Pair("tension_range", {0, 0}, true, true, " in N");
+      if (!(range[1] > range[0]))
+        r.Fail(t->get("tension_range"), "tension_range", "expected [min, max] with max > min");
+      f.tension_min = range[0];
+      f.tension_max = range[1];
+    }
+    r.Finish();
+  }
+  if (const toml::table* t = top.SubTable("output", false)) {
+    TableReader r(*t, "output", file);
+    scene.output.interval = r.OptionalPositive("interval", 0.0, " of seconds");
+    scene.output.film = r.Bool("film", true);
+    scene.output.frames = r.Bool("frames", false);
+    r.Finish();
+  }
+  if (scene.output.interval == 0) scene.output.interval = scene.film.speed / scene.film.fps;
+  top.Finish();
+  return scene;
+}
+
+SceneDef LoadScene(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return ParseScene(text.str(), path);
+}
+
+}  // namespace cablefilm

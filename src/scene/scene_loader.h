@@ -1,0 +1,14 @@
+#pragma once
+// Reads a scene file (scene-format.md) into a SceneDef. Every problem is an Error that names the
+// file, the line, the key (e.g. cable.section[1].length) and what was expected; unknown keys
+// are errors, so a typo is never silently ignored.
+#include <string>
+
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+SceneDef LoadScene(const std::string& path);
+SceneDef ParseScene(const std::string& text, const std::string& path);  // path: for messages
+
+}  // namespace cablefilm
