@@ -1,1 +1,82 @@
-int main() { return 0; }
+// Case P63 with the explicit scheme at 60, 600 and 6000 links (same sections and weight, finer
+// stations): time step, steps, wall seconds, station-steps per second, and the peak of
+// tension_max with its time. The explicit step shrinks as 1/N, so the cost grows as N^2: runs
+// longer than --max-steps are cut short and their wall time for the whole duration projected.
+//   bench_explicit [--scene FILE] [--duration S] [--max-steps N] [--sizes 60,600,6000]
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/simulation_run.h"
+#include "scene/build_model.h"
+#include "scene/scene_loader.h"
+
+using namespace cablefilm;
+
+int main(int argc, char** argv) {
+  std::string scene_path = std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml";
+  double duration = 60.0;
+  double max_steps = 3e6;
+  std::vector<int> sizes = {60, 600, 6000};
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--scene")) scene_path = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--duration")) duration = std::atof(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--max-steps")) max_steps = std::atof(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--sizes")) {
+      sizes.clear();
+      std::stringstream ss(argv[i + 1]);
+      for (std::string s; std::getline(ss, s, ',');) sizes.push_back(std::stoi(s));
+    }
+  }
+  const SceneDef base = LoadScene(scene_path);
+  int base_links = 0;
+  for (const SectionDef& s : base.sections) base_links += s.segments;
+  std::printf("case %s, %.4g s simulated, explicit scheme (central differences)\n",
+              scene_path.c_str(), duration);
+  std::printf("%7s %11s %10s %10s %12s %14s %12s %9s %s\n", "links", "dt [s]", "steps",
+              "wall [s]", "equil [ms]", "station-steps/s", "peak T [N]", "at t [s]", "");
+  for (int links : sizes) {
+    SceneDef scene = base;
+    for (SectionDef& s : scene.sections) s.segments = s.segments * links / base_links;
+    scene.simulation.duration = duration;
+    const CableModel m = BuildModel(scene);
+    TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
+    const double total_steps = static_cast<double>(grid.outputs) * grid.steps_per_output;
+    bool projected = false;
+    if (total_steps > max_steps) {
+      grid.outputs = std::max<long>(1, static_cast<long>(max_steps / grid.steps_per_output));
+      projected = true;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    EquilibriumReport eq;
+    CableState state = MakeInitialState(scene, m, &eq);
+    const auto t1 = std::chrono::steady_clock::now();
+    auto integrator = MakeIntegrator(IntegratorKind::kExplicit, m);
+    double peak = 0, peak_t = 0;
+    Simulate(m, *integrator, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
+      if (T.maxCoeff() > peak) {
+        peak = T.maxCoeff();
+        peak_t = s.t;
+      }
+      return true;
+    });
+    const auto t2 = std::chrono::steady_clock::now();
+    const double wall = std::chrono::duration<double>(t2 - t1).count();
+    const double steps = static_cast<double>(grid.outputs) * grid.steps_per_output;
+    const double rate = steps * (m.links + 1) / wall;
+    const double eq_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+    if (projected)
+      std::printf("%7d %11.4g %10.4g %10.4g %12.3g %14.3g %12.6g %9.4g projected: ran %.3g s of %.4g s\n",
+                  m.links, grid.dt, total_steps, wall * total_steps / steps, eq_ms, rate, peak,
+                  peak_t, grid.outputs * grid.interval, duration);
+    else
+      std::printf("%7d %11.4g %10.4g %10.4g %12.3g %14.3g %12.6g %9.4g\n", m.links, grid.dt,
+                  total_steps, wall, eq_ms, rate, peak, peak_t);
+    std::fflush(stdout);
+  }
+  return 0;
+}

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian packages cablefilm needs that are not installed yet (Debian 12).
+set -euo pipefail
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libeigen3-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev
+  libosmesa6-dev libpng-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
+  libfreetype-dev libfontconfig-dev fonts-dejavu-core
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all packages present"
+  exit 0
+fi
+echo "setup: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
