@@ -21,10 +21,12 @@ int main(int argc, char** argv) {
   std::string scene_path = std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml";
   double duration = 60.0;
   double max_steps = 3e6;
+  double implicit_dt = -1;
   std::vector<int> sizes = {60, 600, 6000};
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--scene")) scene_path = argv[i + 1];
     else if (!std::strcmp(argv[i], "--duration")) duration = std::atof(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--implicit")) implicit_dt = std::atof(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--max-steps")) max_steps = std::atof(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--sizes")) {
       sizes.clear();
@@ -43,6 +45,10 @@ int main(int argc, char** argv) {
     SceneDef scene = base;
     for (SectionDef& s : scene.sections) s.segments = s.segments * links / base_links;
     scene.simulation.duration = duration;
+    if (implicit_dt >= 0) {
+      scene.simulation.integrator = IntegratorChoice::kImplicit;
+      scene.simulation.time_step = implicit_dt;
+    }
     const CableModel m = BuildModel(scene);
     TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
     const double total_steps = static_cast<double>(grid.outputs) * grid.steps_per_output;
@@ -55,7 +61,7 @@ int main(int argc, char** argv) {
     EquilibriumReport eq;
     CableState state = MakeInitialState(scene, m, &eq);
     const auto t1 = std::chrono::steady_clock::now();
-    auto integrator = MakeIntegrator(IntegratorKind::kExplicit, m);
+    auto integrator = MakeIntegrator(m, grid);
     double peak = 0, peak_t = 0;
     Simulate(m, *integrator, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
       if (T.maxCoeff() > peak) {
@@ -69,6 +75,10 @@ int main(int argc, char** argv) {
     const double steps = static_cast<double>(grid.outputs) * grid.steps_per_output;
     const double rate = steps * (m.links + 1) / wall;
     const double eq_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+    const IntegratorStats st = integrator->stats();
+    if (st.newton_iterations)
+      std::printf("   (%ld steps, %ld rejected, %.2f Newton iterations per step)\n", st.steps,
+                  st.rejected, double(st.newton_iterations) / st.steps);
     if (projected)
       std::printf("%7d %11.4g %10.4g %10.4g %12.3g %14.3g %12.6g %9.4g projected: ran %.3g s of %.4g s\n",
                   m.links, grid.dt, total_steps, wall * total_steps / steps, eq_ms, rate, peak,

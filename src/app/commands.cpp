@@ -109,7 +109,7 @@ int RunCommand(const std::string& scene_path, const RunOptions& options) {
   // Pass 1: the tension time series (and the ranges the film needs).
   InstallSignalHandlers();
   TimeseriesWriter series(out_dir + "/timeseries.csv");
-  auto integrator = MakeIntegrator(IntegratorKind::kExplicit, m);
+  auto integrator = MakeIntegrator(m, grid);
   CableState state = initial;
   RunExtent extent(m, initial);
   double peak = -1, peak_t = 0;

@@ -1,16 +1,36 @@
 #include "app/simulation_run.h"
 
 #include <cmath>
+#include <limits>
 
 namespace cablefilm {
 
+namespace {
+
+// The shortest time scale of the prescribed end motions [s]: a trochoid's period and ramp
+// time, a table's knot spacing; infinity for ends that do not move.
+double ForcingTimeScale(const CableModel& m) {
+  double scale = std::numeric_limits<double>::infinity();
+  for (const EndMotion* e : {&m.start, &m.end}) scale = std::min(scale, e->TimeScale());
+  return scale;
+}
+
+}  // namespace
+
 TimeGrid ChooseTimeGrid(const CableModel& m, const SimulationDef& sim, double interval) {
   TimeGrid g;
+  g.kind = sim.integrator == IntegratorChoice::kExplicit ? IntegratorKind::kExplicit
+                                                         : IntegratorKind::kImplicit;
+  g.rho_inf = sim.rho_infinity;
   g.interval = interval;
   g.limit = ComputeStabilityLimit(m);
   g.safety_factor = sim.safety_factor;
   g.automatic = sim.time_step <= 0;
-  const double wanted = g.automatic ? sim.safety_factor * g.limit.time_step : sim.time_step;
+  double wanted = sim.time_step;
+  if (g.automatic && g.kind == IntegratorKind::kExplicit)
+    wanted = sim.safety_factor * g.limit.time_step;
+  if (g.automatic && g.kind == IntegratorKind::kImplicit)
+    wanted = ForcingTimeScale(m) / kImplicitStepsPerPeriod;
   g.steps_per_output = std::max(1, static_cast<int>(std::ceil(interval / wanted - 1e-9)));
   g.dt = interval / g.steps_per_output;
   g.outputs = static_cast<long>(std::floor(sim.duration / interval + 1e-9));
@@ -24,6 +44,10 @@ CableState MakeInitialState(const SceneDef& scene, const CableModel& m,
   s.x = StraightChord(m);
   s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
   return s;
+}
+
+std::unique_ptr<Integrator> MakeIntegrator(const CableModel& m, const TimeGrid& grid) {
+  return MakeIntegrator(grid.kind, m, grid.rho_inf);
 }
 
 bool Simulate(const CableModel& m, Integrator& integrator, CableState& state,

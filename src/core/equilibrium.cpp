@@ -6,6 +6,7 @@
 
 #include "core/block_tridiagonal.h"
 #include "core/error.h"
+#include "core/force_jacobian.h"
 #include "core/forces.h"
 
 namespace cablefilm {
@@ -113,32 +114,7 @@ class StaticProblem {
   bool NewtonStep(double beta, Eigen::Matrix2Xd& dx) {
     const int j0 = m_.first_free(), j1 = m_.last_free();
     system_.SetZero();
-    const Eigen::Vector2d w(-m_.current, 0.0);  // velocity of a still cable relative to the fluid
-    for (int k = 0; k < m_.links; ++k) {
-      const double L = ws_.geometry.length[k];
-      const Eigen::Vector2d t = ws_.geometry.tangent.col(k);
-      const Eigen::Matrix2d tt = t * t.transpose();
-      const Eigen::Matrix2d P = Eigen::Matrix2d::Identity() - tt;
-      const double dTdL = L > m_.rest_length[k] ? m_.axial_stiffness[k] / m_.rest_length[k] : 0.0;
-      Eigen::Matrix2d G = dTdL * tt;  // d(T t)/dd, d = x_{k+1} - x_k
-      if (L > 0) G += (ws_.tension[k] / L) * P;
-      Eigen::Matrix2d H = Eigen::Matrix2d::Zero();  // d(D n / 2)/dd, drag of the current
-      if (m_.current != 0 && m_.drag_factor[k] != 0 && L > 0) {
-        const Eigen::Vector2d n(-t.y(), t.x());
-        Eigen::Matrix2d dn;  // dn/dd = R P / L with R the quarter turn
-        dn << -P(1, 0), -P(1, 1), P(0, 0), P(0, 1);
-        dn /= L;
-        const double q = w.dot(n);
-        const Eigen::RowVector2d dq = w.transpose() * dn;
-        H = -0.5 * m_.drag_factor[k] * (2.0 * std::abs(q) * n * dq + q * std::abs(q) * dn);
-      }
-      const int a = k, b = k + 1;
-      const bool fa = a >= j0 && a <= j1, fb = b >= j0 && b <= j1;
-      if (fa) system_.diag[a - j0] += G + H;
-      if (fa && fb) system_.upper[a - j0] -= G + H;
-      if (fa && fb) system_.lower[b - j0] -= G - H;
-      if (fb) system_.diag[b - j0] += G - H;
-    }
+    AddForceJacobian(m_, ws_.geometry, ws_.tension, zero_v_, 0.0, system_);
     for (int j = j0; j <= j1; ++j) {
       system_.diag[j - j0].diagonal().array() += beta;
       system_.rhs[j - j0] = ws_.force.col(j);

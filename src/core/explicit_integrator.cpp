@@ -32,6 +32,7 @@ void ExplicitIntegrator::Step(const CableModel& m, CableState& s, double dt) {
   ComputeAccelerations(m, t1, s.x, v_pred_, ws_, a_);
   for (int j = j0; j <= j1; ++j) s.v.col(j) += 0.5 * dt * a_.col(j);
   s.t = t1;
+  ++stats_.steps;
   CheckStateSane(m, s, ws_.geometry.length);
 }
 

@@ -17,11 +17,13 @@ class ExplicitIntegrator : public Integrator {
   void Initialize(const CableModel& m, const CableState& state) override;
   void Step(const CableModel& m, CableState& state, double dt) override;
   const Eigen::VectorXd& tensions() const override { return ws_.tension; }
+  IntegratorStats stats() const override { return stats_; }
 
  private:
   ForceWorkspace ws_;
   Eigen::Matrix2Xd a_;       // a_n [m/s^2]
   Eigen::Matrix2Xd v_pred_;  // predicted v_{n+1} for the drag terms [m/s]
+  IntegratorStats stats_;
   bool initialized_ = false;
 };
 

@@ -4,13 +4,17 @@
 #include <sstream>
 
 #include "core/explicit_integrator.h"
+#include "core/generalized_alpha.h"
 
 namespace cablefilm {
 
-std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel& m) {
+std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel& m,
+                                           double rho_inf) {
   switch (kind) {
     case IntegratorKind::kExplicit:
       return std::make_unique<ExplicitIntegrator>(m);
+    case IntegratorKind::kImplicit:
+      return std::make_unique<GeneralizedAlphaIntegrator>(m, rho_inf);
   }
   throw Error("unknown integrator");
 }

@@ -13,6 +13,13 @@ namespace cablefilm {
 
 enum class IntegratorKind {
   kExplicit,  // central differences (velocity Verlet form), second order, step below the limit
+  kImplicit,  // generalized-alpha, second order, unconditionally stable, Newton per step
+};
+
+struct IntegratorStats {
+  long steps = 0;              // steps taken (accepted)
+  long rejected = 0;           // steps rejected and retried with half the step
+  long newton_iterations = 0;  // in all (implicit schemes)
 };
 
 // Thrown when the solution stops being finite or physically possible.
@@ -35,9 +42,12 @@ class Integrator {
   virtual void Step(const CableModel& m, CableState& state, double dt) = 0;
   // Link tensions T_{j+1/2} [N] of the current state (after Initialize or Step).
   virtual const Eigen::VectorXd& tensions() const = 0;
+  virtual IntegratorStats stats() const = 0;
 };
 
-std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel& m);
+// rho_inf: the implicit scheme's spectral radius at infinite frequency (ignored by explicit).
+std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel& m,
+                                           double rho_inf = 0.8);
 
 // Throws BlowUpError naming the time and the first station with a non-finite position or
 // velocity, or the first link stretched beyond `max_strain`.

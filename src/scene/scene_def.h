@@ -54,7 +54,11 @@ struct EndDef {
 enum class CableModelKind { kElastic, kInextensible };
 enum class InitialStateKind { kEquilibrium, kStraight };
 
+enum class IntegratorChoice { kExplicit, kImplicit };
+
 struct SimulationDef {
+  IntegratorChoice integrator = IntegratorChoice::kExplicit;
+  double rho_infinity = 0.8;     // implicit: spectral radius at infinite frequency, [0, 1]
   double duration = 60.0;        // [s]
   double time_step = 0.0;        // [s]; 0 = "auto" (from the stability limit)
   double safety_factor = 0.8;    // fraction of the stability limit used by "auto"

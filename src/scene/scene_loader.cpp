@@ -363,7 +363,13 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
     if (scene.simulation.safety_factor > 1)
       r.Fail(t->get("safety_factor"), "safety_factor",
              "expected a fraction of the stability limit in (0, 1]");
-    r.Choice("integrator", "explicit", {"explicit"});
+    scene.simulation.integrator =
+        r.Choice("integrator", "explicit", {"explicit", "implicit"}) == "explicit"
+            ? IntegratorChoice::kExplicit
+            : IntegratorChoice::kImplicit;
+    scene.simulation.rho_infinity = r.OptionalNonNegative("rho_infinity", 0.8, "");
+    if (scene.simulation.rho_infinity > 1)
+      r.Fail(t->get("rho_infinity"), "rho_infinity", "expected a number in [0, 1]");
     r.Finish();
   }
   if (const toml::table* t = top.SubTable("film", false)) {

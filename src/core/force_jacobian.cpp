@@ -1,0 +1,104 @@
+#include "core/force_jacobian.h"
+
+#include <cmath>
+
+namespace cablefilm {
+namespace {
+
+// d n / d d for the unit normal n = R d / |d| of a link d = x_{k+1} - x_k (R: quarter turn).
+Eigen::Matrix2d NormalDerivative(const Eigen::Vector2d& t, double L) {
+  const Eigen::Matrix2d P = Eigen::Matrix2d::Identity() - t * t.transpose();
+  Eigen::Matrix2d dn;
+  dn << -P(1, 0), -P(1, 1), P(0, 0), P(0, 1);
+  return dn / L;
+}
+
+// Adds the 2x2 derivative blocks of a link's force pair to the rows of stations a = k, b = k+1.
+// dfa_dd, dfb_dd: derivatives w.r.t. d = x_b - x_a of the forces on a and b; dfa_dv, dfb_dv:
+// derivatives w.r.t. v_a and v_b (equal, through the link's mean velocity). Stored negated.
+struct LinkBlocks {
+  Eigen::Matrix2d fa_dd = Eigen::Matrix2d::Zero(), fb_dd = Eigen::Matrix2d::Zero();
+  Eigen::Matrix2d f_dv = Eigen::Matrix2d::Zero();  // same for both stations and both velocities
+};
+
+void Scatter(const CableModel& m, int k, const LinkBlocks& b, double kv, BlockTridiagonal& s) {
+  const int j0 = m.first_free(), j1 = m.last_free();
+  const int a = k, c = k + 1;
+  const bool fa = a >= j0 && a <= j1, fc = c >= j0 && c <= j1;
+  // -dF_a/dx_a = dfa_dd - kv f_dv, -dF_a/dx_c = -dfa_dd - kv f_dv, and likewise for c.
+  if (fa) s.diag[a - j0] += b.fa_dd - kv * b.f_dv;
+  if (fa && fc) s.upper[a - j0] += -b.fa_dd - kv * b.f_dv;
+  if (fa && fc) s.lower[c - j0] += b.fb_dd - kv * b.f_dv;
+  if (fc) s.diag[c - j0] += -b.fb_dd - kv * b.f_dv;
+}
+
+}  // namespace
+
+void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::VectorXd& tension,
+                      const Eigen::Matrix2Xd& v, double kv, BlockTridiagonal& system) {
+  const Eigen::Vector2d current(m.current, 0.0);
+  for (int k = 0; k < m.links; ++k) {
+    const double L = g.length[k];
+    if (!(L > 0)) continue;
+    const Eigen::Vector2d t = g.tangent.col(k);
+    const Eigen::Matrix2d tt = t * t.transpose();
+    LinkBlocks b;
+    // Tension T t on station k, -T t on k+1: axial stiffness (taut only) and geometric T/L.
+    const double dTdL = L > m.rest_length[k] ? m.axial_stiffness[k] / m.rest_length[k] : 0.0;
+    const Eigen::Matrix2d G =
+        dTdL * tt + (tension[k] / L) * (Eigen::Matrix2d::Identity() - tt);
+    b.fa_dd = G;
+    b.fb_dd = -G;
+    // Normal drag D n / 2 on both stations, D = -f^D q |q|, q = n . (mean velocity - c).
+    if (m.drag_factor[k] != 0) {
+      const Eigen::Vector2d n(-t.y(), t.x());
+      const Eigen::Matrix2d dn = NormalDerivative(t, L);
+      const Eigen::Vector2d w = 0.5 * (v.col(k) + v.col(k + 1)) - current;
+      const double q = w.dot(n);
+      const double f = m.drag_factor[k];
+      const Eigen::Matrix2d H =
+          -0.5 * f * (2.0 * std::abs(q) * n * (w.transpose() * dn) + q * std::abs(q) * dn);
+      b.fa_dd += H;
+      b.fb_dd += H;
+      b.f_dv = -0.5 * f * std::abs(q) * n * n.transpose();  // d(Dn/2)/dv_k, = d/dv_{k+1}
+    }
+    Scatter(m, k, b, kv, system);
+  }
+  // Prism drag -u f (.) rel: a function of the station's own velocity only.
+  if (kv != 0) {
+    for (int j : m.weight_stations) {
+      if (j < m.first_free() || j > m.last_free()) continue;
+      const Eigen::Vector2d rel = v.col(j) - current;
+      const double u = rel.norm();
+      if (u == 0) continue;
+      const Eigen::Vector2d f = m.prism_drag.col(j);
+      const Eigen::Matrix2d dfdv =
+          -(f.asDiagonal() * (u * Eigen::Matrix2d::Identity() + rel * rel.transpose() / u));
+      system.diag[j - m.first_free()] -= kv * dfdv;
+    }
+  }
+}
+
+void AddInertiaJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& a,
+                        double ka, BlockTridiagonal& system) {
+  const int j0 = m.first_free(), j1 = m.last_free();
+  for (int j = j0; j <= j1; ++j) system.diag[j - j0] += ka * StationInertia(m, g, j);
+  // d/dd of (e/2) n n^T a_j for each station j of link k: (e/2)[(n.a) dn + n (a^T dn)].
+  for (int k = 0; k < m.links; ++k) {
+    if (m.virtual_mass[k] == 0 || !(g.length[k] > 0)) continue;
+    const Eigen::Vector2d t = g.tangent.col(k);
+    const Eigen::Vector2d n(-t.y(), t.x());
+    const Eigen::Matrix2d dn = NormalDerivative(t, g.length[k]);
+    const double e = 0.5 * m.virtual_mass[k];
+    for (int j : {k, k + 1}) {
+      if (j < j0 || j > j1) continue;
+      const Eigen::Vector2d aj = a.col(j);
+      const Eigen::Matrix2d D = e * (n.dot(aj) * dn + n * (aj.transpose() * dn));
+      // d = x_{k+1} - x_k: +D with respect to x_{k+1}, -D with respect to x_k.
+      if (k >= j0) (j == k ? system.diag[j - j0] : system.lower[j - j0]) -= D;
+      if (k + 1 <= j1) (j == k ? system.upper[j - j0] : system.diag[j - j0]) += D;
+    }
+  }
+}
+
+}  // namespace cablefilm
