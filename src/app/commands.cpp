@@ -6,17 +6,13 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/film_pass.h"
 #include "app/progress.h"
-#include "app/run_extent.h"
 #include "app/result_files.h"
+#include "app/run_extent.h"
 #include "app/simulation_run.h"
-#include "core/forces.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
-
-#ifdef CABLEFILM_HAVE_RENDER
-#include "app/film_pass.h"
-#endif
 
 namespace cablefilm {
 namespace {
@@ -29,11 +25,8 @@ void InstallSignalHandlers() {
   std::signal(SIGTERM, OnSignal);
 }
 
-Eigen::VectorXd TensionsOf(const CableModel& m, const CableState& s) {
-  ForceWorkspace ws(m.links);
-  ComputeGeometry(s.x, ws.geometry);
-  ComputeHookeTensions(m, ws.geometry, ws.tension);
-  return ws.tension;
+const char* ModelName(const CableModel& m) {
+  return m.law == LinkLaw::kElastic ? "elastic" : "inextensible";
 }
 
 void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& grid) {
@@ -41,28 +34,157 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
   double weights = 0;
   for (const WeightDef& w : scene.weights) weights += w.mass;
   std::printf("scene %s: \"%s\"\n", scene.path.c_str(), scene.title.c_str());
-  std::printf("  %d stations, %d links in %zu section(s), unstretched length %.6g m\n",
-              m.stations(), m.links, scene.sections.size(), m.total_length());
+  std::printf("  %s cable: %d stations, %d links in %zu section(s), unstretched length %.6g m\n",
+              ModelName(m), m.stations(), m.links, scene.sections.size(), m.total_length());
   std::printf("  mass %.6g kg (cable %.6g kg, %zu weight(s) %.6g kg), net weight in fluid %.6g N\n",
               cable_mass + weights, cable_mass, scene.weights.size(), weights,
               m.net_weight.sum());
-  std::printf("  stable time step (explicit) %.4g s, stiffest at station %d\n",
-              grid.limit.time_step, grid.limit.station);
-  if (grid.automatic)
-    std::printf("  time step %.4g s = %.2f x the stability limit (safety factor %.2f), %ld steps\n",
-                grid.dt, grid.dt / grid.limit.time_step, grid.safety_factor,
-                grid.outputs * grid.steps_per_output);
-  else
-    std::printf("  time step %.4g s (given), %.2f x the stability limit, %ld steps\n", grid.dt,
-                grid.dt / grid.limit.time_step, grid.outputs * grid.steps_per_output);
-  if (!grid.automatic && grid.dt > grid.limit.time_step)
-    std::printf("  warning: the time step is above the stability limit; the explicit scheme "
-                "will likely blow up\n");
+  const long steps = grid.outputs * grid.steps_per_output;
+  if (m.law == LinkLaw::kElastic)
+    std::printf("  stable time step of the explicit scheme %.4g s (stiffest at station %d)\n",
+                grid.limit.time_step, grid.limit.station);
+  switch (grid.kind) {
+    case IntegratorKind::kExplicit:
+      std::printf("  integrator explicit, time step %.4g s = %.2f x the stability limit%s, %ld steps\n",
+                  grid.dt, grid.dt / grid.limit.time_step,
+                  grid.automatic ? " (auto: safety factor)" : " (given)", steps);
+      if (!grid.automatic && grid.dt > grid.limit.time_step)
+        std::printf("  warning: the time step is above the stability limit; the explicit scheme "
+                    "will blow up (use integrator = \"implicit\" or time_step = \"auto\")\n");
+      break;
+    case IntegratorKind::kImplicit:
+      std::printf("  integrator implicit (generalized-alpha, rho_inf %.2f), time step %.4g s%s = "
+                  "%.0f x the explicit limit, %ld steps\n",
+                  grid.rho_inf, grid.dt, grid.automatic ? " (auto: by accuracy)" : " (given)",
+                  grid.dt / grid.limit.time_step, steps);
+      break;
+    case IntegratorKind::kInextensible:
+      std::printf("  integrator inextensible (constraint tensions), output every %.4g s, substeps "
+                  "from the transverse wave limit\n",
+                  grid.interval);
+      break;
+  }
   const Eigen::Vector2d a = m.start.Position(0), b = m.end.Position(0);
-  if (m.start.prescribed() && m.end.prescribed() && (b - a).norm() > m.total_length())
+  if (m.law == LinkLaw::kElastic && m.start.prescribed() && m.end.prescribed() &&
+      (b - a).norm() > m.total_length())
     std::printf("  warning: the ends are %.3g %% further apart than the cable is long: it starts "
                 "stretched\n",
                 100.0 * ((b - a).norm() / m.total_length() - 1.0));
+}
+
+// One model of a scene simulated into result files: the equilibrium, the time series (with
+// `suffix` before .csv) and what the film needs.
+struct ModelRun {
+  CableModel model;
+  TimeGrid grid;
+  CableState initial;
+  Eigen::VectorXd initial_tension;  // [N]
+  RunExtent extent;
+  double peak = -1, peak_t = 0;     // largest link tension [N] and when [s]
+  int peak_link = 0;
+  bool completed = false;
+};
+
+ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::string& out_dir,
+                         const std::string& suffix) {
+  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
+  PrintSummary(scene, m, grid);
+  const auto t0 = std::chrono::steady_clock::now();
+  EquilibriumReport eq;
+  CableState initial = MakeInitialState(scene, m, &eq);
+  const double eq_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  auto integrator = MakeIntegrator(m, grid);
+  integrator->Initialize(m, initial);
+  ModelRun run{m, grid, initial, integrator->tensions(), RunExtent(m, initial)};
+  if (scene.initial == InitialStateKind::kEquilibrium)
+    std::printf("equilibrium: %d Newton iterations, residual %.3g N (of %.4g N), %.2f ms; "
+                "tension %.6g N at the start, %.6g N at the end\n",
+                eq.iterations, eq.residual, eq.force_scale, eq_ms, run.initial_tension[0],
+                run.initial_tension[m.links - 1]);
+  if (suffix.empty())
+    WriteEquilibriumCsv(out_dir + "/equilibrium.csv", m, initial, run.initial_tension);
+  else
+    WriteEquilibriumCsv(out_dir + "/equilibrium" + suffix + ".csv", m, initial,
+                        run.initial_tension);
+
+  const std::string series_path = out_dir + "/timeseries" + suffix + ".csv";
+  const std::string partial_path = out_dir + "/timeseries" + suffix + ".partial.csv";
+  TimeseriesWriter series(series_path);
+  CableState state = initial;
+  ProgressLine progress(std::string("simulating (") + ModelName(m) + ")",
+                        grid.outputs * grid.interval, "s");
+  const auto t1 = std::chrono::steady_clock::now();
+  try {
+    run.completed =
+        Simulate(m, *integrator, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
+          series.Append(m, s, T);
+          run.extent.Add(s, T);
+          Eigen::Index link = 0;
+          const double tmax = T.maxCoeff(&link);
+          if (tmax > run.peak) {
+            run.peak = tmax;
+            run.peak_t = s.t;
+            run.peak_link = static_cast<int>(link);
+          }
+          progress.Update(s.t);
+          return g_signal == 0;
+        });
+  } catch (const BlowUpError& e) {
+    progress.Finish();
+    series.CommitPartial(partial_path);
+    throw Error(std::string(e.what()) + " (" + integrator->name() + ", time step " +
+                std::to_string(grid.dt) + " s); the rows up to then are in " + partial_path);
+  }
+  progress.Finish();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  if (!run.completed) {
+    series.CommitPartial(partial_path);
+    std::fprintf(stderr, "interrupted at t = %.4g s; rows so far in %s\n", state.t,
+                 partial_path.c_str());
+    return run;
+  }
+  series.Commit();
+  const IntegratorStats st = integrator->stats();
+  std::printf("simulated %.6g s in %.3g s of computer time: %ld steps", state.t, wall, st.steps);
+  if (st.newton_iterations > 0)
+    std::printf(", %ld rejected, %.2f Newton iterations per step", st.rejected,
+                static_cast<double>(st.newton_iterations) / std::max(1L, st.steps));
+  std::printf(", %.3g station-steps/s\n", static_cast<double>(st.steps) * m.stations() / wall);
+  std::printf("peak tension %.6g N at t = %.4g s in link %d\n", run.peak, run.peak_t,
+              run.peak_link);
+  std::printf("wrote %s\n", series_path.c_str());
+  return run;
+}
+
+FilmRequest MakeFilmRequest(const SceneDef& scene, const RunOptions& o,
+                            const std::string& out_dir) {
+  FilmRequest r;
+  r.out_dir = out_dir;
+  r.width = o.width > 0 ? o.width : scene.film.width;
+  r.height = o.height > 0 ? o.height : scene.film.height;
+  r.fps = o.fps > 0 ? o.fps : scene.film.fps;
+  r.speed = o.speed > 0 ? o.speed : scene.film.speed;
+  r.crf = scene.film.crf;
+  r.colormap = o.colormap.empty() ? scene.film.colormap : o.colormap;
+  r.tension_min = o.tension_min >= 0 ? o.tension_min : scene.film.tension_min;
+  r.tension_max = o.tension_max >= 0 ? o.tension_max : scene.film.tension_max;
+  r.frames = o.frames >= 0 ? o.frames == 1 : scene.output.frames;
+  r.shader_dir = o.shader_dir;
+  return r;
+}
+
+std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options) {
+  const std::string out_dir = options.out_dir.empty() ? "output/" + scene.name : options.out_dir;
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec) throw Error("cannot create the output folder " + out_dir + ": " + ec.message());
+  return out_dir;
+}
+
+FilmRun ToFilmRun(const ModelRun& r, const std::string& label) {
+  return FilmRun{label, &r.model, r.grid, r.initial, r.initial_tension, r.extent};
 }
 
 }  // namespace
@@ -70,98 +192,44 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
 int CheckCommand(const std::string& scene_path) {
   const SceneDef scene = LoadScene(scene_path);
   const CableModel m = BuildModel(scene);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
-  PrintSummary(scene, m, grid);
-  if (scene.model == CableModelKind::kInextensible)
-    throw Error(scene.path + ": cable.model: \"inextensible\" is not available yet");
+  PrintSummary(scene, m, ChooseTimeGrid(m, scene.simulation, scene.output.interval));
   std::printf("ok\n");
   return 0;
 }
 
 int RunCommand(const std::string& scene_path, const RunOptions& options) {
   const SceneDef scene = LoadScene(scene_path);
-  if (scene.model == CableModelKind::kInextensible)
-    throw Error(scene.path + ": cable.model: \"inextensible\" is not available yet");
-  const CableModel m = BuildModel(scene);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
-  PrintSummary(scene, m, grid);
-
-  const std::string out_dir =
-      options.out_dir.empty() ? "output/" + scene.name : options.out_dir;
-  std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (ec) throw Error("cannot create the output folder " + out_dir + ": " + ec.message());
-
-  // Initial state.
-  const auto t0 = std::chrono::steady_clock::now();
-  EquilibriumReport eq;
-  const CableState initial = MakeInitialState(scene, m, &eq);
-  const double eq_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  const Eigen::VectorXd eq_tension = TensionsOf(m, initial);
-  if (scene.initial == InitialStateKind::kEquilibrium)
-    std::printf("equilibrium: %d Newton iterations, residual %.3g N (of %.4g N), %.1f ms; "
-                "tension %.6g N at the start, %.6g N at the end\n",
-                eq.iterations, eq.residual, eq.force_scale, eq_ms, eq_tension[0],
-                eq_tension[m.links - 1]);
-  WriteEquilibriumCsv(out_dir + "/equilibrium.csv", m, initial, eq_tension);
-
-  // Pass 1: the tension time series (and the ranges the film needs).
+  const std::string out_dir = PrepareOutDir(scene, options);
   InstallSignalHandlers();
-  TimeseriesWriter series(out_dir + "/timeseries.csv");
-  auto integrator = MakeIntegrator(m, grid);
-  CableState state = initial;
-  RunExtent extent(m, initial);
-  double peak = -1, peak_t = 0;
-  int peak_link = 0;
-  ProgressLine progress("simulating", grid.outputs * grid.interval, "s");
-  const auto t1 = std::chrono::steady_clock::now();
-  bool completed = false;
-  try {
-    completed = Simulate(m, *integrator, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
-      series.Append(m, s, T);
-      extent.Add(s, T);
-      Eigen::Index link = 0;
-      const double tmax = T.maxCoeff(&link);
-      if (tmax > peak) {
-        peak = tmax;
-        peak_t = s.t;
-        peak_link = static_cast<int>(link);
-      }
-      progress.Update(s.t);
-      return g_signal == 0;
-    });
-  } catch (const BlowUpError& e) {
-    progress.Finish();
-    series.CommitPartial(out_dir + "/timeseries.partial.csv");
-    throw Error(std::string(e.what()) + " (time step " + std::to_string(grid.dt) +
-                " s); the rows up to then are in " + out_dir + "/timeseries.partial.csv");
-  }
-  progress.Finish();
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-  if (!completed) {
-    series.CommitPartial(out_dir + "/timeseries.partial.csv");
-    std::fprintf(stderr, "interrupted at t = %.4g s; rows so far in %s/timeseries.partial.csv\n",
-                 state.t, out_dir.c_str());
-    return 128 + g_signal;
-  }
-  series.Commit();
-  const double station_steps =
-      static_cast<double>(grid.outputs) * grid.steps_per_output * (m.links + 1);
-  std::printf("simulated %.6g s in %.3g s of computer time (%.3g station-steps/s)\n", state.t,
-              wall, station_steps / wall);
-  std::printf("peak tension %.6g N at t = %.4g s in link %d\n", peak, peak_t, peak_link);
-  std::printf("wrote %s/equilibrium.csv, %s/timeseries.csv\n", out_dir.c_str(), out_dir.c_str());
-
+  const ModelRun run = SimulateToFiles(scene, BuildModel(scene), out_dir, "");
+  if (!run.completed) return 128 + g_signal;
   const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
   if (!film) return 0;
-#ifdef CABLEFILM_HAVE_RENDER
-  return RenderFilmPass(scene, m, initial, eq_tension, extent, grid, options, out_dir, g_signal);
-#else
-  std::printf("film: not rendered (this build has no renderer: CABLEFILM_RENDER=OFF)\n");
-  return 0;
-#endif
+  const bool finished = RenderFilm(scene, {ToFilmRun(run, ModelName(run.model))},
+                                   MakeFilmRequest(scene, options, out_dir), g_signal);
+  return finished ? 0 : 128 + g_signal;
+}
+
+int CompareCommand(const std::string& scene_path, const RunOptions& options) {
+  SceneDef scene = LoadScene(scene_path);
+  const std::string out_dir = PrepareOutDir(scene, options);
+  InstallSignalHandlers();
+  scene.model = CableModelKind::kElastic;
+  const ModelRun elastic = SimulateToFiles(scene, BuildModel(scene), out_dir, "");
+  if (!elastic.completed) return 128 + g_signal;
+  scene.model = CableModelKind::kInextensible;
+  const ModelRun rigid = SimulateToFiles(scene, BuildModel(scene), out_dir, "_inextensible");
+  if (!rigid.completed) return 128 + g_signal;
+  std::printf("peak tension: elastic %.6g N (t = %.4g s), inextensible %.6g N (t = %.4g s), "
+              "ratio inextensible/elastic %.4g\n",
+              elastic.peak, elastic.peak_t, rigid.peak, rigid.peak_t, rigid.peak / elastic.peak);
+  const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
+  FilmRequest request = MakeFilmRequest(scene, options, out_dir);
+  request.film = film;
+  const bool finished = RenderFilm(
+      scene, {ToFilmRun(elastic, "elastic"), ToFilmRun(rigid, "inextensible")}, request,
+      g_signal);
+  return finished ? 0 : 128 + g_signal;
 }
 
 }  // namespace cablefilm

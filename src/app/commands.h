@@ -17,5 +17,8 @@ struct RunOptions {
 
 int RunCommand(const std::string& scene_path, const RunOptions& options);
 int CheckCommand(const std::string& scene_path);
+// Runs the scene with the elastic and the inextensible model: timeseries.csv and
+// timeseries_inextensible.csv, max_tension.png with both (the paper's Figure 1), the film.
+int CompareCommand(const std::string& scene_path, const RunOptions& options);
 
 }  // namespace cablefilm

@@ -11,9 +11,10 @@ namespace {
 
 const char* kUsage =
     "usage: cablefilm run SCENE [options]   simulate, write the results and the film\n"
+    "       cablefilm compare SCENE [options]  elastic and inextensible runs, Figure 1\n"
     "       cablefilm check SCENE           validate a scene and print its summary\n"
     "\n"
-    "run options:\n"
+    "run and compare options:\n"
     "  --out DIR              output folder (default output/<scene name>)\n"
     "  --no-film              result files only, no rendering\n"
     "  --frames               also keep every frame as PNG under DIR/frames/\n"
@@ -46,7 +47,8 @@ int main(int argc, char** argv) {
     std::printf("%s", kUsage);
     return 0;
   }
-  if (command != "run" && command != "check") UsageError("unknown command \"" + command + "\"");
+  const bool runs = command == "run" || command == "compare";
+  if (!runs && command != "check") UsageError("unknown command \"" + command + "\"");
   std::string scene;
   cablefilm::RunOptions options;
   for (int i = 2; i < argc; ++i) {
@@ -55,33 +57,33 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) UsageError(arg + ": missing value");
       return argv[++i];
     };
-    if (command == "run" && arg == "--out") {
+    if (runs && arg == "--out") {
       options.out_dir = value();
-    } else if (command == "run" && arg == "--no-film") {
+    } else if (runs && arg == "--no-film") {
       options.film = 0;
-    } else if (command == "run" && arg == "--film") {
+    } else if (runs && arg == "--film") {
       options.film = 1;
-    } else if (command == "run" && arg == "--frames") {
+    } else if (runs && arg == "--frames") {
       options.frames = 1;
       if (options.film < 0) options.film = 1;
-    } else if (command == "run" && arg == "--size") {
+    } else if (runs && arg == "--size") {
       const char* v = value();
       if (std::sscanf(v, "%dx%d", &options.width, &options.height) != 2 || options.width < 16 ||
           options.height < 16 || options.width % 2 || options.height % 2)
         UsageError("--size: expected WxH with even numbers of pixels, got \"" + std::string(v) + "\"");
-    } else if (command == "run" && arg == "--fps") {
+    } else if (runs && arg == "--fps") {
       options.fps = ParseNumber(arg, value());
-    } else if (command == "run" && arg == "--speed") {
+    } else if (runs && arg == "--speed") {
       options.speed = ParseNumber(arg, value());
-    } else if (command == "run" && arg == "--colormap") {
+    } else if (runs && arg == "--colormap") {
       options.colormap = value();
-    } else if (command == "run" && arg == "--tension-range") {
+    } else if (runs && arg == "--tension-range") {
       const char* v = value();
       if (std::sscanf(v, "%lf,%lf", &options.tension_min, &options.tension_max) != 2 ||
           !(options.tension_min >= 0) || !(options.tension_max > options.tension_min))
         UsageError("--tension-range: expected MIN,MAX in N with MAX > MIN >= 0, got \"" +
                    std::string(v) + "\"");
-    } else if (command == "run" && arg == "--shaders") {
+    } else if (runs && arg == "--shaders") {
       options.shader_dir = value();
     } else if (!arg.empty() && arg[0] == '-') {
       UsageError("unknown option \"" + arg + "\" for " + command);
@@ -93,8 +95,9 @@ int main(int argc, char** argv) {
   }
   if (scene.empty()) UsageError("missing SCENE");
   try {
-    return command == "run" ? cablefilm::RunCommand(scene, options)
-                            : cablefilm::CheckCommand(scene);
+    if (command == "run") return cablefilm::RunCommand(scene, options);
+    if (command == "compare") return cablefilm::CompareCommand(scene, options);
+    return cablefilm::CheckCommand(scene);
   } catch (const cablefilm::Error& e) {
     std::fflush(stdout);
     std::fprintf(stderr, "cablefilm: error: %s\n", e.what());

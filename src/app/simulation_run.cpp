@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/inextensible.h"
+
 namespace cablefilm {
 
 namespace {
@@ -21,6 +23,7 @@ TimeGrid ChooseTimeGrid(const CableModel& m, const SimulationDef& sim, double in
   TimeGrid g;
   g.kind = sim.integrator == IntegratorChoice::kExplicit ? IntegratorKind::kExplicit
                                                          : IntegratorKind::kImplicit;
+  if (m.law == LinkLaw::kInextensible) g.kind = IntegratorKind::kInextensible;
   g.rho_inf = sim.rho_infinity;
   g.interval = interval;
   g.limit = ComputeStabilityLimit(m);
@@ -31,6 +34,8 @@ TimeGrid ChooseTimeGrid(const CableModel& m, const SimulationDef& sim, double in
     wanted = sim.safety_factor * g.limit.time_step;
   if (g.automatic && g.kind == IntegratorKind::kImplicit)
     wanted = ForcingTimeScale(m) / kImplicitStepsPerPeriod;
+  if (g.automatic && g.kind == IntegratorKind::kInextensible)
+    wanted = interval;  // it splits each step below its own (tension-dependent) stability limit
   g.steps_per_output = std::max(1, static_cast<int>(std::ceil(interval / wanted - 1e-9)));
   g.dt = interval / g.steps_per_output;
   g.outputs = static_cast<long>(std::floor(sim.duration / interval + 1e-9));
@@ -39,7 +44,9 @@ TimeGrid ChooseTimeGrid(const CableModel& m, const SimulationDef& sim, double in
 
 CableState MakeInitialState(const SceneDef& scene, const CableModel& m,
                             EquilibriumReport* report) {
-  if (scene.initial == InitialStateKind::kEquilibrium) return SolveEquilibrium(m, report);
+  if (scene.initial == InitialStateKind::kEquilibrium)
+    return m.law == LinkLaw::kInextensible ? SolveInextensibleEquilibrium(m, report)
+                                           : SolveEquilibrium(m, report);
   CableState s;
   s.x = StraightChord(m);
   s.v = Eigen::Matrix2Xd::Zero(2, m.stations());

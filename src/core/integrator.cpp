@@ -5,6 +5,7 @@
 
 #include "core/explicit_integrator.h"
 #include "core/generalized_alpha.h"
+#include "core/inextensible.h"
 
 namespace cablefilm {
 
@@ -15,6 +16,8 @@ std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel
       return std::make_unique<ExplicitIntegrator>(m);
     case IntegratorKind::kImplicit:
       return std::make_unique<GeneralizedAlphaIntegrator>(m, rho_inf);
+    case IntegratorKind::kInextensible:
+      return std::make_unique<InextensibleIntegrator>(m);
   }
   throw Error("unknown integrator");
 }

@@ -14,6 +14,7 @@ namespace cablefilm {
 enum class IntegratorKind {
   kExplicit,  // central differences (velocity Verlet form), second order, step below the limit
   kImplicit,  // generalized-alpha, second order, unconditionally stable, Newton per step
+  kInextensible,  // constraint tensions, links at rest length (reference [1] of the paper)
 };
 
 struct IntegratorStats {

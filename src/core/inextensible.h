@@ -1,0 +1,80 @@
+#pragma once
+// The inextensible cable of the paper's reference [1] (Walton & Polachek 1960): every link keeps
+// its rest length l exactly and its tension is the constraint force. With the per-station 2x2
+// inertia of eq. (1), the second time derivative of each length constraint couples a link's
+// tension only to its neighbours':
+//   t_k . (a_{k+1} - a_k) = -|v_{k+1} - v_k|^2 / L_k,   a_j = M_j^-1 (T_j t_j - T_{j-1} t_{j-1} + F_j)
+// so the tensions come from one scalar tridiagonal solve per evaluation: O(s). The same forces
+// F (weight, buoyancy, drag, current, prisms) and inertia as the elastic model are used.
+// A constraint force that comes out negative is a compression the model lets happen; it is
+// reported as a negative tension.
+#include <Eigen/Core>
+
+#include "core/equilibrium.h"
+#include "core/forces.h"
+#include "core/integrator.h"
+
+namespace cablefilm {
+
+// Solves the scalar tridiagonal systems of the constraints, allocation-free once sized.
+class ConstraintSolver {
+ public:
+  explicit ConstraintSolver(const CableModel& m);
+
+  // Tensions T and accelerations a at (x, v, t). Fills ws (geometry, force with tension).
+  void Accelerations(const CableModel& m, double t, const Eigen::Matrix2Xd& x,
+                     const Eigen::Matrix2Xd& v, ForceWorkspace& ws, Eigen::Matrix2Xd& a);
+  // Moves the free stations of x (mass-weighted, least motion) until every link has its rest
+  // length to `tolerance` relative. Returns false if it cannot (ends pulled too far apart).
+  bool ProjectPositions(const CableModel& m, Eigen::Matrix2Xd& x, double tolerance);
+  // Removes the velocity components that would change link lengths.
+  void ProjectVelocities(const CableModel& m, const Eigen::Matrix2Xd& x, Eigen::Matrix2Xd& v);
+
+ private:
+  // Assembles the constraint matrix for tangents t (from ws geometry) with inverse inertias.
+  void Assemble(const CableModel& m, const LinkGeometry& g);
+  // Thomas algorithm on (lower_, diag_, upper_) with rhs_ -> rhs_.
+  bool Solve();
+  // dx_j = W_j (lambda_j t_j - lambda_{j-1} t_{j-1}) for the free stations.
+  void Distribute(const CableModel& m, const LinkGeometry& g, const Eigen::VectorXd& lambda,
+                  Eigen::Matrix2Xd& dx) const;
+
+  std::vector<Eigen::Matrix2d> inverse_inertia_;  // W_j = M_j^-1 [1/kg]
+  Eigen::VectorXd lower_, diag_, upper_, rhs_, c_prime_;
+  LinkGeometry geometry_;
+  Eigen::Matrix2Xd correction_;
+};
+
+// Explicit second-order stepping of the constrained system (velocity Verlet form, as the
+// elastic explicit scheme) with projection of positions and velocities back onto the
+// constraints after each step, so link lengths stay at rest length to 1e-12 relative. Each
+// requested step is split into substeps below the stability limit of the transverse waves,
+// recomputed from the current tensions.
+class InextensibleIntegrator : public Integrator {
+ public:
+  explicit InextensibleIntegrator(const CableModel& m);
+  std::string name() const override { return "inextensible (constraint tensions)"; }
+  void Initialize(const CableModel& m, const CableState& state) override;
+  void Step(const CableModel& m, CableState& state, double dt) override;
+  const Eigen::VectorXd& tensions() const override { return ws_.tension; }
+  IntegratorStats stats() const override { return stats_; }
+
+  // The largest stable substep for the current tensions [s].
+  double StableSubstep(const CableModel& m) const;
+
+ private:
+  void Substep(const CableModel& m, CableState& s, double h);
+
+  ConstraintSolver solver_;
+  ForceWorkspace ws_;
+  Eigen::Matrix2Xd a_, v_pred_;
+  IntegratorStats stats_;
+  bool initialized_ = false;
+};
+
+// Static equilibrium of the inextensible cable: the elastic equilibrium with a stiffness so
+// high that the stretch is negligible, extrapolated to infinite stiffness, projected exactly
+// onto the rest lengths. Throws Error if the ends are further apart than the cable is long.
+CableState SolveInextensibleEquilibrium(const CableModel& m, EquilibriumReport* report);
+
+}  // namespace cablefilm
