@@ -185,6 +185,13 @@ bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_
 
 }  // namespace
 
+double StaticForceScale(const CableModel& m) {
+  // The cable's and prisms' net weights and the drag of the current on them (as if broadside).
+  const double current_load = 0.5 * m.current * m.current *
+                              (2.0 * m.drag_factor.sum() + m.prism_drag.colwise().sum().sum());
+  return std::max(m.net_weight.cwiseAbs().sum() + current_load, 1e-9);
+}
+
 Eigen::Matrix2Xd StraightChord(const CableModel& m) {
   if (!m.start.prescribed() && !m.end.prescribed())
     throw Error("the cable needs at least one prescribed end (fixed or moving)");
@@ -228,11 +235,7 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
   x.col(0) = m.start.prescribed() ? m.start.Position(0) : x.col(0);
   x.col(m.links) = m.end.prescribed() ? m.end.Position(0) : x.col(m.links);
 
-  // The forces the residual is measured against: the cable's and prisms' weights and the
-  // drag of the current on them (as if broadside).
-  const double current_load = 0.5 * m.current * m.current *
-                              (m.drag_factor.sum() * 2.0 + m.prism_drag.colwise().sum().sum());
-  report.force_scale = std::max(m.net_weight.cwiseAbs().sum() + current_load, 1e-9);
+  report.force_scale = StaticForceScale(m);
   const double tol = options.tolerance * report.force_scale;
 
   // Continuation in the current: solve still water first, then raise the current in steps,

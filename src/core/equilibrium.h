@@ -21,6 +21,9 @@ struct EquilibriumOptions {
   double tolerance = 1e-9;      // converged when residual <= tolerance * force_scale
 };
 
+// The static load the residual is measured against [N]: net weights plus the current's drag.
+double StaticForceScale(const CableModel& m);
+
 // A first guess that is close for most cables: an elastic catenary of the mean net weight
 // through the two ends (straight and uniformly stretched when taut), or a line hanging from
 // the prescribed end along the net weight when the other end is free.

@@ -190,12 +190,10 @@ CableState SolveInextensibleEquilibrium(const CableModel& m, EquilibriumReport* 
   // A penalty stiffness that stretches the cable by about 1e-6 under its loads: stiff enough
   // for Richardson extrapolation in 1/EA to be exact to O(1e-12), soft enough for the Newton
   // residual to stay above round-off.
-  const double current_load = 0.5 * m.current * m.current *
-                              (2.0 * m.drag_factor.sum() + m.prism_drag.colwise().sum().sum());
-  const double load = m.net_weight.cwiseAbs().sum() + current_load;
+  const double load = StaticForceScale(m);
   CableModel stiff = m;
   stiff.law = LinkLaw::kElastic;
-  stiff.axial_stiffness.setConstant(1e6 * std::max(load, 1e-9));
+  stiff.axial_stiffness.setConstant(1e6 * load);
   EquilibriumReport first;
   const CableState soft = SolveEquilibrium(stiff, &first);
   stiff.axial_stiffness *= 2.0;
