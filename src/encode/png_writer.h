@@ -1,0 +1,22 @@
+#pragma once
+// PNG files through libpng: 8-bit RGBA, written whole or not at all (cablefilm::AtomicFile).
+#include <string>
+
+#include "encode/image.h"
+
+namespace cablefilm {
+
+// zlib level 0..9: 1 is ~4x faster than the default 6 for rendered frames at ~15 % more bytes.
+struct PngOptions {
+  int compression_level = 6;
+  bool keep_alpha = false;  // false: write RGB (frames are opaque), true: write RGBA
+};
+
+// Writes `image` to `path` (a temporary file renamed on success). Throws Error with the path.
+void WritePng(const std::string& path, const Image& image, const PngOptions& options = {});
+
+// Reads any 8-bit or 16-bit PNG (grey, RGB, with or without alpha, palette) as RGBA8.
+// Throws Error with the path. Used by tests and the golden-image comparison.
+Image ReadPng(const std::string& path);
+
+}  // namespace cablefilm

@@ -1,0 +1,76 @@
+#pragma once
+// What the renderer draws, as plain C++ (no GL types): the simulation's snapshots, the
+// film-wide specification, and the abstract frame MakeFrame builds from them (shapes and text
+// items in pixel coordinates, origin at the top left, y down), which Renderer::Draw rasterises.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cablefilm {
+
+struct CableSnapshot {            // one output time of the simulation
+  double t = 0;                   // simulated time [s]
+  std::vector<double> x, y;       // station positions x_j, y_j [m], size s+1 (0 = start, s = end)
+  std::vector<double> tension;    // link tensions T_{j+1/2} [N], size s (link j joins j and j+1)
+};
+
+struct FilmSpec {                          // fixed for the whole film
+  std::string title;
+  std::vector<double> arc_length;          // unstretched arc length of each station [m], size s+1
+  std::vector<double> section_boundaries;  // arc lengths where a section ends, interior only [m]
+  std::vector<int> weight_stations;        // stations carrying a suspended weight (prism)
+  std::vector<int> moving_ends;            // driven ends among {0, s}: their path is drawn
+  std::vector<int> fixed_ends;             // prescribed fixed ends (anchors)
+  CableSnapshot equilibrium;               // the static equilibrium (t = 0)
+  double duration = 0;                     // simulated seconds the film covers
+  double tension_min = 0, tension_max = 1; // colour and plot range [N], fixed for the film
+  double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // world box of the cable over the run [m]
+};
+
+// Colours are sRGB, 0..1, with straight (not premultiplied) alpha.
+struct Rgba {
+  float r = 0, g = 0, b = 0, a = 1;
+};
+
+struct Vec2f {
+  float x = 0, y = 0;
+};
+
+enum class ShapeKind : std::uint8_t {
+  kSegment,   // a line from a to b, `size` wide, round caps, anti-aliased edges
+  kDisc,      // a filled circle of centre a, radius `size`
+  kRect,      // a filled axis-aligned rectangle with corners a and b (a = top left)
+  kDiamond,   // a filled square turned 45 degrees, centre a, `size` from centre to tip
+  kTriangle,  // a filled triangle a, b, c (no edge anti-aliasing: for area fills)
+};
+
+struct Shape {
+  ShapeKind kind = ShapeKind::kSegment;
+  Vec2f a, b, c;
+  float size = 1;  // line width, or radius [px]
+  Rgba color;
+};
+
+enum class HAlign : std::uint8_t { kLeft, kCenter, kRight };
+enum class VAlign : std::uint8_t { kTop, kMiddle, kBaseline, kBottom };
+
+struct TextItem {
+  std::string text;  // UTF-8
+  Vec2f pos;         // anchor point [px]
+  float size = 14;   // nominal font size [px] (em height)
+  Rgba color;
+  HAlign halign = HAlign::kLeft;
+  VAlign valign = VAlign::kBaseline;
+  bool vertical = false;  // rotated 90 degrees counter-clockwise (reads bottom to top)
+  bool bold = false;
+};
+
+// One frame: drawn in order, shapes first, then the text on top.
+struct Frame {
+  int width = 0, height = 0;
+  Rgba background;
+  std::vector<Shape> shapes;
+  std::vector<TextItem> texts;
+};
+
+}  // namespace cablefilm

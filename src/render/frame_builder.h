@@ -1,0 +1,83 @@
+#pragma once
+// Builds the abstract frame of the film (no GL): the cable to scale coloured by link tension
+// with a colour bar, the tension along the cable (now, equilibrium, min-max envelope so far),
+// the maximum tension against time, the title and the simulated time. Also the still of the
+// maximum tension against time (the paper's Figure 1). Pure functions of their inputs.
+#include <cstdint>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "render/colormap.h"
+#include "render/frame.h"
+#include "render/plot_layout.h"
+
+namespace cablefilm {
+
+// What the film has shown so far, accumulated snapshot by snapshot: the O(s) envelope, one
+// (t, max) pair per snapshot, and the end's path as segments between cells of a 1000 x 1000
+// grid over the world box, each cell pair stored once, so a periodic path stops growing.
+class FilmHistory {
+ public:
+  explicit FilmHistory(const FilmSpec& spec);
+  // Checks the snapshot against the spec (sizes, finite values; throws Error with the values).
+  void Add(const CableSnapshot& snapshot);
+
+  long count() const { return count_; }
+  const std::vector<double>& link_min() const { return link_min_; }  // [N], size s
+  const std::vector<double>& link_max() const { return link_max_; }  // [N], size s
+  const std::vector<double>& times() const { return times_; }        // [s], one per snapshot
+  const std::vector<double>& max_tension() const { return max_tension_; }  // [N], per snapshot
+  struct PathSegment {
+    Vec2f a, b;  // [m]
+  };
+  // Path of each of spec.moving_ends (same order), as segments in no particular order.
+  const std::vector<std::vector<PathSegment>>& end_paths() const { return end_paths_; }
+
+ private:
+  std::vector<int> moving_ends_;
+  std::size_t stations_;
+  double x0_, y0_, cell_;  // path grid: origin and cell size [m]
+  long count_ = 0;
+  std::vector<double> link_min_, link_max_, times_, max_tension_;
+  std::vector<std::vector<PathSegment>> end_paths_;
+  std::vector<Vec2f> path_last_;                            // last stored point of each end
+  std::vector<std::unordered_set<std::uint64_t>> path_seen_;  // cell pairs already stored
+};
+
+// Colours of a theme: the film uses the dark one, the still the light one (print).
+struct Theme {
+  Rgba background, panel, grid, axis, text, text_dim, current, equilibrium, envelope, accent,
+      halo, marker_fill, marker_edge;
+  static Theme Dark();
+  static Theme Light();
+};
+
+// Where everything goes in a frame of a given size; the data-to-pixel maps the tests use.
+struct FrameLayout {
+  int width = 0, height = 0;
+  float scale = 1;         // size of a "design pixel" of the 1920x1080 layout [px]
+  PixelRect cable_panel, tension_panel, max_panel;
+  PlotMapping cable;       // world [m] -> pixels, equal scale in x and y
+  PlotMapping tension;     // unstretched arc length [m], tension [kN]
+  PlotMapping max_tension; // time [s], tension [kN]
+  PixelRect colorbar;      // the colour bar: bottom = tension_min, top = tension_max
+  float cable_width = 6;   // [px]
+};
+FrameLayout MakeFrameLayout(const FilmSpec& spec, int width, int height);
+
+Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSnapshot& snapshot,
+                const FrameLayout& layout, const Colormap& colormap,
+                const Theme& theme = Theme::Dark());
+
+// One labelled curve of maximum tension along the cable against time.
+struct MaxTensionSeries {
+  std::string label;            // e.g. "elastic", "inextensible"
+  std::vector<double> t;        // [s]
+  std::vector<double> tension;  // [N], same size as t
+};
+// The still: every series on one pair of axes with a legend. Throws Error on mismatched sizes.
+Frame MakeMaxTensionFigure(const std::string& title, const std::vector<MaxTensionSeries>& series,
+                           int width, int height, const Theme& theme = Theme::Light());
+
+}  // namespace cablefilm

@@ -1,0 +1,114 @@
+#include "encode/video_encoder.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "core/error.h"
+
+namespace cablefilm {
+namespace {
+
+std::string TempDir() {
+  const auto dir = std::filesystem::path(CABLEFILM_BINARY_DIR) / "test_output" / "encode";
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+Image Pattern(int w, int h, int frame) {
+  Image image(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      std::uint8_t* p = image.row(y) + 4 * x;
+      p[0] = static_cast<std::uint8_t>((x + 4 * frame) & 0xff);
+      p[1] = static_cast<std::uint8_t>(y & 0xff);
+      p[2] = static_cast<std::uint8_t>((x + y) / 2 & 0xff);
+      p[3] = 255;
+    }
+  return image;
+}
+
+TEST(VideoEncoder, FilmReopensWithTheExpectedStream) {
+  const std::string path = TempDir() + "/film.mp4";
+  std::filesystem::remove(path);
+  VideoOptions options;
+  options.width = 320;
+  options.height = 240;
+  options.fps = 25;
+  options.preset = "ultrafast";
+  VideoEncoder encoder(path, options);
+  for (int i = 0; i < 50; ++i) encoder.AddFrame(Pattern(320, 240, i));
+  EXPECT_FALSE(std::filesystem::exists(path)) << "the film appears only when finished";
+  encoder.Finish();
+  encoder.Finish();  // idempotent
+  EXPECT_EQ(encoder.frames_added(), 50);
+
+  const VideoInfo info = ProbeVideo(path);
+  EXPECT_EQ(info.codec, "h264");
+  EXPECT_EQ(info.pixel_format, "yuv420p");
+  EXPECT_EQ(info.width, 320);
+  EXPECT_EQ(info.height, 240);
+  EXPECT_EQ(info.frames, 50);
+  // 50 frames at 25 fps last 2 s; the stream duration is counted in frame durations, so it is
+  // exact up to one frame (1/25 s) depending on how the muxer rounds the last one.
+  EXPECT_NEAR(info.duration, 2.0, 1.0 / 25 + 1e-6);
+  EXPECT_NEAR(info.fps, 25.0, 1e-6);
+  // +faststart: the index (moov) precedes the media data (mdat), so the film streams.
+  ASSERT_GE(info.moov_offset, 0);
+  ASSERT_GE(info.mdat_offset, 0);
+  EXPECT_LT(info.moov_offset, info.mdat_offset);
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+}
+
+TEST(VideoEncoder, NonIntegerFrameRate) {
+  const std::string path = TempDir() + "/film_2997.mp4";
+  VideoOptions options;
+  options.width = 64;
+  options.height = 64;
+  options.fps = 30000.0 / 1001;
+  options.preset = "ultrafast";
+  VideoEncoder encoder(path, options);
+  for (int i = 0; i < 30; ++i) encoder.AddFrame(Pattern(64, 64, i));
+  encoder.Finish();
+  const VideoInfo info = ProbeVideo(path);
+  EXPECT_EQ(info.frames, 30);
+  EXPECT_NEAR(info.fps, 29.97, 0.01);
+  EXPECT_NEAR(info.duration, 30 / (30000.0 / 1001), 1.0 / 29.97 + 1e-6);
+}
+
+TEST(VideoEncoder, UnfinishedEncoderLeavesNoFilm) {
+  const std::string path = TempDir() + "/abandoned.mp4";
+  std::filesystem::remove(path);
+  {
+    VideoOptions options;
+    options.width = 64;
+    options.height = 48;
+    options.preset = "ultrafast";
+    VideoEncoder encoder(path, options);
+    encoder.AddFrame(Pattern(64, 48, 0));
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+}
+
+TEST(VideoEncoder, RejectsBadOptionsAndFrames) {
+  VideoOptions odd;
+  odd.width = 321;
+  odd.height = 240;
+  EXPECT_THROW(VideoEncoder(TempDir() + "/odd.mp4", odd), Error);
+  VideoOptions bad_preset;
+  bad_preset.width = 64;
+  bad_preset.height = 64;
+  bad_preset.preset = "no-such-preset";
+  EXPECT_THROW(VideoEncoder(TempDir() + "/preset.mp4", bad_preset), Error);
+  VideoOptions ok;
+  ok.width = 64;
+  ok.height = 64;
+  ok.preset = "ultrafast";
+  VideoEncoder encoder(TempDir() + "/size.mp4", ok);
+  EXPECT_THROW(encoder.AddFrame(Pattern(32, 32, 0)), Error);
+  EXPECT_THROW(VideoEncoder("/nonexistent_dir_cablefilm/film.mp4", ok), Error);
+}
+
+}  // namespace
+}  // namespace cablefilm

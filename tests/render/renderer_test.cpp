@@ -1,0 +1,217 @@
+#include "render/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "encode/png_writer.h"
+#include "render/demo_cable.h"
+#include "render/frame_builder.h"
+#include "render/shader_program.h"
+#include "test_scene.h"
+
+namespace cablefilm {
+namespace {
+
+using testing::kLinks;
+using testing::kTensionMax;
+
+// Largest channel difference between a pixel and an sRGB colour, in 1/255 units.
+int ColorDistance(const std::uint8_t* p, const Rgba& c) {
+  auto q = [](float v) { return static_cast<int>(std::lround(v * 255)); };
+  return std::max({std::abs(p[0] - q(c.r)), std::abs(p[1] - q(c.g)), std::abs(p[2] - q(c.b))});
+}
+
+class RendererTest : public ::testing::Test {
+ protected:
+  static constexpr int kW = 960, kH = 540;
+  void SetUp() override {
+    spec_ = testing::StraightSpec();
+    snap_ = testing::StraightSnapshot(2.0);
+    FilmHistory history(spec_);
+    history.Add(snap_);
+    layout_ = MakeFrameLayout(spec_, kW, kH);
+    frame_ = MakeFrame(spec_, history, snap_, layout_, map_);
+    RenderOptions options;
+    options.width = kW;
+    options.height = kH;
+    Renderer renderer(options);
+    image_ = renderer.Draw(frame_);
+    WritePng(testing::OutputDir("renderer") + "/straight_960x540.png", image_);
+  }
+  const std::uint8_t* Pixel(float x, float y) const {
+    return image_.at(static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
+  }
+  FilmSpec spec_;
+  CableSnapshot snap_;
+  FrameLayout layout_;
+  Colormap map_{"viridis"};
+  Frame frame_;
+  Image image_;
+};
+
+TEST_F(RendererTest, ImageHasTheFrameSizeAndBackground) {
+  ASSERT_EQ(image_.width, kW);
+  ASSERT_EQ(image_.height, kH);
+  ASSERT_EQ(image_.rgba.size(), static_cast<std::size_t>(kW) * kH * 4);
+  // The corners are background (outside every panel); exact up to 8-bit rounding (1/255).
+  for (auto [x, y] : {std::pair{1, kH - 2}, std::pair{kW - 2, kH - 2}, std::pair{1, 1}}) {
+    EXPECT_LE(ColorDistance(image_.at(x, y), frame_.background), 1) << x << "," << y;
+    EXPECT_EQ(image_.at(x, y)[3], 255);
+  }
+}
+
+// At the middle of each link (away from the markers) the line is 3 px wide and its centre pixel
+// fully covered, so its colour is the map's at the link's tension, up to the 8-bit rounding of
+// the vertex colour and of the framebuffer: 2/255.
+TEST_F(RendererTest, CableColourIsTheMapAtTheLinkTension) {
+  for (int j = 0; j < kLinks; ++j) {
+    if (j == 4 || j == 5 || j == 0 || j == kLinks - 1) continue;  // weight, anchor, moving end
+    const Vec2f p = layout_.cable.ToPixel(j + 0.5, 0);
+    const Rgba want = map_.Map(snap_.tension[j], 0, kTensionMax);
+    EXPECT_LE(ColorDistance(Pixel(p.x, p.y), want), 2) << "link " << j;
+  }
+}
+
+// The colour bar's bottom and top are the map's ends. A band is 1/128 of the bar (under 2 px
+// here) and the probe, 1.5 px inside the bar's frame, may fall in the first or second band: so
+// the pixel must match, within 8-bit rounding (2/255), the map somewhere in its first (last)
+// 2/128, i.e. table entries 0..4 (251..255).
+TEST_F(RendererTest, ColourBarEnds) {
+  const PixelRect& cb = layout_.colorbar;
+  const float x = 0.5f * (cb.x0 + cb.x1);
+  auto nearest = [&](const std::uint8_t* p, int first, int last) {
+    int best = 255;
+    for (int i = first; i <= last; ++i) best = std::min(best, ColorDistance(p, map_.At(i / 255.0)));
+    return best;
+  };
+  EXPECT_LE(nearest(Pixel(x, cb.y1 - 1.5f), 0, 4), 2);
+  EXPECT_LE(nearest(Pixel(x, cb.y0 + 1.5f), 251, 255), 2);
+  // And the two ends are far apart (the bar is not one colour).
+  EXPECT_GT(ColorDistance(Pixel(x, cb.y1 - 1.5f), map_.At(1)), 100);
+}
+
+// The current tension curve (drawn in the theme's 'current' colour) crosses the column of a
+// link's midpoint at the height of that link's tension: within 1 px (the line is 1.3 px wide,
+// the centre of its pixel run is within half a pixel of the true line, plus sub-pixel slope).
+TEST_F(RendererTest, TensionCurveAtTheRightHeight) {
+  const Rgba current = Theme::Dark().current;
+  for (int j : {2, 7, 13, 17}) {
+    const double mid = j + 0.5;
+    const Vec2f want = layout_.tension.ToPixel(mid, snap_.tension[j] / 1000);
+    const int x = static_cast<int>(std::floor(want.x));
+    double sum = 0, weight = 0;
+    for (int y = static_cast<int>(layout_.tension.rect.y0); y < layout_.tension.rect.y1; ++y) {
+      const int d = ColorDistance(image_.at(x, y), current);
+      if (d < 40) {
+        sum += (y + 0.5) * (40 - d);
+        weight += 40 - d;
+      }
+    }
+    ASSERT_GT(weight, 0) << "no curve in column " << x;
+    EXPECT_NEAR(sum / weight, want.y, 1.0) << "link " << j;
+  }
+}
+
+TEST_F(RendererTest, TextIsDrawn) {
+  // The title's row holds light text pixels on the dark background.
+  int bright = 0;
+  const int y0 = static_cast<int>(44 * layout_.scale) - 8, y1 = static_cast<int>(44 * layout_.scale);
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < kW / 3; ++x) bright += image_.at(x, y)[0] > 180;
+  EXPECT_GT(bright, 50);
+}
+
+// A golden image of a tiny scene. llvmpipe (and FreeType) versions rasterise edges slightly
+// differently, so a pixel may differ by up to 48/255 in a channel and up to 1 % of the pixels
+// may differ by more; a real change (a moved curve, a missing label, another colour) changes
+// far more. Set CABLEFILM_UPDATE_GOLDEN=1 to rewrite the golden file.
+TEST(RendererGolden, TinyDemoFrame) {
+  const FilmSpec spec = MakeDemoSpec(20);
+  FilmHistory history(spec);
+  CableSnapshot snap;
+  for (int i = 0; i <= 150; ++i) {
+    snap = MakeDemoSnapshot(spec, i / 10.0);
+    history.Add(snap);
+  }
+  const FrameLayout layout = MakeFrameLayout(spec, 320, 180);
+  const Frame frame = MakeFrame(spec, history, snap, layout, Colormap("viridis"));
+  RenderOptions options;
+  options.width = 320;
+  options.height = 180;
+  const Image actual = Renderer(options).Draw(frame);
+  const std::string golden = std::string(CABLEFILM_SOURCE_DIR) + "/tests/render/golden/demo_320x180.png";
+  if (const char* update = std::getenv("CABLEFILM_UPDATE_GOLDEN"); update && *update == '1') {
+    std::filesystem::create_directories(std::filesystem::path(golden).parent_path());
+    WritePng(golden, actual, PngOptions{9, false});
+  }
+  const Image expected = ReadPng(golden);
+  ASSERT_EQ(expected.width, actual.width);
+  ASSERT_EQ(expected.height, actual.height);
+  long differing = 0;
+  for (int y = 0; y < actual.height; ++y)
+    for (int x = 0; x < actual.width; ++x) {
+      const std::uint8_t* a = actual.at(x, y);
+      const std::uint8_t* e = expected.at(x, y);
+      const int d = std::max({std::abs(a[0] - e[0]), std::abs(a[1] - e[1]), std::abs(a[2] - e[2])});
+      differing += d > 48;
+    }
+  const double fraction = static_cast<double>(differing) / (actual.width * actual.height);
+  if (fraction > 0.01) {
+    const std::string out = testing::OutputDir("golden") + "/demo_320x180_actual.png";
+    WritePng(out, actual);
+    ADD_FAILURE() << fraction * 100 << " % of pixels differ from " << golden
+                  << "; the actual image is " << out;
+  }
+}
+
+TEST(ShaderProgram, DirectoryFromOptionThenEnvironmentThenBuild) {
+  EXPECT_EQ(ResolveShaderDir("/some/dir"), "/some/dir");
+  ::setenv("CABLEFILM_SHADERS", "/from/env", 1);
+  EXPECT_EQ(ResolveShaderDir(""), "/from/env");
+  ::unsetenv("CABLEFILM_SHADERS");
+  EXPECT_EQ(ResolveShaderDir(""), std::string(CABLEFILM_SOURCE_DIR) + "/shaders");
+}
+
+TEST(ShaderProgram, MissingShaderIsAnErrorNamingThePath) {
+  RenderOptions options;
+  options.width = 32;
+  options.height = 32;
+  options.shader_dir = "/nonexistent_cablefilm_shaders";
+  try {
+    Renderer renderer(options);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent_cablefilm_shaders/shape.vert"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ShaderProgram, CompileErrorCarriesTheCompilerLog) {
+  const std::string dir = testing::OutputDir("broken_shaders");
+  for (const char* name : {"shape.vert", "shape.frag", "text.vert", "text.frag"})
+    std::filesystem::copy_file(std::string(CABLEFILM_SOURCE_DIR) + "/shaders/" + name,
+                               dir + "/" + name,
+                               std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(dir + "/shape.frag") << "#version 330 core\nout vec4 c;\nvoid main() { c = undefined_thing; }\n";
+  RenderOptions options;
+  options.width = 32;
+  options.height = 32;
+  options.shader_dir = dir;
+  try {
+    Renderer renderer(options);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("shape.frag does not compile"), std::string::npos) << what;
+    EXPECT_NE(what.find("undefined_thing"), std::string::npos) << what;  // the log itself
+  }
+}
+
+}  // namespace
+}  // namespace cablefilm

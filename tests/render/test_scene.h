@@ -1,0 +1,57 @@
+#pragma once
+// A small, exactly known scene for the render tests: a straight horizontal cable of 20 links
+// of 1 m from (0, 0) to (20, 0), tensions rising linearly across the colour range.
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "render/frame.h"
+
+namespace cablefilm::testing {
+
+constexpr int kLinks = 20;
+constexpr double kTensionMax = 40000;  // [N]
+
+inline FilmSpec StraightSpec() {
+  FilmSpec spec;
+  spec.title = "Straight test cable";
+  for (int j = 0; j <= kLinks; ++j) spec.arc_length.push_back(j);
+  spec.section_boundaries = {10};
+  spec.weight_stations = {5};
+  spec.fixed_ends = {0};
+  spec.moving_ends = {kLinks};
+  spec.duration = 10;
+  spec.tension_min = 0;
+  spec.tension_max = kTensionMax;
+  spec.x_min = 0;
+  spec.x_max = kLinks;
+  spec.y_min = -2;
+  spec.y_max = 2;
+  spec.equilibrium.t = 0;
+  for (int j = 0; j <= kLinks; ++j) {
+    spec.equilibrium.x.push_back(j);
+    spec.equilibrium.y.push_back(-1);
+  }
+  spec.equilibrium.tension.assign(kLinks, 0.25 * kTensionMax);
+  return spec;
+}
+
+// Link j carries (j + 0.5) / kLinks of the maximum: colours sweep the whole map.
+inline CableSnapshot StraightSnapshot(double t) {
+  CableSnapshot s;
+  s.t = t;
+  for (int j = 0; j <= kLinks; ++j) {
+    s.x.push_back(j);
+    s.y.push_back(0);
+  }
+  for (int j = 0; j < kLinks; ++j) s.tension.push_back((j + 0.5) / kLinks * kTensionMax);
+  return s;
+}
+
+inline std::string OutputDir(const std::string& name) {
+  const auto dir = std::filesystem::path(CABLEFILM_BINARY_DIR) / "test_output" / "render" / name;
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+}  // namespace cablefilm::testing
