@@ -186,10 +186,17 @@ bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_
 }  // namespace
 
 double StaticForceScale(const CableModel& m) {
-  // The cable's and prisms' net weights and the drag of the current on them (as if broadside).
+  // The cable's and prisms' net weights and the drag of the current on them (as if broadside),
+  // and, for ends further apart than the cable is long, the tension of the stretched chord: a
+  // weightless taut line has no other force scale (without it the tolerance would be 1e-18 N).
   const double current_load = 0.5 * m.current * m.current *
                               (2.0 * m.drag_factor.sum() + m.prism_drag.colwise().sum().sum());
-  return std::max(m.net_weight.cwiseAbs().sum() + current_load, 1e-9);
+  double chord_tension = 0;
+  if (m.start.prescribed() && m.end.prescribed()) {
+    const double chord = (m.end.Position(0) - m.start.Position(0)).norm();
+    chord_tension = m.axial_stiffness.minCoeff() * std::max(0.0, chord / m.total_length() - 1.0);
+  }
+  return std::max(m.net_weight.cwiseAbs().sum() + current_load + chord_tension, 1e-9);
 }
 
 Eigen::Matrix2Xd StraightChord(const CableModel& m) {

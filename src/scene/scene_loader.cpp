@@ -337,6 +337,20 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
       r.Fail(ends, "end.motion",
              "expected at least one end that is not \"free\" (a cable with two free ends has no "
              "equilibrium)");
+    // scene-format.md: ends further apart than the cable can reach are an error for an
+    // inextensible line (an elastic one starts stretched: the run warns and solves).
+    if (scene.model == CableModelKind::kInextensible &&
+        scene.start.motion != EndMotionKind::kFree && scene.end.motion != EndMotionKind::kFree) {
+      double total = 0;
+      for (const SectionDef& sec : scene.sections) total += sec.length;
+      const double chord = std::hypot(scene.end.position[0] - scene.start.position[0],
+                                      scene.end.position[1] - scene.start.position[1]);
+      if (chord > total)
+        r.Fail(ends->get("end")->as_table()->get("position"), "end.position",
+               "expected the ends at most the cable's length (" + TableReader::Fmt(total) +
+                   " m) apart for an inextensible cable, they are " + TableReader::Fmt(chord) +
+                   " m apart");
+    }
     r.Finish();
   }
   if (const toml::table* t = top.SubTable("initial", false)) {

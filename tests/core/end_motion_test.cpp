@@ -1,0 +1,112 @@
+// End motions: eq. (3) (trochoid with the ramp that starts from rest) and the table spline.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/end_motion.h"
+#include "core/error.h"
+
+namespace cablefilm {
+namespace {
+
+// Eq. (3) typed in from the paper.
+Eigen::Vector2d Eq3(double t, const Eigen::Vector2d& rest, double a, double b, double c, double d,
+                    double w, double nu) {
+  const double R = 1 - (1 + nu * t) * std::exp(-nu * t);
+  return rest + R * Eigen::Vector2d(a * std::cos(w * t) + b * std::sin(w * t),
+                                    c * std::cos(w * t) + d * std::sin(w * t));
+}
+
+TEST(EndMotion, TrochoidFollowsEquation3) {
+  const Eigen::Vector2d rest(80.0, 30.48);
+  const double a = 1.8288, b = 0.3, c = -0.2, d = 1.8288, w = 2 * M_PI / 10, nu = 0.5;
+  const EndMotion e = EndMotion::Trochoid(rest, a, b, c, d, w, nu);
+  // Starts from rest: R(0) = 0 and R'(0) = 0.
+  EXPECT_EQ(e.Position(0.0), rest);
+  EXPECT_EQ(e.Velocity(0.0), Eigen::Vector2d::Zero());
+  EXPECT_EQ(e.Position(-1.0), rest);  // holds before t = 0
+  // Just after 0 it has barely moved: R(t) ~ nu^2 t^2 / 2, R'(t) ~ nu^2 t.
+  EXPECT_LT(e.Velocity(1e-6).norm(), 1e-6 * nu * nu * 2.0 * 2.0);
+  for (double t : {0.01, 0.3, 1.0, 2.7, 5.0, 13.1, 60.0}) {
+    EXPECT_LT((e.Position(t) - Eq3(t, rest, a, b, c, d, w, nu)).norm(), 1e-12) << t;
+    // Central differences, step h: truncation h^2/6 |x'''| ~ 1e-8 * few, round-off
+    // 1e-16 * 80 / h ~ 1e-11 (velocity) and 1e-16 * 80 / h^2 ~ 1e-8 (acceleration, from the
+    // velocity: 1e-16 / h ~ 1e-12). Tolerances 1e-7 hold both with room.
+    const double h = 1e-4;
+    const Eigen::Vector2d v_fd = (Eq3(t + h, rest, a, b, c, d, w, nu) -
+                                  Eq3(t - h, rest, a, b, c, d, w, nu)) / (2 * h);
+    EXPECT_LT((e.Velocity(t) - v_fd).norm(), 1e-7) << t;
+    const Eigen::Vector2d a_fd = (e.Velocity(t + h) - e.Velocity(t - h)) / (2 * h);
+    EXPECT_LT((e.Acceleration(t) - a_fd).norm(), 1e-7) << t;
+  }
+  // Late on the ramp is done: a circle of radius 1.83 m about rest (a = d, b = -c would be
+  // exact; here only check it stays within the amplitude bound).
+  EXPECT_LT((e.Position(60.0) - rest).norm(), std::hypot(a, b) + std::hypot(c, d));
+}
+
+TEST(EndMotion, FixedAndFreeHoldStill) {
+  const EndMotion f = EndMotion::Fixed({1, 2});
+  EXPECT_EQ(f.Position(5.0), Eigen::Vector2d(1, 2));
+  EXPECT_EQ(f.Velocity(5.0), Eigen::Vector2d::Zero());
+  EXPECT_EQ(f.Acceleration(5.0), Eigen::Vector2d::Zero());
+  EXPECT_TRUE(f.prescribed());
+  EXPECT_FALSE(EndMotion::Free({0, 0}).prescribed());
+}
+
+std::vector<Eigen::Vector3d> Rows() {
+  return {{0.0, 0.0, 0.0}, {0.5, 0.3, -0.1}, {1.5, -0.2, 0.4}, {2.0, 0.1, 0.1}, {3.2, 0.6, -0.5}};
+}
+
+TEST(EndMotion, TableSplineThroughKnotsC2AndHeld) {
+  const Eigen::Vector2d rest(10.0, -2.0);
+  const auto rows = Rows();
+  const EndMotion e = EndMotion::Table(rest, rows);
+  for (const auto& r : rows)
+    EXPECT_LT((e.Position(r[0]) - rest - Eigen::Vector2d(r[1], r[2])).norm(), 1e-14) << r[0];
+  // C2 at the interior knots: value, slope and curvature agree from both sides.
+  const double eps = 1e-9;
+  for (size_t i = 1; i + 1 < rows.size(); ++i) {
+    const double t = rows[i][0];
+    EXPECT_LT((e.Position(t + eps) - e.Position(t - eps)).norm(), 1e-8) << t;
+    EXPECT_LT((e.Velocity(t + eps) - e.Velocity(t - eps)).norm(), 1e-7) << t;
+    EXPECT_LT((e.Acceleration(t + eps) - e.Acceleration(t - eps)).norm(), 1e-6) << t;
+  }
+  // The derivatives are those of the position (central differences inside a piece).
+  for (double t : {0.2, 0.9, 1.7, 2.6}) {
+    const double h = 1e-5;
+    EXPECT_LT((e.Velocity(t) - (e.Position(t + h) - e.Position(t - h)) / (2 * h)).norm(), 1e-8);
+    EXPECT_LT((e.Acceleration(t) - (e.Velocity(t + h) - e.Velocity(t - h)) / (2 * h)).norm(),
+              1e-7);
+  }
+  // Natural spline: no curvature at the ends.
+  EXPECT_LT(e.Acceleration(1e-12).norm(), 1e-9);
+  EXPECT_LT(e.Acceleration(3.2 - 1e-12).norm(), 1e-9);
+  // Holds still outside the table.
+  EXPECT_EQ(e.Position(-1.0), rest);
+  EXPECT_LT((e.Position(10.0) - rest - Eigen::Vector2d(0.6, -0.5)).norm(), 1e-15);
+  EXPECT_EQ(e.Velocity(10.0), Eigen::Vector2d::Zero());
+  EXPECT_EQ(e.Acceleration(-1.0), Eigen::Vector2d::Zero());
+}
+
+TEST(EndMotion, TableSplineHandValues) {
+  // Knots (0,0), (1,1), (2,0): the natural spline has M1 = -3 (2 (h0 + h1) M1 = 6 (-1 - 1)),
+  // so p(0.5) = 0.5 + (0.125 - 0.5)(-3)/6 = 0.6875, p'(0) = 1 - (-3)/6 = 1.5, p''(1) = -3.
+  const EndMotion e = EndMotion::Table({0, 0}, {{0, 0, 0}, {1, 1, 2}, {2, 0, 0}});
+  EXPECT_NEAR(e.Position(0.5).x(), 0.6875, 1e-15);
+  EXPECT_NEAR(e.Position(1.5).y(), 2 * 0.6875, 1e-15);
+  EXPECT_NEAR(e.Velocity(1e-12).x(), 1.5, 1e-9);
+  EXPECT_NEAR(e.Acceleration(1.0).x(), -3.0, 1e-12);
+  // A linear table is reproduced exactly.
+  const EndMotion lin = EndMotion::Table({0, 0}, {{0, 0, 0}, {1, 2, -1}, {3, 6, -3}, {4, 8, -4}});
+  EXPECT_NEAR(lin.Position(2.2).x(), 4.4, 1e-14);
+  EXPECT_NEAR(lin.Velocity(2.2).y(), -1.0, 1e-14);
+  EXPECT_NEAR(lin.Acceleration(0.7).x(), 0.0, 1e-13);
+}
+
+TEST(EndMotion, TableRejectsBadRows) {
+  EXPECT_THROW(EndMotion::Table({0, 0}, {{0, 0, 0}}), Error);
+  EXPECT_THROW(EndMotion::Table({0, 0}, {{0, 0, 0}, {1, 0, 0}, {1, 1, 1}}), Error);
+}
+
+}  // namespace
+}  // namespace cablefilm

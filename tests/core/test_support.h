@@ -1,0 +1,156 @@
+#pragma once
+// Helpers shared by the core tests: model builders and the exact (continuous) elastic catenary
+// of a piecewise-uniform line with concentrated weights, computed here from its closed form and
+// not from anything in src/core, so that the lumped model is checked against an independent truth.
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "core/cable_model.h"
+
+namespace cablefilm::testing {
+
+// A uniform line of `links` links between two end motions.
+inline CableModel UniformCable(int links, double length, double mass_per_length, double area,
+                               double youngs_modulus, const EnvironmentSpec& env, EndMotion start,
+                               EndMotion end, double diameter = 0.0, double drag = 0.0,
+                               double added_mass = 0.0) {
+  SectionSpec s;
+  s.length = length;
+  s.segments = links;
+  s.diameter = diameter;
+  s.area = area;
+  s.mass_per_length = mass_per_length;
+  s.youngs_modulus = youngs_modulus;
+  s.drag_coefficient = drag;
+  s.added_mass_coefficient = added_mass;
+  return BuildCableModel({s}, {}, env, std::move(start), std::move(end), LinkLaw::kElastic);
+}
+
+// The exact static shape of an elastic line in Lagrangian (unstretched) arc length s, Irvine
+// (1981) "Cable Structures" ch. 2, generalised to uniform pieces and point loads.
+// Station 0 sits at the origin; F(s) = (H, V(s)) is the force the part beyond s exerts on the
+// part before it (the tension vector, along the tangent). Equilibrium of an element gives
+// dV/ds = w (w: net weight per unstretched length, N/m), a jump V(s+) = V(s-) + W at a point
+// load W, and H constant. Hooke: |dr/ds| = 1 + T/EA with T = sqrt(H^2 + V^2), so
+//   dx/ds = H/EA + H/T,   dy/ds = V/EA + V/T,
+// which integrate over a piece starting with V = Va, for a length s, to
+//   x = H s/EA + (H/w) [asinh((Va + w s)/H) - asinh(Va/H)]
+//   y = (Va s + w s^2/2)/EA + (1/w) [sqrt(H^2 + (Va + w s)^2) - sqrt(H^2 + Va^2)].
+class ExactCatenary {
+ public:
+  struct Piece {
+    double length;      // unstretched [m]
+    double w;           // net weight per unstretched length [N/m] (negative: buoyant)
+    double EA;          // axial stiffness [N]
+    double point_load;  // net concentrated weight at the piece's start [N]
+  };
+
+  explicit ExactCatenary(std::vector<Piece> pieces) : pieces_(std::move(pieces)) {}
+
+  // Position (x, y) relative to station 0 and the tension at arc length s.
+  void Evaluate(double H, double V0, double s, Eigen::Vector2d* r, double* tension) const {
+    Eigen::Vector2d p = Eigen::Vector2d::Zero();
+    double V = V0, start = 0;
+    for (size_t i = 0; i < pieces_.size(); ++i) {
+      const Piece& pc = pieces_[i];
+      V += pc.point_load;  // the jump at the piece's start
+      const double len = std::max(0.0, std::min(pc.length, s - start));
+      p += Segment(H, V, pc.w, pc.EA, len);
+      V += pc.w * len;
+      if (s <= start + pc.length) break;
+      start += pc.length;
+    }
+    if (r) *r = p;
+    if (tension) *tension = std::hypot(H, V);
+  }
+  // dr/ds = (1 + T/EA) (H, V)/T at arc length s (just after s at a point load).
+  Eigen::Vector2d Slope(double H, double V0, double s) const {
+    double V = V0, start = 0, EA = pieces_.front().EA;
+    for (const Piece& pc : pieces_) {
+      if (s < start) break;
+      V += pc.point_load;
+      EA = pc.EA;
+      V += pc.w * std::max(0.0, std::min(pc.length, s - start));
+      start += pc.length;
+    }
+    const double T = std::hypot(H, V);
+    return (1.0 + T / EA) / T * Eigen::Vector2d(H, V);
+  }
+  // d/ds of dr/ds at s, from the left (s^-) or the right (s^+) of a piece boundary:
+  // with dV/ds = w, d/ds[(1/EA + 1/T)(H, V)] = (0, w/EA) + (w H / T^3)(-V, H).
+  Eigen::Vector2d SlopeDerivative(double H, double V0, double s, bool from_left) const {
+    double V = V0, start = 0, EA = 0, w = 0;
+    for (const Piece& pc : pieces_) {
+      V += pc.point_load;
+      V += pc.w * std::max(0.0, std::min(pc.length, s - start));
+      EA = pc.EA;
+      w = pc.w;
+      if (from_left ? s <= start + pc.length : s < start + pc.length) break;
+      start += pc.length;
+    }
+    const double T = std::hypot(H, V);
+    return Eigen::Vector2d(0.0, w / EA) + (w * H / (T * T * T)) * Eigen::Vector2d(-V, H);
+  }
+  double total_length() const {
+    double L = 0;
+    for (const Piece& p : pieces_) L += p.length;
+    return L;
+  }
+  Eigen::Vector2d EndPoint(double H, double V0) const {
+    Eigen::Vector2d r;
+    Evaluate(H, V0, total_length(), &r, nullptr);
+    return r;
+  }
+
+  // Newton on (log H, V0) so that the far end lands on `target` (relative to station 0), with a
+  // finite-difference Jacobian and backtracking. The guess only selects the root; the answer is
+  // fixed by the closed form. Returns the end-point miss [m].
+  double Shoot(const Eigen::Vector2d& target, double H_guess, double V0_guess) {
+    double u = std::log(H_guess), V0 = V0_guess;
+    auto miss = [&](double uu, double vv) -> Eigen::Vector2d { return EndPoint(std::exp(uu), vv) - target; };
+    Eigen::Vector2d r = miss(u, V0);
+    for (int it = 0; it < 200 && r.norm() > 1e-13 * total_length(); ++it) {
+      const double du = 1e-7, dv = 1e-7 * (std::abs(V0) + std::exp(u));
+      Eigen::Matrix2d J;
+      J.col(0) = (miss(u + du, V0) - miss(u - du, V0)) / (2 * du);
+      J.col(1) = (miss(u, V0 + dv) - miss(u, V0 - dv)) / (2 * dv);
+      const Eigen::Vector2d step = -J.fullPivLu().solve(r);
+      double a = 1.0;
+      Eigen::Vector2d r_new;
+      for (int k = 0; k < 60; ++k, a *= 0.5) {
+        const double su = std::max(-2.0, std::min(2.0, a * step[0]));
+        r_new = miss(u + su, V0 + a * step[1]);
+        if (std::isfinite(r_new.norm()) && r_new.norm() < r.norm()) {
+          u += su;
+          V0 += a * step[1];
+          break;
+        }
+      }
+      if (!(r_new.norm() < r.norm())) break;  // no further progress: at the round-off floor
+      r = r_new;
+    }
+    H_ = std::exp(u);
+    V0_ = V0;
+    return r.norm();
+  }
+  double H() const { return H_; }
+  double V0() const { return V0_; }
+
+ private:
+  static Eigen::Vector2d Segment(double H, double Va, double w, double EA, double s) {
+    const double Vb = Va + w * s;
+    const double x = H * s / EA + H / w * (std::asinh(Vb / H) - std::asinh(Va / H));
+    // sqrt(H^2+Vb^2) - sqrt(H^2+Va^2) written without cancellation.
+    const double dT = (Vb - Va) * (Vb + Va) / (std::hypot(H, Vb) + std::hypot(H, Va));
+    const double y = (Va * s + 0.5 * w * s * s) / EA + dT / w;
+    return {x, y};
+  }
+
+  std::vector<Piece> pieces_;
+  double H_ = 0, V0_ = 0;
+};
+
+}  // namespace cablefilm::testing
