@@ -53,10 +53,14 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
                     "will blow up (use integrator = \"implicit\" or time_step = \"auto\")\n");
       break;
     case IntegratorKind::kImplicit:
-      std::printf("  integrator implicit (generalized-alpha, rho_inf %.2f), time step %.4g s%s = "
-                  "%.0f x the explicit limit, %ld steps\n",
-                  grid.rho_inf, grid.dt, grid.automatic ? " (auto: by accuracy)" : " (given)",
-                  grid.dt / grid.limit.time_step, steps);
+      if (grid.automatic)
+        std::printf("  integrator implicit (generalized-alpha, rho_inf %.2f), adaptive step up to "
+                    "%.4g s (%.0f x the explicit limit), local error tolerance %.3g m\n",
+                    grid.rho_inf, grid.dt, grid.dt / grid.limit.time_step, grid.error_tolerance);
+      else
+        std::printf("  integrator implicit (generalized-alpha, rho_inf %.2f), time step %.4g s "
+                    "(given) = %.0f x the explicit limit, %ld steps\n",
+                    grid.rho_inf, grid.dt, grid.dt / grid.limit.time_step, steps);
       break;
     case IntegratorKind::kInextensible:
       std::printf("  integrator inextensible (constraint tensions), output every %.4g s, substeps "

@@ -7,18 +7,6 @@
 
 namespace cablefilm {
 
-namespace {
-
-// The shortest time scale of the prescribed end motions [s]: a trochoid's period and ramp
-// time, a table's knot spacing; infinity for ends that do not move.
-double ForcingTimeScale(const CableModel& m) {
-  double scale = std::numeric_limits<double>::infinity();
-  for (const EndMotion* e : {&m.start, &m.end}) scale = std::min(scale, e->TimeScale());
-  return scale;
-}
-
-}  // namespace
-
 TimeGrid ChooseTimeGrid(const CableModel& m, const SimulationDef& sim, double interval) {
   TimeGrid g;
   g.kind = sim.integrator == IntegratorChoice::kExplicit ? IntegratorKind::kExplicit
@@ -32,8 +20,11 @@ TimeGrid ChooseTimeGrid(const CableModel& m, const SimulationDef& sim, double in
   double wanted = sim.time_step;
   if (g.automatic && g.kind == IntegratorKind::kExplicit)
     wanted = sim.safety_factor * g.limit.time_step;
-  if (g.automatic && g.kind == IntegratorKind::kImplicit)
-    wanted = ForcingTimeScale(m) / kImplicitStepsPerPeriod;
+  if (g.automatic && g.kind == IntegratorKind::kImplicit) {
+    wanted = interval;  // the largest step; the error control takes smaller ones as needed
+    g.error_tolerance =
+        sim.tolerance > 0 ? sim.tolerance : kDefaultRelativeTolerance * m.total_length();
+  }
   if (g.automatic && g.kind == IntegratorKind::kInextensible)
     wanted = interval;  // it splits each step below its own (tension-dependent) stability limit
   g.steps_per_output = std::max(1, static_cast<int>(std::ceil(interval / wanted - 1e-9)));
@@ -54,7 +45,7 @@ CableState MakeInitialState(const SceneDef& scene, const CableModel& m,
 }
 
 std::unique_ptr<Integrator> MakeIntegrator(const CableModel& m, const TimeGrid& grid) {
-  return MakeIntegrator(grid.kind, m, grid.rho_inf);
+  return MakeIntegrator(grid.kind, m, grid.rho_inf, grid.error_tolerance);
 }
 
 bool Simulate(const CableModel& m, Integrator& integrator, CableState& state,

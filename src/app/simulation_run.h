@@ -13,13 +13,15 @@
 
 namespace cablefilm {
 
-// Implicit steps per shortest period of the end motion when time_step = "auto": chosen so that
-// the peak tension of case P63 is within 0.1 % of the converged value (see bench_integrators).
-constexpr double kImplicitStepsPerPeriod = 300;
+// The implicit scheme's local position error per step when time_step = "auto" and no
+// tolerance is given, as a fraction of the cable's length: case P63's peak tension is then
+// within 0.1 % of the converged value at 60 to 6000 links (see bench_integrators).
+constexpr double kDefaultRelativeTolerance = 1e-6;
 
 struct TimeGrid {
   IntegratorKind kind = IntegratorKind::kExplicit;
   double rho_inf = 0.8;      // implicit scheme's high-frequency spectral radius
+  double error_tolerance = 0;  // implicit scheme's local position error per step [m]; 0: fixed dt
   double interval = 0;       // between outputs [s]
   double dt = 0;             // time step [s], interval / steps_per_output
   int steps_per_output = 1;
@@ -30,8 +32,9 @@ struct TimeGrid {
 };
 
 // The largest step not above the requested one that divides the interval. "auto" is, for the
-// explicit scheme, the safety factor times its stability limit; for the implicit scheme a step
-// chosen by accuracy (see kImplicitStepsPerPeriod), independent of the stations.
+// explicit scheme, the safety factor times its stability limit; for the implicit scheme an
+// adaptive step below the output interval, chosen by a local error estimate (independent of
+// the stations).
 TimeGrid ChooseTimeGrid(const CableModel& m, const SimulationDef& sim, double interval);
 
 // The integrator the grid asks for.

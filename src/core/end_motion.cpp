@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "core/error.h"
 
@@ -67,18 +66,6 @@ EndMotion EndMotion::Table(Eigen::Vector2d rest, const std::vector<Eigen::Vector
   }
   for (size_t i = n - 1; i-- > 1;) m.knot_m_[i] = d_prime[i] - c_prime[i] * m.knot_m_[i + 1];
   return m;
-}
-
-double EndMotion::TimeScale() const {
-  double scale = std::numeric_limits<double>::infinity();
-  if (kind_ == EndKind::kTrochoid) {
-    if (omega_ > 0) scale = 2.0 * M_PI / omega_;
-    if (nu_ > 0) scale = std::min(scale, 2.0 * M_PI / nu_);
-  }
-  if (kind_ == EndKind::kTable)
-    for (size_t i = 1; i < knot_t_.size(); ++i)
-      scale = std::min(scale, 10.0 * (knot_t_[i] - knot_t_[i - 1]));
-  return scale;
 }
 
 Eigen::Vector2d EndMotion::Position(double t) const { return Evaluate(t, 0); }

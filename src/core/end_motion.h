@@ -34,9 +34,6 @@ class EndMotion {
   Eigen::Vector2d Position(double t) const;      // [m]
   Eigen::Vector2d Velocity(double t) const;      // [m/s]
   Eigen::Vector2d Acceleration(double t) const;  // [m/s^2]
-  // The shortest time over which the motion changes appreciably [s]: the period (and the ramp
-  // time 1/nu) of a trochoid, the shortest knot spacing of a table; infinity if it never moves.
-  double TimeScale() const;
 
  private:
   // Value (order 0), velocity (1) or acceleration (2).

@@ -9,20 +9,22 @@
 namespace cablefilm {
 namespace {
 constexpr int kMaxNewtonIterations = 12;
-constexpr int kMaxHalvings = 12;
+constexpr int kMaxRejections = 40;
 }  // namespace
 
-GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const CableModel& m, double rho_inf)
+GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const CableModel& m, double rho_inf,
+                                                       double error_tolerance)
     : rho_inf_(rho_inf), ws_(m.links), system_(m.last_free() - m.first_free() + 1),
       a_(2, m.stations()), abar_(2, m.stations()), x_(2, m.stations()), v_(2, m.stations()),
       a1_(2, m.stations()), abar1_(2, m.stations()) {
+  error_tolerance_ = error_tolerance;
   am_ = (2.0 * rho_inf - 1.0) / (rho_inf + 1.0);
   af_ = rho_inf / (rho_inf + 1.0);
   gamma_ = 0.5 + af_ - am_;
   beta_ = 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5);
   // A displacement this small changes a link's tension by a negligible fraction of its
   // stiffness times its length: 1e-9 of the shortest link.
-  tolerance_ = 1e-9 * m.rest_length.minCoeff();
+  newton_tolerance_ = 1e-9 * m.rest_length.minCoeff();
 }
 
 std::string GeneralizedAlphaIntegrator::name() const {
@@ -50,7 +52,7 @@ void GeneralizedAlphaIntegrator::Kinematics(const CableModel& m, const CableStat
   }
 }
 
-bool GeneralizedAlphaIntegrator::TryStep(const CableModel& m, CableState& s, double h) {
+bool GeneralizedAlphaIntegrator::Solve(const CableModel& m, const CableState& s, double h) {
   const int j0 = m.first_free(), j1 = m.last_free();
   const double t1 = s.t + h;
   // Predictor: the pseudo-acceleration carried over.
@@ -82,47 +84,75 @@ bool GeneralizedAlphaIntegrator::TryStep(const CableModel& m, CableState& s, dou
       dx_max = std::max(dx_max, system_.rhs[j - j0].lpNorm<Eigen::Infinity>());
     }
     if (!std::isfinite(dx_max)) return false;
-    if (dx_max <= tolerance_) {
+    if (dx_max <= newton_tolerance_) {
       Kinematics(m, s, h, x_);
       ComputeGeometry(x_, ws_.geometry);
       ComputeHookeTensions(m, ws_.geometry, ws_.tension);
-      s.x.swap(x_);
-      s.v.swap(v_);
-      for (int j = j0; j <= j1; ++j) {
-        a_.col(j) = a1_.col(j);
-        abar_.col(j) = abar1_.col(j);
-      }
-      s.t = t1;
       return true;
     }
   }
   return false;
 }
 
+double GeneralizedAlphaIntegrator::LocalError(const CableModel& m, double h) const {
+  // Zienkiewicz & Xie's estimate for Newmark-type schemes: the step's position error is the
+  // cubic term the scheme misses, h^2 |beta - 1/6| |a_{n+1} - a_n|.
+  double da = 0;
+  for (int j = m.first_free(); j <= m.last_free(); ++j)
+    da = std::max(da, (a1_.col(j) - a_.col(j)).lpNorm<Eigen::Infinity>());
+  return h * h * std::abs(beta_ - 1.0 / 6.0) * da;
+}
+
+void GeneralizedAlphaIntegrator::Commit(const CableModel& m, CableState& s, double h) {
+  s.x.swap(x_);
+  s.v.swap(v_);
+  for (int j = m.first_free(); j <= m.last_free(); ++j) {
+    a_.col(j) = a1_.col(j);
+    abar_.col(j) = abar1_.col(j);
+  }
+  s.t += h;
+  ++stats_.steps;
+}
+
 void GeneralizedAlphaIntegrator::Step(const CableModel& m, CableState& s, double dt) {
   if (!initialized_) Initialize(m, s);
   const double t_end = s.t + dt;
-  double h = substep_ > 0 && substep_ < dt ? substep_ : dt;
+  if (!(proposed_ > 0) || proposed_ > dt) proposed_ = dt;
+  int failures = 0;  // consecutive rejections
   while (s.t < t_end - 1e-12 * dt) {
-    h = std::min(h, t_end - s.t);
-    int halvings = 0;
-    while (!TryStep(m, s, h)) {
+    const double h = std::min(proposed_, t_end - s.t);
+    const bool truncated = h < proposed_;
+    double error = 0;
+    bool ok = Solve(m, s, h);
+    if (ok && error_tolerance_ > 0) {
+      error = LocalError(m, h);
+      ok = error <= error_tolerance_;
+    }
+    if (!ok) {
       ++stats_.rejected;
-      if (++halvings > kMaxHalvings) {
+      if (++failures > kMaxRejections) {
         std::ostringstream os;
-        os << "the implicit step did not converge at t = " << s.t << " s even with a step of "
-           << h << " s";
+        os << "the implicit step failed " << failures << " times in a row at t = " << s.t
+           << " s, down to a step of " << h << " s";
         int worst = 0;
         ws_.geometry.length.cwiseQuotient(m.rest_length).maxCoeff(&worst);
         throw BlowUpError(os.str() + "; the most stretched link is " + std::to_string(worst),
                           s.t, worst);
       }
-      h *= 0.5;
+      // Newton failed: halve. Error too large: the step that would just meet the tolerance
+      // (the error grows as h^3), with a margin.
+      proposed_ = error > 0 ? h * std::max(0.2, 0.9 * std::cbrt(error_tolerance_ / error))
+                            : 0.5 * h;
+      continue;
     }
-    ++stats_.steps;
-    // After a rejection, creep back up to the requested step.
-    substep_ = halvings > 0 ? h : std::min(dt, 2.0 * h);
-    h = substep_;
+    Commit(m, s, h);
+    failures = 0;
+    if (truncated) continue;  // a short last piece says nothing about the step size
+    const double growth =
+        error_tolerance_ > 0
+            ? std::min(2.0, 0.9 * std::cbrt(error_tolerance_ / std::max(error, 1e-300)))
+            : 2.0;
+    proposed_ = std::min(dt, h * growth);
   }
   s.t = t_end;
   CheckStateSane(m, s, ws_.geometry.length);

@@ -9,7 +9,9 @@
 // trapezoidal rule), smaller values damp the unresolved axial modes; low frequencies are
 // damped only at third order in omega h. Each step solves M(x) a - F(x, v, t) = 0 for x_{n+1}
 // by Newton's method with the analytic Jacobian, block tridiagonal, O(s) per iteration. A step
-// whose Newton iteration fails is rejected and retried in halves.
+// whose Newton iteration fails is rejected and retried in halves. With an error tolerance the
+// step adapts to a local error estimate (never above the step asked of Step()); without one
+// the step asked for is taken.
 #include "core/block_tridiagonal.h"
 #include "core/forces.h"
 #include "core/integrator.h"
@@ -18,7 +20,8 @@ namespace cablefilm {
 
 class GeneralizedAlphaIntegrator : public Integrator {
  public:
-  GeneralizedAlphaIntegrator(const CableModel& m, double rho_inf);
+  // error_tolerance: the largest local position error per step [m]; 0 = fixed steps.
+  GeneralizedAlphaIntegrator(const CableModel& m, double rho_inf, double error_tolerance = 0);
   std::string name() const override;
   void Initialize(const CableModel& m, const CableState& state) override;
   void Step(const CableModel& m, CableState& state, double dt) override;
@@ -26,8 +29,12 @@ class GeneralizedAlphaIntegrator : public Integrator {
   IntegratorStats stats() const override { return stats_; }
 
  private:
-  // One step of size h from the carried state; false if Newton did not converge (state kept).
-  bool TryStep(const CableModel& m, CableState& s, double h);
+  // Solves one step of size h into the trial buffers; false if Newton did not converge.
+  bool Solve(const CableModel& m, const CableState& s, double h);
+  // The local position error of the solved step [m].
+  double LocalError(const CableModel& m, double h) const;
+  // Makes the solved step the state.
+  void Commit(const CableModel& m, CableState& s, double h);
   // a_{n+1}, v_{n+1} and abar_{n+1} implied by the positions x (free stations).
   void Kinematics(const CableModel& m, const CableState& s, double h, const Eigen::Matrix2Xd& x);
 
@@ -36,8 +43,9 @@ class GeneralizedAlphaIntegrator : public Integrator {
   BlockTridiagonal system_;
   Eigen::Matrix2Xd a_, abar_;           // a_n, abar_n [m/s^2]
   Eigen::Matrix2Xd x_, v_, a1_, abar1_;  // trial values at n+1
-  double substep_ = 0;                   // step that worked last (after a rejection) [s]
-  double tolerance_ = 0;                 // Newton converges when |dx| < tolerance [m]
+  double error_tolerance_ = 0;           // local position error per step [m]; 0 = fixed steps
+  double proposed_ = 0;                  // the next step to try [s]
+  double newton_tolerance_ = 0;          // Newton converges when |dx| < this [m]
   IntegratorStats stats_;
   bool initialized_ = false;
 };

@@ -10,12 +10,12 @@
 namespace cablefilm {
 
 std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel& m,
-                                           double rho_inf) {
+                                           double rho_inf, double error_tolerance) {
   switch (kind) {
     case IntegratorKind::kExplicit:
       return std::make_unique<ExplicitIntegrator>(m);
     case IntegratorKind::kImplicit:
-      return std::make_unique<GeneralizedAlphaIntegrator>(m, rho_inf);
+      return std::make_unique<GeneralizedAlphaIntegrator>(m, rho_inf, error_tolerance);
     case IntegratorKind::kInextensible:
       return std::make_unique<InextensibleIntegrator>(m);
   }

@@ -46,9 +46,10 @@ class Integrator {
   virtual IntegratorStats stats() const = 0;
 };
 
-// rho_inf: the implicit scheme's spectral radius at infinite frequency (ignored by explicit).
+// rho_inf: the implicit scheme's spectral radius at infinite frequency; error_tolerance: its
+// local position error per step [m], 0 for fixed steps (both ignored by the other schemes).
 std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel& m,
-                                           double rho_inf = 0.8);
+                                           double rho_inf = 0.8, double error_tolerance = 0);
 
 // Throws BlowUpError naming the time and the first station with a non-finite position or
 // velocity, or the first link stretched beyond `max_strain`.

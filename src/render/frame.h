@@ -12,6 +12,11 @@ struct CableSnapshot {            // one output time of the simulation
   double t = 0;                   // simulated time [s]
   std::vector<double> x, y;       // station positions x_j, y_j [m], size s+1 (0 = start, s = end)
   std::vector<double> tension;    // link tensions T_{j+1/2} [N], size s (link j joins j and j+1)
+  // An optional companion cable overlaid on this one (e.g. the same scene computed with the
+  // inextensible model): its station positions [m], size s+1, and link tensions [N], size s.
+  // All three empty = no companion.
+  std::vector<double> cx, cy, ctension;
+  bool has_companion() const { return !cx.empty() || !cy.empty() || !ctension.empty(); }
 };
 
 struct FilmSpec {                          // fixed for the whole film
@@ -25,6 +30,13 @@ struct FilmSpec {                          // fixed for the whole film
   double duration = 0;                     // simulated seconds the film covers
   double tension_min = 0, tension_max = 1; // colour and plot range [N], fixed for the film
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // world box of the cable over the run [m]
+  // Companion cable (see CableSnapshot::cx): drawn on the same tension scale. `label` names the
+  // main cable (e.g. "elastic"), `companion_label` the companion (e.g. "inextensible"); a
+  // non-empty companion_label means every snapshot carries a companion. The box above must
+  // then hold both cables.
+  std::string label = "";
+  std::string companion_label = "";
+  CableSnapshot companion_equilibrium;     // optional (empty = not drawn): x, y, tension
 };
 
 // Colours are sRGB, 0..1, with straight (not premultiplied) alpha.

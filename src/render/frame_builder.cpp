@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "core/error.h"
 
@@ -147,10 +148,25 @@ void DrawAxes(Painter& p, const PlotMapping& m, const std::string& x_label,
          VAlign::kBottom, true);
 }
 
+// The companion cable's look: a rim of short light dashes, wider than the main cable with its
+// rim so that it still shows where the main cable (drawn on top) covers the companion, a gap of
+// panel colour, then a thinner line of the tension colour (per link, drawn by the caller).
+void DrawCompanionRim(Painter& p, const std::vector<Vec2f>& pts, float width, float rim_width,
+                      const Theme& th) {
+  const float k = p.k(), dash = std::max(1.5f, 4 * k);
+  p.Dashed(pts, rim_width, th.companion_rim, dash, dash);
+  p.Polyline(pts, width + 2 * k, th.panel);
+}
+void DrawCompanionLine(Painter& p, const std::vector<Vec2f>& pts, float width, float rim_width,
+                       Rgba color, const Theme& th) {
+  DrawCompanionRim(p, pts, width, rim_width, th);
+  p.Polyline(pts, width, color);
+}
+
 // A horizontal legend ending near `right`: each swatch followed by its label, left-aligned, so
 // a label never runs into its own swatch; the estimated widths only set where the row starts.
 struct LegendEntry {
-  enum Kind { kLine, kDash, kBand, kDiamond, kSquare, kRing } kind;
+  enum Kind { kLine, kDash, kDot, kBand, kDiamond, kSquare, kRing, kCable, kCompanion } kind;
   Rgba color;
   std::string label;
 };
@@ -168,6 +184,17 @@ void DrawLegend(Painter& p, float right, float baseline, const std::vector<Legen
         break;
       case LegendEntry::kDash:
         p.Dashed({{x, c.y}, {x + swatch, c.y}}, 2 * k, e.color, 6 * k, 4 * k);
+        break;
+      case LegendEntry::kDot:
+        p.Dashed({{x, c.y}, {x + swatch, c.y}}, 2 * k, e.color, 2 * k, 3 * k);
+        break;
+      case LegendEntry::kCable:  // as drawn: the tension colour in its thin grey rim
+        p.Line({x + 3 * k, c.y}, {x + swatch - 3 * k, c.y}, 8.5f * k, th.halo);
+        p.Line({x + 3 * k, c.y}, {x + swatch - 3 * k, c.y}, 6 * k, e.color);
+        break;
+      case LegendEntry::kCompanion:  // as drawn: a thinner line in a dotted light rim
+        DrawCompanionLine(p, {{x + 2 * k, c.y}, {x + swatch - 2 * k, c.y}}, 3.6f * k, 13 * k,
+                          e.color, th);
         break;
       case LegendEntry::kBand:
         p.Rect({x, c.y - 6 * k, x + swatch, c.y + 6 * k}, e.color);
@@ -204,6 +231,19 @@ void CheckSpec(const FilmSpec& spec) {
                 std::to_string(spec.y_max) + "] m");
 }
 
+// The companion's sizes: all three sized like the main cable, or (when not required) all empty.
+void CheckCompanionSizes(std::size_t n, bool required, const CableSnapshot& s) {
+  if (!required && !s.has_companion()) return;
+  if (s.cx.size() != n || s.cy.size() != n || s.ctension.size() + 1 != n)
+    throw Error("film: companion cable at t = " + std::to_string(s.t) + " s has " +
+                std::to_string(s.cx.size()) + " x, " + std::to_string(s.cy.size()) + " y and " +
+                std::to_string(s.ctension.size()) + " tensions; the film has " +
+                std::to_string(n) + " stations and " + std::to_string(n - 1) + " links" +
+                (required && !s.has_companion() ? " (the spec names a companion cable)" : ""));
+}
+
+}  // namespace
+
 void CheckSnapshot(const FilmSpec& spec, const CableSnapshot& s) {
   const std::size_t n = spec.arc_length.size();
   if (s.x.size() != n || s.y.size() != n || s.tension.size() != n - 1)
@@ -219,14 +259,25 @@ void CheckSnapshot(const FilmSpec& spec, const CableSnapshot& s) {
     if (!std::isfinite(s.tension[j]))
       throw Error("film: tension of link " + std::to_string(j) + " is not finite at t = " +
                   std::to_string(s.t) + " s");
+  CheckCompanionSizes(n, !spec.companion_label.empty(), s);
+  if (!s.has_companion()) return;
+  for (std::size_t j = 0; j < n; ++j)
+    if (!std::isfinite(s.cx[j]) || !std::isfinite(s.cy[j]))
+      throw Error("film: companion station " + std::to_string(j) + " is not finite at t = " +
+                  std::to_string(s.t) + " s (" + std::to_string(s.cx[j]) + ", " +
+                  std::to_string(s.cy[j]) + ")");
+  for (std::size_t j = 0; j + 1 < n; ++j)
+    if (!std::isfinite(s.ctension[j]))
+      throw Error("film: companion tension of link " + std::to_string(j) +
+                  " is not finite at t = " + std::to_string(s.t) + " s");
 }
-
-}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 
 FilmHistory::FilmHistory(const FilmSpec& spec)
-    : moving_ends_(spec.moving_ends), stations_(spec.arc_length.size()) {
+    : moving_ends_(spec.moving_ends),
+      stations_(spec.arc_length.size()),
+      companion_required_(!spec.companion_label.empty()) {
   CheckSpec(spec);
   x0_ = spec.x_min;
   y0_ = spec.y_min;
@@ -257,6 +308,16 @@ void FilmHistory::Add(const CableSnapshot& s) {
       link_max_[j] = std::max(link_max_[j], T);
     }
     peak = std::max(peak, T);
+  }
+  CheckCompanionSizes(stations_, companion_required_, s);
+  if (s.has_companion()) {
+    double cpeak = s.ctension.empty() ? 0 : s.ctension[0];
+    for (double T : s.ctension) cpeak = std::max(cpeak, T);
+    // NaN for earlier snapshots without a companion (only possible when none is required).
+    companion_max_tension_.resize(times_.size(), std::numeric_limits<double>::quiet_NaN());
+    companion_max_tension_.push_back(cpeak);
+  } else if (!companion_max_tension_.empty()) {
+    companion_max_tension_.push_back(std::numeric_limits<double>::quiet_NaN());
   }
   times_.push_back(s.t);
   max_tension_.push_back(peak);
@@ -295,6 +356,8 @@ Theme Theme::Dark() {
   t.halo = Hex(0x9aa4b2);
   t.marker_fill = Hex(0x161b22);
   t.marker_edge = Hex(0xe8ecf1);
+  t.companion = Hex(0xf783ac);
+  t.companion_rim = Hex(0xd0d7e1);
   return t;
 }
 
@@ -313,6 +376,8 @@ Theme Theme::Light() {
   t.halo = Hex(0x1b2129);
   t.marker_fill = Hex(0xffffff);
   t.marker_edge = Hex(0x1b2129);
+  t.companion = Hex(0xc2255c);
+  t.companion_rim = Hex(0x56616f);
   return t;
 }
 
@@ -351,11 +416,15 @@ FrameLayout MakeFrameLayout(const FilmSpec& spec, int width, int height) {
   L.cable.y_lo = cy - axes.height() / ppm / 2;
   L.cable.y_hi = cy + axes.height() / ppm / 2;
   L.cable_width = std::max(1.5f, 6 * k);
+  L.companion_width = std::max(2.0f, 0.6f * L.cable_width);
+  const bool companion = !spec.companion_label.empty();
 
   double t_lo = spec.tension_min / kN, t_hi = spec.tension_max / kN;
   NiceRange(&t_lo, &t_hi, 6);
   auto plot_axes = [&](const PixelRect& p) {
-    return PixelRect{p.x0 + 86 * k, p.y0 + 50 * k, p.x1 - 26 * k, p.y1 - 62 * k};
+    // With a companion the legends take a second row above the plot.
+    return PixelRect{p.x0 + 86 * k, p.y0 + (companion ? 70 : 50) * k, p.x1 - 26 * k,
+                     p.y1 - 62 * k};
   };
   L.tension.rect = plot_axes(L.tension_panel);
   L.tension.x_lo = 0;

@@ -15,7 +15,7 @@
 namespace cablefilm {
 
 // What the film has shown so far, accumulated snapshot by snapshot: the O(s) envelope, one
-// (t, max) pair per snapshot, and the end's path as segments between cells of a 1000 x 1000
+// (t, max) pair per snapshot (and the companion cable's max, when there is one), and the end's path as segments between cells of a 1000 x 1000
 // grid over the world box, each cell pair stored once, so a periodic path stops growing.
 class FilmHistory {
  public:
@@ -28,6 +28,9 @@ class FilmHistory {
   const std::vector<double>& link_max() const { return link_max_; }  // [N], size s
   const std::vector<double>& times() const { return times_; }        // [s], one per snapshot
   const std::vector<double>& max_tension() const { return max_tension_; }  // [N], per snapshot
+  // The companion cable's maximum tension [N], one per snapshot (NaN where a snapshot has no
+  // companion): empty while no snapshot had one.
+  const std::vector<double>& companion_max_tension() const { return companion_max_tension_; }
   struct PathSegment {
     Vec2f a, b;  // [m]
   };
@@ -37,9 +40,10 @@ class FilmHistory {
  private:
   std::vector<int> moving_ends_;
   std::size_t stations_;
+  bool companion_required_;
   double x0_, y0_, cell_;  // path grid: origin and cell size [m]
   long count_ = 0;
-  std::vector<double> link_min_, link_max_, times_, max_tension_;
+  std::vector<double> link_min_, link_max_, times_, max_tension_, companion_max_tension_;
   std::vector<std::vector<PathSegment>> end_paths_;
   std::vector<Vec2f> path_last_;                            // last stored point of each end
   std::vector<std::unordered_set<std::uint64_t>> path_seen_;  // cell pairs already stored
@@ -49,6 +53,7 @@ class FilmHistory {
 struct Theme {
   Rgba background, panel, grid, axis, text, text_dim, current, equilibrium, envelope, accent,
       halo, marker_fill, marker_edge;
+  Rgba companion, companion_rim;  // companion cable: its curves; the dotted rim of its shape
   static Theme Dark();
   static Theme Light();
 };
@@ -63,9 +68,16 @@ struct FrameLayout {
   PlotMapping max_tension; // time [s], tension [kN]
   PixelRect colorbar;      // the colour bar: bottom = tension_min, top = tension_max
   float cable_width = 6;   // [px]
+  float companion_width = 3.6f;  // the companion cable's coloured line (drawn under the main) [px]
 };
 FrameLayout MakeFrameLayout(const FilmSpec& spec, int width, int height);
 
+// Throws Error (with the sizes or the offending value) unless the snapshot fits the spec: its
+// stations, links, finite values, and the companion's when it has one (or the spec names one).
+void CheckSnapshot(const FilmSpec& spec, const CableSnapshot& snapshot);
+
+// When the snapshot has a companion cable it is overlaid (same colour map and range) with its
+// tension and maximum-tension curves; legends name spec.label and spec.companion_label.
 Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSnapshot& snapshot,
                 const FrameLayout& layout, const Colormap& colormap,
                 const Theme& theme = Theme::Dark());

@@ -57,10 +57,12 @@ enum class InitialStateKind { kEquilibrium, kStraight };
 enum class IntegratorChoice { kExplicit, kImplicit };
 
 struct SimulationDef {
-  IntegratorChoice integrator = IntegratorChoice::kExplicit;
+  IntegratorChoice integrator = IntegratorChoice::kImplicit;
   double rho_infinity = 0.8;     // implicit: spectral radius at infinite frequency, [0, 1]
   double duration = 60.0;        // [s]
   double time_step = 0.0;        // [s]; 0 = "auto" (from the stability limit)
+  double tolerance = 0;          // implicit, auto step: local position error per step [m];
+                                 // 0 = 1e-6 of the cable's length
   double safety_factor = 0.8;    // fraction of the stability limit used by "auto"
 };
 

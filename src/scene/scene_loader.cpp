@@ -373,12 +373,13 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
           r.Fail(n, "time_step", "expected \"auto\" or a positive number of seconds");
       }
     }
+    scene.simulation.tolerance = r.OptionalPositive("tolerance", 0.0, " in m (local error per step)");
     scene.simulation.safety_factor = r.OptionalPositive("safety_factor", 0.8, " (fraction of the stability limit)");
     if (scene.simulation.safety_factor > 1)
       r.Fail(t->get("safety_factor"), "safety_factor",
              "expected a fraction of the stability limit in (0, 1]");
     scene.simulation.integrator =
-        r.Choice("integrator", "explicit", {"explicit", "implicit"}) == "explicit"
+        r.Choice("integrator", "implicit", {"explicit", "implicit"}) == "explicit"
             ? IntegratorChoice::kExplicit
             : IntegratorChoice::kImplicit;
     scene.simulation.rho_infinity = r.OptionalNonNegative("rho_infinity", 0.8, "");
