@@ -60,56 +60,86 @@ FilmSpec MakeSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
 bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
                 const FilmRequest& request, const std::atomic<int>& stop) {
   const double frame_interval = request.speed / request.fps;  // simulated seconds per frame
-  std::vector<MaxTensionSeries> series;
-  bool finished = true;
-  for (size_t i = 0; i < runs.size(); ++i) {
-    const FilmRun& run = runs[i];
-    const CableModel& m = *run.model;
-    const bool draw = i == 0 && request.film;
-    // The film's own grid: one output per frame, the same step rule as the first pass.
-    TimeGrid grid = run.grid;
-    grid.steps_per_output =
-        std::max(1, static_cast<int>(std::ceil(frame_interval / run.grid.dt - 1e-9)));
-    grid.interval = frame_interval;
-    grid.dt = frame_interval / grid.steps_per_output;
-    grid.outputs = static_cast<long>(
-        std::floor(run.grid.outputs * run.grid.interval / frame_interval + 1e-9));
+  const FilmRun& main = runs.front();
+  const long frames = static_cast<long>(
+      std::floor(main.grid.outputs * main.grid.interval / frame_interval + 1e-9));
+  // Every run steps through the same frame times (in lockstep, so that a second run can be
+  // drawn over the first), each with its own scheme's step rule.
+  struct Stepper {
+    TimeGrid grid;
+    CableState state;
+    std::unique_ptr<Integrator> integrator;
     MaxTensionSeries trace;
-    trace.label = run.label;
-    std::unique_ptr<FilmWriter> writer;
-    if (draw) {
-      FilmOptions o;
-      o.width = request.width;
-      o.height = request.height;
-      o.fps = request.fps;
-      o.crf = request.crf;
-      o.colormap = request.colormap;
-      o.write_frames = request.frames;
-      o.shader_dir = request.shader_dir;
-      o.write_max_tension = false;  // written below with every run's series
-      o.series_label = run.label;
-      writer = std::make_unique<FilmWriter>(
-          o, MakeSpec(scene, runs, request, grid.outputs * grid.interval), request.out_dir,
-          static_cast<int>(grid.outputs + 1));
+  };
+  std::vector<Stepper> steppers;
+  for (const FilmRun& run : runs) {
+    Stepper st;
+    st.grid = run.grid;
+    st.grid.steps_per_output =
+        std::max(1, static_cast<int>(std::ceil(frame_interval / run.grid.dt - 1e-9)));
+    st.grid.interval = frame_interval;
+    st.grid.dt = frame_interval / st.grid.steps_per_output;
+    st.grid.outputs = frames;
+    st.state = run.initial;
+    st.integrator = MakeIntegrator(*run.model, st.grid);
+    st.integrator->Initialize(*run.model, st.state);
+    st.trace.label = run.label;
+    steppers.push_back(std::move(st));
+  }
+  std::unique_ptr<FilmWriter> writer;
+  if (request.film) {
+    FilmOptions o;
+    o.width = request.width;
+    o.height = request.height;
+    o.fps = request.fps;
+    o.crf = request.crf;
+    o.colormap = request.colormap;
+    o.write_frames = request.frames;
+    o.shader_dir = request.shader_dir;
+    o.write_max_tension = false;  // written below, with every run's series
+    o.series_label = main.label;
+    FilmSpec spec = MakeSpec(scene, runs, request, frames * frame_interval);
+    spec.label = main.label;
+    if (runs.size() > 1) {
+      spec.companion_label = runs[1].label;
+      spec.companion_equilibrium = ToSnapshot(runs[1].initial, runs[1].initial_tension);
     }
-    CableState state = run.initial;
-    auto integrator = MakeIntegrator(m, grid);
-    const bool done =
-        Simulate(m, *integrator, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
-          trace.t.push_back(s.t);
-          trace.tension.push_back(T.maxCoeff());
-          if (writer) writer->Push(ToSnapshot(s, T));
-          return stop == 0;
-        });
-    if (writer) writer->Finish();
-    series.push_back(std::move(trace));
-    if (!done) {
+    writer = std::make_unique<FilmWriter>(o, spec, request.out_dir, static_cast<int>(frames + 1));
+  }
+  bool finished = true;
+  for (long k = 0; k <= frames; ++k) {
+    if (stop != 0) {
       finished = false;
       break;
     }
-    if (writer) std::printf("wrote %s/film.mp4%s\n", request.out_dir.c_str(),
-                            request.frames ? " and frames/" : "");
+    for (size_t r = 0; r < steppers.size(); ++r) {
+      Stepper& st = steppers[r];
+      if (k > 0) {
+        for (int i = 0; i < st.grid.steps_per_output; ++i)
+          st.integrator->Step(*runs[r].model, st.state, st.grid.dt);
+        st.state.t = k * frame_interval;
+      }
+      st.trace.t.push_back(st.state.t);
+      st.trace.tension.push_back(st.integrator->tensions().maxCoeff());
+    }
+    if (!writer) continue;
+    CableSnapshot snap = ToSnapshot(steppers[0].state, steppers[0].integrator->tensions());
+    if (steppers.size() > 1) {
+      const CableSnapshot other =
+          ToSnapshot(steppers[1].state, steppers[1].integrator->tensions());
+      snap.cx = other.x;
+      snap.cy = other.y;
+      snap.ctension = other.tension;
+    }
+    writer->Push(std::move(snap));
   }
+  if (writer) {
+    writer->Finish();
+    std::printf("wrote %s/film.mp4%s%s\n", request.out_dir.c_str(),
+                request.frames ? " and frames/" : "", finished ? "" : " (interrupted)");
+  }
+  std::vector<MaxTensionSeries> series;
+  for (Stepper& st : steppers) series.push_back(std::move(st.trace));
   const std::string still = request.out_dir + "/max_tension.png";
   WriteMaxTensionPng(still, series, 1600, 900, "Maximum tension along the cable: " + scene.title,
                      request.shader_dir);

@@ -35,8 +35,8 @@ struct FilmRun {
   RunExtent extent;
 };
 
-// Renders film.mp4 of the first run (the others share its colour range and appear in
-// max_tension.png, the paper's Figure 1). Returns false if `stop` was raised (the film is then
+// Renders film.mp4 of the first run, with the second (if any) drawn over it on the same
+// colour range, and max_tension.png with every run (the paper's Figure 1). Returns false if `stop` was raised (the film is then
 // closed at the last frame drawn). Throws Error.
 bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
                 const FilmRequest& request, const std::atomic<int>& stop);

@@ -47,6 +47,13 @@ struct FilmWriter::Impl {
   bool finished = false;
   long done = 0;
   MaxTensionSeries series;  // copied out under the mutex
+  MaxTensionSeries companion_series;  // the companion cable's, when the spec names one
+  std::vector<MaxTensionSeries> AllSeries() const {  // call under the mutex
+    std::vector<MaxTensionSeries> all{series};
+    if (!spec.label.empty()) all[0].label = spec.label;
+    if (!spec.companion_label.empty()) all.push_back(companion_series);
+    return all;
+  }
   std::promise<void> ready;  // set by the worker once set up (or with its set-up error)
   std::thread worker;
 
@@ -160,6 +167,10 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
         ++done;
         series.t.push_back(snapshot.t);
         series.tension.push_back(history->max_tension().back());
+        if (!spec.companion_label.empty()) {
+          companion_series.t.push_back(snapshot.t);
+          companion_series.tension.push_back(history->companion_max_tension().back());
+        }
       }
       progress.Update(done);
     }
@@ -171,7 +182,7 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
       std::vector<MaxTensionSeries> all;
       {
         std::lock_guard<std::mutex> lock(mutex);
-        all.push_back(series);
+        all = AllSeries();
       }
       WriteMaxTensionPng(out_dir + "/max_tension.png", all, options.still_width,
                          options.still_height,
@@ -193,6 +204,7 @@ FilmWriter::FilmWriter(const FilmOptions& options, const FilmSpec& spec,
   m.out_dir = out_dir.empty() ? "." : out_dir;
   m.total_frames = total_frames;
   m.series.label = options.series_label;
+  m.companion_series.label = spec.companion_label;
   if (options.width <= 0 || options.height <= 0 || options.width % 2 || options.height % 2)
     throw Error("film: width and height must be positive and even, got " +
                 std::to_string(options.width) + "x" + std::to_string(options.height));
@@ -261,6 +273,11 @@ long FilmWriter::frames_done() const {
 MaxTensionSeries FilmWriter::max_tension_series() const {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   return impl_->series;
+}
+
+std::vector<MaxTensionSeries> FilmWriter::all_max_tension_series() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->AllSeries();
 }
 
 }  // namespace cablefilm

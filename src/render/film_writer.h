@@ -53,6 +53,10 @@ class FilmWriter {
   // The maximum tension along the cable of every frame so far, labelled options.series_label:
   // for a combined max_tension.png (WriteMaxTensionPng) after Finish().
   MaxTensionSeries max_tension_series() const;
+  // The main cable's series (labelled spec.label, else options.series_label) followed, when the
+  // spec names a companion cable, by the companion's (labelled spec.companion_label). These are
+  // also the curves of max_tension.png.
+  std::vector<MaxTensionSeries> all_max_tension_series() const;
 
  private:
   struct Impl;

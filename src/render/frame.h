@@ -36,7 +36,7 @@ struct FilmSpec {                          // fixed for the whole film
   // then hold both cables.
   std::string label = "";
   std::string companion_label = "";
-  CableSnapshot companion_equilibrium;     // optional (empty = not drawn): x, y, tension
+  CableSnapshot companion_equilibrium;     // optional: its tension is drawn (empty = not)
 };
 
 // Colours are sRGB, 0..1, with straight (not premultiplied) alpha.

@@ -148,18 +148,40 @@ void DrawAxes(Painter& p, const PlotMapping& m, const std::string& x_label,
          VAlign::kBottom, true);
 }
 
-// The companion cable's look: a rim of short light dashes, wider than the main cable with its
-// rim so that it still shows where the main cable (drawn on top) covers the companion, a gap of
-// panel colour, then a thinner line of the tension colour (per link, drawn by the caller).
-void DrawCompanionRim(Painter& p, const std::vector<Vec2f>& pts, float width, float rim_width,
+// The polyline moved sideways by `d` pixels (along the bisector of its segments' normals).
+std::vector<Vec2f> Offset(const std::vector<Vec2f>& p, float d) {
+  std::vector<Vec2f> out(p.size());
+  auto normal = [&](std::size_t i) {  // of segment i -> i+1; zero if degenerate
+    const float dx = p[i + 1].x - p[i].x, dy = p[i + 1].y - p[i].y;
+    const float len = std::sqrt(dx * dx + dy * dy);
+    return len > 1e-6f ? Vec2f{-dy / len, dx / len} : Vec2f{0, 0};
+  };
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    Vec2f n{0, 0};
+    if (i > 0) n = normal(i - 1);
+    if (i + 1 < p.size()) {
+      const Vec2f m = normal(i);
+      n = {n.x + m.x, n.y + m.y};
+    }
+    const float len = std::sqrt(n.x * n.x + n.y * n.y);
+    if (len > 1e-6f) n = {n.x / len, n.y / len};
+    out[i] = {p[i].x + d * n.x, p[i].y + d * n.y};
+  }
+  return out;
+}
+
+// The companion cable's look: a dotted light outline on both sides, `rim_width` apart (wider
+// than the main cable with its rim, so it still shows where the main cable, drawn on top,
+// covers the companion), around a thinner line of the tension colour (per link, by the caller).
+void DrawCompanionRim(Painter& p, const std::vector<Vec2f>& pts, float rim_width,
                       const Theme& th) {
-  const float k = p.k(), dash = std::max(1.5f, 4 * k);
-  p.Dashed(pts, rim_width, th.companion_rim, dash, dash);
-  p.Polyline(pts, width + 2 * k, th.panel);
+  const float k = p.k(), dot = std::max(1.0f, 1.6f * k);
+  for (float side : {-1.0f, 1.0f})  // round caps lengthen each dash by the dot width
+    p.Dashed(Offset(pts, side * (rim_width - dot) / 2), dot, th.companion_rim, 2.5f * k, 6.5f * k);
 }
 void DrawCompanionLine(Painter& p, const std::vector<Vec2f>& pts, float width, float rim_width,
                        Rgba color, const Theme& th) {
-  DrawCompanionRim(p, pts, width, rim_width, th);
+  DrawCompanionRim(p, pts, rim_width, th);
   p.Polyline(pts, width, color);
 }
 
@@ -193,7 +215,7 @@ void DrawLegend(Painter& p, float right, float baseline, const std::vector<Legen
         p.Line({x + 3 * k, c.y}, {x + swatch - 3 * k, c.y}, 6 * k, e.color);
         break;
       case LegendEntry::kCompanion:  // as drawn: a thinner line in a dotted light rim
-        DrawCompanionLine(p, {{x + 2 * k, c.y}, {x + swatch - 2 * k, c.y}}, 3.6f * k, 13 * k,
+        DrawCompanionLine(p, {{x + 1 * k, c.y}, {x + swatch - 1 * k, c.y}}, 3.6f * k, 12 * k,
                           e.color, th);
         break;
       case LegendEntry::kBand:
@@ -216,6 +238,35 @@ void DrawLegend(Painter& p, float right, float baseline, const std::vector<Legen
     p.Text(e.label, {x, baseline}, font, th.text_dim, HAlign::kLeft);
     x += EstimateTextWidth(e.label, font) + gap;
   }
+}
+
+// A trace of vs against ts with at most two points (min and max, in time order) per pixel
+// column: the cost of a frame stays bounded however long the film is. NaN values are skipped.
+std::vector<Vec2f> DecimatedTrace(const PlotMapping& mm, const std::vector<double>& ts,
+                                  const std::vector<double>& vs) {
+  std::vector<Vec2f> trace;
+  int column = -1;
+  std::size_t lo_i = 0, hi_i = 0;
+  auto flush = [&]() {
+    if (column < 0) return;
+    const std::size_t a = std::min(lo_i, hi_i), b = std::max(lo_i, hi_i);
+    trace.push_back(PlotPoint(mm, ts[a], vs[a] / kN));
+    if (b != a) trace.push_back(PlotPoint(mm, ts[b], vs[b] / kN));
+  };
+  for (std::size_t i = 0; i < std::min(ts.size(), vs.size()); ++i) {
+    if (std::isnan(vs[i])) continue;
+    const int col = static_cast<int>(std::floor(mm.PixelX(ts[i])));
+    if (col != column) {
+      flush();
+      column = col;
+      lo_i = hi_i = i;
+    } else {
+      if (vs[i] < vs[lo_i]) lo_i = i;
+      if (vs[i] > vs[hi_i]) hi_i = i;
+    }
+  }
+  flush();
+  return trace;
 }
 
 void CheckSpec(const FilmSpec& spec) {
@@ -298,6 +349,7 @@ void FilmHistory::Add(const CableSnapshot& s) {
     throw Error("film: snapshot at t = " + std::to_string(s.t) + " s has " +
                 std::to_string(s.x.size()) + " stations and " + std::to_string(s.tension.size()) +
                 " links; the film has " + std::to_string(stations_) + " stations");
+  CheckCompanionSizes(stations_, companion_required_, s);
   double peak = s.tension.empty() ? 0 : s.tension[0];
   for (std::size_t j = 0; j < s.tension.size(); ++j) {
     const double T = s.tension[j];
@@ -309,7 +361,6 @@ void FilmHistory::Add(const CableSnapshot& s) {
     }
     peak = std::max(peak, T);
   }
-  CheckCompanionSizes(stations_, companion_required_, s);
   if (s.has_companion()) {
     double cpeak = s.ctension.empty() ? 0 : s.ctension[0];
     for (double T : s.ctension) cpeak = std::max(cpeak, T);
@@ -418,6 +469,7 @@ FrameLayout MakeFrameLayout(const FilmSpec& spec, int width, int height) {
   L.cable_width = std::max(1.5f, 6 * k);
   L.companion_width = std::max(2.0f, 0.6f * L.cable_width);
   const bool companion = !spec.companion_label.empty();
+  L.legend_rows = companion;
 
   double t_lo = spec.tension_min / kN, t_hi = spec.tension_max / kN;
   NiceRange(&t_lo, &t_hi, 6);
@@ -454,8 +506,14 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
   // Header: title, time, and a thin bar of the film's progress.
   const float m = 24 * k;
   p.Text(spec.title, {m, 44 * k}, 30 * k, th.text, HAlign::kLeft, VAlign::kBaseline, false, true);
-  p.Text("Link tension on a fixed colour range " + Format("%.1f", lo / kN) + " \u2013 " +
-             Format("%.1f", hi / kN) + " kN",
+  const bool comp = snap.has_companion();
+  const std::string main_label = spec.label.empty() ? "main" : spec.label;
+  const std::string comp_label = spec.companion_label.empty() ? "companion" : spec.companion_label;
+  const std::string range = Format("%.1f", lo / kN) + " \u2013 " + Format("%.1f", hi / kN) + " kN";
+  std::string both = main_label + " (thick) and " + comp_label + " (thin, dotted outline) cables";
+  if (!both.empty() && both[0] >= 'a' && both[0] <= 'z') both[0] = static_cast<char>(both[0] - 32);
+  p.Text(comp ? both + "; link tension on one fixed colour range " + range
+              : "Link tension on a fixed colour range " + range,
          {m, 70 * k}, 16 * k, th.text_dim);
   const float W = static_cast<float>(L.width);
   p.Text("t = " + Format("%.2f", snap.t) + " s", {W - m, 44 * k}, 30 * k, th.text, HAlign::kRight,
@@ -475,6 +533,10 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
   p.Text("Cable shape (to scale)", {cp.x0 + 18 * k, cp.y0 + 30 * k}, 19 * k, th.text,
          HAlign::kLeft, VAlign::kBaseline, false, true);
   std::vector<LegendEntry> legend;
+  if (comp) {
+    legend.push_back({LegendEntry::kCable, colormap.At(0.62), main_label});
+    legend.push_back({LegendEntry::kCompanion, colormap.At(0.62), comp_label});
+  }
   if (!spec.weight_stations.empty())
     legend.push_back({LegendEntry::kDiamond, th.marker_fill, "weight"});
   if (!spec.fixed_ends.empty()) legend.push_back({LegendEntry::kSquare, th.marker_fill, "anchor"});
@@ -498,12 +560,26 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
     for (const auto& seg : path)
       p.Line(world(seg.a.x, seg.a.y), world(seg.b.x, seg.b.y), 2 * k, Mix(th.accent, th.panel, 0.45f));
   const float cw = L.cable_width;
+  if (comp) {  // beneath the main cable; its dotted rim shows where the two coincide
+    std::vector<Vec2f> c;
+    for (std::size_t j = 0; j < snap.cx.size(); ++j) c.push_back(world(snap.cx[j], snap.cy[j]));
+    DrawCompanionRim(p, c, cw + 7 * k, th);
+    for (std::size_t j = 0; j < links; ++j)
+      p.Line(c[j], c[j + 1], L.companion_width, colormap.Map(snap.ctension[j], lo, hi));
+  }
   for (std::size_t j = 0; j < links; ++j)  // a thin rim keeps the dark end of the map visible
     p.Line(world(snap.x[j], snap.y[j]), world(snap.x[j + 1], snap.y[j + 1]), cw + 2.5f * k,
            th.halo);
   for (std::size_t j = 0; j < links; ++j)
     p.Line(world(snap.x[j], snap.y[j]), world(snap.x[j + 1], snap.y[j + 1]), cw,
            colormap.Map(snap.tension[j], lo, hi));
+  if (comp)  // the companion's weights, smaller: hidden by the main's where the two coincide
+    for (int w : spec.weight_stations) {
+      if (w < 0 || static_cast<std::size_t>(w) >= snap.cx.size()) continue;
+      const Vec2f c = world(snap.cx[w], snap.cy[w]);
+      p.Diamond(c, 8.5f * k, th.companion_rim);
+      p.Diamond(c, 6 * k, th.marker_fill);
+    }
   for (int w : spec.weight_stations) {
     if (w < 0 || static_cast<std::size_t>(w) >= snap.x.size()) continue;
     const Vec2f c = world(snap.x[w], snap.y[w]);
@@ -552,17 +628,44 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
     p.Triangle({cb.x0 - 10 * k, y - 6 * k}, {cb.x0 - 10 * k, y + 6 * k}, {cb.x0 - 1 * k, y},
                th.text);
   }
+  const double cpeak_now =
+      comp && links ? *std::max_element(snap.ctension.begin(), snap.ctension.end()) : 0;
+  if (comp) {  // the companion's just left of the main one, in its curve colour
+    const float y = std::clamp(bar_y(cpeak_now / kN), cb.y0, cb.y1);
+    p.Triangle({cb.x0 - 20 * k, y - 6 * k}, {cb.x0 - 20 * k, y + 6 * k}, {cb.x0 - 11 * k, y},
+               th.companion);
+  }
 
   // ---- Tension along the cable ---------------------------------------------------------
   const PixelRect& tp = L.tension_panel;
   p.Rect(tp, th.panel);
   p.Text("Tension along the cable", {tp.x0 + 18 * k, tp.y0 + 30 * k}, 19 * k, th.text,
          HAlign::kLeft, VAlign::kBaseline, false, true);
-  DrawLegend(p, tp.x1 - 26 * k, tp.y0 + 30 * k,
-             {{LegendEntry::kLine, th.current, "now"},
-              {LegendEntry::kDash, th.equilibrium, "equilibrium"},
-              {LegendEntry::kBand, th.envelope, "min\u2013max so far"}},
-             th, th.panel);
+  const bool comp_eq = comp && L.legend_rows && spec.companion_equilibrium.tension.size() == links;
+  const Rgba comp_eq_color = Mix(th.companion, th.panel, 0.7f);
+  if (comp && L.legend_rows) {  // two rows: the curves now, then the references
+    DrawLegend(p, tp.x1 - 26 * k, tp.y0 + 30 * k,
+               {{LegendEntry::kLine, th.current, main_label + " now"},
+                {LegendEntry::kLine, th.companion, comp_label + " now"}},
+               th, th.panel);
+    std::vector<LegendEntry> refs{{LegendEntry::kDash, th.equilibrium, "equilibrium"}};
+    if (comp_eq) refs.push_back({LegendEntry::kDot, comp_eq_color, comp_label + " equilibrium"});
+    refs.push_back({LegendEntry::kBand, th.envelope, main_label + " min\u2013max so far"});
+    DrawLegend(p, tp.x1 - 26 * k, tp.y0 + 54 * k, refs, th, th.panel);
+  } else if (comp) {  // a companion the spec does not name: one row, short labels
+    DrawLegend(p, tp.x1 - 26 * k, tp.y0 + 30 * k,
+               {{LegendEntry::kLine, th.current, main_label},
+                {LegendEntry::kLine, th.companion, comp_label},
+                {LegendEntry::kDash, th.equilibrium, "equilibrium"},
+                {LegendEntry::kBand, th.envelope, "min\u2013max"}},
+               th, th.panel);
+  } else {
+    DrawLegend(p, tp.x1 - 26 * k, tp.y0 + 30 * k,
+               {{LegendEntry::kLine, th.current, "now"},
+                {LegendEntry::kDash, th.equilibrium, "equilibrium"},
+                {LegendEntry::kBand, th.envelope, "min\u2013max so far"}},
+               th, th.panel);
+  }
   DrawAxes(p, L.tension, "unstretched arc length from station 0 [m]", "tension [kN]", th, 8, 6);
   const PlotMapping& tm = L.tension;
   for (double b : spec.section_boundaries) {
@@ -590,10 +693,22 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
       eq.push_back(PlotPoint(tm, mid(j), spec.equilibrium.tension[j] / kN));
     p.Dashed(eq, 2 * k, th.equilibrium, 8 * k, 6 * k);
   }
+  if (comp_eq) {
+    std::vector<Vec2f> eq;
+    for (std::size_t j = 0; j < links; ++j)
+      eq.push_back(PlotPoint(tm, mid(j), spec.companion_equilibrium.tension[j] / kN));
+    p.Dashed(eq, 2 * k, comp_eq_color, 2 * k, 4 * k);
+  }
   {
     std::vector<Vec2f> now;
     for (std::size_t j = 0; j < links; ++j) now.push_back(PlotPoint(tm, mid(j), snap.tension[j] / kN));
     p.Polyline(now, 2.6f * k, th.current);
+  }
+  if (comp) {  // thinner, on top: where the two agree the main curve shows as its edges
+    std::vector<Vec2f> now;
+    for (std::size_t j = 0; j < links; ++j)
+      now.push_back(PlotPoint(tm, mid(j), snap.ctension[j] / kN));
+    p.Polyline(now, 1.8f * k, th.companion);
   }
 
   // ---- Maximum tension against time (the paper's Figure 1, growing) ----------------------
@@ -603,9 +718,24 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
          HAlign::kLeft, VAlign::kBaseline, false, true);
   double peak_all = 0;
   for (double v : history.max_tension()) peak_all = std::max(peak_all, v);
-  p.Text("now " + Format("%.2f", peak_now / kN) + " kN    peak " + Format("%.2f", peak_all / kN) +
-             " kN",
-         {mp.x1 - 26 * k, mp.y0 + 30 * k}, 16 * k, th.text_dim, HAlign::kRight);
+  if (comp) {
+    double cpeak_all = cpeak_now;  // NaN (no companion) compares false: skipped
+    for (double v : history.companion_max_tension()) cpeak_all = std::max(cpeak_all, v);
+    DrawLegend(p, mp.x1 - 26 * k, mp.y0 + 30 * k,
+               {{LegendEntry::kLine, th.accent, main_label},
+                {LegendEntry::kLine, th.companion, comp_label}},
+               th, th.panel);
+    if (L.legend_rows)
+      p.Text(main_label + "  now " + Format("%.2f", peak_now / kN) + ", peak " +
+                 Format("%.2f", peak_all / kN) + " kN      " + comp_label + "  now " +
+                 Format("%.2f", cpeak_now / kN) + ", peak " + Format("%.2f", cpeak_all / kN) +
+                 " kN",
+             {mp.x1 - 26 * k, mp.y0 + 54 * k}, 15 * k, th.text_dim, HAlign::kRight);
+  } else {
+    p.Text("now " + Format("%.2f", peak_now / kN) + " kN    peak " + Format("%.2f", peak_all / kN) +
+               " kN",
+           {mp.x1 - 26 * k, mp.y0 + 30 * k}, 16 * k, th.text_dim, HAlign::kRight);
+  }
   const PlotMapping& mm = L.max_tension;
   DrawAxes(p, mm, "time [s]", "tension [kN]", th, 8, 6);
   if (spec.equilibrium.tension.size() == links && links > 0) {
@@ -616,33 +746,16 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
     p.Text("equilibrium", {mm.rect.x1 - 6 * k, y - 6 * k}, 14 * k, th.equilibrium, HAlign::kRight);
   }
   {
-    // At most two points (min and max, in time order) per pixel column: the cost of a frame
-    // stays bounded however long the film is.
     const auto& ts = history.times();
     const auto& vs = history.max_tension();
-    std::vector<Vec2f> trace;
-    int column = -1;
-    std::size_t lo_i = 0, hi_i = 0;
-    auto flush = [&]() {
-      if (column < 0) return;
-      const std::size_t a = std::min(lo_i, hi_i), b = std::max(lo_i, hi_i);
-      trace.push_back(PlotPoint(mm, ts[a], vs[a] / kN));
-      if (b != a) trace.push_back(PlotPoint(mm, ts[b], vs[b] / kN));
-    };
-    for (std::size_t i = 0; i < ts.size(); ++i) {
-      const int col = static_cast<int>(std::floor(mm.PixelX(ts[i])));
-      if (col != column) {
-        flush();
-        column = col;
-        lo_i = hi_i = i;
-      } else {
-        if (vs[i] < vs[lo_i]) lo_i = i;
-        if (vs[i] > vs[hi_i]) hi_i = i;
-      }
-    }
-    flush();
-    p.Polyline(trace, 2.4f * k, th.accent);
+    p.Polyline(DecimatedTrace(mm, ts, vs), 2.4f * k, th.accent);
     if (!ts.empty()) p.Disc(PlotPoint(mm, ts.back(), vs.back() / kN), 5 * k, th.accent);
+    const auto& cs = history.companion_max_tension();
+    if (comp && cs.size() == ts.size()) {  // thinner, on top, like the tension curves
+      p.Polyline(DecimatedTrace(mm, ts, cs), 1.8f * k, th.companion);
+      if (!ts.empty() && std::isfinite(cs.back()))
+        p.Disc(PlotPoint(mm, ts.back(), cs.back() / kN), 4 * k, th.companion);
+    }
   }
   return frame;
 }

@@ -15,8 +15,9 @@
 namespace cablefilm {
 
 // What the film has shown so far, accumulated snapshot by snapshot: the O(s) envelope, one
-// (t, max) pair per snapshot (and the companion cable's max, when there is one), and the end's path as segments between cells of a 1000 x 1000
-// grid over the world box, each cell pair stored once, so a periodic path stops growing.
+// (t, max) pair per snapshot (and the companion cable's max, when there is one), and the end's
+// path as segments between cells of a 1000 x 1000 grid over the world box, each cell pair
+// stored once, so a periodic path stops growing.
 class FilmHistory {
  public:
   explicit FilmHistory(const FilmSpec& spec);
@@ -69,6 +70,8 @@ struct FrameLayout {
   PixelRect colorbar;      // the colour bar: bottom = tension_min, top = tension_max
   float cable_width = 6;   // [px]
   float companion_width = 3.6f;  // the companion cable's coloured line (drawn under the main) [px]
+  // The spec names a companion: the two lower plots start lower, leaving a second legend row.
+  bool legend_rows = false;
 };
 FrameLayout MakeFrameLayout(const FilmSpec& spec, int width, int height);
 

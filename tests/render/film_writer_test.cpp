@@ -108,6 +108,50 @@ TEST(FilmWriter, BadOptionsFailInTheConstructor) {
   EXPECT_THROW(FilmWriter(o, spec, FreshDir("bad"), 1), Error);
 }
 
+// A spec naming a companion cable: its max-tension series comes out beside the main one (labels
+// from the spec), max_tension_series() stays the main cable's, and the still holds both.
+TEST(FilmWriter, CompanionSeries) {
+  const std::string dir = FreshDir("companion");
+  FilmSpec spec = testing::StraightCompanionSpec();
+  FilmOptions o = SmallOptions();
+  o.write_film = false;
+  o.write_frames = true;
+  {
+    FilmWriter writer(o, spec, dir, 5);
+    for (int i = 0; i < 5; ++i) {
+      CableSnapshot s = testing::StraightCompanionSnapshot(i);
+      for (double& T : s.ctension) T *= 1 + 0.1 * i;
+      writer.Push(s);
+    }
+    writer.Finish();
+    const MaxTensionSeries main = writer.max_tension_series();
+    EXPECT_EQ(main.label, "elastic");  // options.series_label, as before
+    EXPECT_EQ(main.t.size(), 5u);
+    const auto all = writer.all_max_tension_series();
+    ASSERT_EQ(all.size(), 2u);
+    EXPECT_EQ(all[0].label, "elastic");
+    EXPECT_EQ(all[0].tension, main.tension);
+    EXPECT_EQ(all[1].label, "inextensible");
+    ASSERT_EQ(all[1].tension.size(), 5u);
+    const double top = (testing::kLinks - 0.5) / testing::kLinks * testing::kTensionMax;
+    for (int i = 0; i < 5; ++i) {
+      EXPECT_DOUBLE_EQ(all[1].t[i], i);
+      EXPECT_DOUBLE_EQ(all[1].tension[i], top * (1 + 0.1 * i));
+    }
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir + "/frames/frame_000004.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/max_tension.png"));
+  // Without a companion, all_max_tension_series() is just the main series.
+  FilmOptions plain = SmallOptions();
+  plain.write_film = false;
+  plain.write_max_tension = false;
+  FilmWriter writer(plain, testing::StraightSpec(), FreshDir("plain"), 1);
+  writer.Push(testing::StraightSnapshot(0));
+  writer.Finish();
+  ASSERT_EQ(writer.all_max_tension_series().size(), 1u);
+  EXPECT_EQ(writer.all_max_tension_series()[0].label, "elastic");
+}
+
 TEST(WriteMaxTensionPng, TwoSeries) {
   const std::string path = testing::OutputDir("still") + "/max_tension.png";
   MaxTensionSeries elastic{"elastic", {}, {}}, inext{"inextensible", {}, {}};

@@ -180,5 +180,194 @@ TEST(MakeMaxTensionFigure, SeriesAndLegend) {
   EXPECT_THROW(MakeMaxTensionFigure("x", {bad}, 800, 450), Error);
 }
 
+
+// ---- Companion cable ------------------------------------------------------------------------
+
+// Largest channel difference between two colours.
+float ColorGap(const Rgba& a, const Rgba& b) {
+  return std::max({std::fabs(a.r - b.r), std::fabs(a.g - b.g), std::fabs(a.b - b.b)});
+}
+
+TEST(MakeFrame, CompanionSegmentsCarryTheirTensionColourBeneathTheMainCable) {
+  const FilmSpec spec = testing::StraightCompanionSpec();
+  const CableSnapshot snap = testing::StraightCompanionSnapshot(1.0);
+  FilmHistory history(spec);
+  history.Add(snap);
+  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  EXPECT_LT(L.companion_width, L.cable_width);
+  const Colormap map("viridis");
+  const Frame frame = MakeFrame(spec, history, snap, L, map);
+  // Index of the first main cable segment (the main cable's colour at link 0).
+  const Vec2f m0 = L.cable.ToPixel(0, 0), m1 = L.cable.ToPixel(1, 0);
+  std::size_t first_main = frame.shapes.size();
+  for (std::size_t i = 0; i < frame.shapes.size(); ++i) {
+    const Shape& s = frame.shapes[i];
+    if (s.kind == ShapeKind::kSegment && s.a.x == m0.x && s.a.y == m0.y && s.b.x == m1.x &&
+        s.b.y == m1.y && s.size == L.cable_width) {
+      first_main = i;
+      break;
+    }
+  }
+  ASSERT_LT(first_main, frame.shapes.size());
+  int found = 0;
+  for (int j = 0; j < kLinks; ++j) {
+    const Vec2f a = L.cable.ToPixel(j, testing::kCompanionY);
+    const Vec2f b = L.cable.ToPixel(j + 1, testing::kCompanionY);
+    const Rgba want = map.Map(snap.ctension[j], 0, kTensionMax);
+    for (std::size_t i = 0; i < frame.shapes.size(); ++i) {
+      const Shape& s = frame.shapes[i];
+      // Exact geometry; the colour within float rounding of the map's (the same table entry).
+      if (s.kind == ShapeKind::kSegment && s.a.x == a.x && s.a.y == a.y && s.b.x == b.x &&
+          s.b.y == b.y && s.size == L.companion_width && ColorGap(s.color, want) < 1e-6f) {
+        EXPECT_LT(i, first_main) << "companion link " << j << " is drawn over the main cable";
+        ++found;
+        break;
+      }
+    }
+  }
+  EXPECT_EQ(found, kLinks);
+  // The reversed tensions really give other colours than the main cable's at the ends.
+  EXPECT_GT(ColorGap(map.Map(snap.ctension[0], 0, kTensionMax),
+                     map.Map(snap.tension[0], 0, kTensionMax)),
+            0.3f);
+}
+
+TEST(MakeFrame, CompanionLegendsNameBothCables) {
+  const FilmSpec spec = testing::StraightCompanionSpec();
+  const CableSnapshot snap = testing::StraightCompanionSnapshot(2.0);
+  FilmHistory history(spec);
+  history.Add(snap);
+  const FrameLayout L = MakeFrameLayout(spec, 1920, 1080);
+  const Frame frame = MakeFrame(spec, history, snap, L, Colormap("viridis"));
+  auto count_in = [&](const std::string& text, const PixelRect& r) {
+    int n = 0;
+    for (const TextItem& t : frame.texts) n += t.text == text && r.Contains(t.pos);
+    return n;
+  };
+  // Cable panel: one entry per cable; tension panel: each cable's curve now; max panel: both.
+  EXPECT_EQ(count_in("elastic", L.cable_panel), 1);
+  EXPECT_EQ(count_in("inextensible", L.cable_panel), 1);
+  EXPECT_EQ(count_in("elastic now", L.tension_panel), 1);
+  EXPECT_EQ(count_in("inextensible now", L.tension_panel), 1);
+  EXPECT_EQ(count_in("inextensible equilibrium", L.tension_panel), 1);
+  EXPECT_EQ(count_in("elastic", L.max_panel), 1);
+  EXPECT_EQ(count_in("inextensible", L.max_panel), 1);
+  // Without a companion none of these appear.
+  const FilmSpec plain = testing::StraightSpec();
+  FilmHistory h2(plain);
+  const Frame f2 = MakeFrame(plain, h2, testing::StraightSnapshot(2.0),
+                             MakeFrameLayout(plain, 1920, 1080), Colormap("viridis"));
+  for (const TextItem& t : f2.texts) {
+    EXPECT_EQ(t.text.find("inextensible"), std::string::npos) << t.text;
+    EXPECT_EQ(t.text.find("elastic"), std::string::npos) << t.text;
+  }
+}
+
+TEST(MakeFrame, CompanionTensionCurveAndMaxTrace) {
+  const FilmSpec spec = testing::StraightCompanionSpec();
+  FilmHistory history(spec);
+  CableSnapshot snap;
+  for (int i = 0; i <= 20; ++i) {
+    snap = testing::StraightCompanionSnapshot(i * 0.5);
+    for (double& T : snap.ctension) T *= 0.5 + 0.02 * i;
+    history.Add(snap);
+  }
+  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  const Frame frame = MakeFrame(spec, history, snap, L, Colormap("viridis"));
+  const Theme th = Theme::Dark();
+  // The companion's current tension: a vertex at each link midpoint, in the companion colour.
+  int vertices = 0, trace = 0;
+  for (int j = 0; j < kLinks; ++j) {
+    const Vec2f want = L.tension.ToPixel(j + 0.5, snap.ctension[j] / 1000);
+    for (const Shape& s : frame.shapes)
+      if (s.kind == ShapeKind::kSegment && SameColor(s.color, th.companion) &&
+          std::fabs(s.a.x - want.x) < 1e-3f && std::fabs(s.a.y - want.y) < 1e-3f) {
+        ++vertices;
+        break;
+      }
+  }
+  EXPECT_EQ(vertices, kLinks - 1);  // the last midpoint only ends a segment
+  for (const Shape& s : frame.shapes)
+    trace += s.kind == ShapeKind::kSegment && SameColor(s.color, th.companion) &&
+             L.max_tension.rect.Contains(s.a) && L.max_tension.rect.Contains(s.b);
+  EXPECT_EQ(trace, 20);  // 21 snapshots, each in its own pixel column
+  // The companion's max tension per snapshot, one per snapshot.
+  ASSERT_EQ(history.companion_max_tension().size(), 21u);
+  EXPECT_DOUBLE_EQ(history.companion_max_tension()[0], 0.5 * snap.ctension[0] / (0.5 + 0.02 * 20));
+  EXPECT_DOUBLE_EQ(history.companion_max_tension()[20], snap.ctension[0]);
+}
+
+TEST(CheckSnapshot, RejectsACompanionOfTheWrongSize) {
+  const FilmSpec spec = testing::StraightCompanionSpec();
+  const CableSnapshot good = testing::StraightCompanionSnapshot(1.5);
+  EXPECT_NO_THROW(CheckSnapshot(spec, good));
+  auto message = [&](const CableSnapshot& s) -> std::string {
+    try {
+      CheckSnapshot(spec, s);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CableSnapshot short_x = good;
+  short_x.cx.pop_back();
+  const std::string m1 = message(short_x);
+  EXPECT_NE(m1.find("companion cable at t = 1.5"), std::string::npos) << m1;
+  EXPECT_NE(m1.find("20 x, 21 y and 20 tensions"), std::string::npos) << m1;
+  EXPECT_NE(m1.find("21 stations and 20 links"), std::string::npos) << m1;
+  CableSnapshot long_t = good;
+  long_t.ctension.push_back(1);
+  EXPECT_NE(message(long_t).find("21 tensions"), std::string::npos) << message(long_t);
+  // The spec names a companion: a snapshot without one is an error too.
+  const std::string m3 = message(testing::StraightSnapshot(1.5));
+  EXPECT_NE(m3.find("0 x, 0 y and 0 tensions"), std::string::npos) << m3;
+  CableSnapshot nan = good;
+  nan.ctension[7] = NAN;
+  EXPECT_NE(message(nan).find("companion tension of link 7"), std::string::npos) << message(nan);
+  // Without a companion label, a companion is optional, but checked when present.
+  const FilmSpec plain = testing::StraightSpec();
+  EXPECT_NO_THROW(CheckSnapshot(plain, testing::StraightSnapshot(1)));
+  EXPECT_NO_THROW(CheckSnapshot(plain, good));
+  EXPECT_THROW(CheckSnapshot(plain, short_x), Error);
+  // FilmHistory::Add checks the sizes the same way, before changing anything.
+  FilmHistory history(spec);
+  EXPECT_THROW(history.Add(short_x), Error);
+  EXPECT_THROW(history.Add(testing::StraightSnapshot(1)), Error);
+  EXPECT_EQ(history.count(), 0);
+  EXPECT_TRUE(history.companion_max_tension().empty());
+  // And MakeFrame rejects it.
+  EXPECT_THROW(MakeFrame(spec, history, short_x, MakeFrameLayout(spec, 320, 180),
+                         Colormap("viridis")),
+               Error);
+}
+
+TEST(FilmHistory, CompanionMaxIsNaNWhereASnapshotHasNone) {
+  const FilmSpec spec = testing::StraightSpec();  // no companion named: optional per snapshot
+  FilmHistory history(spec);
+  history.Add(testing::StraightSnapshot(0));
+  EXPECT_TRUE(history.companion_max_tension().empty());
+  history.Add(testing::StraightCompanionSnapshot(0.1));
+  history.Add(testing::StraightSnapshot(0.2));
+  ASSERT_EQ(history.companion_max_tension().size(), 3u);
+  EXPECT_TRUE(std::isnan(history.companion_max_tension()[0]));
+  EXPECT_DOUBLE_EQ(history.companion_max_tension()[1], (kLinks - 0.5) / kLinks * kTensionMax);
+  EXPECT_TRUE(std::isnan(history.companion_max_tension()[2]));
+  // Drawn with default names and one legend row (the layout has no second row).
+  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  EXPECT_FALSE(L.legend_rows);
+  const Frame frame = MakeFrame(spec, history, testing::StraightCompanionSnapshot(0.3), L,
+                                Colormap("viridis"));
+  int named = 0;
+  for (const TextItem& t : frame.texts) {
+    named += t.text == "companion";
+    // Above the plots, only the row of the title and legend (no second row over the plots).
+    if ((L.tension_panel.Contains(t.pos) || L.max_panel.Contains(t.pos)) &&
+        t.pos.y < L.tension.rect.y0) {
+      EXPECT_FLOAT_EQ(t.pos.y, L.tension_panel.y0 + 30 * L.scale) << t.text;
+    }
+  }
+  EXPECT_EQ(named, 3);  // cable, tension and max-tension legends
+}
+
 }  // namespace
 }  // namespace cablefilm

@@ -169,6 +169,83 @@ TEST(RendererGolden, TinyDemoFrame) {
   }
 }
 
+// ---- Companion cable ------------------------------------------------------------------------
+
+// The straight scene with its companion 1.5 m above the main cable (about 50 px at 960x540,
+// far beyond both cables' rims). At the middle of each companion link, away from the weight
+// marker and the ends, the companion's coloured line is 2 px wide: the pixel holding the line's
+// centre is within 0.5 px of it, so fully covered (coverage = clamp(w/2 + 0.5 - d) = 1) and
+// shows the map at the companion's tension, up to the 8-bit rounding of the vertex colour and
+// of the framebuffer (sRGB values written as is): 2/255, as for the main cable.
+TEST(RendererCompanion, CompanionColourIsTheMapAtItsLinkTension) {
+  constexpr int kW = 960, kH = 540;
+  const FilmSpec spec = testing::StraightCompanionSpec();
+  const CableSnapshot snap = testing::StraightCompanionSnapshot(2.0);
+  FilmHistory history(spec);
+  history.Add(snap);
+  const FrameLayout layout = MakeFrameLayout(spec, kW, kH);
+  ASSERT_GE(layout.companion_width, 2.0f);
+  const Colormap map("viridis");
+  RenderOptions options;
+  options.width = kW;
+  options.height = kH;
+  const Image image = Renderer(options).Draw(MakeFrame(spec, history, snap, layout, map));
+  WritePng(testing::OutputDir("renderer") + "/straight_companion_960x540.png", image);
+  const float apart = layout.cable.ToPixel(0, 0).y - layout.cable.ToPixel(0, testing::kCompanionY).y;
+  ASSERT_GT(apart, 10 * layout.cable_width);
+  int checked = 0;
+  for (int j = 1; j < kLinks - 1; ++j) {
+    if (j == 4 || j == 5) continue;  // the companion's weight marker at station 5
+    const Vec2f p = layout.cable.ToPixel(j + 0.5, testing::kCompanionY);
+    const std::uint8_t* px =
+        image.at(static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)));
+    const Rgba want = map.Map(snap.ctension[j], 0, kTensionMax);
+    EXPECT_LE(ColorDistance(px, want), 2) << "companion link " << j;
+    // Not the main cable's colour of that link (the tensions run the other way).
+    if (std::abs(j - kLinks / 2) > 2) {
+      EXPECT_GT(ColorDistance(px, map.Map(snap.tension[j], 0, kTensionMax)), 20) << j;
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, kLinks - 4);
+}
+
+// The demo cable with a companion (a lagged, lowered copy with larger tensions: a stand-in for
+// the inextensible model) at full size, for looking at: test_output/render/renderer/.
+TEST(RendererCompanion, DemoFrameWithCompanionAt1080p) {
+  FilmSpec spec = MakeDemoSpec(20);
+  spec.label = "elastic";
+  spec.companion_label = "inextensible";
+  spec.y_min -= 2;
+  auto companion = [&](double t) {
+    CableSnapshot s = MakeDemoSnapshot(spec, t);
+    const CableSnapshot c = MakeDemoSnapshot(spec, std::max(0.0, t - 0.35));
+    s.cx = c.x;
+    s.cy = c.y;
+    s.ctension = c.tension;
+    for (std::size_t j = 0; j < s.cy.size(); ++j) {
+      const double u = static_cast<double>(j) / (s.cy.size() - 1);
+      s.cy[j] -= 1.6 * 4 * u * (1 - u);  // sags a little more in the middle, same ends
+    }
+    for (double& T : s.ctension) T *= 1.12;
+    return s;
+  };
+  spec.companion_equilibrium = MakeDemoSnapshot(spec, 0);
+  for (double& T : spec.companion_equilibrium.tension) T *= 1.12;
+  FilmHistory history(spec);
+  CableSnapshot snap;
+  for (int i = 0; i <= 126; ++i) {
+    snap = companion(i / 10.0);
+    history.Add(snap);
+  }
+  const FrameLayout layout = MakeFrameLayout(spec, 1920, 1080);
+  RenderOptions options;
+  const Image image =
+      Renderer(options).Draw(MakeFrame(spec, history, snap, layout, Colormap("viridis")));
+  ASSERT_EQ(image.width, 1920);
+  WritePng(testing::OutputDir("renderer") + "/demo_companion_1920x1080.png", image);
+}
+
 TEST(ShaderProgram, DirectoryFromOptionThenEnvironmentThenBuild) {
   EXPECT_EQ(ResolveShaderDir("/some/dir"), "/some/dir");
   ::setenv("CABLEFILM_SHADERS", "/from/env", 1);

@@ -48,6 +48,27 @@ inline CableSnapshot StraightSnapshot(double t) {
   return s;
 }
 
+// The straight scene with a companion cable 1.5 m above the main one (y = 1.5), its tensions
+// running the other way: link j carries (kLinks - j - 0.5) / kLinks of the maximum.
+constexpr double kCompanionY = 1.5;  // [m]
+inline FilmSpec StraightCompanionSpec() {
+  FilmSpec spec = StraightSpec();
+  spec.label = "elastic";
+  spec.companion_label = "inextensible";
+  spec.companion_equilibrium = spec.equilibrium;
+  spec.companion_equilibrium.tension.assign(kLinks, 0.3 * kTensionMax);
+  return spec;
+}
+inline CableSnapshot StraightCompanionSnapshot(double t) {
+  CableSnapshot s = StraightSnapshot(t);
+  for (int j = 0; j <= kLinks; ++j) {
+    s.cx.push_back(j);
+    s.cy.push_back(kCompanionY);
+  }
+  for (int j = 0; j < kLinks; ++j) s.ctension.push_back((kLinks - j - 0.5) / kLinks * kTensionMax);
+  return s;
+}
+
 inline std::string OutputDir(const std::string& name) {
   const auto dir = std::filesystem::path(CABLEFILM_BINARY_DIR) / "test_output" / "render" / name;
   std::filesystem::create_directories(dir);
