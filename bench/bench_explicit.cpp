@@ -3,6 +3,7 @@
 // tension_max with its time. The explicit step shrinks as 1/N, so the cost grows as N^2: runs
 // longer than --max-steps are cut short and their wall time for the whole duration projected.
 //   bench_explicit [--scene FILE] [--duration S] [--max-steps N] [--sizes 60,600,6000]
+//                  [--implicit DT]   (the implicit scheme at a fixed step DT instead)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -45,6 +46,8 @@ int main(int argc, char** argv) {
     SceneDef scene = base;
     for (SectionDef& s : scene.sections) s.segments = s.segments * links / base_links;
     scene.simulation.duration = duration;
+    scene.simulation.integrator = IntegratorChoice::kExplicit;
+    scene.simulation.time_step = 0;  // auto: the stability limit
     if (implicit_dt >= 0) {
       scene.simulation.integrator = IntegratorChoice::kImplicit;
       scene.simulation.time_step = implicit_dt;
