@@ -1,0 +1,656 @@
+// The inextensible cable (reference [1] of the paper; src/core/inextensible.*) against truths
+// computed here, independently of src/core:
+//  - a pinned chain released from a horizontal line in vacuum against the N-link pendulum of
+//    point masses in angle coordinates (Lagrange's equations, RK4 at a tiny step);
+//  - small oscillations of a hanging chain against the linearised pendulum's generalized
+//    eigenproblem and its continuous limit (Bessel J0 zeros);
+//  - the elastic model tending to the inextensible one as 1/EA (static P63);
+//  - link lengths held over the 60 s run of P63 with its moving fairlead;
+//  - the equilibrium between two fixed points against the exact discrete chain (closed form per
+//    link, two unknowns) and the continuous inextensible catenary;
+//  - the `cablefilm compare` command's files.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "app/commands.h"
+#include "app/simulation_run.h"
+#include "core/equilibrium.h"
+#include "core/forces.h"
+#include "core/inextensible.h"
+#include "scene/build_model.h"
+#include "scene/scene_loader.h"
+
+#ifndef CABLEFILM_TEST_RENDER
+#define CABLEFILM_TEST_RENDER 0
+#endif
+
+namespace cablefilm {
+namespace {
+
+constexpr double kG = 9.80665;
+const std::string kP63 = std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml";
+
+// A uniform inextensible chain of `links` links in vacuum (no drag, no added mass, no buoyancy):
+// station masses mu l inside, mu l / 2 at the ends.
+CableModel Chain(int links, double length, double mu, EndMotion start, EndMotion end) {
+  SectionSpec s;
+  s.length = length;
+  s.segments = links;
+  s.diameter = 0.01;
+  s.area = 1e-4;
+  s.mass_per_length = mu;
+  s.youngs_modulus = 1e11;
+  EnvironmentSpec env;
+  env.gravity = kG;
+  env.fluid_density = 0;
+  return BuildCableModel({s}, {}, env, std::move(start), std::move(end), LinkLaw::kInextensible);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The N-link pendulum of point masses hanging from a fixed pivot (station 0 at the origin),
+// link i (0-based) from station i to i+1 with direction (cos th_i, sin th_i), masses m_j at
+// stations 1..N. With S_i = sum_{j >= i+1} m_j (everything beyond link i), Lagrange's equations
+// are
+//   sum_k M_ik th_k'' = -sum_k l_i l_k sin(th_i - th_k) S_max(i,k) th_k'^2 - g l_i cos(th_i) S_i,
+//   M_ik = l_i l_k cos(th_i - th_k) S_max(i,k).
+class Pendulum {
+ public:
+  Pendulum(const std::vector<double>& l, const std::vector<double>& station_mass, double g)
+      : l_(l), g_(g), n_(static_cast<int>(l.size())), S_(n_) {
+    double acc = 0;
+    for (int i = n_ - 1; i >= 0; --i) S_[i] = (acc += station_mass[i + 1]);
+    mass_ = station_mass;
+  }
+  int links() const { return n_; }
+
+  Eigen::VectorXd Accel(const Eigen::VectorXd& th, const Eigen::VectorXd& w) const {
+    const Eigen::ArrayXd c = th.array().cos(), s = th.array().sin();
+    Eigen::MatrixXd M(n_, n_);
+    Eigen::VectorXd f(n_);
+    for (int i = 0; i < n_; ++i) {
+      f[i] = -g_ * l_[i] * c[i] * S_[i];
+      for (int k = 0; k < n_; ++k) {
+        const double lls = S_[std::max(i, k)] * l_[i] * l_[k];
+        M(i, k) = lls * (c[i] * c[k] + s[i] * s[k]);    // cos(th_i - th_k)
+        f[i] -= lls * (s[i] * c[k] - c[i] * s[k]) * w[k] * w[k];  // sin(th_i - th_k)
+      }
+    }
+    return M.partialPivLu().solve(f);
+  }
+  // Classical RK4 on (th, w) for `steps` steps of h.
+  void Advance(Eigen::VectorXd& th, Eigen::VectorXd& w, double h, long steps) const {
+    for (long n = 0; n < steps; ++n) {
+      const Eigen::VectorXd a1 = Accel(th, w);
+      const Eigen::VectorXd t2 = th + 0.5 * h * w, w2 = w + 0.5 * h * a1;
+      const Eigen::VectorXd a2 = Accel(t2, w2);
+      const Eigen::VectorXd t3 = th + 0.5 * h * w2, w3 = w + 0.5 * h * a2;
+      const Eigen::VectorXd a3 = Accel(t3, w3);
+      const Eigen::VectorXd t4 = th + h * w3, w4 = w + h * a3;
+      const Eigen::VectorXd a4 = Accel(t4, w4);
+      th += h / 6 * (w + 2 * w2 + 2 * w3 + w4);
+      w += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
+    }
+  }
+  Eigen::Vector2d EndPosition(const Eigen::VectorXd& th) const {
+    Eigen::Vector2d r = Eigen::Vector2d::Zero();
+    for (int i = 0; i < n_; ++i) r += l_[i] * Eigen::Vector2d(std::cos(th[i]), std::sin(th[i]));
+    return r;
+  }
+  // Tension of link 0: stations 1..N feel only link 0's pull -T t_0 and gravity, so
+  // sum_j m_j a_j = -T t_0 - g S_0 e_y, i.e. T = -t_0 . (sum_j m_j a_j + g S_0 e_y), with
+  // a_j = sum_{i<j} l_i (th_i'' n_i - th_i'^2 t_i) (t_i = (cos, sin), n_i = (-sin, cos)).
+  double FirstTension(const Eigen::VectorXd& th, const Eigen::VectorXd& w) const {
+    const Eigen::VectorXd al = Accel(th, w);
+    Eigen::Vector2d p = Eigen::Vector2d(0, g_ * S_[0]);
+    Eigen::Vector2d a = Eigen::Vector2d::Zero();
+    for (int j = 1; j <= n_; ++j) {
+      const int i = j - 1;
+      const Eigen::Vector2d t(std::cos(th[i]), std::sin(th[i])), nn(-std::sin(th[i]), std::cos(th[i]));
+      a += l_[i] * (al[i] * nn - w[i] * w[i] * t);
+      p += mass_[j] * a;
+    }
+    return -Eigen::Vector2d(std::cos(th[0]), std::sin(th[0])).dot(p);
+  }
+
+ private:
+  std::vector<double> l_;
+  double g_;
+  int n_;
+  std::vector<double> S_;
+  std::vector<double> mass_;
+};
+
+Pendulum PendulumOf(const CableModel& m) {
+  std::vector<double> l(m.rest_length.data(), m.rest_length.data() + m.links);
+  std::vector<double> mass(m.cable_mass.data(), m.cable_mass.data() + m.stations());
+  return Pendulum(l, mass, m.gravity);
+}
+
+struct Sample {
+  Eigen::Vector2d end;
+  double tension0;
+};
+
+// The truth at t = k * interval, k = 1..count, from rest with all angles 0 (horizontal).
+std::vector<Sample> PendulumTruth(const Pendulum& p, double interval, int count, double h) {
+  Eigen::VectorXd th = Eigen::VectorXd::Zero(p.links()), w = Eigen::VectorXd::Zero(p.links());
+  const long steps = std::lround(interval / h);
+  std::vector<Sample> out;
+  for (int k = 0; k < count; ++k) {
+    p.Advance(th, w, interval / steps, steps);
+    out.push_back({p.EndPosition(th), p.FirstTension(th, w)});
+  }
+  return out;
+}
+
+// cablefilm's inextensible integrator from the same state, outer step dt.
+std::vector<Sample> CablefilmRun(const CableModel& m, double interval, int count, double dt,
+                                 long* substeps = nullptr) {
+  CableState s;
+  s.x = Eigen::Matrix2Xd::Zero(2, m.stations());
+  for (int j = 0; j <= m.links; ++j) s.x(0, j) = m.arc_length[j];
+  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+  InextensibleIntegrator integ(m);
+  integ.Initialize(m, s);
+  const long steps = std::lround(interval / dt);
+  std::vector<Sample> out;
+  for (int k = 0; k < count; ++k) {
+    for (long n = 0; n < steps; ++n) integ.Step(m, s, interval / steps);
+    out.push_back({s.x.col(m.links), integ.tensions()[0]});
+  }
+  if (substeps) *substeps = integ.stats().steps;
+  return out;
+}
+
+struct Errors {
+  double position = 0, tension = 0;
+};
+Errors MaxErrors(const std::vector<Sample>& a, const std::vector<Sample>& b) {
+  Errors e;
+  for (size_t k = 0; k < a.size(); ++k) {
+    e.position = std::max(e.position, (a[k].end - b[k].end).norm());
+    e.tension = std::max(e.tension, std::abs(a[k].tension0 - b[k].tension0));
+  }
+  return e;
+}
+
+// Released from rest in a horizontal line, pinned at station 0: compare the free end and the
+// first link's tension at several times with the pendulum, and show second-order convergence in
+// the outer step dt.
+void CheckPendulumRelease(int links, double interval, int count, double dt, double pos_tol,
+                          double ten_tol, double rk4_step) {
+  const double L = 1.0, mu = 1.0;
+  const CableModel m = Chain(links, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Free({L, 0}));
+  const Pendulum p = PendulumOf(m);
+  // RK4 at a tiny step h; its own error (global O(h^4)) is 1/15 of the difference from the
+  // run at 2h, which must be below 1 % of the tolerances: the truth is exact for this purpose.
+  const std::vector<Sample> truth = PendulumTruth(p, interval, count, rk4_step);
+  const std::vector<Sample> truth2 = PendulumTruth(p, interval, count, 2 * rk4_step);
+  const Errors self = MaxErrors(truth, truth2);
+  std::printf("  RK4 truth at h = %.3g s vs 2h: %.2e m, %.2e N\n", rk4_step, self.position,
+              self.tension);
+  EXPECT_LT(self.position, 1e-2 * pos_tol);
+  EXPECT_LT(self.tension, 1e-2 * ten_tol);
+
+  std::vector<Errors> e;
+  for (double h : {4 * dt, 2 * dt, dt}) {
+    long sub = 0;
+    const std::vector<Sample> run = CablefilmRun(m, interval, count, h, &sub);
+    e.push_back(MaxErrors(run, truth));
+    const long outer = std::lround(interval / h) * count;
+    std::printf("  N=%d dt=%.3g: %ld outer steps, %ld substeps; max |end error| %.3e m, "
+                "max |T_0 error| %.3e N\n",
+                links, h, outer, sub, e.back().position, e.back().tension);
+    // The substeps are the outer steps (the stability limit is not what sets the step), so the
+    // outer dt is the step whose order we measure.
+    EXPECT_EQ(sub, outer);
+  }
+  for (int i = 0; i < count; ++i)
+    std::printf("  t=%.2f s: end (%.6f, %.6f) m, T_0 %.6f N\n", (i + 1) * interval,
+                truth[i].end.x(), truth[i].end.y(), truth[i].tension0);
+  const double rp1 = e[0].position / e[1].position, rp2 = e[1].position / e[2].position;
+  const double rt1 = e[0].tension / e[1].tension, rt2 = e[1].tension / e[2].tension;
+  std::printf("  convergence ratios (halving dt): end position %.3f %.3f, tension %.3f %.3f\n",
+              rp1, rp2, rt1, rt2);
+  // Second order: each halving divides the error by 4 (3.3..4.7 leaves room for the O(dt^3)
+  // remainder at the coarsest step; first order would give 2, third order 8).
+  for (double r : {rp1, rp2, rt1, rt2}) {
+    EXPECT_GT(r, 3.3);
+    EXPECT_LT(r, 4.7);
+  }
+  EXPECT_LT(e[2].position, pos_tol);
+  EXPECT_LT(e[2].tension, ten_tol);
+}
+
+TEST(InextensiblePendulum, ThreeLinksReleasedFromHorizontal) {
+  // 1 m chain, 3 links, compared at t = 0.25, 0.5, ..., 1.5 s (through the first swing, the
+  // whip of the free end and the backswing; end speeds up to ~6 m/s, T_0 between 1.6 and 24 N).
+  // Measured at dt = 1e-3, 5e-4, 2.5e-4 s: end 6.8e-6, 1.8e-6, 4.7e-7 m; T_0 3.7e-3, 9.7e-4,
+  // 2.5e-4 N (ratios 3.7..3.9: second order). The bounds at dt = 2.5e-4 s, 1e-6 m and 5e-4 N,
+  // are the second-order error at sqrt(2) dt: a first-order or inconsistent scheme (wrong
+  // inertia, missing centripetal term, lagging tension) is off by orders of magnitude.
+  CheckPendulumRelease(3, 0.25, 6, 2.5e-4, 1e-6, 5e-4, 2.5e-5);
+}
+
+TEST(InextensiblePendulum, TwentyLinksReleasedFromHorizontal) {
+  // 1 m chain, 20 links, compared at t = 0.1 .. 0.6 s (the chain swings through the vertical at
+  // ~0.45 s and its tip whips round). The tension converges at second order from dt = 5e-4 s
+  // (ratios 4.00), but the tip position during the whip only once dt resolves the whip's short
+  // time scale: from dt = 5e-4 s its error falls 13.5x then 1.3x, from 6.25e-5 s by 3.5x and
+  // 3.8x; before the whip (t <= 0.4 s) it is second order at every dt. So the study runs at
+  // dt = 6.25e-5, 3.125e-5, 1.5625e-5 s (still one substep per outer step: the stability
+  // limit, ~5e-3 s, does not bind). Measured at the finest: end 7.1e-8 m, T_0 5.4e-6 N (of ~20
+  // N); the bounds are the second-order error at sqrt(2) dt, as above.
+  CheckPendulumRelease(20, 0.1, 6, 1.5625e-5, 1.5e-7, 1.1e-5, 5e-5);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Small oscillations of a hanging chain (top fixed at the origin, bottom free). Linearising the
+// pendulum about the vertical (phi_i: angle of link i from the downward vertical), the kinetic
+// energy gives M_ik = l_i l_k S_max(i,k), the potential K = diag(g l_i S_i); K q = w^2 M q.
+struct HangingModes {
+  Eigen::VectorXd omega;   // ascending [rad/s]
+  Eigen::MatrixXd shape;   // M-orthonormal columns (link angles)
+  Eigen::MatrixXd M;
+};
+
+HangingModes HangingChainModes(const CableModel& m) {
+  const int n = m.links;
+  std::vector<double> S(n);
+  double acc = 0;
+  for (int i = n - 1; i >= 0; --i) S[i] = (acc += m.cable_mass[i + 1]);
+  Eigen::MatrixXd M(n, n), K = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i) {
+    K(i, i) = m.gravity * m.rest_length[i] * S[i];
+    for (int k = 0; k < n; ++k) M(i, k) = m.rest_length[i] * m.rest_length[k] * S[std::max(i, k)];
+  }
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
+  return {es.eigenvalues().cwiseSqrt(), es.eigenvectors(), M};
+}
+
+// Released from rest with link angles amplitude * shape: the period of the modal coordinate
+// q = shape^T M phi(t) from zero crossings (linear interpolation; q'' ~ -w^2 q vanishes at a
+// crossing, so the interpolation error is O(dt^3)).
+double SimulatedPeriod(const CableModel& m, const Eigen::VectorXd& shape, const Eigen::MatrixXd& M,
+                       double amplitude, double dt, int crossings) {
+  const Eigen::VectorXd phi0 = amplitude / shape.cwiseAbs().maxCoeff() * shape;
+  CableState s;
+  s.x = Eigen::Matrix2Xd::Zero(2, m.stations());
+  for (int i = 0; i < m.links; ++i)
+    s.x.col(i + 1) =
+        s.x.col(i) + m.rest_length[i] * Eigen::Vector2d(std::sin(phi0[i]), -std::cos(phi0[i]));
+  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+  InextensibleIntegrator integ(m);
+  integ.Initialize(m, s);
+  const Eigen::VectorXd Ms = M * shape;
+  auto modal = [&]() {
+    double q = 0;
+    for (int i = 0; i < m.links; ++i) {
+      const Eigen::Vector2d d = s.x.col(i + 1) - s.x.col(i);
+      q += Ms[i] * std::atan2(d.x(), -d.y());
+    }
+    return q;
+  };
+  std::vector<double> times;
+  double q_prev = modal(), t_prev = 0;
+  while (static_cast<int>(times.size()) < crossings && s.t < 1e3) {
+    integ.Step(m, s, dt);
+    const double q = modal();
+    if ((q_prev < 0) != (q < 0)) times.push_back(t_prev + dt * q_prev / (q_prev - q));
+    q_prev = q;
+    t_prev = s.t;
+  }
+  return 2.0 * (times.back() - times.front()) / (times.size() - 1);
+}
+
+TEST(InextensibleHangingChain, SmallOscillationPeriods) {
+  const int N = 20;
+  const double L = 1.0;
+  const CableModel m = Chain(N, L, 1.0, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -L}));
+  const HangingModes modes = HangingChainModes(m);
+  const double dt = 1e-3;
+  for (int k = 0; k < 2; ++k) {
+    const double w = modes.omega[k], T = 2 * M_PI / w;
+    // Amplitude 1e-3 rad: the nonlinear period shift is O(amplitude^2) ~ 1e-7 relative. The
+    // step's period error is O((w dt)^2): (w dt)^2 / 24 = 3e-6 relative for Verlet at mode 2
+    // (w = 8.6 rad/s). Tolerance 1e-5 relative to the exact discrete period: above both, far
+    // below any error in the inertia or the gravity stiffness (1 % of mass: 0.5 % of period).
+    // Measured: -5.7e-7 (mode 1), -3.0e-6 (mode 2), i.e. exactly Verlet's period shortening:
+    // against Verlet's period W = (2/dt) asin(w dt/2) the residue is 2e-8 and 5e-8, which is
+    // bounded at 3e-7 (the amplitude and interpolation effects above).
+    const double measured = SimulatedPeriod(m, modes.shape.col(k), modes.M, 1e-3, dt, 9);
+    const double verlet = M_PI * dt / std::asin(0.5 * w * dt);
+    std::printf("  mode %d: discrete eigenproblem period %.9f s, inextensible integrator %.9f s "
+                "(relative %.2e; vs Verlet's period at this dt %.2e)\n",
+                k + 1, T, measured, measured / T - 1, measured / verlet - 1);
+    EXPECT_NEAR(measured / T, 1.0, 1e-5);
+    EXPECT_NEAR(measured / verlet, 1.0, 3e-7);
+  }
+  // Continuous limit: omega_n = (j0_n / 2) sqrt(g / L) (j0_n: zeros of J0). The lumped chain's
+  // discrete frequencies approach it at second order in l (measured 7.4e-4, 1.8e-4, 4.6e-5 for
+  // mode 1 at N = 20, 40, 80; 9.6e-3, 2.4e-3, 6.0e-4 for mode 2): each doubling of N must
+  // divide the difference by 4 +- 0.25, and at N = 20, where the simulated period matched the
+  // discrete one to 1e-5 above, it must be below 1e-3 (mode 1) and 1.2e-2 (mode 2).
+  const double j0[2] = {2.404825557695773, 5.520078110286311};
+  for (int k = 0; k < 2; ++k) {
+    const double exact = 0.5 * j0[k] * std::sqrt(kG / L);
+    double prev = 0;
+    for (int n : {20, 40, 80}) {
+      const CableModel mn = Chain(n, L, 1.0, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -L}));
+      const double err = std::abs(HangingChainModes(mn).omega[k] / exact - 1);
+      std::printf("  mode %d, N=%d: discrete omega vs Bessel %.3e relative\n", k + 1, n, err);
+      if (n == 20) {
+        EXPECT_LT(err, k == 0 ? 1e-3 : 1.2e-2);
+      }
+      if (prev > 0) {
+        EXPECT_NEAR(prev / err, 4.0, 0.25);
+      }
+      prev = err;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+LinkGeometry GeometryOf(const Eigen::Matrix2Xd& x) {
+  ForceWorkspace ws(static_cast<int>(x.cols()) - 1);
+  ComputeGeometry(x, ws.geometry);
+  return ws.geometry;
+}
+
+// Static tensions of a model with both ends fixed at the state x (v = 0): the constraint solve.
+// *imbalance: the largest net force on a free station [N] (zero at an equilibrium).
+Eigen::VectorXd ConstraintTensions(const CableModel& m, const Eigen::Matrix2Xd& x,
+                                   double* imbalance = nullptr) {
+  CableModel fixed = m;
+  fixed.start = m.start.prescribed() ? EndMotion::Fixed(m.start.Position(0)) : m.start;
+  fixed.end = m.end.prescribed() ? EndMotion::Fixed(m.end.Position(0)) : m.end;
+  ConstraintSolver solver(fixed);
+  ForceWorkspace ws(fixed.links);
+  Eigen::Matrix2Xd a(2, fixed.stations());
+  solver.Accelerations(fixed, 0, x, Eigen::Matrix2Xd::Zero(2, fixed.stations()), ws, a);
+  if (imbalance)
+    *imbalance = ws.force.middleCols(fixed.first_free(), fixed.last_free() - fixed.first_free() + 1)
+                     .colwise()
+                     .norm()
+                     .maxCoeff();
+  return ws.tension;
+}
+
+Eigen::VectorXd HookeTensions(const CableModel& m, const Eigen::Matrix2Xd& x) {
+  const LinkGeometry g = GeometryOf(x);
+  Eigen::VectorXd t(m.links);
+  ComputeHookeTensions(m, g, t);
+  return t;
+}
+
+TEST(InextensibleLimit, ElasticP63EquilibriumApproachesItAsOneOverEA) {
+  SceneDef scene = LoadScene(kP63);
+  const CableModel base = BuildModel(scene);  // elastic
+  const CableState rigid = SolveInextensibleEquilibrium(base, nullptr);
+  double imbalance = 0;
+  const Eigen::VectorXd T_rigid = ConstraintTensions(base, rigid.x, &imbalance);
+  // The inextensible equilibrium is one: with the constraint tensions every free station is in
+  // balance to the equilibrium solver's tolerance (1e-9 of the static load, ~5e-6 N; 10x that).
+  std::printf("  inextensible equilibrium: largest out-of-balance force %.3e N of %.4g N\n",
+              imbalance, StaticForceScale(base));
+  EXPECT_LT(imbalance, 1e-8 * StaticForceScale(base));
+  std::vector<double> dT, dx;
+  for (double scale : {1.0, 100.0, 200.0, 400.0, 800.0}) {
+    CableModel m = base;
+    m.axial_stiffness *= scale;
+    EquilibriumReport rep;
+    const CableState el = SolveEquilibrium(m, &rep);
+    dT.push_back((HookeTensions(m, el.x) - T_rigid).cwiseAbs().maxCoeff());
+    dx.push_back((el.x - rigid.x).colwise().norm().maxCoeff());
+    std::printf("  EA x %4.0f: max |T_elastic - T_inextensible| %.6e N, max |x diff| %.6e m; "
+                "times EA-scale %.5g N, %.5g m (Newton residual %.1e N)\n",
+                scale, dT.back(), dx.back(), dT.back() * scale, dx.back() * scale, rep.residual);
+  }
+  // At the real stiffness the models differ visibly (the nylon stretches ~0.1 %)...
+  EXPECT_GT(dT[0], 1.0);
+  // ... and at 100x..800x by c/EA + O(1/EA^2): the O(1/EA^2) part is ~ the strain ~ 1e-5
+  // relative; the inextensible reference is balanced to 2.5e-6 N; the elastic Newton residuals
+  // (up to 1.6e-4 N at 800x, round-off of the stiff links) perturb the Hooke tensions by about
+  // as much, 0.4 % of the 0.045 N difference there. So each doubling of EA halves the tension
+  // difference to 0.5 % and the position difference (insensitive to the residual) to 0.05 %.
+  // Measured: EA x difference = 35.885, 35.887, 35.886, 35.898 N and 0.10513 m throughout.
+  for (size_t i = 2; i < dT.size(); ++i) {
+    EXPECT_NEAR(dT[i - 1] / dT[i], 2.0, 0.01) << i;
+    EXPECT_NEAR(dx[i - 1] / dx[i], 2.0, 0.001) << i;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+TEST(InextensibleP63, LinkLengthsHeldOverTheFullRun) {
+  SceneDef scene = LoadScene(kP63);
+  scene.model = CableModelKind::kInextensible;
+  const CableModel m = BuildModel(scene);
+  ASSERT_EQ(m.law, LinkLaw::kInextensible);
+  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
+  ASSERT_EQ(grid.kind, IntegratorKind::kInextensible);
+  EquilibriumReport report;
+  CableState state = MakeInitialState(scene, m, &report);
+  auto integ = MakeIntegrator(m, grid);
+  double worst = 0, peak = 0;
+  long rows = 0;
+  const bool done = Simulate(m, *integ, state, grid, [&](const CableState& s,
+                                                          const Eigen::VectorXd& T) {
+    const LinkGeometry g = GeometryOf(s.x);
+    worst = std::max(worst, (g.length.array() / m.rest_length.array() - 1).abs().maxCoeff());
+    EXPECT_TRUE(T.allFinite());
+    peak = std::max(peak, T.maxCoeff());
+    ++rows;
+    return true;
+  });
+  ASSERT_TRUE(done);
+  EXPECT_NEAR(state.t, 60.0, 1e-9);
+  EXPECT_EQ(rows, grid.outputs + 1);
+  std::printf("  %ld outputs, %ld substeps, worst |L/l - 1| %.3e, peak tension %.6g N\n", rows,
+              integ->stats().steps, worst, peak);
+  // The projection holds the lengths to 1e-13 after every substep; 1e-9 is the requirement.
+  EXPECT_LT(worst, 1e-9);
+  // And the run is a real one: the fairlead's 1.83 m orbit raises the tension above the initial
+  // 6.1 kN at the top (the elastic run peaks at 7.7 kN).
+  EXPECT_GT(peak, 6500.0);
+  EXPECT_LT(peak, 20000.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// A uniform chain between fixed points (0, 0) and (D, h). The exact discrete solution: with
+// station weight W = mu l g and horizontal tension H, link k carries V_k = V_0 + k W and points
+// along (H, V_k) / T_k, T_k = hypot(H, V_k); (H, V_0) put the last station on (D, h).
+struct DiscreteChain {
+  int n;
+  double l, W;
+  double H = 0, V0 = 0;
+  Eigen::Vector2d End(double H_, double V0_, Eigen::Matrix2d* J) const {
+    Eigen::Vector2d r = Eigen::Vector2d::Zero();
+    if (J) J->setZero();
+    for (int k = 0; k < n; ++k) {
+      const double V = V0_ + k * W, T = std::hypot(H_, V), T3 = T * T * T;
+      r += l / T * Eigen::Vector2d(H_, V);
+      if (J) *J += l / T3 * (Eigen::Matrix2d() << V * V, -H_ * V, -H_ * V, H_ * H_).finished();
+    }
+    return r;
+  }
+  void Solve(const Eigen::Vector2d& target, double H_guess, double V0_guess) {
+    H = H_guess;
+    V0 = V0_guess;
+    for (int it = 0; it < 100; ++it) {
+      Eigen::Matrix2d J;
+      const Eigen::Vector2d r = End(H, V0, &J) - target;
+      if (r.norm() < 1e-15 * n * l) break;
+      Eigen::Vector2d step = -J.partialPivLu().solve(r);
+      double a = 1;
+      while (H + a * step[0] <= 0) a *= 0.5;
+      H += a * step[0];
+      V0 += a * step[1];
+    }
+  }
+  Eigen::Vector2d Station(int j) const {
+    Eigen::Vector2d r = Eigen::Vector2d::Zero();
+    for (int k = 0; k < j; ++k) {
+      const double V = V0 + k * W;
+      r += l / std::hypot(H, V) * Eigen::Vector2d(H, V);
+    }
+    return r;
+  }
+  double Tension(int k) const { return std::hypot(H, V0 + k * W); }
+};
+
+// The continuous inextensible catenary of length L, weight w per length, through (0,0), (D,h):
+// y = a cosh((x - x0)/a) + C with sqrt(L^2 - h^2) = 2 a sinh(D / 2a) and
+// x0 = D/2 - a atanh(h/L). By arc length s from (0,0), u(s) = s/a - sinh(x0/a):
+// x = x0 + a asinh(u), y = a (sqrt(1+u^2) - cosh(x0/a)), T = w a sqrt(1+u^2).
+struct Catenary {
+  double a, x0, w;
+  Catenary(double L, double D, double h, double w_) : w(w_) {
+    // sinh(z)/z = sqrt(L^2-h^2)/D for z = D/2a > 0: bisection (the left side increases in z).
+    const double target = std::sqrt(L * L - h * h) / D;
+    double lo = 1e-9, hi = 50;
+    for (int i = 0; i < 200; ++i) {
+      const double z = 0.5 * (lo + hi);
+      (std::sinh(z) / z < target ? lo : hi) = z;
+    }
+    a = D / (lo + hi);
+    x0 = D / 2 - a * std::atanh(h / L);
+  }
+  double U(double s) const { return s / a - std::sinh(x0 / a); }
+  Eigen::Vector2d Point(double s) const {
+    const double u = U(s);
+    return {x0 + a * std::asinh(u), a * (std::sqrt(1 + u * u) - std::cosh(x0 / a))};
+  }
+  double Tension(double s) const { return w * a * std::sqrt(1 + U(s) * U(s)); }
+  double V(double s) const { return w * a * U(s); }  // vertical tension component
+};
+
+struct CatenaryErrors {
+  double discrete_x, discrete_T, continuous_x, continuous_T, imbalance, length;
+};
+
+CatenaryErrors CheckCatenary(int N) {
+  const double L = 10, D = 8, h = 2, mu = 1.5;
+  const CableModel m = Chain(N, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Fixed({D, h}));
+  EquilibriumReport rep;
+  const CableState st = SolveInextensibleEquilibrium(m, &rep);
+  InextensibleIntegrator integ(m);
+  integ.Initialize(m, st);
+  const Eigen::VectorXd T = integ.tensions();
+  CatenaryErrors e{};
+  ConstraintTensions(m, st.x, &e.imbalance);
+  const LinkGeometry g = GeometryOf(st.x);
+  e.length = (g.length.array() / m.rest_length.array() - 1).abs().maxCoeff();
+
+  const Catenary cat(L, D, h, mu * kG);
+  DiscreteChain dc{N, L / N, mu * L / N * kG};
+  // The continuous catenary's (H, V at s = l/2) seed Newton; the answer is the discrete chain's.
+  dc.Solve({D, h}, cat.w * cat.a, cat.V(0.5 * L / N));
+  EXPECT_LT((dc.Station(N) - Eigen::Vector2d(D, h)).norm(), 1e-12 * L);
+  for (int j = 0; j <= N; ++j) {
+    e.discrete_x = std::max(e.discrete_x, (st.x.col(j) - dc.Station(j)).norm());
+    e.continuous_x = std::max(e.continuous_x, (st.x.col(j) - cat.Point(j * L / N)).norm());
+  }
+  for (int k = 0; k < N; ++k) {
+    e.discrete_T = std::max(e.discrete_T, std::abs(T[k] - dc.Tension(k)));
+    e.continuous_T = std::max(e.continuous_T, std::abs(T[k] - cat.Tension((k + 0.5) * L / N)));
+  }
+  std::printf("  N=%d (%d Newton iterations): vs discrete exact chain |dx| %.2e m, |dT| %.2e N "
+              "(T ~ %.1f N); vs continuous catenary |dx| %.3e m, |dT| %.3e N; |L/l-1| %.1e, "
+              "imbalance %.1e N\n",
+              N, rep.iterations, e.discrete_x, e.discrete_T, T.maxCoeff(), e.continuous_x,
+              e.continuous_T, e.length, e.imbalance);
+  return e;
+}
+
+TEST(InextensibleEquilibrium, ChainBetweenFixedPointsIsTheCatenary) {
+  const CatenaryErrors a = CheckCatenary(20), b = CheckCatenary(40);
+  for (const CatenaryErrors& e : {a, b}) {
+    // Against the exact discrete chain: the extrapolation leaves O((T/EA_penalty)^2) ~ 1e-12
+    // relative, the stations are balanced to ~4e-10 N. Measured 1.1e-12 m and 2.8e-10 N; the
+    // bounds 1e-10 m (1e-11 of the length) and 1e-8 N (1e-10 of the tension) leave room for
+    // round-off and catch by orders the O(1/EA_penalty) ~ 1e-6 error an unextrapolated penalty
+    // solution would have, as well as any O(l^2) discretisation slip (~1e-3).
+    EXPECT_LT(e.discrete_x, 1e-10);
+    EXPECT_LT(e.discrete_T, 1e-8);
+    EXPECT_LT(e.length, 1e-12);
+    EXPECT_LT(e.imbalance, 1e-8 * StaticForceScale(Chain(10, 10, 1.5, EndMotion::Fixed({0, 0}),
+                                                          EndMotion::Fixed({8, 2}))));
+  }
+  // Against the continuous catenary the lumped chain differs by O(l^2) (measured at N = 20 and
+  // 40: 3.39e-3 and 8.46e-4 m, 4.09e-2 and 1.02e-2 N of ~100 N): halving l divides the
+  // differences by 4 +- 0.1, and at N = 20 they are below 4 mm and 0.05 N.
+  EXPECT_LT(a.continuous_x, 4e-3);
+  EXPECT_LT(a.continuous_T, 0.05);
+  EXPECT_NEAR(a.continuous_x / b.continuous_x, 4.0, 0.1);
+  EXPECT_NEAR(a.continuous_T / b.continuous_T, 4.0, 0.1);
+}
+
+TEST(InextensibleEquilibrium, EndsFurtherApartThanTheCableThrow) {
+  const CableModel taut = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({10.1, 0}));
+  EXPECT_THROW(SolveInextensibleEquilibrium(taut, nullptr), Error);
+  const CableModel slant = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({6, 8.2}));
+  EXPECT_THROW(SolveInextensibleEquilibrium(slant, nullptr), Error);
+  // Just shorter than the cable is fine (and lies on the chord's rest lengths).
+  const CableModel ok = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({6, 7.9}));
+  EXPECT_NO_THROW(SolveInextensibleEquilibrium(ok, nullptr));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Rows (after the header) of a CSV file; every field must parse as a finite number.
+long CountFiniteRows(const std::string& path, bool* all_finite) {
+  std::ifstream in(path);
+  std::string line;
+  long rows = 0;
+  *all_finite = true;
+  if (!std::getline(in, line)) return -1;  // header
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::stringstream ss(line);
+    std::string field;
+    while (std::getline(ss, field, ',')) {
+      char* end = nullptr;
+      const double v = std::strtod(field.c_str(), &end);
+      if (end == field.c_str() || !std::isfinite(v)) *all_finite = false;
+    }
+    ++rows;
+  }
+  return rows;
+}
+
+TEST(InextensibleCompare, CompareCommandWritesBothSeries) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() /
+                       ("cablefilm_inextensible_compare_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  RunOptions o;
+  o.out_dir = dir.string();
+  o.film = 0;
+  ASSERT_EQ(CompareCommand(kP63, o), 0);
+  const SceneDef scene = LoadScene(kP63);
+  const long expected =
+      static_cast<long>(std::floor(scene.simulation.duration / scene.output.interval + 1e-9)) + 1;
+  bool finite_el = false, finite_in = false;
+  const long el = CountFiniteRows((dir / "timeseries.csv").string(), &finite_el);
+  const long in = CountFiniteRows((dir / "timeseries_inextensible.csv").string(), &finite_in);
+  EXPECT_EQ(el, expected);
+  EXPECT_EQ(in, el);
+  EXPECT_TRUE(finite_el);
+  EXPECT_TRUE(finite_in);
+  // The figure needs the renderer (CABLEFILM_RENDER); without it nothing pretends to write it.
+  EXPECT_EQ(fs::exists(dir / "max_tension.png"), CABLEFILM_TEST_RENDER != 0);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace cablefilm
