@@ -20,7 +20,7 @@ constexpr double kDefaultRelativeTolerance = 1e-6;
 
 struct TimeGrid {
   IntegratorKind kind = IntegratorKind::kExplicit;
-  double rho_inf = 0.8;      // implicit scheme's high-frequency spectral radius
+  double rho_inf = 0.5;      // implicit scheme's high-frequency spectral radius
   double error_tolerance = 0;  // implicit scheme's local position error per step [m]; 0: fixed dt
   double interval = 0;       // between outputs [s]
   double dt = 0;             // time step [s], interval / steps_per_output

@@ -49,7 +49,7 @@ class Integrator {
 // rho_inf: the implicit scheme's spectral radius at infinite frequency; error_tolerance: its
 // local position error per step [m], 0 for fixed steps (both ignored by the other schemes).
 std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel& m,
-                                           double rho_inf = 0.8, double error_tolerance = 0);
+                                           double rho_inf = 0.5, double error_tolerance = 0);
 
 // Throws BlowUpError naming the time and the first station with a non-finite position or
 // velocity, or the first link stretched beyond `max_strain`.

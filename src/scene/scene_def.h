@@ -58,7 +58,7 @@ enum class IntegratorChoice { kExplicit, kImplicit };
 
 struct SimulationDef {
   IntegratorChoice integrator = IntegratorChoice::kImplicit;
-  double rho_infinity = 0.8;     // implicit: spectral radius at infinite frequency, [0, 1]
+  double rho_infinity = 0.5;     // implicit: spectral radius at infinite frequency, [0, 1]
   double duration = 60.0;        // [s]
   double time_step = 0.0;        // [s]; 0 = "auto" (from the stability limit)
   double tolerance = 0;          // implicit, auto step: local position error per step [m];

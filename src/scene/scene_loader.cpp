@@ -382,7 +382,7 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
         r.Choice("integrator", "implicit", {"explicit", "implicit"}) == "explicit"
             ? IntegratorChoice::kExplicit
             : IntegratorChoice::kImplicit;
-    scene.simulation.rho_infinity = r.OptionalNonNegative("rho_infinity", 0.8, "");
+    scene.simulation.rho_infinity = r.OptionalNonNegative("rho_infinity", 0.5, "");
     if (scene.simulation.rho_infinity > 1)
       r.Fail(t->get("rho_infinity"), "rho_infinity", "expected a number in [0, 1]");
     r.Finish();

@@ -68,7 +68,7 @@ TEST_F(RunCommandTest, BlowUpIsDetectedAndNothingNonFiniteIsWritten) {
   char dt[64];
   std::snprintf(dt, sizeof dt, "%.17g", 3.0 * limit);
   std::string text = Replace(Scene("catenary"), "time_step = \"auto\"",
-                             std::string("time_step = ") + dt);
+                             std::string("integrator = \"explicit\"\ntime_step = ") + dt);
   text = Replace(text, "interval = 0.05", std::string("interval = ") + dt);  // one step a row
   const std::string scene = Write("blowup.toml", text);
   RunOptions opt;
