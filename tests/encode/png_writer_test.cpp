@@ -58,14 +58,18 @@ TEST(PngWriter, OpaqueRgbFileDropsTheAlphaByte) {
 TEST(PngWriter, UnwritablePathThrowsAndLeavesNothing) {
   const Image image(8, 8);
   EXPECT_THROW(WritePng("/nonexistent_dir_cablefilm/x.png", image), Error);
-  const std::string path = TempDir() + "/never.png";
-  std::filesystem::remove(path);
+  // A folder of its own: ctest runs the other tests in parallel, and their temporary files in
+  // TempDir() must not be mistaken for leftovers of this one.
+  const std::string dir = TempDir() + "/unwritable";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/never.png";
   Image bad;
   bad.width = 8;
   bad.height = 8;  // no pixels
   EXPECT_THROW(WritePng(path, bad), Error);
   EXPECT_FALSE(std::filesystem::exists(path));
-  for (const auto& entry : std::filesystem::directory_iterator(TempDir()))
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
