@@ -1,0 +1,75 @@
+// The step loops allocate nothing once the integrators are built: every scratch buffer is
+// sized at construction. Counted by replacing the global operator new in this test program.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include "core/equilibrium.h"
+#include "core/integrator.h"
+#include "scene/build_model.h"
+#include "scene/scene_loader.h"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+// The replacement new and delete below are a matched malloc/free pair; GCC's heuristic, which
+// sees free() inside an operator delete, cannot tell.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+void* operator new(std::size_t size) {
+  ++g_allocations;
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace cablefilm {
+namespace {
+
+long AllocationsWhileStepping(IntegratorKind kind, CableModelKind model, double dt,
+                              double error_tolerance) {
+  SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml");
+  scene.model = model;
+  scene.environment.current = 0.5;  // every force term active: drag with current, prisms
+  const CableModel m = BuildModel(scene);
+  CableState s = SolveEquilibrium(m);  // the elastic equilibrium: a fine start for either model
+  auto integrator = MakeIntegrator(kind, m, 0.5, error_tolerance);
+  integrator->Initialize(m, s);
+  for (int i = 0; i < 10; ++i) integrator->Step(m, s, dt);  // warm-up
+  const long before = g_allocations;
+  for (int i = 0; i < 200; ++i) integrator->Step(m, s, dt);
+  return g_allocations - before;
+}
+
+TEST(NoAllocation, TheCounterCounts) {  // else the tests below could not fail
+  const long before = g_allocations;
+  std::vector<double>* v = new std::vector<double>(100);
+  delete v;
+  EXPECT_EQ(g_allocations - before, 2);
+}
+
+TEST(NoAllocation, ExplicitStep) {
+  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kExplicit, CableModelKind::kElastic, 2e-4, 0),
+            0);
+}
+
+TEST(NoAllocation, ImplicitStepFixedAndAdaptive) {
+  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kImplicit, CableModelKind::kElastic, 1.0 / 30, 0),
+            0);
+  EXPECT_EQ(
+      AllocationsWhileStepping(IntegratorKind::kImplicit, CableModelKind::kElastic, 1.0 / 30, 1e-5),
+      0);
+}
+
+TEST(NoAllocation, InextensibleStep) {
+  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kInextensible, CableModelKind::kInextensible,
+                                     1.0 / 30, 0),
+            0);
+}
+
+}  // namespace
+}  // namespace cablefilm
