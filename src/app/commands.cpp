@@ -100,17 +100,14 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   auto integrator = MakeIntegrator(m, grid);
   integrator->Initialize(m, initial);
-  ModelRun run{m, grid, initial, integrator->tensions(), RunExtent(m, initial)};
+  ModelRun run{m, grid, initial, integrator->tensions(), RunExtent(initial)};
   if (scene.initial == InitialStateKind::kEquilibrium)
     std::printf("equilibrium: %d Newton iterations, residual %.3g N (of %.4g N), %.2f ms; "
                 "tension %.6g N at the start, %.6g N at the end\n",
                 eq.iterations, eq.residual, eq.force_scale, eq_ms, run.initial_tension[0],
                 run.initial_tension[m.links - 1]);
-  if (suffix.empty())
-    WriteEquilibriumCsv(out_dir + "/equilibrium.csv", m, initial, run.initial_tension);
-  else
-    WriteEquilibriumCsv(out_dir + "/equilibrium" + suffix + ".csv", m, initial,
-                        run.initial_tension);
+  WriteEquilibriumCsv(out_dir + "/equilibrium" + suffix + ".csv", m, initial,
+                      run.initial_tension);
 
   const std::string series_path = out_dir + "/timeseries" + suffix + ".csv";
   const std::string partial_path = out_dir + "/timeseries" + suffix + ".partial.csv";

@@ -4,7 +4,7 @@
 
 namespace cablefilm {
 
-RunExtent::RunExtent(const CableModel&, const CableState& initial)
+RunExtent::RunExtent(const CableState& initial)
     : tension_min(std::numeric_limits<double>::infinity()),
       tension_max(-std::numeric_limits<double>::infinity()),
       box_min(initial.x.rowwise().minCoeff()),

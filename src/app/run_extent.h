@@ -3,13 +3,12 @@
 // uses one colour range and one world box.
 #include <Eigen/Core>
 
-#include "core/cable_model.h"
 #include "core/cable_state.h"
 
 namespace cablefilm {
 
 struct RunExtent {
-  RunExtent(const CableModel& m, const CableState& initial);
+  explicit RunExtent(const CableState& initial);
   void Add(const CableState& s, const Eigen::VectorXd& tension);
 
   double tension_min = 0, tension_max = 0;  // over all links and output times [N]
