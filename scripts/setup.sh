@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
 # Installs the Debian packages cablefilm needs that are not installed yet (Debian 12).
+# With --tests also what the tests need: a headless browser and Python's WebSocket client.
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev
   libosmesa6-dev libpng-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libfreetype-dev libfontconfig-dev fonts-dejavu-core
+  libcivetweb-dev libturbojpeg0-dev nlohmann-json3-dev
 )
+if [ "${1:-}" = "--tests" ]; then
+  packages+=(python3 chromium chromium-driver python3-selenium python3-websocket)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

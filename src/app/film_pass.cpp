@@ -30,6 +30,19 @@ FilmSpec MakeSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
   spec.title = scene.title;
   spec.arc_length.assign(m.arc_length.data(), m.arc_length.data() + m.arc_length.size());
   spec.section_boundaries = m.section_boundaries;
+  // Each section by its material's name, when every section has one (the model keeps one
+  // boundary between each two sections, so the counts agree).
+  for (const SectionDef& section : scene.sections) {
+    const bool named = section.material >= 0 &&
+                       static_cast<std::size_t>(section.material) < scene.materials.size() &&
+                       !scene.materials[section.material].name.empty();
+    if (!named) {
+      spec.section_names.clear();
+      break;
+    }
+    spec.section_names.push_back(scene.materials[section.material].name);
+  }
+  if (spec.section_names.size() != spec.section_boundaries.size() + 1) spec.section_names.clear();
   spec.weight_stations = m.weight_stations;
   for (int j : {0, m.links}) {
     if (m.end_motion(j).moves()) spec.moving_ends.push_back(j);

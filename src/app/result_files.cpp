@@ -15,17 +15,24 @@ void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const Cab
   file.Commit();
 }
 
+const char kTimeseriesHeader[] = "t,x_end,y_end,tension_start,tension_end,tension_max,link_max\n";
+
+void WriteTimeseriesRow(std::FILE* f, const CableModel& m, const CableState& s,
+                        const Eigen::VectorXd& tension) {
+  Eigen::Index link_max = 0;
+  const double t_max = tension.maxCoeff(&link_max);
+  std::fprintf(f, "%.10g,%.12g,%.12g,%.10g,%.10g,%.10g,%d\n", s.t, s.x(0, m.links),
+               s.x(1, m.links), tension[0], tension[m.links - 1], t_max,
+               static_cast<int>(link_max));
+}
+
 TimeseriesWriter::TimeseriesWriter(const std::string& path) : file_(path) {
-  std::fprintf(file_.stream(), "t,x_end,y_end,tension_start,tension_end,tension_max,link_max\n");
+  std::fputs(kTimeseriesHeader, file_.stream());
 }
 
 void TimeseriesWriter::Append(const CableModel& m, const CableState& s,
                               const Eigen::VectorXd& tension) {
-  Eigen::Index link_max = 0;
-  const double t_max = tension.maxCoeff(&link_max);
-  std::fprintf(file_.stream(), "%.10g,%.12g,%.12g,%.10g,%.10g,%.10g,%d\n", s.t, s.x(0, m.links),
-               s.x(1, m.links), tension[0], tension[m.links - 1], t_max,
-               static_cast<int>(link_max));
+  WriteTimeseriesRow(file_.stream(), m, s, tension);
 }
 
 void TimeseriesWriter::Commit() { file_.Commit(); }

@@ -1,6 +1,7 @@
 #pragma once
 // The result files of scene-format.md, each written whole or not at all.
 #include <Eigen/Core>
+#include <cstdio>
 #include <memory>
 #include <string>
 
@@ -13,6 +14,11 @@ namespace cablefilm {
 // equilibrium.csv: j,s,x,y,tension (tension of link j+1/2; empty on the last row).
 void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const CableState& state,
                          const Eigen::VectorXd& tension);
+
+// One row of timeseries.csv, and its header line (shared with the live view's /timeseries.csv).
+extern const char kTimeseriesHeader[];  // with its newline
+void WriteTimeseriesRow(std::FILE* f, const CableModel& m, const CableState& state,
+                        const Eigen::VectorXd& tension);
 
 // timeseries.csv: t,x_end,y_end,tension_start,tension_end,tension_max,link_max.
 class TimeseriesWriter {

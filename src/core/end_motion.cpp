@@ -72,7 +72,20 @@ Eigen::Vector2d EndMotion::Position(double t) const { return Evaluate(t, 0); }
 Eigen::Vector2d EndMotion::Velocity(double t) const { return Evaluate(t, 1); }
 Eigen::Vector2d EndMotion::Acceleration(double t) const { return Evaluate(t, 2); }
 
+void EndMotion::Modulate(const SmoothSchedule& scale, const SmoothSchedule& clock_rate) {
+  modulated_ = true;
+  scale_ = scale;
+  clock_rate_ = clock_rate;
+}
+
+double EndMotion::period() const {
+  if (kind_ == EndKind::kTrochoid) return omega_ > 0 ? 2 * 3.14159265358979323846 / omega_ : 0;
+  if (kind_ == EndKind::kTable) return knot_t_.back() - knot_t_.front();
+  return 0;
+}
+
 Eigen::Vector2d EndMotion::Evaluate(double t, int order) const {
+  if (modulated_ && moves()) return EvaluateModulated(t, order);
   switch (kind_) {
     case EndKind::kTrochoid:
       return EvaluateTrochoid(t, order);
@@ -99,6 +112,38 @@ Eigen::Vector2d EndMotion::EvaluateTrochoid(double t, int order) const {
   if (order == 0) return rest_ + ramp[0] * p0;
   if (order == 1) return ramp[1] * p0 + ramp[0] * p1;
   return ramp[2] * p0 + 2.0 * ramp[1] * p1 + ramp[0] * p2;
+}
+
+Eigen::Vector2d EndMotion::EvaluateModulated(double t, int order) const {
+  if (kind_ == EndKind::kTrochoid && t <= 0) return order == 0 ? rest_ : Eigen::Vector2d::Zero();
+  // offset(t) = G(t) P(tau(t)), G = scale x the ramp R of eq. (3) (1 for a table), tau the
+  // motion's clock (tau' = rate); the derivatives by the product and chain rules.
+  const SmoothSchedule::Value s = scale_.At(t), r = clock_rate_.At(t);
+  const double tau = r.integral;
+  double g[3] = {s.value, s.rate, s.rate2};
+  Eigen::Vector2d p[3];  // P, dP/dtau, d2P/dtau2
+  if (kind_ == EndKind::kTrochoid) {
+    const double e = std::exp(-nu_ * t);
+    const double ramp[3] = {1.0 - (1.0 + nu_ * t) * e, nu_ * nu_ * t * e,
+                            nu_ * nu_ * (1.0 - nu_ * t) * e};
+    g[2] = s.rate2 * ramp[0] + 2 * s.rate * ramp[1] + s.value * ramp[2];
+    g[1] = s.rate * ramp[0] + s.value * ramp[1];
+    g[0] = s.value * ramp[0];
+    const double co = std::cos(omega_ * tau), si = std::sin(omega_ * tau);
+    p[0] = Eigen::Vector2d(a_ * co + b_ * si, c_ * co + d_ * si);
+    p[1] = omega_ * Eigen::Vector2d(-a_ * si + b_ * co, -c_ * si + d_ * co);
+    p[2] = -omega_ * omega_ * p[0];
+  } else {
+    p[0] = EvaluateTable(tau, 0) - rest_;
+    p[1] = EvaluateTable(tau, 1);
+    p[2] = EvaluateTable(tau, 2);
+  }
+  // d/dt P(tau) = P' r, d2/dt2 P(tau) = P'' r^2 + P' r'.
+  const Eigen::Vector2d q0 = p[0], q1 = p[1] * r.value,
+                        q2 = p[2] * (r.value * r.value) + p[1] * r.rate;
+  if (order == 0) return rest_ + g[0] * q0;
+  if (order == 1) return g[1] * q0 + g[0] * q1;
+  return g[2] * q0 + 2 * g[1] * q1 + g[0] * q2;
 }
 
 Eigen::Vector2d EndMotion::EvaluateTable(double t, int order) const {

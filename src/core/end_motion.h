@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "core/smooth_schedule.h"
+
 namespace cablefilm {
 
 enum class EndKind {
@@ -35,11 +37,24 @@ class EndMotion {
   Eigen::Vector2d Velocity(double t) const;      // [m/s]
   Eigen::Vector2d Acceleration(double t) const;  // [m/s^2]
 
+  // Changes made while the cable runs (the live view): the orbit of eq. (3), or the table's
+  // offsets, are scaled by `scale` (1 = as the scene says), and the motion's own clock runs at
+  // `clock_rate` times real time (the period becomes period / rate), its phase the integral of
+  // the rate, so position, velocity and acceleration stay continuous through a change. The
+  // ramp R(t) of eq. (3) keeps real time. Without a call the motion is exactly the scene's.
+  void Modulate(const SmoothSchedule& scale, const SmoothSchedule& clock_rate);
+  bool modulated() const { return modulated_; }
+  const SmoothSchedule& scale() const { return scale_; }
+  const SmoothSchedule& clock_rate() const { return clock_rate_; }
+  double period() const;  // 2 pi / omega_s of eq. (3) [s]; the table's span; 0 otherwise
+
  private:
   // Value (order 0), velocity (1) or acceleration (2).
   Eigen::Vector2d Evaluate(double t, int order) const;
   Eigen::Vector2d EvaluateTrochoid(double t, int order) const;
   Eigen::Vector2d EvaluateTable(double t, int order) const;
+  // The offset from rest, scaled and on the modulated clock.
+  Eigen::Vector2d EvaluateModulated(double t, int order) const;
 
   EndKind kind_ = EndKind::kFixed;
   Eigen::Vector2d rest_ = Eigen::Vector2d::Zero();  // x_s^0, y_s^0 [m]
@@ -50,6 +65,9 @@ class EndMotion {
   // Table: knots and the spline's second derivatives at the knots.
   std::vector<double> knot_t_;
   std::vector<Eigen::Vector2d> knot_p_, knot_m_;
+  // Live changes (Modulate).
+  bool modulated_ = false;
+  SmoothSchedule scale_{1.0}, clock_rate_{1.0};
 };
 
 }  // namespace cablefilm

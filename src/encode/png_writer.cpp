@@ -4,6 +4,7 @@
 
 #include <csetjmp>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -95,15 +96,35 @@ bool ReadPngRows(png_structp png, png_infop info, png_bytepp rows, PngErrorSink*
   return true;
 }
 
-}  // namespace
-
-void WritePng(const std::string& path, const Image& image, const PngOptions& options) {
+std::vector<png_bytep> ImageRows(const std::string& what, const Image& image) {
   if (image.width <= 0 || image.height <= 0 ||
       image.rgba.size() != image.stride() * static_cast<std::size_t>(image.height))
-    throw Error("cannot write " + path + ": invalid image " + std::to_string(image.width) + "x" +
+    throw Error("cannot write " + what + ": invalid image " + std::to_string(image.width) + "x" +
                 std::to_string(image.height));
   std::vector<png_bytep> rows(static_cast<std::size_t>(image.height));
   for (int y = 0; y < image.height; ++y) rows[y] = const_cast<png_bytep>(image.row(y));
+  return rows;
+}
+
+}  // namespace
+
+std::string EncodePng(const Image& image, const PngOptions& options) {
+  const std::vector<png_bytep> rows = ImageRows("a PNG in memory", image);
+  char* buffer = nullptr;
+  std::size_t size = 0;
+  std::FILE* stream = open_memstream(&buffer, &size);
+  if (!stream) throw Error("cannot encode a PNG in memory: " + std::string(std::strerror(errno)));
+  PngErrorSink sink{};
+  const bool ok = WritePngStream(stream, image, options, rows.data(), &sink);
+  std::fclose(stream);  // sets buffer and size
+  std::string bytes(buffer ? buffer : "", buffer ? size : 0);
+  std::free(buffer);
+  if (!ok) throw Error(std::string("cannot encode a PNG in memory: ") + sink.message);
+  return bytes;
+}
+
+void WritePng(const std::string& path, const Image& image, const PngOptions& options) {
+  const std::vector<png_bytep> rows = ImageRows(path, image);
   AtomicFile file(path);
   PngErrorSink sink{};
   if (!WritePngStream(file.stream(), image, options, rows.data(), &sink))

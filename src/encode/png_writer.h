@@ -15,6 +15,9 @@ struct PngOptions {
 // Writes `image` to `path` (a temporary file renamed on success). Throws Error with the path.
 void WritePng(const std::string& path, const Image& image, const PngOptions& options = {});
 
+// The PNG file's bytes, in memory (a snapshot served over HTTP). Throws Error.
+std::string EncodePng(const Image& image, const PngOptions& options = {});
+
 // Reads any 8-bit or 16-bit PNG (grey, RGB, with or without alpha, palette) as RGBA8.
 // Throws Error with the path. Used by tests and the golden-image comparison.
 Image ReadPng(const std::string& path);

@@ -44,6 +44,7 @@ FilmSpec MakeDemoSpec(double duration, int segments) {
   const int n = segments + 1;
   for (int j = 0; j < n; ++j) spec.arc_length.push_back(kLength * j / segments);
   spec.section_boundaries = {45.72};
+  spec.section_names = {"wire", "nylon"};
   spec.weight_stations = {static_cast<int>(std::lround(27.432 / kLength * segments))};
   spec.fixed_ends = {0};
   spec.moving_ends = {segments};

@@ -23,6 +23,9 @@ struct FilmSpec {                          // fixed for the whole film
   std::string title;
   std::vector<double> arc_length;          // unstretched arc length of each station [m], size s+1
   std::vector<double> section_boundaries;  // arc lengths where a section ends, interior only [m]
+  // Name of each section (e.g. its material), size section_boundaries.size() + 1, shown in the
+  // tension-along-the-cable plot; empty = unnamed.
+  std::vector<std::string> section_names;
   std::vector<int> weight_stations;        // stations carrying a suspended weight (prism)
   std::vector<int> moving_ends;            // driven ends among {0, s}: their path is drawn
   std::vector<int> fixed_ends;             // prescribed fixed ends (anchors)

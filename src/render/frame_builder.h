@@ -1,8 +1,10 @@
 #pragma once
-// Builds the abstract frame of the film (no GL): the cable to scale coloured by link tension
-// with a colour bar, the tension along the cable (now, equilibrium, min-max envelope so far),
-// the maximum tension against time, the title and the simulated time. Also the still of the
-// maximum tension against time (the paper's Figure 1). Pure functions of their inputs.
+// Builds the abstract frame of the film (no GL) from the panels (header_panel, cable_panel,
+// colorbar_panel, tension_panel, time_panel): the cable to scale coloured by link tension with
+// a colour bar, the tension along the cable (now, equilibrium, min-max envelope so far, the
+// sections named), the maximum tension against time, the title and the simulated time. Also
+// the still of the maximum tension against time (the paper's Figure 1). Pure functions of
+// their inputs; the live view (live_frame.h) composes the same panels.
 #include <cstdint>
 #include <string>
 #include <unordered_set>
@@ -10,7 +12,9 @@
 
 #include "render/colormap.h"
 #include "render/frame.h"
+#include "render/frame_layout.h"
 #include "render/plot_layout.h"
+#include "render/theme.h"
 
 namespace cablefilm {
 
@@ -50,29 +54,8 @@ class FilmHistory {
   std::vector<std::unordered_set<std::uint64_t>> path_seen_;  // cell pairs already stored
 };
 
-// Colours of a theme: the film uses the dark one, the still the light one (print).
-struct Theme {
-  Rgba background, panel, grid, axis, text, text_dim, current, equilibrium, envelope, accent,
-      halo, marker_fill, marker_edge;
-  Rgba companion, companion_rim;  // companion cable: its curves; the dotted rim of its shape
-  static Theme Dark();
-  static Theme Light();
-};
-
-// Where everything goes in a frame of a given size; the data-to-pixel maps the tests use.
-struct FrameLayout {
-  int width = 0, height = 0;
-  float scale = 1;         // size of a "design pixel" of the 1920x1080 layout [px]
-  PixelRect cable_panel, tension_panel, max_panel;
-  PlotMapping cable;       // world [m] -> pixels, equal scale in x and y
-  PlotMapping tension;     // unstretched arc length [m], tension [kN]
-  PlotMapping max_tension; // time [s], tension [kN]
-  PixelRect colorbar;      // the colour bar: bottom = tension_min, top = tension_max
-  float cable_width = 6;   // [px]
-  float companion_width = 3.6f;  // the companion cable's coloured line (drawn under the main) [px]
-  // The spec names a companion: the two lower plots start lower, leaving a second legend row.
-  bool legend_rows = false;
-};
+// Where everything goes (FrameLayout, frame_layout.h) for the film: the spec's box, cable,
+// duration, range and legends. Throws Error on an invalid spec or a frame under 16x16.
 FrameLayout MakeFrameLayout(const FilmSpec& spec, int width, int height);
 
 // Throws Error (with the sizes or the offending value) unless the snapshot fits the spec: its

@@ -169,6 +169,64 @@ TEST(MakeFrame, ValuesOutsideTheRangeStayOnTheirPlot) {
   }
 }
 
+TEST(MakeFrame, SectionNamesCentredInTheirSpans) {
+  FilmSpec spec = testing::StraightSpec();
+  spec.section_names = {"chain", "rope"};
+  FilmHistory history(spec);
+  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  const Frame frame = MakeFrame(spec, history, testing::StraightSnapshot(1), L, Colormap("viridis"));
+  const PlotMapping& tm = L.tension;
+  int found = 0;
+  for (const TextItem& t : frame.texts) {
+    if (t.text != "chain" && t.text != "rope") continue;
+    ++found;
+    const double mid = t.text == "chain" ? 5 : 15;  // [m], spans [0, 10] and [10, 20]
+    EXPECT_FLOAT_EQ(t.pos.x, (tm.PixelX(mid - 5) + tm.PixelX(mid + 5)) / 2) << t.text;
+    EXPECT_TRUE(tm.rect.Contains(t.pos)) << t.text;
+    EXPECT_LT(t.pos.y, tm.rect.y0 + 0.1f * tm.rect.height()) << "near the top";
+  }
+  EXPECT_EQ(found, 2);
+  // One name per section or none: another count is an error naming both.
+  spec.section_names = {"chain"};
+  try {
+    MakeFrameLayout(spec, 1280, 720);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("1 section names for 2 sections"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(FilmHistory{spec}, Error);
+  // The demo cable names its two sections.
+  EXPECT_EQ(MakeDemoSpec(10).section_names, (std::vector<std::string>{"wire", "nylon"}));
+}
+
+// The demo (P63-like) cable's box is about 1.7 times as wide as high: its panel takes the width
+// that shape needs at the top left, the tension along the cable the rest of the top row, and
+// the time plot the whole bottom row. The cable is then as large as in the stacked layout
+// (the top row's height limits both) and no width is left empty around it.
+TEST(FrameLayout, CablePanelFitsTheCable) {
+  const FilmSpec spec = MakeDemoSpec(60);
+  for (auto [w, h] : {std::pair{1920, 1080}, std::pair{1280, 720}, std::pair{640, 360}}) {
+    const FrameLayout L = MakeFrameLayout(spec, w, h);
+    EXPECT_TRUE(L.side_by_side) << w << "x" << h;
+    EXPECT_LT(L.cable_panel.x1, L.tension_panel.x0);
+    EXPECT_LT(L.cable_panel.y1, L.max_panel.y0);
+    EXPECT_FLOAT_EQ(L.max_panel.width(), w - 2 * L.cable_panel.x0);  // margin to margin
+    // Equal scale; the padded box (4 % of its larger side around it) fills the axes' height
+    // and at least 90 % of their width.
+    const PlotMapping& c = L.cable;
+    const double ppm = c.rect.height() / (c.y_hi - c.y_lo);
+    EXPECT_NEAR(c.rect.width() / (c.x_hi - c.x_lo), ppm, 1e-4 * ppm);
+    const double pad = 0.04 * (spec.x_max - spec.x_min);
+    EXPECT_NEAR(c.y_hi - c.y_lo, spec.y_max - spec.y_min + 2 * pad, 1e-3);
+    EXPECT_GT((spec.x_max - spec.x_min + 2 * pad) * ppm, 0.9 * c.rect.width());
+  }
+  // The straight test cable (20 m x 4 m) is too flat for that: it spans the top row.
+  const FrameLayout flat = MakeFrameLayout(testing::StraightSpec(), 1280, 720);
+  EXPECT_FALSE(flat.side_by_side);
+  EXPECT_FLOAT_EQ(flat.cable_panel.x1, flat.max_panel.x1);
+}
+
 TEST(MakeMaxTensionFigure, SeriesAndLegend) {
   MaxTensionSeries elastic{"elastic", {0, 1, 2}, {1000, 3000, 2000}};
   MaxTensionSeries inext{"inextensible", {0, 1, 2}, {1200, 3500, 2100}};

@@ -11,6 +11,7 @@
 #include "encode/png_writer.h"
 #include "render/demo_cable.h"
 #include "render/frame_builder.h"
+#include "render/live_frame.h"
 #include "render/shader_program.h"
 #include "test_scene.h"
 
@@ -244,6 +245,80 @@ TEST(RendererCompanion, DemoFrameWithCompanionAt1080p) {
       Renderer(options).Draw(MakeFrame(spec, history, snap, layout, Colormap("viridis")));
   ASSERT_EQ(image.width, 1920);
   WritePng(testing::OutputDir("renderer") + "/demo_companion_1920x1080.png", image);
+}
+
+// ---- Live view -----------------------------------------------------------------------------
+
+// A live frame of the demo cable 95 s into a run (a 60 s window, two control changes), drawn
+// at 1280x720 for looking at: test_output/render/renderer/live_1280x720.png. The markers show
+// in their colour in their pixel column, and the cable in the map's colour of its tension.
+TEST(RendererLive, LiveFrameAt720p) {
+  const FilmSpec spec = MakeDemoSpec(600);
+  LiveFrameInput in;
+  in.title = spec.title;
+  in.status = "live \u00b7 1.0x";
+  in.arc_length = spec.arc_length;
+  in.section_boundaries = spec.section_boundaries;
+  in.section_names = spec.section_names;
+  in.weight_stations = spec.weight_stations;
+  in.moving_ends = spec.moving_ends;
+  in.fixed_ends = spec.fixed_ends;
+  in.equilibrium = spec.equilibrium;
+  in.tension_max = spec.tension_max;
+  in.x_min = spec.x_min;
+  in.x_max = spec.x_max;
+  in.y_min = spec.y_min;
+  in.y_max = spec.y_max;
+  in.window_start = 35;
+  in.window_end = 95;
+  in.link_min.assign(spec.arc_length.size() - 1, INFINITY);
+  in.link_max.assign(spec.arc_length.size() - 1, -INFINITY);
+  std::vector<Vec2f> path;
+  for (int i = 0; i <= 95 * 30; ++i) {
+    in.snapshot = MakeDemoSnapshot(spec, i / 30.0);
+    const auto& T = in.snapshot.tension;
+    const auto peak = std::max_element(T.begin(), T.end());
+    for (std::size_t j = 0; j < T.size(); ++j) {
+      in.link_min[j] = std::min(in.link_min[j], T[j]);
+      in.link_max[j] = std::max(in.link_max[j], T[j]);
+    }
+    if (*peak > in.peak) {
+      in.peak = *peak;
+      in.peak_t = in.snapshot.t;
+      in.peak_link = static_cast<int>(peak - T.begin());
+    }
+    if (in.snapshot.t >= in.window_start) {
+      in.times.push_back(in.snapshot.t);
+      in.max_tension.push_back(*peak);
+    }
+    if (in.snapshot.t >= 85)
+      path.push_back({static_cast<float>(in.snapshot.x.back()), static_cast<float>(in.snapshot.y.back())});
+  }
+  in.end_paths = {path};
+  in.markers = {{52.5, "speed 2.0x"}, {80, "current 0.5 m/s"}};
+  const Colormap map("viridis");
+  const FrameLayout layout = MakeLiveFrameLayout(in, 1280, 720);
+  RenderOptions options;
+  options.width = 1280;
+  options.height = 720;
+  const Image image = Renderer(options).Draw(MakeLiveFrame(in, 1280, 720, map));
+  WritePng(testing::OutputDir("renderer") + "/live_1280x720.png", image);
+  const Rgba event = Theme::Dark().event;
+  const PixelRect& plot = layout.max_tension.rect;
+  for (double t : {52.5, 80.0}) {  // marker pixels (within anti-aliasing) in the line's column
+    const int x = static_cast<int>(std::floor(layout.max_tension.PixelX(t)));
+    int near = 0;
+    for (int y = static_cast<int>(plot.y0); y < plot.y1; ++y) near += ColorDistance(image.at(x, y), event) < 60;
+    EXPECT_GT(near, 0.3 * plot.height()) << "marker at " << t << " s";
+  }
+  for (int j : {10, 40, 50}) {  // the cable's centre pixels, away from its markers
+    const double xm = 0.5 * (in.snapshot.x[j] + in.snapshot.x[j + 1]);
+    const double ym = 0.5 * (in.snapshot.y[j] + in.snapshot.y[j + 1]);
+    const Vec2f p = layout.cable.ToPixel(xm, ym);  // the line is 4 px wide: fully covered
+    const Rgba want = map.Map(in.snapshot.tension[j], in.tension_min, in.tension_max);
+    EXPECT_LE(ColorDistance(image.at(static_cast<int>(p.x), static_cast<int>(p.y)), want), 2)
+        << "link " << j;
+  }
 }
 
 TEST(ShaderProgram, DirectoryFromOptionThenEnvironmentThenBuild) {

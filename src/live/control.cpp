@@ -1,0 +1,123 @@
+#include "live/control.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace cablefilm {
+namespace {
+
+using Json = nlohmann::json;
+
+std::string Shown(const Json& v) {
+  std::string s = v.dump(-1, ' ', true, Json::error_handler_t::replace);  // ASCII, escaped
+  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  return s;
+}
+
+std::string Number(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+bool ReadBool(const Json& v, const char* field) {
+  if (!v.is_boolean())
+    throw ControlError(std::string(field) + ": expected true or false, got " + Shown(v));
+  return v.get<bool>();
+}
+
+double ReadNumber(const Json& v, const char* field, double lo, double hi, const char* unit) {
+  const std::string want = std::string(field) + ": expected a number in [" + Number(lo) + ", " +
+                           Number(hi) + "]" + unit;
+  if (!v.is_number()) throw ControlError(want + ", got " + Shown(v));
+  const double x = v.get<double>();
+  if (!std::isfinite(x)) throw ControlError(want + ", got a non-finite number");
+  if (x < lo || x > hi) throw ControlError(want + ", got " + Number(x));
+  return x;
+}
+
+}  // namespace
+
+const std::vector<std::string>& ControlFields() {
+  static const std::vector<std::string> fields{
+      "pause", "step", "restart", "speed", "amplitude_scale", "period",
+      "current", "colormap", "lock_range", "tension_range", "record"};
+  return fields;
+}
+
+bool ControlRequest::empty() const {
+  return !pause && !step && !restart && !speed && !amplitude_scale && !period && !current &&
+         !colormap && !lock_range && !tension_range && !record;
+}
+
+ControlRequest ParseControl(const std::string& body, const ControlLimits& limits) {
+  if (body.size() > kMaxControlBytes)
+    throw ControlError("control: expected a JSON object of at most " +
+                       std::to_string(kMaxControlBytes) + " bytes, got " +
+                       std::to_string(body.size()));
+  // No exceptions from the parser: a bad body is an answer, not an error of the server. The
+  // depth of nesting is bounded by the size limit above.
+  const Json j = Json::parse(body, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) throw ControlError("control: malformed JSON (expected an object such as {\"pause\": true})");
+  if (!j.is_object()) throw ControlError("control: expected a JSON object, got " + Shown(j));
+  ControlRequest r;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string& key = it.key();
+    const Json& v = it.value();
+    if (key == "pause") {
+      r.pause = ReadBool(v, "pause");
+    } else if (key == "step") {
+      if (!v.is_boolean() || !v.get<bool>())
+        throw ControlError("step: expected true, got " + Shown(v));
+      r.step = true;
+    } else if (key == "restart") {
+      if (!v.is_boolean() || !v.get<bool>())
+        throw ControlError("restart: expected true, got " + Shown(v));
+      r.restart = true;
+    } else if (key == "speed") {
+      r.speed = ReadNumber(v, "speed", limits.speed_min, limits.speed_max,
+                           " (simulated seconds per second)");
+    } else if (key == "amplitude_scale" || key == "period") {
+      if (!limits.has_driven_end)
+        throw ControlError(key + ": the scene has no driven end (an end with motion = \"trochoid\" or \"table\")");
+      if (key == "period")
+        r.period = ReadNumber(v, "period", limits.period_min, limits.period_max, " s");
+      else
+        r.amplitude_scale = ReadNumber(v, "amplitude_scale", 0, limits.amplitude_max,
+                                       " (times the scene's amplitudes)");
+    } else if (key == "current") {
+      r.current = ReadNumber(v, "current", -limits.current_max, limits.current_max, " m/s");
+    } else if (key == "colormap") {
+      std::string names;
+      for (const std::string& n : limits.colormaps) names += (names.empty() ? "" : ", ") + n;
+      if (!v.is_string()) throw ControlError("colormap: expected one of " + names + ", got " + Shown(v));
+      const std::string name = v.get<std::string>();
+      bool known = false;
+      for (const std::string& n : limits.colormaps) known = known || n == name;
+      if (!known) throw ControlError("colormap: expected one of " + names + ", got " + Shown(v));
+      r.colormap = name;
+    } else if (key == "lock_range") {
+      r.lock_range = ReadBool(v, "lock_range");
+    } else if (key == "tension_range") {
+      const std::string want = "tension_range: expected [min, max] in N with 0 <= min < max <= " +
+                               Number(limits.tension_max);
+      if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+        throw ControlError(want + ", got " + Shown(v));
+      const double lo = v[0].get<double>(), hi = v[1].get<double>();
+      if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo >= 0) || !(hi > lo) ||
+          hi > limits.tension_max)
+        throw ControlError(want + ", got " + Shown(v));
+      r.tension_range = std::array<double, 2>{lo, hi};
+    } else if (key == "record") {
+      r.record = ReadBool(v, "record");
+    } else {
+      std::string names;
+      for (const std::string& n : ControlFields()) names += (names.empty() ? "" : ", ") + n;
+      throw ControlError("unknown field " + Shown(Json(key)) + "; expected any of " + names);
+    }
+  }
+  return r;
+}
+
+}  // namespace cablefilm

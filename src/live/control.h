@@ -1,0 +1,50 @@
+#pragma once
+// What a viewer of the live view may ask (POST /control, or a text message on /ws): a JSON
+// object with any of the fields below. Parsing is strict: malformed JSON, an unknown field, a
+// wrong type, a non-finite or out-of-range value is refused whole with a message naming the
+// field and what was expected, so a refused request changes nothing.
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cablefilm {
+
+// The ranges a control accepts, from the scene (the driven end's period, its current).
+struct ControlLimits {
+  double speed_min = 0.1, speed_max = 10;   // simulated seconds per wall second
+  double amplitude_max = 3;                 // scale on the scene's end-motion amplitudes
+  double period_min = 1, period_max = 100;  // of the driven end [s]
+  double current_max = 3;                   // |c| [m/s]
+  double tension_max = 1e9;                 // largest colour range end [N]
+  bool has_driven_end = true;               // a trochoid or table end: amplitude, period
+  std::vector<std::string> colormaps;       // the known colour maps
+};
+
+struct ControlRequest {
+  std::optional<bool> pause;
+  bool step = false;     // advance one frame (pauses first)
+  bool restart = false;  // back to the scene's initial state and sea
+  std::optional<double> speed, amplitude_scale, period, current;
+  std::optional<std::string> colormap;
+  std::optional<bool> lock_range;                    // freeze the colour range (or let it grow)
+  std::optional<std::array<double, 2>> tension_range;  // [min, max] N: a locked range
+  std::optional<bool> record;                        // start (true) or stop (false) a film
+  bool empty() const;
+};
+
+class ControlError : public std::runtime_error {
+ public:
+  explicit ControlError(const std::string& what) : std::runtime_error(what) {}
+};
+
+constexpr std::size_t kMaxControlBytes = 4096;  // a control is a few fields: refuse floods
+
+// Throws ControlError with the message the viewer gets (HTTP 400).
+ControlRequest ParseControl(const std::string& body, const ControlLimits& limits);
+
+// The field names, in the order of the messages.
+const std::vector<std::string>& ControlFields();
+
+}  // namespace cablefilm

@@ -1,0 +1,559 @@
+#include "live/live_session.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <future>
+
+#include "core/error.h"
+#include "encode/png_writer.h"
+#include "encode/video_encoder.h"
+#include "live/jpeg_encoder.h"
+#include "render/colormap.h"
+#include "render/renderer.h"
+
+namespace cablefilm {
+namespace {
+
+using Json = nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+CableSnapshot ToSnapshot(double t, const Eigen::Matrix2Xd& x, const Eigen::VectorXd& tension) {
+  CableSnapshot s;
+  s.t = t;
+  for (Eigen::Index j = 0; j < x.cols(); ++j) {
+    s.x.push_back(x(0, j));
+    s.y.push_back(x(1, j));
+  }
+  s.tension.assign(tension.data(), tension.data() + tension.size());
+  return s;
+}
+
+LiveScenery MakeScenery(const SceneDef& scene, const LiveSimulation& sim) {
+  const CableModel& m = sim.model();
+  LiveScenery s;
+  s.title = scene.title;
+  s.arc_length.assign(m.arc_length.data(), m.arc_length.data() + m.arc_length.size());
+  s.section_boundaries = m.section_boundaries;
+  for (const SectionDef& sec : scene.sections)
+    s.section_names.push_back(scene.materials.at(sec.material).name);
+  s.weight_stations = m.weight_stations;
+  for (int j : {0, m.links}) {
+    if (m.end_motion(j).moves()) s.moving_ends.push_back(j);
+    if (m.end_motion(j).kind() == EndKind::kFixed) s.fixed_ends.push_back(j);
+  }
+  s.equilibrium = ToSnapshot(0, sim.initial_state().x, sim.initial_tensions());
+  s.window = scene.simulation.duration;
+  return s;
+}
+
+ControlLimits MakeLimits(const LiveSimulation& sim) {
+  ControlLimits l;
+  l.has_driven_end = sim.has_driven_end();
+  const SeaTargets& sea = sim.scene_sea();
+  if (l.has_driven_end) {  // the clock of the motion between a tenth and ten times the scene's
+    l.period_min = sea.period / 10;
+    l.period_max = sea.period * 10;
+  }
+  l.current_max = std::max(3.0, 2 * std::abs(sea.current));
+  l.colormaps = Colormap::Names();
+  return l;
+}
+
+std::string Fixed(const char* fmt, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, v);
+  return buf;
+}
+
+double Seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+// A number JSON can carry: the state never says NaN.
+double Finite(double v) { return std::isfinite(v) ? v : 0; }
+
+}  // namespace
+
+LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
+    : scene_(scene),
+      options_(options),
+      sim_(scene),
+      speed_(options.speed),
+      colormap_(options.colormap.empty() ? scene.film.colormap : options.colormap),
+      history_(MakeScenery(scene, sim_)),
+      start_(Clock::now()) {
+  if (options_.width < 16 || options_.height < 16 || options_.width % 2 || options_.height % 2)
+    throw Error("live: frame size must be even and at least 16x16, got " +
+                std::to_string(options_.width) + "x" + std::to_string(options_.height));
+  if (!(options_.fps >= 1 && options_.fps <= 120))
+    throw Error("live: --fps must be in [1, 120], got " + std::to_string(options_.fps));
+  limits_ = MakeLimits(sim_);
+  if (!(speed_ >= limits_.speed_min && speed_ <= limits_.speed_max))
+    throw Error("live: --speed must be in [0.1, 10], got " + std::to_string(speed_));
+  Colormap check(colormap_);  // an unknown name fails here, naming the known ones
+  targets_ = sim_.targets();
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    history_.Add(0, sim_.state().x, sim_.tensions());
+    rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
+    PublishLocked();
+  }
+  // The renderer's context lives on its thread: start it and wait for the first frame (or the
+  // reason there is none), so that a bad shader folder fails here, not in a viewer's face.
+  render_thread_ = std::thread([this] { RenderLoop(); });
+  {
+    std::unique_lock<std::mutex> lock(mu_);
+    frame_cv_.wait(lock, [&] { return frame_ != nullptr || !render_error_.empty(); });
+    if (!frame_) {
+      const std::string why = render_error_;
+      stop_ = true;
+      lock.unlock();
+      render_cv_.notify_all();
+      render_thread_.join();
+      throw Error(why);
+    }
+  }
+  sim_thread_ = std::thread([this] { SimulationLoop(); });
+}
+
+LiveSession::~LiveSession() { Stop(); }
+
+void LiveSession::Stop() {
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    if (stop_ && !sim_thread_.joinable() && !render_thread_.joinable()) return;
+    stop_ = true;
+  }
+  sim_cv_.notify_all();
+  render_cv_.notify_all();
+  frame_cv_.notify_all();
+  if (sim_thread_.joinable()) sim_thread_.join();
+  if (render_thread_.joinable()) render_thread_.join();
+}
+
+// ---- The simulation thread -----------------------------------------------------------------
+
+void LiveSession::ApplyPending() {
+  std::vector<Pending> todo;
+  todo.swap(deferred_);
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    todo.insert(todo.end(), pending_.begin(), pending_.end());
+    pending_.clear();
+  }
+  if (todo.empty()) return;
+  // Only the newest target of each quantity matters (a slider dragged sends many): an older
+  // one still waiting is dropped rather than ramped to and away from.
+  for (std::size_t i = 0; i < todo.size(); ++i)
+    for (std::size_t k = i + 1; k < todo.size() && !todo[k].restart; ++k) {
+      if (todo[k].amplitude_scale) todo[i].amplitude_scale.reset();
+      if (todo[k].period) todo[i].period.reset();
+      if (todo[k].current) todo[i].current.reset();
+    }
+  std::vector<LiveMarker> markers;
+  std::uint64_t applied = 0;
+  bool restarted = false;
+  for (const Pending& p : todo) {
+    if (p.restart) {
+      sim_.Restart();
+      restarted = true;
+      deferred_.clear();
+      markers.clear();
+    }
+    const double t = sim_.t();
+    Pending left;  // what the ramps could not take yet
+    left.seq = p.seq;
+    if (p.amplitude_scale) {
+      if (sim_.SetAmplitudeScale(*p.amplitude_scale))
+        markers.push_back({t, "amplitude \u00d7" + Fixed("%.2f", *p.amplitude_scale)});
+      else
+        left.amplitude_scale = p.amplitude_scale;
+    }
+    if (p.period) {
+      if (sim_.SetPeriod(*p.period))
+        markers.push_back({t, "period " + Fixed("%.3g", *p.period) + " s"});
+      else
+        left.period = p.period;
+    }
+    if (p.current) {
+      if (sim_.SetCurrent(*p.current))
+        markers.push_back({t, "current " + Fixed("%.2f", *p.current) + " m/s"});
+      else
+        left.current = p.current;
+    }
+    if (left.amplitude_scale || left.period || left.current)
+      deferred_.push_back(left);
+    else if (deferred_.empty())  // in order: a control counts once those before it are in
+      applied = std::max(applied, p.seq);
+  }
+  std::lock_guard<std::mutex> lock(mu_);
+  if (restarted) {
+    history_.Reset();
+    rows_.Clear();
+    error_.clear();
+    progress_.clear();
+    history_.Add(sim_.t(), sim_.state().x, sim_.tensions());
+    rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
+  }
+  for (LiveMarker& m : markers) history_.AddMarker(m.t, std::move(m.label));
+  if (applied > seq_applied_) seq_applied_ = applied;
+  PublishLocked();
+}
+
+void LiveSession::SimulationLoop() {
+  Clock::time_point next = Clock::now();
+  while (!stop_) {
+    bool advance = false;
+    double chunk = 0;
+    {
+      std::unique_lock<std::mutex> lock(mu_);
+      const double frame = 1.0 / options_.fps;
+      // Sleep until the next frame is due; a control wakes the loop early so that it shows at
+      // once (without advancing the clock ahead of the wall).
+      sim_cv_.wait_until(lock, next, [&] { return stop_ || !pending_.empty(); });
+      if (stop_) break;
+      const bool due = Clock::now() >= next;
+      if (!pending_.empty() || (due && !deferred_.empty())) {
+        lock.unlock();
+        ApplyPending();
+        lock.lock();
+      }
+      const bool can_run = error_.empty();
+      if (steps_requested_ > 0 && can_run) {
+        --steps_requested_;
+        advance = true;
+      } else if (due && !paused_ && can_run) {
+        advance = true;
+      }
+      if (due) {
+        next += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(frame));
+        // Behind by more than a few frames (a slow machine, a huge scene): drop the backlog
+        // rather than race to catch up; the real-time factor in the state says so.
+        if (Clock::now() - next > std::chrono::milliseconds(200)) next = Clock::now();
+      }
+      chunk = speed_ * frame;
+    }
+    if (!advance) continue;
+    std::string blow_up;
+    try {
+      sim_.Advance(chunk);
+    } catch (const BlowUpError& e) {
+      blow_up = e.what();
+    }
+    std::lock_guard<std::mutex> lock(mu_);
+    if (!blow_up.empty()) {
+      error_ = blow_up + "; paused: restart, or change the sea back";
+      paused_ = true;
+      ++state_version_;
+      continue;
+    }
+    history_.Add(sim_.t(), sim_.state().x, sim_.tensions());
+    rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
+    progress_.emplace_back(Seconds(start_, Clock::now()), sim_.t());
+    while (progress_.size() > 2 && progress_.back().first - progress_.front().first > 2.0)
+      progress_.pop_front();
+    PublishLocked();
+  }
+}
+
+void LiveSession::PublishLocked() {
+  t_ = sim_.t();
+  current_now_ = sim_.current_now();
+  const Eigen::VectorXd& T = sim_.tensions();
+  Eigen::Index link = 0;
+  tension_start_ = T[0];
+  tension_end_ = T[T.size() - 1];
+  tension_max_ = T.maxCoeff(&link);
+  link_max_ = static_cast<int>(link);
+  ++input_version_;
+  ++state_version_;
+  render_cv_.notify_one();
+}
+
+std::string LiveSession::StatusLocked() const {
+  if (!error_.empty()) return "stopped: numerical blow-up";
+  std::string s = paused_ ? "paused" : "live";
+  s += " \u00b7 " + Fixed("%.2g", speed_) + "\u00d7 real time";
+  return s;
+}
+
+// ---- The render thread ---------------------------------------------------------------------
+
+void LiveSession::RenderLoop() {
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<JpegEncoder> jpeg;
+  try {
+    RenderOptions ro;
+    ro.width = options_.width;
+    ro.height = options_.height;
+    ro.shader_dir = options_.shader_dir;
+    renderer = std::make_unique<Renderer>(ro);
+    jpeg = std::make_unique<JpegEncoder>(options_.jpeg_quality);
+  } catch (const std::exception& e) {
+    std::lock_guard<std::mutex> lock(mu_);
+    render_error_ = std::string("live: cannot start the renderer: ") + e.what();
+    frame_cv_.notify_all();
+    return;
+  }
+  std::unique_ptr<VideoEncoder> video;
+  Recording current;
+  std::uint64_t drawn_input = 0, drawn_view = ~0ull, number = 0;
+  Image image;
+  auto finish_recording = [&]() {
+    if (!video) return;
+    try {
+      video->Finish();
+      std::lock_guard<std::mutex> lock(mu_);
+      current.frames = video->frames_added();
+      recordings_.push_back(current);
+      std::printf("live: wrote %s (%ld frames)\n", current.path.c_str(), current.frames);
+      std::fflush(stdout);
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(mu_);
+      record_error_ = e.what();
+    }
+    video.reset();
+    std::lock_guard<std::mutex> lock(mu_);
+    recording_ = false;
+    ++state_version_;
+  };
+  while (true) {
+    LiveFrameInput input;
+    std::string colormap;
+    std::uint64_t seq = 0;
+    bool want_record = false;
+    {
+      std::unique_lock<std::mutex> lock(mu_);
+      render_cv_.wait(lock, [&] {
+        return stop_ || input_version_ != drawn_input || view_version_ != drawn_view ||
+               record_wanted_ != recording_;
+      });
+      if (stop_) break;
+      want_record = record_wanted_;
+      const bool redraw = input_version_ != drawn_input || view_version_ != drawn_view;
+      drawn_input = input_version_;
+      drawn_view = view_version_;
+      if (!redraw && want_record == recording_) continue;
+      input = history_.MakeInput(StatusLocked());
+      colormap = colormap_;
+      seq = seq_applied_;
+    }
+    if (want_record && !video) {
+      char stamp[32];
+      const std::time_t now = std::time(nullptr);
+      std::tm tm{};
+      localtime_r(&now, &tm);
+      std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
+      current = Recording{std::string("live-") + stamp + ".mp4", "", 0};
+      current.path = options_.out_dir + "/" + current.name;
+      try {
+        std::filesystem::create_directories(options_.out_dir);
+        VideoOptions vo;
+        vo.width = options_.width;
+        vo.height = options_.height;
+        vo.fps = options_.fps;
+        vo.threads = 1;  // the machine's cores belong to the simulation and the viewers
+        video = std::make_unique<VideoEncoder>(current.path, vo);
+        std::lock_guard<std::mutex> lock(mu_);
+        recording_ = true;
+        record_error_.clear();
+        ++state_version_;
+      } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> lock(mu_);
+        record_error_ = e.what();
+        record_wanted_ = false;
+        ++state_version_;
+        continue;
+      }
+    } else if (!want_record && video) {
+      finish_recording();
+    }
+    try {
+      const Frame frame = MakeLiveFrame(input, options_.width, options_.height,
+                                        Colormap(colormap), Theme::Dark());
+      renderer->Draw(frame, &image);
+      auto out = std::make_shared<LiveFrame>();
+      out->number = ++number;
+      out->t = input.snapshot.t;
+      out->seq = seq;
+      const std::string bytes = jpeg->Encode(image);
+      out->message.resize(LiveFrame::kHeaderBytes);
+      for (int i = 0; i < 8; ++i) {  // little-endian, whatever the machine
+        std::uint64_t t_bits;
+        std::memcpy(&t_bits, &out->t, 8);
+        out->message[i] = static_cast<char>((out->number >> (8 * i)) & 0xff);
+        out->message[8 + i] = static_cast<char>((t_bits >> (8 * i)) & 0xff);
+        out->message[16 + i] = static_cast<char>((out->seq >> (8 * i)) & 0xff);
+      }
+      out->message += bytes;
+      if (video) video->AddFrame(image);
+      auto still = std::make_shared<const Image>(image);
+      const double now = Seconds(start_, Clock::now());
+      std::lock_guard<std::mutex> lock(mu_);
+      frame_ = std::move(out);
+      image_ = std::move(still);
+      frame_times_.push_back(now);
+      while (!frame_times_.empty() && frame_times_.front() < now - 1.0) frame_times_.pop_front();
+      render_error_.clear();
+      frame_cv_.notify_all();
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(mu_);
+      render_error_ = e.what();
+      ++state_version_;
+      frame_cv_.notify_all();
+    }
+  }
+  finish_recording();
+}
+
+// ---- The face for the network --------------------------------------------------------------
+
+LiveSession::Reply LiveSession::Control(const std::string& body) {
+  ControlRequest r;
+  try {
+    r = ParseControl(body, limits_);
+  } catch (const ControlError& e) {
+    return {400, Json{{"error", e.what()}}.dump(-1, ' ', true, Json::error_handler_t::replace)};
+  }
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    if (stop_) return {503, Json{{"error", "the live view is stopping"}}.dump()};
+    // Every control goes through the simulation thread in order, so the sequence number a
+    // frame carries says which controls it shows.
+    if (pending_.size() >= 64) return {503, Json{{"error", "too many controls at once; try again"}}.dump()};
+    Pending p;
+    p.seq = ++seq_;
+    p.restart = r.restart;
+    p.amplitude_scale = r.amplitude_scale;
+    p.period = r.period;
+    p.current = r.current;
+    pending_.push_back(p);
+    if (r.restart) {
+      targets_ = sim_.scene_sea();
+      steps_requested_ = 0;
+    }
+    if (r.amplitude_scale) targets_.amplitude_scale = *r.amplitude_scale;
+    if (r.period) targets_.period = *r.period;
+    if (r.current) targets_.current = *r.current;
+    if (r.pause) paused_ = *r.pause;
+    if (r.step) {
+      paused_ = true;
+      ++steps_requested_;
+    }
+    if (r.speed) speed_ = *r.speed;
+    if (r.colormap) colormap_ = *r.colormap;
+    if (r.tension_range) history_.SetRange((*r.tension_range)[0], (*r.tension_range)[1]);
+    if (r.lock_range) history_.LockRange(*r.lock_range);
+    if (r.record) record_wanted_ = *r.record;
+    if (r.colormap || r.tension_range || r.lock_range || r.pause || r.speed) ++view_version_;
+    ++state_version_;
+  }
+  sim_cv_.notify_all();
+  render_cv_.notify_all();
+  std::lock_guard<std::mutex> lock(mu_);
+  return {200, StateJsonLocked()};
+}
+
+std::string LiveSession::StateJson() const {
+  std::lock_guard<std::mutex> lock(mu_);
+  return StateJsonLocked();
+}
+
+std::string LiveSession::StateJsonLocked() const {
+  double realtime = 0;
+  if (progress_.size() >= 2) {
+    const double wall = progress_.back().first - progress_.front().first;
+    if (wall > 0) realtime = (progress_.back().second - progress_.front().second) / wall;
+  }
+  Json recordings = Json::array();
+  for (const Recording& r : recordings_)
+    recordings.push_back({{"name", r.name}, {"url", "/recordings/" + r.name}, {"frames", r.frames}});
+  Json j{
+      {"t", Finite(t_)},
+      {"frame", frame_ ? frame_->number : 0},
+      {"seq", seq_},
+      {"seq_applied", seq_applied_},
+      {"paused", paused_},
+      {"speed", speed_},
+      {"amplitude_scale", targets_.amplitude_scale},
+      {"period", sim_.has_driven_end() ? Json(targets_.period) : Json(nullptr)},
+      {"has_period", sim_.has_driven_end()},
+      {"current", targets_.current},
+      {"current_now", Finite(current_now_)},
+      {"colormap", colormap_},
+      {"colormaps", limits_.colormaps},
+      {"range", {{"min", history_.range_min()}, {"max", history_.range_max()},
+                 {"locked", history_.range_locked()}}},
+      {"tension", {{"start", Finite(tension_start_)}, {"end", Finite(tension_end_)},
+                   {"max", Finite(tension_max_)}, {"link_max", link_max_}}},
+      {"peak", {{"value", Finite(history_.peak())}, {"t", history_.peak_t()},
+                {"link", history_.peak_link()}}},
+      {"fps", static_cast<double>(frame_times_.size())},
+      {"realtime", Finite(realtime)},
+      {"viewers", viewers_.load()},
+      {"recording", recording_},
+      {"recordings", recordings},
+      {"title", scene_.title},
+      {"scene", scene_.name},
+      {"duration", scene_.simulation.duration},
+      {"width", options_.width},
+      {"height", options_.height},
+      {"limits", {{"speed", {limits_.speed_min, limits_.speed_max}},
+                  {"amplitude_scale", {0.0, limits_.amplitude_max}},
+                  {"period", {limits_.period_min, limits_.period_max}},
+                  {"current", {-limits_.current_max, limits_.current_max}}}},
+  };
+  if (!error_.empty()) j["error"] = error_;
+  if (!render_error_.empty()) j["render_error"] = render_error_;
+  if (!record_error_.empty()) j["record_error"] = record_error_;
+  return j.dump(-1, ' ', true, Json::error_handler_t::replace);
+}
+
+std::shared_ptr<const LiveFrame> LiveSession::NewestFrame() const {
+  std::lock_guard<std::mutex> lock(mu_);
+  return frame_;
+}
+
+std::shared_ptr<const LiveFrame> LiveSession::WaitFrame(std::uint64_t after,
+                                                        std::chrono::milliseconds timeout) const {
+  std::unique_lock<std::mutex> lock(mu_);
+  frame_cv_.wait_for(lock, timeout, [&] { return stop_ || (frame_ && frame_->number > after); });
+  if (stop_ || !frame_ || frame_->number <= after) return nullptr;
+  return frame_;
+}
+
+std::string LiveSession::SnapshotPng() const {
+  std::shared_ptr<const Image> image;
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    image = image_;
+  }
+  if (!image) throw Error("live: no frame drawn yet");
+  PngOptions o;
+  o.compression_level = 3;
+  return EncodePng(*image, o);
+}
+
+void LiveSession::ReadTimeseries(const std::function<bool(const char*, std::size_t)>& sink) {
+  long size = 0;
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    size = rows_.Flush();
+  }
+  rows_.Read(size, sink);
+}
+
+std::string LiveSession::RecordingPath(const std::string& name) const {
+  std::lock_guard<std::mutex> lock(mu_);
+  for (const Recording& r : recordings_)
+    if (r.name == name) return r.path;
+  return "";
+}
+
+}  // namespace cablefilm

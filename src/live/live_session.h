@@ -1,0 +1,153 @@
+#pragma once
+// A live view of a scene: the simulation paced to the wall clock on one thread, the picture
+// drawn (MakeLiveFrame, OSMesa) and encoded once as JPEG on another, whatever the number of
+// viewers, and a thread-safe face for the network: the newest frame, the state as JSON, the
+// controls. Memory stays bounded however long it runs: viewers share the newest frame only,
+// the plots keep a rolling window, and the time series goes to a temporary file.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "encode/image.h"
+#include "live/control.h"
+#include "live/live_history.h"
+#include "live/live_simulation.h"
+#include "live/row_log.h"
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+struct LiveOptions {
+  int width = 1280, height = 720;  // of the frames [px], even
+  double fps = 30;                 // frames per wall-clock second
+  double speed = 1;                // simulated seconds per wall-clock second
+  std::string colormap;            // empty: the scene's
+  std::string out_dir;             // where recordings go (created when the first one starts)
+  std::string shader_dir;          // empty: the built-in shaders
+  int jpeg_quality = 85;
+};
+
+// One frame as sent: a 24-byte header (frame number uint64, t float64, control sequence number
+// uint64, all little-endian) followed by the JPEG. The WebSocket sends `message` as it is.
+struct LiveFrame {
+  static constexpr std::size_t kHeaderBytes = 24;
+  std::uint64_t number = 0;
+  double t = 0;             // simulated time [s]
+  std::uint64_t seq = 0;    // the last control applied before this frame was drawn
+  std::string message;      // header + JPEG
+  const char* jpeg() const { return message.data() + kHeaderBytes; }
+  std::size_t jpeg_size() const { return message.size() - kHeaderBytes; }
+};
+
+class LiveSession {
+ public:
+  // Builds the simulation (equilibrium) and starts both threads; returns once the renderer is
+  // ready and the first frame is drawn. Throws Error (scene, renderer, shaders).
+  LiveSession(const SceneDef& scene, const LiveOptions& options);
+  ~LiveSession();
+  LiveSession(const LiveSession&) = delete;
+  LiveSession& operator=(const LiveSession&) = delete;
+
+  // Stops both threads, closing a recording so that it plays. Idempotent.
+  void Stop();
+
+  struct Reply {
+    int status = 200;  // 200, or 400 with a message naming the field
+    std::string json;  // the new state, or {"error": "..."}
+  };
+  Reply Control(const std::string& body);
+  std::string StateJson() const;
+  std::uint64_t state_version() const { return state_version_; }  // changes with the state
+
+  std::shared_ptr<const LiveFrame> NewestFrame() const;
+  // The first frame numbered above `after`, waiting up to `timeout`; null on timeout or stop.
+  std::shared_ptr<const LiveFrame> WaitFrame(std::uint64_t after,
+                                             std::chrono::milliseconds timeout) const;
+  std::string SnapshotPng() const;  // the newest frame as PNG
+  // The time series so far (timeseries.csv's columns) in pieces.
+  void ReadTimeseries(const std::function<bool(const char*, std::size_t)>& sink);
+  // The path of a finished recording of this session by its file name; empty if none such.
+  std::string RecordingPath(const std::string& name) const;
+
+  void AddViewer(int delta) { viewers_ += delta; }
+  int viewers() const { return viewers_; }
+  bool stopped() const { return stop_; }
+  const std::string& scene_name() const { return scene_.name; }
+  int width() const { return options_.width; }
+  int height() const { return options_.height; }
+
+ private:
+  struct Recording {
+    std::string name, path;
+    long frames = 0;
+  };
+  void SimulationLoop();
+  void RenderLoop();
+  // Applies what the controls asked of the simulation; called on its thread, without the lock.
+  void ApplyPending();
+  void PublishLocked();  // the frame input and the numbers, after a step (lock held)
+  std::string StateJsonLocked() const;
+  std::string StatusLocked() const;
+
+  const SceneDef scene_;
+  const LiveOptions options_;
+  ControlLimits limits_;
+  LiveSimulation sim_;  // owned by the simulation thread once it runs
+
+  mutable std::mutex mu_;
+  mutable std::condition_variable sim_cv_, render_cv_, frame_cv_;
+  std::atomic<bool> stop_{false};
+  std::atomic<int> viewers_{0};
+  std::atomic<std::uint64_t> state_version_{0};
+
+  // Controls (lock held).
+  bool paused_ = false;
+  double speed_;
+  std::string colormap_;
+  SeaTargets targets_;          // what the sea is ramping to (as answered to the controls)
+  std::uint64_t seq_ = 0;       // controls accepted
+  std::uint64_t seq_applied_ = 0;  // controls the simulation has taken
+  struct Pending {
+    std::uint64_t seq = 0;
+    bool restart = false, step = false;
+    std::optional<double> amplitude_scale, period, current;
+  };
+  std::vector<Pending> pending_;
+  std::vector<Pending> deferred_;  // refused while too many ramps ran (simulation thread only)
+  int steps_requested_ = 0;
+  std::string error_;           // a blow-up (paused until a restart)
+
+  // What the simulation published (lock held).
+  LiveHistory history_;
+  RowLog rows_;
+  std::uint64_t input_version_ = 0, view_version_ = 0;
+  double t_ = 0, current_now_ = 0;
+  double tension_start_ = 0, tension_end_ = 0, tension_max_ = 0;
+  int link_max_ = 0;
+  std::deque<std::pair<double, double>> progress_;  // (wall [s], simulated [s]) for real time
+
+  // Frames (lock held).
+  std::shared_ptr<const LiveFrame> frame_;
+  std::shared_ptr<const Image> image_;
+  std::deque<double> frame_times_;  // wall [s] of the frames of the last second
+  std::string render_error_;
+
+  // Recording (lock held).
+  bool record_wanted_ = false, recording_ = false;
+  std::vector<Recording> recordings_;
+  std::string record_error_;
+
+  std::chrono::steady_clock::time_point start_;
+  std::thread sim_thread_, render_thread_;
+};
+
+}  // namespace cablefilm

@@ -1,0 +1,74 @@
+#pragma once
+// A scene's cable stepped on demand while the sea is changed between steps: the physics half of
+// the live view (no threads, no clock, no pictures). The driven end's amplitude and period and
+// the current are ramped along SmoothSchedule, so a change never jumps the prescribed end's
+// position, velocity or acceleration, and the current never jumps either.
+#include <Eigen/Core>
+#include <memory>
+
+#include "core/cable_model.h"
+#include "core/cable_state.h"
+#include "core/integrator.h"
+#include "app/simulation_run.h"
+#include "core/smooth_schedule.h"
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+struct SeaTargets {
+  double amplitude_scale = 1;  // times the scene's end-motion amplitudes
+  double period = 0;           // of the driven end [s]; 0 when no end is driven
+  double current = 0;          // c [m/s] along +x
+};
+
+class LiveSimulation {
+ public:
+  // Builds the model and its static equilibrium (the initial state). Throws Error.
+  explicit LiveSimulation(const SceneDef& scene);
+
+  // Back to the scene's initial state and sea.
+  void Restart();
+  // Advances by `seconds` of simulated time, in steps of the scene's scheme (the explicit one
+  // below its stability limit, the implicit one with its error control). Throws BlowUpError.
+  void Advance(double seconds);
+
+  // New targets, reached along a ramp that starts now (at t()): amplitude and period over one
+  // period of the driven end (kMotionRamp at least), the current over kCurrentRamp. False when
+  // too many changes are still ramping (then nothing changes; try again a moment later).
+  bool SetAmplitudeScale(double scale);
+  bool SetPeriod(double period);  // [s]
+  bool SetCurrent(double current);  // [m/s]
+
+  static constexpr double kMotionRamp = 2.0;   // shortest amplitude/period ramp [s]
+  static constexpr double kCurrentRamp = 5.0;  // current ramp [s]
+
+  double t() const { return state_.t; }
+  const CableState& state() const { return state_; }
+  const Eigen::VectorXd& tensions() const { return integrator_->tensions(); }
+  const CableModel& model() const { return model_; }
+  const CableState& initial_state() const { return initial_; }
+  const Eigen::VectorXd& initial_tensions() const { return initial_tension_; }
+  const SeaTargets& scene_sea() const { return scene_sea_; }
+  SeaTargets targets() const;  // what the sea is ramping to
+  double current_now() const;  // the current acting now [m/s]
+  bool has_driven_end() const { return base_period_ > 0; }
+  IntegratorStats stats() const { return integrator_->stats(); }
+
+ private:
+  void ApplyModulation();
+  double MotionRamp() const;  // [s]
+
+  const CableModel scene_model_;  // as built from the scene
+  CableModel model_;              // the one stepped: its ends modulated, its current ramped
+  TimeGrid grid_;                 // the scene's scheme and step rule
+  IntegratorKind kind_;
+  double fixed_step_ = 0;         // [s]; 0: the scheme chooses (adaptive or internal split)
+  std::unique_ptr<Integrator> integrator_;
+  CableState initial_, state_;
+  Eigen::VectorXd initial_tension_;
+  SeaTargets scene_sea_;
+  double base_period_ = 0;        // the driven end's period in the scene [s]
+  SmoothSchedule scale_{1}, rate_{1}, current_{0};
+};
+
+}  // namespace cablefilm

@@ -1,0 +1,36 @@
+#pragma once
+// The time series of a live session, every frame's row, kept in an anonymous temporary file
+// (gone when the program ends) rather than in memory: hours of rows cost disk, not memory.
+// Not thread-safe: the session guards it.
+#include <Eigen/Core>
+#include <cstdio>
+#include <functional>
+#include <string>
+
+#include "core/cable_model.h"
+#include "core/cable_state.h"
+
+namespace cablefilm {
+
+class RowLog {
+ public:
+  RowLog();  // throws Error if no temporary file can be made
+  ~RowLog();
+  RowLog(const RowLog&) = delete;
+  RowLog& operator=(const RowLog&) = delete;
+
+  void Clear();  // a restart
+  void Append(const CableModel& m, const CableState& s, const Eigen::VectorXd& tension);
+  long rows() const { return rows_; }
+  // The bytes written so far (flushed): call under the session's lock...
+  long Flush();
+  // ...then read them without it (the rows keep being appended meanwhile): the CSV in pieces,
+  // `sink` returns false to stop early. A restart meanwhile ends the read short.
+  void Read(long size, const std::function<bool(const char* data, std::size_t size)>& sink) const;
+
+ private:
+  std::FILE* file_ = nullptr;
+  long rows_ = 0;
+};
+
+}  // namespace cablefilm

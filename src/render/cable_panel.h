@@ -1,0 +1,48 @@
+#pragma once
+// The cable's shape to scale, coloured link by link on the tension colour map: the cable now
+// (over its companion, when the snapshot has one), the equilibrium shape dashed, the paths of
+// the moving ends, and markers at the weights, anchors and moving ends. The colour bar is drawn
+// separately (colorbar_panel.h) in the space the layout leaves at the panel's right.
+#include <string>
+#include <vector>
+
+#include "render/colormap.h"
+#include "render/frame.h"
+#include "render/legend.h"
+#include "render/plot_layout.h"
+#include "render/theme.h"
+
+namespace cablefilm {
+
+struct CableMarks {              // stations drawn with a marker; indices outside are skipped
+  std::vector<int> weights;      // suspended weights: diamonds
+  std::vector<int> fixed_ends;   // anchors: squares
+  std::vector<int> moving_ends;  // driven ends: rings
+};
+
+// The panel's title and legend: an entry per kind of marker present, the two cables' names
+// when a companion is drawn, the end path (named `path_label`) and the equilibrium.
+// `swatch` colours the cables' entries (a mid colour of the map).
+PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::string& main_label,
+                         const std::string& companion_label, const std::string& path_label,
+                         Rgba swatch, const Theme& th);
+
+// Borrowed for one call: the pointers are not kept.
+struct CablePanelInput {
+  PixelRect panel;                  // the whole panel [px]
+  PlotMapping world;                // its axes: world [m] -> pixels, equal scale in x and y
+  float cable_width = 6;            // [px]
+  float companion_width = 3.6f;     // the companion's coloured line [px]
+  PanelHead head;                   // CablePanelHead(...)
+  double tension_min = 0, tension_max = 1;     // the colour range [N]
+  const CableSnapshot* now = nullptr;          // required; with its companion when it has one
+  const CableSnapshot* equilibrium = nullptr;  // dashed shape (x, y); null = none
+  CableMarks marks;
+  // Paths of the moving ends: polylines in world coordinates [m]; null = none.
+  const std::vector<std::vector<Vec2f>>* end_paths = nullptr;
+};
+
+void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& colormap,
+                    const Theme& th);
+
+}  // namespace cablefilm

@@ -1,0 +1,129 @@
+// Parsing and validation of the live view's controls: every field accepted in range, and every
+// way of being wrong refused with a message naming the field and what was expected.
+#include <gtest/gtest.h>
+
+#include "live/control.h"
+
+namespace cablefilm {
+namespace {
+
+ControlLimits Limits() {
+  ControlLimits l;
+  l.period_min = 1;
+  l.period_max = 100;
+  l.current_max = 3;
+  l.colormaps = {"viridis", "cividis", "magma"};
+  return l;
+}
+
+std::string Refusal(const std::string& body, const ControlLimits& limits = Limits()) {
+  try {
+    ParseControl(body, limits);
+  } catch (const ControlError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(ParseControl, AcceptsEveryFieldInRange) {
+  const ControlRequest r = ParseControl(
+      R"({"pause": true, "step": true, "restart": true, "speed": 2.5, "amplitude_scale": 1.5,
+          "period": 12, "current": -0.5, "colormap": "magma", "lock_range": false,
+          "tension_range": [0, 9000], "record": true})",
+      Limits());
+  EXPECT_EQ(r.pause, true);
+  EXPECT_TRUE(r.step);
+  EXPECT_TRUE(r.restart);
+  EXPECT_DOUBLE_EQ(*r.speed, 2.5);
+  EXPECT_DOUBLE_EQ(*r.amplitude_scale, 1.5);
+  EXPECT_DOUBLE_EQ(*r.period, 12);
+  EXPECT_DOUBLE_EQ(*r.current, -0.5);
+  EXPECT_EQ(*r.colormap, "magma");
+  EXPECT_EQ(r.lock_range, false);
+  EXPECT_DOUBLE_EQ((*r.tension_range)[1], 9000);
+  EXPECT_EQ(r.record, true);
+  EXPECT_TRUE(ParseControl("{}", Limits()).empty());
+  // The ends of every range are inside it.
+  EXPECT_NO_THROW(ParseControl(R"({"speed": 0.1, "amplitude_scale": 0, "period": 100, "current": 3})", Limits()));
+  EXPECT_NO_THROW(ParseControl(R"({"speed": 10, "amplitude_scale": 3, "period": 1, "current": -3})", Limits()));
+}
+
+TEST(ParseControl, MalformedOrNotAnObject) {
+  EXPECT_EQ(Refusal("{\"pause\": tru"), "control: malformed JSON (expected an object such as {\"pause\": true})");
+  EXPECT_EQ(Refusal(""), "control: malformed JSON (expected an object such as {\"pause\": true})");
+  EXPECT_EQ(Refusal("{\"speed\": 1} trailing"), "control: malformed JSON (expected an object such as {\"pause\": true})");
+  EXPECT_EQ(Refusal("[1, 2]"), "control: expected a JSON object, got [1,2]");
+  EXPECT_EQ(Refusal("\"pause\""), "control: expected a JSON object, got \"pause\"");
+  EXPECT_EQ(Refusal(std::string(5000, ' ') + "{}"),
+            "control: expected a JSON object of at most 4096 bytes, got 5002");
+  // Invalid UTF-8 is malformed JSON, never echoed raw.
+  EXPECT_EQ(Refusal("{\"colormap\": \"\xff\xfe\"}"),
+            "control: malformed JSON (expected an object such as {\"pause\": true})");
+}
+
+TEST(ParseControl, UnknownFieldIsNamedAndEscaped) {
+  EXPECT_EQ(Refusal(R"({"speed": 1, "sped": 2})"),
+            "unknown field \"sped\"; expected any of pause, step, restart, speed, amplitude_scale, "
+            "period, current, colormap, lock_range, tension_range, record");
+  // A control character in a key comes back escaped, not raw to a terminal or page.
+  EXPECT_EQ(Refusal("{\"a\\u001bb\": 1}").substr(0, 25), "unknown field \"a\\u001bb\";");
+}
+
+TEST(ParseControl, WrongTypes) {
+  EXPECT_EQ(Refusal(R"({"pause": 1})"), "pause: expected true or false, got 1");
+  EXPECT_EQ(Refusal(R"({"pause": "yes"})"), "pause: expected true or false, got \"yes\"");
+  EXPECT_EQ(Refusal(R"({"step": false})"), "step: expected true, got false");
+  EXPECT_EQ(Refusal(R"({"restart": 1})"), "restart: expected true, got 1");
+  EXPECT_EQ(Refusal(R"({"speed": "2"})"),
+            "speed: expected a number in [0.1, 10] (simulated seconds per second), got \"2\"");
+  EXPECT_EQ(Refusal(R"({"current": null})"), "current: expected a number in [-3, 3] m/s, got null");
+  EXPECT_EQ(Refusal(R"({"colormap": 3})"), "colormap: expected one of viridis, cividis, magma, got 3");
+  EXPECT_EQ(Refusal(R"({"lock_range": "true"})"), "lock_range: expected true or false, got \"true\"");
+  EXPECT_EQ(Refusal(R"({"record": [true]})"), "record: expected true or false, got [true]");
+  EXPECT_EQ(Refusal(R"({"tension_range": 5})"),
+            "tension_range: expected [min, max] in N with 0 <= min < max <= 1e+09, got 5");
+}
+
+TEST(ParseControl, OutOfRangeAndNonFinite) {
+  EXPECT_EQ(Refusal(R"({"speed": 50})"),
+            "speed: expected a number in [0.1, 10] (simulated seconds per second), got 50");
+  EXPECT_EQ(Refusal(R"({"speed": 0.05})"),
+            "speed: expected a number in [0.1, 10] (simulated seconds per second), got 0.05");
+  EXPECT_EQ(Refusal(R"({"amplitude_scale": -1})"),
+            "amplitude_scale: expected a number in [0, 3] (times the scene's amplitudes), got -1");
+  EXPECT_EQ(Refusal(R"({"period": 0.5})"), "period: expected a number in [1, 100] s, got 0.5");
+  EXPECT_EQ(Refusal(R"({"current": 4})"), "current: expected a number in [-3, 3] m/s, got 4");
+  // 1e999 overflows a double: refused as non-finite (or as malformed), never taken as inf.
+  const std::string huge = Refusal(R"({"current": 1e999})");
+  EXPECT_TRUE(huge == "current: expected a number in [-3, 3] m/s, got a non-finite number" ||
+              huge.rfind("control: malformed JSON", 0) == 0)
+      << huge;
+  EXPECT_EQ(Refusal(R"({"colormap": "jet"})"),
+            "colormap: expected one of viridis, cividis, magma, got \"jet\"");
+  EXPECT_EQ(Refusal(R"({"tension_range": [9000, 100]})"),
+            "tension_range: expected [min, max] in N with 0 <= min < max <= 1e+09, got [9000,100]");
+  EXPECT_EQ(Refusal(R"({"tension_range": [-1, 100]})"),
+            "tension_range: expected [min, max] in N with 0 <= min < max <= 1e+09, got [-1,100]");
+  EXPECT_EQ(Refusal(R"({"tension_range": [0, 1, 2]})"),
+            "tension_range: expected [min, max] in N with 0 <= min < max <= 1e+09, got [0,1,2]");
+}
+
+TEST(ParseControl, NoDrivenEndRefusesItsControls) {
+  ControlLimits l = Limits();
+  l.has_driven_end = false;
+  const std::string why =
+      "the scene has no driven end (an end with motion = \"trochoid\" or \"table\")";
+  EXPECT_EQ(Refusal(R"({"amplitude_scale": 1})", l), "amplitude_scale: " + why);
+  EXPECT_EQ(Refusal(R"({"period": 10})", l), "period: " + why);
+  EXPECT_NO_THROW(ParseControl(R"({"current": 1})", l));
+}
+
+TEST(ParseControl, ARefusalIsWhole) {
+  // A bad field after good ones refuses the request: nothing of it is applied by the caller
+  // because nothing is returned.
+  EXPECT_EQ(Refusal(R"({"pause": true, "speed": 99})"),
+            "speed: expected a number in [0.1, 10] (simulated seconds per second), got 99");
+}
+
+}  // namespace
+}  // namespace cablefilm
