@@ -5,7 +5,9 @@
 #include <string>
 
 #include "app/commands.h"
+#ifdef CABLEFILM_LIVE
 #include "app/live_command.h"
+#endif
 #include "core/error.h"
 
 namespace {
@@ -50,6 +52,7 @@ double ParseNumber(const std::string& option, const char* text) {
   return v;
 }
 
+#ifdef CABLEFILM_LIVE
 int LiveMain(int argc, char** argv) {
   std::string scene;
   cablefilm::LiveCommandOptions options;
@@ -108,6 +111,7 @@ int LiveMain(int argc, char** argv) {
     return 1;
   }
 }
+#endif
 
 }  // namespace
 
@@ -118,7 +122,14 @@ int main(int argc, char** argv) {
     std::printf("%s", kUsage);
     return 0;
   }
-  if (command == "live") return LiveMain(argc, argv);
+  if (command == "live") {
+#ifdef CABLEFILM_LIVE
+    return LiveMain(argc, argv);
+#else
+    std::fprintf(stderr, "cablefilm: this build has no live view (configured with CABLEFILM_RENDER=OFF)\n");
+    return 2;
+#endif
+  }
   const bool runs = command == "run" || command == "compare";
   if (!runs && command != "check") UsageError("unknown command \"" + command + "\"");
   std::string scene;

@@ -203,6 +203,7 @@ void LiveSession::ApplyPending() {
   }
   for (LiveMarker& m : markers) history_.AddMarker(m.t, std::move(m.label));
   if (applied > seq_applied_) seq_applied_ = applied;
+  ++state_version_;  // viewers hear of an applied control at once
   PublishLocked();
 }
 
@@ -248,7 +249,7 @@ void LiveSession::SimulationLoop() {
     }
     std::lock_guard<std::mutex> lock(mu_);
     if (!blow_up.empty()) {
-      error_ = blow_up + "; paused: restart, or change the sea back";
+      error_ = blow_up + "; paused: restart to go on";
       paused_ = true;
       ++state_version_;
       continue;
@@ -271,8 +272,7 @@ void LiveSession::PublishLocked() {
   tension_end_ = T[T.size() - 1];
   tension_max_ = T.maxCoeff(&link);
   link_max_ = static_cast<int>(link);
-  ++input_version_;
-  ++state_version_;
+  ++input_version_;  // the state's numbers change every frame: they go out at its pace, not each
   render_cv_.notify_one();
 }
 

@@ -66,7 +66,9 @@ class LiveSession {
   };
   Reply Control(const std::string& body);
   std::string StateJson() const;
-  std::uint64_t state_version() const { return state_version_; }  // changes with the state
+  // Changes with what a viewer acts on (controls applied, pause, errors, recordings), not
+  // with every frame's numbers.
+  std::uint64_t state_version() const { return state_version_; }
 
   std::shared_ptr<const LiveFrame> NewestFrame() const;
   // The first frame numbered above `after`, waiting up to `timeout`; null on timeout or stop.

@@ -1,0 +1,355 @@
+// cablefilm live: shows the server's JPEG frames and state, sends controls back.
+// Frames and state come over the WebSocket /ws; without one the page polls /state and
+// /frame.jpg. Controls go over the WebSocket when it is open, else POST /control.
+'use strict';
+
+const $ = (id) => document.getElementById(id);
+const body = document.body;
+const img = $('frame');
+
+const COLORMAPS = {  // CSS approximations of the server's maps, for the colour bar only
+  viridis: ['#440154', '#414487', '#2a788e', '#22a884', '#7ad151', '#fde725'],
+  cividis: ['#00224e', '#35456c', '#666970', '#948e77', '#c8b866', '#fee838'],
+  magma: ['#000004', '#3b0f70', '#8c2981', '#de4968', '#fe9f6d', '#fcfdbf'],
+  inferno: ['#000004', '#420a68', '#932667', '#dd513a', '#fca50a', '#fcffa4'],
+  plasma: ['#0d0887', '#6a00a8', '#b12a90', '#e16462', '#fca636', '#f0f921'],
+};
+const HEADER_BYTES = 24;  // uint64 frame, float64 t, uint64 control sequence (little endian)
+const POLL_MS = 200;
+
+let state = null;          // the newest state from the server
+let ws = null;
+let wsOpened = false;      // has any WebSocket connection ever opened
+let retryMs = 500;         // reconnection backoff, doubled up to 8 s
+let pollTimer = null;
+const pending = [];        // resolvers of controls sent over the WebSocket, answered in order
+
+// ---- formatting -------------------------------------------------------------------------
+const kN = (n) => (n == null ? '–' : (n / 1000).toFixed(2) + ' kN');
+const secs = (s) => (s == null ? '–' : s.toFixed(2) + ' s');
+const fmt = {
+  speed: (v) => v.toFixed(v < 1 ? 2 : 1) + '×',
+  amplitude_scale: (v) => v.toFixed(2) + '×',
+  period: (v) => v.toFixed(1) + ' s',
+  current: (v) => (v > 0 ? '+' : '') + v.toFixed(2) + ' m/s',
+};
+
+// ---- frames -----------------------------------------------------------------------------
+// A frame that arrives while the previous one is still decoding replaces the queued one:
+// the picture never falls behind, and the dataset describes the frame on screen. A frame
+// the same as the last (same number and control sequence: sent again while paused) is
+// counted but not decoded again, so a paused picture stays exactly still.
+let received = 0;
+let decoding = false;
+let queued = null;         // {blob, key, frame, t}
+let lastKey = null;
+let shownUrl = null;
+let onScreen = null;
+const fpsTimes = [];
+
+function showFrame(blob, frame, t, seq) {
+  received += 1;
+  const key = frame + ':' + seq;
+  if (key === lastKey) {
+    if (!decoding) body.dataset.frames = received;
+    return;
+  }
+  lastKey = key;
+  queued = { blob, frame, t };
+  if (!decoding) nextFrame();
+}
+
+// Each frame is decoded off screen first, then shown: the visible image never goes blank
+// (nor its naturalWidth to 0) while the next one loads.
+const loader = new Image();
+
+function nextFrame() {
+  if (!queued) { decoding = false; return; }
+  decoding = true;
+  onScreen = queued;
+  queued = null;
+  loader.src = URL.createObjectURL(onScreen.blob);
+  loader.decode().then(onDecoded, () => {
+    URL.revokeObjectURL(loader.src);
+    nextFrame();
+  });
+}
+
+function onDecoded() {
+  img.src = loader.src;  // already decoded: shown at once
+  if (shownUrl) URL.revokeObjectURL(shownUrl);
+  shownUrl = loader.src;
+  body.dataset.frames = received;
+  if (onScreen.frame != null) body.dataset.lastFrame = onScreen.frame;
+  if (onScreen.t != null) { body.dataset.t = onScreen.t; $('t').textContent = secs(onScreen.t); }
+  $('placeholder').hidden = true;
+  const now = performance.now();
+  fpsTimes.push(now);
+  while (fpsTimes.length && fpsTimes[0] < now - 2000) fpsTimes.shift();
+  nextFrame();
+}
+
+function onBinary(buf) {
+  if (buf.byteLength <= HEADER_BYTES) return;
+  const view = new DataView(buf);
+  const frame = Number(view.getBigUint64(0, true));
+  const t = view.getFloat64(8, true);
+  const seq = Number(view.getBigUint64(16, true));
+  showFrame(new Blob([buf.slice(HEADER_BYTES)], { type: 'image/jpeg' }), frame, t, seq);
+}
+
+// ---- state ------------------------------------------------------------------------------
+function applyState(s) {
+  state = s;
+  body.dataset.states = Number(body.dataset.states) + 1;
+  body.dataset.paused = s.paused;
+  if (s.title) { $('title').textContent = s.title; document.title = s.title + ' · cablefilm live'; }
+  $('viewers').textContent = s.viewers > 1 ? s.viewers + ' viewers' : '';
+  if (s.width && s.height) img.parentElement.style.setProperty('--aspect', s.width + ' / ' + s.height);
+  if (!wsOpen() && !onScreen) $('t').textContent = secs(s.t);  // polling: t comes with the state
+  $('frame-note').textContent = (s.paused ? 'paused at frame ' : 'frame ') + s.frame;
+  const T = s.tension || {};
+  $('t-start').textContent = kN(T.start);
+  $('t-end').textContent = kN(T.end);
+  $('t-max').textContent = kN(T.max);
+  $('t-max-link').textContent = T.link_max == null ? '' : 'in link ' + T.link_max;
+  const P = s.peak || {};
+  $('peak').textContent = kN(P.value);
+  $('peak-where').textContent = P.t == null ? '' : 'at ' + P.t.toFixed(1) + ' s · link ' + P.link;
+  const delivered = fpsTimes.length > 1
+    ? (fpsTimes.length - 1) * 1000 / (fpsTimes[fpsTimes.length - 1] - fpsTimes[0]) : 0;
+  $('fps').textContent = (s.paused ? 0 : delivered).toFixed(1);
+  $('fps-server').textContent = ' / ' + (s.fps ?? 0).toFixed(0);
+  $('realtime').textContent = (s.realtime ?? 0).toFixed(2) + '×';
+
+  const pause = $('pause');
+  pause.textContent = s.paused ? 'Resume' : 'Pause';
+  pause.setAttribute('aria-pressed', String(s.paused));
+  $('step').disabled = !s.paused;
+
+  const L = s.limits || {};
+  setSlider('speed', s.speed, L.speed);
+  setSlider('amplitude', s.amplitude_scale, L.amplitude_scale);
+  setSlider('current', s.current, L.current);
+  $('period-row').hidden = !s.has_period;
+  $('period').disabled = !s.has_period;
+  if (s.has_period) setSlider('period', s.period, L.period);
+
+  const select = $('colormap');
+  const names = (s.colormaps || [s.colormap]).join();
+  if (select.dataset.names !== names) {
+    select.replaceChildren(...(s.colormaps || [s.colormap]).map((n) => new Option(n, n)));
+    select.dataset.names = names;
+  }
+  if (!select.dataset.busy) select.value = s.colormap;
+  const stops = COLORMAPS[s.colormap] || COLORMAPS.viridis;
+  $('colorbar').style.background = `linear-gradient(90deg, ${stops.join(', ')})`;
+  const R = s.range || {};
+  $('range-min').textContent = kN(R.min);
+  $('range-max').textContent = kN(R.max);
+  const lock = $('lock-range');
+  if (!lock.dataset.busy) lock.checked = !!R.locked;
+
+  const rec = $('record');
+  rec.classList.toggle('recording', !!s.recording);
+  rec.setAttribute('aria-pressed', String(!!s.recording));
+  $('record-label').textContent = s.recording ? 'Stop recording' : 'Record film';
+  const list = $('recordings');
+  const recs = s.recordings || [];
+  if (list.dataset.key !== JSON.stringify(recs)) {
+    list.dataset.key = JSON.stringify(recs);
+    list.replaceChildren(...recs.map((r) => {
+      const li = document.createElement('li');
+      const a = document.createElement('a');
+      a.href = r.url; a.download = r.name; a.textContent = r.name;
+      const n = document.createElement('span');
+      n.className = 'dim';
+      n.textContent = r.frames + ' frames';
+      li.append(a, n);
+      return li;
+    }));
+  }
+}
+
+// Sliders marked data-log move in log10 of the value (speed, period).
+// A slider the user is moving (data-busy) is left alone until the server has answered.
+function setSlider(id, value, limits) {
+  const el = $(id);
+  const pos = (v) => ('log' in el.dataset ? Math.log10(v) : v);
+  if (limits) { el.min = pos(limits[0]); el.max = pos(limits[1]); }
+  if (value == null || el.dataset.busy) return;
+  el.value = pos(value);
+  $(id + '-out').textContent = fmt[el.dataset.field](value);
+}
+
+// ---- controls ---------------------------------------------------------------------------
+function wsOpen() { return ws && ws.readyState === WebSocket.OPEN; }
+
+// Sends one control object; resolves to the new state, or rejects with the server's error.
+async function sendControl(control) {
+  let reply;
+  if (wsOpen()) {
+    reply = await new Promise((resolve) => {
+      pending.push(resolve);
+      ws.send(JSON.stringify(control));
+    });
+  } else {
+    const r = await fetch('/control', {
+      method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify(control),
+    });
+    const j = await r.json().catch(() => ({ error: 'HTTP ' + r.status }));
+    reply = r.ok ? { ok: true, state: j } : { ok: false, error: j.error || 'HTTP ' + r.status };
+  }
+  if (!reply.ok) throw new Error(reply.error || 'control refused');
+  return reply.state;
+}
+
+// Sends a control and shows the outcome; done() runs first, before the state is applied.
+function control(obj, done = () => {}) {
+  return sendControl(obj)
+    .then((s) => { done(); showMessage(''); if (s) applyState(s); })
+    .catch((e) => {
+      done();
+      showMessage(e.message, true);
+      if (state) applyState(state);  // put the controls back where the server has them
+    });
+}
+
+let messageTimer = null;
+function showMessage(text, isError) {
+  const m = $('message');
+  clearTimeout(messageTimer);
+  m.hidden = !text;
+  m.textContent = text;
+  m.classList.toggle('error', !!isError);
+  if (text) messageTimer = setTimeout(() => { m.hidden = true; }, 8000);
+}
+
+// Sliders: the label follows the thumb; the value goes out at most every 200 ms while
+// dragging ('input') and once more on release ('change'). A slider being dragged or waiting
+// for its answer is marked data-busy, and state updates leave it alone.
+function sliderValue(el) {
+  const v = Number(el.value);
+  if (!('log' in el.dataset)) return v;
+  const lo = Math.pow(10, Number(el.min));  // keep the ends exact despite rounding
+  const hi = Math.pow(10, Number(el.max));
+  return Math.min(hi, Math.max(lo, Number(Math.pow(10, v).toPrecision(3))));
+}
+document.querySelectorAll('input[type=range]').forEach((el) => {
+  let held = false;
+  let inflight = 0;
+  let timer = null;
+  let last = 0;
+  const mark = () => { if (held || inflight) el.dataset.busy = '1'; else delete el.dataset.busy; };
+  const send = () => {
+    clearTimeout(timer); timer = null;
+    last = performance.now();
+    inflight += 1; mark();
+    control({ [el.dataset.field]: sliderValue(el) }, () => { inflight -= 1; mark(); });
+  };
+  el.addEventListener('input', () => {
+    held = true; mark();
+    $(el.id + '-out').textContent = fmt[el.dataset.field](sliderValue(el));
+    if (!timer) timer = setTimeout(send, Math.max(0, 200 - (performance.now() - last)));
+  });
+  el.addEventListener('change', () => { held = false; send(); });
+});
+
+function togglePause() { if (state) control({ pause: !state.paused }); }
+function step() { if (state && state.paused) control({ step: true }); }
+function restart() { control({ restart: true }); }
+
+$('pause').addEventListener('click', togglePause);
+$('step').addEventListener('click', step);
+$('restart').addEventListener('click', restart);
+for (const [id, make] of [['colormap', (el) => ({ colormap: el.value })],
+                          ['lock-range', (el) => ({ lock_range: el.checked })]]) {
+  const el = $(id);
+  el.addEventListener('change', () => {
+    el.dataset.busy = '1';
+    control(make(el), () => delete el.dataset.busy);
+  });
+}
+$('record').addEventListener('click', () => control({ record: !(state && state.recording) }));
+
+document.addEventListener('keydown', (e) => {
+  const tag = e.target.tagName;
+  const typing = tag === 'TEXTAREA' || tag === 'SELECT' || e.target.isContentEditable ||
+    (tag === 'INPUT' && !['range', 'checkbox', 'button'].includes(e.target.type));
+  if (typing || e.ctrlKey || e.metaKey || e.altKey || e.repeat) return;
+  if (e.key === ' ') { e.preventDefault(); togglePause(); }  // also stops a focused button's click
+  else if (e.key === 'r' || e.key === 'R') { e.preventDefault(); restart(); }
+  else if (e.key === '.') { e.preventDefault(); step(); }
+});
+
+// ---- connection -------------------------------------------------------------------------
+function setStatus(kind, text) {
+  const s = $('status');
+  s.dataset.state = kind;
+  s.textContent = text;
+  body.dataset.transport = { live: 'websocket', polling: 'polling', retrying: 'polling' }[kind] || 'none';
+}
+
+function connect() {
+  if (!('WebSocket' in window)) { startPolling(); return; }
+  ws = new WebSocket((location.protocol === 'https:' ? 'wss://' : 'ws://') + location.host + '/ws');
+  ws.binaryType = 'arraybuffer';
+  ws.onopen = () => {
+    wsOpened = true;
+    retryMs = 500;
+    stopPolling();
+    setStatus('live', 'live');
+  };
+  ws.onmessage = (e) => {
+    if (typeof e.data !== 'string') { onBinary(e.data); return; }
+    let msg;
+    try { msg = JSON.parse(e.data); } catch { return; }
+    if (msg.type === 'reply') { const resolve = pending.shift(); if (resolve) resolve(msg); }
+    else if (msg.type === 'state') applyState(msg);
+  };
+  ws.onclose = () => {
+    ws = null;
+    pending.splice(0).forEach((resolve) => resolve({ ok: false, error: 'connection lost' }));
+    startPolling();  // keeps the page alive meanwhile, and is all there is without /ws
+    if (wsOpened && !pollFailures) setStatus('retrying', 'reconnecting…');
+    setTimeout(connect, retryMs);
+    retryMs = Math.min(retryMs * 2, 8000);
+  };
+}
+
+// Returns the delay before the next poll: longer and longer while the server is unreachable.
+let pollFailures = 0;
+async function pollOnce() {
+  try {
+    const s = await (await fetch('/state', { cache: 'no-store' })).json();
+    applyState(s);
+    if (s.frame + ':' + s.seq !== lastKey) {
+      const r = await fetch('/frame.jpg?n=' + s.frame, { cache: 'no-store' });
+      if (r.ok) showFrame(await r.blob(), s.frame, s.t, s.seq);
+    }
+    if (!wsOpen()) setStatus(wsOpened ? 'retrying' : 'polling', wsOpened ? 'reconnecting…' : 'polling');
+    pollFailures = 0;
+    return POLL_MS;
+  } catch {
+    setStatus('offline', 'server unreachable');
+    $('placeholder-text').textContent = 'Connection lost: retrying…';
+    $('fps').textContent = '–';
+    pollFailures += 1;
+    return Math.min(8000, POLL_MS * 2 ** pollFailures);
+  }
+}
+
+function startPolling() {
+  if (pollTimer) return;
+  const loop = async () => {
+    const delay = await pollOnce();
+    if (pollTimer) pollTimer = setTimeout(loop, delay);
+  };
+  pollTimer = setTimeout(loop, 0);
+}
+
+function stopPolling() { clearTimeout(pollTimer); pollTimer = null; }
+
+window.cablefilm = { sendControl, control, get state() { return state; } };  // for tests and the console
+connect();

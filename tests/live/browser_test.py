@@ -1,0 +1,482 @@
+#!/usr/bin/python3
+"""Real-browser test of `cablefilm live`: the page, its WebSocket, its controls.
+
+    /usr/bin/python3 tests/live/browser_test.py --cablefilm ./build/cablefilm \\
+        --scene scenes/polachek1963.toml --out-dir /tmp/live-test [--screenshots DIR]
+
+Starts the server on a free port, drives Debian's headless chromium through selenium and
+checks, waiting on the page's body dataset (frames, lastFrame, t, states) rather than sleeping:
+  1. load: nothing requested outside the server; the first frame arrives over the WebSocket
+  2. frames: t increases and the picture changes
+  3. pause: /state says paused; the picture holds still; step advances one frame
+  4. amplitude: the slider reaches /state; a refused value shows the server's error; after
+     resuming the picture changes
+  5. keyboard: Space pauses and resumes, R restarts
+  6. record: a film is recorded and its download link works
+  7. layout: at 1400x900 and 1000x700 nothing overlaps or overflows sideways
+  8. serving: every route still answers, no console errors; SIGTERM exits 0 and the page says so
+Prints one line per check and `N passed, M failed`; exits 1 on any failure.
+"""
+import argparse
+import base64
+import json
+import os
+import queue
+import re
+import signal
+import struct
+import subprocess
+import sys
+import threading
+import time
+import urllib.error
+import urllib.request
+import zlib
+
+from selenium import webdriver
+from selenium.common.exceptions import TimeoutException, WebDriverException
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import WebDriverWait
+
+READY = re.compile(r'live view at (https?://[^\s/]+)/?\s*$')
+CSV_HEADER = 't,x_end,y_end,tension_start,tension_end,tension_max,link_max'
+
+
+class Failure(Exception):
+    pass
+
+
+# ---- PNG decoding (stdlib only), to compare element screenshots pixel by pixel -------------
+def png_pixels(data):
+    """Returns (width, height, pixel bytes) of an 8-bit PNG."""
+    if data[:8] != b'\x89PNG\r\n\x1a\n':
+        raise Failure('screenshot is not a PNG')
+    pos, idat = 8, []
+    while pos < len(data):
+        n, kind = struct.unpack('>I4s', data[pos:pos + 8])
+        chunk = data[pos + 8:pos + 8 + n]
+        pos += 12 + n
+        if kind == b'IHDR':
+            w, h, depth, ctype = struct.unpack('>IIBB', chunk[:10])
+        elif kind == b'IDAT':
+            idat.append(chunk)
+    bpp = {0: 1, 2: 3, 4: 2, 6: 4}[ctype]
+    if depth != 8:
+        raise Failure('screenshot PNG has bit depth %d' % depth)
+    raw, stride = zlib.decompress(b''.join(idat)), w * bpp
+    out, prev = bytearray(), bytearray(stride)
+    for y in range(h):
+        f = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        if f == 1:
+            for i in range(bpp, stride):
+                line[i] = (line[i] + line[i - bpp]) & 255
+        elif f == 2:
+            line = bytearray((a + b) & 255 for a, b in zip(line, prev))
+        elif f == 3:
+            for i in range(stride):
+                line[i] = (line[i] + ((line[i - bpp] if i >= bpp else 0) + prev[i]) // 2) & 255
+        elif f == 4:
+            for i in range(stride):
+                a = line[i - bpp] if i >= bpp else 0
+                b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        out += line
+        prev = line
+    return w, h, bytes(out), bpp
+
+
+def compare(png_a, png_b):
+    """How two PNG screenshots differ: (fraction of pixels, description)."""
+    if png_a == png_b:
+        return 0.0, 'identical'
+    wa, ha, a, bpp = png_pixels(png_a)
+    wb, hb, b, _ = png_pixels(png_b)
+    if (wa, ha) != (wb, hb):
+        return 1.0, 'sizes %dx%d and %dx%d' % (wa, ha, wb, hb)
+    differ = [i for i in range(0, len(a), bpp) if a[i:i + bpp] != b[i:i + bpp]]
+    if not differ:
+        return 0.0, 'identical pixels'
+    xs, ys = [i // bpp % wa for i in differ], [i // bpp // wa for i in differ]
+    delta = max(abs(a[i + k] - b[i + k]) for i in differ for k in range(bpp))
+    return len(differ) / (wa * ha), '%d pixels in x %d-%d, y %d-%d, up to %d levels apart' % (
+        len(differ), min(xs), max(xs), min(ys), max(ys), delta)
+
+
+# ---- the server ---------------------------------------------------------------------------
+class Server:
+    def __init__(self, args):
+        os.makedirs(args.out_dir, exist_ok=True)
+        self.log_path = os.path.join(args.out_dir, 'server.log')
+        self.log = open(self.log_path, 'w')
+        cmd = [args.cablefilm, 'live', args.scene, '--port', '0', '--size', '640x360', '--out', args.out_dir]
+        print('starting:', ' '.join(cmd), flush=True)
+        self.proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=self.log, text=True)
+        self.lines = queue.Queue()
+        threading.Thread(target=self._read_stdout, daemon=True).start()
+        deadline = time.monotonic() + args.start_timeout
+        while True:
+            try:
+                line = self.lines.get(timeout=max(0.0, deadline - time.monotonic()))
+            except queue.Empty:
+                self.stop()
+                raise Failure('no "live view at http://..." line on stdout after %g s; its log:\n%s'
+                              % (args.start_timeout, self.tail()))
+            if line is None:
+                raise Failure('the server exited (status %s) before it was ready; its log:\n%s'
+                              % (self.proc.wait(), self.tail()))
+            m = READY.search(line)
+            if m:
+                self.origin = m.group(1)
+                print('server ready at', self.origin, flush=True)
+                return
+
+    def _read_stdout(self):
+        for line in self.proc.stdout:
+            self.log.write('[stdout] ' + line)
+            self.log.flush()
+            self.lines.put(line)
+        self.lines.put(None)
+
+    def tail(self, n=15):
+        self.log.flush()
+        with open(self.log_path, errors='replace') as f:
+            return ''.join(f.readlines()[-n:])
+
+    def stop(self):
+        if self.proc.poll() is None:
+            self.proc.kill()
+            self.proc.wait()
+
+
+def http_get(url, timeout=15):
+    with urllib.request.urlopen(url, timeout=timeout) as r:
+        return r.status, r.headers.get('Content-Type', ''), r.read()
+
+
+# ---- the test -----------------------------------------------------------------------------
+class BrowserTest:
+    def __init__(self, args, server):
+        self.args, self.server, self.origin = args, server, server.origin
+        self.timeout = args.timeout
+        opts = webdriver.ChromeOptions()
+        opts.binary_location = args.chromium
+        for a in ('--headless=new', '--no-sandbox', '--disable-gpu', '--window-size=1400,900'):
+            opts.add_argument(a)
+        opts.set_capability('goog:loggingPrefs', {'browser': 'ALL'})
+        self.driver = webdriver.Chrome(service=Service(args.chromedriver), options=opts)
+        self.driver.set_page_load_timeout(self.timeout)
+
+    # helpers
+    def state(self):
+        return json.loads(http_get(self.origin + '/state')[2])
+
+    def ds(self, key):
+        return self.driver.execute_script('return document.body.dataset[arguments[0]]', key)
+
+    def num(self, key, default=-1.0):
+        v = self.ds(key)
+        return float(v) if v not in (None, '') else default
+
+    def wait(self, condition, what, timeout=None):
+        try:
+            return WebDriverWait(self.driver, timeout or self.timeout, poll_frequency=0.1).until(
+                lambda _: condition())
+        except TimeoutException:
+            dataset = self.driver.execute_script('return JSON.stringify(document.body.dataset)')
+            raise Failure('timed out after %g s waiting for %s (page: %s)' % (timeout or self.timeout, what, dataset))
+
+    def frame_png(self):
+        return self.driver.find_element(By.ID, 'frame').screenshot_as_png
+
+    def text(self, id_):
+        return self.driver.find_element(By.ID, id_).text
+
+    def click(self, id_):
+        self.driver.find_element(By.ID, id_).click()
+
+    def screenshot(self, name):
+        if not self.args.screenshots:
+            return
+        os.makedirs(self.args.screenshots, exist_ok=True)
+        shot = self.driver.execute_cdp_cmd('Page.captureScreenshot', {'format': 'png', 'captureBeyondViewport': True})
+        path = os.path.join(self.args.screenshots, name + '.png')
+        with open(path, 'wb') as f:
+            f.write(base64.b64decode(shot['data']))
+
+    def keep(self, name, png):
+        with open(os.path.join(self.args.out_dir, name), 'wb') as f:
+            f.write(png)
+
+    def wait_frames(self, count, what):
+        """Waits for `count` more frames and a later t; returns the new t."""
+        f0, t0 = self.num('frames'), self.num('t')
+        self.wait(lambda: self.num('frames') >= f0 + count and self.num('t') > t0, what)
+        return self.num('t')
+
+    def wait_still(self):
+        """Waits until t has not changed for 1 s of polling and 3 state messages."""
+        seen = {'t': None}
+        def still():
+            t, states, now = self.ds('t'), self.num('states'), time.monotonic()
+            if t != seen['t']:
+                seen.update(t=t, states=states, since=now)
+                return False
+            return now - seen['since'] >= 1.0 and states >= seen['states'] + 3
+        self.wait(still, 't to stop changing')
+        return float(seen['t'])
+
+    # 1
+    def check_load(self):
+        self.driver.get(self.origin + '/')
+        self.wait(lambda: self.num('frames') >= 1, 'the first frame')
+        self.wait(lambda: self.driver.execute_script(
+            'return document.getElementById("frame").naturalWidth') > 0, '#frame to have a natural width')
+        self.wait(lambda: self.ds('transport') == 'websocket', 'the WebSocket (the page fell back to polling?)')
+        names = self.driver.execute_script(
+            "return performance.getEntriesByType('navigation').concat("
+            "performance.getEntriesByType('resource')).map(e => e.name)")
+        foreign = [n for n in names if not (n.startswith(self.origin + '/') or n.startswith('blob:' + self.origin + '/'))]
+        if foreign:
+            raise Failure('requests outside the server: %s' % foreign)
+        width = self.driver.execute_script('return document.getElementById("frame").naturalWidth')
+        self.screenshot('01-loaded')
+        return '%d requests, all to %s; first frame %s px wide' % (len(names), self.origin, width)
+
+    # 2
+    def check_frames_change(self):
+        t0, a = self.num('t'), self.frame_png()
+        t1 = self.wait_frames(10, '10 more frames')
+        b = self.frame_png()
+        d, _ = compare(a, b)
+        if d == 0:
+            self.keep('frames-a.png', a), self.keep('frames-b.png', b)
+            raise Failure('the picture did not change from t = %g to %g s' % (t0, t1))
+        self.screenshot('02-running')
+        return 't %.3f -> %.3f s, %.1f %% of pixels changed' % (t0, t1, 100 * d)
+
+    # 3
+    def check_pause(self):
+        self.click('pause')
+        self.wait(lambda: self.state()['paused'] is True, '/state to say paused')
+        self.wait(lambda: self.text('pause') == 'Resume' and self.ds('paused') == 'true',
+                  'the page to show it is paused')
+        t_page = self.wait_still()
+        t_state = self.state()['t']
+        a = self.frame_png()
+        n0 = self.num('states')
+        self.wait(lambda: self.num('states') >= n0 + 3, '3 more state messages')
+        b = self.frame_png()
+        if self.state()['t'] != t_state:
+            raise Failure('/state t moved while paused: %g -> %g' % (t_state, self.state()['t']))
+        d, how = compare(a, b)
+        if d:
+            self.keep('paused-a.png', a), self.keep('paused-b.png', b)
+            raise Failure('the picture changed while paused: %s (kept in %s/paused-[ab].png)' % (
+                how, self.args.out_dir))
+        self.screenshot('03-paused')
+        # one step while paused
+        frame0 = self.num('lastFrame')
+        self.wait(lambda: self.driver.find_element(By.ID, 'step').is_enabled(), '#step to be enabled')
+        self.click('step')
+        self.wait(lambda: self.num('lastFrame') > frame0 and float(self.ds('t')) > t_page, 'a stepped frame')
+        if not self.state()['paused']:
+            raise Failure('a step resumed the simulation')
+        return 'paused at t = %.3f s (state %.3f s); still picture; step -> t = %.3f s' % (
+            t_page, t_state, self.num("t"))
+
+    # 4
+    def check_amplitude(self):
+        s = self.state()
+        lo, hi = s['limits']['amplitude_scale']
+        target = round(lo + 0.8 * (hi - lo), 2)
+        if abs(s['amplitude_scale'] - target) < 1e-9:
+            target = round(lo + 0.3 * (hi - lo), 2)
+        before = self.frame_png()
+        self.driver.execute_script(
+            'const e = document.getElementById("amplitude"); e.value = arguments[0];'
+            'e.dispatchEvent(new Event("change", {bubbles: true}));', target)
+        self.wait(lambda: abs(self.state()['amplitude_scale'] - target) < 1e-6 * max(1, target),
+                  '/state amplitude_scale = %g' % target)
+        self.wait(lambda: self.text('amplitude-out') == '%.2f×' % target, 'the page to show amplitude %g' % target)
+        # a refused control: the page shows the server's message, nothing changes
+        speed = self.state()['speed']
+        self.driver.execute_script('window.cablefilm.control({speed: 50})')
+        self.wait(lambda: 'speed' in self.text('message'), 'the error message about speed')
+        if self.state()['speed'] != speed:
+            raise Failure('a refused speed changed the speed')
+        message = self.text('message')
+        self.screenshot('04-error-message')
+        # resume: the picture moves on
+        self.click('pause')
+        self.wait(lambda: self.state()['paused'] is False, '/state to say running')
+        t1 = self.wait_frames(10, '10 frames after resuming')
+        after = self.frame_png()
+        d, _ = compare(before, after)
+        if d == 0:
+            raise Failure('the picture did not change after the amplitude change and resuming')
+        self.screenshot('04-amplitude')
+        return 'amplitude_scale -> %g; error shown: "%s"; t = %.3f s, %.1f %% of pixels changed' % (
+            target, message, t1, 100 * d)
+
+    # 5
+    def check_keyboard(self):
+        keys = lambda k: self.driver.find_element(By.TAG_NAME, 'body').send_keys(k)
+        paused = self.state()['paused']
+        keys(' ')
+        self.wait(lambda: self.state()['paused'] is (not paused), 'Space to toggle pause')
+        keys(' ')
+        self.wait(lambda: self.state()['paused'] is paused, 'Space to toggle pause back')
+        self.wait_frames(5, 'frames before the restart')
+        t0 = self.state()['t']
+        keys('r')
+        self.wait(lambda: self.state()['t'] < t0, 'R to restart (t back below %.3f s)' % t0)
+        self.wait_frames(5, 'frames after the restart')
+        return 'Space paused and resumed; R restarted from t = %.3f s' % t0
+
+    # 6
+    def check_record(self):
+        self.click('record')
+        self.wait(lambda: self.state()['recording'] is True, '/state to say recording')
+        self.wait(lambda: self.driver.find_element(By.ID, 'record').get_attribute('aria-pressed') == 'true',
+                  'the record button to show recording')
+        self.screenshot('06-recording')
+        self.wait_frames(15, '15 frames while recording')
+        before = len(self.state()['recordings'])
+        self.click('record')
+        self.wait(lambda: not self.state()['recording'] and len(self.state()['recordings']) > before,
+                  '/state to list the new recording')
+        rec = self.state()['recordings'][-1]
+        link = self.wait(lambda: self.driver.execute_script(
+            'const a = [...document.querySelectorAll("#recordings a")].pop(); return a && a.href'),
+            'the download link')
+        if not link.endswith(rec['url']):
+            raise Failure('the newest link is %s, /state says %s' % (link, rec['url']))
+        status, ctype, body = http_get(link, timeout=60)
+        if status != 200 or len(body) < 100 or body[4:8] != b'ftyp':
+            raise Failure('%s: status %d, %d bytes, not an MP4' % (link, status, len(body)))
+        self.screenshot('06-recorded')
+        return '%s, %d frames, %d bytes' % (rec['name'], rec['frames'], len(body))
+
+    # 7
+    def check_layout(self):
+        notes = []
+        for w, h in ((1000, 700), (1400, 900)):
+            self.driver.set_window_size(w, h)
+            self.wait(lambda: self.driver.execute_script('return window.outerWidth') == w, 'the resize')
+            self.wait_frames(2, 'frames after resizing')
+            r = self.driver.execute_script('''
+                const box = (s) => { const r = document.querySelector(s).getBoundingClientRect();
+                                     return [r.left, r.top, r.right, r.bottom]; };
+                return {frame: box('.frame-box'), stats: box('.stats'), panel: box('.panel'),
+                        header: box('.top'), vw: innerWidth, sw: document.documentElement.scrollWidth};''')
+            over = lambda a, b: a[0] < b[2] - 0.5 and b[0] < a[2] - 0.5 and a[1] < b[3] - 0.5 and b[1] < a[3] - 0.5
+            for x, y in (('frame', 'stats'), ('frame', 'panel'), ('stats', 'panel'), ('header', 'frame'),
+                         ('header', 'panel')):
+                if over(r[x], r[y]):
+                    raise Failure('at %dx%d %s %s overlaps %s %s' % (w, h, x, r[x], y, r[y]))
+            if r['sw'] > r['vw']:
+                raise Failure('at %dx%d the page is %d px wide in a %d px window' % (w, h, r['sw'], r['vw']))
+            frame_h = r['frame'][3] - r['frame'][1]
+            if frame_h < 0.4 * (r['vw'] * h / w):
+                raise Failure('at %dx%d the frame is only %d px high' % (w, h, frame_h))
+            self.screenshot('07-layout-%dx%d' % (w, h))
+            notes.append('%dx%d frame %dx%d' % (w, h, r['frame'][2] - r['frame'][0], frame_h))
+        return ', '.join(notes)
+
+    # 8
+    def check_serving_and_sigterm(self):
+        o, notes = self.origin, []
+        for path, kind, magic in (('/', 'text/html', b'<!DOCTYPE html>'), ('/app.js', 'javascript', b''),
+                                  ('/style.css', 'text/css', b''), ('/frame.jpg', 'image/', b'\xff\xd8\xff'),
+                                  ('/snapshot.png', 'image/png', b'\x89PNG'), ('/state', 'json', b'{'),
+                                  ('/timeseries.csv', '', CSV_HEADER.encode())):
+            status, ctype, body = http_get(o + path)
+            if self.args.mock and path == '/frame.jpg':
+                magic = b'\x89PNG'  # the mock sends PNGs
+            if status != 200 or kind not in ctype or not body.startswith(magic):
+                raise Failure('%s: status %d, type %r, starts %r' % (path, status, ctype, body[:16]))
+        rows = http_get(o + '/timeseries.csv')[2].decode().strip().split('\n')
+        notes.append('routes ok, %d CSV rows' % (len(rows) - 1))
+        with urllib.request.urlopen(o + '/stream.mjpg', timeout=15) as r:
+            ctype = r.headers.get('Content-Type', '')
+            head = r.read(4096)
+        if 'multipart/x-mixed-replace' not in ctype or b'Content-Type' not in head:
+            raise Failure('/stream.mjpg: type %r, starts %r' % (ctype, head[:60]))
+        self.wait_frames(5, 'frames still arriving')
+        severe = [e['message'] for e in self.driver.get_log('browser') if e['level'] == 'SEVERE']
+        if severe:
+            raise Failure('console errors: %s' % severe)
+        proc = self.server.proc
+        proc.send_signal(signal.SIGTERM)
+        try:
+            rc = proc.wait(timeout=self.timeout)
+        except subprocess.TimeoutExpired:
+            raise Failure('the server did not exit within %g s of SIGTERM' % self.timeout)
+        if rc != 0:
+            raise Failure('the server exited with status %d after SIGTERM' % rc)
+        self.wait(lambda: self.ds('transport') != 'websocket', 'the page to notice the server is gone')
+        status = self.text('status')
+        self.screenshot('08-server-gone')
+        notes.append('SIGTERM -> exit 0; page says "%s"' % status)
+        return '; '.join(notes)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    p.add_argument('--cablefilm', required=True, help='the cablefilm binary')
+    p.add_argument('--scene', required=True)
+    p.add_argument('--out-dir', required=True, help="the server's --out folder; also logs")
+    p.add_argument('--screenshots', help='save full-page screenshots here')
+    p.add_argument('--timeout', type=float, default=30, help='seconds for each wait (default 30)')
+    p.add_argument('--start-timeout', type=float, default=120, help='seconds for the server to be ready')
+    p.add_argument('--chromium', default='/usr/bin/chromium')
+    p.add_argument('--chromedriver', default='/usr/bin/chromedriver')
+    p.add_argument('--mock', action='store_true', help='the server is tests/live/mock_server.py (PNG frames)')
+    args = p.parse_args()
+
+    passed, failed = 0, 0
+    server = test = None
+    try:
+        server = Server(args)
+        test = BrowserTest(args, server)
+        checks = [('load', test.check_load), ('frames change', test.check_frames_change),
+                  ('pause', test.check_pause), ('amplitude', test.check_amplitude),
+                  ('keyboard', test.check_keyboard), ('record', test.check_record), ('layout', test.check_layout),
+                  ('serving and SIGTERM', test.check_serving_and_sigterm)]
+        for name, check in checks:
+            start = time.monotonic()
+            try:
+                note = check()
+                passed += 1
+                print('PASS %-20s %5.1f s  %s' % (name, time.monotonic() - start, note), flush=True)
+            except (Failure, WebDriverException, urllib.error.URLError, OSError, KeyError, ValueError) as e:
+                failed += 1
+                msg = str(e).strip().split('\n')[0] if not isinstance(e, Failure) else str(e)
+                print('FAIL %-20s %5.1f s  %s: %s' % (name, time.monotonic() - start,
+                                                      type(e).__name__, msg), flush=True)
+                if name == 'load':
+                    failed += len(checks) - 1
+                    print('     (the page did not load: the other checks are not run)')
+                    break
+    except (Failure, WebDriverException) as e:
+        failed += 1
+        print('FAIL setup: %s' % e, flush=True)
+    finally:
+        if test:
+            test.driver.quit()
+        if server:
+            server.stop()
+            if failed:
+                print('--- last lines of %s ---\n%s' % (server.log_path, server.tail()), end='')
+    if args.screenshots and passed:
+        print('screenshots in', args.screenshots)
+    print('%d passed, %d failed' % (passed, failed))
+    sys.exit(1 if failed else 0)
+
+
+if __name__ == '__main__':
+    main()
