@@ -4,6 +4,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "app/film_pass.h"
@@ -12,13 +13,19 @@
 #include "app/run_extent.h"
 #include "app/simulation_run.h"
 #include "scene/build_model.h"
+#include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
+#include "scene/text_escape.h"
 
 namespace cablefilm {
 namespace {
 
 std::atomic<int> g_signal{0};
-extern "C" void OnSignal(int sig) { g_signal = sig; }
+// The first signal asks the work to stop cleanly (partial results kept); a second stops at once.
+extern "C" void OnSignal(int sig) {
+  if (g_signal != 0) std::_Exit(128 + sig);
+  g_signal = sig;
+}
 
 void InstallSignalHandlers() {
   std::signal(SIGINT, OnSignal);
@@ -33,7 +40,7 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
   const double cable_mass = m.link_mass.sum();
   double weights = 0;
   for (const WeightDef& w : scene.weights) weights += w.mass;
-  std::printf("scene %s: \"%s\"\n", scene.path.c_str(), scene.title.c_str());
+  std::printf("scene %s: %s\n", EscapeText(scene.path).c_str(), QuoteText(scene.title).c_str());
   std::printf("  %s cable: %d stations, %d links in %zu section(s), unstretched length %.6g m\n",
               ModelName(m), m.stations(), m.links, scene.sections.size(), m.total_length());
   std::printf("  mass %.6g kg (cable %.6g kg, %zu weight(s) %.6g kg), net weight in fluid %.6g N\n",
@@ -95,7 +102,7 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
   PrintSummary(scene, m, grid);
   const auto t0 = std::chrono::steady_clock::now();
   EquilibriumReport eq;
-  CableState initial = MakeInitialState(scene, m, &eq);
+  CableState initial = MakeInitialState(scene, m, &eq, &g_signal);
   const double eq_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   auto integrator = MakeIntegrator(m, grid);
@@ -130,12 +137,13 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
           }
           progress.Update(s.t);
           return g_signal == 0;
-        });
+        }, &g_signal);
   } catch (const BlowUpError& e) {
     progress.Finish();
     series.CommitPartial(partial_path);
     throw Error(std::string(e.what()) + " (" + integrator->name() + ", time step " +
-                std::to_string(grid.dt) + " s); the rows up to then are in " + partial_path);
+                std::to_string(grid.dt) + " s); the rows up to then are in " +
+                EscapeText(partial_path));
   }
   progress.Finish();
   const double wall =
@@ -143,7 +151,7 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
   if (!run.completed) {
     series.CommitPartial(partial_path);
     std::fprintf(stderr, "interrupted at t = %.4g s; rows so far in %s\n", state.t,
-                 partial_path.c_str());
+                 EscapeText(partial_path).c_str());
     return run;
   }
   series.Commit();
@@ -155,7 +163,7 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
   std::printf(", %.3g station-steps/s\n", static_cast<double>(st.steps) * m.stations() / wall);
   std::printf("peak tension %.6g N at t = %.4g s in link %d\n", run.peak, run.peak_t,
               run.peak_link);
-  std::printf("wrote %s\n", series_path.c_str());
+  std::printf("wrote %s\n", EscapeText(series_path).c_str());
   return run;
 }
 
@@ -180,8 +188,25 @@ std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options) {
   const std::string out_dir = options.out_dir.empty() ? "output/" + scene.name : options.out_dir;
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
-  if (ec) throw Error("cannot create the output folder " + out_dir + ": " + ec.message());
+  if (ec)
+    throw Error("cannot create the output folder " + EscapeText(out_dir) + ": " + ec.message());
+  RemoveEarlierResults(out_dir);  // a run's folder never mixes its results with older ones
   return out_dir;
+}
+
+// What the options change of the scene's film, checked before anything is simulated (the
+// loader checked the scene's own [film] keys when its film is on): the film of the run must
+// have from 1 to kMaxFilmFrames frames. `frames_needed`: the run steps through film frames
+// (a film, or compare's max_tension.png).
+void CheckFilmOptions(const SceneDef& scene, const RunOptions& o, bool frames_needed) {
+  if (!frames_needed) return;
+  const double fps = o.fps > 0 ? o.fps : scene.film.fps;
+  const double speed = o.speed > 0 ? o.speed : scene.film.speed;
+  const std::string problem = FilmFramesProblem(
+      RunSpan(scene.simulation.duration, scene.output.interval), fps, speed);
+  if (problem.empty()) return;
+  const std::string key = o.speed > 0 ? "--speed" : o.fps > 0 ? "--fps" : "film.speed";
+  throw Error(EscapeText(scene.path) + ": " + key + ": " + problem);
 }
 
 FilmRun ToFilmRun(const ModelRun& r, const std::string& label) {
@@ -193,16 +218,22 @@ FilmRun ToFilmRun(const ModelRun& r, const std::string& label) {
 int CheckCommand(const std::string& scene_path) {
   const SceneDef scene = LoadScene(scene_path);
   const CableModel m = BuildModel(scene);
+  CheckModelLimits(scene, m);
   PrintSummary(scene, m, ChooseTimeGrid(m, scene.simulation, scene.output.interval));
   std::printf("ok\n");
   return 0;
 }
 
+int InterruptedExitStatus() { return 128 + (g_signal != 0 ? g_signal.load() : SIGINT); }
+
 int RunCommand(const std::string& scene_path, const RunOptions& options) {
   const SceneDef scene = LoadScene(scene_path);
+  CheckFilmOptions(scene, options, options.film >= 0 ? options.film == 1 : scene.output.film);
+  const CableModel model = BuildModel(scene);
+  CheckModelLimits(scene, model);
   const std::string out_dir = PrepareOutDir(scene, options);
   InstallSignalHandlers();
-  const ModelRun run = SimulateToFiles(scene, BuildModel(scene), out_dir, "");
+  const ModelRun run = SimulateToFiles(scene, model, out_dir, "");
   if (!run.completed) return 128 + g_signal;
   const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
   if (!film) return 0;
@@ -213,6 +244,11 @@ int RunCommand(const std::string& scene_path, const RunOptions& options) {
 
 int CompareCommand(const std::string& scene_path, const RunOptions& options) {
   SceneDef scene = LoadScene(scene_path);
+  CheckFilmOptions(scene, options, true);  // max_tension.png is drawn at the film's frames
+  for (const CableModelKind kind : {CableModelKind::kElastic, CableModelKind::kInextensible}) {
+    scene.model = kind;
+    CheckModelLimits(scene, BuildModel(scene));
+  }
   const std::string out_dir = PrepareOutDir(scene, options);
   InstallSignalHandlers();
   scene.model = CableModelKind::kElastic;

@@ -16,6 +16,8 @@ struct RunOptions {
 };
 
 int RunCommand(const std::string& scene_path, const RunOptions& options);
+// The exit status after a signal stopped the work (128 + its number).
+int InterruptedExitStatus();
 int CheckCommand(const std::string& scene_path);
 // Runs the scene with the elastic and the inextensible model: timeseries.csv and
 // timeseries_inextensible.csv, max_tension.png with both (the paper's Figure 1), the film.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/cancel.h"
 #include "render/film_writer.h"
 
 namespace cablefilm {
@@ -120,21 +121,33 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
     writer = std::make_unique<FilmWriter>(o, spec, request.out_dir, static_cast<int>(frames + 1));
   }
   bool finished = true;
-  for (long k = 0; k <= frames; ++k) {
+  std::string failure;  // a blow-up in this pass: the film is then partial too
+  for (long k = 0; k <= frames && failure.empty(); ++k) {
     if (stop != 0) {
       finished = false;
       break;
     }
-    for (size_t r = 0; r < steppers.size(); ++r) {
+    for (size_t r = 0; r < steppers.size() && failure.empty(); ++r) {
       Stepper& st = steppers[r];
       if (k > 0) {
-        for (int i = 0; i < st.grid.steps_per_output; ++i)
-          st.integrator->Step(*runs[r].model, st.state, st.grid.dt);
+        try {
+          for (int i = 0; i < st.grid.steps_per_output; ++i) {
+            ThrowIfCancelled(&stop, "the film");
+            st.integrator->Step(*runs[r].model, st.state, st.grid.dt);
+          }
+        } catch (const CancelledError&) {
+          finished = false;
+          break;
+        } catch (const BlowUpError& e) {
+          failure = std::string(e.what()) + " (" + runs[r].label + " run)";
+          break;
+        }
         st.state.t = k * frame_interval;
       }
       st.trace.t.push_back(st.state.t);
       st.trace.tension.push_back(st.integrator->tensions().maxCoeff());
     }
+    if (!finished || !failure.empty()) break;
     if (!writer) continue;
     CableSnapshot snap = ToSnapshot(steppers[0].state, steppers[0].integrator->tensions());
     if (steppers.size() > 1) {
@@ -146,17 +159,29 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
     }
     writer->Push(std::move(snap));
   }
+  const bool complete = finished && failure.empty();
   if (writer) {
-    writer->Finish();
-    std::printf("wrote %s/film.mp4%s%s\n", request.out_dir.c_str(),
-                request.frames ? " and frames/" : "", finished ? "" : " (interrupted)");
+    if (complete) {
+      writer->Finish();
+      std::printf("wrote %s/film.mp4%s\n", request.out_dir.c_str(),
+                  request.frames ? " and frames/" : "");
+    } else {
+      writer->FinishPartial();  // plays up to the last frame drawn
+      std::printf("wrote %s/film.partial.mp4 (%s at t = %.4g s)\n", request.out_dir.c_str(),
+                  failure.empty() ? "interrupted" : "the film pass failed",
+                  steppers[0].state.t);
+    }
   }
   std::vector<MaxTensionSeries> series;
   for (Stepper& st : steppers) series.push_back(std::move(st.trace));
-  const std::string still = request.out_dir + "/max_tension.png";
+  const std::string still =
+      request.out_dir + (complete ? "/max_tension.png" : "/max_tension.partial.png");
   WriteMaxTensionPng(still, series, 1600, 900, "Maximum tension along the cable: " + scene.title,
                      request.shader_dir);
   std::printf("wrote %s\n", still.c_str());
+  if (!failure.empty())
+    throw Error("the film pass failed: " + failure + "; the film up to then is " +
+                request.out_dir + "/film.partial.mp4");
   return finished;
 }
 

@@ -1,5 +1,10 @@
 #include "app/result_files.h"
 
+#include <filesystem>
+#include <vector>
+
+#include "core/error.h"
+
 namespace cablefilm {
 
 void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const CableState& state,
@@ -13,6 +18,30 @@ void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const Cab
     std::fprintf(f, "\n");
   }
   file.Commit();
+}
+
+void RemoveEarlierResults(const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> stale;
+  for (const char* name :
+       {"equilibrium.csv", "equilibrium_inextensible.csv", "timeseries.csv",
+        "timeseries.partial.csv", "timeseries_inextensible.csv",
+        "timeseries_inextensible.partial.csv", "film.mp4", "film.partial.mp4",
+        "max_tension.png", "max_tension.partial.png"})
+    stale.push_back(fs::path(out_dir) / name);
+  std::error_code ec;
+  const fs::path frames = fs::path(out_dir) / "frames";
+  if (fs::is_directory(frames, ec))
+    for (const auto& entry : fs::directory_iterator(frames, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("frame_", 0) == 0 && entry.path().extension() == ".png")
+        stale.push_back(entry.path());
+    }
+  for (const fs::path& p : stale) {
+    if (!fs::is_regular_file(fs::symlink_status(p, ec))) continue;  // ours are plain files
+    fs::remove(p, ec);
+    if (ec) throw Error("cannot remove the earlier result " + p.string() + ": " + ec.message());
+  }
 }
 
 const char kTimeseriesHeader[] = "t,x_end,y_end,tension_start,tension_end,tension_max,link_max\n";

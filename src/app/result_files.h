@@ -15,6 +15,11 @@ namespace cablefilm {
 void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const CableState& state,
                          const Eigen::VectorXd& tension);
 
+// Removes the result files an earlier run may have left in `out_dir` (only the names a run
+// writes: equilibrium*.csv, timeseries*.csv, film[.partial].mp4, max_tension[.partial].png,
+// frames/frame_*.png), so that stale results never sit beside new ones. Throws Error.
+void RemoveEarlierResults(const std::string& out_dir);
+
 // One row of timeseries.csv, and its header line (shared with the live view's /timeseries.csv).
 extern const char kTimeseriesHeader[];  // with its newline
 void WriteTimeseriesRow(std::FILE* f, const CableModel& m, const CableState& state,

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/explicit_integrator.h"
 #include "core/inextensible.h"
 
 namespace cablefilm {
@@ -25,8 +26,13 @@ TimeGrid ChooseTimeGrid(const CableModel& m, const SimulationDef& sim, double in
     g.error_tolerance =
         sim.tolerance > 0 ? sim.tolerance : kDefaultRelativeTolerance * m.total_length();
   }
-  if (g.automatic && g.kind == IntegratorKind::kInextensible)
-    wanted = interval;  // it splits each step below its own (tension-dependent) stability limit
+  if (g.automatic && g.kind == IntegratorKind::kInextensible) {
+    // Substeps below its (tension-dependent) transverse-wave limit and under the same local
+    // error control as the implicit scheme's, within each output interval.
+    wanted = interval;
+    g.error_tolerance =
+        sim.tolerance > 0 ? sim.tolerance : kDefaultRelativeTolerance * m.total_length();
+  }
   g.steps_per_output = std::max(1, static_cast<int>(std::ceil(interval / wanted - 1e-9)));
   g.dt = interval / g.steps_per_output;
   g.outputs = static_cast<long>(std::floor(sim.duration / interval + 1e-9));
@@ -34,10 +40,12 @@ TimeGrid ChooseTimeGrid(const CableModel& m, const SimulationDef& sim, double in
 }
 
 CableState MakeInitialState(const SceneDef& scene, const CableModel& m,
-                            EquilibriumReport* report) {
+                            EquilibriumReport* report, const CancelFlag* cancel) {
+  EquilibriumOptions options;
+  options.cancel = cancel;
   if (scene.initial == InitialStateKind::kEquilibrium)
     return m.law == LinkLaw::kInextensible ? SolveInextensibleEquilibrium(m, report)
-                                           : SolveEquilibrium(m, report);
+                                           : SolveEquilibrium(m, report, options);
   CableState s;
   s.x = StraightChord(m);
   s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
@@ -45,15 +53,27 @@ CableState MakeInitialState(const SceneDef& scene, const CableModel& m,
 }
 
 std::unique_ptr<Integrator> MakeIntegrator(const CableModel& m, const TimeGrid& grid) {
+  // The explicit scheme's "auto": substeps of at most safety x the limit, refined where a link
+  // goes slack or snaps taut (see explicit_integrator.h).
+  if (grid.kind == IntegratorKind::kExplicit && grid.automatic)
+    return std::make_unique<ExplicitIntegrator>(m, grid.safety_factor);
   return MakeIntegrator(grid.kind, m, grid.rho_inf, grid.error_tolerance);
 }
 
 bool Simulate(const CableModel& m, Integrator& integrator, CableState& state,
-              const TimeGrid& grid, const OutputCallback& on_output) {
+              const TimeGrid& grid, const OutputCallback& on_output, const CancelFlag* cancel) {
+  integrator.set_cancel(cancel);
   integrator.Initialize(m, state);
   if (!on_output(state, integrator.tensions())) return false;
   for (long k = 1; k <= grid.outputs; ++k) {
-    for (int i = 0; i < grid.steps_per_output; ++i) integrator.Step(m, state, grid.dt);
+    try {
+      for (int i = 0; i < grid.steps_per_output; ++i) {
+        ThrowIfCancelled(cancel, "the simulation");
+        integrator.Step(m, state, grid.dt);
+      }
+    } catch (const CancelledError&) {
+      return false;  // the rows so far stand; the state is part way to the next output
+    }
     state.t = k * grid.interval;  // no round-off drift over long runs
     if (!on_output(state, integrator.tensions())) return false;
   }

@@ -138,7 +138,7 @@ class StaticProblem {
 // converge from slack starts where the links carry nothing. With current the drag is not
 // conservative and the residual norm is the merit function instead. Returns true if converged.
 bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_iter,
-            EquilibriumReport& report) {
+            EquilibriumReport& report, const CancelFlag* cancel) {
   StaticProblem problem(m);
   const bool conservative = m.current == 0;
   Eigen::Matrix2Xd dx(2, m.stations()), trial(2, m.stations());
@@ -149,6 +149,7 @@ bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_
   const double beta_start = std::max(r_inf, 1e-12) / (0.05 * length_scale);
   for (; report.iterations < max_iter; ++report.iterations) {
     if (r_inf <= tol_force) return true;
+    ThrowIfCancelled(cancel, "the static equilibrium");
     const double r2 = problem.ResidualNorm2();
     if (!problem.NewtonStep(beta, dx)) {
       beta = std::max(10.0 * beta, beta_start);
@@ -249,18 +250,20 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
   // each starting from the last equilibrium (the drag load is not conservative).
   CableModel still = m;
   still.current = 0;
-  bool ok = Newton(still, x, tol, options.max_iterations, report);
+  bool ok = Newton(still, x, tol, options.max_iterations, report, options.cancel);
   double reached = 0;
   double increment = 0.25 * m.current;
-  while (ok && reached != m.current) {
-    const double target = std::abs(m.current - reached) <= std::abs(increment) * 1.0000001
-                              ? m.current
-                              : reached + increment;
+  // Bounded: a current so small that a quarter of it underflows goes in at once.
+  while (ok && reached != m.current && report.current_steps < options.max_current_steps) {
+    double target = std::abs(m.current - reached) <= std::abs(increment) * 1.0000001
+                        ? m.current
+                        : reached + increment;
+    if (target == reached) target = m.current;
     CableModel step = m;
     step.current = target;
     Eigen::Matrix2Xd trial = x;
     ++report.current_steps;
-    if (Newton(step, trial, tol, options.max_iterations, report)) {
+    if (Newton(step, trial, tol, options.max_iterations, report, options.cancel)) {
       x = trial;
       reached = target;
     } else if (std::abs(increment) > 1e-3 * std::abs(m.current) &&
@@ -271,6 +274,7 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
     }
   }
 
+  if (reached != m.current) ok = false;  // the continuation ran out of steps
   StaticProblem problem(m);
   problem.Residual(x);
   int worst = 0;

@@ -6,6 +6,7 @@
 
 #include "core/cable_model.h"
 #include "core/cable_state.h"
+#include "core/cancel.h"
 
 namespace cablefilm {
 
@@ -19,6 +20,8 @@ struct EquilibriumReport {
 struct EquilibriumOptions {
   int max_iterations = 500;     // Newton iterations in all
   double tolerance = 1e-9;      // converged when residual <= tolerance * force_scale
+  int max_current_steps = 64;   // continuation steps in the current
+  const CancelFlag* cancel = nullptr;  // polled every iteration: CancelledError when raised
 };
 
 // The static load the residual is measured against [N]: net weights plus the current's drag.

@@ -10,6 +10,7 @@ namespace cablefilm {
 namespace {
 constexpr int kMaxNewtonIterations = 12;
 constexpr int kMaxRejections = 40;
+constexpr double kSmallestStepFraction = 1e-9;  // of the interval asked of Step()
 }  // namespace
 
 GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const CableModel& m, double rho_inf,
@@ -119,8 +120,23 @@ void GeneralizedAlphaIntegrator::Step(const CableModel& m, CableState& s, double
   const double t_end = s.t + dt;
   if (!(proposed_ > 0) || proposed_ > dt) proposed_ = dt;
   int failures = 0;  // consecutive rejections
+  // A step this much smaller than the one asked for makes no useful progress: the motion (an
+  // end's acceleration, a snap) is faster than any step can follow; say so rather than crawl.
+  const double smallest = kSmallestStepFraction * dt;
   while (s.t < t_end - 1e-12 * dt) {
+    ThrowIfCancelled(cancel_, "the implicit step");
     const double h = std::min(proposed_, t_end - s.t);
+    if (h < smallest && h < t_end - s.t) {
+      std::ostringstream os;
+      os << "the implicit step fell to " << h << " s at t = " << s.t << " s (below "
+         << kSmallestStepFraction << " of the " << dt
+         << " s asked for, " << stats_.rejected
+         << " steps rejected in all): the motion is faster than the scheme can follow (an "
+            "end's motion too violent, or an unresolvable snap)";
+      int worst = 0;
+      ws_.geometry.length.cwiseQuotient(m.rest_length).maxCoeff(&worst);
+      throw BlowUpError(os.str(), s.t, worst);
+    }
     const bool truncated = h < proposed_;
     double error = 0;
     bool ok = Solve(m, s, h);

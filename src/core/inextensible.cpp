@@ -114,8 +114,18 @@ void ConstraintSolver::ProjectVelocities(const CableModel& m, const Eigen::Matri
   for (int j = m.first_free(); j <= m.last_free(); ++j) v.col(j) += correction_.col(j);
 }
 
-InextensibleIntegrator::InextensibleIntegrator(const CableModel& m)
-    : solver_(m), ws_(m.links), a_(2, m.stations()), v_pred_(2, m.stations()) {}
+InextensibleIntegrator::InextensibleIntegrator(const CableModel& m, double error_tolerance)
+    : solver_(m), ws_(m.links), trial_ws_(m.links), a_(2, m.stations()), v_pred_(2, m.stations()),
+      trial_x_(2, m.stations()), trial_v_(2, m.stations()), trial_a_(2, m.stations()),
+      error_tolerance_(error_tolerance) {}
+
+std::string InextensibleIntegrator::name() const {
+  if (!(error_tolerance_ > 0)) return "inextensible (constraint tensions)";
+  std::ostringstream os;
+  os << "inextensible (constraint tensions, local position error per step below "
+     << error_tolerance_ << " m)";
+  return os.str();
+}
 
 void InextensibleIntegrator::Initialize(const CableModel& m, const CableState& state) {
   solver_.Accelerations(m, state.t, state.x, state.v, ws_, a_);
@@ -138,40 +148,116 @@ double InextensibleIntegrator::StableSubstep(const CableModel& m) const {
   return lambda > 0 ? 0.5 * 2.0 / std::sqrt(lambda) : std::numeric_limits<double>::infinity();
 }
 
-void InextensibleIntegrator::Substep(const CableModel& m, CableState& s, double h) {
+bool InextensibleIntegrator::Trial(const CableModel& m, const CableState& s, double h) {
   const double t1 = s.t + h;
   const int j0 = m.first_free(), j1 = m.last_free();
+  trial_x_ = s.x;
+  trial_v_ = s.v;
   for (int j = j0; j <= j1; ++j) {
     v_pred_.col(j) = s.v.col(j) + h * a_.col(j);
-    s.v.col(j) += 0.5 * h * a_.col(j);
-    s.x.col(j) += h * s.v.col(j);
+    trial_v_.col(j) += 0.5 * h * a_.col(j);
+    trial_x_.col(j) += h * trial_v_.col(j);
   }
   for (int j : {0, m.links}) {
     if (!m.prescribed(j)) continue;
-    s.x.col(j) = m.end_motion(j).Position(t1);
-    s.v.col(j) = m.end_motion(j).Velocity(t1);
-    v_pred_.col(j) = s.v.col(j);
+    trial_x_.col(j) = m.end_motion(j).Position(t1);
+    trial_v_.col(j) = m.end_motion(j).Velocity(t1);
+    v_pred_.col(j) = trial_v_.col(j);
   }
-  s.t = t1;
-  if (!solver_.ProjectPositions(m, s.x, 1e-13)) {
-    std::ostringstream os;
-    os << "the inextensible cable cannot keep its length at t = " << t1
-       << " s: its ends are pulled further apart than the cable is long";
-    throw BlowUpError(os.str(), t1, m.links);
-  }
-  solver_.Accelerations(m, t1, s.x, v_pred_, ws_, a_);
-  for (int j = j0; j <= j1; ++j) s.v.col(j) += 0.5 * h * a_.col(j);
-  solver_.ProjectVelocities(m, s.x, s.v);
+  if (!solver_.ProjectPositions(m, trial_x_, 1e-13)) return false;
+  solver_.Accelerations(m, t1, trial_x_, v_pred_, trial_ws_, trial_a_);
+  for (int j = j0; j <= j1; ++j) trial_v_.col(j) += 0.5 * h * trial_a_.col(j);
+  solver_.ProjectVelocities(m, trial_x_, trial_v_);
+  return true;
+}
+
+double InextensibleIntegrator::LocalError(const CableModel& m, double h) const {
+  double da = 0;
+  for (int j = m.first_free(); j <= m.last_free(); ++j)
+    da = std::max(da, (trial_a_.col(j) - a_.col(j)).lpNorm<Eigen::Infinity>());
+  return h * h / 6.0 * da;
+}
+
+void InextensibleIntegrator::Accept(CableState& s, double h) {
+  s.x.swap(trial_x_);
+  s.v.swap(trial_v_);
+  a_.swap(trial_a_);
+  ws_.geometry.length.swap(trial_ws_.geometry.length);
+  ws_.geometry.tangent.swap(trial_ws_.geometry.tangent);
+  ws_.tension.swap(trial_ws_.tension);
+  ws_.force.swap(trial_ws_.force);
+  s.t += h;
   ++stats_.steps;
 }
 
 void InextensibleIntegrator::Step(const CableModel& m, CableState& s, double dt) {
   if (!initialized_) Initialize(m, s);
   const double t_end = s.t + dt;
+  if (!(error_tolerance_ > 0)) {
+    while (s.t < t_end - 1e-12 * dt) {
+      ThrowIfCancelled(cancel_, "the inextensible step");
+      const double remaining = t_end - s.t;
+      const int pieces = static_cast<int>(std::ceil(remaining / StableSubstep(m) - 1e-9));
+      const double h = remaining / std::max(1, pieces);
+      if (!Trial(m, s, h)) {
+        std::ostringstream os;
+        os << "the inextensible cable cannot keep its length at t = " << s.t + h
+           << " s: its ends are pulled further apart than the cable is long";
+        throw BlowUpError(os.str(), s.t + h, m.links);
+      }
+      Accept(s, h);
+    }
+    s.t = t_end;
+    CheckStateSane(m, s, ws_.geometry.length);
+    return;
+  }
+  if (!(proposed_ > 0) || proposed_ > dt) proposed_ = dt;
+  const double smallest = kSmallestSubstep * dt;
+  int failures = 0;  // rejections in a row
   while (s.t < t_end - 1e-12 * dt) {
-    const double remaining = t_end - s.t;
-    const int pieces = static_cast<int>(std::ceil(remaining / StableSubstep(m) - 1e-9));
-    Substep(m, s, remaining / std::max(1, pieces));
+    ThrowIfCancelled(cancel_, "the inextensible step");
+    const double longest = std::min(proposed_, StableSubstep(m));
+    const double h = std::min(longest, t_end - s.t);
+    const bool limited = h < proposed_;  // by the wave limit or the end of the step asked
+    const bool projected = longest >= smallest && Trial(m, s, h);
+    double error = 0;
+    if (projected) {
+      error = LocalError(m, h);
+      if (error <= error_tolerance_) {
+        Accept(s, h);
+        failures = 0;
+        // A substep cut short says nothing about the size the error allows.
+        if (!limited)
+          proposed_ = std::min(
+              dt, h * std::min(2.0, 0.9 * std::cbrt(error_tolerance_ / std::max(error, 1e-300))));
+        continue;
+      }
+    }
+    ++stats_.rejected;
+    ++failures;
+    // Error too large: the substep that would just meet the tolerance (the error grows as h^3),
+    // with a margin. Projection failed: half the substep.
+    const double next = projected ? h * std::max(0.2, 0.9 * std::cbrt(error_tolerance_ / error))
+                                  : 0.5 * h;
+    if (longest < smallest || next < smallest || failures > kMaxRejections) {
+      std::ostringstream os;
+      os << "the inextensible step cannot be made accurate at t = " << s.t << " s: ";
+      if (longest < smallest)
+        os << "its tensions (up to " << ws_.tension.cwiseAbs().maxCoeff()
+           << " N) allow substeps of only " << longest << " s (are the ends pulled as far apart "
+           << "as the cable is long?)";
+      else if (projected)
+        os << "a substep of " << h << " s has a local position error of " << error
+           << " m against the tolerance of " << error_tolerance_ << " m";
+      else
+        os << "a substep of " << h << " s cannot keep the link lengths (are the ends pulled "
+           << "further apart than the cable is long?)";
+      if (longest >= smallest) os << ", " << failures << " rejections in a row";
+      os << "; the smallest substep is " << smallest << " s (" << kSmallestSubstep
+         << " of the step asked)";
+      throw BlowUpError(os.str(), s.t, m.links);
+    }
+    proposed_ = next;
   }
   s.t = t_end;
   CheckStateSane(m, s, ws_.geometry.length);

@@ -50,10 +50,23 @@ class ConstraintSolver {
 // constraints after each step, so link lengths stay at rest length to 1e-12 relative. Each
 // requested step is split into substeps below the stability limit of the transverse waves,
 // recomputed from the current tensions.
+//
+// With an error tolerance (time_step = "auto") the substeps also follow a local error estimate,
+// as the implicit scheme's do: the position update x_n + h v_n + h^2/2 a_n misses the cubic term
+// h^3/6 a', estimated from the accelerations at both ends of the step as
+//   err = h^2/6 max_j |a_{n+1,j} - a_{n,j}|_inf   [m],
+// and a substep whose err exceeds the tolerance (or whose projection fails) is rejected and
+// retried shorter; the next substep is 0.9 (tol/err)^(1/3) times the last (err ~ h^3), at most
+// twice it and at least a fifth, and never above the transverse-wave limit or the step asked.
+// The transverse-wave limit is unbounded while the tensions are near zero (a chain released
+// from a horizontal line), which the error estimate is not. A substep below kSmallestSubstep of
+// the step asked, or kMaxRejections rejections in a row, ends the run with a BlowUpError.
 class InextensibleIntegrator : public Integrator {
  public:
-  explicit InextensibleIntegrator(const CableModel& m);
-  std::string name() const override { return "inextensible (constraint tensions)"; }
+  // error_tolerance: the largest local position error per substep [m]; 0 = substeps only below
+  // the transverse-wave limit.
+  explicit InextensibleIntegrator(const CableModel& m, double error_tolerance = 0);
+  std::string name() const override;
   void Initialize(const CableModel& m, const CableState& state) override;
   void Step(const CableModel& m, CableState& state, double dt) override;
   const Eigen::VectorXd& tensions() const override { return ws_.tension; }
@@ -62,12 +75,24 @@ class InextensibleIntegrator : public Integrator {
   // The largest stable substep for the current tensions [s].
   double StableSubstep(const CableModel& m) const;
 
+  static constexpr double kSmallestSubstep = 1e-9;  // of the step asked of Step()
+  static constexpr int kMaxRejections = 40;
+
  private:
-  void Substep(const CableModel& m, CableState& s, double h);
+  // One substep of h from s into the trial buffers; false if the positions cannot be projected
+  // back onto the rest lengths.
+  bool Trial(const CableModel& m, const CableState& s, double h);
+  // The trial's local position error estimate [m].
+  double LocalError(const CableModel& m, double h) const;
+  // Makes the trial the state.
+  void Accept(CableState& s, double h);
 
   ConstraintSolver solver_;
-  ForceWorkspace ws_;
+  ForceWorkspace ws_, trial_ws_;
   Eigen::Matrix2Xd a_, v_pred_;
+  Eigen::Matrix2Xd trial_x_, trial_v_, trial_a_;  // the substep being tried
+  double error_tolerance_ = 0;  // [m]; 0: substeps from the wave limit only
+  double proposed_ = 0;         // the next substep to try (error control) [s]
   IntegratorStats stats_;
   bool initialized_ = false;
 };

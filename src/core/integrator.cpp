@@ -17,7 +17,7 @@ std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel
     case IntegratorKind::kImplicit:
       return std::make_unique<GeneralizedAlphaIntegrator>(m, rho_inf, error_tolerance);
     case IntegratorKind::kInextensible:
-      return std::make_unique<InextensibleIntegrator>(m);
+      return std::make_unique<InextensibleIntegrator>(m, error_tolerance);
   }
   throw Error("unknown integrator");
 }

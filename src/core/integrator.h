@@ -7,6 +7,7 @@
 
 #include "core/cable_model.h"
 #include "core/cable_state.h"
+#include "core/cancel.h"
 #include "core/error.h"
 
 namespace cablefilm {
@@ -44,10 +45,17 @@ class Integrator {
   // Link tensions T_{j+1/2} [N] of the current state (after Initialize or Step).
   virtual const Eigen::VectorXd& tensions() const = 0;
   virtual IntegratorStats stats() const = 0;
+  // A flag polled inside Step (between its internal steps): when set, Step throws
+  // CancelledError, leaving the state at the last step completed. Null: never.
+  void set_cancel(const CancelFlag* flag) { cancel_ = flag; }
+
+ protected:
+  const CancelFlag* cancel_ = nullptr;
 };
 
-// rho_inf: the implicit scheme's spectral radius at infinite frequency; error_tolerance: its
-// local position error per step [m], 0 for fixed steps (both ignored by the other schemes).
+// rho_inf: the implicit scheme's spectral radius at infinite frequency (ignored by the other
+// schemes); error_tolerance: the implicit and the inextensible schemes' local position error per
+// step [m], 0 for fixed steps (ignored by the explicit scheme).
 std::unique_ptr<Integrator> MakeIntegrator(IntegratorKind kind, const CableModel& m,
                                            double rho_inf = 0.5, double error_tolerance = 0);
 

@@ -77,7 +77,7 @@ VideoEncoder::VideoEncoder(const std::string& path, const VideoOptions& options)
   Impl& m = *impl_;
   m.path = path;
   m.options = options;
-  m.temp_path = path + ".partial";
+  m.temp_path = PartialPath(path);
   if (options.width <= 0 || options.height <= 0 || options.width % 2 || options.height % 2)
     throw Error("video " + path + ": width and height must be positive and even, got " +
                 std::to_string(options.width) + "x" + std::to_string(options.height));
@@ -141,7 +141,10 @@ VideoEncoder::VideoEncoder(const std::string& path, const VideoOptions& options)
     ret = avio_open(&m.format->pb, m.temp_path.c_str(), AVIO_FLAG_WRITE);
     if (ret < 0) m.Fail("cannot create " + m.temp_path, ret);
     AVDictionary* format_options = nullptr;
-    av_dict_set(&format_options, "movflags", "+faststart", 0);
+    // Fragmented, a fragment per frame: whatever stops the program (even SIGKILL), the partial
+    // film plays up to its last frame. Finish() remuxes it into an ordinary film.
+    av_dict_set(&format_options, "movflags", "+frag_every_frame+empty_moov+default_base_moof", 0);
+    av_dict_set(&format_options, "flush_packets", "1", 0);
     ret = avformat_write_header(m.format, &format_options);
     av_dict_free(&format_options);
     if (ret < 0) m.Fail("cannot write the MP4 header", ret);
@@ -160,6 +163,8 @@ VideoEncoder::~VideoEncoder() {
     std::remove(impl_->temp_path.c_str());
   }
 }
+
+const std::string& VideoEncoder::partial_path() const { return impl_->temp_path; }
 
 void VideoEncoder::AddFrame(const Image& image) {
   Impl& m = *impl_;
@@ -181,22 +186,106 @@ void VideoEncoder::AddFrame(const Image& image) {
   m.Drain();
 }
 
-void VideoEncoder::Finish() {
+// Copies the packets of `in` into an MP4 at `out` with its index first (+faststart), so that
+// the finished film streams and every player knows its duration. No re-encoding.
+static void Remux(const std::string& in, const std::string& out) {
+  AVFormatContext* src = nullptr;
+  AVFormatContext* dst = nullptr;
+  AVPacket* packet = av_packet_alloc();
+  auto fail = [&](const std::string& what, int code) {
+    av_packet_free(&packet);
+    avformat_close_input(&src);
+    if (dst) {
+      if (dst->pb) avio_closep(&dst->pb);
+      avformat_free_context(dst);
+    }
+    std::remove(out.c_str());
+    throw Error("video " + out + ": " + what + (code ? ": " + AvError(code) : std::string()));
+  };
+  if (!packet) fail("out of memory", 0);
+  int ret = avformat_open_input(&src, in.c_str(), nullptr, nullptr);
+  if (ret < 0) fail("cannot reopen " + in, ret);
+  ret = avformat_find_stream_info(src, nullptr);
+  if (ret < 0) fail("cannot read " + in, ret);
+  ret = avformat_alloc_output_context2(&dst, nullptr, "mp4", out.c_str());
+  if (ret < 0 || !dst) fail("cannot create an MP4 muxer", ret);
+  for (unsigned i = 0; i < src->nb_streams; ++i) {
+    AVStream* s = avformat_new_stream(dst, nullptr);
+    if (!s) fail("cannot add a stream", 0);
+    ret = avcodec_parameters_copy(s->codecpar, src->streams[i]->codecpar);
+    if (ret < 0) fail("cannot copy the stream parameters", ret);
+    s->codecpar->codec_tag = 0;
+    s->time_base = src->streams[i]->time_base;
+    s->avg_frame_rate = src->streams[i]->avg_frame_rate;
+  }
+  ret = avio_open(&dst->pb, out.c_str(), AVIO_FLAG_WRITE);
+  if (ret < 0) fail("cannot create the file", ret);
+  AVDictionary* options = nullptr;
+  av_dict_set(&options, "movflags", "+faststart", 0);
+  ret = avformat_write_header(dst, &options);
+  av_dict_free(&options);
+  if (ret < 0) fail("cannot write the MP4 header", ret);
+  while ((ret = av_read_frame(src, packet)) >= 0) {
+    AVStream* from = src->streams[packet->stream_index];
+    AVStream* to = dst->streams[packet->stream_index];
+    av_packet_rescale_ts(packet, from->time_base, to->time_base);
+    packet->pos = -1;
+    ret = av_interleaved_write_frame(dst, packet);
+    if (ret < 0) fail("writing a packet failed (disk full?)", ret);
+  }
+  if (ret != AVERROR_EOF) fail("cannot read " + in, ret);
+  ret = av_write_trailer(dst);  // with +faststart, moves the moov atom to the front
+  if (ret < 0) fail("cannot write the MP4 trailer", ret);
+  ret = avio_closep(&dst->pb);
+  if (ret < 0) fail("cannot close the file", ret);
+  avformat_free_context(dst);
+  avformat_close_input(&src);
+  av_packet_free(&packet);
+}
+
+std::string PartialPath(const std::string& path) {
+  const std::string ext = ".mp4";
+  if (path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0)
+    return path.substr(0, path.size() - ext.size()) + ".partial.mp4";
+  return path + ".partial.mp4";
+}
+
+void VideoEncoder::Close() {
   Impl& m = *impl_;
-  if (m.finished) return;
   int ret = avcodec_send_frame(m.codec, nullptr);  // enter draining mode
   if (ret < 0 && ret != AVERROR_EOF) m.Fail("cannot flush the encoder", ret);
   m.Drain();
-  ret = av_write_trailer(m.format);  // with +faststart, moves the moov atom to the front
+  ret = av_write_trailer(m.format);
   if (ret < 0) m.Fail("cannot write the MP4 trailer", ret);
   ret = avio_closep(&m.format->pb);
   if (ret < 0) m.Fail("cannot close " + m.temp_path, ret);
   m.Release();
-  if (std::rename(m.temp_path.c_str(), m.path.c_str()) != 0) {
-    std::remove(m.temp_path.c_str());
-    throw Error("cannot rename " + m.temp_path + " to " + m.path + ": " + std::strerror(errno));
-  }
   m.finished = true;
+}
+
+void VideoEncoder::Finish() {
+  Impl& m = *impl_;
+  if (m.finished) return;
+  Close();
+  // The whole film: remuxed beside its final name, then renamed over it (whole or nothing).
+  const std::string tmp = m.path + ".tmp.mp4";
+  try {
+    Remux(m.temp_path, tmp);
+  } catch (...) {
+    std::remove(m.temp_path.c_str());
+    throw;
+  }
+  std::remove(m.temp_path.c_str());
+  if (std::rename(tmp.c_str(), m.path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw Error("cannot rename " + tmp + " to " + m.path + ": " + std::strerror(errno));
+  }
+}
+
+void VideoEncoder::FinishPartial() {
+  Impl& m = *impl_;
+  if (m.finished) return;
+  Close();  // it stays under its .partial.mp4 name, and plays
 }
 
 long VideoEncoder::frames_added() const { return impl_->frames; }

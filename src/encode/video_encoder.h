@@ -1,9 +1,10 @@
 #pragma once
 // H.264 in MP4 through libavcodec/libavformat, in process, following the send-frame /
 // receive-packet loop of FFmpeg's doc/examples/mux.c. RGBA frames are converted to yuv420p
-// (BT.709, limited range) with libswscale. The file is written under a temporary name and
-// renamed to its final name by Finish(), with the moov atom at the start (+faststart) so it
-// streams. Not thread-safe: one thread feeds one encoder.
+// (BT.709, limited range) with libswscale. Until Finish() the film is a fragmented MP4 under a
+// ".partial.mp4" name, which plays up to its last frame whatever stops the program; Finish()
+// remuxes it to its final name with the moov atom at the start (+faststart) so it streams.
+// Not thread-safe: one thread feeds one encoder.
 #include <memory>
 #include <string>
 
@@ -30,19 +31,29 @@ class VideoEncoder {
 
   // Encodes one frame; its size must match the options. Frames get consecutive timestamps.
   void AddFrame(const Image& image);
-  // Flushes the encoder (null frame), writes the trailer, closes and renames the file.
-  // Idempotent. With no frame added it still writes a valid (empty) file.
+  // Flushes the encoder (null frame), closes the partial film and remuxes it into the final
+  // one (index first). Idempotent. With no frame added it still writes a valid (empty) file.
   void Finish();
+  // For a film that will not be complete (interrupted, failed): closes it under its partial
+  // name (partial_path()), where it plays. Idempotent; nothing after it.
+  void FinishPartial();
 
   long frames_added() const;
   const std::string& path() const;
+  // Where the film is written until Finish(): "film.mp4" -> "film.partial.mp4", a fragmented
+  // MP4 (a fragment per frame) that plays up to its last frame whatever stops the program.
+  const std::string& partial_path() const;
 
  private:
+  void Close();  // flushes and closes the partial film
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 
 // What a film file holds, read back with libavformat (tests, checks).
+// "film.mp4" -> "film.partial.mp4": the name of a film that is not (yet) whole.
+std::string PartialPath(const std::string& path);
+
 struct VideoInfo {
   std::string codec;         // e.g. "h264"
   std::string pixel_format;  // e.g. "yuv420p"

@@ -9,8 +9,16 @@ namespace {
 
 using Json = nlohmann::json;
 
+// The value as the message shows it: scalars and short flat arrays as JSON (ASCII, escaped),
+// anything nested only by its kind and size: dumping it would recurse as deep as it nests.
 std::string Shown(const Json& v) {
-  std::string s = v.dump(-1, ' ', true, Json::error_handler_t::replace);  // ASCII, escaped
+  bool flat = v.is_primitive() || (v.is_array() && v.size() <= 4);
+  if (v.is_array())
+    for (const Json& e : v) flat = flat && e.is_primitive();
+  if (!flat)
+    return v.is_array() ? "an array of " + std::to_string(v.size()) + " elements"
+                        : "an object with " + std::to_string(v.size()) + " fields";
+  std::string s = v.dump(-1, ' ', true, Json::error_handler_t::replace);
   if (s.size() > 60) s = s.substr(0, 57) + "...";
   return s;
 }

@@ -42,8 +42,10 @@ struct FilmWriter::Impl {
   std::condition_variable not_full, not_empty;
   std::deque<CableSnapshot> queue;
   bool closing = false;
+  bool complete = true;    // false: FinishPartial (the film stays under its partial name)
   bool failed = false;
   std::exception_ptr error;
+  bool error_thrown = false;  // the error has reached the caller (it is reported there, once)
   bool finished = false;
   long done = 0;
   MaxTensionSeries series;  // copied out under the mutex
@@ -175,7 +177,12 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
       progress.Update(done);
     }
     if (progress.printed()) progress.Update(done, true);
-    if (encoder) encoder->Finish();
+    bool complete = true;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      complete = this->complete;
+    }
+    if (encoder) complete ? encoder->Finish() : encoder->FinishPartial();
     encoder.reset();
     renderer.reset();  // one context at a time
     if (options.write_max_tension && history->count() > 0) {
@@ -184,7 +191,8 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
         std::lock_guard<std::mutex> lock(mutex);
         all = AllSeries();
       }
-      WriteMaxTensionPng(out_dir + "/max_tension.png", all, options.still_width,
+      WriteMaxTensionPng(out_dir + (complete ? "/max_tension.png" : "/max_tension.partial.png"),
+                         all, options.still_width,
                          options.still_height,
                          spec.title.empty() ? "Maximum tension along the cable"
                                             : "Maximum tension along the cable \u2014 " + spec.title,
@@ -234,9 +242,9 @@ FilmWriter::FilmWriter(const FilmOptions& options, const FilmSpec& spec,
 FilmWriter::~FilmWriter() {
   if (!impl_ || impl_->finished) return;
   try {
-    Finish();
+    FinishPartial();  // not finished by the caller: it failed or was stopped part way
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "film: %s\n", e.what());
+    if (!impl_->error_thrown) std::fprintf(stderr, "film: %s\n", e.what());
   }
 }
 
@@ -247,9 +255,20 @@ void FilmWriter::Push(CableSnapshot snapshot) {
   m.not_full.wait(lock, [&] {
     return m.failed || m.queue.size() < static_cast<std::size_t>(m.options.queue_capacity);
   });
-  if (m.failed) std::rethrow_exception(m.error);
+  if (m.failed) {
+    m.error_thrown = true;
+    std::rethrow_exception(m.error);
+  }
   m.queue.push_back(std::move(snapshot));
   m.not_empty.notify_one();
+}
+
+void FilmWriter::FinishPartial() {
+  {
+    std::lock_guard<std::mutex> lock(impl_->mutex);
+    impl_->complete = false;
+  }
+  Finish();
 }
 
 void FilmWriter::Finish() {

@@ -2,7 +2,8 @@
 // The film of a run: snapshots pushed by the simulation are drawn and encoded on a thread of
 // their own, fed by a bounded queue (memory bounded whatever the film's length), into
 // <out_dir>/film.mp4, optionally <out_dir>/frames/frame_000000.png ..., and at the end
-// <out_dir>/max_tension.png. An early Finish() (Ctrl-C) closes the film so what was drawn plays.
+// <out_dir>/max_tension.png. A film cut short (FinishPartial, or destroyed unfinished) stays as
+// film.partial.mp4, which plays up to its last frame; no incomplete film takes the final name.
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,7 +39,7 @@ class FilmWriter {
   // `total_frames` is only for the progress line (0 = unknown).
   FilmWriter(const FilmOptions& options, const FilmSpec& spec, const std::string& out_dir,
              int total_frames);
-  ~FilmWriter();  // if not finished: Finish(), an error then printed on stderr, not thrown
+  ~FilmWriter();  // if not finished: FinishPartial(), an error then printed on stderr
   FilmWriter(const FilmWriter&) = delete;
   FilmWriter& operator=(const FilmWriter&) = delete;
 
@@ -48,6 +49,9 @@ class FilmWriter {
   // Draws what is queued, flushes and closes film.mp4, writes max_tension.png. Idempotent;
   // rethrows an error of the drawing thread (the film is then not written).
   void Finish();
+  // For a film cut short (Ctrl-C, a failure): draws what is queued and closes the film under
+  // its partial name, film.partial.mp4, where it plays; max_tension.partial.png likewise.
+  void FinishPartial();
 
   long frames_done() const;  // frames drawn so far
   // The maximum tension along the cable of every frame so far, labelled options.series_label:

@@ -1,6 +1,9 @@
 #include "scene/scene_loader.h"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -8,22 +11,28 @@
 #include <toml++/toml.h>
 
 #include "core/error.h"
+#include "scene/scene_limits.h"
 #include "scene/table_file.h"
+#include "scene/text_escape.h"
 
 namespace cablefilm {
 namespace {
 
-std::string Quote(const std::string& s) { return "\"" + s + "\""; }
+std::string Quote(const std::string& s) { return QuoteText(s); }
+
+// The largest integer a double holds exactly, and every integer below it: 2^53.
+constexpr std::int64_t kMaxExactInteger = std::int64_t{1} << 53;
 
 // Reads the keys of one TOML table, remembering which were read, so that Finish() can report
 // every key left over as unknown. Errors carry "file:line: key: expected ...".
 class TableReader {
  public:
   TableReader(const toml::table& table, std::string prefix, const std::string& file)
-      : table_(table), prefix_(std::move(prefix)), file_(file) {}
+      : table_(table), prefix_(std::move(prefix)), file_(EscapeText(file)) {}
 
+  // The key's full name as a message shows it (a quoted TOML key may hold any character).
   std::string Key(const std::string& key) const {
-    return prefix_.empty() ? key : prefix_ + "." + key;
+    return EscapeText(prefix_.empty() ? key : prefix_ + "." + key);
   }
   [[noreturn]] void Fail(const toml::node* node, const std::string& key,
                          const std::string& expected) const {
@@ -40,9 +49,35 @@ class TableReader {
 
   double Number(const std::string& key, const toml::node* n, const std::string& what) const {
     if (!n->is_number()) Fail(n, key, "expected " + what);
-    const double v = n->value<double>().value();
+    if (n->is_integer()) {
+      // toml++ gives no double for an integer beyond 2^53 (it has no exact one).
+      const std::int64_t i = n->as_integer()->get();
+      if (i > kMaxExactInteger || i < -kMaxExactInteger)
+        Fail(n, key, "expected " + what + ", got the integer " + std::to_string(i) +
+                         ", beyond 2^53 (" + std::to_string(kMaxExactInteger) +
+                         ") where no decimal number is exact");
+      return static_cast<double>(i);
+    }
+    const double v = n->as_floating_point()->get();
     if (!std::isfinite(v)) Fail(n, key, "expected " + what + ", got a non-finite number");
     return v;
+  }
+  // Checks a number read against [lo, hi]; `what` already states the range.
+  double InRange(const std::string& key, double v, double lo, double hi,
+                 const std::string& what) const {
+    if (!(v >= lo && v <= hi)) Fail(table_.get(key), key, "expected " + what + ", got " + Fmt(v));
+    return v;
+  }
+  // A number from lo to hi (both included); fallback when absent and not required.
+  double Ranged(const std::string& key, double fallback, bool required, double lo, double hi,
+                const std::string& unit) {
+    const std::string what = "a number" + unit + " from " + Fmt(lo) + " to " + Fmt(hi);
+    const toml::node* n = Get(key);
+    if (!n) {
+      if (required) Fail(nullptr, key, "missing; expected " + what);
+      return fallback;
+    }
+    return InRange(key, Number(key, n, what), lo, hi, what);
   }
   // what: the expectation in words, e.g. "a positive length in m".
   double Required(const std::string& key, const std::string& what) {
@@ -54,23 +89,29 @@ class TableReader {
     const toml::node* n = Get(key);
     return n ? Number(key, n, what) : fallback;
   }
-  double Positive(const std::string& key, const std::string& unit) {
-    const std::string what = "a positive number" + unit;
+  // A positive number at most `hi`, and at least `lo` when lo > 0 (lo = 0: any above 0).
+  double Positive(const std::string& key, const std::string& unit, double lo, double hi) {
+    const std::string what = "a positive number" + unit +
+                             (lo > 0 ? " from " + Fmt(lo) + " to " + Fmt(hi)
+                                     : ", at most " + Fmt(hi));
     const double v = Required(key, what);
-    if (!(v > 0)) Fail(table_.get(key), key, "expected " + what + ", got " + Fmt(v));
+    if (!(v > 0 && v >= lo && v <= hi))
+      Fail(table_.get(key), key, "expected " + what + ", got " + Fmt(v));
     return v;
   }
-  double OptionalPositive(const std::string& key, double fallback, const std::string& unit) {
+  double OptionalPositive(const std::string& key, double fallback, const std::string& unit,
+                          double lo, double hi) {
     if (!Has(key)) {
       Get(key);
       return fallback;
     }
-    return Positive(key, unit);
+    return Positive(key, unit, lo, hi);
   }
-  double OptionalNonNegative(const std::string& key, double fallback, const std::string& unit) {
-    const std::string what = "a number >= 0" + unit;
+  double OptionalNonNegative(const std::string& key, double fallback, const std::string& unit,
+                             double hi) {
+    const std::string what = "a number >= 0" + unit + ", at most " + Fmt(hi);
     const double v = Optional(key, fallback, what);
-    if (!(v >= 0)) Fail(table_.get(key), key, "expected " + what + ", got " + Fmt(v));
+    if (!(v >= 0 && v <= hi)) Fail(table_.get(key), key, "expected " + what + ", got " + Fmt(v));
     return v;
   }
   int Integer(const std::string& key, int fallback, int min, int max, bool required) {
@@ -86,11 +127,14 @@ class TableReader {
     if (v < min || v > max) Fail(n, key, "expected " + what + ", got " + std::to_string(v));
     return static_cast<int>(v);
   }
+  // Two numbers each within [0, limit] (non_negative) or [-limit, limit].
   std::array<double, 2> Pair(const std::string& key, std::array<double, 2> fallback,
-                             bool required, bool non_negative, const std::string& unit) {
+                             bool required, bool non_negative, const std::string& unit,
+                             double limit) {
     const toml::node* n = Get(key);
-    const std::string what =
-        std::string("an array of two ") + (non_negative ? "numbers >= 0" : "numbers") + unit;
+    const std::string what = std::string("an array of two ") +
+                             (non_negative ? "numbers >= 0" : "numbers") + unit + " from " +
+                             (non_negative ? "0" : Fmt(-limit)) + " to " + Fmt(limit);
     if (!n) {
       if (required) Fail(nullptr, key, "missing; expected " + what);
       return fallback;
@@ -100,7 +144,8 @@ class TableReader {
     std::array<double, 2> out{};
     for (size_t i = 0; i < 2; ++i) {
       out[i] = Number(key, a->get(i), what);
-      if (non_negative && out[i] < 0) Fail(n, key, "expected " + what + ", got " + Fmt(out[i]));
+      if (!(out[i] >= (non_negative ? 0.0 : -limit) && out[i] <= limit))
+        Fail(n, key, "expected " + what + ", got " + Fmt(out[i]));
     }
     return out;
   }
@@ -162,16 +207,12 @@ class TableReader {
       throw Error(os.str());
     }
   }
-  static std::string Fmt(double v) {
-    std::ostringstream os;
-    os << v;
-    return os.str();
-  }
+  static std::string Fmt(double v) { return FormatNumber(v); }
 
  private:
   const toml::table& table_;
   std::string prefix_;
-  const std::string& file_;
+  std::string file_;  // escaped, for messages
   std::set<std::string> used_;
 };
 
@@ -179,9 +220,12 @@ void ReadEnvironment(TableReader& top, SceneDef& scene, const std::string& file)
   const toml::table* t = top.SubTable("environment", false);
   if (!t) return;
   TableReader r(*t, "environment", file);
-  scene.environment.gravity = r.OptionalNonNegative("gravity", 9.80665, " in m/s^2");
-  scene.environment.fluid_density = r.OptionalNonNegative("fluid_density", 1025.0, " in kg/m^3");
-  scene.environment.current = r.Optional("current", 0.0, "a speed in m/s");
+  scene.environment.gravity =
+      r.OptionalNonNegative("gravity", 9.80665, " in m/s^2", kMaxGravity);
+  scene.environment.fluid_density =
+      r.OptionalNonNegative("fluid_density", 1025.0, " in kg/m^3", kMaxFluidDensity);
+  scene.environment.current =
+      r.Ranged("current", 0.0, false, -kMaxCurrent, kMaxCurrent, " (a speed in m/s)");
   r.Finish();
 }
 
@@ -196,16 +240,19 @@ void ReadMaterials(TableReader& top, SceneDef& scene, const std::string& file, b
       if (other.name == m.name)
         r.Fail(arr->get(i)->as_table()->get("name"), "name",
                "expected a unique name, " + Quote(m.name) + " is defined twice");
-    m.diameter = r.Positive("diameter", " in m");
-    m.area = r.Positive("area", " in m^2");
-    m.mass_per_length = r.Positive("mass_per_length", " in kg/m");
+    m.diameter = r.Positive("diameter", " in m", kMinDiameter, kMaxDiameter);
+    m.area = r.Positive("area", " in m^2", kMinArea, kMaxArea);
+    m.mass_per_length =
+        r.Positive("mass_per_length", " in kg/m", kMinMassPerLength, kMaxMassPerLength);
     if (elastic) {
-      m.youngs_modulus = r.Positive("youngs_modulus", " in Pa");
+      m.youngs_modulus = r.Positive("youngs_modulus", " in Pa", kMinModulus, kMaxModulus);
     } else {
-      m.youngs_modulus = r.OptionalPositive("youngs_modulus", 0.0, " in Pa");
+      m.youngs_modulus =
+          r.OptionalPositive("youngs_modulus", 0.0, " in Pa", kMinModulus, kMaxModulus);
     }
-    m.drag_coefficient = r.OptionalNonNegative("drag_coefficient", 1.2, "");
-    m.added_mass_coefficient = r.OptionalNonNegative("added_mass_coefficient", 1.0, "");
+    m.drag_coefficient = r.OptionalNonNegative("drag_coefficient", 1.2, "", kMaxCoefficient);
+    m.added_mass_coefficient =
+        r.OptionalNonNegative("added_mass_coefficient", 1.0, "", kMaxCoefficient);
     r.Finish();
     scene.materials.push_back(m);
   }
@@ -229,15 +276,28 @@ void ReadCable(TableReader& top, SceneDef& scene, const std::string& file) {
     if (sec.material < 0)
       s.Fail(sections->get(i)->as_table()->get("material"), "material",
              "expected the name of a [[material]], no material is named " + Quote(material));
-    sec.length = s.Positive("length", " in m");
-    sec.segments = s.Integer("segments", 0, 1, 10000000, true);
+    sec.length = s.Positive("length", " in m", kMinSectionLength, kMaxLength);
+    sec.segments = s.Integer("segments", 0, 1, static_cast<int>(kMaxLinks), true);
     s.Finish();
     scene.sections.push_back(sec);
   }
-  double total = 0, segment_length_min = 1e300;
-  for (const SectionDef& sec : scene.sections) {
+  double total = 0, segment_length_min = 1e300, links = 0;
+  for (size_t i = 0; i < scene.sections.size(); ++i) {
+    const SectionDef& sec = scene.sections[i];
     total += sec.length;
+    links += sec.segments;
     segment_length_min = std::min(segment_length_min, sec.length / sec.segments);
+    // The whole cable's limits, named by the section that goes beyond them.
+    const toml::table* section = sections->get(i)->as_table();
+    const std::string prefix = "section[" + std::to_string(i) + "].";
+    if (links > kMaxLinks)
+      r.Fail(section->get("segments"), prefix + "segments",
+             "the cable has " + TableReader::Fmt(links) + " links up to here; expected at most " +
+                 TableReader::Fmt(kMaxLinks) + " in all");
+    if (total > kMaxLength)
+      r.Fail(section->get("length"), prefix + "length",
+             "the cable is " + TableReader::Fmt(total) + " m long up to here; expected at most " +
+                 TableReader::Fmt(kMaxLength) + " m in all");
   }
   const toml::array* weights = r.TableArray("weight", false);
   for (size_t i = 0; weights && i < weights->size(); ++i) {
@@ -260,35 +320,87 @@ void ReadCable(TableReader& top, SceneDef& scene, const std::string& file) {
       w.Fail(wt->get("at"), "at",
              "expected the arc length of a station (0 to " + TableReader::Fmt(total) +
                  " m, on a segment boundary), got " + TableReader::Fmt(def.at));
-    def.mass = w.Positive("mass", " in kg");
-    def.volume = w.OptionalNonNegative("volume", 0.0, " in m^3");
-    def.added_volume = w.Pair("added_volume", {0, 0}, false, true, " in m^3");
-    def.drag_coefficient = w.Pair("drag_coefficient", {0, 0}, false, true, "");
-    def.drag_area = w.Pair("drag_area", {0, 0}, false, true, " in m^2");
+    def.mass = w.Positive("mass", " in kg", 0, kMaxWeightMass);
+    def.volume = w.OptionalNonNegative("volume", 0.0, " in m^3", kMaxVolume);
+    def.added_volume = w.Pair("added_volume", {0, 0}, false, true, " in m^3", kMaxVolume);
+    def.drag_coefficient = w.Pair("drag_coefficient", {0, 0}, false, true, "", kMaxCoefficient);
+    def.drag_area = w.Pair("drag_area", {0, 0}, false, true, " in m^2", kMaxDragArea);
     w.Finish();
     scene.weights.push_back(def);
   }
   r.Finish();
 }
 
+// The limits that involve several keys: output rows, fixed time steps and film frames, each
+// named by the key most likely at fault (the one given, when the other took its default).
+void CheckRunCounts(const toml::table& root, const SceneDef& scene, const std::string& file,
+                    bool interval_given) {
+  auto node = [&](const char* path) { return root.at_path(path).node(); };
+  auto fail = [&](const char* key, const std::string& message) {
+    std::ostringstream os;
+    os << EscapeText(file) << ":";
+    if (const toml::node* n = node(key)) os << n->source().begin.line << ":";
+    os << " " << key << ": " << message;
+    throw Error(os.str());
+  };
+  const SimulationDef& sim = scene.simulation;
+  const double interval = scene.output.interval;
+  const std::string interval_text =
+      FormatNumber(interval) + " s (" +
+      (interval_given ? "output.interval"
+                      : "output.interval not given: film.speed / film.fps, a row per film frame") +
+      ")";
+  const char* interval_key = interval_given      ? "output.interval"
+                             : node("film.speed") ? "film.speed"
+                             : node("film.fps")   ? "film.fps"
+                                                  : "simulation.duration";
+  const double rows = std::floor(sim.duration / interval + 1e-9);
+  if (!(rows >= 1))
+    fail(node("simulation.duration") ? "simulation.duration" : interval_key,
+         "the duration " + FormatNumber(sim.duration) + " s is shorter than one output interval, " +
+             interval_text +
+             ": the run would write no row after t = 0 and simulate nothing; expected a "
+             "duration of at least one output interval");
+  if (!(rows <= kMaxOutputRows))
+    fail(interval_key,
+         "the duration " + FormatNumber(sim.duration) + " s at one row every " + interval_text +
+             " makes " + FormatNumber(rows) + " rows of timeseries.csv; expected at most " +
+             FormatNumber(kMaxOutputRows) + " rows (about 1 GB): an interval of at least " +
+             FormatNumber(sim.duration / kMaxOutputRows) + " s or a shorter duration");
+  const double span = RunSpan(sim.duration, interval);
+  if (sim.time_step > 0 && !(span / sim.time_step <= kMaxSteps))
+    fail("simulation.time_step",
+         FormatNumber(sim.time_step) + " s makes " + FormatNumber(span / sim.time_step) +
+             " steps of the " + FormatNumber(span) + " s run; expected at most " +
+             FormatNumber(kMaxSteps) + " steps: a time step of at least " +
+             FormatNumber(span / kMaxSteps) + " s (or \"auto\")");
+  if (scene.output.film) {
+    const std::string problem = FilmFramesProblem(span, scene.film.fps, scene.film.speed);
+    if (!problem.empty())
+      fail(node("film.speed") || !node("film.fps") ? "film.speed" : "film.fps", problem);
+  }
+}
+
 void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std::string& file) {
   const toml::table* t = ends.SubTable(which, true);
   TableReader r(*t, "ends." + which, file);
-  end.position = r.Pair("position", {0, 0}, true, false, " in m");
+  end.position = r.Pair("position", {0, 0}, true, false, " in m", kMaxLength);
   const std::string motion =
       r.Choice("motion", "fixed", {"fixed", "free", "trochoid", "table"});
   if (motion == "fixed") end.motion = EndMotionKind::kFixed;
   if (motion == "free") end.motion = EndMotionKind::kFree;
   if (motion == "trochoid") {
     end.motion = EndMotionKind::kTrochoid;
-    end.x_amplitudes = r.Pair("x_amplitudes", {0, 0}, false, false, " in m");
-    end.y_amplitudes = r.Pair("y_amplitudes", {0, 0}, false, false, " in m");
-    end.period = r.Positive("period", " in s");
-    end.ramp_rate = r.Positive("ramp_rate", " in 1/s");
+    end.x_amplitudes = r.Pair("x_amplitudes", {0, 0}, false, false, " in m", kMaxLength);
+    end.y_amplitudes = r.Pair("y_amplitudes", {0, 0}, false, false, " in m", kMaxLength);
+    end.period = r.Positive("period", " in s", kMinPeriod, kMaxPeriod);
+    end.ramp_rate = r.Positive("ramp_rate", " in 1/s", 0, kMaxRampRate);
   }
   if (motion == "table") {
     end.motion = EndMotionKind::kTable;
     const std::string name = r.String("file", "", true);
+    if (name.empty() || name.find('\0') != std::string::npos)
+      r.Fail(t->get("file"), "file", "expected the name of a CSV file t,x,y, got " + Quote(name));
     const std::filesystem::path base = std::filesystem::path(file).parent_path();
     end.table_file = (base / name).string();
     try {
@@ -308,7 +420,8 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
     root = toml::parse(text, file);
   } catch (const toml::parse_error& e) {
     std::ostringstream os;
-    os << file << ":" << e.source().begin.line << ": not valid TOML: " << e.description();
+    os << EscapeText(file) << ":" << e.source().begin.line
+       << ": not valid TOML: " << EscapeText(e.description());
     throw Error(os.str());
   }
   SceneDef scene;
@@ -338,16 +451,18 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
              "expected at least one end that is not \"free\" (a cable with two free ends has no "
              "equilibrium)");
     // scene-format.md: ends further apart than the cable can reach are an error for an
-    // inextensible line (an elastic one starts stretched: the run warns and solves).
+    // inextensible line (an elastic one starts stretched: the run warns and solves, up to
+    // kMaxStartStretch, which CheckModelLimits checks on the built model). The comparison is
+    // the run's: ends exactly the cable's length apart are refused too.
     if (scene.model == CableModelKind::kInextensible &&
         scene.start.motion != EndMotionKind::kFree && scene.end.motion != EndMotionKind::kFree) {
       double total = 0;
       for (const SectionDef& sec : scene.sections) total += sec.length;
       const double chord = std::hypot(scene.end.position[0] - scene.start.position[0],
                                       scene.end.position[1] - scene.start.position[1]);
-      if (chord > total)
+      if (chord >= total)
         r.Fail(ends->get("end")->as_table()->get("position"), "end.position",
-               "expected the ends at most the cable's length (" + TableReader::Fmt(total) +
+               "expected the ends less than the cable's length (" + TableReader::Fmt(total) +
                    " m) apart for an inextensible cable, they are " + TableReader::Fmt(chord) +
                    " m apart");
     }
@@ -362,7 +477,8 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
   }
   if (const toml::table* t = top.SubTable("simulation", false)) {
     TableReader r(*t, "simulation", file);
-    scene.simulation.duration = r.OptionalPositive("duration", 60.0, " of seconds");
+    scene.simulation.duration =
+        r.OptionalPositive("duration", 60.0, " of seconds", 0, kMaxTime);
     if (const toml::node* n = r.Get("time_step")) {
       if (n->is_string()) {
         if (n->value<std::string>().value() != "auto")
@@ -373,33 +489,31 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
           r.Fail(n, "time_step", "expected \"auto\" or a positive number of seconds");
       }
     }
-    scene.simulation.tolerance = r.OptionalPositive("tolerance", 0.0, " in m (local error per step)");
-    scene.simulation.safety_factor = r.OptionalPositive("safety_factor", 0.8, " (fraction of the stability limit)");
-    if (scene.simulation.safety_factor > 1)
-      r.Fail(t->get("safety_factor"), "safety_factor",
-             "expected a fraction of the stability limit in (0, 1]");
+    scene.simulation.tolerance =
+        r.OptionalPositive("tolerance", 0.0, " in m (local error per step)", 0, kMaxLength);
+    scene.simulation.safety_factor = r.OptionalPositive(
+        "safety_factor", 0.8, " (fraction of the stability limit)", 0, 1.0);
     scene.simulation.integrator =
         r.Choice("integrator", "implicit", {"explicit", "implicit"}) == "explicit"
             ? IntegratorChoice::kExplicit
             : IntegratorChoice::kImplicit;
-    scene.simulation.rho_infinity = r.OptionalNonNegative("rho_infinity", 0.5, "");
-    if (scene.simulation.rho_infinity > 1)
-      r.Fail(t->get("rho_infinity"), "rho_infinity", "expected a number in [0, 1]");
+    scene.simulation.rho_infinity = r.Ranged("rho_infinity", 0.5, false, 0.0, 1.0, "");
     r.Finish();
   }
   if (const toml::table* t = top.SubTable("film", false)) {
     TableReader r(*t, "film", file);
     FilmDef& f = scene.film;
-    f.width = r.Integer("width", f.width, 16, 7680, false);
-    f.height = r.Integer("height", f.height, 16, 4320, false);
+    f.width = r.Integer("width", f.width, kMinFilmSize, kMaxFilmWidth, false);
+    f.height = r.Integer("height", f.height, kMinFilmSize, kMaxFilmHeight, false);
     if (f.width % 2) r.Fail(t->get("width"), "width", "expected an even number of pixels");
     if (f.height % 2) r.Fail(t->get("height"), "height", "expected an even number of pixels");
-    f.fps = r.OptionalPositive("fps", f.fps, " of frames per second");
-    f.speed = r.OptionalPositive("speed", f.speed, " (simulated seconds per second of film)");
+    f.fps = r.Ranged("fps", f.fps, false, kMinFps, kMaxFps, " of frames per second");
+    f.speed = r.OptionalPositive("speed", f.speed, " (simulated seconds per second of film)", 0,
+                                 kMaxTime);
     f.crf = r.Integer("crf", f.crf, 0, 51, false);
-    f.colormap = r.Choice("colormap", f.colormap, {"viridis", "cividis", "magma", "inferno", "plasma"});
+    f.colormap = r.Choice("colormap", f.colormap, ColormapNames());
     if (r.Has("tension_range")) {
-      const auto range = r.Pair("tension_range", {0, 0}, true, true, " in N");
+      const auto range = r.Pair("tension_range", {0, 0}, true, true, " in N", kMaxTension);
       if (!(range[1] > range[0]))
         r.Fail(t->get("tension_range"), "tension_range", "expected [min, max] with max > min");
       f.tension_min = range[0];
@@ -409,22 +523,36 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
   }
   if (const toml::table* t = top.SubTable("output", false)) {
     TableReader r(*t, "output", file);
-    scene.output.interval = r.OptionalPositive("interval", 0.0, " of seconds");
+    scene.output.interval = r.OptionalPositive("interval", 0.0, " of seconds", 0, kMaxTime);
     scene.output.film = r.Bool("film", true);
     scene.output.frames = r.Bool("frames", false);
     r.Finish();
   }
-  if (scene.output.interval == 0) scene.output.interval = scene.film.speed / scene.film.fps;
+  const bool interval_given = scene.output.interval > 0;
+  if (!interval_given) scene.output.interval = scene.film.speed / scene.film.fps;
   top.Finish();
+  CheckRunCounts(root, scene, file, interval_given);
   return scene;
 }
 
 SceneDef LoadScene(const std::string& path) {
+  const std::string name = EscapeText(path);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw Error(name + ": is a directory; expected a scene file (TOML)");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return ParseScene(text.str(), path);
+  if (!in) throw Error(name + ": cannot open the scene file: " + std::strerror(errno));
+  // At most kMaxSceneBytes, checked while reading, whatever the file is (/dev/zero).
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSceneBytes)
+      throw Error(name + ": larger than " + std::to_string(kMaxSceneBytes >> 20) +
+                  " MiB; expected a scene file of at most that size");
+  }
+  if (in.bad()) throw Error(name + ": cannot read the scene file");
+  return ParseScene(text, path);
 }
 
 }  // namespace cablefilm

@@ -1,56 +1,170 @@
 #include "scene/table_file.h"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
+#include <cstring>
+#include <filesystem>
+#include <memory>
 
 #include "core/error.h"
+#include "scene/scene_limits.h"
+#include "scene/text_escape.h"
 
 namespace cablefilm {
 namespace {
 
-bool ParseRow(const std::string& line, std::array<double, 3>& row) {
-  std::stringstream ss(line);
-  std::string cell;
-  int i = 0;
-  while (std::getline(ss, cell, ',')) {
-    if (i >= 3) return false;
-    char* end = nullptr;
-    row[i] = std::strtod(cell.c_str(), &end);
-    while (end && (*end == ' ' || *end == '\t' || *end == '\r')) ++end;
-    if (end == cell.c_str() || (end && *end != '\0')) return false;
+constexpr char kHeader[] = "t,x,y";
+
+bool IsBlank(char c) { return c == ' ' || c == '\t'; }
+
+// A plain decimal number, surrounded by blanks at most: [+-]digits[.digits][(e|E)[+-]digits]
+// (or .digits). No hexadecimal, inf or nan, which strtod alone would take.
+bool ParseDecimal(const std::string& cell, double* value) {
+  std::size_t b = 0, e = cell.size();
+  while (b < e && IsBlank(cell[b])) ++b;
+  while (e > b && IsBlank(cell[e - 1])) --e;
+  std::size_t i = b;
+  auto digits = [&] {
+    const std::size_t from = i;
+    while (i < e && cell[i] >= '0' && cell[i] <= '9') ++i;
+    return i - from;
+  };
+  if (i < e && (cell[i] == '+' || cell[i] == '-')) ++i;
+  std::size_t mantissa = digits();
+  if (i < e && cell[i] == '.') {
     ++i;
+    mantissa += digits();
   }
-  return i == 3;
+  if (mantissa == 0) return false;
+  if (i < e && (cell[i] == 'e' || cell[i] == 'E')) {
+    ++i;
+    if (i < e && (cell[i] == '+' || cell[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  if (i != e) return false;
+  const std::string number = cell.substr(b, e - b);
+  *value = std::strtod(number.c_str(), nullptr);
+  return true;
 }
+
+// Three decimal numbers separated by commas, nothing else.
+bool ParseRow(const std::string& line, std::array<double, 3>& row) {
+  std::size_t from = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t comma = line.find(',', from);
+    if ((i < 2) != (comma != std::string::npos)) return false;  // two commas exactly
+    const std::string cell = line.substr(from, i < 2 ? comma - from : std::string::npos);
+    if (!ParseDecimal(cell, &row[i])) return false;
+    from = comma + 1;
+  }
+  return true;
+}
+
+// The line as it may be shown: escaped, and cut if long.
+std::string Shown(const std::string& line) {
+  constexpr std::size_t kShown = 60;
+  return line.size() <= kShown ? QuoteText(line) : QuoteText(line.substr(0, kShown)) + "...";
+}
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
 
 }  // namespace
 
 std::vector<std::array<double, 3>> ReadMotionTable(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot open the motion table");
+  const std::string name = EscapeText(path);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw Error(name + ": is a directory; expected a CSV file of rows t,x,y");
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+  if (!file)
+    throw Error(name + ": cannot open the motion table: " + std::strerror(errno));
+
   std::vector<std::array<double, 3>> rows;
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
+  bool header = false;      // the first row was the header "t,x,y"
+  bool first = true;        // no row (header or data) seen yet
+  long number = 0;          // line number
+  std::uintmax_t bytes = 0;
+  auto where = [&] { return name + ":" + std::to_string(number) + ": "; };
+  auto which = [&] {
+    return header ? std::string(" (after the header row \"t,x,y\")")
+                  : std::string(" (this table has no header row \"t,x,y\")");
+  };
+  auto take = [&](std::string line) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line[start] == '#') return;  // blank or comment
     std::array<double, 3> row{};
-    if (!ParseRow(line, row)) {
-      if (rows.empty() && number == 1) continue;  // a header such as "t,x,y"
-      throw Error(path + ":" + std::to_string(number) +
-                  ": expected three numbers t,x,y (s, m, m), got \"" + line + "\"");
+    if (first && line == kHeader) {
+      header = true;
+      first = false;
+      return;
     }
+    if (!ParseRow(line, row)) {
+      if (first)
+        throw Error(where() + "expected a header row exactly \"t,x,y\" or three numbers t,x,y "
+                    "in s, m, m (finite decimals, separated by commas), got " + Shown(line));
+      throw Error(where() + "expected three numbers t,x,y in s, m, m (finite decimals, "
+                  "separated by commas)" + which() + ", got " + Shown(line));
+    }
+    first = false;
     for (double v : row)
       if (!std::isfinite(v))
-        throw Error(path + ":" + std::to_string(number) + ": expected finite numbers");
+        throw Error(where() + "expected finite numbers, got " + Shown(line));
+    if (!(std::abs(row[0]) <= kMaxTime))
+      throw Error(where() + "expected a time t from -" + FormatNumber(kMaxTime) + " to " +
+                  FormatNumber(kMaxTime) + " s, got " + FormatNumber(row[0]));
+    if (!(std::abs(row[1]) <= kMaxLength && std::abs(row[2]) <= kMaxLength))
+      throw Error(where() + "expected offsets x, y from -" + FormatNumber(kMaxLength) + " to " +
+                  FormatNumber(kMaxLength) + " m, got " + Shown(line));
     if (!rows.empty() && !(row[0] > rows.back()[0]))
-      throw Error(path + ":" + std::to_string(number) + ": expected the time to increase, got " +
-                  std::to_string(row[0]) + " after " + std::to_string(rows.back()[0]));
+      throw Error(where() + "expected the time to increase, got " + FormatNumber(row[0]) +
+                  " after " + FormatNumber(rows.back()[0]));
+    if (static_cast<long>(rows.size()) >= kMaxTableRows)
+      throw Error(where() + "more than " + FormatNumber(static_cast<double>(kMaxTableRows)) +
+                  " rows; expected at most that many");
     rows.push_back(row);
+  };
+
+  std::string line;
+  char buffer[1 << 16];
+  for (;;) {
+    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get());
+    if (n == 0) {
+      if (std::ferror(file.get()))
+        throw Error(name + ": cannot read the motion table: " + std::strerror(errno));
+      break;
+    }
+    bytes += n;
+    if (bytes > kMaxTableBytes)
+      throw Error(name + ": larger than " + std::to_string(kMaxTableBytes >> 20) +
+                  " MiB; expected a motion table of at most that size (" +
+                  FormatNumber(static_cast<double>(kMaxTableRows)) + " rows)");
+    for (std::size_t i = 0; i < n; ++i) {
+      if (buffer[i] == '\n') {
+        ++number;
+        take(std::move(line));
+        line.clear();
+        continue;
+      }
+      if (line.size() >= kMaxTableLineLength) {
+        ++number;
+        throw Error(where() + "longer than " + std::to_string(kMaxTableLineLength) +
+                    " characters; expected a row t,x,y, got " + Shown(line));
+      }
+      line += buffer[i];
+    }
   }
-  if (rows.size() < 2) throw Error(path + ": expected at least two rows t,x,y");
+  if (!line.empty()) {
+    ++number;
+    take(std::move(line));
+  }
+  if (rows.size() < 2)
+    throw Error(name + ": expected at least two rows t,x,y" + which() + ", found " +
+                std::to_string(rows.size()));
   return rows;
 }
 

@@ -1,6 +1,9 @@
 #pragma once
-// The CSV table of a recorded end motion: rows "t,x,y" (s, m, m), an optional header line,
-// times strictly increasing.
+// The CSV table of a recorded end motion: rows "t,x,y" (s, m, m), times strictly increasing,
+// read strictly: a first row exactly "t,x,y" (the header) or none; every other row three
+// decimal numbers (no hexadecimal, inf or nan, no empty cell); blank lines and lines starting
+// with '#' are skipped. At most kMaxTableBytes, kMaxTableRows rows and kMaxTableLineLength
+// characters a line (scene_limits.h), checked while reading.
 #include <array>
 #include <string>
 #include <vector>

@@ -167,5 +167,36 @@ TEST_F(RunCommandTest, DeterministicBitwise) {
   EXPECT_EQ(ReadText(dir_ / "run1" / "equilibrium.csv"), ReadText(dir_ / "run2" / "equilibrium.csv"));
 }
 
+// Issue 11, defect 3: a fixed-step run has at most 1e9 steps; the explicit scheme's automatic
+// step comes from the model, so `check` and `run` check it on the model, before anything runs.
+TEST_F(RunCommandTest, ExplicitAutomaticStepsHaveALimit) {
+  // catenary.toml: 0.8 x 1.118e-3 s a step; 1e6 s make 1.1e9 steps.
+  std::string text = Replace(Scene("catenary"), "time_step = \"auto\"",
+                             "integrator = \"explicit\"\ntime_step = \"auto\"");
+  text = Replace(Replace(text, "duration = 2.0", "duration = 1e6"), "interval = 0.05",
+                 "interval = 1.0");
+  const std::string scene = Write("steps.toml", text);
+  for (int command = 0; command < 2; ++command) {
+    RunOptions opt;
+    opt.out_dir = (dir_ / "out").string();
+    opt.film = 0;
+    try {
+      command == 0 ? CheckCommand(scene) : RunCommand(scene, opt);
+      ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find("steps.toml: simulation.time_step: \"auto\" with integrator = "
+                         "\"explicit\""),
+                std::string::npos)
+          << msg;
+      EXPECT_NE(msg.find("expected at most 1e9 steps"), std::string::npos) << msg;
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out"));  // refused before anything was written
+  // A tenth of it runs (and `check` says so).
+  const std::string shorter = Write("shorter.toml", Replace(text, "duration = 1e6", "duration = 1e5"));
+  EXPECT_EQ(CheckCommand(shorter), 0);
+}
+
 }  // namespace
 }  // namespace cablefilm

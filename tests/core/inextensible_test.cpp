@@ -1,7 +1,8 @@
 // The inextensible cable (reference [1] of the paper; src/core/inextensible.*) against truths
 // computed here, independently of src/core:
 //  - a pinned chain released from a horizontal line in vacuum against the N-link pendulum of
-//    point masses in angle coordinates (Lagrange's equations, RK4 at a tiny step);
+//    point masses in angle coordinates (Lagrange's equations, RK4 at a tiny step); the same
+//    release run as a user runs it, time_step = "auto" (local error control), 5 and 20 links;
 //  - small oscillations of a hanging chain against the linearised pendulum's generalized
 //    eigenproblem and its continuous limit (Bessel J0 zeros);
 //  - the elastic model tending to the inextensible one as 1/EA (static P63);
@@ -253,6 +254,154 @@ TEST(InextensiblePendulum, TwentyLinksReleasedFromHorizontal) {
   // limit, ~5e-3 s, does not bind). Measured at the finest: end 7.1e-8 m, T_0 5.4e-6 N (of ~20
   // N); the bounds are the second-order error at sqrt(2) dt, as above.
   CheckPendulumRelease(20, 0.1, 6, 1.5625e-5, 1.5e-7, 1.1e-5, 5e-5);
+}
+
+// ---------------------------------------------------------------------------------------------
+// time_step = "auto": the run as a user makes it (ChooseTimeGrid, MakeIntegrator, Simulate), a
+// 5 m chain of 1 kg/m in vacuum pinned at station 0 and released at rest from a horizontal line,
+// a row every 0.05 s. While the tensions are near zero the transverse-wave limit does not bound
+// the substeps (before the local error control, the run took one step per row and was 15 mm off
+// at t = 1 s with 5 links); the local error control must.
+struct ChainSample {
+  Eigen::Matrix2Xd x;  // every station [m]
+  double tension0;     // first link [N]
+};
+
+// The pendulum's stations, station 0 at the origin.
+Eigen::Matrix2Xd PendulumStations(const CableModel& m, const Eigen::VectorXd& th) {
+  Eigen::Matrix2Xd x = Eigen::Matrix2Xd::Zero(2, m.stations());
+  for (int i = 0; i < m.links; ++i)
+    x.col(i + 1) = x.col(i) + m.rest_length[i] * Eigen::Vector2d(std::cos(th[i]), std::sin(th[i]));
+  return x;
+}
+
+// The truth at the given times (multiples of `quantum`), from rest with every angle 0, by RK4.
+std::vector<ChainSample> ChainTruth(const CableModel& m, const std::vector<double>& times,
+                                    double quantum, double h) {
+  const Pendulum p = PendulumOf(m);
+  Eigen::VectorXd th = Eigen::VectorXd::Zero(m.links), w = Eigen::VectorXd::Zero(m.links);
+  const long steps = std::lround(quantum / h);
+  std::vector<ChainSample> out;
+  long done = 0;
+  for (double t : times) {
+    for (; done < std::lround(t / quantum); ++done) p.Advance(th, w, quantum / steps, steps);
+    out.push_back({PendulumStations(m, th), p.FirstTension(th, w)});
+  }
+  return out;
+}
+
+struct AutoRun {
+  std::vector<ChainSample> samples;  // at the compared times
+  IntegratorStats stats;
+};
+
+AutoRun RunAuto(const CableModel& m, double tolerance, const std::vector<double>& times) {
+  SimulationDef sim;
+  sim.duration = times.back();
+  sim.time_step = 0;  // "auto"
+  sim.tolerance = tolerance;
+  const TimeGrid grid = ChooseTimeGrid(m, sim, 0.05);
+  EXPECT_EQ(grid.kind, IntegratorKind::kInextensible);
+  EXPECT_EQ(grid.steps_per_output, 1);  // the substeps are the integrator's own
+  EXPECT_NEAR(grid.error_tolerance, tolerance > 0 ? tolerance : 1e-6 * m.total_length(), 1e-18);
+  CableState s;
+  s.x = Eigen::Matrix2Xd::Zero(2, m.stations());
+  for (int j = 0; j <= m.links; ++j) s.x(0, j) = m.arc_length[j];
+  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+  auto integ = MakeIntegrator(m, grid);
+  AutoRun r;
+  size_t next = 0;
+  Simulate(m, *integ, s, grid, [&](const CableState& st, const Eigen::VectorXd& T) {
+    if (next < times.size() && std::abs(st.t - times[next]) < 1e-9) {
+      r.samples.push_back({st.x, T[0]});
+      ++next;
+    }
+    return true;
+  });
+  EXPECT_EQ(next, times.size());
+  r.stats = integ->stats();
+  return r;
+}
+
+void CheckAutoRelease(int links, double rk4_step) {
+  const double L = 5.0, mu = 1.0;
+  const CableModel m = Chain(links, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Free({L, 0}));
+  const std::vector<double> times = {0.25, 0.5, 1.0};
+  // RK4's own error is 1/15 of its difference from the run at 2h: held to 1e-7 m and 1e-6 of
+  // the tension, 1e-2 or less of the smallest errors measured below (3e-6 m, 2e-6).
+  const std::vector<ChainSample> truth = ChainTruth(m, times, 0.25, rk4_step);
+  const std::vector<ChainSample> truth2 = ChainTruth(m, times, 0.25, 2 * rk4_step);
+  for (size_t k = 0; k < times.size(); ++k) {
+    EXPECT_LT((truth[k].x - truth2[k].x).colwise().norm().maxCoeff(), 1e-7);
+    EXPECT_LT(std::abs(truth[k].tension0 / truth2[k].tension0 - 1), 1e-6);
+  }
+  // Largest errors over the compared times: the free end, every station, T_0 (relative).
+  struct Errors {
+    double end = 0, stations = 0, tension = 0;
+  } e[2];  // at the default tolerance (1e-6 of the length) and 100 times tighter
+  for (int run = 0; run < 2; ++run) {
+    const double tolerance = run == 0 ? 0.0 : 1e-2 * 1e-6 * L;  // 0: the default
+    const AutoRun r = RunAuto(m, tolerance, times);
+    ASSERT_EQ(r.samples.size(), times.size());
+    for (size_t k = 0; k < times.size(); ++k) {
+      const ChainSample& c = r.samples[k];
+      const double end = (c.x.col(links) - truth[k].x.col(links)).norm();
+      const double dT = std::abs(c.tension0 / truth[k].tension0 - 1);
+      std::printf("  N=%d, tolerance %s: t = %.2f s end (%.6f, %.6f) m, error %.3e m; T_0 "
+                  "%.5f N (truth %.5f N), error %.3e relative\n",
+                  links, run == 0 ? "default" : "/100", times[k], c.x(0, links), c.x(1, links),
+                  end, c.tension0, truth[k].tension0, dT);
+      // The requirement: the free end within 1 mm and T_0 within 1 %.
+      EXPECT_LT(end, 1e-3) << "t = " << times[k];
+      EXPECT_LT(dT, 1e-2) << "t = " << times[k];
+      e[run].end = std::max(e[run].end, end);
+      e[run].stations =
+          std::max(e[run].stations, (c.x - truth[k].x).colwise().norm().maxCoeff());
+      e[run].tension = std::max(e[run].tension, dT);
+    }
+    std::printf("  N=%d, tolerance %s: %ld substeps, %ld rejected for 1 s (20 outputs); largest "
+                "errors: free end %.3e m, any station %.3e m, T_0 %.3e\n",
+                links, run == 0 ? "default" : "/100", r.stats.steps, r.stats.rejected,
+                e[run].end, e[run].stations, e[run].tension);
+  }
+  std::printf("  N=%d: tightening the tolerance 100x divides the largest errors by %.1f (free "
+              "end), %.1f (any station), %.1f (T_0)\n",
+              links, e[0].end / e[1].end, e[0].stations / e[1].stations,
+              e[0].tension / e[1].tension);
+  // The local error h^3 |x'''| / 6 is held near the tolerance, so h ~ tol^(1/3) and the global
+  // error, (substeps ~ tol^(-1/3)) x tol, ~ tol^(2/3): 100x tighter divides it by ~21 (measured
+  // over tolerances 5e-5 .. 5e-10 m: the largest station error falls as tol^0.62, 17 to 18 times
+  // per factor 100). At least 10 leaves room for the error's varying fraction of the
+  // tolerance. The position error is that of the whole cable: one component of one station's
+  // error can change sign between two tolerances (the 20-link free end's x error does, near the
+  // default: -1.6e-6 m at 5e-6 m, +1.1e-5 m at 5e-7 m), and its ratio then says nothing.
+  EXPECT_GT(e[0].stations / e[1].stations, 10.0);
+  EXPECT_GT(e[0].tension / e[1].tension, 10.0);
+}
+
+TEST(InextensibleAuto, FiveLinkChainReleasedFromHorizontal) { CheckAutoRelease(5, 1e-4); }
+
+TEST(InextensibleAuto, TwentyLinkChainReleasedFromHorizontal) { CheckAutoRelease(20, 2.5e-5); }
+
+TEST(InextensibleAuto, EndsPulledApartEndTheRunWithABlowUpError) {
+  // A 10 m chain whose far end is pulled from 8 m to 12 m from the pinned one in 1 s: at
+  // t = 0.5 s it would have to stretch. The error control must not chase ever smaller substeps
+  // (a hang): it ends the run with a BlowUpError that says why, near t = 0.5 s.
+  const CableModel m = Chain(10, 10.0, 1.0, EndMotion::Fixed({0, 0}),
+                             EndMotion::Table({8, 0}, {{0, 0, 0}, {1, 4, 0}}));
+  CableState s = SolveInextensibleEquilibrium(m, nullptr);
+  InextensibleIntegrator integ(m, 1e-5);
+  integ.Initialize(m, s);
+  try {
+    for (int k = 0; k < 40; ++k) integ.Step(m, s, 0.025);
+    FAIL() << "the chain was stretched without an error";
+  } catch (const BlowUpError& e) {
+    std::printf("  %s (%ld substeps, %ld rejected)\n", e.what(), integ.stats().steps,
+                integ.stats().rejected);
+    EXPECT_GT(e.time, 0.4);
+    EXPECT_LT(e.time, 0.5 + 1e-9);
+    EXPECT_NE(std::string(e.what()).find("inextensible"), std::string::npos);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "core/equilibrium.h"
+#include "core/explicit_integrator.h"
+#include "core/stability.h"
 #include "core/integrator.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
@@ -69,6 +71,32 @@ TEST(NoAllocation, InextensibleStep) {
   EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kInextensible, CableModelKind::kInextensible,
                                      1.0 / 30, 0),
             0);
+}
+
+TEST(NoAllocation, InextensibleStepUnderErrorControl) {
+  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kInextensible, CableModelKind::kInextensible,
+                                     1.0 / 30, 1e-6),
+            0);
+}
+
+TEST(NoAllocation, ExplicitAutoStepThroughSnaps) {
+  // The catenary chain released from its chord: its links first snap taut at t = 0.45 s, where
+  // "auto" refines its substeps (the check that predicts the snaps, the cable's energy it then
+  // needs) and takes them.
+  const SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
+  const CableModel m = BuildModel(scene);
+  CableState s;
+  s.x = StraightChord(m);
+  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+  const double dt = 0.8 * ComputeStabilityLimit(m).time_step;
+  ExplicitIntegrator integrator(m, 0.8);
+  integrator.Initialize(m, s);
+  while (s.t < 0.4) integrator.Step(m, s, dt);
+  ASSERT_EQ(integrator.stats().rejected, 0);
+  const long before = g_allocations;
+  while (s.t < 0.6) integrator.Step(m, s, dt);
+  EXPECT_EQ(g_allocations - before, 0);
+  EXPECT_GT(integrator.stats().rejected, 0);  // it did refine in the counted steps
 }
 
 }  // namespace

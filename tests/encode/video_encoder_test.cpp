@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <filesystem>
 
 #include "core/error.h"
@@ -57,7 +61,7 @@ TEST(VideoEncoder, FilmReopensWithTheExpectedStream) {
   ASSERT_GE(info.moov_offset, 0);
   ASSERT_GE(info.mdat_offset, 0);
   EXPECT_LT(info.moov_offset, info.mdat_offset);
-  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+  EXPECT_FALSE(std::filesystem::exists(PartialPath(path)));
 }
 
 TEST(VideoEncoder, NonIntegerFrameRate) {
@@ -88,7 +92,53 @@ TEST(VideoEncoder, UnfinishedEncoderLeavesNoFilm) {
     encoder.AddFrame(Pattern(64, 48, 0));
   }
   EXPECT_FALSE(std::filesystem::exists(path));
-  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+  EXPECT_FALSE(std::filesystem::exists(PartialPath(path)));
+}
+
+TEST(VideoEncoder, PartialFilmPlaysUnderItsPartialName) {
+  const std::string path = TempDir() + "/cut_short.mp4";
+  EXPECT_EQ(PartialPath(path), TempDir() + "/cut_short.partial.mp4");
+  std::filesystem::remove(PartialPath(path));
+  VideoOptions options;
+  options.width = 64;
+  options.height = 48;
+  options.fps = 30;
+  options.preset = "ultrafast";
+  VideoEncoder encoder(path, options);
+  for (int i = 0; i < 40; ++i) encoder.AddFrame(Pattern(64, 48, i));
+  encoder.FinishPartial();
+  encoder.Finish();  // after FinishPartial: nothing
+  EXPECT_FALSE(std::filesystem::exists(path)) << "an incomplete film never takes the final name";
+  const VideoInfo info = ProbeVideo(PartialPath(path));
+  EXPECT_EQ(info.codec, "h264");
+  EXPECT_EQ(info.frames, 40);  // every frame, the encoder flushed
+}
+
+// SIGKILL gives no chance to finish: the fragmented partial film must play as it is, up to
+// the frames the encoder had released (x264 holds a few back for its look-ahead).
+TEST(VideoEncoder, PartialFilmPlaysAfterSigkill) {
+  const std::string path = TempDir() + "/killed.mp4";
+  std::filesystem::remove(PartialPath(path));
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    VideoOptions options;
+    options.width = 64;
+    options.height = 48;
+    options.preset = "ultrafast";
+    VideoEncoder encoder(path, options);
+    for (int i = 0; i < 120; ++i) encoder.AddFrame(Pattern(64, 48, i));
+    raise(SIGKILL);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+  EXPECT_FALSE(std::filesystem::exists(path));
+  const VideoInfo info = ProbeVideo(PartialPath(path));
+  EXPECT_EQ(info.codec, "h264");
+  // ultrafast has no look-ahead to speak of: nearly every frame is there.
+  EXPECT_GE(info.frames, 100);
+  EXPECT_LE(info.frames, 120);
 }
 
 TEST(VideoEncoder, RejectsBadOptionsAndFrames) {

@@ -61,6 +61,17 @@ TEST(ParseControl, MalformedOrNotAnObject) {
             "control: malformed JSON (expected an object such as {\"pause\": true})");
 }
 
+// Found by fuzzing the server: a deeply nested body was dumped into the message recursively
+// and overflowed the stack of the server's thread. Nested values are now described, not shown.
+TEST(ParseControl, DeepNestingIsDescribedNotDumped) {
+  const std::string deep = std::string(2000, '[') + std::string(2000, ']');
+  EXPECT_EQ(Refusal(deep), "control: expected a JSON object, got an array of 1 elements");
+  EXPECT_EQ(Refusal("{\"speed\": " + deep + "}"),
+            "speed: expected a number in [0.1, 10] (simulated seconds per second), got an array "
+            "of 1 elements");
+  EXPECT_EQ(Refusal(R"({"pause": {"a": 1}})"), "pause: expected true or false, got an object with 1 fields");
+}
+
 TEST(ParseControl, UnknownFieldIsNamedAndEscaped) {
   EXPECT_EQ(Refusal(R"({"speed": 1, "sped": 2})"),
             "unknown field \"sped\"; expected any of pause, step, restart, speed, amplitude_scale, "

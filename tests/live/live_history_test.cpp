@@ -91,7 +91,9 @@ TEST(LiveHistory, BoxAlwaysHoldsTheCableAndShrinksSlowly) {
       EXPECT_GE(in.snapshot.x[j], in.x_min);
       EXPECT_LE(in.snapshot.x[j], in.x_max);
     }
-    if (k == 51) EXPECT_GT(in.y_max, 7.0);  // one frame later the box has not snapped in
+    if (k == 51) {
+      EXPECT_GT(in.y_max, 7.0);  // one frame later the box has not snapped in
+    }
   }
 }
 

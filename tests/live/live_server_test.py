@@ -294,6 +294,36 @@ def run(args):
             check(e.code == 405, f'GET /control answered {e.code}')
         check(srv.get('/state')[0] == 200, 'the server stopped serving after bad controls')
 
+    def hostile_input():
+        # Seeded random bodies (fields, atoms, binary, deep nesting) and raw garbage on the
+        # socket: every control is answered 200 or 400 and the server keeps serving. Deep
+        # nesting once overflowed a server thread's stack.
+        import random
+        rng = random.Random(7)
+        atoms = ['true', 'false', 'null', '1', '-1', '1e999', '0.5', '"x"', '"viridis"', '[]',
+                 '{}', '[0,1]', '"\\u0000"', '1e-400', 'NaN', 'Infinity']
+        keys = ['pause', 'speed', 'amplitude_scale', 'period', 'current', 'colormap',
+                'lock_range', 'tension_range', 'x', '']
+        for i in range(300):
+            r = rng.random()
+            if r < 0.5:
+                body = ('{' + ','.join(f'"{rng.choice(keys)}":{rng.choice(atoms)}'
+                                       for _ in range(rng.randint(0, 4))) + '}').encode()
+            elif r < 0.75:
+                body = bytes(rng.randint(0, 255) for _ in range(rng.randint(0, 200)))
+            else:
+                depth = rng.randint(1, 2000)
+                body = b'[' * depth + b']' * depth
+            code, reply = srv.control(body)
+            check(code in (200, 400, 413) and ('error' in reply) == (code != 200),
+                  f'{body[:60]!r} answered {code} {reply}')
+            if i % 50 == 0:
+                s = socket.create_connection(('127.0.0.1', srv.port))
+                s.sendall(bytes(rng.randint(0, 255) for _ in range(rng.randint(1, 5000))))
+                s.close()
+        srv.control({'pause': False, 'speed': 1, 'amplitude_scale': 1, 'period': 10, 'current': 0})
+        check(srv.get('/state')[0] == 200, 'the server stopped serving after hostile input')
+
     def stalled_viewer():
         # A viewer that asks for the stream and never reads: the simulation keeps real time.
         sock = socket.create_connection(('127.0.0.1', srv.port))
@@ -373,6 +403,7 @@ def run(args):
                          ('frames: JPEG, PNG, MJPEG, WebSocket at the asked size', frames),
                          ('pause stops t; step advances one frame', pause_and_step),
                          ('bad controls answer 400 naming the field, change nothing', bad_controls),
+                         ('hostile input: every control answered, the server keeps serving', hostile_input),
                          ('a stalled viewer slows nothing', stalled_viewer),
                          ('amplitude and period in /state', amplitude_and_period),
                          ('recording: a playable MP4 of the frames shown', record),

@@ -1,0 +1,221 @@
+// Issue 11: the program as a user drives it, through its command line: every bad input is
+// answered with a message and a status (never an abort), before anything is simulated when
+// the input alone tells; messages name the scene and print input text escaped.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string ReadText(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  if (at == std::string::npos) throw std::logic_error("test bug: \"" + from + "\" not found");
+  return text.replace(at, from.size(), to);
+}
+
+size_t Count(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+struct Outcome {
+  int status = -1;
+  std::string out, err;
+};
+
+class CommandLine : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("cablefilm_cli_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // catenary.toml (2 s, no film) with `from` replaced by `to`, written as `name`.
+  std::string Scene(const std::string& name, const std::string& from = "",
+                    const std::string& to = "") {
+    std::string text = ReadText(fs::path(CABLEFILM_SOURCE_DIR) / "scenes" / "catenary.toml");
+    if (!from.empty()) text = Replace(text, from, to);
+    const fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p.string();
+  }
+  // Runs cablefilm with `args` (already quoted for the shell), in the test's folder.
+  Outcome Run(const std::string& args) {
+    const std::string cmd = "cd '" + dir_.string() + "' || exit 99\n" +
+                            "exec >stdout.txt 2>stderr.txt\n'" + CABLEFILM_BINARY_DIR +
+                            "/cablefilm' " + args;
+    const int rc = std::system(cmd.c_str());
+    Outcome o;
+    o.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);
+    o.out = ReadText(dir_ / "stdout.txt");
+    o.err = ReadText(dir_ / "stderr.txt");
+    return o;
+  }
+  fs::path dir_;
+};
+
+// Defect 1: exit 134 (std::bad_optional_access) in check and run.
+TEST_F(CommandLine, IntegerBeyond2To53IsAMessage) {
+  const std::string scene = Scene("big.toml", "fluid_density = 0.0",
+                                  "fluid_density = 0.0\ncurrent = 9007199254740993");
+  for (const char* command : {"check", "run --no-film --out out"}) {
+    const Outcome o = Run(std::string(command) + " big.toml");
+    EXPECT_EQ(o.status, 1) << command << ": " << o.err;
+    EXPECT_NE(o.err.find("big.toml:8: environment.current"), std::string::npos) << o.err;
+  }
+}
+
+// Defect 3: duration = 1e18 simulated 0 s with exit status 0.
+TEST_F(CommandLine, RunThatWouldDoNothingIsRefused) {
+  Scene("long.toml", "duration = 2.0", "duration = 1e18");
+  for (const char* command : {"check", "run --no-film --out out"}) {
+    const Outcome o = Run(std::string(command) + " long.toml");
+    EXPECT_EQ(o.status, 1) << command;
+    EXPECT_NE(o.err.find("simulation.duration"), std::string::npos) << o.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// Defect 5: --size 99999999998x16 overflowed to a width of 1.2e9 (std::bad_alloc) and
+// --size 65536x65536 aborted under a memory limit: refused with the stated pixel limits.
+TEST_F(CommandLine, FilmSizeHasLimits) {
+  Scene("s.toml");
+  for (const char* size : {"99999999998x16", "65536x65536", "7682x4320", "640x481", "640x480x",
+                           "-640x480", "0x0", "x"}) {
+    const Outcome o = Run(std::string("run s.toml --out out --size ") + size);
+    EXPECT_EQ(o.status, 2) << size;
+    EXPECT_NE(o.err.find("--size: expected WxH"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("16x16 to 7680x4320"), std::string::npos) << o.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// Defect 6: --fps inf was accepted and failed late; fps 1e12, 1e300, 1e-300 failed after the
+// whole simulation with a libx264 message. Options are checked before anything runs.
+TEST_F(CommandLine, FilmRateOptionsHaveLimits) {
+  Scene("s.toml");
+  for (const char* fps : {"inf", "nan", "1e12", "1e300", "1e-300", "0", "241", "30fps"}) {
+    const Outcome o = Run(std::string("run s.toml --out out --fps ") + fps);
+    EXPECT_EQ(o.status, 2) << fps;
+    EXPECT_NE(o.err.find("--fps: expected a number from 1 to 240"), std::string::npos) << o.err;
+  }
+  for (const char* bad : {"--speed inf", "--speed -1", "--tension-range 0,inf",
+                          "--tension-range 5,1", "--tension-range 0,1,", "--colormap jet"}) {
+    const Outcome o = Run(std::string("run s.toml --out out ") + bad);
+    EXPECT_EQ(o.status, 2) << bad << ": " << o.err;
+  }
+  // A speed that leaves the film without a frame (or with too many) needs the scene: refused
+  // with it, before the simulation (no output folder). (Without a film it does not matter.)
+  for (const char* speed : {"1e-300", "1e6"}) {
+    const Outcome o = Run(std::string("run s.toml --out out --film --speed ") + speed);
+    EXPECT_EQ(o.status, 1) << speed;
+    EXPECT_NE(o.err.find("s.toml: --speed:"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("expected 1 to 1e6 frames"), std::string::npos) << o.err;
+    EXPECT_EQ(o.out.find("simulated"), std::string::npos) << o.out;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  // The scene's own rate: `check` refuses what `run` would.
+  Scene("fps.toml", "film = false", "film = true\n\n[film]\nfps = 1e12");
+  const Outcome o = Run("check fps.toml");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("film.fps: expected a number of frames per second from 1 to 240"),
+            std::string::npos)
+      << o.err;
+}
+
+// Defect 7: a scene path that is a directory said "material: missing".
+TEST_F(CommandLine, SceneThatIsADirectory) {
+  fs::create_directories(dir_ / "scene.toml");
+  const Outcome o = Run("check scene.toml");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("scene.toml: is a directory"), std::string::npos) << o.err;
+}
+
+// Defect 7: elastic ends more than twice the cable's length apart passed `check` with a
+// warning, then `run` reported a "numerical blow-up at t = 0"; both refuse it now.
+TEST_F(CommandLine, CheckRefusesWhatRunWouldBlowUpOn) {
+  Scene("far.toml", "position = [80.0, 20.0]", "position = [210.0, 0.0]");
+  for (const char* command : {"check", "run --no-film --out out"}) {
+    const Outcome o = Run(std::string(command) + " far.toml");
+    EXPECT_EQ(o.status, 1) << command;
+    EXPECT_NE(o.err.find("far.toml: ends.end.position: the ends are 210 m apart"),
+              std::string::npos)
+        << o.err;
+    EXPECT_EQ(o.err.find("blow-up at t = 0"), std::string::npos) << o.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// Defect 7: errors found while running never named the scene file.
+TEST_F(CommandLine, ErrorsWhileRunningNameTheScene) {
+  // Explicit steps far above the stability limit (1.1e-3 s): a blow-up while running.
+  Scene("blowup.toml", "time_step = \"auto\"", "integrator = \"explicit\"\ntime_step = 0.01");
+  const Outcome o = Run("run blowup.toml --no-film --out out");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("cablefilm: error: blowup.toml: numerical blow-up"), std::string::npos)
+      << o.err;
+}
+
+// Defect 7: film errors were printed twice (by the film writer's destructor, then by main).
+TEST_F(CommandLine, FilmErrorPrintedOnce) {
+#ifndef CABLEFILM_HAS_FILM
+  GTEST_SKIP() << "built without the renderer";
+#endif
+  Scene("film.toml", "duration = 2.0", "duration = 20.0");
+  // Frame 300 of 601 cannot be written: once the film has begun (earlier results are cleared
+  // at the start), a folder takes its name.
+  const Outcome o = Run(
+      "run film.toml --out out --film --frames --size 320x240 & "
+      "for i in $(seq 3000); do [ -e out/frames/frame_000001.png ] && break; sleep 0.01; done; "
+      "mkdir -p out/frames/frame_000300.png/x; wait $!");
+  EXPECT_EQ(o.status, 1) << o.err;
+  EXPECT_EQ(Count(o.err, "frame_000300.png: Is a directory"), 1u) << o.err;
+  EXPECT_NE(o.err.find("cablefilm: error: film.toml: "), std::string::npos) << o.err;
+}
+
+// Defect 8: a title's control characters went raw to the terminal; messages echoed escape
+// sequences from the input.
+TEST_F(CommandLine, UntrustedTextIsEscaped) {
+  Scene("title.toml", "title = \"Elastic catenary between fixed points\"",
+        "title = \"evil \\u001b[2J\\u001b]0;pwned\\u0007 \\u009b31m\"");
+  const Outcome o = Run("check title.toml");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.out.find('\x1b'), std::string::npos);
+  EXPECT_EQ(o.out.find('\x07'), std::string::npos);
+  EXPECT_EQ(o.out.find("\xC2\x9B"), std::string::npos);
+  EXPECT_NE(o.out.find("\"evil \\x1B[2J\\x1B]0;pwned\\x07 \\u{009B}31m\""), std::string::npos)
+      << o.out;
+  // In an option, an unknown key and a file name.
+  const Outcome opt = Run("run title.toml --colormap \"$(printf '\\033[31m')\"");
+  EXPECT_EQ(opt.status, 2);
+  EXPECT_EQ(opt.err.find('\x1b'), std::string::npos);
+  EXPECT_NE(opt.err.find("got \"\\x1B[31m\""), std::string::npos) << opt.err;
+  Scene("key.toml", "[output]", "[output]\n\"\\u001b[2J\" = 1");
+  const Outcome key = Run("check key.toml");
+  EXPECT_EQ(key.status, 1);
+  EXPECT_EQ(key.err.find('\x1b'), std::string::npos);
+  EXPECT_NE(key.err.find("output.\\x1B[2J: unknown key"), std::string::npos) << key.err;
+}
+
+}  // namespace

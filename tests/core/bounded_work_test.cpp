@@ -1,0 +1,90 @@
+// Every loop of the solvers ends (issue 11, defect 2): a current too small to split into
+// continuation steps, an end motion faster than any step can follow, and a signal raised while
+// the equilibrium, the implicit steps or the output loop run. Each case hung before.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "app/simulation_run.h"
+#include "core/equilibrium.h"
+#include "core/integrator.h"
+#include "scene/build_model.h"
+#include "scene/scene_loader.h"
+
+namespace cablefilm {
+namespace {
+
+SceneDef P63() { return LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml"); }
+
+// 5e-324 m/s is the smallest double: a quarter of it underflows to zero, so the continuation
+// in the current never advanced. It now goes in at once, and the answer is still water's.
+TEST(BoundedWork, AnUnderflowingCurrentStillReachesItsEquilibrium) {
+  SceneDef scene = P63();
+  CableModel still = BuildModel(scene);
+  CableModel tiny = still;
+  tiny.current = 5e-324;
+  EquilibriumReport report;
+  const CableState a = SolveEquilibrium(tiny, &report);
+  const CableState b = SolveEquilibrium(still);
+  EXPECT_LE(report.current_steps, EquilibriumOptions().max_current_steps);
+  // The drag of 5e-324 m/s is below any representable force: the same shape to round-off.
+  EXPECT_LT((a.x - b.x).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+TEST(BoundedWork, ARaisedFlagStopsTheEquilibriumAtItsFirstIteration) {
+  CableModel m = BuildModel(P63());
+  CancelFlag flag{2};
+  EquilibriumOptions options;
+  options.cancel = &flag;
+  EXPECT_THROW(SolveEquilibrium(m, StraightChord(m), nullptr, options), CancelledError);
+}
+
+TEST(BoundedWork, ARaisedFlagStopsTheImplicitStepAndTheOutputLoop) {
+  const SceneDef scene = P63();
+  const CableModel m = BuildModel(scene);
+  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
+  auto integrator = MakeIntegrator(m, grid);
+  EquilibriumReport report;
+  CableState s = MakeInitialState(scene, m, &report);
+  CancelFlag flag{0};
+  int outputs = 0;
+  // Raised by the third output: Simulate returns false with the rows so far.
+  const bool finished = Simulate(m, *integrator, s, grid,
+                                 [&](const CableState&, const Eigen::VectorXd&) {
+                                   if (++outputs == 3) flag = 15;
+                                   return true;
+                                 },
+                                 &flag);
+  EXPECT_FALSE(finished);
+  EXPECT_EQ(outputs, 3);
+  // And a Step asked of a raised flag throws before it moves the state.
+  const double t = s.t;
+  integrator->set_cancel(&flag);
+  EXPECT_THROW(integrator->Step(m, s, 1.0), CancelledError);
+  EXPECT_EQ(s.t, t);
+}
+
+// A fairlead table with two rows 1 ns apart asks for a 1 m jump in a nanosecond: 1e9 m/s. The
+// implicit steps shrank without end (memory growing with the rejected attempts); now the step
+// has a floor, a billionth of the interval, and the run ends with a blow-up that says why.
+TEST(BoundedWork, AMotionFasterThanAnyStepEndsInAClearError) {
+  SceneDef scene = P63();
+  scene.end.motion = EndMotionKind::kTable;
+  scene.end.table = {{0, 0, 0}, {1e-9, 1, 0}, {0.2, 0, 0}};
+  const CableModel m = BuildModel(scene);
+  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
+  auto integrator = MakeIntegrator(m, grid);
+  EquilibriumReport report;
+  CableState s = MakeInitialState(scene, m, &report);
+  try {
+    Simulate(m, *integrator, s, grid, [](const CableState&, const Eigen::VectorXd&) { return true; });
+    FAIL() << "a 1e9 m/s end motion ran to the end";
+  } catch (const BlowUpError& e) {
+    EXPECT_NE(std::string(e.what()).find("faster than the scheme can follow"), std::string::npos)
+        << e.what();
+    EXPECT_LT(e.time, 0.2);
+  }
+}
+
+}  // namespace
+}  // namespace cablefilm
