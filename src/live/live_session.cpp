@@ -304,7 +304,9 @@ void LiveSession::RenderLoop() {
   std::unique_ptr<VideoEncoder> video;
   Recording current;
   std::uint64_t drawn_input = 0, drawn_view = ~0ull, number = 0;
-  Image image;
+  // Drawn into, then published as the newest still (for /snapshot.png); the still it replaces
+  // becomes the next canvas unless a reader still holds it: no copy of the image per frame.
+  std::shared_ptr<Image> canvas = std::make_shared<Image>();
   auto finish_recording = [&]() {
     if (!video) return;
     try {
@@ -374,15 +376,16 @@ void LiveSession::RenderLoop() {
     } else if (!want_record && video) {
       finish_recording();
     }
+    if (!canvas) canvas = std::make_shared<Image>();
     try {
       const Frame frame = MakeLiveFrame(input, options_.width, options_.height,
                                         Colormap(colormap), Theme::Dark());
-      renderer->Draw(frame, &image);
+      renderer->Draw(frame, canvas.get());
       auto out = std::make_shared<LiveFrame>();
       out->number = ++number;
       out->t = input.snapshot.t;
       out->seq = seq;
-      const std::string bytes = jpeg->Encode(image);
+      const std::string bytes = jpeg->Encode(*canvas);
       out->message.resize(LiveFrame::kHeaderBytes);
       for (int i = 0; i < 8; ++i) {  // little-endian, whatever the machine
         std::uint64_t t_bits;
@@ -392,16 +395,22 @@ void LiveSession::RenderLoop() {
         out->message[16 + i] = static_cast<char>((out->seq >> (8 * i)) & 0xff);
       }
       out->message += bytes;
-      if (video) video->AddFrame(image);
-      auto still = std::make_shared<const Image>(image);
+      if (video) video->AddFrame(*canvas);
+      std::shared_ptr<const Image> previous;
       const double now = Seconds(start_, Clock::now());
-      std::lock_guard<std::mutex> lock(mu_);
-      frame_ = std::move(out);
-      image_ = std::move(still);
-      frame_times_.push_back(now);
-      while (!frame_times_.empty() && frame_times_.front() < now - 1.0) frame_times_.pop_front();
-      render_error_.clear();
-      frame_cv_.notify_all();
+      {
+        std::lock_guard<std::mutex> lock(mu_);
+        frame_ = std::move(out);
+        previous = std::move(image_);
+        image_ = std::move(canvas);
+        frame_times_.push_back(now);
+        while (!frame_times_.empty() && frame_times_.front() < now - 1.0) frame_times_.pop_front();
+        render_error_.clear();
+        frame_cv_.notify_all();
+      }
+      // No reader can take `previous` any more (image_ moved on): reuse it if none holds it.
+      canvas = previous && previous.use_count() == 1 ? std::const_pointer_cast<Image>(previous)
+                                                     : std::make_shared<Image>();
     } catch (const std::exception& e) {
       std::lock_guard<std::mutex> lock(mu_);
       render_error_ = e.what();
