@@ -132,7 +132,37 @@ class StaticProblem {
   BlockTridiagonal system_;
 };
 
-// Newton with Levenberg-Marquardt damping. Without current the problem is the minimum of the
+// x + dx, with each link turned and stretched as dx says to first order instead of
+// translated: a linear step that turns a link by an angle phi also stretches it by
+// l (1/cos(phi) - 1), which for stiff links is a force far larger than any load and makes
+// Newton and the pseudo-transient flow crawl. Stations are rebuilt from station 0 and the
+// closure error at a prescribed last station is spread along the arc length.
+void CurvilinearUpdate(const CableModel& m, const Eigen::Matrix2Xd& x, const Eigen::Matrix2Xd& dx,
+                       Eigen::Matrix2Xd& y) {
+  y.col(0) = x.col(0) + dx.col(0);
+  for (int j = 0; j < m.links; ++j) {
+    const Eigen::Vector2d d = x.col(j + 1) - x.col(j);
+    const double L = d.norm();
+    const Eigen::Vector2d delta = dx.col(j + 1) - dx.col(j);
+    if (!(L > 1e-12 * m.rest_length[j])) {
+      y.col(j + 1) = y.col(j) + d + delta;
+      continue;
+    }
+    const Eigen::Vector2d t = d / L, n(-t.y(), t.x());
+    const double stretched = std::max(L + t.dot(delta), 1e-3 * L);  // new length [m]
+    const double turn = n.dot(delta) / L;                          // rotation [rad]
+    const double c = std::cos(turn), s = std::sin(turn);
+    y.col(j + 1) = y.col(j) + stretched * Eigen::Vector2d(c * t.x() - s * t.y(),
+                                                          s * t.x() + c * t.y());
+  }
+  const Eigen::Vector2d closure = y.col(m.links) - (x.col(m.links) + dx.col(m.links));
+  if (m.end.prescribed()) {
+    for (int j = 1; j <= m.links; ++j)
+      y.col(j) -= (m.arc_length[j] / m.total_length()) * closure;
+  }
+}
+
+// Newton with Levenberg-Marquardt damping, each step taken along the links (CurvilinearUpdate). Without current the problem is the minimum of the
 // potential energy, and (-J + beta I) is positive definite for beta > 0 (tensions are never
 // negative), so the step descends the energy: an Armijo line search on it makes the iteration
 // converge from slack starts where the links carry nothing. With current the drag is not
@@ -141,7 +171,7 @@ bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_
             EquilibriumReport& report, const CancelFlag* cancel) {
   StaticProblem problem(m);
   const bool conservative = m.current == 0;
-  Eigen::Matrix2Xd dx(2, m.stations()), trial(2, m.stations());
+  Eigen::Matrix2Xd dx(2, m.stations()), scaled(2, m.stations()), trial(2, m.stations());
   const double length_scale = m.total_length();
   problem.Residual(x);
   double r_inf = problem.MaxResidual();
@@ -160,7 +190,8 @@ bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_
     bool accepted = false;
     double alpha = 1.0;
     for (int ls = 0; ls < 30 && !accepted; ++ls, alpha *= 0.5) {
-      trial = x + alpha * dx;
+      scaled = alpha * dx;
+      CurvilinearUpdate(m, x, scaled, trial);
       const double e_trial = conservative ? problem.Energy(trial) : 0.0;
       problem.Residual(trial);
       const double r2_trial = problem.ResidualNorm2();
@@ -180,6 +211,52 @@ bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_
     if (beta < 1e-12 * beta_start) beta = 0;
     // Round-off floor: a negligible step with a small residual is as converged as it gets.
     if (step <= 1e-13 * length_scale && r_inf <= 1e3 * tol_force) return true;
+  }
+  return r_inf <= tol_force;
+}
+
+// Pseudo-transient continuation: backward-Euler steps of the damped flow dx/dtau = R(x),
+// (-J + beta I) dx = R with beta = 1/dtau, every step taken unless it makes the residual far
+// worse. Where Newton's merit function has a false minimum (the drag is not conservative, so
+// there is no energy to descend) the flow still runs into every stable equilibrium, the state
+// a damped dynamic run would settle in. beta halves after a step that lowered the residual and
+// doubles after one that raised it, so the last steps are Newton's. No link is stretched or
+// turned by more than a quarter of its length in one step, so no step folds the line.
+bool PseudoTransient(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_iter,
+                     EquilibriumReport& report, const CancelFlag* cancel) {
+  StaticProblem problem(m);
+  Eigen::Matrix2Xd dx(2, m.stations()), trial(2, m.stations());
+  problem.Residual(x);
+  double r_inf = problem.MaxResidual();
+  double r2 = problem.ResidualNorm2();
+  // Start where a step moves the most loaded station by about a tenth of the shortest link.
+  const double beta0 = std::max(r_inf, 1e-12) / (0.1 * m.rest_length.minCoeff());  // [N/m]
+  double beta = beta0;
+  for (int it = 0; it < max_iter; ++it, ++report.iterations) {
+    if (r_inf <= tol_force) return true;
+    ThrowIfCancelled(cancel, "the static equilibrium");
+    if (!problem.NewtonStep(beta, dx)) {
+      beta = std::max(10.0 * beta, 1e-9 * beta0);
+      continue;
+    }
+    double scale = 1.0;
+    for (int j = 0; j < m.links; ++j) {
+      const double relative = (dx.col(j + 1) - dx.col(j)).norm();  // [m]
+      if (relative * scale > 0.25 * m.rest_length[j]) scale = 0.25 * m.rest_length[j] / relative;
+    }
+    dx *= scale;
+    CurvilinearUpdate(m, x, dx, trial);
+    problem.Residual(trial);
+    const double r2_trial = problem.ResidualNorm2();
+    if (!(r2_trial <= 100.0 * r2)) {  // also catches NaN: back to x with a shorter pseudo-step
+      problem.Residual(x);
+      beta = std::max(10.0 * beta, 1e-9 * beta0);
+      continue;
+    }
+    x = trial;
+    r_inf = problem.MaxResidual();
+    beta = std::max(beta * (r2_trial < r2 ? 0.5 : 2.0), 1e-9 * beta0);
+    r2 = r2_trial;
   }
   return r_inf <= tol_force;
 }
@@ -275,6 +352,15 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
   }
 
   if (reached != m.current) ok = false;  // the continuation ran out of steps
+  if (!ok) {
+    // Newton found no way down; the damped flow from the last equilibrium reached (or the
+    // first guess) does not need one.
+    report.fallback = true;
+    const int before = report.iterations;
+    ok = PseudoTransient(m, x, tol, options.max_pseudo_transient_iterations, report,
+                         options.cancel);
+    report.fallback_iterations = report.iterations - before;
+  }
   StaticProblem problem(m);
   problem.Residual(x);
   int worst = 0;
@@ -283,9 +369,12 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
   if (!ok || !(report.residual <= 1e3 * tol)) {
     std::ostringstream os;
     os << "static equilibrium did not converge after " << report.iterations
-       << " Newton iterations: the largest out-of-balance force is " << report.residual
-       << " N at station " << worst << " (tolerance " << tol
-       << " N); check that the cable can hang between its ends";
+       << " Newton iterations (" << report.fallback_iterations
+       << " of them pseudo-transient steps): the largest out-of-balance force is "
+       << report.residual << " N at station " << worst << " (tolerance " << tol
+       << " N); the cable may have no steady state between its ends in this current (ends "
+          "further apart than it can stretch, or loads nothing can balance); "
+          "[initial] state = \"straight\" starts it from the chord instead";
     throw Error(os.str());
   }
   CableState state;

@@ -1,6 +1,7 @@
 #pragma once
 // Static equilibrium of the cable with its ends at rest at their t = 0 positions: the initial
-// state of the paper. Newton's method on the free stations' positions; the Jacobian is block
+// state of the paper. Newton's method on the free stations' positions, continued in the
+// current, with pseudo-transient continuation as the fallback; the Jacobian is block
 // tridiagonal (2x2 blocks), so each iteration costs O(s).
 #include <Eigen/Core>
 
@@ -15,12 +16,15 @@ struct EquilibriumReport {
   int current_steps = 0;    // continuation steps in the current (0 without current)
   double residual = 0;      // largest out-of-balance force on a station at the end [N]
   double force_scale = 0;   // the force the residual is measured against [N]
+  bool fallback = false;    // Newton failed and pseudo-transient continuation took over
+  int fallback_iterations = 0;  // of `iterations`, those of the pseudo-transient fallback
 };
 
 struct EquilibriumOptions {
   int max_iterations = 500;     // Newton iterations in all
   double tolerance = 1e-9;      // converged when residual <= tolerance * force_scale
   int max_current_steps = 64;   // continuation steps in the current
+  int max_pseudo_transient_iterations = 5000;  // the fallback's steps when Newton fails
   const CancelFlag* cancel = nullptr;  // polled every iteration: CancelledError when raised
 };
 

@@ -10,6 +10,7 @@
 #include "core/equilibrium.h"
 #include "core/error.h"
 #include "core/forces.h"
+#include "core/integrator.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -337,6 +338,121 @@ TEST(EquilibriumRobustness, FreeHangingCable) {
   // 1e-9 * L * (EA / (w L)) at worst through the axial compliance: well below 1e-8 m here.
   EXPECT_LT(err, 1e-8);
   EXPECT_LE(MaxResidual(m, st), 1e-6 * rep.force_scale);
+}
+
+// ---------------------------------------------------------------------------------------------
+// A towed cable (issue 11, defect 10): the upper end fixed, the lower end free, in a current.
+// Each link's weight and normal drag must have no normal resultant, so every link makes the
+// same angle theta with the vertical, the critical angle of the lumped line:
+//   w_l sin(theta) = k U^2 cos^2(theta),   w_l = net weight of a link [N], k = (1/2) rho Cd d l,
+// a quadratic in sin(theta); the tension of link i (from the top) carries the tangential load of
+// the n - i - 1/2 links' worth of stations below it: T_i = w_l cos(theta) (n - i - 1/2).
+TEST(EquilibriumTowedCable, EveryLinkAtTheCriticalAngle) {
+  const double L = 200, d = 0.02, mu = 2.0, area = 2.5e-4, E = 4e10, rho = 1025, Cd = 1.2;
+  EnvironmentSpec sea;
+  sea.fluid_density = rho;
+  for (int n : {5, 20, 200}) {
+    for (double U : {0.25, 1.0, 2.0}) {
+      sea.current = U;
+      // The issue's first guess: the free end straight below the fixed one.
+      const CableModel m = UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed({0, 0}),
+                                        EndMotion::Free({0, -L}), d, Cd);
+      EquilibriumReport rep;
+      CableState st;
+      ASSERT_NO_THROW(st = SolveEquilibrium(m, &rep)) << n << " links, " << U << " m/s";
+      const double l = L / n, wl = (mu - rho * area) * kG * l, k = 0.5 * rho * Cd * d * l;
+      const double a = k * U * U;  // a (1 - s^2) = wl s  ->  a s^2 + wl s - a = 0
+      const double sin_theta = (-wl + std::sqrt(wl * wl + 4 * a * a)) / (2 * a);
+      const double theta = std::asin(sin_theta);
+      ForceWorkspace ws(m.links);
+      ComputeGeometry(st.x, ws.geometry);
+      ComputeHookeTensions(m, ws.geometry, ws.tension);
+      double angle_err = 0, tension_err = 0;
+      for (int i = 0; i < n; ++i) {
+        const Eigen::Vector2d t = ws.geometry.tangent.col(i);  // downwards and downstream
+        angle_err = std::max(angle_err, std::abs(std::atan2(t.x(), -t.y()) - theta));
+        const double T = wl * std::cos(theta) * (n - i - 0.5);
+        tension_err = std::max(tension_err, std::abs(ws.tension[i] - T) / (wl * n));
+      }
+      std::printf("[ towed ] %3d links, %.2f m/s: %3d iterations%s, critical angle %.4f deg "
+                  "from the horizontal, angle error %.1e rad, tension error %.1e of the weight\n",
+                  n, U, rep.iterations, rep.fallback ? " (fallback)" : "",
+                  90.0 - theta * 180.0 / M_PI, angle_err, tension_err);
+      // Out of balance by at most r per component on a station (r itself checked against the
+      // solver's tolerance), so by sqrt(2) r in length: the tension of link i is off by at most
+      // the sum of those below it, sqrt(2) n r < 2 n r, and a link is turned by at most that
+      // over the tension it carries, >= w_l / 2 (the lowest link): 4 n r / w_l.
+      const double r = MaxResidual(m, st);
+      EXPECT_LE(r, 1e-6 * rep.force_scale);  // see ExpectConvergedFromChord
+      EXPECT_LT(angle_err, 4 * n * r / wl + 1e-14) << n << " links, " << U << " m/s";
+      EXPECT_LT(tension_err * wl * n, 2 * n * r + 1e-12 * wl * n) << n << " links, " << U << " m/s";
+    }
+  }
+}
+
+// A slack line in a current (issue 11, defect 9): 300 m between fixed ends 54 m apart.
+CableModel SlackLineInCurrent(int links, double current) {
+  EnvironmentSpec sea;
+  sea.fluid_density = 1025;
+  sea.current = current;
+  return UniformCable(links, 300, 2.0, 2.5e-4, 4e10, sea, EndMotion::Fixed({0, 0}),
+                      EndMotion::Fixed({54, 0}), 0.02, 1.2);
+}
+
+TEST(EquilibriumSlackLine, ConvergesInEveryCurrent) {
+  for (int n : {10, 30, 100, 300}) {
+    double previous = 1e-9;
+    for (double U : {0.1, 0.3, 1.0, 2.0}) {
+      const CableModel m = SlackLineInCurrent(n, U);
+      EquilibriumReport rep;
+      CableState st;
+      ASSERT_NO_THROW(st = SolveEquilibrium(m, &rep)) << n << " links, " << U << " m/s";
+      std::printf("[ slack ] %3d links, %.1f m/s: %4d iterations%s, residual %.1e N\n", n, U,
+                  rep.iterations, rep.fallback ? " (fallback)" : "", MaxResidual(m, st));
+      EXPECT_LE(MaxResidual(m, st), 1e-6 * rep.force_scale);  // see ExpectConvergedFromChord
+      // The current pushes the line downstream (+x), further the faster it flows: the mean
+      // abscissa of the stations grows from 27 m, where symmetry puts it in still water.
+      const double downstream = st.x.row(0).mean() - 27.0;
+      EXPECT_GT(downstream, previous) << n << " links, " << U << " m/s";
+      previous = downstream;
+    }
+  }
+}
+
+// And it is the state the line settles in: started there, the dynamics (implicit scheme, the
+// same forces with the stations' velocities in the drag) keep it still. A state that balanced
+// but was unstable would drift away within a few of its slowest periods (tens of seconds for
+// this 300 m line); a stable one moves only by the integrator's error, far below 1 mm.
+TEST(EquilibriumSlackLine, IsTheStateTheDynamicsSettleIn) {
+  const CableModel m = SlackLineInCurrent(30, 1.0);
+  CableState st = SolveEquilibrium(m);
+  const Eigen::Matrix2Xd start = st.x;
+  auto integrator = MakeIntegrator(IntegratorKind::kImplicit, m, 0.5, 1e-6);
+  integrator->Initialize(m, st);
+  for (int k = 0; k < 60; ++k) integrator->Step(m, st, 1.0);
+  const double moved = (st.x - start).cwiseAbs().maxCoeff();
+  std::printf("[ slack ] after 60 s of dynamics: moved %.2e m\n", moved);
+  EXPECT_LT(moved, 1e-3);
+}
+
+// The fallback alone (Newton allowed 2 iterations) must reach the state Newton reaches: both
+// are the equilibrium to 1e-9 of the force scale, and the line is taut (EA / l ~ 1e6 N/m per
+// link), so the two states agree to about residual / stiffness of the softest (transverse)
+// mode; 1e-4 m is a generous bound on that for a 300 m line.
+TEST(EquilibriumSlackLine, PseudoTransientFallbackReachesTheSameState) {
+  const CableModel m = SlackLineInCurrent(60, 1.0);
+  EquilibriumReport newton_report, fallback_report;
+  const CableState newton = SolveEquilibrium(m, &newton_report);
+  EquilibriumOptions starved;
+  starved.max_iterations = 2;
+  CableState fallback;
+  ASSERT_NO_THROW(fallback = SolveEquilibrium(m, &fallback_report, starved));
+  EXPECT_FALSE(newton_report.fallback);
+  EXPECT_TRUE(fallback_report.fallback);
+  const double diff = (newton.x - fallback.x).cwiseAbs().maxCoeff();
+  std::printf("[ slack ] fallback: %d iterations, %.2e m from Newton's state\n",
+              fallback_report.iterations, diff);
+  EXPECT_LT(diff, 1e-4);
 }
 
 TEST(EquilibriumRobustness, ReportsNonConvergence) {
