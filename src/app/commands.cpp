@@ -2,12 +2,14 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
 #include "app/film_pass.h"
+#include "app/max_tension_log.h"
 #include "app/progress.h"
 #include "app/result_files.h"
 #include "app/run_extent.h"
@@ -84,16 +86,18 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
 }
 
 // One model of a scene simulated into result files: the equilibrium, the time series (with
-// `suffix` before .csv) and what the film needs.
+// `suffix` before .csv), the largest tension of every row (for the pictures) and what the film
+// needs. A run cut short (completed false) has committed its rows under the .partial name;
+// `failure` then holds a blow-up's message (empty: stopped by a signal).
 struct ModelRun {
   CableModel model;
   TimeGrid grid;
   CableState initial;
   Eigen::VectorXd initial_tension;  // [N]
   RunExtent extent;
-  double peak = -1, peak_t = 0;     // largest link tension [N] and when [s]
-  int peak_link = 0;
+  MaxTensionLog rows;               // the peak is rows.peak(): the largest tension_max of the CSV
   bool completed = false;
+  std::string failure;
 };
 
 ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::string& out_dir,
@@ -107,12 +111,16 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   auto integrator = MakeIntegrator(m, grid);
   integrator->Initialize(m, initial);
-  ModelRun run{m, grid, initial, integrator->tensions(), RunExtent(initial)};
+  ModelRun run{m, grid, initial, integrator->tensions(), RunExtent(initial), MaxTensionLog(), false, ""};
   if (scene.initial == InitialStateKind::kEquilibrium)
     std::printf("equilibrium: %d Newton iterations, residual %.3g N (of %.4g N), %.2f ms; "
                 "tension %.6g N at the start, %.6g N at the end\n",
                 eq.iterations, eq.residual, eq.force_scale, eq_ms, run.initial_tension[0],
                 run.initial_tension[m.links - 1]);
+  else
+    std::printf("initial state: the straight chord at rest (not an equilibrium), written to "
+                "equilibrium%s.csv; tension %.6g N at the start, %.6g N at the end\n",
+                suffix.c_str(), run.initial_tension[0], run.initial_tension[m.links - 1]);
   WriteEquilibriumCsv(out_dir + "/equilibrium" + suffix + ".csv", m, initial,
                       run.initial_tension);
 
@@ -129,21 +137,18 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
           series.Append(m, s, T);
           run.extent.Add(s, T);
           Eigen::Index link = 0;
-          const double tmax = T.maxCoeff(&link);
-          if (tmax > run.peak) {
-            run.peak = tmax;
-            run.peak_t = s.t;
-            run.peak_link = static_cast<int>(link);
-          }
+          const double tmax = T.maxCoeff(&link);  // the row's tension_max and link_max
+          run.rows.Append(s.t, tmax, static_cast<int>(link));
           progress.Update(s.t);
           return g_signal == 0;
         }, &g_signal);
   } catch (const BlowUpError& e) {
     progress.Finish();
     series.CommitPartial(partial_path);
-    throw Error(std::string(e.what()) + " (" + integrator->name() + ", time step " +
-                std::to_string(grid.dt) + " s); the rows up to then are in " +
-                EscapeText(partial_path));
+    run.failure = std::string(e.what()) + " (" + integrator->name() + ", time step " +
+                  std::to_string(grid.dt) + " s); the rows up to then are in " +
+                  EscapeText(partial_path);
+    return run;
   }
   progress.Finish();
   const double wall =
@@ -161,8 +166,11 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
     std::printf(", %ld rejected, %.2f Newton iterations per step", st.rejected,
                 static_cast<double>(st.newton_iterations) / std::max(1L, st.steps));
   std::printf(", %.3g station-steps/s\n", static_cast<double>(st.steps) * m.stations() / wall);
-  std::printf("peak tension %.6g N at t = %.4g s in link %d\n", run.peak, run.peak_t,
-              run.peak_link);
+  // Sampled as the CSV is: at the output rows (every `interval`), not at every step.
+  std::printf("peak tension %.6g N at t = %.4g s in link %d (the largest tension_max of the "
+              "%ld rows, one every %.4g s)\n",
+              run.rows.peak(), run.rows.peak_t(), run.rows.peak_link(), run.rows.rows(),
+              grid.interval);
   std::printf("wrote %s\n", EscapeText(series_path).c_str());
   return run;
 }
@@ -196,10 +204,9 @@ std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options) {
 
 // What the options change of the scene's film, checked before anything is simulated (the
 // loader checked the scene's own [film] keys when its film is on): the film of the run must
-// have from 1 to kMaxFilmFrames frames. `frames_needed`: the run steps through film frames
-// (a film, or compare's max_tension.png).
-void CheckFilmOptions(const SceneDef& scene, const RunOptions& o, bool frames_needed) {
-  if (!frames_needed) return;
+// have from 1 to kMaxFilmFrames frames.
+void CheckFilmOptions(const SceneDef& scene, const RunOptions& o, bool film) {
+  if (!film) return;
   const double fps = o.fps > 0 ? o.fps : scene.film.fps;
   const double speed = o.speed > 0 ? o.speed : scene.film.speed;
   const std::string problem = FilmFramesProblem(
@@ -210,7 +217,35 @@ void CheckFilmOptions(const SceneDef& scene, const RunOptions& o, bool frames_ne
 }
 
 FilmRun ToFilmRun(const ModelRun& r, const std::string& label) {
-  return FilmRun{label, &r.model, r.grid, r.initial, r.initial_tension, r.extent};
+  return FilmRun{label, &r.model, r.grid, r.initial, r.initial_tension, r.extent, &r.rows};
+}
+
+// The runs so far, the last cut short: max_tension.partial.png beside timeseries.partial.csv
+// (a failure to draw it is reported, not thrown: the run's own message comes next). Then a
+// blow-up's message is thrown; a signal gives its exit status.
+int EndCutShort(const SceneDef& scene, const std::vector<FilmRun>& runs,
+                const std::string& failure, const std::string& out_dir,
+                const RunOptions& options, RunReport* report) {
+  bool drawn = false;
+  try {
+    const PictureReport figure = WriteMaxTensionFigure(scene, runs, out_dir, options.shader_dir,
+                                                       false);
+    drawn = !std::isnan(figure.peak);
+    if (report) report->figure_peak = figure.peak;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+  }
+  if (!failure.empty())
+    throw Error(failure + (drawn ? " (drawn in max_tension.partial.png)" : ""));
+  return 128 + g_signal;
+}
+
+void Report(const ModelRun& run, RunReport* report) {
+  if (!report) return;
+  report->rows = run.rows.rows();
+  report->peak = run.rows.peak();
+  report->peak_t = run.rows.peak_t();
+  report->peak_link = run.rows.peak_link();
 }
 
 }  // namespace
@@ -226,25 +261,41 @@ int CheckCommand(const std::string& scene_path) {
 
 int InterruptedExitStatus() { return 128 + (g_signal != 0 ? g_signal.load() : SIGINT); }
 
-int RunCommand(const std::string& scene_path, const RunOptions& options) {
+int RunCommand(const std::string& scene_path, const RunOptions& options, RunReport* report) {
   const SceneDef scene = LoadScene(scene_path);
-  CheckFilmOptions(scene, options, options.film >= 0 ? options.film == 1 : scene.output.film);
+  const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
+  CheckFilmOptions(scene, options, film);
   const CableModel model = BuildModel(scene);
   CheckModelLimits(scene, model);
   const std::string out_dir = PrepareOutDir(scene, options);
   InstallSignalHandlers();
   const ModelRun run = SimulateToFiles(scene, model, out_dir, "");
-  if (!run.completed) return 128 + g_signal;
-  const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
+  Report(run, report);
+  const std::vector<FilmRun> runs{ToFilmRun(run, ModelName(run.model))};
+  if (!run.completed) return EndCutShort(scene, runs, run.failure, out_dir, options, report);
+  // Figure 1 from every row, film or not (a film cut short leaves it whole: it has every row).
+  const PictureReport figure =
+      WriteMaxTensionFigure(scene, runs, out_dir, options.shader_dir, true);
+  if (report) report->figure_peak = figure.peak;
   if (!film) return 0;
-  const bool finished = RenderFilm(scene, {ToFilmRun(run, ModelName(run.model))},
-                                   MakeFilmRequest(scene, options, out_dir), g_signal);
+  PictureReport shown;
+  const bool finished =
+      RenderFilm(scene, runs, MakeFilmRequest(scene, options, out_dir), g_signal, &shown);
+  if (report) {
+    report->film_peak = shown.peak;
+    report->film_peak_t = shown.peak_t;
+    report->film_frames = shown.frames;
+    report->film_last_max = shown.last_frame_max;
+    report->film_last_t = shown.last_frame_t;
+    report->film_last_row_max = shown.last_row_max;
+  }
   return finished ? 0 : 128 + g_signal;
 }
 
 int CompareCommand(const std::string& scene_path, const RunOptions& options) {
   SceneDef scene = LoadScene(scene_path);
-  CheckFilmOptions(scene, options, true);  // max_tension.png is drawn at the film's frames
+  const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
+  CheckFilmOptions(scene, options, film);
   for (const CableModelKind kind : {CableModelKind::kElastic, CableModelKind::kInextensible}) {
     scene.model = kind;
     CheckModelLimits(scene, BuildModel(scene));
@@ -253,19 +304,19 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
   InstallSignalHandlers();
   scene.model = CableModelKind::kElastic;
   const ModelRun elastic = SimulateToFiles(scene, BuildModel(scene), out_dir, "");
-  if (!elastic.completed) return 128 + g_signal;
+  std::vector<FilmRun> runs{ToFilmRun(elastic, "elastic")};
+  if (!elastic.completed) return EndCutShort(scene, runs, elastic.failure, out_dir, options, nullptr);
   scene.model = CableModelKind::kInextensible;
   const ModelRun rigid = SimulateToFiles(scene, BuildModel(scene), out_dir, "_inextensible");
-  if (!rigid.completed) return 128 + g_signal;
+  runs.push_back(ToFilmRun(rigid, "inextensible"));
+  if (!rigid.completed) return EndCutShort(scene, runs, rigid.failure, out_dir, options, nullptr);
   std::printf("peak tension: elastic %.6g N (t = %.4g s), inextensible %.6g N (t = %.4g s), "
               "ratio inextensible/elastic %.4g\n",
-              elastic.peak, elastic.peak_t, rigid.peak, rigid.peak_t, rigid.peak / elastic.peak);
-  const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
-  FilmRequest request = MakeFilmRequest(scene, options, out_dir);
-  request.film = film;
-  const bool finished = RenderFilm(
-      scene, {ToFilmRun(elastic, "elastic"), ToFilmRun(rigid, "inextensible")}, request,
-      g_signal);
+              elastic.rows.peak(), elastic.rows.peak_t(), rigid.rows.peak(), rigid.rows.peak_t(),
+              rigid.rows.peak() / elastic.rows.peak());
+  WriteMaxTensionFigure(scene, runs, out_dir, options.shader_dir, true);
+  if (!film) return 0;
+  const bool finished = RenderFilm(scene, runs, MakeFilmRequest(scene, options, out_dir), g_signal);
   return finished ? 0 : 128 + g_signal;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // The program's commands. Each returns the process exit status; errors are thrown as Error.
+#include <limits>
 #include <string>
 
 namespace cablefilm {
@@ -15,7 +16,25 @@ struct RunOptions {
   std::string shader_dir;       // empty: CABLEFILM_SHADERS or the built-in path
 };
 
-int RunCommand(const std::string& scene_path, const RunOptions& options);
+// What a run reports and what its pictures show (for the tests; NaN: not made). All come from
+// the same output rows, so the peaks agree: the film's to the last bit, the CSV's to its 10
+// significant digits.
+struct RunReport {
+  long rows = 0;                // output rows (of timeseries.csv, or its .partial)
+  double peak = std::numeric_limits<double>::quiet_NaN();    // "peak tension" printed [N]
+  double peak_t = std::numeric_limits<double>::quiet_NaN();  // its time [s]
+  int peak_link = -1;
+  double figure_peak = std::numeric_limits<double>::quiet_NaN();  // largest drawn in max_tension[.partial].png [N]
+  double film_peak = std::numeric_limits<double>::quiet_NaN();    // largest in the film's time plot, last frame [N]
+  double film_peak_t = std::numeric_limits<double>::quiet_NaN();  // its time [s]
+  long film_frames = 0;
+  double film_last_max = std::numeric_limits<double>::quiet_NaN();  // the last frame's cable: largest tension [N]
+  double film_last_t = std::numeric_limits<double>::quiet_NaN();    // and its time [s]
+  double film_last_row_max = std::numeric_limits<double>::quiet_NaN();  // the last row's, as plotted [N]
+};
+
+int RunCommand(const std::string& scene_path, const RunOptions& options,
+               RunReport* report = nullptr);
 // The exit status after a signal stopped the work (128 + its number).
 int InterruptedExitStatus();
 int CheckCommand(const std::string& scene_path);

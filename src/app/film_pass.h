@@ -1,12 +1,18 @@
 #pragma once
-// The film: a second, deterministic pass over the simulation that pushes a snapshot every
-// film frame to the renderer, so the colour range and the world box found by the first pass
-// hold for every frame while memory stays bounded whatever the film's length.
+// The pictures of a run. max_tension.png (the paper's Figure 1) is drawn from every output row
+// of the simulation (MaxTensionLog: the tension_max column of timeseries.csv), for every run,
+// film or not. The film is a second, deterministic pass over the simulation that pushes a
+// snapshot every film frame to the renderer, so the colour range and the world box found by the
+// first pass hold for every frame while memory stays bounded whatever the film's length; each
+// snapshot carries the output rows since the previous frame, so the film's time plot shows
+// every row too: the run's reported peak, the CSV, the figure and the film agree on the peak.
 #include <Eigen/Core>
 #include <atomic>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "app/max_tension_log.h"
 #include "app/run_extent.h"
 #include "app/simulation_run.h"
 #include "scene/scene_def.h"
@@ -15,7 +21,6 @@ namespace cablefilm {
 
 struct FilmRequest {
   std::string out_dir;
-  bool film = true;             // film.mp4 (false: max_tension.png only)
   bool frames = false;          // frames/frame_000000.png ...
   int width = 1920, height = 1080;
   double fps = 30, speed = 1;   // film frames per second; simulated seconds per film second
@@ -25,7 +30,7 @@ struct FilmRequest {
   std::string shader_dir;
 };
 
-// A model already simulated once (its first pass gave the extent).
+// A model already simulated once (its first pass gave the extent and the rows).
 struct FilmRun {
   std::string label;            // "elastic", "inextensible"
   const CableModel* model;
@@ -33,12 +38,36 @@ struct FilmRun {
   CableState initial;
   Eigen::VectorXd initial_tension;  // [N]
   RunExtent extent;
+  const MaxTensionLog* rows;    // the largest link tension of every output row
 };
 
-// Renders film.mp4 of the first run, with the second (if any) drawn over it on the same
-// colour range, and max_tension.png with every run (the paper's Figure 1). Returns false if `stop` was raised (the film is then
-// closed at the last frame drawn). Throws Error.
+// What a picture shows: the largest value drawn [N] and its time [s] (NaN: nothing drawn).
+struct PictureReport {
+  double peak = std::numeric_limits<double>::quiet_NaN();
+  double peak_t = std::numeric_limits<double>::quiet_NaN();
+  long frames = 0;              // the film's frames
+  double last_frame_max = std::numeric_limits<double>::quiet_NaN();  // its cable's largest
+                                // tension at the last frame [N] (the "now" of the plot)
+  double last_frame_t = std::numeric_limits<double>::quiet_NaN();    // that frame's time [s]
+  double last_row_max = std::numeric_limits<double>::quiet_NaN();    // the time plot's newest
+                                // point: the last row's tension_max [N]
+};
+
+// <out_dir>/max_tension.png, or max_tension.partial.png when the rows are those of a run cut
+// short (`complete` false): every run's rows on one pair of axes, thinned to the extremes of
+// each 1/8192 of the time axis (ThinnedTrace), so that the largest value drawn is the rows'
+// peak. Only `label` and `rows` of the runs are used. Throws Error when it cannot be drawn
+// (e.g. no off-screen OSMesa context), saying so.
+PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<FilmRun>& runs,
+                                    const std::string& out_dir, const std::string& shader_dir,
+                                    bool complete);
+
+// Renders film.mp4 of the first run, with the second (if any) drawn over it on the same colour
+// range. Frames are at k x speed / fps and, when the run's end is not on one, at its end.
+// Returns false if `stop` was raised (the film is then closed at the last frame drawn, as
+// film.partial.mp4). `report` (optional): the film's time plot at its last frame. Throws Error.
 bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
-                const FilmRequest& request, const std::atomic<int>& stop);
+                const FilmRequest& request, const std::atomic<int>& stop,
+                PictureReport* report = nullptr);
 
 }  // namespace cablefilm

@@ -148,7 +148,9 @@ LiveFrameInput LiveHistory::MakeInput(const std::string& status) const {
   in.weight_stations = scenery_.weight_stations;
   in.moving_ends = scenery_.moving_ends;
   in.fixed_ends = scenery_.fixed_ends;
+  in.free_ends = scenery_.free_ends;
   in.equilibrium = scenery_.equilibrium;
+  in.reference_label = scenery_.reference_label;
   in.tension_min = range_lo_;
   in.tension_max = range_hi_;
   in.range_locked = locked_;

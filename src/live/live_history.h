@@ -20,8 +20,9 @@ struct LiveScenery {
   std::vector<double> arc_length;          // [m], s+1
   std::vector<double> section_boundaries;  // [m]
   std::vector<std::string> section_names;
-  std::vector<int> weight_stations, moving_ends, fixed_ends;
-  CableSnapshot equilibrium;               // t = 0
+  std::vector<int> weight_stations, moving_ends, fixed_ends, free_ends;
+  CableSnapshot equilibrium;               // the initial state, t = 0
+  std::string reference_label = "equilibrium";  // its name ("initial state (straight)")
   double window = 60;                      // width of the time plot [s]
 };
 

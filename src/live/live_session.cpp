@@ -46,8 +46,10 @@ LiveScenery MakeScenery(const SceneDef& scene, const LiveSimulation& sim) {
   for (int j : {0, m.links}) {
     if (m.end_motion(j).moves()) s.moving_ends.push_back(j);
     if (m.end_motion(j).kind() == EndKind::kFixed) s.fixed_ends.push_back(j);
+    if (m.end_motion(j).kind() == EndKind::kFree) s.free_ends.push_back(j);
   }
   s.equilibrium = ToSnapshot(0, sim.initial_state().x, sim.initial_tensions());
+  if (scene.initial == InitialStateKind::kStraight) s.reference_label = kStraightStateLabel;
   s.window = scene.simulation.duration;
   return s;
 }

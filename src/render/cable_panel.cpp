@@ -14,7 +14,7 @@ bool Inside(int j, std::size_t n) { return j >= 0 && static_cast<std::size_t>(j)
 
 PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::string& main_label,
                          const std::string& companion_label, const std::string& path_label,
-                         Rgba swatch, const Theme& th) {
+                         Rgba swatch, const Theme& th, const std::string& reference_label) {
   PanelHead head;
   head.title = "Cable shape (to scale)";
   if (companion)  // the cables' names first, on a row of their own when space is short
@@ -23,12 +23,14 @@ PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::str
   LegendGroup marks_row;
   if (!marks.weights.empty()) marks_row.push_back({LegendEntry::kDiamond, th.marker_fill, "weight"});
   if (!marks.fixed_ends.empty())
-    marks_row.push_back({LegendEntry::kSquare, th.marker_fill, "anchor"});
+    marks_row.push_back({LegendEntry::kSquare, th.marker_fill, "fixed end"});
   if (!marks.moving_ends.empty()) {
     marks_row.push_back({LegendEntry::kRing, th.accent, "moving end"});
     marks_row.push_back({LegendEntry::kLine, PathColor(th), path_label});
   }
-  marks_row.push_back({LegendEntry::kDash, th.equilibrium, "equilibrium"});
+  if (!marks.free_ends.empty())
+    marks_row.push_back({LegendEntry::kRing, th.marker_fill, "free end"});
+  marks_row.push_back({LegendEntry::kDash, th.equilibrium, reference_label});
   head.groups.push_back(marks_row);
   return head;
 }
@@ -96,6 +98,13 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
     const Vec2f c = world(snap.x[e], snap.y[e]);
     p.Disc(c, 9 * k, th.accent);
     p.Disc(c, 4.5f * k, th.panel);
+  }
+  for (int e : in.marks.free_ends) {
+    if (!Inside(e, snap.x.size())) continue;
+    const Vec2f c = world(snap.x[e], snap.y[e]);
+    p.Disc(c, 8.5f * k, th.marker_edge);
+    p.Disc(c, 7 * k, th.marker_fill);
+    p.Disc(c, 3.5f * k, th.panel);
   }
 }
 

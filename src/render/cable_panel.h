@@ -1,7 +1,8 @@
 #pragma once
 // The cable's shape to scale, coloured link by link on the tension colour map: the cable now
 // (over its companion, when the snapshot has one), the equilibrium shape dashed, the paths of
-// the moving ends, and markers at the weights, anchors and moving ends. The colour bar is drawn
+// the moving ends, and markers at the weights and at the ends by their role (fixed, moving,
+// free). The colour bar is drawn
 // separately (colorbar_panel.h) in the space the layout leaves at the panel's right.
 #include <string>
 #include <vector>
@@ -16,16 +17,19 @@ namespace cablefilm {
 
 struct CableMarks {              // stations drawn with a marker; indices outside are skipped
   std::vector<int> weights;      // suspended weights: diamonds
-  std::vector<int> fixed_ends;   // anchors: squares
-  std::vector<int> moving_ends;  // driven ends: rings
+  std::vector<int> fixed_ends;   // prescribed ends that stay put ("fixed end"): squares
+  std::vector<int> moving_ends;  // driven ends ("moving end"): rings in the accent colour
+  std::vector<int> free_ends;    // free ends ("free end"): rings in the marker colour
 };
 
 // The panel's title and legend: an entry per kind of marker present, the two cables' names
-// when a companion is drawn, the end path (named `path_label`) and the equilibrium.
+// when a companion is drawn, the end path (named `path_label`) and the dashed initial shape
+// (named `reference_label`: "equilibrium", or "initial state (straight)" for a straight start).
 // `swatch` colours the cables' entries (a mid colour of the map).
 PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::string& main_label,
                          const std::string& companion_label, const std::string& path_label,
-                         Rgba swatch, const Theme& th);
+                         Rgba swatch, const Theme& th,
+                         const std::string& reference_label = "equilibrium");
 
 // Borrowed for one call: the pointers are not kept.
 struct CablePanelInput {
@@ -36,7 +40,7 @@ struct CablePanelInput {
   PanelHead head;                   // CablePanelHead(...)
   double tension_min = 0, tension_max = 1;     // the colour range [N]
   const CableSnapshot* now = nullptr;          // required; with its companion when it has one
-  const CableSnapshot* equilibrium = nullptr;  // dashed shape (x, y); null = none
+  const CableSnapshot* equilibrium = nullptr;  // dashed initial shape (x, y); null = none
   CableMarks marks;
   // Paths of the moving ends: polylines in world coordinates [m]; null = none.
   const std::vector<std::vector<Vec2f>>* end_paths = nullptr;

@@ -9,6 +9,7 @@
 #include <exception>
 #include <filesystem>
 #include <future>
+#include <limits>
 #include <mutex>
 #include <thread>
 
@@ -167,14 +168,19 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
       {
         std::lock_guard<std::mutex> lock(mutex);
         ++done;
-        series.t.push_back(snapshot.t);
-        series.tension.push_back(history->max_tension().back());
-        if (!spec.companion_label.empty()) {
-          companion_series.t.push_back(snapshot.t);
-          companion_series.tension.push_back(history->companion_max_tension().back());
-        }
       }
       progress.Update(done);
+    }
+    {  // the time plot's data as the last frame shows it (every row the snapshots carried)
+      std::lock_guard<std::mutex> lock(mutex);
+      series.t = history->times();
+      series.tension = history->max_tension();
+      if (!spec.companion_label.empty()) {
+        companion_series.t = history->times();
+        companion_series.tension = history->companion_max_tension();
+        companion_series.tension.resize(companion_series.t.size(),
+                                        std::numeric_limits<double>::quiet_NaN());
+      }
     }
     if (progress.printed()) progress.Update(done, true);
     bool complete = true;

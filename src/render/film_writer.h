@@ -54,12 +54,12 @@ class FilmWriter {
   void FinishPartial();
 
   long frames_done() const;  // frames drawn so far
-  // The maximum tension along the cable of every frame so far, labelled options.series_label:
-  // for a combined max_tension.png (WriteMaxTensionPng) after Finish().
+  // After Finish(): the film's time plot as its last frame shows it (FilmHistory: every output
+  // row the snapshots carried, else one sample a frame), labelled options.series_label.
   MaxTensionSeries max_tension_series() const;
-  // The main cable's series (labelled spec.label, else options.series_label) followed, when the
-  // spec names a companion cable, by the companion's (labelled spec.companion_label). These are
-  // also the curves of max_tension.png.
+  // After Finish(): the main cable's series (labelled spec.label, else options.series_label)
+  // followed, when the spec names a companion cable, by the companion's (labelled
+  // spec.companion_label). These are also the curves of the max_tension.png it writes.
   std::vector<MaxTensionSeries> all_max_tension_series() const;
 
  private:

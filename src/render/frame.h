@@ -17,7 +17,19 @@ struct CableSnapshot {            // one output time of the simulation
   // All three empty = no companion.
   std::vector<double> cx, cy, ctension;
   bool has_companion() const { return !cx.empty() || !cy.empty() || !ctension.empty(); }
+  // The output rows (timeseries.csv) since the previous snapshot, up to this one's time: their
+  // times [s] and largest link tensions [N] (and the companion's, same times, when it has one).
+  // The time plot then shows every row rather than one sample a snapshot, so a peak between
+  // film frames is drawn; empty: the snapshot's own largest tension is the plot's sample.
+  std::vector<double> row_t, row_max, row_cmax;
+  // Optional, size s: each link's smallest and largest tension over those rows [N], so that
+  // the min-max envelope of the tension plot covers every row too, not only the frames.
+  std::vector<double> row_link_min, row_link_max;
 };
+
+// The name of the dashed initial state when a run starts from the straight chord at rest (not
+// an equilibrium: its tensions are those of the evenly stretched chord, zero when slack).
+inline constexpr char kStraightStateLabel[] = "initial state (straight)";
 
 struct FilmSpec {                          // fixed for the whole film
   std::string title;
@@ -28,8 +40,12 @@ struct FilmSpec {                          // fixed for the whole film
   std::vector<std::string> section_names;
   std::vector<int> weight_stations;        // stations carrying a suspended weight (prism)
   std::vector<int> moving_ends;            // driven ends among {0, s}: their path is drawn
-  std::vector<int> fixed_ends;             // prescribed fixed ends (anchors)
-  CableSnapshot equilibrium;               // the static equilibrium (t = 0)
+  std::vector<int> fixed_ends;             // prescribed ends that stay put
+  std::vector<int> free_ends;              // free ends (a dangling or towed end)
+  CableSnapshot equilibrium;               // the initial state (t = 0), drawn dashed
+  // What `equilibrium` is, as the legends name it: "equilibrium" (the static equilibrium) or,
+  // for a run started from the straight chord, "initial state (straight)".
+  std::string reference_label = "equilibrium";
   double duration = 0;                     // simulated seconds the film covers
   double tension_min = 0, tension_max = 1; // colour and plot range [N], fixed for the film
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // world box of the cable over the run [m]

@@ -46,6 +46,9 @@ std::string MainLabel(const FilmSpec& spec) { return spec.label.empty() ? "main"
 std::string CompanionLabel(const FilmSpec& spec) {
   return spec.companion_label.empty() ? "companion" : spec.companion_label;
 }
+std::string ReferenceLabel(const FilmSpec& spec) {
+  return spec.reference_label.empty() ? "equilibrium" : spec.reference_label;
+}
 // The spec names the companion and gives its equilibrium tensions: drawn dotted.
 bool CompanionEquilibrium(const FilmSpec& spec) {
   return !spec.companion_label.empty() &&
@@ -55,12 +58,13 @@ FilmHeads MakeFilmHeads(const FilmSpec& spec, bool companion, Rgba swatch, const
   // A companion the spec names gets the long labels and a second legend row; one that only
   // some snapshots carry (no name) the short ones on one row.
   const bool named = !spec.companion_label.empty();
-  const CableMarks marks{spec.weight_stations, spec.fixed_ends, spec.moving_ends};
+  const CableMarks marks{spec.weight_stations, spec.fixed_ends, spec.moving_ends, spec.free_ends};
   FilmHeads h;
   h.cable = CablePanelHead(marks, companion, MainLabel(spec), CompanionLabel(spec), "its path",
-                           swatch, th);
+                           swatch, th, ReferenceLabel(spec));
   h.tension = TensionPanelHead(companion, named, companion && CompanionEquilibrium(spec),
-                               MainLabel(spec), CompanionLabel(spec), "min\u2013max so far", th);
+                               MainLabel(spec), CompanionLabel(spec), "min\u2013max so far", th,
+                               ReferenceLabel(spec));
   h.time = TimePanelHead(companion, named, MainLabel(spec), CompanionLabel(spec), th);
   return h;
 }
@@ -123,7 +127,12 @@ void CheckSnapshot(const FilmSpec& spec, const CableSnapshot& s) {
 FilmHistory::FilmHistory(const FilmSpec& spec)
     : moving_ends_(spec.moving_ends),
       stations_(spec.arc_length.size()),
-      companion_required_(!spec.companion_label.empty()) {
+      companion_required_(!spec.companion_label.empty()),
+      trace_(2, spec.duration > 0 && std::isfinite(spec.duration)
+                    ? spec.duration / kTimeTraceSpans
+                    : 0),
+      peak_(std::numeric_limits<double>::quiet_NaN()),
+      peak_t_(std::numeric_limits<double>::quiet_NaN()) {
   CheckSpec(spec);
   x0_ = spec.x_min;
   y0_ = spec.y_min;
@@ -145,28 +154,44 @@ void FilmHistory::Add(const CableSnapshot& s) {
                 std::to_string(s.x.size()) + " stations and " + std::to_string(s.tension.size()) +
                 " links; the film has " + std::to_string(stations_) + " stations");
   CheckCompanionSizes(stations_, companion_required_, s);
+  if (s.row_max.size() != s.row_t.size() || (!s.row_cmax.empty() && s.row_cmax.size() != s.row_t.size()))
+    throw Error("film: snapshot at t = " + std::to_string(s.t) + " s carries " +
+                std::to_string(s.row_t.size()) + " row times, " + std::to_string(s.row_max.size()) +
+                " row maxima and " + std::to_string(s.row_cmax.size()) + " companion row maxima");
+  const bool row_envelope = !s.row_link_min.empty() || !s.row_link_max.empty();
+  if (row_envelope && (s.row_link_min.size() != s.tension.size() ||
+                       s.row_link_max.size() != s.tension.size()))
+    throw Error("film: snapshot at t = " + std::to_string(s.t) + " s carries a row envelope of " +
+                std::to_string(s.row_link_min.size()) + " and " +
+                std::to_string(s.row_link_max.size()) + " links; it has " +
+                std::to_string(s.tension.size()) + " links");
   double peak = s.tension.empty() ? 0 : s.tension[0];
   for (std::size_t j = 0; j < s.tension.size(); ++j) {
     const double T = s.tension[j];
+    const double lo = row_envelope ? std::min(T, s.row_link_min[j]) : T;
+    const double hi = row_envelope ? std::max(T, s.row_link_max[j]) : T;
     if (count_ == 0) {
-      link_min_[j] = link_max_[j] = T;
+      link_min_[j] = lo;
+      link_max_[j] = hi;
     } else {
-      link_min_[j] = std::min(link_min_[j], T);
-      link_max_[j] = std::max(link_max_[j], T);
+      link_min_[j] = std::min(link_min_[j], lo);
+      link_max_[j] = std::max(link_max_[j], hi);
     }
     peak = std::max(peak, T);
   }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double cpeak = nan;
   if (s.has_companion()) {
-    double cpeak = s.ctension.empty() ? 0 : s.ctension[0];
+    cpeak = s.ctension.empty() ? 0 : s.ctension[0];
     for (double T : s.ctension) cpeak = std::max(cpeak, T);
-    // NaN for earlier snapshots without a companion (only possible when none is required).
-    companion_max_tension_.resize(times_.size(), std::numeric_limits<double>::quiet_NaN());
-    companion_max_tension_.push_back(cpeak);
-  } else if (!companion_max_tension_.empty()) {
-    companion_max_tension_.push_back(std::numeric_limits<double>::quiet_NaN());
   }
-  times_.push_back(s.t);
-  max_tension_.push_back(peak);
+  if (s.row_t.empty()) {
+    AddSample(s.t, peak, cpeak);
+  } else {  // every output row since the previous snapshot
+    const bool rows_companion = !s.row_cmax.empty();
+    for (std::size_t i = 0; i < s.row_t.size(); ++i)
+      AddSample(s.row_t[i], s.row_max[i], rows_companion ? s.row_cmax[i] : nan);
+  }
   auto cell = [&](Vec2f p) {
     const auto cx = static_cast<std::uint64_t>(std::clamp((p.x - x0_) / cell_, -1e4, 1e4) + 16384);
     const auto cy = static_cast<std::uint64_t>(std::clamp((p.y - y0_) / cell_, -1e4, 1e4) + 16384);
@@ -185,6 +210,16 @@ void FilmHistory::Add(const CableSnapshot& s) {
     path_last_[e] = p;
   }
   ++count_;
+}
+
+void FilmHistory::AddSample(double t, double max, double companion_max) {
+  if (!std::isnan(companion_max)) companion_seen_ = true;
+  const double values[2] = {max, companion_max};
+  trace_.Add(t, values);
+  if (!std::isnan(max) && !(max <= peak_)) {  // the first, or a larger one (NaN peak_: none yet)
+    peak_ = max;
+    peak_t_ = t;
+  }
 }
 
 FrameLayout MakeFrameLayout(const FilmSpec& spec, int width, int height) {
@@ -249,7 +284,7 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
   cable.tension_max = hi;
   cable.now = &snap;
   cable.equilibrium = &spec.equilibrium;
-  cable.marks = {spec.weight_stations, spec.fixed_ends, spec.moving_ends};
+  cable.marks = {spec.weight_stations, spec.fixed_ends, spec.moving_ends, spec.free_ends};
   std::vector<std::vector<Vec2f>> paths;
   for (const auto& segs : history.end_paths()) {
     auto lines = JoinSegments(segs);
@@ -295,8 +330,8 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
   time.panel = L.max_panel;
   time.plot = L.max_tension;
   time.head = heads.time;
-  double peak_all = 0;
-  for (double v : history.max_tension()) peak_all = std::max(peak_all, v);
+  // The peak so far is the data's (every output row the snapshots carried), not the frames'.
+  const double peak_all = std::isfinite(history.peak()) ? history.peak() : peak_now;
   if (!comp) {
     time.note = "now " + FormatValue("%.2f", peak_now / kN) + " kN    peak " +
                 FormatValue("%.2f", peak_all / kN) + " kN";
@@ -311,6 +346,7 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
   time.times = &history.times();
   time.max_tension = &history.max_tension();
   if (comp) time.companion_max = &history.companion_max_tension();
+  time.equilibrium_label = ReferenceLabel(spec);
   if (spec.equilibrium.tension.size() == links && links > 0)
     time.equilibrium_max =
         *std::max_element(spec.equilibrium.tension.begin(), spec.equilibrium.tension.end());

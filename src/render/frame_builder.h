@@ -15,15 +15,21 @@
 #include "render/frame_layout.h"
 #include "render/plot_layout.h"
 #include "render/theme.h"
+#include "render/time_trace.h"
 
 namespace cablefilm {
 
-// What the film has shown so far, accumulated snapshot by snapshot: the O(s) envelope, one
-// (t, max) pair per snapshot (and the companion cable's max, when there is one), and the end's
+// What the film has shown so far, accumulated snapshot by snapshot: the O(s) envelope (of the
+// snapshots' tensions and of the rows' envelopes they carry), the
+// maximum tension against time (and the companion cable's, when there is one), and the end's
 // path as segments between cells of a 1000 x 1000 grid over the world box, each cell pair
-// stored once, so a periodic path stops growing.
+// stored once, so a periodic path stops growing. The time trace takes every output row a
+// snapshot carries (CableSnapshot::row_t), else the snapshot's own largest tension, thinned to
+// the extremes of each 1/kTimeTraceSpans of the film's duration (ThinnedTrace): its largest
+// value is the largest row's, whatever the frame rate.
 class FilmHistory {
  public:
+  static constexpr int kTimeTraceSpans = 8192;  // finer than any time plot's pixel columns
   explicit FilmHistory(const FilmSpec& spec);
   // Checks the snapshot against the spec (sizes, finite values; throws Error with the values).
   void Add(const CableSnapshot& snapshot);
@@ -31,11 +37,16 @@ class FilmHistory {
   long count() const { return count_; }
   const std::vector<double>& link_min() const { return link_min_; }  // [N], size s
   const std::vector<double>& link_max() const { return link_max_; }  // [N], size s
-  const std::vector<double>& times() const { return times_; }        // [s], one per snapshot
-  const std::vector<double>& max_tension() const { return max_tension_; }  // [N], per snapshot
-  // The companion cable's maximum tension [N], one per snapshot (NaN where a snapshot has no
-  // companion): empty while no snapshot had one.
-  const std::vector<double>& companion_max_tension() const { return companion_max_tension_; }
+  const std::vector<double>& times() const { return trace_.times(); }  // [s], the trace's samples
+  const std::vector<double>& max_tension() const { return trace_.values(0); }  // [N], per sample
+  // The companion cable's maximum tension [N], one per sample of times() (NaN where a snapshot
+  // has no companion): empty while no snapshot had one.
+  const std::vector<double>& companion_max_tension() const {
+    return companion_seen_ ? trace_.values(1) : no_companion_;
+  }
+  // The largest of max_tension() so far [N] and its time [s] (NaN before any snapshot).
+  double peak() const { return peak_; }
+  double peak_t() const { return peak_t_; }
   struct PathSegment {
     Vec2f a, b;  // [m]
   };
@@ -43,12 +54,17 @@ class FilmHistory {
   const std::vector<std::vector<PathSegment>>& end_paths() const { return end_paths_; }
 
  private:
+  void AddSample(double t, double max, double companion_max);
   std::vector<int> moving_ends_;
   std::size_t stations_;
   bool companion_required_;
   double x0_, y0_, cell_;  // path grid: origin and cell size [m]
   long count_ = 0;
-  std::vector<double> link_min_, link_max_, times_, max_tension_, companion_max_tension_;
+  std::vector<double> link_min_, link_max_;
+  ThinnedTrace trace_;     // channel 0: the cable's maximum tension, 1: the companion's
+  bool companion_seen_ = false;
+  std::vector<double> no_companion_;
+  double peak_, peak_t_;
   std::vector<std::vector<PathSegment>> end_paths_;
   std::vector<Vec2f> path_last_;                            // last stored point of each end
   std::vector<std::unordered_set<std::uint64_t>> path_seen_;  // cell pairs already stored

@@ -21,10 +21,11 @@ struct LiveHeads {
 };
 LiveHeads MakeLiveHeads(const LiveFrameInput& in, Rgba swatch, const Theme& th) {
   LiveHeads h;
-  const CableMarks marks{in.weight_stations, in.fixed_ends, in.moving_ends};
-  h.cable = CablePanelHead(marks, false, "", "", "recent path", swatch, th);
+  const CableMarks marks{in.weight_stations, in.fixed_ends, in.moving_ends, in.free_ends};
+  h.cable = CablePanelHead(marks, false, "", "", "recent path", swatch, th, in.reference_label);
   h.tension = TensionPanelHead(false, false, false, "", "",
-                               in.link_min.empty() ? "" : "min\u2013max so far", th);
+                               in.link_min.empty() ? "" : "min\u2013max so far", th,
+                               in.reference_label);
   h.time = TimePanelHead(false, false, "", "", th);
   return h;
 }
@@ -76,6 +77,7 @@ void CheckLiveFrameInput(const LiveFrameInput& in) {
   CheckStations("weight station", in.weight_stations, n);
   CheckStations("moving end", in.moving_ends, n);
   CheckStations("fixed end", in.fixed_ends, n);
+  CheckStations("free end", in.free_ends, n);
   CheckSize("max_tension", in.max_tension.size(), in.times.size());
   if (!in.link_min.empty() || !in.link_max.empty()) {
     CheckSize("link_min", in.link_min.size(), n - 1);
@@ -152,7 +154,7 @@ Frame MakeLiveFrame(const LiveFrameInput& in, int width, int height, const Color
   cable.tension_max = in.tension_max;
   cable.now = &snap;
   cable.equilibrium = &in.equilibrium;
-  cable.marks = {in.weight_stations, in.fixed_ends, in.moving_ends};
+  cable.marks = {in.weight_stations, in.fixed_ends, in.moving_ends, in.free_ends};
   cable.end_paths = &in.end_paths;
   DrawCablePanel(p, cable, colormap, th);
 
@@ -193,6 +195,7 @@ Frame MakeLiveFrame(const LiveFrameInput& in, int width, int height, const Color
   if (!in.equilibrium.tension.empty())
     time.equilibrium_max =
         *std::max_element(in.equilibrium.tension.begin(), in.equilibrium.tension.end());
+  time.equilibrium_label = in.reference_label;
   time.equilibrium_label_left = true;  // the newest samples and markers are at the right
   time.markers = &markers;
   DrawTimePanel(p, time, th);

@@ -25,8 +25,9 @@ struct LiveFrameInput {
   std::vector<double> arc_length;           // unstretched arc length of each station [m], s+1
   std::vector<double> section_boundaries;   // interior section ends [m]
   std::vector<std::string> section_names;   // one per section, or empty
-  std::vector<int> weight_stations, moving_ends, fixed_ends;
-  CableSnapshot equilibrium;                // static equilibrium of the scene (t = 0); may be empty
+  std::vector<int> weight_stations, moving_ends, fixed_ends, free_ends;
+  CableSnapshot equilibrium;                // the scene's initial state (t = 0); may be empty
+  std::string reference_label = "equilibrium";  // its name: or "initial state (straight)"
   double tension_min = 0, tension_max = 1;  // colour and plot range [N]
   bool range_locked = false;                // shown in the colour bar's caption ("locked")
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // world box to show [m] (follows the cable)

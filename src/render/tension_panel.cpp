@@ -18,28 +18,29 @@ bool PerLink(const std::vector<double>* v, std::size_t links) {
 
 PanelHead TensionPanelHead(bool companion, bool two_rows, bool companion_equilibrium,
                            const std::string& main_label, const std::string& companion_label,
-                           const std::string& envelope_label, const Theme& th) {
+                           const std::string& envelope_label, const Theme& th,
+                           const std::string& reference_label) {
   PanelHead head;
   head.title = "Tension along the cable";
   const bool band = !envelope_label.empty();
   if (companion && two_rows) {  // the curves now, then the references
     head.groups.push_back({{LegendEntry::kLine, th.current, main_label + " now"},
                            {LegendEntry::kLine, th.companion, companion_label + " now"}});
-    LegendGroup refs{{LegendEntry::kDash, th.equilibrium, "equilibrium"}};
+    LegendGroup refs{{LegendEntry::kDash, th.equilibrium, reference_label}};
     if (companion_equilibrium)
       refs.push_back({LegendEntry::kDot, CompanionEquilibriumColor(th),
-                      companion_label + " equilibrium"});
+                      companion_label + " " + reference_label});
     if (band) refs.push_back({LegendEntry::kBand, th.envelope, main_label + " " + envelope_label});
     head.groups.push_back(refs);
   } else if (companion) {  // one row, short labels
     LegendGroup row{{LegendEntry::kLine, th.current, main_label},
                     {LegendEntry::kLine, th.companion, companion_label},
-                    {LegendEntry::kDash, th.equilibrium, "equilibrium"}};
+                    {LegendEntry::kDash, th.equilibrium, reference_label}};
     if (band) row.push_back({LegendEntry::kBand, th.envelope, "min\u2013max"});
     head.groups.push_back(row);
   } else {
     LegendGroup row{{LegendEntry::kLine, th.current, "now"},
-                    {LegendEntry::kDash, th.equilibrium, "equilibrium"}};
+                    {LegendEntry::kDash, th.equilibrium, reference_label}};
     if (band) row.push_back({LegendEntry::kBand, th.envelope, envelope_label});
     head.groups.push_back(row);
   }

@@ -13,10 +13,12 @@ namespace cablefilm {
 
 // Title and legend. With a companion, `two_rows` names the curves "<label> now" and the
 // references "<label> equilibrium" etc. (room for a second legend row); without, the short
-// names. `envelope_label` names the band ("" = no band).
+// names. `envelope_label` names the band ("" = no band); `reference_label` the dashed initial
+// state ("equilibrium", or "initial state (straight)" for a straight start).
 PanelHead TensionPanelHead(bool companion, bool two_rows, bool companion_equilibrium,
                            const std::string& main_label, const std::string& companion_label,
-                           const std::string& envelope_label, const Theme& th);
+                           const std::string& envelope_label, const Theme& th,
+                           const std::string& reference_label = "equilibrium");
 
 // Borrowed for one call. A series of the wrong size (not one value per link) is not drawn.
 struct TensionPanelInput {

@@ -90,7 +90,7 @@ void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
     // on a veil when a trace crosses both.
     const float y = PlotPoint(mm, mm.x_lo, in.equilibrium_max / kN).y;
     p.Dashed({{mm.rect.x0, y}, {mm.rect.x1, y}}, 1.6f * k, th.equilibrium, 8 * k, 6 * k);
-    const float font = 14 * k, w = EstimateTextWidth("equilibrium", font);
+    const float font = 14 * k, w = EstimateTextWidth(in.equilibrium_label, font);
     const float x0 = in.equilibrium_label_left ? mm.rect.x0 + 6 * k : mm.rect.x1 - 6 * k - w;
     const PixelRect above{x0, y - 6 * k - std::max(kMinFontSize, font), x0 + w, y - 3 * k};
     const PixelRect below{x0, y + 3 * k, x0 + w, y + 6 * k + std::max(kMinFontSize, font)};
@@ -109,7 +109,7 @@ void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
       veil_y0 = eq_box.y0;
       veil_y1 = eq_box.y1;
     }
-    p.Text("equilibrium", {x0, under ? y + 6 * k : y - 6 * k}, font, th.equilibrium, HAlign::kLeft,
+    p.Text(in.equilibrium_label, {x0, under ? y + 6 * k : y - 6 * k}, font, th.equilibrium, HAlign::kLeft,
            under ? VAlign::kTop : VAlign::kBaseline);
   }
   p.Polyline(trace, 2.4f * k, th.accent);

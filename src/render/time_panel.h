@@ -33,9 +33,10 @@ struct TimePanelInput {
   const std::vector<double>* times = nullptr;          // [s]; required
   const std::vector<double>* max_tension = nullptr;    // [N], one per time; required
   const std::vector<double>* companion_max = nullptr;  // [N], one per time (NaN = gap); null = none
-  // The largest equilibrium tension [N]: a dashed line labelled "equilibrium" at the plot's
-  // right end (or left: the live view's newest data are at the right); NaN = none.
+  // The largest tension of the initial state [N]: a dashed line labelled `equilibrium_label`
+  // at the plot's right end (or left: the live view's newest data are at the right); NaN = none.
   double equilibrium_max = std::numeric_limits<double>::quiet_NaN();
+  std::string equilibrium_label = "equilibrium";  // or: initial state (straight)
   bool equilibrium_label_left = false;
   const std::vector<TimeMarker>* markers = nullptr;  // those inside the time axis are drawn
 };
