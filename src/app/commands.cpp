@@ -7,12 +7,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 
 #include "app/film_pass.h"
 #include "app/max_tension_log.h"
 #include "app/progress.h"
 #include "app/result_files.h"
 #include "app/run_extent.h"
+#include "app/run_report.h"
 #include "app/simulation_run.h"
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
@@ -64,7 +66,9 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
     case IntegratorKind::kImplicit:
       if (grid.automatic)
         std::printf("  integrator implicit (generalized-alpha, rho_inf %.2f), adaptive step up to "
-                    "%.4g s (%.0f x the explicit limit), local error tolerance %.3g m\n",
+                    "%.4g s (%.0f x the explicit limit), tolerance %.3g m: each step's local "
+                    "position error estimate kept below it (the error a step adds, not the "
+                    "run's total)\n",
                     grid.rho_inf, grid.dt, grid.dt / grid.limit.time_step, grid.error_tolerance);
       else
         std::printf("  integrator implicit (generalized-alpha, rho_inf %.2f), time step %.4g s "
@@ -72,9 +76,15 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
                     grid.rho_inf, grid.dt, grid.dt / grid.limit.time_step, steps);
       break;
     case IntegratorKind::kInextensible:
-      std::printf("  integrator inextensible (constraint tensions), output every %.4g s, substeps "
-                  "from the transverse wave limit\n",
-                  grid.interval);
+      if (grid.error_tolerance > 0)
+        std::printf("  integrator inextensible (constraint tensions), output every %.4g s, "
+                    "substeps below the transverse wave limit and error-controlled: tolerance "
+                    "%.3g m, each step's local position error estimate kept below it\n",
+                    grid.interval, grid.error_tolerance);
+      else
+        std::printf("  integrator inextensible (constraint tensions), output every %.4g s, "
+                    "substeps from the transverse wave limit\n",
+                    grid.interval);
       break;
   }
   const Eigen::Vector2d a = m.start.Position(0), b = m.end.Position(0);
@@ -113,9 +123,13 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
   integrator->Initialize(m, initial);
   ModelRun run{m, grid, initial, integrator->tensions(), RunExtent(initial), MaxTensionLog(), false, ""};
   if (scene.initial == InitialStateKind::kEquilibrium)
-    std::printf("equilibrium: %d Newton iterations, residual %.3g N (of %.4g N), %.2f ms; "
+    std::printf("equilibrium: %d Newton iterations%s, residual %.3g N (of %.4g N), %.2f ms; "
                 "tension %.6g N at the start, %.6g N at the end\n",
-                eq.iterations, eq.residual, eq.force_scale, eq_ms, run.initial_tension[0],
+                eq.iterations,
+                eq.fallback ? (" (" + std::to_string(eq.fallback_iterations) +
+                               " pseudo-transient after Newton stalled)").c_str()
+                            : "",
+                eq.residual, eq.force_scale, eq_ms, run.initial_tension[0],
                 run.initial_tension[m.links - 1]);
   else
     std::printf("initial state: the straight chord at rest (not an equilibrium), written to "
@@ -161,17 +175,22 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
   }
   series.Commit();
   const IntegratorStats st = integrator->stats();
-  std::printf("simulated %.6g s in %.3g s of computer time: %ld steps", state.t, wall, st.steps);
-  if (st.newton_iterations > 0)
-    std::printf(", %ld rejected, %.2f Newton iterations per step", st.rejected,
-                static_cast<double>(st.newton_iterations) / std::max(1L, st.steps));
-  std::printf(", %.3g station-steps/s\n", static_cast<double>(st.steps) * m.stations() / wall);
+  std::printf("simulated %.6g s in %.3g s of computer time: %s, %.3g station-steps/s\n", state.t,
+              wall, DescribeSteps(st).c_str(),
+              static_cast<double>(st.steps) * m.stations() / wall);
   // Sampled as the CSV is: at the output rows (every `interval`), not at every step.
   std::printf("peak tension %.6g N at t = %.4g s in link %d (the largest tension_max of the "
               "%ld rows, one every %.4g s)\n",
               run.rows.peak(), run.rows.peak_t(), run.rows.peak_link(), run.rows.rows(),
               grid.interval);
   std::printf("wrote %s\n", EscapeText(series_path).c_str());
+  const std::vector<std::string> warnings = TrustWarnings(m, st);
+  for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
+  RunFacts facts{integrator->name(), grid.automatic ? grid.error_tolerance : 0.0, state.t, wall,
+                 st, run.rows.peak(), run.rows.peak_t(), run.rows.peak_link(), run.rows.rows()};
+  const std::string report_path = out_dir + "/run_report" + suffix + ".toml";
+  WriteRunReport(report_path, facts, warnings);
+  std::printf("wrote %s\n", EscapeText(report_path).c_str());
   return run;
 }
 
@@ -255,6 +274,16 @@ int CheckCommand(const std::string& scene_path) {
   const CableModel m = BuildModel(scene);
   CheckModelLimits(scene, m);
   PrintSummary(scene, m, ChooseTimeGrid(m, scene.simulation, scene.output.interval));
+  if (scene.initial == InitialStateKind::kEquilibrium) {
+    // The initial state is part of the scene: a cable with no steady state is caught here,
+    // not after `run` has set up its outputs.
+    InstallSignalHandlers();
+    EquilibriumReport eq;
+    MakeInitialState(scene, m, &eq, &g_signal);
+    std::printf("  static equilibrium found: %d Newton iterations%s, residual %.3g N\n",
+                eq.iterations, eq.fallback ? " (with the pseudo-transient fallback)" : "",
+                eq.residual);
+  }
   std::printf("ok\n");
   return 0;
 }

@@ -27,7 +27,8 @@ void RemoveEarlierResults(const std::string& out_dir) {
        {"equilibrium.csv", "equilibrium_inextensible.csv", "timeseries.csv",
         "timeseries.partial.csv", "timeseries_inextensible.csv",
         "timeseries_inextensible.partial.csv", "film.mp4", "film.partial.mp4",
-        "max_tension.png", "max_tension.partial.png"})
+        "max_tension.png", "max_tension.partial.png", "run_report.toml",
+        "run_report_inextensible.toml"})
     stale.push_back(fs::path(out_dir) / name);
   std::error_code ec;
   const fs::path frames = fs::path(out_dir) / "frames";

@@ -8,11 +8,11 @@
 namespace cablefilm {
 
 ExplicitIntegrator::ExplicitIntegrator(const CableModel& m)
-    : ws_(m.links), a_(2, m.links + 1), v_pred_(2, m.links + 1) {}
+    : ws_(m.links), a_(2, m.links + 1), v_pred_(2, m.links + 1), snaps_(m) {}
 
 ExplicitIntegrator::ExplicitIntegrator(const CableModel& m, double safety_factor)
     : ws_(m.links), a_(2, m.links + 1), v_pred_(2, m.links + 1), next_x_(2, m.links + 1),
-      next_v_(2, m.links + 1), inertia_(m.links + 1), automatic_(true) {
+      next_v_(2, m.links + 1), inertia_(m.links + 1), snaps_(m), automatic_(true) {
   max_step_ = safety_factor * ComputeStabilityLimit(m).time_step;
   for (int j = 0; j <= m.links; ++j)
     inertia_[j] = m.cable_mass[j] + m.prism_mass.col(j).minCoeff();
@@ -29,6 +29,7 @@ std::string ExplicitIntegrator::name() const {
 void ExplicitIntegrator::Initialize(const CableModel& m, const CableState& state) {
   ComputeAccelerations(m, state.t, state.x, state.v, ws_, a_);
   CheckStateSane(m, state, ws_.geometry.length);
+  snaps_.Start(ws_.tension);
   initialized_ = true;
 }
 
@@ -110,6 +111,7 @@ void ExplicitIntegrator::Commit(const CableModel& m, CableState& s, double h) {
   for (int j = j0; j <= j1; ++j) s.v.col(j) += 0.5 * h * a_.col(j);
   s.t = t1;
   ++stats_.steps;
+  snaps_.Observe(t1, h, ws_.tension);
 }
 
 void ExplicitIntegrator::Step(const CableModel& m, CableState& s, double dt) {
@@ -135,6 +137,7 @@ void ExplicitIntegrator::Step(const CableModel& m, CableState& s, double dt) {
     for (int j = j0; j <= j1; ++j) s.v.col(j) += 0.5 * dt * a_.col(j);
     s.t = t1;
     ++stats_.steps;
+    snaps_.Observe(t1, dt, ws_.tension);
     CheckStateSane(m, s, ws_.geometry.length);
     return;
   }

@@ -54,7 +54,11 @@ class ExplicitIntegrator : public Integrator {
   void Step(const CableModel& m, CableState& state, double dt) override;
   const Eigen::VectorXd& tensions() const override { return ws_.tension; }
   // steps: substeps taken; rejected: substeps refused and refined before they were taken.
-  IntegratorStats stats() const override { return stats_; }
+  IntegratorStats stats() const override {
+    IntegratorStats s = stats_;
+    s.record = snaps_.record();
+    return s;
+  }
   // The current subdivision k of the steps asked (0 with fixed steps).
   int refinement() const { return level_; }
   int finest_refinement() const { return finest_level_; }
@@ -77,6 +81,7 @@ class ExplicitIntegrator : public Integrator {
   Eigen::Matrix2Xd next_v_;  // v_{n+1/2} of the step being taken [m/s]
   Eigen::VectorXd inertia_;  // m_j + min(m^x_j, m^y_j), the least inertia of station j [kg]
   IntegratorStats stats_;
+  SnapMonitor snaps_;
   bool initialized_ = false;
   bool automatic_ = false;
   double max_step_ = 0;      // safety factor x the stability limit [s] (automatic steps)

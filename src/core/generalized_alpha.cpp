@@ -17,7 +17,7 @@ GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const CableModel& m, doub
                                                        double error_tolerance)
     : rho_inf_(rho_inf), ws_(m.links), system_(m.last_free() - m.first_free() + 1),
       a_(2, m.stations()), abar_(2, m.stations()), x_(2, m.stations()), v_(2, m.stations()),
-      a1_(2, m.stations()), abar1_(2, m.stations()) {
+      a1_(2, m.stations()), abar1_(2, m.stations()), snaps_(m) {
   error_tolerance_ = error_tolerance;
   am_ = (2.0 * rho_inf - 1.0) / (rho_inf + 1.0);
   af_ = rho_inf / (rho_inf + 1.0);
@@ -38,6 +38,7 @@ void GeneralizedAlphaIntegrator::Initialize(const CableModel& m, const CableStat
   ComputeAccelerations(m, state.t, state.x, state.v, ws_, a_);
   CheckStateSane(m, state, ws_.geometry.length);
   abar_ = a_;
+  snaps_.Start(ws_.tension);
   initialized_ = true;
 }
 
@@ -113,6 +114,7 @@ void GeneralizedAlphaIntegrator::Commit(const CableModel& m, CableState& s, doub
   }
   s.t += h;
   ++stats_.steps;
+  snaps_.Observe(s.t, h, ws_.tension);
 }
 
 void GeneralizedAlphaIntegrator::Step(const CableModel& m, CableState& s, double dt) {

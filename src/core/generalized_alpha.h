@@ -26,7 +26,11 @@ class GeneralizedAlphaIntegrator : public Integrator {
   void Initialize(const CableModel& m, const CableState& state) override;
   void Step(const CableModel& m, CableState& state, double dt) override;
   const Eigen::VectorXd& tensions() const override { return ws_.tension; }
-  IntegratorStats stats() const override { return stats_; }
+  IntegratorStats stats() const override {
+    IntegratorStats s = stats_;
+    s.record = snaps_.record();
+    return s;
+  }
 
  private:
   // Solves one step of size h into the trial buffers; false if Newton did not converge.
@@ -47,6 +51,7 @@ class GeneralizedAlphaIntegrator : public Integrator {
   double proposed_ = 0;                  // the next step to try [s]
   double newton_tolerance_ = 0;          // Newton converges when |dx| < this [m]
   IntegratorStats stats_;
+  SnapMonitor snaps_;
   bool initialized_ = false;
 };
 

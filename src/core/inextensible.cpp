@@ -117,7 +117,7 @@ void ConstraintSolver::ProjectVelocities(const CableModel& m, const Eigen::Matri
 InextensibleIntegrator::InextensibleIntegrator(const CableModel& m, double error_tolerance)
     : solver_(m), ws_(m.links), trial_ws_(m.links), a_(2, m.stations()), v_pred_(2, m.stations()),
       trial_x_(2, m.stations()), trial_v_(2, m.stations()), trial_a_(2, m.stations()),
-      error_tolerance_(error_tolerance) {}
+      error_tolerance_(error_tolerance), steps_(m) {}
 
 std::string InextensibleIntegrator::name() const {
   if (!(error_tolerance_ > 0)) return "inextensible (constraint tensions)";
@@ -188,6 +188,7 @@ void InextensibleIntegrator::Accept(CableState& s, double h) {
   ws_.force.swap(trial_ws_.force);
   s.t += h;
   ++stats_.steps;
+  steps_.ObserveStep(h);
 }
 
 void InextensibleIntegrator::Step(const CableModel& m, CableState& s, double dt) {

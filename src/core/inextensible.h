@@ -70,7 +70,11 @@ class InextensibleIntegrator : public Integrator {
   void Initialize(const CableModel& m, const CableState& state) override;
   void Step(const CableModel& m, CableState& state, double dt) override;
   const Eigen::VectorXd& tensions() const override { return ws_.tension; }
-  IntegratorStats stats() const override { return stats_; }
+  IntegratorStats stats() const override {
+    IntegratorStats s = stats_;
+    s.record = steps_.record();
+    return s;
+  }
 
   // The largest stable substep for the current tensions [s].
   double StableSubstep(const CableModel& m) const;
@@ -94,6 +98,7 @@ class InextensibleIntegrator : public Integrator {
   double error_tolerance_ = 0;  // [m]; 0: substeps from the wave limit only
   double proposed_ = 0;         // the next substep to try (error control) [s]
   IntegratorStats stats_;
+  SnapMonitor steps_;  // the step range only: links at rest length do not snap
   bool initialized_ = false;
 };
 

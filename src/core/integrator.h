@@ -9,6 +9,7 @@
 #include "core/cable_state.h"
 #include "core/cancel.h"
 #include "core/error.h"
+#include "core/snap_monitor.h"
 
 namespace cablefilm {
 
@@ -22,6 +23,7 @@ struct IntegratorStats {
   long steps = 0;              // steps taken (accepted)
   long rejected = 0;           // steps rejected and retried with half the step
   long newton_iterations = 0;  // in all (implicit schemes)
+  StepRecord record;           // step range, and links snapping taut (elastic schemes)
 };
 
 // Thrown when the solution stops being finite or physically possible.

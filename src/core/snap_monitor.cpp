@@ -1,0 +1,49 @@
+#include "core/snap_monitor.h"
+
+#include <cmath>
+#include <limits>
+
+namespace cablefilm {
+
+SnapMonitor::SnapMonitor(const CableModel& m) : tau_(m.links), taut_(m.links) {
+  for (int j = 0; j < m.links; ++j) {
+    // Station masses along the link [kg]: cable plus prism (the smaller axis, the faster mode).
+    const double ma = m.cable_mass[j] + m.prism_mass.col(j).minCoeff();
+    const double mb = m.cable_mass[j + 1] + m.prism_mass.col(j + 1).minCoeff();
+    const double k = m.axial_stiffness[j] / m.rest_length[j];  // [N/m]
+    const double omega2 = k * (1.0 / ma + 1.0 / mb);           // [1/s^2]
+    tau_[j] = omega2 > 0 ? M_PI / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
+  }
+  taut_.setConstant(false);
+}
+
+void SnapMonitor::Start(const Eigen::VectorXd& tension) {
+  for (Eigen::Index j = 0; j < taut_.size(); ++j) taut_[j] = tension[j] > 0;
+}
+
+void SnapMonitor::ObserveStep(double h) {
+  if (record_.smallest_step == 0 || h < record_.smallest_step) record_.smallest_step = h;
+  if (h > record_.largest_step) record_.largest_step = h;
+}
+
+void SnapMonitor::Observe(double t_end, double h, const Eigen::VectorXd& tension) {
+  ObserveStep(h);
+  for (Eigen::Index j = 0; j < taut_.size(); ++j) {
+    const bool taut = tension[j] > 0;
+    if (taut && !taut_[j]) {
+      ++record_.snaps;
+      const double ratio = h / tau_[j];
+      if (ratio > record_.worst_snap_ratio) record_.worst_snap_ratio = ratio;
+      if (ratio > kResolvedSnapFraction) {
+        if (record_.unresolved_snaps == 0) {
+          record_.first_unresolved_time = t_end;
+          record_.first_unresolved_link = static_cast<int>(j);
+        }
+        ++record_.unresolved_snaps;
+      }
+    }
+    taut_[j] = taut;
+  }
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,49 @@
+#pragma once
+// Watches the steps an integrator takes for what makes a result untrustworthy: a link snapping
+// taut (slack at the start of a step, taut at its end) within a step too long to resolve the
+// snap. A snap load rises over about half the period of the link's own axial oscillation,
+//   tau_{j+1/2} = pi / omega_{j+1/2},  omega^2 = sigma E / l (1/m_j + 1/m_{j+1})
+// (the link's stiffness between its two stations' masses, with their prisms' but without the
+// normal added mass, which does not act along the link). A step longer than
+// kResolvedSnapFraction tau jumps over the rise: the peak tension it reports depends on where
+// the steps fall, not on the physics, and shrinking the step or the tolerance changes it.
+// The monitor also keeps the smallest and largest step. O(s) per step, no allocation.
+#include <Eigen/Core>
+
+#include "core/cable_model.h"
+
+namespace cablefilm {
+
+// A snap is resolved when the step is at most this fraction of the link's tau.
+constexpr double kResolvedSnapFraction = 0.1;
+
+struct StepRecord {
+  double smallest_step = 0;      // [s], of the steps taken (0: none yet)
+  double largest_step = 0;       // [s]
+  long snaps = 0;                // links snapping taut, in all
+  long unresolved_snaps = 0;     // ... within a step longer than kResolvedSnapFraction tau
+  double worst_snap_ratio = 0;   // the largest step / tau at a snap
+  double first_unresolved_time = -1;  // [s], -1: none
+  int first_unresolved_link = -1;
+};
+
+class SnapMonitor {
+ public:
+  explicit SnapMonitor(const CableModel& m);
+  // The state the steps start from: which links are taut.
+  void Start(const Eigen::VectorXd& tension);
+  // A step of h [s] taken, ending at t_end [s] with these link tensions [N].
+  void Observe(double t_end, double h, const Eigen::VectorXd& tension);
+  // Only the step's length (a scheme without slack links: the inextensible one).
+  void ObserveStep(double h);
+  const StepRecord& record() const { return record_; }
+  // tau_{j+1/2} [s] of every link (infinite for a link of zero stiffness).
+  const Eigen::VectorXd& snap_times() const { return tau_; }
+
+ private:
+  Eigen::VectorXd tau_;
+  Eigen::Array<bool, Eigen::Dynamic, 1> taut_;
+  StepRecord record_;
+};
+
+}  // namespace cablefilm
