@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev
+  libeigen3-dev libtomlplusplus-dev libcli11-dev libgtest-dev libbenchmark-dev
   libosmesa6-dev libpng-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libfreetype-dev libfontconfig-dev fonts-dejavu-core
   libcivetweb-dev libturbojpeg0-dev nlohmann-json3-dev

@@ -10,10 +10,6 @@
 #include "core/error.h"
 #include "render/gl_api.h"
 
-#ifndef CABLEFILM_SHADER_DIR
-#error "CABLEFILM_SHADER_DIR must be defined by the build (the source tree's shaders/)"
-#endif
-
 namespace cablefilm {
 
 void CheckGl(const std::string& where) {
@@ -31,23 +27,32 @@ void CheckGl(const std::string& where) {
 std::string ResolveShaderDir(const std::string& option) {
   if (!option.empty()) return option;
   if (const char* env = std::getenv("CABLEFILM_SHADERS"); env && *env) return env;
-  return CABLEFILM_SHADER_DIR;
+  return "";
 }
 
 namespace {
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+// The source of `file` in `dir` (empty: built in); `path` names it in messages.
+std::string ReadShader(const std::string& dir, const std::string& file, std::string* path) {
+  if (dir.empty()) {
+    *path = "built-in shaders/" + file;
+    std::string text;
+    if (!FindEmbeddedShader(file, &text)) throw Error("no " + *path + " in this build");
+    return text;
+  }
+  *path = dir + "/" + file;
+  std::ifstream in(*path, std::ios::binary);
   if (!in)
-    throw Error("shader " + path + " not found (set --shaders or CABLEFILM_SHADERS to the "
+    throw Error("shader " + *path + " not found (set --shaders or CABLEFILM_SHADERS to the "
                 "directory holding the .vert/.frag files)");
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
 }
 
-GLuint Compile(GLenum type, const std::string& path) {
-  const std::string source = ReadFile(path);
+GLuint Compile(GLenum type, const std::string& dir, const std::string& file) {
+  std::string path;
+  const std::string source = ReadShader(dir, file, &path);
   const GLuint shader = glCreateShader(type);
   const char* src = source.c_str();
   glShaderSource(shader, 1, &src, nullptr);
@@ -68,11 +73,11 @@ GLuint Compile(GLenum type, const std::string& path) {
 }  // namespace
 
 ShaderProgram::ShaderProgram(const std::string& dir, const std::string& name) : name_(name) {
-  const std::string base = dir + "/" + name;
-  const GLuint vs = Compile(GL_VERTEX_SHADER, base + ".vert");
+  const std::string base = (dir.empty() ? "built-in shaders" : dir) + "/" + name;
+  const GLuint vs = Compile(GL_VERTEX_SHADER, dir, name + ".vert");
   GLuint fs = 0;
   try {
-    fs = Compile(GL_FRAGMENT_SHADER, base + ".frag");
+    fs = Compile(GL_FRAGMENT_SHADER, dir, name + ".frag");
   } catch (...) {
     glDeleteShader(vs);
     throw;

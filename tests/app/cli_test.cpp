@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -216,6 +217,122 @@ TEST_F(CommandLine, UntrustedTextIsEscaped) {
   EXPECT_EQ(key.status, 1);
   EXPECT_EQ(key.err.find('\x1b'), std::string::npos);
   EXPECT_NE(key.err.find("output.\\x1B[2J: unknown key"), std::string::npos) << key.err;
+}
+
+}  // namespace
+
+namespace {
+
+// Issue 12: --version, and --help for the program and for each command, on stdout, status 0.
+TEST_F(CommandLine, VersionAndHelp) {
+  const Outcome version = Run("--version");
+  EXPECT_EQ(version.status, 0) << version.err;
+  EXPECT_EQ(version.out.rfind("cablefilm " CABLEFILM_VERSION, 0), 0u) << version.out;
+  EXPECT_EQ(Count(version.out, "\n"), 1u) << version.out;
+
+  for (const char* args : {"--help", "-h", "help"}) {
+    const Outcome o = Run(args);
+    EXPECT_EQ(o.status, 0) << args;
+    EXPECT_TRUE(o.err.empty()) << args << ": " << o.err;
+    for (const char* command : {"run", "compare", "check", "live", "--version"})
+      EXPECT_NE(o.out.find(command), std::string::npos) << args << " lacks " << command;
+  }
+  const std::vector<std::string> film_options = {
+      "--out DIR", "--no-film", "--film", "--frames", "--size WxH", "--fps N", "--speed X",
+      "--colormap NAME", "--tension-range MIN,MAX", "--shaders DIR"};
+  const std::vector<std::string> live_options = {
+      "--port N", "--bind ADDR", "--size WxH", "--fps N", "--speed X", "--colormap NAME",
+      "--out DIR", "--shaders DIR"};
+  struct Help {
+    std::string command;
+    std::vector<std::string> options;
+  };
+  std::vector<Help> helps = {{"run", film_options}, {"compare", film_options}, {"check", {}}};
+#ifdef CABLEFILM_HAS_FILM
+  helps.push_back({"live", live_options});
+#endif
+  for (const Help& h : helps) {
+    for (const std::string& args : {h.command + " --help", h.command + " -h", "help " + h.command}) {
+      const Outcome o = Run(args);
+      EXPECT_EQ(o.status, 0) << args << ": " << o.err;
+      EXPECT_NE(o.out.find("Usage: cablefilm " + h.command + " [OPTIONS] SCENE"),
+                std::string::npos)
+          << args << ":\n" << o.out;
+      for (const std::string& option : h.options)
+        EXPECT_NE(o.out.find("  " + option + " "), std::string::npos)
+            << args << " lacks " << option << ":\n" << o.out;
+      if (h.options.empty()) {
+        EXPECT_EQ(o.out.find("--out"), std::string::npos) << o.out;
+      }
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "output"));
+}
+
+// Issue 12: a bad option is refused with status 2 before anything runs (no output folder, nothing
+// on stdout), by a message that names the option and points to the command's --help.
+TEST_F(CommandLine, BadOptionsAreNamed) {
+  Scene("s.toml");
+  struct Case {
+    std::string args, message;
+  };
+  std::vector<Case> cases = {
+      {"", "cablefilm: missing command"},
+      {"frobnicate s.toml", "cablefilm: unknown command \"frobnicate\""},
+      {"--out x run s.toml", "unknown option \"--out\" (options go after the command)"},
+      {"s.toml run", "unknown command \"s.toml\""},
+      {"check", "SCENE is required"},
+      {"check s.toml --out out", "unknown option \"--out\" for check"},
+      {"check s.toml s.toml", "more than one scene given"},
+  };
+  for (const std::string command : {"run", "compare"}) {
+    const std::string base = command + " s.toml --out out ";
+    for (const Case& c : std::vector<Case>{
+             {"--size 17x16", "--size: expected WxH"},
+             {"--fps 0", "--fps: expected a number from 1 to 240"},
+             {"--speed 0", "--speed: expected a number above 0"},
+             {"--colormap jet", "--colormap: expected one of viridis"},
+             {"--tension-range 5,1", "--tension-range: expected MIN,MAX"},
+             {"--shaders nowhere", "--shaders: expected a folder of GLSL shaders, got \"nowhere\""},
+             {"--size", "--size: missing value (expected WxH)"},
+             {"--fps 30 --bogus", "unknown option \"--bogus\" for " + command},
+             {"--port 80", "unknown option \"--port\" for " + command},
+         })
+      cases.push_back({base + c.args, c.message});
+    cases.push_back({command + " --out out", "SCENE is required"});
+  }
+#ifdef CABLEFILM_HAS_FILM
+  for (const Case& c : std::vector<Case>{
+           {"--port 65536", "--port: expected a port number 0..65535, got \"65536\""},
+           {"--port 80x", "--port: expected a port number"},
+           {"--fps 121", "--fps: expected a number from 1 to 120"},
+           {"--speed 11", "--speed: expected a number from 0.1 to 10"},
+           {"--size 8x8", "--size: expected WxH"},
+           {"--colormap jet", "--colormap: expected one of"},
+           {"--bind", "--bind: missing value"},
+           {"--no-film", "unknown option \"--no-film\" for live"},
+       })
+    cases.push_back({"live s.toml --out out " + c.args, c.message});
+#endif
+  for (const Case& c : cases) {
+    const Outcome o = Run(c.args);
+    EXPECT_EQ(o.status, 2) << c.args << ": " << o.err;
+    EXPECT_NE(o.err.find(c.message), std::string::npos) << c.args << ": " << o.err;
+    EXPECT_NE(o.err.find("--help' for the options"), std::string::npos) << c.args << ": " << o.err;
+    EXPECT_TRUE(o.out.empty()) << c.args << ": " << o.out;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  EXPECT_FALSE(fs::exists(dir_ / "output"));
+}
+
+// Issue 12: options as before: the last of a repeated option wins; --frames makes the film.
+TEST_F(CommandLine, RepeatedOptionsTakeTheLast) {
+  Scene("s.toml");
+  const Outcome o = Run("run s.toml --out out --no-film --fps 999 --fps 30 --out out2");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out2" / "timeseries.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "out2" / "film.mp4"));
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "core/error.h"
 #include "encode/png_writer.h"
@@ -321,12 +322,26 @@ TEST(RendererLive, LiveFrameAt720p) {
   }
 }
 
-TEST(ShaderProgram, DirectoryFromOptionThenEnvironmentThenBuild) {
+TEST(ShaderProgram, DirectoryFromOptionThenEnvironmentThenBuiltIn) {
   EXPECT_EQ(ResolveShaderDir("/some/dir"), "/some/dir");
   ::setenv("CABLEFILM_SHADERS", "/from/env", 1);
   EXPECT_EQ(ResolveShaderDir(""), "/from/env");
   ::unsetenv("CABLEFILM_SHADERS");
-  EXPECT_EQ(ResolveShaderDir(""), std::string(CABLEFILM_SOURCE_DIR) + "/shaders");
+  EXPECT_EQ(ResolveShaderDir(""), "");  // the shaders built into the program
+}
+
+// Issue 12: the program carries shaders/ as it was at build time, byte for byte.
+TEST(ShaderProgram, BuiltInShadersAreTheSourceFiles) {
+  for (const char* name : {"shape.vert", "shape.frag", "text.vert", "text.frag"}) {
+    std::ifstream in(std::string(CABLEFILM_SOURCE_DIR) + "/shaders/" + name, std::ios::binary);
+    std::ostringstream source;
+    source << in.rdbuf();
+    std::string built_in;
+    ASSERT_TRUE(FindEmbeddedShader(name, &built_in)) << name;
+    EXPECT_EQ(built_in, source.str()) << name;
+  }
+  std::string none;
+  EXPECT_FALSE(FindEmbeddedShader("missing.vert", &none));
 }
 
 TEST(ShaderProgram, MissingShaderIsAnErrorNamingThePath) {

@@ -1,0 +1,47 @@
+# Issue 12: what `cmake --install` puts under the prefix, and the .deb that `cpack -G DEB` makes.
+#   bin/cablefilm                         the program (shaders and live page built in)
+#   lib/libcablefilm_core.a               cablefilm::core (physics; Eigen only)
+#   include/cablefilm/core/*.h            its headers
+#   lib/cmake/cablefilm/                  cablefilmConfig.cmake, ...ConfigVersion.cmake, targets
+include(CMakePackageConfigHelpers)
+
+set(CABLEFILM_CMAKE_DIR lib/cmake/cablefilm)
+install(TARGETS cablefilm RUNTIME DESTINATION bin)
+install(TARGETS cablefilm_core EXPORT cablefilmTargets
+        ARCHIVE DESTINATION lib
+        LIBRARY DESTINATION lib)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/core/ DESTINATION include/cablefilm/core
+        FILES_MATCHING PATTERN "*.h")
+install(EXPORT cablefilmTargets NAMESPACE cablefilm:: DESTINATION ${CABLEFILM_CMAKE_DIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/cablefilmConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/cablefilmConfig.cmake
+                              INSTALL_DESTINATION ${CABLEFILM_CMAKE_DIR})
+# 0.x: a minor version may change the interface.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/cablefilmConfigVersion.cmake
+                                 VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/cablefilmConfig.cmake
+              ${PROJECT_BINARY_DIR}/cablefilmConfigVersion.cmake
+        DESTINATION ${CABLEFILM_CMAKE_DIR})
+
+# The .deb (cpack -G DEB): installs under /usr; its dependencies are the Debian 12 packages of
+# the libraries the program links (found by dpkg-shlibdeps), the font it draws with (found
+# through fontconfig at run time, so no library names it) and, recommended, Eigen for the CMake
+# package.
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME cablefilm)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
+    "lumped-mass cable simulator that films the tension of a cable in a fluid")
+set(CPACK_PACKAGE_DESCRIPTION
+    "cablefilm simulates the transient motion of an elastic cable immersed in a fluid (mooring
+lines, tow cables, tethers) with the lumped-mass model of Polachek et al. (1963) and renders,
+headless, an H.264 film of its tension; it can also be watched and steered live in a browser.
+The package also holds the core library (cablefilm::core) and its CMake package.")
+set(CPACK_PACKAGE_CONTACT "cablefilm maintainers <cablefilm@localhost>")
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libeigen3-dev")
+set(CPACK_STRIP_FILES bin/cablefilm)
+include(CPack)
