@@ -1,5 +1,6 @@
 #include "core/cable_model.h"
 
+#include <cmath>
 #include <string>
 
 #include "core/error.h"
@@ -26,6 +27,7 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
   m.axial_stiffness.resize(s);
   m.virtual_mass.resize(s);
   m.drag_factor.resize(s);
+  m.axial_damping = Eigen::VectorXd::Zero(s);
   m.link_mass.resize(s);
   m.link_net_weight.resize(s);
   m.link_section.resize(s);
@@ -40,6 +42,7 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
       m.axial_stiffness[j] = sec.area * sec.youngs_modulus;
       m.virtual_mass[j] = rho * sec.added_mass_coefficient * l * sec.area;
       m.drag_factor[j] = 0.5 * rho * sec.drag_coefficient * l * sec.diameter;
+      m.axial_damping[j] = sec.axial_damping * sec.area / l;
       m.link_mass[j] = sec.mass_per_length * l;
       m.link_net_weight[j] = (sec.mass_per_length - rho * sec.area) * l * g;
       m.link_section[j] = static_cast<int>(k);
@@ -67,6 +70,18 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
     m.prism_drag.col(p.station) += 0.5 * rho * p.drag_coefficient.cwiseProduct(p.drag_area);
     m.net_weight[p.station] += (p.mass - rho * p.volume) * g;
     m.weight_stations.push_back(p.station);
+  }
+  // A damping ratio becomes a coefficient once the stations' masses are known (prisms too; the
+  // normal added mass does not act along the link).
+  j = 0;
+  for (const SectionSpec& sec : sections) {
+    for (int i = 0; i < sec.segments; ++i, ++j) {
+      if (sec.axial_damping_ratio == 0) continue;
+      const double ma = m.cable_mass[j] + m.prism_mass.col(j).minCoeff();
+      const double mb = m.cable_mass[j + 1] + m.prism_mass.col(j + 1).minCoeff();
+      const double k = m.axial_stiffness[j] / m.rest_length[j];  // [N/m]
+      m.axial_damping[j] = 2.0 * sec.axial_damping_ratio * std::sqrt(k * ma * mb / (ma + mb));
+    }
   }
   return m;
 }

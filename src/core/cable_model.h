@@ -21,6 +21,8 @@ struct CableModel {
   Eigen::VectorXd axial_stiffness;  // sigma_{j+1/2} E_{j+1/2} [N]
   Eigen::VectorXd virtual_mass;   // e_{j+1/2} = rho k l sigma [kg], normal added mass of the link
   Eigen::VectorXd drag_factor;    // f^D_{j+1/2} = rho/2 C^D l d [kg/m]
+  Eigen::VectorXd axial_damping;  // c_{j+1/2} [N s/m]: a taut link's tension gains c dL/dt
+                                  // (not in the paper; 0 unless the scene asks for it)
   Eigen::VectorXd link_mass;      // mu_{j+1/2} l_{j+1/2} [kg]
   Eigen::VectorXd link_net_weight;  // mu l g - rho g l sigma [N], weight less buoyancy
   std::vector<int> link_section;  // the scene section each link belongs to
@@ -64,6 +66,9 @@ struct SectionSpec {
   double youngs_modulus = 0;         // E [Pa]
   double drag_coefficient = 0;       // C^D
   double added_mass_coefficient = 0; // k
+  double axial_damping = 0;          // BA [Pa s]: c = BA sigma / l
+  double axial_damping_ratio = 0;    // zeta: c = 2 zeta sqrt((sigma E / l) m_ab), m_ab the
+                                     // reduced mass of the link's two stations
 };
 
 struct PrismSpec {

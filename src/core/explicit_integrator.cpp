@@ -29,7 +29,7 @@ std::string ExplicitIntegrator::name() const {
 void ExplicitIntegrator::Initialize(const CableModel& m, const CableState& state) {
   ComputeAccelerations(m, state.t, state.x, state.v, ws_, a_);
   CheckStateSane(m, state, ws_.geometry.length);
-  snaps_.Start(ws_.tension);
+  snaps_.Start(ws_.geometry.length);
   initialized_ = true;
 }
 
@@ -39,7 +39,8 @@ bool ExplicitIntegrator::Drift(const CableModel& m, const CableState& s, double 
   // Whether link k is taut at one end of the step and slack at the other.
   auto changes = [&](int k) {
     const double l = m.rest_length[k];
-    return (ws_.tension[k] > 0) != ((next_x_.col(k + 1) - next_x_.col(k)).squaredNorm() > l * l);
+    return (ws_.geometry.length[k] > l) !=
+           ((next_x_.col(k + 1) - next_x_.col(k)).squaredNorm() > l * l);
   };
   const int j0 = m.first_free(), j1 = m.last_free();
   bool any = false;
@@ -60,7 +61,7 @@ bool ExplicitIntegrator::SnapsResolved(const CableModel& m, const CableState& s,
   for (int k = 0; k < m.links; ++k) {
     const double l = m.rest_length[k];
     const Eigen::Vector2d d1 = next_x_.col(k + 1) - next_x_.col(k);
-    const bool taut0 = ws_.tension[k] > 0;
+    const bool taut0 = ws_.geometry.length[k] > l;  // stretched (with damping T may be 0)
     const bool taut1 = d1.squaredNorm() > l * l;
     if (taut0 == taut1) continue;
     if (m.prescribed(k) && m.prescribed(k + 1)) continue;  // a link that moves no station
@@ -72,9 +73,10 @@ bool ExplicitIntegrator::SnapsResolved(const CableModel& m, const CableState& s,
       const double T1 = stiffness * (L1 - l);
       delta = -0.5 * T1 * (l - d1.dot(d0) / L1);
       strain_energy = 0.5 * T1 * (L1 - l);
-    } else {      // going slack: T_{n+1} = 0
-      delta = 0.5 * ws_.tension[k] * (l - ws_.geometry.tangent.col(k).dot(d1));
-      strain_energy = 0.5 * ws_.tension[k] * (L0 - l);
+    } else {      // going slack: T_{n+1} = 0 (the elastic part: the damping does no such work)
+      const double T0 = stiffness * (L0 - l);
+      delta = 0.5 * T0 * (l - ws_.geometry.tangent.col(k).dot(d1));
+      strain_energy = 0.5 * T0 * (L0 - l);
     }
     // The energy of the link's own motion: its stations' relative speed along it, at the start
     // of the step or (as the accelerations carry it) at its end, whichever is larger, with their
@@ -111,7 +113,7 @@ void ExplicitIntegrator::Commit(const CableModel& m, CableState& s, double h) {
   for (int j = j0; j <= j1; ++j) s.v.col(j) += 0.5 * h * a_.col(j);
   s.t = t1;
   ++stats_.steps;
-  snaps_.Observe(t1, h, ws_.tension);
+  snaps_.Observe(t1, h, ws_.geometry.length);
 }
 
 void ExplicitIntegrator::Step(const CableModel& m, CableState& s, double dt) {
@@ -137,7 +139,7 @@ void ExplicitIntegrator::Step(const CableModel& m, CableState& s, double dt) {
     for (int j = j0; j <= j1; ++j) s.v.col(j) += 0.5 * dt * a_.col(j);
     s.t = t1;
     ++stats_.steps;
-    snaps_.Observe(t1, dt, ws_.tension);
+    snaps_.Observe(t1, dt, ws_.geometry.length);
     CheckStateSane(m, s, ws_.geometry.length);
     return;
   }

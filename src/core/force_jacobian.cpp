@@ -48,7 +48,15 @@ void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::V
     const Eigen::Matrix2d G =
         dTdL * tt + (tension[k] / L) * (Eigen::Matrix2d::Identity() - tt);
     b.fa_dd = G;
-    b.fb_dd = -G;
+    // Axial damping c dL/dt t, dL/dt = t . (v_b - v_a), while it leaves the tension positive:
+    // through v_b - v_a = kv d (the scheme's velocity follows the position) it adds kv c t t^T,
+    // and through t it adds c t (P (v_b - v_a) / L)^T (the geometric part is in T/L above).
+    if (m.axial_damping.size() != 0 && m.axial_damping[k] != 0 && dTdL > 0 && tension[k] > 0) {
+      const double c = m.axial_damping[k];
+      const Eigen::Vector2d dv = v.col(k + 1) - v.col(k);
+      b.fa_dd += c * (kv * tt + t * ((Eigen::Matrix2d::Identity() - tt) * dv / L).transpose());
+    }
+    b.fb_dd = -b.fa_dd;
     // Normal drag D n / 2 on both stations, D = -f^D q |q|, q = n . (mean velocity - c).
     if (m.drag_factor[k] != 0) {
       const Eigen::Vector2d n(-t.y(), t.x());

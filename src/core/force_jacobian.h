@@ -10,7 +10,8 @@
 namespace cablefilm {
 
 // Adds  -dF/dx - kv dF/dv  to `system`, where F(x, v) is the station force of eq. (1): Hooke
-// tension with its slack switch (axial and geometric stiffness), the links' normal drag through
+// tension with its slack switch (axial and geometric stiffness) and its axial damping, the
+// links' normal drag through
 // both their orientation and the relative velocity, and the prisms' drag. kv = dv/dx of the
 // time-stepping scheme (0 for statics). `g` and `tension` must be those of x.
 void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::VectorXd& tension,

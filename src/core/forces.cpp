@@ -1,6 +1,7 @@
 #include "core/forces.h"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 
 namespace cablefilm {
@@ -27,6 +28,23 @@ void ComputeHookeTensions(const CableModel& m, const LinkGeometry& g, Eigen::Vec
     const double strain = g.length[j] / m.rest_length[j] - 1.0;
     tension[j] = strain > 0 ? m.axial_stiffness[j] * strain : 0.0;
   }
+}
+
+void AddAxialDamping(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
+                     Eigen::VectorXd& tension) {
+  if (m.axial_damping.size() == 0) return;
+  for (int j = 0; j < m.links; ++j) {
+    const double c = m.axial_damping[j];  // [N s/m]
+    if (c == 0 || !(g.length[j] > m.rest_length[j])) continue;
+    const double rate = g.tangent.col(j).dot(v.col(j + 1) - v.col(j));  // dL/dt [m/s]
+    tension[j] = std::max(0.0, tension[j] + c * rate);
+  }
+}
+
+void ComputeTensions(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
+                     Eigen::VectorXd& tension) {
+  ComputeHookeTensions(m, g, tension);
+  AddAxialDamping(m, g, v, tension);
 }
 
 void AddExternalForces(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
@@ -82,7 +100,7 @@ Eigen::Matrix2d StationInertia(const CableModel& m, const LinkGeometry& g, int j
 void ComputeAccelerations(const CableModel& m, double t, const Eigen::Matrix2Xd& x,
                           const Eigen::Matrix2Xd& v, ForceWorkspace& ws, Eigen::Matrix2Xd& a) {
   ComputeGeometry(x, ws.geometry);
-  ComputeHookeTensions(m, ws.geometry, ws.tension);
+  ComputeTensions(m, ws.geometry, v, ws.tension);
   ComputeStationForces(m, ws.geometry, ws.tension, v, ws.force);
   for (int j = m.first_free(); j <= m.last_free(); ++j) {
     const Eigen::Matrix2d M = StationInertia(m, ws.geometry, j);

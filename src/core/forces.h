@@ -27,6 +27,15 @@ void ComputeGeometry(const Eigen::Matrix2Xd& x, LinkGeometry& g);
 // Eq. (2), with a compressed link slack: T = max(0, sigma E (L/l - 1)).
 void ComputeHookeTensions(const CableModel& m, const LinkGeometry& g, Eigen::VectorXd& tension);
 
+// Internal axial damping (Kelvin-Voigt, not in the paper): a taut link's tension gains
+// c_{j+1/2} dL/dt, dL/dt = t . (v_{j+1} - v_j), and stays >= 0 (a cable cannot push); a slack
+// link has none. No-op when the model has no damping.
+void AddAxialDamping(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
+                     Eigen::VectorXd& tension);
+// The tension of the dynamics: Hooke's law plus the axial damping.
+void ComputeTensions(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
+                     Eigen::VectorXd& tension);
+
 // force_j = T_{j+1/2} t_{j+1/2} - T_{j-1/2} t_{j-1/2} + (X_j, Y_j), for every station.
 // v: station velocities; the current enters through the relative velocity.
 void ComputeStationForces(const CableModel& m, const LinkGeometry& g,

@@ -38,7 +38,7 @@ void GeneralizedAlphaIntegrator::Initialize(const CableModel& m, const CableStat
   ComputeAccelerations(m, state.t, state.x, state.v, ws_, a_);
   CheckStateSane(m, state, ws_.geometry.length);
   abar_ = a_;
-  snaps_.Start(ws_.tension);
+  snaps_.Start(ws_.geometry.length);
   initialized_ = true;
 }
 
@@ -72,7 +72,7 @@ bool GeneralizedAlphaIntegrator::Solve(const CableModel& m, const CableState& s,
     ++stats_.newton_iterations;
     Kinematics(m, s, h, x_);
     ComputeGeometry(x_, ws_.geometry);
-    ComputeHookeTensions(m, ws_.geometry, ws_.tension);
+    ComputeTensions(m, ws_.geometry, v_, ws_.tension);
     ComputeStationForces(m, ws_.geometry, ws_.tension, v_, ws_.force);
     system_.SetZero();
     AddInertiaJacobian(m, ws_.geometry, a1_, ka, system_);
@@ -89,7 +89,7 @@ bool GeneralizedAlphaIntegrator::Solve(const CableModel& m, const CableState& s,
     if (dx_max <= newton_tolerance_) {
       Kinematics(m, s, h, x_);
       ComputeGeometry(x_, ws_.geometry);
-      ComputeHookeTensions(m, ws_.geometry, ws_.tension);
+      ComputeTensions(m, ws_.geometry, v_, ws_.tension);
       return true;
     }
   }
@@ -114,7 +114,7 @@ void GeneralizedAlphaIntegrator::Commit(const CableModel& m, CableState& s, doub
   }
   s.t += h;
   ++stats_.steps;
-  snaps_.Observe(s.t, h, ws_.tension);
+  snaps_.Observe(s.t, h, ws_.geometry.length);
 }
 
 void GeneralizedAlphaIntegrator::Step(const CableModel& m, CableState& s, double dt) {

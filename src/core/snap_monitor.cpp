@@ -5,7 +5,8 @@
 
 namespace cablefilm {
 
-SnapMonitor::SnapMonitor(const CableModel& m) : tau_(m.links), taut_(m.links) {
+SnapMonitor::SnapMonitor(const CableModel& m)
+    : rest_length_(m.rest_length), tau_(m.links), taut_(m.links) {
   for (int j = 0; j < m.links; ++j) {
     // Station masses along the link [kg]: cable plus prism (the smaller axis, the faster mode).
     const double ma = m.cable_mass[j] + m.prism_mass.col(j).minCoeff();
@@ -17,8 +18,8 @@ SnapMonitor::SnapMonitor(const CableModel& m) : tau_(m.links), taut_(m.links) {
   taut_.setConstant(false);
 }
 
-void SnapMonitor::Start(const Eigen::VectorXd& tension) {
-  for (Eigen::Index j = 0; j < taut_.size(); ++j) taut_[j] = tension[j] > 0;
+void SnapMonitor::Start(const Eigen::VectorXd& length) {
+  for (Eigen::Index j = 0; j < taut_.size(); ++j) taut_[j] = length[j] > rest_length_[j];
 }
 
 void SnapMonitor::ObserveStep(double h) {
@@ -26,10 +27,10 @@ void SnapMonitor::ObserveStep(double h) {
   if (h > record_.largest_step) record_.largest_step = h;
 }
 
-void SnapMonitor::Observe(double t_end, double h, const Eigen::VectorXd& tension) {
+void SnapMonitor::Observe(double t_end, double h, const Eigen::VectorXd& length) {
   ObserveStep(h);
   for (Eigen::Index j = 0; j < taut_.size(); ++j) {
-    const bool taut = tension[j] > 0;
+    const bool taut = length[j] > rest_length_[j];
     if (taut && !taut_[j]) {
       ++record_.snaps;
       const double ratio = h / tau_[j];

@@ -30,10 +30,11 @@ struct StepRecord {
 class SnapMonitor {
  public:
   explicit SnapMonitor(const CableModel& m);
-  // The state the steps start from: which links are taut.
-  void Start(const Eigen::VectorXd& tension);
-  // A step of h [s] taken, ending at t_end [s] with these link tensions [N].
-  void Observe(double t_end, double h, const Eigen::VectorXd& tension);
+  // The state the steps start from: which links are taut (stretched beyond their rest length;
+  // with axial damping a stretched link's tension can be 0 for a moment).
+  void Start(const Eigen::VectorXd& length);
+  // A step of h [s] taken, ending at t_end [s] with these link lengths [m].
+  void Observe(double t_end, double h, const Eigen::VectorXd& length);
   // Only the step's length (a scheme without slack links: the inextensible one).
   void ObserveStep(double h);
   const StepRecord& record() const { return record_; }
@@ -41,6 +42,7 @@ class SnapMonitor {
   const Eigen::VectorXd& snap_times() const { return tau_; }
 
  private:
+  Eigen::VectorXd rest_length_;  // [m]
   Eigen::VectorXd tau_;
   Eigen::Array<bool, Eigen::Dynamic, 1> taut_;
   StepRecord record_;

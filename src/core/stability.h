@@ -17,7 +17,8 @@ namespace cablefilm {
 
 struct StabilityLimit {
   double omega_max = 0;    // upper bound of the highest natural frequency [rad/s]
-  double time_step = 0;    // 2 / omega_max [s]: central differences are stable below it
+  double time_step = 0;    // 2 / omega_max [s] (less with axial damping): central differences
+                           // are stable below it
   int station = 0;         // the station whose row gives the bound (the stiffest place)
 };
 

@@ -56,6 +56,8 @@ CableModel BuildModel(const SceneDef& scene) {
     s.youngs_modulus = mat.youngs_modulus;
     s.drag_coefficient = mat.drag_coefficient;
     s.added_mass_coefficient = mat.added_mass_coefficient;
+    s.axial_damping = mat.axial_damping;
+    s.axial_damping_ratio = mat.axial_damping_ratio;
     sections.push_back(s);
   }
   std::vector<PrismSpec> prisms;

@@ -21,6 +21,8 @@ struct MaterialDef {
   double youngs_modulus = 0;           // E [Pa]
   double drag_coefficient = 1.2;       // C^D, normal drag
   double added_mass_coefficient = 1.0; // k, normal virtual inertia
+  double axial_damping = 0;            // internal axial damping BA [Pa s]: stress BA x strain rate
+  double axial_damping_ratio = 0;      // or zeta, of critical for each link's axial mode
 };
 
 struct SectionDef {

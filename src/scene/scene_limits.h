@@ -22,6 +22,8 @@ constexpr double kMinArea = 1e-12, kMaxArea = 100;            // m^2
 constexpr double kMinMassPerLength = 1e-9, kMaxMassPerLength = 1e6;  // kg/m
 constexpr double kMinModulus = 1, kMaxModulus = 1e13;         // Pa
 constexpr double kMaxCoefficient = 1e3;     // drag and added-mass coefficients
+constexpr double kMaxAxialDamping = 1e15;   // Pa s (MoorDyn's BA)
+constexpr double kMaxDampingRatio = 100;    // of critical, the link's axial mode
 constexpr double kMaxGravity = 1e3;         // m/s^2
 constexpr double kMaxFluidDensity = 1e5;    // kg/m^3
 constexpr double kMaxCurrent = 1e3;         // m/s, either way

@@ -253,6 +253,12 @@ void ReadMaterials(TableReader& top, SceneDef& scene, const std::string& file, b
     m.drag_coefficient = r.OptionalNonNegative("drag_coefficient", 1.2, "", kMaxCoefficient);
     m.added_mass_coefficient =
         r.OptionalNonNegative("added_mass_coefficient", 1.0, "", kMaxCoefficient);
+    m.axial_damping = r.OptionalNonNegative("axial_damping", 0.0, " in Pa s", kMaxAxialDamping);
+    m.axial_damping_ratio =
+        r.OptionalNonNegative("axial_damping_ratio", 0.0, " (of critical)", kMaxDampingRatio);
+    if (m.axial_damping > 0 && m.axial_damping_ratio > 0)
+      r.Fail(arr->get(i)->as_table()->get("axial_damping_ratio"), "axial_damping_ratio",
+             "expected either axial_damping (Pa s) or axial_damping_ratio, not both");
     r.Finish();
     scene.materials.push_back(m);
   }

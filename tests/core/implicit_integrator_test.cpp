@@ -552,9 +552,11 @@ TEST(ImplicitIntegrator, StepIndependentOfStations) {
 // with two sections, a prism, a current and a free end, where some links are slack and the
 // rest stretched, and where drag and stiffness terms are of comparable size (soft rope, fast
 // relative motion) so that an error in either shows.
-CableModel JacobianModel() {
+CableModel JacobianModel(double damping_ratio = 0) {
   SectionSpec a{6.0, 6, 0.05, 1e-3, 1.5, 1e6, 1.2, 1.0};   // EA = 1 kN
   SectionSpec b{4.0, 5, 0.03, 5e-4, 0.8, 4e6, 1.0, 0.8};   // EA = 2 kN
+  a.axial_damping_ratio = damping_ratio;
+  b.axial_damping = 2e4 * damping_ratio;  // [Pa s]: c = BA sigma / l = 12.5 zeta N s/m
   PrismSpec p;
   p.station = 4;
   p.mass = 20;
@@ -606,8 +608,8 @@ double RelativeError(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& fd)
   return (analytic - fd).cwiseAbs().maxCoeff() / fd.cwiseAbs().maxCoeff();
 }
 
-TEST(ImplicitIntegrator, AnalyticJacobianMatchesCentralDifferences) {
-  const CableModel m = JacobianModel();
+void ExpectJacobianMatchesCentralDifferences(double damping_ratio) {
+  const CableModel m = JacobianModel(damping_ratio);
   const int j0 = m.first_free(), j1 = m.last_free(), n = j1 - j0 + 1;
   ASSERT_EQ(j0, 1);
   ASSERT_EQ(j1, m.links);  // the free end is included
@@ -619,7 +621,7 @@ TEST(ImplicitIntegrator, AnalyticJacobianMatchesCentralDifferences) {
     ForceWorkspace ws(m.links);
     auto forces = [&](const Eigen::Matrix2Xd& xx, const Eigen::Matrix2Xd& vv) {
       ComputeGeometry(xx, ws.geometry);
-      ComputeHookeTensions(m, ws.geometry, ws.tension);
+      ComputeTensions(m, ws.geometry, vv, ws.tension);
       ComputeStationForces(m, ws.geometry, ws.tension, vv, ws.force);
       Eigen::VectorXd f(2 * n);
       for (int j = j0; j <= j1; ++j) f.segment<2>(2 * (j - j0)) = ws.force.col(j);
@@ -650,7 +652,7 @@ TEST(ImplicitIntegrator, AnalyticJacobianMatchesCentralDifferences) {
       }
     // Analytic: kv = 0 gives -dF/dx; kv = 1 adds -dF/dv. ka = 0 gives d(M a)/dx; ka = 1 adds M.
     ComputeGeometry(x, ws.geometry);
-    ComputeHookeTensions(m, ws.geometry, ws.tension);
+    ComputeTensions(m, ws.geometry, v, ws.tension);
     BlockTridiagonal s0(n), s1(n), i0(n), i1(n);
     for (BlockTridiagonal* s : {&s0, &s1, &i0, &i1}) s->SetZero();
     AddForceJacobian(m, ws.geometry, ws.tension, v, 0.0, s0);
@@ -665,15 +667,25 @@ TEST(ImplicitIntegrator, AnalyticJacobianMatchesCentralDifferences) {
     worst_ma = std::max(worst_ma, RelativeError(Dense(i0), dMadx));
     worst_m = std::max(worst_m, RelativeError(Dense(i1) - Dense(i0), M));
   }
-  std::printf("[ jacobian ] largest relative error over 5 random states: dF/dx %.2e, dF/dv "
-              "%.2e, d(M a)/dx %.2e, M %.2e\n",
-              worst_x, worst_v, worst_ma, worst_m);
+  std::printf("[ jacobian ] axial damping ratio %.2f: largest relative error over 5 random "
+              "states: dF/dx %.2e, dF/dv %.2e, d(M a)/dx %.2e, M %.2e\n",
+              damping_ratio, worst_x, worst_v, worst_ma, worst_m);
   // 1e-6: the finite differences are good to ~1e-9 (see above); a missing or wrong term is
   // O(1) of its block, and each kind of term is checked on its own scale.
   EXPECT_LT(worst_x, 1e-6);
   EXPECT_LT(worst_v, 1e-6);
   EXPECT_LT(worst_ma, 1e-6);
   EXPECT_LT(worst_m, 1e-12);
+}
+
+TEST(ImplicitIntegrator, AnalyticJacobianMatchesCentralDifferences) {
+  ExpectJacobianMatchesCentralDifferences(0.0);
+}
+
+// With internal axial damping (both forms: a ratio on one section, BA on the other), whose
+// tension c dL/dt depends on the positions through the links' directions and on the velocities.
+TEST(ImplicitIntegrator, AnalyticJacobianWithAxialDampingMatchesCentralDifferences) {
+  ExpectJacobianMatchesCentralDifferences(0.2);
 }
 }  // namespace
 }  // namespace cablefilm

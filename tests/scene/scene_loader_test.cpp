@@ -177,6 +177,16 @@ TEST(SceneLoader, NonPositiveQuantities) {
               "environment.fluid_density", {"expected a number >= 0"});
 }
 
+TEST(SceneLoader, AxialDamping) {
+  ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = 2.0e9\naxial_damping = -1"),
+              "material[1].axial_damping", {"expected a number >= 0"});
+  ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = 2.0e9\naxial_damping_ratio = 1e9"),
+              "material[1].axial_damping_ratio", {"100"});
+  ExpectError(With("youngs_modulus = 2.0e9",
+                   "youngs_modulus = 2.0e9\naxial_damping = 1e5\naxial_damping_ratio = 0.5"),
+              "material[1].axial_damping_ratio", {"not both"});
+}
+
 TEST(SceneLoader, NonFiniteNumbers) {
   ExpectError(With("length = 45.72", "length = nan"), "cable.section[0].length", {"non-finite"});
   ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = inf"),

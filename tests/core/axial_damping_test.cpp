@@ -1,0 +1,152 @@
+// Internal axial damping (not in the paper; MoorDyn's BA): a taut link's tension gains
+// c dL/dt. Checked against the damped oscillator's closed form, in both schemes, and the
+// coefficient of a damping ratio against its definition.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "core/cable_model.h"
+#include "core/integrator.h"
+#include "core/stability.h"
+
+namespace cablefilm {
+namespace {
+
+constexpr double kG = 9.80665;
+
+// A 1 m link (EA 1e4 N) hanging in vacuum from a fixed point with a 10 kg weight at its free
+// end: the end is a mass m on a spring k = EA / l with a dashpot c. It stays taut (displaced
+// by 0.3 of its static stretch), so its height is the damped oscillator's
+//   y(t) = y_eq - d0 e^(-zeta w t) (cos(w_d t) + zeta / sqrt(1 - zeta^2) sin(w_d t)),
+// w^2 = k / m, zeta = c / (2 sqrt(k m)), w_d = w sqrt(1 - zeta^2).
+struct DampedLink {
+  double l = 1.0, area = 1e-4, E = 1e8, mu = 0.1, M = 10.0, zeta = 0.05;
+  CableModel model;
+  double k = 0, m = 0, c = 0, y_eq = 0, d0 = 0;
+  DampedLink() {
+    SectionSpec s;
+    s.length = l;
+    s.segments = 1;
+    s.diameter = 0.01;
+    s.area = area;
+    s.mass_per_length = mu;
+    s.youngs_modulus = E;
+    k = E * area / l;
+    m = 0.5 * mu * l + M;
+    c = 2 * zeta * std::sqrt(k * m);
+    s.axial_damping = c * l / area;  // BA [Pa s]
+    PrismSpec p;
+    p.station = 1;
+    p.mass = M;
+    EnvironmentSpec vacuum;
+    vacuum.fluid_density = 0;
+    model = BuildCableModel({s}, {p}, vacuum, EndMotion::Fixed({0, 0}),
+                            EndMotion::Free({0, -l}), LinkLaw::kElastic);
+    const double stretch = m * kG / k;  // static [m]
+    y_eq = -(l + stretch);
+    d0 = 0.3 * stretch;
+  }
+  double Exact(double t) const {
+    const double w = std::sqrt(k / m), wd = w * std::sqrt(1 - zeta * zeta);
+    return y_eq - d0 * std::exp(-zeta * w * t) *
+                      (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t));
+  }
+  // Largest |y - exact| over five periods, with steps of a thousandth of a period.
+  double MaxError(IntegratorKind kind) const {
+    auto integrator = MakeIntegrator(kind, model);
+    CableState s;
+    s.t = 0;
+    s.x = Eigen::Matrix2Xd::Zero(2, 2);
+    s.x(1, 1) = y_eq - d0;
+    s.v = Eigen::Matrix2Xd::Zero(2, 2);
+    integrator->Initialize(model, s);
+    const double period = 2 * M_PI / std::sqrt(k / m), h = period / 1000;
+    double err = 0;
+    for (int n = 1; n <= 5000; ++n) {
+      integrator->Step(model, s, h);
+      err = std::max(err, std::abs(s.x(1, 1) - Exact(n * h)));
+      EXPECT_GT(integrator->tensions()[0], 0) << "the link must stay taut";
+    }
+    return err;
+  }
+};
+
+TEST(AxialDamping, LinkDecaysAsTheDampedOscillator) {
+  const DampedLink link;
+  EXPECT_NEAR(link.model.axial_damping[0], link.c, 1e-9 * link.c);
+  // Second-order schemes at w h = 2 pi / 1000: phase error ~ (w h)^2 / 12 = 3e-6 per radian,
+  // 1e-4 over the 31 radians of five periods, i.e. 1e-4 d0; 1e-3 d0 leaves a factor 10. Without
+  // the damping term the error would be the whole decay, d0 (1 - e^(-zeta w t)) ~ 0.8 d0.
+  for (IntegratorKind kind : {IntegratorKind::kImplicit, IntegratorKind::kExplicit}) {
+    const double err = link.MaxError(kind);
+    std::printf("[ damping ] %s: largest error %.2e of the displacement\n",
+                kind == IntegratorKind::kImplicit ? "implicit" : "explicit", err / link.d0);
+    EXPECT_LT(err, 1e-3 * link.d0);
+  }
+}
+
+// zeta -> c = 2 zeta sqrt(k m_a m_b / (m_a + m_b)), with each station's cable and prism mass.
+TEST(AxialDamping, RatioIsOfTheLinksOwnAxialMode) {
+  SectionSpec s;
+  s.length = 4.0;
+  s.segments = 2;
+  s.diameter = 0.02;
+  s.area = 2e-4;
+  s.mass_per_length = 3.0;
+  s.youngs_modulus = 5e9;
+  s.axial_damping_ratio = 0.7;
+  PrismSpec p;
+  p.station = 2;
+  p.mass = 5.0;
+  p.added_volume = {0.001, 0.002};  // the smaller axis's added mass counts: rho 1e-3
+  EnvironmentSpec sea;
+  sea.fluid_density = 1000;
+  const CableModel m = BuildCableModel({s}, {p}, sea, EndMotion::Fixed({0, 0}),
+                                       EndMotion::Free({0, -4}), LinkLaw::kElastic);
+  const double k = 2e-4 * 5e9 / 2.0;
+  const double m0 = 3.0, m1 = 6.0, m2 = 3.0 + 5.0 + 1.0;  // [kg]: half links, prism, added
+  EXPECT_NEAR(m.axial_damping[0], 1.4 * std::sqrt(k * m0 * m1 / (m0 + m1)), 1e-9);
+  EXPECT_NEAR(m.axial_damping[1], 1.4 * std::sqrt(k * m1 * m2 / (m1 + m2)), 1e-9);
+}
+
+// The explicit limit shrinks by sqrt(1 + 4 zeta^2) - 2 zeta for the bound's zeta, and the scheme
+// is stable there: a critically damped link run at 0.95 of it settles without overshoot, where
+// 0.95 of the undamped limit grows.
+TEST(AxialDamping, ExplicitLimitAccountsForTheDamping) {
+  DampedLink undamped, damped;
+  undamped.model.axial_damping.setZero();
+  const StabilityLimit a = ComputeStabilityLimit(undamped.model);
+  const StabilityLimit b = ComputeStabilityLimit(damped.model);
+  const double gamma = damped.c / damped.m, zeta = gamma / (2 * a.omega_max);
+  EXPECT_NEAR(b.time_step / a.time_step, std::sqrt(1 + 4 * zeta * zeta) - 2 * zeta, 1e-12);
+
+  damped.model.axial_damping[0] = 2 * std::sqrt(damped.k * damped.m);  // critical
+  const double limit = ComputeStabilityLimit(damped.model).time_step;
+  auto run = [&](double fraction) {
+    auto integrator = MakeIntegrator(IntegratorKind::kExplicit, damped.model);
+    CableState s;
+    s.t = 0;
+    s.x = Eigen::Matrix2Xd::Zero(2, 2);
+    s.x(1, 1) = damped.y_eq - damped.d0;  // small enough to stay taut: a linear oscillator
+    s.v = Eigen::Matrix2Xd::Zero(2, 2);
+    integrator->Initialize(damped.model, s);
+    double largest = 0;
+    for (int n = 0; n < 4000; ++n) {
+      integrator->Step(damped.model, s, fraction * limit);
+      largest = std::max(largest, std::abs(s.x(1, 1) - damped.y_eq));
+      if (largest > 10 * damped.d0) break;
+    }
+    return std::make_pair(largest, std::abs(s.x(1, 1) - damped.y_eq));
+  };
+  const auto below = run(0.95);
+  EXPECT_LE(below.first, 1.0001 * damped.d0);         // never further than it started
+  EXPECT_LT(below.second, 1e-6 * damped.d0);          // and settled
+  // The undamped limit is not safe with the damping: 0.95 of it (2 of the damped one) grows
+  // until the link goes slack.
+  EXPECT_GT(run(0.95 * a.time_step / limit).first, 1.5 * damped.d0);
+}
+
+}  // namespace
+}  // namespace cablefilm
