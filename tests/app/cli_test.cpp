@@ -13,22 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "text_support.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string ReadText(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  if (at == std::string::npos) throw std::logic_error("test bug: \"" + from + "\" not found");
-  return text.replace(at, from.size(), to);
-}
+using cablefilm_test::ReadText;
+using cablefilm_test::Replace;
 
 size_t Count(const std::string& text, const std::string& what) {
   size_t n = 0;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "text_support.h"
 #include "app/commands.h"
 #include "app/simulation_run.h"
 #include "core/error.h"
@@ -26,18 +27,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string ReadText(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  if (at == std::string::npos) throw std::logic_error("test bug: \"" + from + "\" not found");
-  return text.replace(at, from.size(), to);
-}
+using cablefilm_test::ReadText;
+using cablefilm_test::Replace;
 
 class RunCommandTest : public ::testing::Test {
  protected:
