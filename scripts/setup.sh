@@ -11,6 +11,7 @@ packages=(
 )
 if [ "${1:-}" = "--tests" ]; then
   packages+=(python3 chromium chromium-driver python3-selenium python3-websocket)
+  packages+=(python3-distributed)   # examples/dask_sweep.py, tested on a local Dask cluster
 fi
 missing=()
 for p in "${packages[@]}"; do

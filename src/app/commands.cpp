@@ -144,6 +144,9 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
   CableState state = initial;
   ProgressLine progress(std::string("simulating (") + ModelName(m) + ")",
                         grid.outputs * grid.interval, "s");
+  // The smallest tension of the rows (sampled as the peak is), its time and link.
+  double min_tension = std::numeric_limits<double>::quiet_NaN(), min_tension_t = 0;
+  int min_tension_link = -1;
   const auto t1 = std::chrono::steady_clock::now();
   try {
     run.completed =
@@ -153,6 +156,13 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
           Eigen::Index link = 0;
           const double tmax = T.maxCoeff(&link);  // the row's tension_max and link_max
           run.rows.Append(s.t, tmax, static_cast<int>(link));
+          Eigen::Index low = 0;
+          const double tmin = T.minCoeff(&low);
+          if (std::isnan(min_tension) || tmin < min_tension) {
+            min_tension = tmin;
+            min_tension_t = s.t;
+            min_tension_link = static_cast<int>(low);
+          }
           progress.Update(s.t);
           return g_signal == 0;
         }, &g_signal);
@@ -188,6 +198,9 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
   for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
   RunFacts facts{integrator->name(), grid.automatic ? grid.error_tolerance : 0.0, state.t, wall,
                  st, run.rows.peak(), run.rows.peak_t(), run.rows.peak_link(), run.rows.rows()};
+  facts.min_tension = min_tension;
+  facts.min_tension_t = min_tension_t;
+  facts.min_tension_link = min_tension_link;
   const std::string report_path = out_dir + "/run_report" + suffix + ".toml";
   WriteRunReport(report_path, facts, warnings);
   std::printf("wrote %s\n", EscapeText(report_path).c_str());

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/sweep_command.h"
 #include "app/version.h"
 #ifdef CABLEFILM_LIVE
 #include "app/live_command.h"
@@ -138,10 +139,10 @@ int ReportError(const std::string& scene, const cablefilm::Error& e) {
   return 1;
 }
 
-// The film options of run and compare into `o`.
-void AddRunOptions(CLI::App* cmd, cablefilm::RunOptions* o) {
-  Value(cmd, "--out", "DIR", "output folder (default output/<scene name>)",
-        [o](const std::string& v) { o->out_dir = v; });
+// The film options of run and compare (and sweep, for each case) into `o`.
+void AddRunOptions(CLI::App* cmd, cablefilm::RunOptions* o,
+                   const std::string& out_help = "output folder (default output/<scene name>)") {
+  Value(cmd, "--out", "DIR", out_help, [o](const std::string& v) { o->out_dir = v; });
   Flag(cmd, "--no-film", "result files only, no rendering", [o] { o->film = 0; });
   Flag(cmd, "--film", "make the film even if the scene says film = false", [o] { o->film = 1; });
   Flag(cmd, "--frames", "also keep every frame as PNG in DIR/frames/ (and make the film)", [o] {
@@ -167,6 +168,35 @@ void AddRunOptions(CLI::App* cmd, cablefilm::RunOptions* o) {
         [o](const std::string& v) { ParseTensionRange(v, &o->tension_min, &o->tension_max); });
   Value(cmd, "--shaders", "DIR", "GLSL shader folder (default: $CABLEFILM_SHADERS, else built in)",
         [o](const std::string& v) { o->shader_dir = ShaderDir(v); });
+}
+
+// sweep's own options; the run options come from AddRunOptions.
+void AddSweepOptions(CLI::App* cmd, cablefilm::SweepOptions* o) {
+  Value(cmd, "--set", "KEY=V1,V2,...",
+        "a scene key (e.g. environment.current, ends.end.period, material[0].youngs_modulus) "
+        "and its values (TOML: 0.5, \"explicit\" or explicit, [1, 2]); repeat for more keys: "
+        "the cases are their cross product",
+        [o](const std::string& v) {
+          try {
+            o->sets.push_back(cablefilm::ParseSetOption(v));
+          } catch (const cablefilm::Error& e) {
+            Bad(std::string("--set: ") + e.what());
+          }
+        })
+      ->trigger_on_parse();
+  Value(cmd, "--cases", "CASES.csv",
+        "a CSV of cases: a header naming the keys, a row of values per case (times the --set "
+        "values)",
+        [o](const std::string& v) { o->cases_csv = v; });
+  Value(cmd, "--jobs", "N", "cases at a time (default: one per core)", [o](const std::string& v) {
+    const double jobs = ParseNumber("--jobs", v, 1, 1024, false, " cases at a time");
+    if (jobs != std::floor(jobs))
+      Bad("--jobs: expected a whole number from 1 to 1024, got " + Shown(v));
+    o->jobs = static_cast<int>(jobs);
+  });
+  Flag(cmd, "--prepare", "write the case folders (scene.toml) and sweep.csv, run nothing",
+       [o] { o->prepare = true; });
+  AddRunOptions(cmd, &o->run, "sweep folder (default output/<scene name>_sweep)");
 }
 
 #ifdef CABLEFILM_LIVE
@@ -251,6 +281,9 @@ int main(int argc, char** argv) {
   CLI::App* compare = add_command("compare", "elastic and inextensible runs: the paper's Figure 1");
   AddRunOptions(compare, &run_options);
   CLI::App* check = add_command("check", "validate a scene, print stations, mass, time step");
+  cablefilm::SweepOptions sweep_options;
+  CLI::App* sweep = add_command("sweep", "run a scene over the cross product of values of its keys");
+  AddSweepOptions(sweep, &sweep_options);
 #ifdef CABLEFILM_LIVE
   cablefilm::LiveCommandOptions live_options;
   CLI::App* live =
@@ -266,6 +299,12 @@ int main(int argc, char** argv) {
   run->footer(outputs);
   compare->footer(outputs + "\nAlso equilibrium_inextensible.csv and timeseries_inextensible.csv.");
   check->footer("Refuses whatever run would, before anything is simulated.");
+  sweep->footer(
+      "Each case is 'cablefilm run' in a process of its own (the film off unless --film), in\n"
+      "DIR/case_NNN/ with its scene.toml; every case's scene is checked as 'check' would before\n"
+      "any runs. The summary: DIR/sweep.csv (case, folder, the values, status, message, peak\n"
+      "tension, its time and link, minimum tension, its time and link, snaps, peak_converged).\n"
+      "Ctrl-C stops the running cases and leaves the finished ones.");
   app.footer("'cablefilm COMMAND --help' shows the options of a command; 'cablefilm --version'\n"
              "the version.");
 
@@ -302,6 +341,8 @@ int main(int argc, char** argv) {
       Bad(!extra.empty() && extra[0] == '-'
               ? "unknown option " + Shown(extra) + " for " + command->get_name()
               : "more than one scene given");
+    if (command == sweep && sweep_options.sets.empty() && sweep_options.cases_csv.empty())
+      Bad("nothing to sweep: give --set KEY=V1,V2,... or --cases CASES.csv");
   } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
@@ -322,6 +363,7 @@ int main(int argc, char** argv) {
     if (command == run) return cablefilm::RunCommand(scene, run_options);
     if (command == compare) return cablefilm::CompareCommand(scene, run_options);
     if (command == check) return cablefilm::CheckCommand(scene);
+    if (command == sweep) return cablefilm::SweepCommand(scene, sweep_options);
     return UsageFailure("unknown command " + Shown(command->get_name()), "");
   } catch (const cablefilm::CancelledError& e) {  // a signal seen inside the work
     std::fflush(stdout);

@@ -82,6 +82,10 @@ void WriteRunReport(const std::string& path, const RunFacts& f,
   std::fprintf(out, "peak_tension = %.10g         # [N], the largest tension_max of the %ld rows\n",
                f.peak, f.rows);
   std::fprintf(out, "peak_time = %.10g            # [s]\npeak_link = %d\n", f.peak_t, f.peak_link);
+  std::fprintf(out, "min_tension = %.10g          # [N], the smallest tension of any link in the rows\n",
+               f.min_tension);
+  std::fprintf(out, "min_tension_time = %.10g     # [s]\nmin_tension_link = %d\n", f.min_tension_t,
+               f.min_tension_link);
   std::fprintf(out, "peak_converged = %s\n", warnings.empty() ? "true" : "false");
   std::fprintf(out, "warnings = [");
   for (size_t i = 0; i < warnings.size(); ++i)

@@ -19,6 +19,8 @@ struct RunFacts {
   double peak = 0, peak_t = 0;    // largest tension_max of the rows [N], when [s]
   int peak_link = 0;
   long rows = 0;
+  double min_tension = 0, min_tension_t = 0;  // smallest tension of the rows [N], when [s]
+  int min_tension_link = 0;
 };
 
 // Reasons the peak tension cannot be trusted (empty: none found): snaps within steps too long to
