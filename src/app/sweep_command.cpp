@@ -401,7 +401,8 @@ class Sweep {
     const auto t0 = std::chrono::steady_clock::now();
     std::size_t next = 0, done = 0, failed = 0;
     int running = 0;
-    bool stopping = false, status_shown = false;
+    bool stopping = false, status_shown = false, unsaved = false;
+    auto saved = t0;
     auto clear_status = [&] {
       if (status_shown) std::fprintf(stderr, "\r\033[K");
       status_shown = false;
@@ -465,7 +466,14 @@ class Sweep {
         std::fflush(stdout);
         changed = true;
       }
-      if (changed) WriteSummary();
+      // The summary as the cases end, at most once a second (a sweep of many short cases
+      // would otherwise rewrite it in full for each), and whole at the end.
+      unsaved = unsaved || changed;
+      if (unsaved && std::chrono::steady_clock::now() - saved >= std::chrono::seconds(1)) {
+        WriteSummary();
+        saved = std::chrono::steady_clock::now();
+        unsaved = false;
+      }
       if (running == 0 && (stopping || next >= n)) break;
       if (changed) continue;  // launch into the freed slots first
       show_status();
@@ -473,6 +481,7 @@ class Sweep {
       ::ppoll(nullptr, 0, &timeout, &waiting);  // wakes on SIGCHLD, SIGINT, SIGTERM
     }
     clear_status();
+    WriteSummary();
     g_children = nullptr;
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
