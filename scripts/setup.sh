@@ -7,11 +7,12 @@ packages=(
   libeigen3-dev libtomlplusplus-dev libcli11-dev libgtest-dev libbenchmark-dev
   libosmesa6-dev libpng-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libfreetype-dev libfontconfig-dev fonts-dejavu-core
-  libcivetweb-dev libturbojpeg0-dev nlohmann-json3-dev
+  libcivetweb-dev libturbojpeg0-dev nlohmann-json3-dev libnetcdf-dev
 )
 if [ "${1:-}" = "--tests" ]; then
   packages+=(python3 chromium chromium-driver python3-selenium python3-websocket)
   packages+=(python3-distributed)   # examples/dask_sweep.py, tested on a local Dask cluster
+  packages+=(python3-xarray python3-netcdf4)  # results.nc opened in xarray (netcdf_xarray_test)
 fi
 missing=()
 for p in "${packages[@]}"; do

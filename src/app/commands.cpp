@@ -7,15 +7,19 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "app/film_pass.h"
 #include "app/max_tension_log.h"
+#include "app/netcdf_results.h"
 #include "app/progress.h"
 #include "app/result_files.h"
 #include "app/run_extent.h"
 #include "app/run_report.h"
 #include "app/simulation_run.h"
+#include "app/version.h"
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
@@ -95,10 +99,27 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
                 100.0 * ((b - a).norm() / m.total_length() - 1.0));
 }
 
+// results.nc's attributes: the scene (its path and text) and the program's version.
+NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const CableModel& m) {
+  NetcdfResultsInfo info;
+  info.title = scene.title;
+  info.scene_file = EscapeText(scene.path);
+  std::ifstream in(scene.path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  info.scene = text.str();
+  info.version = kVersion;
+  if (*kGitDescribe) info.version += std::string(" (git ") + kGitDescribe + ")";
+  info.model = ModelName(m);
+  info.initial_state = scene.initial == InitialStateKind::kEquilibrium ? "equilibrium" : "straight";
+  return info;
+}
+
 // One model of a scene simulated into result files: the equilibrium, the time series (with
-// `suffix` before .csv), the largest tension of every row (for the pictures) and what the film
-// needs. A run cut short (completed false) has committed its rows under the .partial name;
-// `failure` then holds a blow-up's message (empty: stopped by a signal).
+// `suffix` before .csv), every station and link (results<suffix>.nc), the largest tension of
+// every row (for the pictures) and what the film needs. A run cut short (completed false) has
+// committed its rows under the .partial names; `failure` then holds a blow-up's message
+// (empty: stopped by a signal).
 struct ModelRun {
   CableModel model;
   TimeGrid grid;
@@ -141,6 +162,9 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
   const std::string series_path = out_dir + "/timeseries" + suffix + ".csv";
   const std::string partial_path = out_dir + "/timeseries" + suffix + ".partial.csv";
   TimeseriesWriter series(series_path);
+  const std::string nc_path = out_dir + "/results" + suffix + ".nc";
+  const std::string nc_partial_path = out_dir + "/results" + suffix + ".partial.nc";
+  NetcdfResultsWriter links(nc_path, MakeNetcdfInfo(scene, m), m, initial, run.initial_tension);
   CableState state = initial;
   ProgressLine progress(std::string("simulating (") + ModelName(m) + ")",
                         grid.outputs * grid.interval, "s");
@@ -152,6 +176,7 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
     run.completed =
         Simulate(m, *integrator, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
           series.Append(m, s, T);
+          links.Append(s, T);
           run.extent.Add(s, T);
           Eigen::Index link = 0;
           const double tmax = T.maxCoeff(&link);  // the row's tension_max and link_max
@@ -169,9 +194,10 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
   } catch (const BlowUpError& e) {
     progress.Finish();
     series.CommitPartial(partial_path);
+    links.CommitPartial(nc_partial_path);
     run.failure = std::string(e.what()) + " (" + integrator->name() + ", time step " +
                   std::to_string(grid.dt) + " s); the rows up to then are in " +
-                  EscapeText(partial_path);
+                  EscapeText(partial_path) + " and " + EscapeText(nc_partial_path);
     return run;
   }
   progress.Finish();
@@ -179,11 +205,13 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   if (!run.completed) {
     series.CommitPartial(partial_path);
-    std::fprintf(stderr, "interrupted at t = %.4g s; rows so far in %s\n", state.t,
-                 EscapeText(partial_path).c_str());
+    links.CommitPartial(nc_partial_path);
+    std::fprintf(stderr, "interrupted at t = %.4g s; rows so far in %s and %s\n", state.t,
+                 EscapeText(partial_path).c_str(), EscapeText(nc_partial_path).c_str());
     return run;
   }
   series.Commit();
+  links.Commit();
   const IntegratorStats st = integrator->stats();
   std::printf("simulated %.6g s in %.3g s of computer time: %s, %.3g station-steps/s\n", state.t,
               wall, DescribeSteps(st).c_str(),
@@ -194,6 +222,7 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
               run.rows.peak(), run.rows.peak_t(), run.rows.peak_link(), run.rows.rows(),
               grid.interval);
   std::printf("wrote %s\n", EscapeText(series_path).c_str());
+  std::printf("wrote %s\n", EscapeText(nc_path).c_str());
   const std::vector<std::string> warnings = TrustWarnings(m, st);
   for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
   RunFacts facts{integrator->name(), grid.automatic ? grid.error_tolerance : 0.0, state.t, wall,

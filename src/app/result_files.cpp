@@ -28,7 +28,8 @@ void RemoveEarlierResults(const std::string& out_dir) {
         "timeseries.partial.csv", "timeseries_inextensible.csv",
         "timeseries_inextensible.partial.csv", "film.mp4", "film.partial.mp4",
         "max_tension.png", "max_tension.partial.png", "run_report.toml",
-        "run_report_inextensible.toml"})
+        "run_report_inextensible.toml", "results.nc", "results.partial.nc",
+        "results_inextensible.nc", "results_inextensible.partial.nc"})
     stale.push_back(fs::path(out_dir) / name);
   std::error_code ec;
   const fs::path frames = fs::path(out_dir) / "frames";

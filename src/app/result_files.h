@@ -16,8 +16,9 @@ void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const Cab
                          const Eigen::VectorXd& tension);
 
 // Removes the result files an earlier run may have left in `out_dir` (only the names a run
-// writes: equilibrium*.csv, timeseries*.csv, film[.partial].mp4, max_tension[.partial].png,
-// frames/frame_*.png), so that stale results never sit beside new ones. Throws Error.
+// writes: equilibrium*.csv, timeseries*.csv, results*[.partial].nc, film[.partial].mp4,
+// max_tension[.partial].png, frames/frame_*.png), so that stale results never sit beside new
+// ones. Throws Error.
 void RemoveEarlierResults(const std::string& out_dir);
 
 // One row of timeseries.csv, and its header line (shared with the live view's /timeseries.csv).

@@ -24,7 +24,8 @@ import sys
 import time
 
 RESULTS = ['equilibrium.csv', 'timeseries.csv', 'timeseries.partial.csv', 'film.mp4',
-           'film.partial.mp4', 'max_tension.png', 'max_tension.partial.png']
+           'film.partial.mp4', 'max_tension.png', 'max_tension.partial.png', 'results.nc',
+           'results.partial.nc']
 STALE = b'stale result of an earlier run'
 
 
@@ -85,6 +86,23 @@ def png_ok(path):
     return data[:8] == b'\x89PNG\r\n\x1a\n' and data.rstrip(b'\x00').endswith(b'IEND\xaeB`\x82')
 
 
+def nc_rows(path):
+    """Rows (the time dimension) of a results file; raises ValueError if it does not open. Without
+    Python's netCDF4 module only its HDF5 signature is checked (None)."""
+    with open(path, 'rb') as f:
+        if f.read(8) != b'\x89HDF\r\n\x1a\n':
+            raise ValueError('no HDF5 signature')
+    try:
+        import netCDF4
+    except ImportError:
+        return None
+    try:
+        with netCDF4.Dataset(path) as ds:
+            return len(ds.dimensions['time'])
+    except (OSError, KeyError) as e:
+        raise ValueError(str(e))
+
+
 def check_folder(folder, expected_rows, expected_frames, killed):
     problems = []
     names = set(os.listdir(folder))
@@ -123,6 +141,16 @@ def check_folder(folder, expected_rows, expected_frames, killed):
                 continue
             if n > expected_frames:
                 problems.append(f'film.partial.mp4 has {n} frames, more than the film')
+        elif name in ('results.nc', 'results.partial.nc'):
+            try:
+                n = nc_rows(path)
+            except ValueError as e:
+                problems.append(f'{name} does not open: {e}')
+                continue
+            if name == 'results.nc' and n is not None and n != expected_rows:
+                problems.append(f'results.nc has {n} rows, not {expected_rows}')
+            if name == 'results.partial.nc' and n is not None and n > expected_rows:
+                problems.append(f'results.partial.nc has {n} rows, more than the run')
         elif name.endswith('.png') and not png_ok(path):
             problems.append(f'{name} is not a whole PNG')
     for name in names:
@@ -131,6 +159,8 @@ def check_folder(folder, expected_rows, expected_frames, killed):
                 problems.append(f'temporary file {name} left behind')
     if 'film.mp4' in names and 'film.partial.mp4' in names:
         problems.append('both film.mp4 and film.partial.mp4')
+    if 'results.nc' in names and 'results.partial.nc' in names:
+        problems.append('both results.nc and results.partial.nc')
     return problems
 
 
@@ -162,7 +192,7 @@ def main():
     whole = time.time() - t0
     results = []
     problems = check_folder(folder, expected, expected, False) if done.returncode == 0 else [done.stderr]
-    for name in ('film.mp4', 'timeseries.csv', 'max_tension.png', 'equilibrium.csv'):
+    for name in ('film.mp4', 'timeseries.csv', 'max_tension.png', 'equilibrium.csv', 'results.nc'):
         if not os.path.exists(os.path.join(folder, name)):
             problems.append(f'a whole run wrote no {name}')
     results.append(('whole run', problems))

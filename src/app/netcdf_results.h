@@ -1,0 +1,102 @@
+#pragma once
+// results.nc: every station and every link over time, NetCDF-4 following the CF-1.8
+// conventions, streamed to disk as the rows come (bounded memory however long the run), written
+// whole or not at all like the CSV files (a temporary name beside it, then a rename).
+//
+//   dimensions  time (unlimited), station (s + 1), link (s: link j+1/2 is link j)
+//   time(time) [s]; station(station), link(link): the indices j
+//   s(station), s_link(link) [m]: unstretched arc length of the stations, of the link midpoints
+//   x(time, station), y(time, station) [m]; tension(time, link) [N]
+//   x_start, y_start, x_end, y_end (time) [m]: the ends' motion
+//   x_equilibrium, y_equilibrium (station) [m], tension_equilibrium (link) [N]: the initial state
+//
+// Time-dependent variables are deflated (level 4, with the shuffle filter) and chunked by time:
+// a chunk is up to kChunkRows rows of all stations (fewer for a cable whose row is large). The
+// rows are gathered a chunk at a time and handed to a thread of the writer's own, which alone
+// calls the library (deflating doubles costs about as much as simulating a 60-link cable, and
+// the other core is idle during the simulation); at most kQueuedChunks wait for it, so memory
+// stays a few chunks however long the run, and a run that outpaces the disk waits for it.
+#include <Eigen/Core>
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/cable_model.h"
+#include "core/cable_state.h"
+
+namespace cablefilm {
+
+// The global attributes beside Conventions = "CF-1.8".
+struct NetcdfResultsInfo {
+  std::string title;          // the scene's title
+  std::string scene_file;     // its path, as given
+  std::string scene;          // its text
+  std::string version;        // the program's: "0.1 (git 1a2b3c4)"
+  std::string model;          // "elastic" or "inextensible"
+  std::string initial_state;  // "equilibrium" or "straight"
+};
+
+class NetcdfResultsWriter {
+ public:
+  static constexpr int kChunkRows = 64;            // rows of a chunk, at most
+  static constexpr long kChunkBytes = 4L << 20;    // bytes of a chunk of x, at most (about)
+  static constexpr size_t kQueuedChunks = 2;       // waiting for the writer's thread, at most
+
+  // Creates `path`'s temporary file and writes what does not change over time. Throws Error.
+  NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
+                      const CableModel& m, const CableState& initial,
+                      const Eigen::VectorXd& initial_tension);
+  ~NetcdfResultsWriter();  // uncommitted: the rows not yet written are dropped, the temporary
+                           // file removed
+  NetcdfResultsWriter(const NetcdfResultsWriter&) = delete;
+  NetcdfResultsWriter& operator=(const NetcdfResultsWriter&) = delete;
+
+  // One output row. Throws Error on a write error (of this row or of an earlier chunk).
+  void Append(const CableState& state, const Eigen::VectorXd& tension);
+  // Writes the rows still waiting, closes and renames; throws Error on a write error.
+  void Commit();                                // the complete file, under its name
+  void CommitPartial(const std::string& path);  // an incomplete run, under another name
+
+  long rows() const { return rows_; }
+  int chunk_rows() const { return chunk_rows_; }
+
+ private:
+  // Up to a chunk of rows, row-major, from row `first`.
+  struct Block {
+    long first = 0;
+    int rows = 0;
+    std::vector<double> time, x, y, tension, ends[4];  // ends: x_start, y_start, x_end, y_end
+  };
+  void Define(const NetcdfResultsInfo& info, const CableModel& m, const CableState& initial,
+              const Eigen::VectorXd& initial_tension);  // the file and what is fixed
+  void StartWriter();
+  std::unique_ptr<Block> NewBlock();  // a free one, or a new one
+  void Hand(std::unique_ptr<Block> block);  // to the writer's thread; throws its error
+  void WriterLoop();                        // the thread: writes the blocks handed to it
+  void Write(const Block& b);               // throws Error
+  void StopWriter(bool drop);               // joins the thread (dropping what waits)
+  void Close();                             // the rest written, the file closed; throws Error
+
+  std::string path_, temp_path_;
+  int ncid_ = -1;
+  int stations_ = 0, links_ = 0, chunk_rows_ = 1;
+  int var_time_ = -1, var_x_ = -1, var_y_ = -1, var_tension_ = -1;
+  int var_end_[4] = {-1, -1, -1, -1};
+  long rows_ = 0;
+  std::unique_ptr<Block> filling_;  // the rows not yet handed over
+  bool committed_ = false;
+
+  std::mutex mutex_;                // guards what follows
+  std::condition_variable changed_;
+  std::deque<std::unique_ptr<Block>> queue_;  // handed over, not yet written
+  std::vector<std::unique_ptr<Block>> free_;
+  bool stopping_ = false;
+  std::string error_;               // the writer's first error; nothing is written after it
+  std::thread writer_;
+};
+
+}  // namespace cablefilm

@@ -1,0 +1,382 @@
+// results.nc read back with the netCDF C API (issue 12, part 3): its dimensions, units and
+// attributes, its compression and chunking, and its values against what the run computed and
+// against timeseries.csv and equilibrium.csv; the .partial file of a blown-up run; the names of
+// compare and the removal of earlier results.
+#include <gtest/gtest.h>
+#include <netcdf.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "app/commands.h"
+#include "app/simulation_run.h"
+#include "core/stability.h"
+#include "scene/build_model.h"
+#include "scene/scene_loader.h"
+
+namespace cablefilm {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string ReadText(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  if (at == std::string::npos) throw std::logic_error("test bug: \"" + from + "\" not found");
+  return text.replace(at, from.size(), to);
+}
+
+// The cells of a CSV file, header row first.
+std::vector<std::vector<std::string>> ReadCsv(const fs::path& p) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(ReadText(p));
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::string cell;
+    std::istringstream l(line);
+    while (std::getline(l, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.push_back("");
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// A number as the CSV files print it.
+std::string Format(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+// An open results file, closed at the end of the scope; every call checked.
+class NcFile {
+ public:
+  explicit NcFile(const fs::path& p) {
+    const int status = nc_open(p.c_str(), NC_NOWRITE, &id_);
+    if (status != NC_NOERR) throw std::runtime_error(p.string() + ": " + nc_strerror(status));
+  }
+  ~NcFile() { nc_close(id_); }
+  int id() const { return id_; }
+  size_t Dim(const char* name) const {
+    int dim = -1;
+    size_t n = 0;
+    Ok(nc_inq_dimid(id_, name, &dim), name);
+    Ok(nc_inq_dimlen(id_, dim, &n), name);
+    return n;
+  }
+  int Var(const char* name) const {
+    int var = -1;
+    Ok(nc_inq_varid(id_, name, &var), name);
+    return var;
+  }
+  std::string Attr(int var, const char* name) const {
+    size_t n = 0;
+    if (nc_inq_attlen(id_, var, name, &n) != NC_NOERR) return "(no " + std::string(name) + ")";
+    std::string text(n, '\0');
+    Ok(nc_get_att_text(id_, var, name, text.data()), name);
+    return text;
+  }
+  std::string Attr(const char* var, const char* name) const { return Attr(Var(var), name); }
+  std::vector<double> Values(const char* name) const {
+    const int var = Var(name);
+    int ndims = 0;
+    Ok(nc_inq_varndims(id_, var, &ndims), name);
+    std::vector<int> dims(static_cast<size_t>(ndims));
+    Ok(nc_inq_vardimid(id_, var, dims.data()), name);
+    size_t n = 1;
+    for (int d : dims) {
+      size_t len = 0;
+      Ok(nc_inq_dimlen(id_, d, &len), name);
+      n *= len;
+    }
+    std::vector<double> v(n);
+    Ok(nc_get_var_double(id_, var, v.data()), name);
+    return v;
+  }
+  // The dimension names of a variable, comma separated.
+  std::string Dims(const char* name) const {
+    const int var = Var(name);
+    int ndims = 0;
+    Ok(nc_inq_varndims(id_, var, &ndims), name);
+    std::vector<int> dims(static_cast<size_t>(ndims));
+    Ok(nc_inq_vardimid(id_, var, dims.data()), name);
+    std::string out;
+    for (int d : dims) {
+      char dim_name[NC_MAX_NAME + 1];
+      Ok(nc_inq_dimname(id_, d, dim_name), name);
+      out += (out.empty() ? "" : ",") + std::string(dim_name);
+    }
+    return out;
+  }
+
+ private:
+  static void Ok(int status, const char* what) {
+    if (status != NC_NOERR) throw std::runtime_error(std::string(what) + ": " + nc_strerror(status));
+  }
+  int id_ = -1;
+};
+
+class NetcdfResultsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("cablefilm_netcdf_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  // Case P63 cut to `duration` seconds, without its film.
+  std::string ShortP63(const std::string& duration) {
+    const std::string text = ReadText(fs::path(CABLEFILM_SOURCE_DIR) / "scenes/polachek1963.toml");
+    const fs::path p = dir_ / "p63_short.toml";
+    std::ofstream(p, std::ios::binary)
+        << Replace(Replace(text, "duration = 60.0", "duration = " + duration), "film = true",
+                   "film = false");
+    return p.string();
+  }
+  // No temporary file left in the output folder.
+  void ExpectNoTemporaryFiles(const fs::path& out) {
+    for (const auto& e : fs::directory_iterator(out))
+      EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  }
+  fs::path dir_;
+};
+
+TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
+  const std::string scene = ShortP63("5.0");
+  RunOptions opt;
+  opt.out_dir = (dir_ / "out").string();
+  ASSERT_EQ(RunCommand(scene, opt), 0);
+  const fs::path out = dir_ / "out";
+  ASSERT_TRUE(fs::exists(out / "results.nc"));
+  EXPECT_FALSE(fs::exists(out / "results.partial.nc"));
+  ExpectNoTemporaryFiles(out);
+
+  const auto csv = ReadCsv(out / "timeseries.csv");
+  ASSERT_EQ(csv[0], (std::vector<std::string>{"t", "x_end", "y_end", "tension_start",
+                                              "tension_end", "tension_max", "link_max"}));
+  const size_t rows = csv.size() - 1;
+  ASSERT_EQ(rows, 151u);  // 5 s at a row per film frame, 30 frames/s, and t = 0
+
+  NcFile nc(out / "results.nc");
+  // Dimensions: time unlimited.
+  EXPECT_EQ(nc.Dim("time"), rows);
+  EXPECT_EQ(nc.Dim("station"), 61u);
+  EXPECT_EQ(nc.Dim("link"), 60u);
+  int unlimited = -1, time_dim = -1, format = 0;
+  ASSERT_EQ(nc_inq_unlimdim(nc.id(), &unlimited), NC_NOERR);
+  ASSERT_EQ(nc_inq_dimid(nc.id(), "time", &time_dim), NC_NOERR);
+  EXPECT_EQ(unlimited, time_dim);
+  ASSERT_EQ(nc_inq_format(nc.id(), &format), NC_NOERR);
+  EXPECT_EQ(format, NC_FORMAT_NETCDF4);
+  EXPECT_EQ(nc.Dims("x"), "time,station");
+  EXPECT_EQ(nc.Dims("y"), "time,station");
+  EXPECT_EQ(nc.Dims("tension"), "time,link");
+  EXPECT_EQ(nc.Dims("x_end"), "time");
+  EXPECT_EQ(nc.Dims("s"), "station");
+  EXPECT_EQ(nc.Dims("s_link"), "link");
+  EXPECT_EQ(nc.Dims("tension_equilibrium"), "link");
+
+  // Units, and a long name on every variable.
+  const std::pair<const char*, const char*> units[] = {
+      {"time", "s"},          {"x", "m"},          {"y", "m"},
+      {"tension", "N"},       {"s", "m"},          {"s_link", "m"},
+      {"x_start", "m"},       {"y_start", "m"},    {"x_end", "m"},
+      {"y_end", "m"},         {"x_equilibrium", "m"}, {"y_equilibrium", "m"},
+      {"tension_equilibrium", "N"}, {"station", "1"}, {"link", "1"}};
+  for (const auto& [var, unit] : units) EXPECT_EQ(nc.Attr(var, "units"), unit) << var;
+  int nvars = 0;
+  ASSERT_EQ(nc_inq_nvars(nc.id(), &nvars), NC_NOERR);
+  EXPECT_EQ(nvars, static_cast<int>(std::size(units)));
+  for (int v = 0; v < nvars; ++v) {
+    char name[NC_MAX_NAME + 1];
+    ASSERT_EQ(nc_inq_varname(nc.id(), v, name), NC_NOERR);
+    EXPECT_GT(nc.Attr(v, "long_name").size(), 4u) << name;
+    EXPECT_EQ(nc.Attr(v, "long_name").find("(no "), std::string::npos) << name;
+  }
+
+  // Global attributes: CF, the scene and the program.
+  EXPECT_EQ(nc.Attr(NC_GLOBAL, "Conventions"), "CF-1.8");
+  EXPECT_EQ(nc.Attr(NC_GLOBAL, "title"), LoadScene(scene).title);
+  EXPECT_EQ(nc.Attr(NC_GLOBAL, "scene"), ReadText(scene));
+  EXPECT_EQ(nc.Attr(NC_GLOBAL, "scene_file"), scene);
+  EXPECT_EQ(nc.Attr(NC_GLOBAL, "cablefilm_version").rfind(CABLEFILM_VERSION, 0), 0u)
+      << nc.Attr(NC_GLOBAL, "cablefilm_version");
+  EXPECT_EQ(nc.Attr(NC_GLOBAL, "source").rfind("cablefilm " CABLEFILM_VERSION, 0), 0u);
+  EXPECT_EQ(nc.Attr(NC_GLOBAL, "model"), "elastic");
+  EXPECT_EQ(nc.Attr(NC_GLOBAL, "initial_state"), "equilibrium");
+
+  // Compressed (deflate 4, shuffle), chunked by time: many rows of all stations a chunk.
+  for (const char* var : {"x", "y", "tension"}) {
+    int shuffle = 0, deflate = 0, level = 0, storage = -1;
+    ASSERT_EQ(nc_inq_var_deflate(nc.id(), nc.Var(var), &shuffle, &deflate, &level), NC_NOERR);
+    EXPECT_EQ(shuffle, 1) << var;
+    EXPECT_EQ(deflate, 1) << var;
+    EXPECT_EQ(level, 4) << var;
+    size_t chunks[2] = {0, 0};
+    ASSERT_EQ(nc_inq_var_chunking(nc.id(), nc.Var(var), &storage, chunks), NC_NOERR);
+    EXPECT_EQ(storage, NC_CHUNKED) << var;
+    EXPECT_GE(chunks[0], 16u) << var;
+    EXPECT_EQ(chunks[1], std::string(var) == "tension" ? 60u : 61u) << var;
+  }
+
+  const std::vector<double> t = nc.Values("time"), x = nc.Values("x"), y = nc.Values("y"),
+                            tension = nc.Values("tension"), x_end = nc.Values("x_end"),
+                            y_end = nc.Values("y_end"), x_start = nc.Values("x_start"),
+                            y_start = nc.Values("y_start");
+  // Every row against timeseries.csv, as the CSV prints it: tension_max is the largest
+  // tension of the row, link_max its link, tension_start and tension_end the first and the
+  // last link; x_end, y_end the end's position, which is the last station's.
+  for (size_t r = 0; r < rows; ++r) {
+    const auto& c = csv[r + 1];
+    ASSERT_EQ(c.size(), 7u);
+    const double* row = tension.data() + r * 60;
+    const auto max_at = std::max_element(row, row + 60);
+    EXPECT_EQ(Format("%.10g", t[r]), c[0]) << "row " << r;
+    EXPECT_EQ(Format("%.12g", x_end[r]), c[1]) << "row " << r;
+    EXPECT_EQ(Format("%.12g", y_end[r]), c[2]) << "row " << r;
+    EXPECT_EQ(Format("%.10g", row[0]), c[3]) << "row " << r;
+    EXPECT_EQ(Format("%.10g", row[59]), c[4]) << "row " << r;
+    EXPECT_EQ(Format("%.10g", *max_at), c[5]) << "row " << r;
+    EXPECT_EQ(std::to_string(max_at - row), c[6]) << "row " << r;
+    EXPECT_EQ(x_end[r], x[r * 61 + 60]);
+    EXPECT_EQ(y_end[r], y[r * 61 + 60]);
+    EXPECT_EQ(x_start[r], x[r * 61]);
+    EXPECT_EQ(y_start[r], y[r * 61]);
+    EXPECT_EQ(x_start[r], 0.0);  // the anchor
+  }
+
+  // One time, bit for bit what the run computed (the same simulation in this process).
+  const size_t at_row = 100;  // t = 3.333 s
+  const SceneDef def = LoadScene(scene);
+  const CableModel m = BuildModel(def);
+  const TimeGrid grid = ChooseTimeGrid(m, def.simulation, def.output.interval);
+  CableState state = MakeInitialState(def, m, nullptr);
+  auto integrator = MakeIntegrator(m, grid);
+  size_t row = 0;
+  Eigen::VectorXd computed;
+  Eigen::Matrix2Xd where;
+  Simulate(m, *integrator, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
+    if (row++ != at_row) return true;
+    computed = T;
+    where = s.x;
+    return false;
+  });
+  ASSERT_EQ(computed.size(), 60);
+  EXPECT_EQ(tension[at_row * 60 + 18], computed[18]);  // the link below the weight
+  for (int j = 0; j < 60; ++j) EXPECT_EQ(tension[at_row * 60 + j], computed[j]) << "link " << j;
+  for (int j = 0; j < 61; ++j) {
+    EXPECT_EQ(x[at_row * 61 + j], where(0, j)) << "station " << j;
+    EXPECT_EQ(y[at_row * 61 + j], where(1, j)) << "station " << j;
+  }
+
+  // The arc lengths and the equilibrium against equilibrium.csv.
+  const auto eq = ReadCsv(out / "equilibrium.csv");
+  ASSERT_EQ(eq.size(), 62u);
+  const std::vector<double> s = nc.Values("s"), s_link = nc.Values("s_link"),
+                            x_eq = nc.Values("x_equilibrium"), y_eq = nc.Values("y_equilibrium"),
+                            t_eq = nc.Values("tension_equilibrium"),
+                            station = nc.Values("station"), link = nc.Values("link");
+  for (int j = 0; j <= 60; ++j) {
+    const auto& c = eq[static_cast<size_t>(j) + 1];
+    EXPECT_EQ(station[static_cast<size_t>(j)], j);
+    EXPECT_EQ(Format("%.10g", s[static_cast<size_t>(j)]), c[1]) << "station " << j;
+    EXPECT_EQ(Format("%.12g", x_eq[static_cast<size_t>(j)]), c[2]) << "station " << j;
+    EXPECT_EQ(Format("%.12g", y_eq[static_cast<size_t>(j)]), c[3]) << "station " << j;
+    if (j == 60) break;
+    EXPECT_EQ(link[static_cast<size_t>(j)], j);
+    EXPECT_EQ(Format("%.10g", t_eq[static_cast<size_t>(j)]), c[4]) << "link " << j;
+    EXPECT_DOUBLE_EQ(s_link[static_cast<size_t>(j)], 0.5 * (s[static_cast<size_t>(j)] +
+                                                             s[static_cast<size_t>(j) + 1]));
+  }
+  // The first row is the initial state.
+  for (int j = 0; j <= 60; ++j) EXPECT_EQ(x[static_cast<size_t>(j)], x_eq[static_cast<size_t>(j)]);
+  EXPECT_DOUBLE_EQ(s_link[0], 45.72 / 30 / 2);
+}
+
+TEST_F(NetcdfResultsTest, BlownUpRunLeavesAPartialFileThatOpens) {
+  // catenary.toml from the straight chord at 3x the explicit stability limit, a row a step (as
+  // in run_command_test): it blows up within a few dozen rows.
+  const std::string base_text = ReadText(fs::path(CABLEFILM_SOURCE_DIR) / "scenes/catenary.toml");
+  const fs::path probe = dir_ / "probe.toml";
+  std::ofstream(probe, std::ios::binary) << base_text;
+  const double limit = ComputeStabilityLimit(BuildModel(LoadScene(probe.string()))).time_step;
+  const std::string dt = Format("%.17g", 3.0 * limit);
+  std::string text = Replace(base_text, "time_step = \"auto\"",
+                             "integrator = \"explicit\"\ntime_step = " + dt);
+  text = Replace(text, "interval = 0.05", "interval = " + dt);
+  const fs::path scene = dir_ / "blowup.toml";
+  std::ofstream(scene, std::ios::binary) << text;
+  RunOptions opt;
+  opt.out_dir = (dir_ / "out").string();
+  opt.film = 0;
+  std::string message;
+  try {
+    RunCommand(scene.string(), opt);
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  ASSERT_NE(message.find("results.partial.nc"), std::string::npos) << message;
+  const fs::path out = dir_ / "out";
+  EXPECT_FALSE(fs::exists(out / "results.nc"));
+  ASSERT_TRUE(fs::exists(out / "results.partial.nc"));
+  ExpectNoTemporaryFiles(out);
+  const auto csv = ReadCsv(out / "timeseries.partial.csv");
+  NcFile nc(out / "results.partial.nc");
+  EXPECT_EQ(nc.Dim("time"), csv.size() - 1);
+  EXPECT_GT(nc.Dim("time"), 1u);
+  const std::vector<double> tension = nc.Values("tension");
+  const size_t links = nc.Dim("link");
+  for (size_t r = 0; r + 1 < csv.size(); ++r)
+    EXPECT_EQ(Format("%.10g", *std::max_element(tension.begin() + r * links,
+                                                tension.begin() + (r + 1) * links)),
+              csv[r + 1][5]);
+}
+
+TEST_F(NetcdfResultsTest, CompareWritesBothModelsAndEarlierResultsGo) {
+  const std::string scene = ShortP63("1.0");
+  const fs::path out = dir_ / "out";
+  fs::create_directories(out);
+  for (const char* stale : {"results.nc", "results.partial.nc", "results_inextensible.partial.nc"})
+    std::ofstream(out / stale) << "stale result of an earlier run";
+  RunOptions opt;
+  opt.out_dir = out.string();
+  ASSERT_EQ(CompareCommand(scene, opt), 0);
+  EXPECT_FALSE(fs::exists(out / "results.partial.nc"));
+  EXPECT_FALSE(fs::exists(out / "results_inextensible.partial.nc"));
+  ExpectNoTemporaryFiles(out);
+  for (const auto& [file, model, series] :
+       {std::tuple{"results.nc", "elastic", "timeseries.csv"},
+        std::tuple{"results_inextensible.nc", "inextensible", "timeseries_inextensible.csv"}}) {
+    NcFile nc(out / file);
+    EXPECT_EQ(nc.Attr(NC_GLOBAL, "model"), model);
+    const auto csv = ReadCsv(out / series);
+    ASSERT_EQ(nc.Dim("time"), csv.size() - 1) << file;
+    const std::vector<double> tension = nc.Values("tension");
+    for (size_t r = 0; r + 1 < csv.size(); ++r)
+      EXPECT_EQ(Format("%.10g", *std::max_element(tension.begin() + r * 60,
+                                                  tension.begin() + (r + 1) * 60)),
+                csv[r + 1][5])
+          << file << " row " << r;
+  }
+}
+
+}  // namespace
+}  // namespace cablefilm
