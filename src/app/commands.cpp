@@ -1,5 +1,6 @@
 #include "app/commands.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -54,6 +55,36 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
   std::printf("  mass %.6g kg (cable %.6g kg, %zu weight(s) %.6g kg), net weight in fluid %.6g N\n",
               cable_mass + weights, cable_mass, scene.weights.size(), weights,
               m.net_weight.sum());
+  if (!m.current_profile.empty()) {
+    const CurrentProfile& p = m.current_profile;
+    const auto [lo, hi] = std::minmax_element(p.speed.begin(), p.speed.end());
+    std::printf("  current profile: %zu point(s) from y = %.6g to %.6g m, %.4g to %.4g m/s along "
+                "+x, linear between them, constant beyond\n",
+                p.y.size(), p.y.front(), p.y.back(), m.current + *lo, m.current + *hi);
+  }
+  if (m.seabed.present) {
+    // What a station resting on it sinks: its net weight over its share of the bed's stiffness.
+    double sink = 0, damping_lo = 1e300, damping_hi = 0;
+    int deepest = 0;
+    for (int j = m.first_free(); j <= m.last_free(); ++j) {
+      const double share = m.seabed_stiffness[j] / m.seabed.stiffness;  // [m of line]
+      damping_lo = std::min(damping_lo, m.seabed_damping[j] / share);
+      damping_hi = std::max(damping_hi, m.seabed_damping[j] / share);
+      if (m.net_weight[j] / m.seabed_stiffness[j] > sink) {
+        sink = m.net_weight[j] / m.seabed_stiffness[j];
+        deepest = j;
+      }
+    }
+    std::printf("  seabed at y = %.6g m: stiffness %.4g N/m per m of line, damping %.4g",
+                m.seabed.y, m.seabed.stiffness, damping_lo);
+    if (damping_hi > damping_lo * (1 + 1e-9)) std::printf(" to %.4g", damping_hi);
+    std::printf(" N s/m per m (%s), friction %.3g", m.seabed.damping < 0 ? "critical" : "given",
+                m.seabed.friction);
+    if (m.seabed.friction > 0)
+      std::printf(" (regularised over %.3g m/s)", m.seabed.friction_velocity);
+    std::printf("; a line resting on it sinks at most %.3g mm (station %d)\n", 1e3 * sink,
+                deepest);
+  }
   const long steps = grid.outputs * grid.steps_per_output;
   if (m.law == LinkLaw::kElastic)
     std::printf("  stable time step of the explicit scheme %.4g s (stiffest at station %d)\n",

@@ -1,11 +1,59 @@
 #include "core/cable_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "core/error.h"
 
 namespace cablefilm {
+namespace {
+
+// The piece [y_i, y_{i+1}) holding `elevation`: i in 0..n-2, or -1 below the first point and
+// n-1 at or above the last.
+int Piece(const std::vector<double>& y, double elevation) {
+  const auto it = std::upper_bound(y.begin(), y.end(), elevation);
+  return static_cast<int>(it - y.begin()) - 1;
+}
+
+}  // namespace
+
+double CurrentProfile::At(double elevation) const {
+  const int n = static_cast<int>(y.size());
+  const int i = Piece(y, elevation);
+  if (i < 0) return speed.front();
+  if (i >= n - 1) return speed.back();
+  const double f = (elevation - y[i]) / (y[i + 1] - y[i]);
+  return speed[i] + f * (speed[i + 1] - speed[i]);
+}
+
+double CurrentProfile::Slope(double elevation) const {
+  const int n = static_cast<int>(y.size());
+  const int i = Piece(y, elevation);
+  if (i < 0 || i >= n - 1) return 0.0;
+  return (speed[i + 1] - speed[i]) / (y[i + 1] - y[i]);
+}
+
+bool CableModel::has_current() const {
+  if (current != 0 && current_profile.empty()) return true;
+  for (double c : current_profile.speed)
+    if (current + c != 0) return true;
+  return false;
+}
+
+double CableModel::max_current() const {
+  // c + profile(y) is piecewise linear in y: its extremes are at the points.
+  double c = current_profile.empty() ? std::abs(current) : 0.0;
+  for (double v : current_profile.speed) c = std::max(c, std::abs(current + v));
+  return c;
+}
+
+CableModel ScaleCurrent(const CableModel& m, double factor) {
+  CableModel out = m;
+  out.current = m.current * factor;
+  for (double& v : out.current_profile.speed) v *= factor;
+  return out;
+}
 
 CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
                            const std::vector<PrismSpec>& prisms, const EnvironmentSpec& env,
@@ -18,6 +66,14 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
   m.gravity = env.gravity;
   m.fluid_density = env.fluid_density;
   m.current = env.current;
+  m.current_profile = env.current_profile;
+  if (m.current_profile.y.size() != m.current_profile.speed.size())
+    throw Error("the current profile has " + std::to_string(m.current_profile.y.size()) +
+                " elevations but " + std::to_string(m.current_profile.speed.size()) + " speeds");
+  for (size_t i = 1; i < m.current_profile.y.size(); ++i)
+    if (!(m.current_profile.y[i] > m.current_profile.y[i - 1]))
+      throw Error("the current profile's elevations must increase strictly");
+  m.seabed = env.seabed;
   m.law = law;
   m.start = std::move(start);
   m.end = std::move(end);
@@ -81,6 +137,29 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
       const double mb = m.cable_mass[j + 1] + m.prism_mass.col(j + 1).minCoeff();
       const double k = m.axial_stiffness[j] / m.rest_length[j];  // [N/m]
       m.axial_damping[j] = 2.0 * sec.axial_damping_ratio * std::sqrt(k * ma * mb / (ma + mb));
+    }
+  }
+  if (m.seabed.present) {
+    // Each station's share of the line, half of each adjoining link, carries the bed's
+    // stiffness and damping per unit length. The default damping is critical for the station
+    // on its spring with its inertia across a line lying flat (its mass, the prism's m^y and
+    // half the normal added mass of each link).
+    m.seabed_stiffness = Eigen::VectorXd::Zero(s + 1);
+    m.seabed_damping = Eigen::VectorXd::Zero(s + 1);
+    m.seabed_rest_depth = Eigen::VectorXd::Zero(s + 1);
+    for (int i = 0; i <= s; ++i) {
+      double share = 0, added = 0;
+      for (int k = i - 1; k <= i; ++k) {
+        if (k < 0 || k >= s) continue;
+        share += 0.5 * m.rest_length[k];
+        added += 0.5 * m.virtual_mass[k];
+      }
+      m.seabed_stiffness[i] = m.seabed.stiffness * share;
+      const double mass = m.cable_mass[i] + m.prism_mass(1, i) + added;
+      m.seabed_damping[i] = m.seabed.damping >= 0
+                                ? m.seabed.damping * share
+                                : 2.0 * std::sqrt(m.seabed_stiffness[i] * mass);
+      m.seabed_rest_depth[i] = std::max(std::abs(m.net_weight[i]) / m.seabed_stiffness[i], 1e-9);
     }
   }
   return m;

@@ -8,6 +8,39 @@
 
 namespace cablefilm {
 
+// A current that varies with elevation: speeds along +x at elevations, linearly interpolated in
+// y, constant beyond the first and the last point. Empty: no profile.
+struct CurrentProfile {
+  std::vector<double> y;      // elevations [m], strictly increasing
+  std::vector<double> speed;  // the current there [m/s] along +x
+
+  bool empty() const { return y.empty(); }
+  double At(double elevation) const;     // c(y) [m/s]
+  // dc/dy [1/s]: the slope of the piece holding y (the piece above at a point), 0 beyond the
+  // ends.
+  double Slope(double elevation) const;
+};
+
+// A flat seabed at elevation y: each station below it gets a normal reaction
+//   N_j = k l_j p_j + clamp(-c_j v_y, -k l_j p_j, k l_j p_j),  p_j = y - y_j > 0 (penetration):
+// a spring on the penetration and a dashpot on the normal velocity, the dashpot's force no
+// larger than the spring's: the reaction never pulls the line down (as MoorDyn's), and it
+// starts from 0 when a falling station touches (a dashpot force c v from the first contact
+// would be a jump that an implicit step cannot land on), so 0 <= N_j <= 2 k l_j p_j. Coulomb
+// friction along x regularised by a velocity, -mu N_j tanh(v_x / v_f). l_j is the station's
+// share of the unstretched line (half of each adjoining link).
+struct SeabedSpec {
+  bool present = false;
+  double y = 0;                  // elevation [m]
+  double stiffness = 3e7;        // k [N/m per m of line resting on it = N/m^2]; MoorDyn's kbot
+                                 // [Pa/m] times the diameter
+  double damping = -1;           // c [N s/m per m of line = N s/m^2]; MoorDyn's cbot [Pa s/m]
+                                 // times the diameter; negative: critical damping of each
+                                 // station on its bed spring, c_j = 2 sqrt(k l_j m_j)
+  double friction = 0;           // mu, Coulomb coefficient along the seabed
+  double friction_velocity = 0.01;  // v_f [m/s]: friction is mu N tanh(v_x / v_f)
+};
+
 enum class LinkLaw {
   kElastic,       // Hooke's law, eq. (2); a compressed link is slack (T = 0)
   kInextensible,  // rest length kept exactly; tension from the constraint (reference [1])
@@ -39,7 +72,14 @@ struct CableModel {
 
   double gravity = 9.80665;       // g [m/s^2]
   double fluid_density = 0;       // rho [kg/m^3]
-  double current = 0;             // c [m/s] along +x
+  double current = 0;             // c [m/s] along +x, uniform
+  CurrentProfile current_profile; // added to c: the current at y is c + profile(y) [m/s]
+  SeabedSpec seabed;              // seabed.present: contact on the stations below seabed.y
+  Eigen::VectorXd seabed_stiffness;  // k l_j [N/m] per station (size s+1; empty: no seabed)
+  Eigen::VectorXd seabed_damping;    // c_j [N s/m] per station (size s+1; empty: no seabed)
+  Eigen::VectorXd seabed_rest_depth; // |W_j| / (k l_j) [m]: the penetration at which the
+                                     // station's net weight rests on the bed (at least 1e-9 m;
+                                     // size s+1; empty: no seabed)
   LinkLaw law = LinkLaw::kElastic;
 
   EndMotion start;                // station 0
@@ -51,6 +91,15 @@ struct CableModel {
   int first_free() const { return start.prescribed() ? 1 : 0; }
   int last_free() const { return end.prescribed() ? links - 1 : links; }
   const EndMotion& end_motion(int j) const { return j == 0 ? start : end; }
+  // The current at elevation y [m/s] and its y-derivative [1/s].
+  double CurrentAt(double y) const {
+    return current_profile.empty() ? current : current + current_profile.At(y);
+  }
+  double CurrentSlope(double y) const {
+    return current_profile.empty() ? 0.0 : current_profile.Slope(y);
+  }
+  bool has_current() const;  // anywhere non-zero
+  double max_current() const;  // the largest |c(y)| over all y [m/s]
   bool prescribed(int j) const {
     return (j == 0 && start.prescribed()) || (j == links && end.prescribed());
   }
@@ -84,7 +133,13 @@ struct EnvironmentSpec {
   double gravity = 9.80665;    // g [m/s^2]
   double fluid_density = 0;    // rho [kg/m^3]
   double current = 0;          // c [m/s]
+  CurrentProfile current_profile;  // added to c (empty: uniform)
+  SeabedSpec seabed;           // none unless present
 };
+
+// The model with its current (uniform and profile) multiplied by `factor`: the continuation of
+// the static equilibrium in the current.
+CableModel ScaleCurrent(const CableModel& m, double factor);
 
 // Assembles the per-link and per-station quantities of eq. (1). Sections must be valid
 // (the scene loader checks them); throws Error on a prism at a station that does not exist.

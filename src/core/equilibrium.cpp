@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "core/block_tridiagonal.h"
 #include "core/error.h"
@@ -76,7 +77,8 @@ class StaticProblem {
  public:
   explicit StaticProblem(const CableModel& m)
       : m_(m), ws_(m.links), zero_v_(Eigen::Matrix2Xd::Zero(2, m.stations())),
-        system_(m.last_free() - m.first_free() + 1) {}
+        system_(m.last_free() - m.first_free() + 1),
+        slack_tension_(m.seabed.present ? StaticForceScale(m) : 0.0) {}
 
   const Eigen::Matrix2Xd& Residual(const Eigen::Matrix2Xd& x) {
     ComputeGeometry(x, ws_.geometry);
@@ -111,25 +113,87 @@ class StaticProblem {
   }
 
   // Solves (-J + beta I) dx = R at x (Residual(x) must be current). Returns false if singular.
+  // With a seabed the contact is taken from where the step lands rather than from where it
+  // starts (a primal-dual active set): a station above the bed that the step takes into it gets
+  // the bed's spring k (y_b - y) in its linear model, one in the bed that the step lifts off
+  // loses it, and the step is solved again until the set is consistent (a few passes). Without
+  // this a station just above the bed sees no support, the step drops it far into the stiff bed
+  // and the line search cuts the whole step to the few millimetres it may fall.
   bool NewtonStep(double beta, Eigen::Matrix2Xd& dx) {
     const int j0 = m_.first_free(), j1 = m_.last_free();
-    system_.SetZero();
-    AddForceJacobian(m_, ws_.geometry, ws_.tension, zero_v_, 0.0, system_);
-    for (int j = j0; j <= j1; ++j) {
-      system_.diag[j - j0].diagonal().array() += beta;
-      system_.rhs[j - j0] = ws_.force.col(j);
+    if (m_.seabed.present) {
+      landed_.resize(m_.stations());
+      for (int j = j0; j <= j1; ++j) landed_[j] = m_.seabed.y - ws_.geometry.elevation[j] > 0;
     }
-    if (!system_.Solve()) return false;
-    dx.setZero();
-    for (int j = j0; j <= j1; ++j) dx.col(j) = system_.rhs[j - j0];
-    return dx.allFinite();
+    for (int pass = 0; pass < kActiveSetPasses; ++pass) {
+      system_.SetZero();
+      AddForceJacobian(m_, ws_.geometry, ws_.tension, zero_v_, 0.0, system_);
+      for (int j = j0; j <= j1; ++j) {
+        system_.diag[j - j0].diagonal().array() += beta;
+        system_.rhs[j - j0] = ws_.force.col(j);
+      }
+      if (m_.seabed.present) {
+        AddSlackStiffness();
+        for (int j = j0; j <= j1; ++j) {
+          const double p = m_.seabed.y - ws_.geometry.elevation[j];  // the bed's force: k p
+          if (landed_[j] == (p > 0)) continue;
+          const double k = m_.seabed_stiffness[j];
+          const double sign = landed_[j] ? 1.0 : -1.0;  // add the spring, or take it away
+          system_.diag[j - j0](1, 1) += sign * k;
+          system_.rhs[j - j0].y() += sign * k * p;
+        }
+      }
+      if (!system_.Solve()) return false;
+      dx.setZero();
+      for (int j = j0; j <= j1; ++j) dx.col(j) = system_.rhs[j - j0];
+      if (!dx.allFinite()) return false;
+      if (!m_.seabed.present) break;
+      bool changed = false;
+      for (int j = j0; j <= j1; ++j) {
+        const bool lands = ws_.geometry.elevation[j] + dx(1, j) < m_.seabed.y;
+        changed |= lands != landed_[j];
+        landed_[j] = lands;
+      }
+      if (!changed) break;
+    }
+    return true;
   }
 
  private:
+  static constexpr int kActiveSetPasses = 8;
+  // A slack link has no stiffness, so a slack stretch of line resting on a frictionless bed
+  // feels no force at all: Newton moves it only where its taut neighbour pulls it, a link per
+  // iteration (a guess or a start with the grounded part laid down short). With a seabed the
+  // matrix (not the residual, so not the answer) gives each slack link, along it, the
+  // transverse stiffness T / l it would have under the line's whole weight as its tension
+  // (StaticForceScale), and the step carries the whole slack stretch along: the poor starts of
+  // tests/core/seabed_test.cpp (200 links) take 100-240 iterations instead of 350-4000 (most of
+  // them in the pseudo-transient fallback). A fraction of sigma E / l instead worked for a
+  // chain and failed for a line 1000 times stiffer (the inextensible model's penalty). The
+  // term is positive semi-definite, so the step still descends the energy.
+  void AddSlackStiffness() {
+    const int j0 = m_.first_free(), j1 = m_.last_free();
+    for (int k = 0; k < m_.links; ++k) {
+      if (ws_.geometry.length[k] > m_.rest_length[k]) continue;
+      const Eigen::Vector2d t = ws_.geometry.tangent.col(k);
+      const Eigen::Matrix2d K = (slack_tension_ / m_.rest_length[k]) * t * t.transpose();
+      const int a = k, c = k + 1;
+      const bool fa = a >= j0 && a <= j1, fc = c >= j0 && c <= j1;
+      if (fa) system_.diag[a - j0] += K;
+      if (fc) system_.diag[c - j0] += K;
+      if (fa && fc) {
+        system_.upper[a - j0] -= K;
+        system_.lower[c - j0] -= K;
+      }
+    }
+  }
+
   const CableModel& m_;
   ForceWorkspace ws_;
   Eigen::Matrix2Xd zero_v_;
   BlockTridiagonal system_;
+  std::vector<char> landed_;  // per station: in the bed after the step (seabed only)
+  double slack_tension_;      // [N]: see AddSlackStiffness (seabed only)
 };
 
 // x + dx, with each link turned and stretched as dx says to first order instead of
@@ -170,7 +234,14 @@ void CurvilinearUpdate(const CableModel& m, const Eigen::Matrix2Xd& x, const Eig
 bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_iter,
             EquilibriumReport& report, const CancelFlag* cancel) {
   StaticProblem problem(m);
-  const bool conservative = m.current == 0;
+  // The seabed's spring is conservative too (its energy is in PotentialEnergy); its damping
+  // and friction vanish at rest.
+  const bool conservative = !m.has_current();
+  // With a seabed, a step that lowers the residual but raises the energy is refused (beyond the
+  // energy's round-off): the contact's kinks otherwise let the two criteria take turns and the
+  // iteration cycle. Near the solution the energy's changes fall below its round-off and the
+  // residual decides alone, as without a seabed.
+  const bool energy_first = conservative && m.seabed.present;
   Eigen::Matrix2Xd dx(2, m.stations()), scaled(2, m.stations()), trial(2, m.stations());
   const double length_scale = m.total_length();
   problem.Residual(x);
@@ -196,7 +267,9 @@ bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_
       problem.Residual(trial);
       const double r2_trial = problem.ResidualNorm2();
       const bool energy_ok = conservative && e_trial <= energy - 1e-4 * alpha * descent;
-      accepted = energy_ok || r2_trial < r2 * (1.0 - 1e-4 * alpha);
+      const bool energy_kept =
+          !energy_first || e_trial <= energy + 1e-12 * std::abs(energy);
+      accepted = energy_ok || (energy_kept && r2_trial < r2 * (1.0 - 1e-4 * alpha));
     }
     alpha *= 2.0;  // undo the last halving of the loop
     if (!accepted) {
@@ -267,7 +340,7 @@ double StaticForceScale(const CableModel& m) {
   // The cable's and prisms' net weights and the drag of the current on them (as if broadside),
   // and, for ends further apart than the cable is long, the tension of the stretched chord: a
   // weightless taut line has no other force scale (without it the tolerance would be 1e-18 N).
-  const double current_load = 0.5 * m.current * m.current *
+  const double current_load = 0.5 * m.max_current() * m.max_current() *
                               (2.0 * m.drag_factor.sum() + m.prism_drag.colwise().sum().sum());
   double chord_tension = 0;
   if (m.start.prescribed() && m.end.prescribed()) {
@@ -289,7 +362,79 @@ Eigen::Matrix2Xd StraightChord(const CableModel& m) {
   return x;
 }
 
-Eigen::Matrix2Xd EquilibriumGuess(const CableModel& m) {
+namespace {
+
+// Stations of a guess that lie below the seabed raised onto it (the catenary of a long line sags
+// through it): a guess far inside the bed's stiff spring starts Newton with forces far above
+// any load.
+Eigen::Matrix2Xd OntoSeabed(const CableModel& m, Eigen::Matrix2Xd x) {
+  if (!m.seabed.present) return x;
+  for (int j = m.first_free(); j <= m.last_free(); ++j)
+    x(1, j) = std::max(x(1, j), m.seabed.y);
+  return x;
+}
+
+// A line that the catenary guess sags through the seabed, laid out as the inextensible
+// catenary with a grounded part: from the lower end straight down to the bed, along it, then
+// up the catenary that leaves it tangentially to the other end, of total length `length` (the
+// touchdown found by bisection on the length). Its grounded links are taut from the start
+// (a clipped catenary leaves them short, and Newton would pull them straight a link at a time).
+// False if no touchdown fits (the line too short to reach the bed tangentially, or so long it
+// would pile up on it).
+bool GroundedGuess(const CableModel& m, double length, Eigen::Matrix2Xd& x) {
+  const double bed = m.seabed.y;
+  const bool start_low = m.start.Position(0).y() <= m.end.Position(0).y();
+  const Eigen::Vector2d A = start_low ? m.start.Position(0) : m.end.Position(0);
+  const Eigen::Vector2d B = start_low ? m.end.Position(0) : m.start.Position(0);
+  const double drop = A.y() - bed, rise = B.y() - bed;  // [m], both >= 0
+  const double span = std::abs(B.x() - A.x()), sx = B.x() >= A.x() ? 1.0 : -1.0;
+  if (!(rise > 0) || !(span > 0) || drop < 0) return false;
+  // The catenary from a touchdown `run` before B (horizontally) up to B: its parameter c
+  // (rise = c (cosh(run / c) - 1), bisection: the rise falls as c grows) and arc length.
+  auto parameter = [&](double run) {
+    double lo = 1e-9 * run, hi = 1e9 * (run + rise);
+    for (int it = 0; it < 200; ++it) {
+      const double c = std::sqrt(lo * hi);
+      (c * (std::cosh(std::min(run / c, 700.0)) - 1.0) > rise ? lo : hi) = c;
+    }
+    return std::sqrt(lo * hi);
+  };
+  auto path = [&](double run) {  // the whole path's length for a touchdown `run` before B
+    const double c = parameter(run);
+    return drop + (span - run) + std::sqrt(rise * rise + 2.0 * c * rise);
+  };
+  // The path shortens as the touchdown moves away from B (run from 0 to span): from
+  // drop + span + rise down to the catenary from the lower end's foot.
+  double lo = 1e-9 * span, hi = span;
+  if (!(path(hi) <= length && path(lo) >= length)) return false;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (path(mid) > length ? lo : hi) = mid;
+  }
+  const double run = 0.5 * (lo + hi), c = parameter(run);
+  const double grounded = span - run;
+  x.resize(2, m.stations());
+  for (int j = 0; j <= m.links; ++j) {
+    const double f = m.arc_length[j] / m.total_length();
+    double sigma = (start_low ? f : 1.0 - f) * length;  // path length from A
+    Eigen::Vector2d p;
+    if (sigma <= drop) {
+      p = Eigen::Vector2d(A.x(), A.y() - sigma);
+    } else if ((sigma -= drop) <= grounded) {
+      p = Eigen::Vector2d(A.x() + sx * sigma, bed);
+    } else {
+      sigma -= grounded;  // arc length along the catenary from the touchdown
+      const double u = std::asinh(sigma / c);
+      p = Eigen::Vector2d(A.x() + sx * (grounded + c * u), bed + c * (std::cosh(u) - 1.0));
+    }
+    x.col(j) = p;
+  }
+  x.col(0) = m.start.Position(0);
+  x.col(m.links) = m.end.Position(0);
+  return true;
+}
+
+Eigen::Matrix2Xd FreeGuess(const CableModel& m) {
   if (!m.start.prescribed() || !m.end.prescribed()) {
     StraightChord(m);  // throws when both ends are free
     return HangingGuess(m);
@@ -303,8 +448,14 @@ Eigen::Matrix2Xd EquilibriumGuess(const CableModel& m) {
   const double stretched = length * (1.0 + std::max(1e-6, tension_guess / MinAxialStiffness(m)));
   const double h = std::abs(b.x() - a.x());
   if (chord >= stretched || h < 1e-6 * length) return StraightChord(m);
-  return CatenaryGuess(m, a, b, stretched, w < 0);
+  Eigen::Matrix2Xd x = CatenaryGuess(m, a, b, stretched, w < 0);
+  if (m.seabed.present && w > 0 && x.row(1).minCoeff() < m.seabed.y) GroundedGuess(m, stretched, x);
+  return x;
 }
+
+}  // namespace
+
+Eigen::Matrix2Xd EquilibriumGuess(const CableModel& m) { return OntoSeabed(m, FreeGuess(m)); }
 
 CableState SolveEquilibrium(const CableModel& m, EquilibriumReport* report,
                             const EquilibriumOptions& options) {
@@ -324,26 +475,34 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
   const double tol = options.tolerance * report.force_scale;
 
   // Continuation in the current: solve still water first, then raise the current in steps,
-  // each starting from the last equilibrium (the drag load is not conservative).
-  CableModel still = m;
-  still.current = 0;
+  // each starting from the last equilibrium (the drag load is not conservative). The
+  // parameter is the uniform current itself, or with a profile the fraction of the whole
+  // current (uniform and profile alike).
+  const bool profile = !m.current_profile.empty();
+  const double full = profile ? 1.0 : m.current;
+  auto with_current = [&](double level) {
+    if (profile) return ScaleCurrent(m, level);
+    CableModel c = m;
+    c.current = level;
+    return c;
+  };
+  const CableModel still = with_current(0.0);
   bool ok = Newton(still, x, tol, options.max_iterations, report, options.cancel);
   double reached = 0;
-  double increment = 0.25 * m.current;
+  double increment = 0.25 * full;
   // Bounded: a current so small that a quarter of it underflows goes in at once.
-  while (ok && reached != m.current && report.current_steps < options.max_current_steps) {
-    double target = std::abs(m.current - reached) <= std::abs(increment) * 1.0000001
-                        ? m.current
+  while (ok && reached != full && report.current_steps < options.max_current_steps) {
+    double target = std::abs(full - reached) <= std::abs(increment) * 1.0000001
+                        ? full
                         : reached + increment;
-    if (target == reached) target = m.current;
-    CableModel step = m;
-    step.current = target;
+    if (target == reached) target = full;
+    const CableModel step = with_current(target);
     Eigen::Matrix2Xd trial = x;
     ++report.current_steps;
     if (Newton(step, trial, tol, options.max_iterations, report, options.cancel)) {
       x = trial;
       reached = target;
-    } else if (std::abs(increment) > 1e-3 * std::abs(m.current) &&
+    } else if (std::abs(increment) > 1e-3 * std::abs(full) &&
                report.iterations < options.max_iterations) {
       increment *= 0.5;
     } else {
@@ -351,7 +510,7 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
     }
   }
 
-  if (reached != m.current) ok = false;  // the continuation ran out of steps
+  if (reached != full) ok = false;  // the continuation ran out of steps
   if (!ok) {
     // Newton found no way down; the damped flow from the last equilibrium reached (or the
     // first guess) does not need one.

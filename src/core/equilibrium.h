@@ -33,7 +33,9 @@ double StaticForceScale(const CableModel& m);
 
 // A first guess that is close for most cables: an elastic catenary of the mean net weight
 // through the two ends (straight and uniformly stretched when taut), or a line hanging from
-// the prescribed end along the net weight when the other end is free.
+// the prescribed end along the net weight when the other end is free. A catenary that sags
+// through a seabed is replaced by the catenary with a grounded part (lying along the bed from
+// the lower end, leaving it tangentially); any station still below the bed is raised onto it.
 Eigen::Matrix2Xd EquilibriumGuess(const CableModel& m);
 
 // The stations evenly spaced on the chord between the ends (the "straight" initial state and

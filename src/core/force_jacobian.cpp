@@ -36,7 +36,10 @@ void Scatter(const CableModel& m, int k, const LinkBlocks& b, double kv, BlockTr
 
 void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::VectorXd& tension,
                       const Eigen::Matrix2Xd& v, double kv, BlockTridiagonal& system) {
-  const Eigen::Vector2d current(m.current, 0.0);
+  const bool profile = !m.current_profile.empty();
+  const int j0 = m.first_free(), j1 = m.last_free();
+  auto free = [&](int j) { return j >= j0 && j <= j1; };
+  Eigen::Vector2d current(m.current, 0.0);
   for (int k = 0; k < m.links; ++k) {
     const double L = g.length[k];
     if (!(L > 0)) continue;
@@ -61,6 +64,8 @@ void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::V
     if (m.drag_factor[k] != 0) {
       const Eigen::Vector2d n(-t.y(), t.x());
       const Eigen::Matrix2d dn = NormalDerivative(t, L);
+      const double ymid = profile ? 0.5 * (g.elevation[k] + g.elevation[k + 1]) : 0.0;
+      if (profile) current.x() = m.CurrentAt(ymid);
       const Eigen::Vector2d w = 0.5 * (v.col(k) + v.col(k + 1)) - current;
       const double q = w.dot(n);
       const double f = m.drag_factor[k];
@@ -69,20 +74,61 @@ void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::V
       b.fa_dd += H;
       b.fb_dd += H;
       b.f_dv = -0.5 * f * std::abs(q) * n * n.transpose();  // d(Dn/2)/dv_k, = d/dv_{k+1}
+      // A current profile: w = mean velocity - c((y_k + y_{k+1})/2) e_x, so the force on
+      // either station depends on y_k and y_{k+1} alike through dw/dy = -c'/2 e_x:
+      // d(Dn/2)/dy_i = 2 f_dv (-c'/2 e_x) = -c' f_dv e_x. Stored negated, in the y column.
+      const double slope = profile ? m.CurrentSlope(ymid) : 0.0;
+      if (slope != 0) {
+        Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
+        C.col(1) = slope * b.f_dv.col(0);
+        const int a = k, c = k + 1;
+        if (free(a)) system.diag[a - j0] += C;
+        if (free(a) && free(c)) system.upper[a - j0] += C;
+        if (free(a) && free(c)) system.lower[c - j0] += C;
+        if (free(c)) system.diag[c - j0] += C;
+      }
     }
     Scatter(m, k, b, kv, system);
   }
-  // Prism drag -u f (.) rel: a function of the station's own velocity only.
-  if (kv != 0) {
+  // Prism drag -u f (.) rel, rel = v_j - c(y_j) e_x: a function of the station's own velocity,
+  // and of its elevation through a current profile.
+  if (kv != 0 || profile) {
     for (int j : m.weight_stations) {
-      if (j < m.first_free() || j > m.last_free()) continue;
+      if (!free(j)) continue;
+      if (profile) current.x() = m.CurrentAt(g.elevation[j]);
       const Eigen::Vector2d rel = v.col(j) - current;
       const double u = rel.norm();
       if (u == 0) continue;
       const Eigen::Vector2d f = m.prism_drag.col(j);
       const Eigen::Matrix2d dfdv =
           -(f.asDiagonal() * (u * Eigen::Matrix2d::Identity() + rel * rel.transpose() / u));
-      system.diag[j - m.first_free()] -= kv * dfdv;
+      system.diag[j - j0] -= kv * dfdv;
+      // dF/dy_j = dfdv (-c' e_x); stored negated in the y column.
+      const double slope = profile ? m.CurrentSlope(g.elevation[j]) : 0.0;
+      if (slope != 0) system.diag[j - j0].col(1) += slope * dfdv.col(0);
+    }
+  }
+  if (m.seabed.present) {
+    // The seabed on station j below it (forces.cpp): N(p, v_y) with p = y_b - y_j, so
+    // dN/dy = -dN/dp; friction F_x = -mu N tanh(u), u = v_x / v_f. Negated derivatives:
+    //   -dF_y/dy = dN/dp,  -dF_y/dv_y = -dN/dv_y,
+    //   -dF_x/dy = -mu tanh(u) dN/dp,  -dF_x/dv_y = mu tanh(u) dN/dv_y,
+    //   -dF_x/dv_x = mu N sech^2(u) / v_f.
+    const SeabedSpec& bed = m.seabed;
+    for (int j = j0; j <= j1; ++j) {
+      const double p = bed.y - g.elevation[j];
+      if (!(p > 0)) continue;
+      const SeabedReaction r = SeabedNormal(m, j, p, v(1, j));
+      if (!(r.N > 0)) continue;
+      Eigen::Matrix2d B = Eigen::Matrix2d::Zero();
+      B(1, 1) = r.dN_dp - kv * r.dN_dvy;
+      if (bed.friction > 0) {
+        const double u = v(0, j) / bed.friction_velocity;
+        const double th = std::tanh(u), sech2 = 1.0 - th * th;
+        B(0, 1) = -bed.friction * th * B(1, 1);
+        B(0, 0) = kv * bed.friction * r.N * sech2 / bed.friction_velocity;
+      }
+      system.diag[j - j0] += B;
     }
   }
 }

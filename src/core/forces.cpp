@@ -9,12 +9,14 @@ namespace cablefilm {
 void ForceWorkspace::Resize(int links) {
   geometry.length.resize(links);
   geometry.tangent.resize(2, links);
+  geometry.elevation.resize(links + 1);
   tension.resize(links);
   force.resize(2, links + 1);
 }
 
 void ComputeGeometry(const Eigen::Matrix2Xd& x, LinkGeometry& g) {
   const Eigen::Index s = x.cols() - 1;
+  g.elevation = x.row(1).transpose();
   for (Eigen::Index j = 0; j < s; ++j) {
     const Eigen::Vector2d d = x.col(j + 1) - x.col(j);
     const double L = d.norm();
@@ -47,12 +49,48 @@ void ComputeTensions(const CableModel& m, const LinkGeometry& g, const Eigen::Ma
   AddAxialDamping(m, g, v, tension);
 }
 
+SeabedReaction SeabedNormal(const CableModel& m, int j, double p, double vy) {
+  const double spring = m.seabed_stiffness[j] * p, dashpot = -m.seabed_damping[j] * vy;
+  SeabedReaction r;
+  if (dashpot <= -spring) return r;  // lifting off faster than the spring lets go: no pull
+  if (dashpot >= spring) {           // landing: the dashpot adds at most the spring's force
+    r.N = 2.0 * spring;
+    r.dN_dp = 2.0 * m.seabed_stiffness[j];
+    return r;
+  }
+  r.N = spring + dashpot;
+  r.dN_dp = m.seabed_stiffness[j];
+  r.dN_dvy = -m.seabed_damping[j];
+  return r;
+}
+
+namespace {
+
+// The seabed on the stations below it: N up, -mu N tanh(v_x / v_f) along x (force_jacobian.cpp
+// differentiates the same expressions).
+void AddSeabedForces(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
+                     Eigen::Matrix2Xd& force) {
+  const SeabedSpec& bed = m.seabed;
+  for (int j = 0; j <= m.links; ++j) {
+    const double p = bed.y - g.elevation[j];  // penetration [m]
+    if (!(p > 0)) continue;
+    const double N = SeabedNormal(m, j, p, v(1, j)).N;
+    force(1, j) += N;
+    if (bed.friction > 0)
+      force(0, j) -= bed.friction * N * std::tanh(v(0, j) / bed.friction_velocity);
+  }
+}
+
+}  // namespace
+
 void AddExternalForces(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
                        Eigen::Matrix2Xd& force) {
-  const Eigen::Vector2d current(m.current, 0.0);  // c
+  const bool profile = !m.current_profile.empty();
+  Eigen::Vector2d current(m.current, 0.0);  // c, or c(y) at the link's midpoint
   // Normal drag on each link, half to each of its stations: D n / 2 with n = (-sin, cos).
   for (int j = 0; j < m.links; ++j) {
     if (m.drag_factor[j] == 0) continue;
+    if (profile) current.x() = m.CurrentAt(0.5 * (g.elevation[j] + g.elevation[j + 1]));
     const Eigen::Vector2d n(-g.tangent(1, j), g.tangent(0, j));
     const Eigen::Vector2d rel = 0.5 * (v.col(j) + v.col(j + 1)) - current;  // relative velocity
     const double q = rel.dot(n);                        // q_{j+1/2} [m/s]
@@ -65,10 +103,12 @@ void AddExternalForces(const CableModel& m, const LinkGeometry& g, const Eigen::
   }
   // Prism drag X*, Y*: quadratic in the relative speed u_j, each axis with its own factor.
   for (int j : m.weight_stations) {
+    if (profile) current.x() = m.CurrentAt(g.elevation[j]);
     const Eigen::Vector2d rel = v.col(j) - current;
     const double u = rel.norm();
     force.col(j) -= u * m.prism_drag.col(j).cwiseProduct(rel);
   }
+  if (m.seabed.present) AddSeabedForces(m, g, v, force);
 }
 
 void ComputeStationForces(const CableModel& m, const LinkGeometry& g,
@@ -131,6 +171,17 @@ double ElasticEnergy(const CableModel& m, const LinkGeometry& g) {
 double PotentialEnergy(const CableModel& m, const Eigen::Matrix2Xd& x) {
   double e = 0;
   for (int j = 0; j <= m.links; ++j) e += m.net_weight[j] * x(1, j);
+  if (m.seabed.present) e += SeabedEnergy(m, x);
+  return e;
+}
+
+double SeabedEnergy(const CableModel& m, const Eigen::Matrix2Xd& x) {
+  if (!m.seabed.present) return 0.0;
+  double e = 0;
+  for (int j = 0; j <= m.links; ++j) {
+    const double p = m.seabed.y - x(1, j);
+    if (p > 0) e += 0.5 * m.seabed_stiffness[j] * p * p;
+  }
   return e;
 }
 

@@ -11,6 +11,8 @@ namespace cablefilm {
 struct LinkGeometry {
   Eigen::VectorXd length;    // L_{j+1/2} = |x_{j+1} - x_j| [m] (size s)
   Eigen::Matrix2Xd tangent;  // (cos theta, sin theta)_{j+1/2} (2 x s); zero for a zero-length link
+  Eigen::VectorXd elevation;  // y_j of the stations [m] (size s+1): the seabed, the current
+                              // profile
 };
 
 struct ForceWorkspace {
@@ -36,13 +38,23 @@ void AddAxialDamping(const CableModel& m, const LinkGeometry& g, const Eigen::Ma
 void ComputeTensions(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
                      Eigen::VectorXd& tension);
 
+// The seabed's normal reaction N on station j at penetration p > 0 with vertical velocity vy
+// (cable_model.h, SeabedSpec), and its derivatives; N = 0 with no derivative where it would pull.
+struct SeabedReaction {
+  double N = 0;       // [N]
+  double dN_dp = 0;   // [N/m]
+  double dN_dvy = 0;  // [N s/m]
+};
+SeabedReaction SeabedNormal(const CableModel& m, int j, double p, double vy);
+
 // force_j = T_{j+1/2} t_{j+1/2} - T_{j-1/2} t_{j-1/2} + (X_j, Y_j), for every station.
 // v: station velocities; the current enters through the relative velocity.
 void ComputeStationForces(const CableModel& m, const LinkGeometry& g,
                           const Eigen::VectorXd& tension, const Eigen::Matrix2Xd& v,
                           Eigen::Matrix2Xd& force);
 
-// The external part (X_j, Y_j) only: drag, prism drag, weight and buoyancy.
+// The external part (X_j, Y_j) only: drag, prism drag, weight and buoyancy, and the seabed's
+// reaction and friction (SeabedSpec) on the stations below it.
 void AddExternalForces(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
                        Eigen::Matrix2Xd& force);
 
@@ -55,9 +67,11 @@ void ComputeAccelerations(const CableModel& m, double t, const Eigen::Matrix2Xd&
                           const Eigen::Matrix2Xd& v, ForceWorkspace& ws, Eigen::Matrix2Xd& a);
 
 // Energies for conservation checks [J]: kinetic (with the normal added mass), elastic strain
-// energy of the links, and potential of the net weight (y = 0 datum).
+// energy of the links, and potential of the net weight (y = 0 datum) plus the strain energy of
+// the seabed's springs (k l_j p_j^2 / 2 for the stations below it).
 double KineticEnergy(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v);
 double ElasticEnergy(const CableModel& m, const LinkGeometry& g);
 double PotentialEnergy(const CableModel& m, const Eigen::Matrix2Xd& x);
+double SeabedEnergy(const CableModel& m, const Eigen::Matrix2Xd& x);  // the springs only
 
 }  // namespace cablefilm

@@ -82,8 +82,15 @@ bool GeneralizedAlphaIntegrator::Solve(const CableModel& m, const CableState& s,
     if (!system_.Solve()) return false;
     double dx_max = 0;
     for (int j = j0; j <= j1; ++j) {
+      const bool above_bed = m.seabed.present && x_(1, j) >= m.seabed.y;
       x_.col(j) += system_.rhs[j - j0];
       dx_max = std::max(dx_max, system_.rhs[j - j0].lpNorm<Eigen::Infinity>());
+      // A station above the seabed that the iteration would drive into it (its linear model
+      // knows nothing of the bed) lands at its resting penetration instead: otherwise the next
+      // iteration, in the bed's stiff spring and dashpot, throws it back above and Newton
+      // cycles between the two (a touchdown at a fixed step of 0.05 s blew up so).
+      if (above_bed && x_(1, j) < m.seabed.y - m.seabed_rest_depth[j])
+        x_(1, j) = m.seabed.y - m.seabed_rest_depth[j];
     }
     if (!std::isfinite(dx_max)) return false;
     if (dx_max <= newton_tolerance_) {

@@ -145,6 +145,23 @@ double InextensibleIntegrator::StableSubstep(const CableModel& m) const {
     if (j < m.links) stiffness += std::abs(ws_.tension[j]) / m.rest_length[j];
     lambda = std::max(lambda, 2.0 * stiffness / mj);
   }
+  if (m.seabed.present) {
+    // The seabed's spring and dashpot on each station (any may land within the substep), with
+    // the transverse stiffness: the bound of the explicit scheme with damping (stability.cpp),
+    // omega h <= 2 (sqrt(1 + 4 zeta^2) - 2 zeta), halved as above.
+    double gamma = 0;
+    for (int j = m.first_free(); j <= m.last_free(); ++j) {
+      const double mj = m.cable_mass[j] + m.prism_mass.col(j).minCoeff();
+      double stiffness = 2.0 * m.seabed_stiffness[j];  // at most twice the spring's (forces.cpp)
+      if (j > 0) stiffness += 2.0 * std::abs(ws_.tension[j - 1]) / m.rest_length[j - 1];
+      if (j < m.links) stiffness += 2.0 * std::abs(ws_.tension[j]) / m.rest_length[j];
+      lambda = std::max(lambda, stiffness / mj);
+      gamma = std::max(gamma, m.seabed_damping[j] / mj);
+    }
+    if (!(lambda > 0)) return std::numeric_limits<double>::infinity();
+    const double omega = std::sqrt(lambda), zeta = gamma / (2.0 * omega);
+    return 0.5 * 2.0 * (std::sqrt(1.0 + 4.0 * zeta * zeta) - 2.0 * zeta) / omega;
+  }
   return lambda > 0 ? 0.5 * 2.0 / std::sqrt(lambda) : std::numeric_limits<double>::infinity();
 }
 

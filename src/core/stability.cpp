@@ -35,6 +35,13 @@ StabilityLimit ComputeStabilityLimit(const CableModel& m) {
         if (!m.prescribed(j + 1)) row[which] += k / std::sqrt(mj * inertia(j + 1));
       }
     }
+    // The seabed's spring and dashpot act on the station alone (the diagonal): any station
+    // may come to rest on it, so every one counts. Its reaction is at most twice the spring's
+    // (forces.cpp), a stiffness of up to 2 k l_j.
+    if (m.seabed.present) {
+      row[0] += 2.0 * m.seabed_stiffness[j] / mj;
+      row[1] += m.seabed_damping[j] / mj;
+    }
     if (row[0] > lambda_max) {
       lambda_max = row[0];
       out.station = j;

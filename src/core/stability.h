@@ -10,7 +10,9 @@
 // least inertia of station j in any direction: the links' normal added mass only adds to it.
 // (tests/core/stability_test.cpp checks the bound against the exact highest frequency of
 // stretched, curved, partly slack states in water.) What the limit does not cover is a link
-// going slack or snapping taut within a step: see explicit_integrator.h.
+// going slack or snapping taut within a step: see explicit_integrator.h. A seabed adds its
+// spring (up to 2 k l_j: the dashpot adds at most the spring's force) and dashpot c_j to every
+// station's row (a station off the bed only loses them).
 #include "core/cable_model.h"
 
 namespace cablefilm {

@@ -75,6 +75,16 @@ CableModel BuildModel(const SceneDef& scene) {
   env.gravity = scene.environment.gravity;
   env.fluid_density = scene.environment.fluid_density;
   env.current = scene.environment.current;
+  for (const auto& point : scene.environment.current_profile) {
+    env.current_profile.y.push_back(point[0]);
+    env.current_profile.speed.push_back(point[1]);
+  }
+  env.seabed.present = scene.seabed.present;
+  env.seabed.y = scene.seabed.y;
+  env.seabed.stiffness = scene.seabed.stiffness;
+  env.seabed.damping = scene.seabed.damping;
+  env.seabed.friction = scene.seabed.friction;
+  env.seabed.friction_velocity = scene.seabed.friction_velocity;
   const LinkLaw law =
       scene.model == CableModelKind::kElastic ? LinkLaw::kElastic : LinkLaw::kInextensible;
   return BuildCableModel(sections, prisms, env, MakeEndMotion(scene.start),

@@ -27,6 +27,11 @@ constexpr double kMaxDampingRatio = 100;    // of critical, the link's axial mod
 constexpr double kMaxGravity = 1e3;         // m/s^2
 constexpr double kMaxFluidDensity = 1e5;    // kg/m^3
 constexpr double kMaxCurrent = 1e3;         // m/s, either way
+constexpr int kMaxCurrentPoints = 10000;    // points of a current profile
+constexpr double kMinSeabedStiffness = 1, kMaxSeabedStiffness = 1e12;  // N/m per m of line
+constexpr double kMaxSeabedDamping = 1e12;  // N s/m per m of line
+constexpr double kMaxFriction = 10;         // Coulomb coefficient
+constexpr double kMinFrictionVelocity = 1e-9, kMaxFrictionVelocity = 1e3;  // m/s
 constexpr double kMaxWeightMass = 1e9;      // kg
 constexpr double kMaxVolume = 1e6;          // m^3 (volumes, added volumes)
 constexpr double kMaxDragArea = 1e6;        // m^2

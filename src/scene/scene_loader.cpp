@@ -216,6 +216,38 @@ class TableReader {
   std::set<std::string> used_;
 };
 
+// [[y, speed], ...]: elevations strictly increasing, each within the stated ranges.
+void ReadCurrentProfile(TableReader& r, const toml::array& a,
+                        std::vector<std::array<double, 2>>& profile) {
+  const std::string what = "a profile [[y, speed], ...]: from 1 to " +
+                           std::to_string(kMaxCurrentPoints) +
+                           " pairs of an elevation in m (" + TableReader::Fmt(-kMaxLength) +
+                           " to " + TableReader::Fmt(kMaxLength) + ", increasing) and a speed "
+                           "in m/s (" + TableReader::Fmt(-kMaxCurrent) + " to " +
+                           TableReader::Fmt(kMaxCurrent) + ")";
+  if (a.empty() || a.size() > static_cast<size_t>(kMaxCurrentPoints))
+    r.Fail(&a, "current", "expected " + what + ", got " + std::to_string(a.size()) + " pairs");
+  for (size_t i = 0; i < a.size(); ++i) {
+    const std::string key = "current[" + std::to_string(i) + "]";
+    const toml::node* n = a.get(i);
+    const toml::array* pair = n->as_array();
+    if (!pair || pair->size() != 2) r.Fail(n, key, "expected [y, speed] in " + what);
+    const double y = r.Number(key, pair->get(0), "an elevation in m");
+    const double c = r.Number(key, pair->get(1), "a speed in m/s");
+    if (!(std::abs(y) <= kMaxLength))
+      r.Fail(n, key, "expected an elevation in m from " + TableReader::Fmt(-kMaxLength) + " to " +
+                         TableReader::Fmt(kMaxLength) + ", got " + TableReader::Fmt(y));
+    if (!(std::abs(c) <= kMaxCurrent))
+      r.Fail(n, key, "expected a speed in m/s from " + TableReader::Fmt(-kMaxCurrent) + " to " +
+                         TableReader::Fmt(kMaxCurrent) + ", got " + TableReader::Fmt(c));
+    if (!profile.empty() && !(y > profile.back()[0]))
+      r.Fail(n, key, "expected the elevations to increase strictly, got y = " +
+                         TableReader::Fmt(y) + " m after " + TableReader::Fmt(profile.back()[0]) +
+                         " m");
+    profile.push_back({y, c});
+  }
+}
+
 void ReadEnvironment(TableReader& top, SceneDef& scene, const std::string& file) {
   const toml::table* t = top.SubTable("environment", false);
   if (!t) return;
@@ -224,9 +256,75 @@ void ReadEnvironment(TableReader& top, SceneDef& scene, const std::string& file)
       r.OptionalNonNegative("gravity", 9.80665, " in m/s^2", kMaxGravity);
   scene.environment.fluid_density =
       r.OptionalNonNegative("fluid_density", 1025.0, " in kg/m^3", kMaxFluidDensity);
-  scene.environment.current =
-      r.Ranged("current", 0.0, false, -kMaxCurrent, kMaxCurrent, " (a speed in m/s)");
+  const toml::node* current = t->get("current");
+  if (current && current->is_array()) {
+    r.Get("current");
+    ReadCurrentProfile(r, *current->as_array(), scene.environment.current_profile);
+  } else if (current && !current->is_number()) {
+    r.Fail(current, "current",
+           "expected a speed in m/s from " + TableReader::Fmt(-kMaxCurrent) + " to " +
+               TableReader::Fmt(kMaxCurrent) +
+               ", or a profile [[y, speed], ...] (elevation in m, speed in m/s)");
+  } else {
+    scene.environment.current =
+        r.Ranged("current", 0.0, false, -kMaxCurrent, kMaxCurrent, " (a speed in m/s)");
+  }
   r.Finish();
+}
+
+void ReadSeabed(TableReader& top, SceneDef& scene, const std::string& file) {
+  const toml::table* t = top.SubTable("seabed", false);
+  if (!t) return;
+  TableReader r(*t, "seabed", file);
+  SeabedDef& b = scene.seabed;
+  b.present = true;
+  b.y = r.Ranged("y", 0.0, true, -kMaxLength, kMaxLength, " (the seabed's elevation in m)");
+  b.stiffness = r.OptionalPositive("stiffness", b.stiffness, " in N/m per m of line (N/m^2)",
+                                   kMinSeabedStiffness, kMaxSeabedStiffness);
+  if (r.Has("damping"))
+    b.damping = r.OptionalNonNegative("damping", 0.0, " in N s/m per m of line (N s/m^2)",
+                                      kMaxSeabedDamping);
+  else
+    r.Get("damping");
+  b.friction = r.OptionalNonNegative("friction", 0.0, " (Coulomb coefficient)", kMaxFriction);
+  b.friction_velocity = r.OptionalPositive("friction_velocity", b.friction_velocity, " in m/s",
+                                           kMinFrictionVelocity, kMaxFrictionVelocity);
+  r.Finish();
+}
+
+// A prescribed end's lowest elevation over its motion [m]: its rest position less the
+// trochoid's largest vertical excursion (the ramp R(t) <= 1), or plus the table's lowest
+// offset (at its rows).
+double LowestElevation(const EndDef& e) {
+  double y = e.position[1];
+  if (e.motion == EndMotionKind::kTrochoid) y -= std::hypot(e.y_amplitudes[0], e.y_amplitudes[1]);
+  if (e.motion == EndMotionKind::kTable && !e.table.empty()) {
+    double lowest = e.table.front()[2];
+    for (const auto& row : e.table) lowest = std::min(lowest, row[2]);
+    y += lowest;
+  }
+  return y;
+}
+
+// The seabed must not be above a prescribed end (an anchor in the bed, a fairlead dipping into
+// it): an error naming seabed.y.
+void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::string& file) {
+  if (!scene.seabed.present) return;
+  for (const auto& [name, end] : {std::pair<const char*, const EndDef*>{"start", &scene.start},
+                                  {"end", &scene.end}}) {
+    if (end->motion == EndMotionKind::kFree) continue;
+    const double lowest = LowestElevation(*end);
+    if (!(lowest < scene.seabed.y)) continue;
+    std::ostringstream os;
+    os << EscapeText(file) << ":";
+    if (const toml::node* n = root.at_path("seabed.y").node()) os << n->source().begin.line << ":";
+    os << " seabed.y: the seabed at y = " << FormatNumber(scene.seabed.y)
+       << " m is above the " << name << " end (ends." << name << ".position y = "
+       << FormatNumber(end->position[1]) << " m";
+    if (lowest != end->position[1]) os << ", down to " << FormatNumber(lowest) << " m as it moves";
+    os << "); expected a seabed at or below the cable's prescribed ends";
+    throw Error(os.str());
+  }
 }
 
 void ReadMaterials(TableReader& top, SceneDef& scene, const std::string& file, bool elastic) {
@@ -436,6 +534,7 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
   TableReader top(root, "", file);
   scene.title = top.String("title", scene.name, false);
   ReadEnvironment(top, scene, file);
+  ReadSeabed(top, scene, file);
 
   bool elastic = true;
   if (const toml::table* cable = root.get_as<toml::table>("cable")) {
@@ -537,6 +636,7 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
   const bool interval_given = scene.output.interval > 0;
   if (!interval_given) scene.output.interval = scene.film.speed / scene.film.fps;
   top.Finish();
+  CheckSeabed(root, scene, file);
   CheckRunCounts(root, scene, file, interval_given);
   return scene;
 }

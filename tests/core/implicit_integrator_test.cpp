@@ -552,7 +552,10 @@ TEST(ImplicitIntegrator, StepIndependentOfStations) {
 // with two sections, a prism, a current and a free end, where some links are slack and the
 // rest stretched, and where drag and stiffness terms are of comparable size (soft rope, fast
 // relative motion) so that an error in either shows.
-CableModel JacobianModel(double damping_ratio = 0) {
+// `sea`: a seabed through the random configuration (stiff, damped, with friction regularised
+// over 1 m/s so its velocity derivative is of the size of the others) and a sheared current
+// profile whose points fall among the stations' elevations.
+CableModel JacobianModel(double damping_ratio = 0, bool sea = false) {
   SectionSpec a{6.0, 6, 0.05, 1e-3, 1.5, 1e6, 1.2, 1.0};   // EA = 1 kN
   SectionSpec b{4.0, 5, 0.03, 5e-4, 0.8, 4e6, 1.0, 0.8};   // EA = 2 kN
   a.axial_damping_ratio = damping_ratio;
@@ -567,6 +570,17 @@ CableModel JacobianModel(double damping_ratio = 0) {
   EnvironmentSpec env;
   env.fluid_density = 1025;
   env.current = 0.7;
+  if (sea) {
+    env.current = 0;
+    env.current_profile.y = {-3.0, -0.7, 0.4, 2.5};
+    env.current_profile.speed = {0.2, 0.9, -0.4, 1.1};
+    env.seabed.present = true;
+    env.seabed.y = 0.3;
+    env.seabed.stiffness = 2e3;  // [N/m^2]: 1 kN/m per station, EA/l is 1-2 kN/m
+    env.seabed.damping = 150;    // [N s/m^2]
+    env.seabed.friction = 0.6;
+    env.seabed.friction_velocity = 1.0;
+  }
   return BuildCableModel({a, b}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({10, -1}),
                          LinkLaw::kElastic);
 }
@@ -608,16 +622,21 @@ double RelativeError(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& fd)
   return (analytic - fd).cwiseAbs().maxCoeff() / fd.cwiseAbs().maxCoeff();
 }
 
-void ExpectJacobianMatchesCentralDifferences(double damping_ratio) {
-  const CableModel m = JacobianModel(damping_ratio);
+void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = false) {
+  const CableModel m = JacobianModel(damping_ratio, sea);
   const int j0 = m.first_free(), j1 = m.last_free(), n = j1 - j0 + 1;
   ASSERT_EQ(j0, 1);
   ASSERT_EQ(j1, m.links);  // the free end is included
   std::mt19937 rng(20240605);
   double worst_x = 0, worst_v = 0, worst_m = 0, worst_ma = 0;
+  int grounded = 0;  // stations on the bed, over the trials
   for (int trial = 0; trial < 5; ++trial) {
     Eigen::Matrix2Xd x, v, a;
     RandomConfiguration(m, rng, x, v, a);
+    for (int j = j0; sea && j <= j1; ++j) {
+      const double p = m.seabed.y - x(1, j);  // pressing: N = k p - c v_y > 0
+      grounded += p > 0 && m.seabed_stiffness[j] * p > m.seabed_damping[j] * v(1, j);
+    }
     ForceWorkspace ws(m.links);
     auto forces = [&](const Eigen::Matrix2Xd& xx, const Eigen::Matrix2Xd& vv) {
       ComputeGeometry(xx, ws.geometry);
@@ -667,11 +686,16 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio) {
     worst_ma = std::max(worst_ma, RelativeError(Dense(i0), dMadx));
     worst_m = std::max(worst_m, RelativeError(Dense(i1) - Dense(i0), M));
   }
-  std::printf("[ jacobian ] axial damping ratio %.2f: largest relative error over 5 random "
+  std::printf("[ jacobian ] axial damping ratio %.2f%s: largest relative error over 5 random "
               "states: dF/dx %.2e, dF/dv %.2e, d(M a)/dx %.2e, M %.2e\n",
-              damping_ratio, worst_x, worst_v, worst_ma, worst_m);
+              damping_ratio, sea ? ", seabed and current profile" : "", worst_x, worst_v,
+              worst_ma, worst_m);
   // 1e-6: the finite differences are good to ~1e-9 (see above); a missing or wrong term is
   // O(1) of its block, and each kind of term is checked on its own scale.
+  if (sea) {
+    std::printf("[ jacobian ] %d of the 5 x %d free stations pressing on the bed\n", grounded, n);
+    EXPECT_GT(grounded, 10);  // the bed's terms are exercised
+  }
   EXPECT_LT(worst_x, 1e-6);
   EXPECT_LT(worst_v, 1e-6);
   EXPECT_LT(worst_ma, 1e-6);
@@ -686,6 +710,15 @@ TEST(ImplicitIntegrator, AnalyticJacobianMatchesCentralDifferences) {
 // tension c dL/dt depends on the positions through the links' directions and on the velocities.
 TEST(ImplicitIntegrator, AnalyticJacobianWithAxialDampingMatchesCentralDifferences) {
   ExpectJacobianMatchesCentralDifferences(0.2);
+}
+
+// With a seabed (its spring, its dashpot and the regularised friction, which depends on both
+// velocities and, through the normal force, on the elevation) and a sheared current profile
+// (the drag's relative velocity taken at each link's midpoint elevation, the prism's at its
+// station): the stations below y = 0.3 m press on the bed in these random states, and the
+// profile's four points fall among the stations' elevations.
+TEST(ImplicitIntegrator, AnalyticJacobianWithSeabedAndCurrentProfileMatchesCentralDifferences) {
+  ExpectJacobianMatchesCentralDifferences(0.2, true);
 }
 }  // namespace
 }  // namespace cablefilm

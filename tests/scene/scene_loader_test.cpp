@@ -2,6 +2,7 @@
 // the error must name the file, the key and what was expected. Good scenes load, with defaults.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -628,6 +629,86 @@ TEST_F(TableMotion, StrictRows) {
   EXPECT_EQ(s.end.table[2][0], 5.0);
   WriteFile("ok2.csv", "0,0,0\n1,0.5,0.1");  // no header, no final newline
   EXPECT_EQ(ParseScene(TableScene("ok2.csv"), scene_).end.table.size(), 2u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Issue 10: [seabed] and a current profile.
+
+TEST(SceneLoader, SeabedLoadsWithDefaults) {
+  const SceneDef s = ParseScene(kBase + "\n[seabed]\ny = -2.5\n", kFile);
+  ASSERT_TRUE(s.seabed.present);
+  EXPECT_EQ(s.seabed.y, -2.5);
+  EXPECT_EQ(s.seabed.stiffness, 3e7);     // N/m per m of line
+  EXPECT_LT(s.seabed.damping, 0);         // critical for each station
+  EXPECT_EQ(s.seabed.friction, 0.0);
+  EXPECT_EQ(s.seabed.friction_velocity, 0.01);
+  const CableModel m = BuildModel(s);
+  ASSERT_TRUE(m.seabed.present);
+  // Station 1: half of each of its two links of 45.72 / 30 m.
+  EXPECT_DOUBLE_EQ(m.seabed_stiffness[1], 3e7 * 45.72 / 30);
+  EXPECT_GT(m.seabed_damping[1], 0);
+  EXPECT_FALSE(ParseScene(kBase, kFile).seabed.present);  // no table, no seabed
+  const SceneDef t = ParseScene(kBase + "\n[seabed]\ny = 0\nstiffness = 1e6\ndamping = 2e3\n"
+                                        "friction = 0.6\nfriction_velocity = 0.05\n",
+                                kFile);
+  EXPECT_EQ(t.seabed.y, 0.0);  // the anchor may rest on it
+  EXPECT_EQ(t.seabed.stiffness, 1e6);
+  EXPECT_EQ(t.seabed.damping, 2e3);
+  EXPECT_EQ(t.seabed.friction, 0.6);
+  EXPECT_EQ(t.seabed.friction_velocity, 0.05);
+  EXPECT_DOUBLE_EQ(BuildModel(t).seabed_damping[1], 2e3 * 45.72 / 30);
+}
+
+TEST(SceneLoader, SeabedErrors) {
+  ExpectError(kBase + "\n[seabed]\nstiffness = 1e7\n", "seabed.y", {"missing"});
+  // The line of y: after kBase's lines, a blank one and [seabed].
+  const std::string line =
+      ":" + std::to_string(std::count(kBase.begin(), kBase.end(), '\n') + 3) + ":";
+  ExpectError(kBase + "\n[seabed]\ny = 0.5\n", "seabed.y",
+              {"above the start end", "ends.start.position y = 0 m", line});
+  // The trochoid end goes down to 30.48 - 1.8288 m.
+  ExpectError(With("position = [0.0, 0.0]", "position = [0.0, 40.0]") + "\n[seabed]\ny = 29\n",
+              "seabed.y", {"above the end end", "down to 28.6512 m as it moves"});
+  ExpectError(kBase + "\n[seabed]\ny = -1\nstiffness = 0\n", "seabed.stiffness",
+              {"N/m per m of line", "from 1 to 1e12"});
+  ExpectError(kBase + "\n[seabed]\ny = -1\ndamping = -3\n", "seabed.damping", {">= 0"});
+  ExpectError(kBase + "\n[seabed]\ny = -1\nfriction = 11\n", "seabed.friction",
+              {"Coulomb", "at most 10"});
+  ExpectError(kBase + "\n[seabed]\ny = -1\nfriction_velocity = 0\n", "seabed.friction_velocity",
+              {"m/s", "1e-9 to 1000"});
+  ExpectError(kBase + "\n[seabed]\ny = -1\nfrction = 0.5\n", "seabed.frction", {"unknown key"});
+  ExpectError(kBase + "\n[seabed]\ny = \"deep\"\n", "seabed.y", {"elevation in m"});
+  ExpectError("seabed = 3\n" + kBase, "seabed", {"expected a table"});
+}
+
+TEST(SceneLoader, CurrentProfile) {
+  const SceneDef s =
+      ParseScene(With("current = 0.0", "current = [[-10, 0.2], [0.0, 1.0], [5, 1.5]]"), kFile);
+  ASSERT_EQ(s.environment.current_profile.size(), 3u);
+  EXPECT_EQ(s.environment.current, 0.0);
+  const CableModel m = BuildModel(s);
+  EXPECT_DOUBLE_EQ(m.CurrentAt(-5.0), 0.6);
+  EXPECT_DOUBLE_EQ(m.CurrentAt(-50.0), 0.2);
+  EXPECT_DOUBLE_EQ(m.CurrentAt(50.0), 1.5);
+  // One pair: a uniform current written as a table.
+  EXPECT_DOUBLE_EQ(BuildModel(ParseScene(With("current = 0.0", "current = [[3, -0.4]]"), kFile))
+                       .CurrentAt(-20.0),
+                   -0.4);
+  const std::string key = "environment.current";
+  ExpectError(With("current = 0.0", "current = []"), key, {"from 1 to 10000 pairs", "got 0"});
+  ExpectError(With("current = 0.0", "current = [[0, 1, 2]]"), key + "[0]", {"[y, speed]"});
+  ExpectError(With("current = 0.0", "current = [3]"), key + "[0]", {"[y, speed]"});
+  ExpectError(With("current = 0.0", "current = [[0, 1], [0, 2]]"), key + "[1]",
+              {"increase strictly", "y = 0 m after 0 m"});
+  ExpectError(With("current = 0.0", "current = [[0, 1], [-1, 2]]"), key + "[1]",
+              {"increase strictly"});
+  ExpectError(With("current = 0.0", "current = [[0, 1e4]]"), key + "[0]",
+              {"speed in m/s", "-1000 to 1000"});
+  ExpectError(With("current = 0.0", "current = [[2e6, 1]]"), key + "[0]", {"elevation in m"});
+  ExpectError(With("current = 0.0", "current = [[0, nan]]"), key + "[0]", {"non-finite"});
+  ExpectError(With("current = 0.0", "current = [[0, \"fast\"]]"), key + "[0]", {"speed in m/s"});
+  ExpectError(With("current = 0.0", "current = \"fast\""), key,
+              {"a speed in m/s", "or a profile [[y, speed], ...]"});
 }
 
 }  // namespace
