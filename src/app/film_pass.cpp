@@ -7,6 +7,7 @@
 
 #include "core/cancel.h"
 #include "core/error.h"
+#include "render/cable_panel.h"
 #include "render/film_writer.h"
 #include "render/time_trace.h"
 #include "scene/text_escape.h"
@@ -73,6 +74,11 @@ FilmSpec MakeSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
   spec.x_max = hi.x();
   spec.y_min = lo.y();
   spec.y_max = hi.y();
+  if (m.seabed.present) {  // the bed in view, with a strip of ground below it
+    spec.seabed = true;
+    spec.seabed_y = m.seabed.y;
+    spec.y_min = std::min(spec.y_min, m.seabed.y - SeabedMargin(spec.y_max - spec.y_min));
+  }
   return spec;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/cable_panel.h"
 #include "render/plot_layout.h"
 
 namespace cablefilm {
@@ -158,6 +159,10 @@ LiveFrameInput LiveHistory::MakeInput(const std::string& status) const {
   in.x_max = box_[1];
   in.y_min = box_[2];
   in.y_max = box_[3];
+  in.seabed = scenery_.seabed;
+  in.seabed_y = scenery_.seabed_y;
+  if (in.seabed)  // the bed in view, with a strip of ground below it
+    in.y_min = std::min(in.y_min, in.seabed_y - SeabedMargin(in.y_max - in.y_min));
   // The panels are shaped by the box over the whole run so far, so they do not move as the
   // cable swings.
   in.layout_aspect = (union_box_[1] - union_box_[0]) / std::max(union_box_[3] - union_box_[2], 1e-9);

@@ -24,6 +24,8 @@ struct LiveScenery {
   CableSnapshot equilibrium;               // the initial state, t = 0
   std::string reference_label = "equilibrium";  // its name ("initial state (straight)")
   double window = 60;                      // width of the time plot [s]
+  bool seabed = false;                     // a flat seabed at seabed_y [m]
+  double seabed_y = 0;
 };
 
 class LiveHistory {

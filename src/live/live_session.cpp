@@ -51,6 +51,8 @@ LiveScenery MakeScenery(const SceneDef& scene, const LiveSimulation& sim) {
   s.equilibrium = ToSnapshot(0, sim.initial_state().x, sim.initial_tensions());
   if (scene.initial == InitialStateKind::kStraight) s.reference_label = kStraightStateLabel;
   s.window = scene.simulation.duration;
+  s.seabed = m.seabed.present;
+  s.seabed_y = m.seabed.y;
   return s;
 }
 

@@ -1,5 +1,8 @@
 #include "render/cable_panel.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "render/cable_style.h"
 #include "render/plot_axes.h"
 
@@ -14,7 +17,8 @@ bool Inside(int j, std::size_t n) { return j >= 0 && static_cast<std::size_t>(j)
 
 PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::string& main_label,
                          const std::string& companion_label, const std::string& path_label,
-                         Rgba swatch, const Theme& th, const std::string& reference_label) {
+                         Rgba swatch, const Theme& th, const std::string& reference_label,
+                         bool seabed) {
   PanelHead head;
   head.title = "Cable shape (to scale)";
   if (companion)  // the cables' names first, on a row of their own when space is short
@@ -31,6 +35,7 @@ PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::str
   if (!marks.free_ends.empty())
     marks_row.push_back({LegendEntry::kRing, th.marker_fill, "free end"});
   marks_row.push_back({LegendEntry::kDash, th.equilibrium, reference_label});
+  if (seabed) marks_row.push_back({LegendEntry::kLine, th.seabed, "seabed"});
   head.groups.push_back(marks_row);
   return head;
 }
@@ -46,6 +51,12 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
   DrawAxes(p, in.world, "x [m]", "y [m]", th, 10, 5);
 
   auto world = [&](double x, double y) { return in.world.ToPixel(x, y); };
+  if (in.seabed_y && std::isfinite(*in.seabed_y)) {  // beneath everything: the ground, its line
+    const PixelRect& r = in.world.rect;
+    const float y = std::clamp(in.world.PixelY(*in.seabed_y), r.y0, r.y1);
+    if (y < r.y1) p.Rect({r.x0, y, r.x1, r.y1}, Mix(th.seabed, th.panel, 0.22f));
+    p.Line({r.x0, y}, {r.x1, y}, 2 * k, th.seabed);
+  }
   if (in.equilibrium && in.equilibrium->x.size() == snap.x.size() &&
       in.equilibrium->y.size() == snap.x.size()) {
     std::vector<Vec2f> eq;

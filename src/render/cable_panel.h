@@ -1,8 +1,9 @@
 #pragma once
 // The cable's shape to scale, coloured link by link on the tension colour map: the cable now
 // (over its companion, when the snapshot has one), the equilibrium shape dashed, the paths of
-// the moving ends, and markers at the weights and at the ends by their role (fixed, moving,
-// free). The colour bar is drawn
+// the moving ends, markers at the weights and at the ends by their role (fixed, moving,
+// free), and the seabed when there is one (its line, the ground below it shaded, so the part of
+// the line resting on it shows as lying along the line). The colour bar is drawn
 // separately (colorbar_panel.h) in the space the layout leaves at the panel's right.
 #include <string>
 #include <vector>
@@ -24,12 +25,13 @@ struct CableMarks {              // stations drawn with a marker; indices outsid
 
 // The panel's title and legend: an entry per kind of marker present, the two cables' names
 // when a companion is drawn, the end path (named `path_label`) and the dashed initial shape
-// (named `reference_label`: "equilibrium", or "initial state (straight)" for a straight start).
-// `swatch` colours the cables' entries (a mid colour of the map).
+// (named `reference_label`: "equilibrium", or "initial state (straight)" for a straight start),
+// and the seabed when `seabed`. `swatch` colours the cables' entries (a mid colour of the map).
 PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::string& main_label,
                          const std::string& companion_label, const std::string& path_label,
                          Rgba swatch, const Theme& th,
-                         const std::string& reference_label = "equilibrium");
+                         const std::string& reference_label = "equilibrium",
+                         bool seabed = false);
 
 // Borrowed for one call: the pointers are not kept.
 struct CablePanelInput {
@@ -44,9 +46,14 @@ struct CablePanelInput {
   CableMarks marks;
   // Paths of the moving ends: polylines in world coordinates [m]; null = none.
   const std::vector<std::vector<Vec2f>>* end_paths = nullptr;
+  const double* seabed_y = nullptr;  // the seabed's elevation [m]; null = no seabed
 };
 
 void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& colormap,
                     const Theme& th);
+
+// How far below a seabed the world box reaches, for a box `height` tall [m]: a strip of ground
+// (the film's and the live view's boxes are the cable's, whose anchor often lies on the bed).
+inline double SeabedMargin(double height) { return 0.04 * height; }
 
 }  // namespace cablefilm

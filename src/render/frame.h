@@ -49,6 +49,8 @@ struct FilmSpec {                          // fixed for the whole film
   double duration = 0;                     // simulated seconds the film covers
   double tension_min = 0, tension_max = 1; // colour and plot range [N], fixed for the film
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // world box of the cable over the run [m]
+  bool seabed = false;                     // a flat seabed, drawn in the cable panel
+  double seabed_y = 0;                     // its elevation [m]
   // Companion cable (see CableSnapshot::cx): drawn on the same tension scale. `label` names the
   // main cable (e.g. "elastic"), `companion_label` the companion (e.g. "inextensible"); a
   // non-empty companion_label means every snapshot carries a companion. The box above must

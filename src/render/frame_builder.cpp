@@ -61,7 +61,7 @@ FilmHeads MakeFilmHeads(const FilmSpec& spec, bool companion, Rgba swatch, const
   const CableMarks marks{spec.weight_stations, spec.fixed_ends, spec.moving_ends, spec.free_ends};
   FilmHeads h;
   h.cable = CablePanelHead(marks, companion, MainLabel(spec), CompanionLabel(spec), "its path",
-                           swatch, th, ReferenceLabel(spec));
+                           swatch, th, ReferenceLabel(spec), spec.seabed);
   h.tension = TensionPanelHead(companion, named, companion && CompanionEquilibrium(spec),
                                MainLabel(spec), CompanionLabel(spec), "min\u2013max so far", th,
                                ReferenceLabel(spec));
@@ -292,6 +292,7 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
                  std::make_move_iterator(lines.end()));
   }
   cable.end_paths = &paths;
+  if (spec.seabed) cable.seabed_y = &spec.seabed_y;
   DrawCablePanel(p, cable, colormap, th);
 
   // The colour bar, with a mark at the largest tension now (and the companion's).

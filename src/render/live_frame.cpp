@@ -22,7 +22,8 @@ struct LiveHeads {
 LiveHeads MakeLiveHeads(const LiveFrameInput& in, Rgba swatch, const Theme& th) {
   LiveHeads h;
   const CableMarks marks{in.weight_stations, in.fixed_ends, in.moving_ends, in.free_ends};
-  h.cable = CablePanelHead(marks, false, "", "", "recent path", swatch, th, in.reference_label);
+  h.cable = CablePanelHead(marks, false, "", "", "recent path", swatch, th, in.reference_label,
+                           in.seabed);
   h.tension = TensionPanelHead(false, false, false, "", "",
                                in.link_min.empty() ? "" : "min\u2013max so far", th,
                                in.reference_label);
@@ -156,6 +157,7 @@ Frame MakeLiveFrame(const LiveFrameInput& in, int width, int height, const Color
   cable.equilibrium = &in.equilibrium;
   cable.marks = {in.weight_stations, in.fixed_ends, in.moving_ends, in.free_ends};
   cable.end_paths = &in.end_paths;
+  if (in.seabed) cable.seabed_y = &in.seabed_y;
   DrawCablePanel(p, cable, colormap, th);
 
   ColorBarInput bar;

@@ -97,6 +97,21 @@ TEST(LiveHistory, BoxAlwaysHoldsTheCableAndShrinksSlowly) {
   }
 }
 
+// A seabed is passed on to the frame, and the box reaches below it (a strip of ground) even when
+// the line lies on it.
+TEST(LiveHistory, SeabedInViewWithGroundBelowIt) {
+  LiveScenery scenery = Scenery(60);
+  scenery.seabed = true;
+  scenery.seabed_y = 0;  // the line lies on it
+  LiveHistory h(scenery);
+  h.Add(0.1, Line(8.0), Eigen::VectorXd::Constant(10, 1000));
+  const LiveFrameInput in = h.MakeInput("live");
+  EXPECT_TRUE(in.seabed);
+  EXPECT_EQ(in.seabed_y, 0.0);
+  EXPECT_LT(in.y_min, 0.0);
+  EXPECT_FALSE(LiveHistory(Scenery(60)).MakeInput("live").seabed);
+}
+
 TEST(LiveHistory, ResetForgetsTheRunButNotALockedRange) {
   LiveHistory h(Scenery(60));
   h.Add(1.0, Line(3), Eigen::VectorXd::Constant(10, 3000));

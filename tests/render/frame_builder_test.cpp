@@ -321,6 +321,46 @@ TEST(MakeFrame, CompanionLegendsNameBothCables) {
   }
 }
 
+// A seabed: its line across the cable plot at its elevation, the ground below it shaded (drawn
+// before the cable, so the line resting on it lies over it), and a legend entry; none without.
+TEST(MakeFrame, SeabedLineGroundAndLegend) {
+  FilmSpec spec = testing::StraightSpec();
+  spec.seabed = true;
+  spec.seabed_y = spec.y_min + 0.25 * (spec.y_max - spec.y_min);
+  const CableSnapshot snap = testing::StraightSnapshot(1.0);
+  FilmHistory history(spec);
+  history.Add(snap);
+  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  const Theme th = Theme::Dark();
+  const Frame frame = MakeFrame(spec, history, snap, L, Colormap("viridis"), th);
+  const float y = L.cable.PixelY(spec.seabed_y);
+  int line = -1, ground = -1, first_cable = -1;
+  for (std::size_t i = 0; i < frame.shapes.size(); ++i) {
+    const Shape& s = frame.shapes[i];
+    if (s.kind == ShapeKind::kSegment && SameColor(s.color, th.seabed) && s.a.y == y &&
+        s.b.y == y && s.a.x == L.cable.rect.x0 && s.b.x == L.cable.rect.x1)
+      line = static_cast<int>(i);
+    if (s.kind == ShapeKind::kRect && SameColor(s.color, Mix(th.seabed, th.panel, 0.22f)) &&
+        s.a.y == y && s.b.y == L.cable.rect.y1)
+      ground = static_cast<int>(i);
+    if (first_cable < 0 && s.kind == ShapeKind::kSegment && s.size == L.cable_width)
+      first_cable = static_cast<int>(i);
+  }
+  EXPECT_GE(line, 0);
+  EXPECT_GE(ground, 0);
+  EXPECT_LT(line, first_cable);
+  EXPECT_LT(ground, first_cable);
+  int legend = 0;
+  for (const TextItem& t : frame.texts) legend += t.text == "seabed" && L.cable_panel.Contains(t.pos);
+  EXPECT_EQ(legend, 1);
+  const FilmSpec plain = testing::StraightSpec();
+  FilmHistory h2(plain);
+  const Frame f2 = MakeFrame(plain, h2, snap, MakeFrameLayout(plain, 1280, 720),
+                             Colormap("viridis"), th);
+  for (const TextItem& t : f2.texts) EXPECT_NE(t.text, "seabed");
+  for (const Shape& s : f2.shapes) EXPECT_FALSE(SameColor(s.color, th.seabed));
+}
+
 TEST(MakeFrame, CompanionTensionCurveAndMaxTrace) {
   const FilmSpec spec = testing::StraightCompanionSpec();
   FilmHistory history(spec);

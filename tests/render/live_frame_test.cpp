@@ -106,6 +106,25 @@ TEST(LiveFrame, MarkersAreDashedLinesAtTheirTimeWithTheirLabel) {
   EXPECT_EQ(FindText(frame, "old"), nullptr);
 }
 
+// A seabed: the cable panel draws its line across the plot at its elevation and names it.
+TEST(LiveFrame, SeabedLineAndLegend) {
+  LiveFrameInput in = StraightLive();
+  in.seabed = true;
+  in.seabed_y = in.y_min + 0.25 * (in.y_max - in.y_min);
+  const Theme th = Theme::Dark();
+  const FrameLayout L = MakeLiveFrameLayout(in, 1280, 720);
+  const Frame f = MakeLiveFrame(in, 1280, 720, Colormap("viridis"), th);
+  const float y = L.cable.PixelY(in.seabed_y);
+  int line = 0;
+  for (const Shape& s : f.shapes)
+    line += s.kind == ShapeKind::kSegment && SameColor(s.color, th.seabed) && s.a.y == y &&
+            s.b.y == y;
+  EXPECT_EQ(line, 1);
+  EXPECT_NE(FindText(f, "seabed"), nullptr);
+  EXPECT_EQ(FindText(MakeLiveFrame(StraightLive(), 1280, 720, Colormap("viridis"), th), "seabed"),
+            nullptr);
+}
+
 TEST(LiveFrame, CloseMarkersKeepTheNewestLabelAndLongLabelsAreCut) {
   LiveFrameInput in = StraightLive();
   in.markers = {{30, "first"}, {30.05, "second"}, {40, std::string(60, 'x')}};
