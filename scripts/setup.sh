@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages cablefilm needs that are not installed yet (Debian 12).
-# With --tests also what the tests need: a headless browser and Python's WebSocket client.
+# With --tests also what the tests need: a headless browser and Python's WebSocket client, and
+# clang with its sanitizer and libFuzzer runtimes (the sanitizer build and the scene fuzzer).
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
@@ -10,7 +11,8 @@ packages=(
   libcivetweb-dev libturbojpeg0-dev nlohmann-json3-dev libnetcdf-dev
 )
 if [ "${1:-}" = "--tests" ]; then
-  packages+=(python3 chromium chromium-driver python3-selenium python3-websocket)
+  packages+=(python3 chromium chromium-driver python3-selenium python3-websocket
+             clang libclang-rt-14-dev llvm)
   packages+=(python3-distributed)   # examples/dask_sweep.py, tested on a local Dask cluster
   packages+=(python3-xarray python3-netcdf4)  # results.nc opened in xarray (netcdf_xarray_test)
 fi

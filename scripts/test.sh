@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs every test: the optimised build, then the
-# AddressSanitizer + UndefinedBehaviorSanitizer build.
+# Installs what is missing, builds, and runs every test: the optimised build (GCC), then the
+# sanitizer build (clang: AddressSanitizer + UndefinedBehaviorSanitizer with float-cast-overflow)
+# with the scene fuzzer, run for a bounded time (FUZZ_SECONDS, default 90).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh --tests
@@ -11,6 +12,8 @@ ctest --test-dir build -j"$jobs" --output-on-failure
 # Mesa's software rasteriser keeps some allocations for the process lifetime: not our leaks.
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCABLEFILM_SANITIZE=ON
-cmake --build build-asan -j"$jobs"
-ctest --test-dir build-asan -j"$jobs" --output-on-failure
+cmake -S . -B build-clang -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_COMPILER=clang++ -DCABLEFILM_SANITIZE=ON -DCABLEFILM_FUZZ=ON
+cmake --build build-clang -j"$jobs"
+ctest --test-dir build-clang -j"$jobs" --output-on-failure
+bash scripts/fuzz.sh "${FUZZ_SECONDS:-90}" build-clang

@@ -63,23 +63,6 @@ int CoreCount() {
   return std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
 }
 
-std::string ReadSceneText(const std::string& path) {
-  const std::string name = EscapeText(path);
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw Error(name + ": is a directory; expected a scene file (TOML)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(name + ": cannot open the scene file: " + std::strerror(errno));
-  std::string text;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxSceneBytes)
-      throw Error(name + ": larger than " + std::to_string(kMaxSceneBytes >> 20) +
-                  " MiB; expected a scene file of at most that size");
-  }
-  return text;
-}
-
 // "environment.current = 0.5, ends.end.period = 8"
 std::string DescribeValues(const SweepCases& cases, std::size_t i) {
   std::string text;
@@ -203,7 +186,7 @@ class Sweep {
       : scene_path_(std::move(scene_path)), options_(o) {}
 
   int Run() {
-    const std::string text = ReadSceneText(scene_path_);
+    const std::string text = ReadSceneFile(scene_path_);
     SweepCases listed;
     if (!options_.cases_csv.empty()) listed = ReadCasesCsv(options_.cases_csv);
     cases_ = ExpandCases(listed, options_.sets);

@@ -47,7 +47,10 @@ void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::V
     const Eigen::Matrix2d tt = t * t.transpose();
     LinkBlocks b;
     // Tension T t on station k, -T t on k+1: axial stiffness (taut only) and geometric T/L.
-    const double dTdL = L > m.rest_length[k] ? m.axial_stiffness[k] / m.rest_length[k] : 0.0;
+    // dT/dL = EA/l on a taut link, 0 on a slack one and on a taut one whose axial damping
+    // (a link shortening fast) holds its tension at 0 (forces.cpp: T = max(0, EA e + c dL/dt)).
+    const double dTdL =
+        L > m.rest_length[k] && tension[k] > 0 ? m.axial_stiffness[k] / m.rest_length[k] : 0.0;
     const Eigen::Matrix2d G =
         dTdL * tt + (tension[k] / L) * (Eigen::Matrix2d::Identity() - tt);
     b.fa_dd = G;

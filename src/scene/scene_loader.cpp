@@ -641,7 +641,7 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
   return scene;
 }
 
-SceneDef LoadScene(const std::string& path) {
+std::string ReadSceneFile(const std::string& path) {
   const std::string name = EscapeText(path);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
@@ -658,7 +658,9 @@ SceneDef LoadScene(const std::string& path) {
                   " MiB; expected a scene file of at most that size");
   }
   if (in.bad()) throw Error(name + ": cannot read the scene file");
-  return ParseScene(text, path);
+  return text;
 }
+
+SceneDef LoadScene(const std::string& path) { return ParseScene(ReadSceneFile(path), path); }
 
 }  // namespace cablefilm

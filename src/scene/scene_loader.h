@@ -9,6 +9,8 @@
 namespace cablefilm {
 
 SceneDef LoadScene(const std::string& path);
+// The text of a scene file, at most kMaxSceneBytes (checked while reading: /dev/zero is refused).
+std::string ReadSceneFile(const std::string& path);
 SceneDef ParseScene(const std::string& text, const std::string& path);  // path: for messages
 
 }  // namespace cablefilm

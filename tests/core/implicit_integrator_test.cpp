@@ -599,9 +599,16 @@ void RandomConfiguration(const CableModel& m, std::mt19937& rng, Eigen::Matrix2X
     const double angle = 0.8 * u(rng);
     x.col(k + 1) = x.col(k) + ratio * m.rest_length[k] * Eigen::Vector2d(std::cos(angle), std::sin(angle));
   }
+  // Drawn one by one: the order in which a call's arguments are evaluated differs between
+  // compilers, and every compiler must test the same states (among them a taut link whose
+  // damping holds its tension at zero, which only clang's order drew before).
+  auto draw = [&](double scale) {
+    const double first = u(rng);
+    return Eigen::Vector2d(scale * first, scale * u(rng));
+  };
   for (int j = 0; j <= m.links; ++j) {
-    v.col(j) = 3.0 * Eigen::Vector2d(u(rng), u(rng));
-    a.col(j) = 10.0 * Eigen::Vector2d(u(rng), u(rng));
+    v.col(j) = draw(3.0);
+    a.col(j) = draw(10.0);
   }
 }
 
