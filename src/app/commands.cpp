@@ -85,6 +85,24 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
     std::printf("; a line resting on it sinks at most %.3g mm (station %d)\n", 1e3 * sink,
                 deepest);
   }
+  if (m.has_waves()) {
+    const Wave& w = m.wave;
+    const double kh = w.k * w.spec.depth;
+    std::printf("  waves (linear Airy, along +x): height %.4g m, period %.4g s, depth %.6g m, "
+                "still water level y = %.6g m: length %.6g m, k h = %.4g (%s), steepness H/L = "
+                "%.4g (breaks above %.4g), crest speed %.4g m/s, phase %.4g deg, ramp rate %.4g "
+                "1/s\n",
+                w.spec.height, w.spec.period, w.spec.depth, w.spec.surface_y, w.length(), kh,
+                kh > M_PI ? "deep" : kh < M_PI / 10 ? "shallow" : "intermediate depth",
+                w.steepness(), std::tanh(kh) / 7.0, w.omega / w.k, scene.waves.phase,
+                w.spec.ramp_rate);
+    for (const auto& [name, end] : {std::pair<const char*, const EndDef*>{"start", &scene.start},
+                                    {"end", &scene.end}})
+      if (end->follows_wave)
+        std::printf("  ends.%s follows the wave: surge %.4g x [%.4g deg], heave %.4g x "
+                    "[%.4g deg] of the wave's amplitude at its x\n",
+                    name, end->x_rao[0], end->x_rao[1], end->y_rao[0], end->y_rao[1]);
+  }
   const long steps = grid.outputs * grid.steps_per_output;
   if (m.law == LinkLaw::kElastic)
     std::printf("  stable time step of the explicit scheme %.4g s (stiffest at station %d)\n",

@@ -162,6 +162,31 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
       m.seabed_rest_depth[i] = std::max(std::abs(m.net_weight[i]) / m.seabed_stiffness[i], 1e-9);
     }
   }
+  if (env.waves.present) {
+    m.wave = MakeWave(env.waves, g);
+    m.station_buoyancy = Eigen::VectorXd::Zero(s + 1);
+    m.wet_band = Eigen::VectorXd::Zero(s + 1);
+    m.link_fluid_mass.resize(s);
+    j = 0;
+    for (const SectionSpec& sec : sections) {
+      for (int i = 0; i < sec.segments; ++i, ++j) {
+        const double l = m.rest_length[j], displaced = rho * sec.area * l;  // [kg]
+        m.link_fluid_mass[j] = displaced + m.virtual_mass[j];
+        for (int st : {j, j + 1}) {
+          m.station_buoyancy[st] += 0.5 * displaced * g;
+          m.wet_band[st] += 0.5 * l;
+        }
+      }
+    }
+    m.prism_added_mass = Eigen::Matrix2Xd::Zero(2, s + 1);
+    m.prism_fluid_mass = Eigen::Matrix2Xd::Zero(2, s + 1);
+    for (const PrismSpec& p : prisms) {
+      m.prism_added_mass.col(p.station) += rho * p.added_volume;
+      m.prism_fluid_mass.col(p.station) +=
+          rho * (p.added_volume + Eigen::Vector2d::Constant(p.volume));
+      m.station_buoyancy[p.station] += rho * p.volume * g;
+    }
+  }
   return m;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/end_motion.h"
+#include "core/waves.h"
 
 namespace cablefilm {
 
@@ -80,6 +81,17 @@ struct CableModel {
   Eigen::VectorXd seabed_rest_depth; // |W_j| / (k l_j) [m]: the penetration at which the
                                      // station's net weight rests on the bed (at least 1e-9 m;
                                      // size s+1; empty: no seabed)
+  // Waves (wave.spec.present; waves.h, wave_forces.h): the arrays below are sized only then.
+  Wave wave;
+  Eigen::VectorXd station_buoyancy;  // rho g (sigma l / 2 of each link + V*) [N] per station, the
+                                     // buoyancy lost above the surface (size s+1)
+  Eigen::VectorXd wet_band;          // l_j [m]: the station's share of line (half of each link),
+                                     // the band of depth over which it goes from dry to wet
+  Eigen::VectorXd link_fluid_mass;   // rho sigma l (1 + k) [kg] per link: Froude-Krylov plus
+                                     // the normal added mass e, on the water's normal
+                                     // acceleration (Morison's C_M = 1 + k)
+  Eigen::Matrix2Xd prism_added_mass; // rho (V^x, V^y) [kg] per station
+  Eigen::Matrix2Xd prism_fluid_mass; // rho (V* + V^x, V* + V^y) [kg] per station
   LinkLaw law = LinkLaw::kElastic;
 
   EndMotion start;                // station 0
@@ -98,8 +110,15 @@ struct CableModel {
   double CurrentSlope(double y) const {
     return current_profile.empty() ? 0.0 : current_profile.Slope(y);
   }
+  bool has_waves() const { return wave.spec.present; }
   bool has_current() const;  // anywhere non-zero
   double max_current() const;  // the largest |c(y)| over all y [m/s]
+  // min(m^x_j, m^y_j) [kg] in any state: without the prism's added mass when waves can lift it
+  // out of the water.
+  double SmallestPrismMass(int j) const {
+    return has_waves() ? (prism_mass.col(j) - prism_added_mass.col(j)).minCoeff()
+                       : prism_mass.col(j).minCoeff();
+  }
   bool prescribed(int j) const {
     return (j == 0 && start.prescribed()) || (j == links && end.prescribed());
   }
@@ -135,6 +154,7 @@ struct EnvironmentSpec {
   double current = 0;          // c [m/s]
   CurrentProfile current_profile;  // added to c (empty: uniform)
   SeabedSpec seabed;           // none unless present
+  WaveSpec waves;              // none unless present
 };
 
 // The model with its current (uniform and profile) multiplied by `factor`: the continuation of

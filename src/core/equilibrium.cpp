@@ -464,6 +464,13 @@ CableState SolveEquilibrium(const CableModel& m, EquilibriumReport* report,
 
 CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
                             EquilibriumReport* report_out, const EquilibriumOptions& options) {
+  if (m.has_waves()) {
+    // The mean state: the waves (and their surface) are left out, the line in calm water with
+    // the current; the waves' ramp starts the run from it.
+    CableModel calm = m;
+    calm.wave.spec.present = false;
+    return SolveEquilibrium(calm, guess, report_out, options);
+  }
   if (!m.start.prescribed() && !m.end.prescribed())
     throw Error("the cable needs at least one prescribed end (fixed or moving)");
   EquilibriumReport report;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/wave_forces.h"
+
 namespace cablefilm {
 namespace {
 
@@ -37,6 +39,7 @@ void Scatter(const CableModel& m, int k, const LinkBlocks& b, double kv, BlockTr
 void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::VectorXd& tension,
                       const Eigen::Matrix2Xd& v, double kv, BlockTridiagonal& system) {
   const bool profile = !m.current_profile.empty();
+  const bool waves = m.has_waves();  // then the drag is in AddWaveForceJacobian
   const int j0 = m.first_free(), j1 = m.last_free();
   auto free = [&](int j) { return j >= j0 && j <= j1; };
   Eigen::Vector2d current(m.current, 0.0);
@@ -64,7 +67,7 @@ void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::V
     }
     b.fb_dd = -b.fa_dd;
     // Normal drag D n / 2 on both stations, D = -f^D q |q|, q = n . (mean velocity - c).
-    if (m.drag_factor[k] != 0) {
+    if (m.drag_factor[k] != 0 && !waves) {
       const Eigen::Vector2d n(-t.y(), t.x());
       const Eigen::Matrix2d dn = NormalDerivative(t, L);
       const double ymid = profile ? 0.5 * (g.elevation[k] + g.elevation[k + 1]) : 0.0;
@@ -95,7 +98,8 @@ void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::V
   }
   // Prism drag -u f (.) rel, rel = v_j - c(y_j) e_x: a function of the station's own velocity,
   // and of its elevation through a current profile.
-  if (kv != 0 || profile) {
+  if (waves) AddWaveForceJacobian(m, g, v, kv, system);
+  if ((kv != 0 || profile) && !waves) {
     for (int j : m.weight_stations) {
       if (!free(j)) continue;
       if (profile) current.x() = m.CurrentAt(g.elevation[j]);
@@ -146,7 +150,9 @@ void AddInertiaJacobian(const CableModel& m, const LinkGeometry& g, const Eigen:
     const Eigen::Vector2d t = g.tangent.col(k);
     const Eigen::Vector2d n(-t.y(), t.x());
     const Eigen::Matrix2d dn = NormalDerivative(t, g.length[k]);
-    const double e = 0.5 * m.virtual_mass[k];
+    // With waves the added mass is that of the link's wet fraction (wave_forces.h).
+    const double e = 0.5 * m.virtual_mass[k] *
+                     (m.has_waves() ? 0.5 * (g.sea.wet[k] + g.sea.wet[k + 1]) : 1.0);
     for (int j : {k, k + 1}) {
       if (j < j0 || j > j1) continue;
       const Eigen::Vector2d aj = a.col(j);
@@ -156,6 +162,7 @@ void AddInertiaJacobian(const CableModel& m, const LinkGeometry& g, const Eigen:
       if (k + 1 <= j1) (j == k ? system.upper[j - j0] : system.diag[j - j0]) += D;
     }
   }
+  if (m.has_waves()) AddWaveInertiaJacobian(m, g, a, system);
 }
 
 }  // namespace cablefilm

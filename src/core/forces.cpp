@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/wave_forces.h"
+
 namespace cablefilm {
 
 void ForceWorkspace::Resize(int links) {
@@ -23,6 +25,11 @@ void ComputeGeometry(const Eigen::Matrix2Xd& x, LinkGeometry& g) {
     g.length[j] = L;
     g.tangent.col(j) = L > 0 ? Eigen::Vector2d(d / L) : Eigen::Vector2d::Zero();
   }
+}
+
+void ComputeGeometry(const CableModel& m, double t, const Eigen::Matrix2Xd& x, LinkGeometry& g) {
+  ComputeGeometry(x, g);
+  if (m.has_waves()) ComputeSea(m, t, x, g.sea);
 }
 
 void ComputeHookeTensions(const CableModel& m, const LinkGeometry& g, Eigen::VectorXd& tension) {
@@ -85,6 +92,11 @@ void AddSeabedForces(const CableModel& m, const LinkGeometry& g, const Eigen::Ma
 
 void AddExternalForces(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
                        Eigen::Matrix2Xd& force) {
+  if (m.has_waves()) {  // wave_forces.cpp: drag, inertia, weight and buoyancy in waves
+    AddWaveExternalForces(m, g, v, force);
+    if (m.seabed.present) AddSeabedForces(m, g, v, force);
+    return;
+  }
   const bool profile = !m.current_profile.empty();
   Eigen::Vector2d current(m.current, 0.0);  // c, or c(y) at the link's midpoint
   // Normal drag on each link, half to each of its stations: D n / 2 with n = (-sin, cos).
@@ -124,6 +136,7 @@ void ComputeStationForces(const CableModel& m, const LinkGeometry& g,
 }
 
 Eigen::Matrix2d StationInertia(const CableModel& m, const LinkGeometry& g, int j) {
+  if (m.has_waves()) return WaveStationInertia(m, g, j);
   // m_j + m^x_j on the diagonal, plus half the entrained-fluid mass e of each adjoining link
   // acting along that link's normal n: e n n^T / 2 gives the I, J and -K terms of eq. (1).
   Eigen::Matrix2d M = Eigen::Vector2d(m.cable_mass[j] + m.prism_mass(0, j),
@@ -139,7 +152,7 @@ Eigen::Matrix2d StationInertia(const CableModel& m, const LinkGeometry& g, int j
 
 void ComputeAccelerations(const CableModel& m, double t, const Eigen::Matrix2Xd& x,
                           const Eigen::Matrix2Xd& v, ForceWorkspace& ws, Eigen::Matrix2Xd& a) {
-  ComputeGeometry(x, ws.geometry);
+  ComputeGeometry(m, t, x, ws.geometry);
   ComputeTensions(m, ws.geometry, v, ws.tension);
   ComputeStationForces(m, ws.geometry, ws.tension, v, ws.force);
   for (int j = m.first_free(); j <= m.last_free(); ++j) {

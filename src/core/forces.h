@@ -8,11 +8,23 @@
 
 namespace cablefilm {
 
+// The water at each station at one time (waves only: wave_forces.h fills it; empty otherwise).
+struct SeaState {
+  double t = 0;                       // the time it is for [s]
+  Eigen::Matrix2Xd velocity;          // water particle velocity (u, w) [m/s] (2 x s+1)
+  Eigen::Matrix2Xd acceleration;      // its local acceleration [m/s^2] (2 x s+1)
+  Eigen::Matrix4Xd velocity_gradient;      // d(u, w)/d(x, y) [1/s], column-major 2x2 per station
+  Eigen::Matrix4Xd acceleration_gradient;  // d(du/dt, dw/dt)/d(x, y) [1/s^2], likewise
+  Eigen::VectorXd wet;                // phi_j in [0, 1]: the station's wet fraction
+  Eigen::Matrix2Xd wet_gradient;      // d phi_j / d(x_j, y_j) [1/m]
+};
+
 struct LinkGeometry {
   Eigen::VectorXd length;    // L_{j+1/2} = |x_{j+1} - x_j| [m] (size s)
   Eigen::Matrix2Xd tangent;  // (cos theta, sin theta)_{j+1/2} (2 x s); zero for a zero-length link
   Eigen::VectorXd elevation;  // y_j of the stations [m] (size s+1): the seabed, the current
                               // profile
+  SeaState sea;               // the waves' water at the stations (only with waves)
 };
 
 struct ForceWorkspace {
@@ -25,6 +37,9 @@ struct ForceWorkspace {
 };
 
 void ComputeGeometry(const Eigen::Matrix2Xd& x, LinkGeometry& g);
+// The same, and with waves the sea at time t [s] (wave_forces.h): what the forces of a
+// simulation at time t need. Without waves it is the one above.
+void ComputeGeometry(const CableModel& m, double t, const Eigen::Matrix2Xd& x, LinkGeometry& g);
 
 // Eq. (2), with a compressed link slack: T = max(0, sigma E (L/l - 1)).
 void ComputeHookeTensions(const CableModel& m, const LinkGeometry& g, Eigen::VectorXd& tension);
@@ -54,11 +69,14 @@ void ComputeStationForces(const CableModel& m, const LinkGeometry& g,
                           Eigen::Matrix2Xd& force);
 
 // The external part (X_j, Y_j) only: drag, prism drag, weight and buoyancy, and the seabed's
-// reaction and friction (SeabedSpec) on the stations below it.
+// reaction and friction (SeabedSpec) on the stations below it. With waves also the water's
+// velocity in the drag, its acceleration (Morison inertia) and the surface (wave_forces.h);
+// g.sea must then be filled (ComputeGeometry with the model and the time).
 void AddExternalForces(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
                        Eigen::Matrix2Xd& force);
 
-// The inertia tensor of eq. (1) at station j: [[I_j, -K_j], [-K_j, J_j]] [kg].
+// The inertia tensor of eq. (1) at station j: [[I_j, -K_j], [-K_j, J_j]] [kg]. With waves the
+// added masses are those of the wet part (g.sea.wet; all wet if g.sea is empty).
 Eigen::Matrix2d StationInertia(const CableModel& m, const LinkGeometry& g, int j);
 
 // Accelerations of the stations whose motion is computed (free stations); prescribed ends get

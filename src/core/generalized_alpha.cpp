@@ -71,7 +71,7 @@ bool GeneralizedAlphaIntegrator::Solve(const CableModel& m, const CableState& s,
   for (int it = 1; it <= kMaxNewtonIterations; ++it) {
     ++stats_.newton_iterations;
     Kinematics(m, s, h, x_);
-    ComputeGeometry(x_, ws_.geometry);
+    ComputeGeometry(m, t1, x_, ws_.geometry);
     ComputeTensions(m, ws_.geometry, v_, ws_.tension);
     ComputeStationForces(m, ws_.geometry, ws_.tension, v_, ws_.force);
     system_.SetZero();
@@ -95,7 +95,7 @@ bool GeneralizedAlphaIntegrator::Solve(const CableModel& m, const CableState& s,
     if (!std::isfinite(dx_max)) return false;
     if (dx_max <= newton_tolerance_) {
       Kinematics(m, s, h, x_);
-      ComputeGeometry(x_, ws_.geometry);
+      ComputeGeometry(m, t1, x_, ws_.geometry);
       ComputeTensions(m, ws_.geometry, v_, ws_.tension);
       return true;
     }

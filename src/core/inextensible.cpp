@@ -59,7 +59,7 @@ void ConstraintSolver::Distribute(const CableModel& m, const LinkGeometry& g,
 void ConstraintSolver::Accelerations(const CableModel& m, double t, const Eigen::Matrix2Xd& x,
                                      const Eigen::Matrix2Xd& v, ForceWorkspace& ws,
                                      Eigen::Matrix2Xd& a) {
-  ComputeGeometry(x, ws.geometry);
+  ComputeGeometry(m, t, x, ws.geometry);
   Assemble(m, ws.geometry);
   ws.force.setZero();
   AddExternalForces(m, ws.geometry, v, ws.force);
@@ -139,7 +139,7 @@ double InextensibleIntegrator::StableSubstep(const CableModel& m) const {
   // the tension may rise within it.
   double lambda = 0;
   for (int j = m.first_free(); j <= m.last_free(); ++j) {
-    const double mj = m.cable_mass[j] + m.prism_mass.col(j).minCoeff();
+    const double mj = m.cable_mass[j] + m.SmallestPrismMass(j);
     double stiffness = 0;
     if (j > 0) stiffness += std::abs(ws_.tension[j - 1]) / m.rest_length[j - 1];
     if (j < m.links) stiffness += std::abs(ws_.tension[j]) / m.rest_length[j];
@@ -151,7 +151,7 @@ double InextensibleIntegrator::StableSubstep(const CableModel& m) const {
     // omega h <= 2 (sqrt(1 + 4 zeta^2) - 2 zeta), halved as above.
     double gamma = 0;
     for (int j = m.first_free(); j <= m.last_free(); ++j) {
-      const double mj = m.cable_mass[j] + m.prism_mass.col(j).minCoeff();
+      const double mj = m.cable_mass[j] + m.SmallestPrismMass(j);
       double stiffness = 2.0 * m.seabed_stiffness[j];  // at most twice the spring's (forces.cpp)
       if (j > 0) stiffness += 2.0 * std::abs(ws_.tension[j - 1]) / m.rest_length[j - 1];
       if (j < m.links) stiffness += 2.0 * std::abs(ws_.tension[j]) / m.rest_length[j];

@@ -11,7 +11,7 @@ StabilityLimit ComputeStabilityLimit(const CableModel& m) {
   // is at least m_j + min(m^x, m^y) (the normal added mass only adds). Gershgorin's bound on
   // the mass-scaled stiffness matrix M^-1/2 K M^-1/2, row j:
   //   (k_l + k_r)/m_j + k_l/sqrt(m_j m_{j-1}) + k_r/sqrt(m_j m_{j+1}).
-  auto inertia = [&](int j) { return m.cable_mass[j] + m.prism_mass.col(j).minCoeff(); };
+  auto inertia = [&](int j) { return m.cable_mass[j] + m.SmallestPrismMass(j); };
   // The same bound on M^-1/2 C M^-1/2 for the axial damping c gives gamma_max [1/s].
   auto coefficient = [&](const Eigen::VectorXd& per_link, int k, bool stiffness) {
     if (per_link.size() == 0) return 0.0;

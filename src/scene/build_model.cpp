@@ -28,6 +28,20 @@ EndMotion MakeEndMotion(const EndDef& e) {
 
 }  // namespace
 
+WaveSpec MakeWaveSpec(const SceneDef& scene) {
+  WaveSpec w;
+  const WavesDef& d = scene.waves;
+  if (!d.present) return w;
+  w.present = true;
+  w.height = d.height;
+  w.period = d.period;
+  w.depth = d.depth;
+  w.surface_y = d.surface_y;
+  w.phase = d.phase * M_PI / 180.0;
+  w.ramp_rate = d.ramp_rate;
+  return w;
+}
+
 int StationAt(const SceneDef& scene, double arc_length) {
   int station = 0;
   double start = 0;
@@ -85,6 +99,7 @@ CableModel BuildModel(const SceneDef& scene) {
   env.seabed.damping = scene.seabed.damping;
   env.seabed.friction = scene.seabed.friction;
   env.seabed.friction_velocity = scene.seabed.friction_velocity;
+  env.waves = MakeWaveSpec(scene);
   const LinkLaw law =
       scene.model == CableModelKind::kElastic ? LinkLaw::kElastic : LinkLaw::kInextensible;
   return BuildCableModel(sections, prisms, env, MakeEndMotion(scene.start),

@@ -25,6 +25,17 @@ struct SeabedDef {                 // [seabed]: a flat seabed (optional)
   double friction_velocity = 0.01; // v_f [m/s]: friction mu N tanh(v_x / v_f)
 };
 
+struct WavesDef {                  // [waves]: regular linear (Airy) waves along +x (optional)
+  bool present = false;
+  double height = 0;               // H [m], crest to trough (0: still water with a surface)
+  double period = 0;               // T [s]
+  double depth = 0;                // h [m], still water level to the bed; default
+                                   // surface_y - seabed.y with a [seabed]
+  double surface_y = 0;            // the still water level's elevation [m]
+  double phase = 0;                // [deg]: the phase of the surface at x = 0, t = 0 (0: a crest)
+  double ramp_rate = 0;            // nu [1/s] of eq. (3)'s ramp R(t); default 4 / T
+};
+
 struct MaterialDef {
   std::string name;
   double diameter = 0;                 // d [m], for drag
@@ -63,6 +74,12 @@ struct EndDef {
   double ramp_rate = 0;                   // nu [1/s]
   std::string table_file;                 // resolved path of the CSV (t, x, y), offsets from position
   std::vector<std::array<double, 3>> table;  // rows (t [s], dx [m], dy [m])
+  // motion = "wave": the end follows the wave at its rest x through these response amplitude
+  // operators, [ratio of the wave's amplitude (m/m), phase lead (deg)]; the loader turns them
+  // into the trochoid of eq. (3) above (amplitudes, the wave's period and ramp).
+  bool follows_wave = false;
+  std::array<double, 2> x_rao{};
+  std::array<double, 2> y_rao{};
 };
 
 enum class CableModelKind { kElastic, kInextensible };
@@ -103,6 +120,7 @@ struct SceneDef {
   std::string title;
   EnvironmentDef environment;
   SeabedDef seabed;
+  WavesDef waves;
   std::vector<MaterialDef> materials;
   CableModelKind model = CableModelKind::kElastic;
   std::vector<SectionDef> sections;

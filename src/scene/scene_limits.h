@@ -32,6 +32,11 @@ constexpr double kMinSeabedStiffness = 1, kMaxSeabedStiffness = 1e12;  // N/m pe
 constexpr double kMaxSeabedDamping = 1e12;  // N s/m per m of line
 constexpr double kMaxFriction = 10;         // Coulomb coefficient
 constexpr double kMinFrictionVelocity = 1e-9, kMaxFrictionVelocity = 1e3;  // m/s
+constexpr double kMaxWaveHeight = 1e3;     // m
+constexpr double kMinWavePeriod = 1e-3, kMaxWavePeriod = 1e6;  // s
+constexpr double kMaxPhase = 360;           // deg, either way
+constexpr double kMaxRao = 1e3;             // m of motion per m of wave amplitude
+constexpr double kMaxWaveSteepness = 1.0 / 7.0;  // H / L before tanh(k h) (Miche 1944)
 constexpr double kMaxWeightMass = 1e9;      // kg
 constexpr double kMaxVolume = 1e6;          // m^3 (volumes, added volumes)
 constexpr double kMaxDragArea = 1e6;        // m^2

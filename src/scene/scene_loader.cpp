@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 
 #include "core/error.h"
+#include "core/waves.h"
 #include "scene/scene_limits.h"
 #include "scene/table_file.h"
 #include "scene/text_escape.h"
@@ -292,6 +293,48 @@ void ReadSeabed(TableReader& top, SceneDef& scene, const std::string& file) {
   r.Finish();
 }
 
+// [waves]: read after [environment] and [seabed] (the default depth is the seabed's). The wave
+// is checked against breaking: H / L at most tanh(k h) / 7 (Miche 1944: 1/7 in deep water,
+// H <= 0.88 h in shallow water), an error naming waves.height.
+void ReadWaves(TableReader& top, SceneDef& scene, const std::string& file) {
+  const toml::table* t = top.SubTable("waves", false);
+  if (!t) return;
+  TableReader r(*t, "waves", file);
+  WavesDef& w = scene.waves;
+  w.present = true;
+  w.height = r.Ranged("height", 0.0, true, 0.0, kMaxWaveHeight,
+                      " (crest to trough, in m; 0: still water with a surface)");
+  w.period = r.Ranged("period", 0.0, true, kMinWavePeriod, kMaxWavePeriod, " in s");
+  w.surface_y = r.Ranged("surface_y", 0.0, false, -kMaxLength, kMaxLength,
+                         " (the still water level's elevation in m)");
+  if (r.Has("depth") || !scene.seabed.present) {
+    w.depth = r.Positive("depth", " in m (still water level to the bed)", 0, kMaxLength);
+  } else {
+    r.Get("depth");
+    w.depth = w.surface_y - scene.seabed.y;
+    if (!(w.depth > 0))
+      r.Fail(t->get("surface_y"), "surface_y",
+             "expected the still water level above the seabed (seabed.y = " +
+                 TableReader::Fmt(scene.seabed.y) + " m) for the default depth, got " +
+                 TableReader::Fmt(w.surface_y) + " m; or give waves.depth");
+  }
+  w.phase = r.Ranged("phase", 0.0, false, -kMaxPhase, kMaxPhase, " in degrees");
+  w.ramp_rate = r.OptionalPositive("ramp_rate", 4.0 / w.period, " in 1/s", 0, kMaxRampRate);
+  if (!(scene.environment.gravity > 0))
+    r.Fail(t, "period", "expected gravity > 0 for waves (environment.gravity = 0)");
+  const double omega = 2.0 * M_PI / w.period;
+  const double k = WaveNumber(omega, scene.environment.gravity, w.depth);
+  const double L = 2.0 * M_PI / k, limit = kMaxWaveSteepness * std::tanh(k * w.depth) * L;
+  if (!(w.height <= limit))
+    r.Fail(t->get("height"), "height",
+           "the wave breaks: H / L = " + TableReader::Fmt(w.height / L) + " (L = " +
+               TableReader::Fmt(L) + " m at T = " + TableReader::Fmt(w.period) + " s in " +
+               TableReader::Fmt(w.depth) + " m of water, k h = " + TableReader::Fmt(k * w.depth) +
+               "); expected a height of at most " + TableReader::Fmt(limit) +
+               " m (H / L <= tanh(k h) / 7, Miche's limit; 1/7 in deep water)");
+  r.Finish();
+}
+
 // A prescribed end's lowest elevation over its motion [m]: its rest position less the
 // trochoid's largest vertical excursion (the ramp R(t) <= 1), or plus the table's lowest
 // offset (at its rows).
@@ -485,12 +528,53 @@ void CheckRunCounts(const toml::table& root, const SceneDef& scene, const std::s
   }
 }
 
-void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std::string& file) {
+// motion = "wave": [ratio, phase in degrees], the ratio at most kMaxRao.
+std::array<double, 2> ReadRao(TableReader& r, const std::string& key) {
+  const std::array<double, 2> rao =
+      r.Pair(key, {0, 0}, false, false, " ([amplitude ratio in m/m, phase in degrees])", kMaxRao);
+  if (!(rao[0] >= 0) || !(std::abs(rao[1]) <= kMaxPhase))
+    r.Fail(r.Get(key), key,
+           "expected [amplitude ratio from 0 to " + TableReader::Fmt(kMaxRao) +
+               ", phase in degrees from " + TableReader::Fmt(-kMaxPhase) + " to " +
+               TableReader::Fmt(kMaxPhase) + "], got [" + TableReader::Fmt(rao[0]) + ", " +
+               TableReader::Fmt(rao[1]) + "]");
+  return rao;
+}
+
+// The end's motion following the wave at its rest x, as eq. (3)'s trochoid: a response
+// r A cos(theta(x0, t) + p) with theta = k x0 - omega t + phase is
+// r A (cos(beta) cos(omega t) + sin(beta) sin(omega t)), beta = k x0 + phase + p.
+void FollowWave(const WavesDef& w, double gravity, EndDef& end) {
+  const double omega = 2.0 * M_PI / w.period;
+  const double k = WaveNumber(omega, gravity, w.depth);
+  const double A = 0.5 * w.height, deg = M_PI / 180.0;
+  for (int axis = 0; axis < 2; ++axis) {
+    const std::array<double, 2>& rao = axis == 0 ? end.x_rao : end.y_rao;
+    const double beta = k * end.position[0] + (w.phase + rao[1]) * deg;
+    std::array<double, 2>& amp = axis == 0 ? end.x_amplitudes : end.y_amplitudes;
+    amp = {rao[0] * A * std::cos(beta), rao[0] * A * std::sin(beta)};
+  }
+  end.period = w.period;
+  end.ramp_rate = w.ramp_rate;
+}
+
+void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std::string& file,
+             const SceneDef& scene) {
   const toml::table* t = ends.SubTable(which, true);
   TableReader r(*t, "ends." + which, file);
   end.position = r.Pair("position", {0, 0}, true, false, " in m", kMaxLength);
   const std::string motion =
-      r.Choice("motion", "fixed", {"fixed", "free", "trochoid", "table"});
+      r.Choice("motion", "fixed", {"fixed", "free", "trochoid", "table", "wave"});
+  if (motion == "wave") {
+    if (!scene.waves.present)
+      r.Fail(t->get("motion"), "motion",
+             "motion = \"wave\" follows the waves: expected a [waves] table");
+    end.motion = EndMotionKind::kTrochoid;
+    end.follows_wave = true;
+    end.x_rao = ReadRao(r, "x_rao");
+    end.y_rao = ReadRao(r, "y_rao");
+    FollowWave(scene.waves, scene.environment.gravity, end);
+  }
   if (motion == "fixed") end.motion = EndMotionKind::kFixed;
   if (motion == "free") end.motion = EndMotionKind::kFree;
   if (motion == "trochoid") {
@@ -535,6 +619,7 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
   scene.title = top.String("title", scene.name, false);
   ReadEnvironment(top, scene, file);
   ReadSeabed(top, scene, file);
+  ReadWaves(top, scene, file);
 
   bool elastic = true;
   if (const toml::table* cable = root.get_as<toml::table>("cable")) {
@@ -549,8 +634,8 @@ SceneDef ParseScene(const std::string& text, const std::string& file) {
   {
     const toml::table* ends = top.SubTable("ends", true);
     TableReader r(*ends, "ends", file);
-    ReadEnd(r, "start", scene.start, file);
-    ReadEnd(r, "end", scene.end, file);
+    ReadEnd(r, "start", scene.start, file, scene);
+    ReadEnd(r, "end", scene.end, file, scene);
     if (scene.start.motion == EndMotionKind::kFree && scene.end.motion == EndMotionKind::kFree)
       r.Fail(ends, "end.motion",
              "expected at least one end that is not \"free\" (a cable with two free ends has no "

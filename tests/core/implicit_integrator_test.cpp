@@ -555,7 +555,7 @@ TEST(ImplicitIntegrator, StepIndependentOfStations) {
 // `sea`: a seabed through the random configuration (stiff, damped, with friction regularised
 // over 1 m/s so its velocity derivative is of the size of the others) and a sheared current
 // profile whose points fall among the stations' elevations.
-CableModel JacobianModel(double damping_ratio = 0, bool sea = false) {
+CableModel JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = false) {
   SectionSpec a{6.0, 6, 0.05, 1e-3, 1.5, 1e6, 1.2, 1.0};   // EA = 1 kN
   SectionSpec b{4.0, 5, 0.03, 5e-4, 0.8, 4e6, 1.0, 0.8};   // EA = 2 kN
   a.axial_damping_ratio = damping_ratio;
@@ -580,6 +580,20 @@ CableModel JacobianModel(double damping_ratio = 0, bool sea = false) {
     env.seabed.damping = 150;    // [N s/m^2]
     env.seabed.friction = 0.6;
     env.seabed.friction_velocity = 1.0;
+  }
+  if (waves) {
+    // A steep short wave whose surface (0.5 +- 0.6 m) cuts through the random states' stations
+    // (y within about +-5 m), half-way through its ramp at the test's time (R' != 0).
+    env.waves.present = true;
+    env.waves.height = 1.2;
+    env.waves.period = 3.0;     // L = 14 m, H / L = 0.086
+    env.waves.depth = 8.0;      // k h = 3.6
+    env.waves.surface_y = 0.5;
+    env.waves.phase = 0.4;
+    env.waves.ramp_rate = 0.8;  // [1/s]: R(2 s) = 0.48
+    env.current = 0;
+    env.current_profile.y = {-3.0, -0.7, 0.4, 2.5};
+    env.current_profile.speed = {0.2, 0.9, -0.4, 1.1};
   }
   return BuildCableModel({a, b}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({10, -1}),
                          LinkLaw::kElastic);
@@ -629,14 +643,17 @@ double RelativeError(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& fd)
   return (analytic - fd).cwiseAbs().maxCoeff() / fd.cwiseAbs().maxCoeff();
 }
 
-void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = false) {
-  const CableModel m = JacobianModel(damping_ratio, sea);
+void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = false,
+                                             bool waves = false) {
+  const CableModel m = JacobianModel(damping_ratio, sea, waves);
+  const double t = 2.0;  // [s]: the time of the sea (waves only)
   const int j0 = m.first_free(), j1 = m.last_free(), n = j1 - j0 + 1;
   ASSERT_EQ(j0, 1);
   ASSERT_EQ(j1, m.links);  // the free end is included
   std::mt19937 rng(20240605);
   double worst_x = 0, worst_v = 0, worst_m = 0, worst_ma = 0;
   int grounded = 0;  // stations on the bed, over the trials
+  int surface = 0;   // stations in the surface's band (partly wet), over the trials
   for (int trial = 0; trial < 5; ++trial) {
     Eigen::Matrix2Xd x, v, a;
     RandomConfiguration(m, rng, x, v, a);
@@ -645,8 +662,13 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
       grounded += p > 0 && m.seabed_stiffness[j] * p > m.seabed_damping[j] * v(1, j);
     }
     ForceWorkspace ws(m.links);
+    if (waves) {
+      ComputeGeometry(m, t, x, ws.geometry);
+      for (int j = j0; j <= j1; ++j)
+        surface += ws.geometry.sea.wet[j] > 0 && ws.geometry.sea.wet[j] < 1;
+    }
     auto forces = [&](const Eigen::Matrix2Xd& xx, const Eigen::Matrix2Xd& vv) {
-      ComputeGeometry(xx, ws.geometry);
+      ComputeGeometry(m, t, xx, ws.geometry);
       ComputeTensions(m, ws.geometry, vv, ws.tension);
       ComputeStationForces(m, ws.geometry, ws.tension, vv, ws.force);
       Eigen::VectorXd f(2 * n);
@@ -654,7 +676,7 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
       return f;
     };
     auto inertia_times_a = [&](const Eigen::Matrix2Xd& xx) {
-      ComputeGeometry(xx, ws.geometry);
+      ComputeGeometry(m, t, xx, ws.geometry);
       Eigen::VectorXd f(2 * n);
       for (int j = j0; j <= j1; ++j)
         f.segment<2>(2 * (j - j0)) = StationInertia(m, ws.geometry, j) * a.col(j);
@@ -677,7 +699,7 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
         dMadx.col(col) = (inertia_times_a(xp) - inertia_times_a(xm)) / (2 * d);
       }
     // Analytic: kv = 0 gives -dF/dx; kv = 1 adds -dF/dv. ka = 0 gives d(M a)/dx; ka = 1 adds M.
-    ComputeGeometry(x, ws.geometry);
+    ComputeGeometry(m, t, x, ws.geometry);
     ComputeTensions(m, ws.geometry, v, ws.tension);
     BlockTridiagonal s0(n), s1(n), i0(n), i1(n);
     for (BlockTridiagonal* s : {&s0, &s1, &i0, &i1}) s->SetZero();
@@ -695,13 +717,18 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
   }
   std::printf("[ jacobian ] axial damping ratio %.2f%s: largest relative error over 5 random "
               "states: dF/dx %.2e, dF/dv %.2e, d(M a)/dx %.2e, M %.2e\n",
-              damping_ratio, sea ? ", seabed and current profile" : "", worst_x, worst_v,
-              worst_ma, worst_m);
+              damping_ratio,
+              waves ? ", waves and current profile" : sea ? ", seabed and current profile" : "",
+              worst_x, worst_v, worst_ma, worst_m);
   // 1e-6: the finite differences are good to ~1e-9 (see above); a missing or wrong term is
   // O(1) of its block, and each kind of term is checked on its own scale.
   if (sea) {
     std::printf("[ jacobian ] %d of the 5 x %d free stations pressing on the bed\n", grounded, n);
     EXPECT_GT(grounded, 10);  // the bed's terms are exercised
+  }
+  if (waves) {
+    std::printf("[ jacobian ] %d of the 5 x %d free stations in the surface's band\n", surface, n);
+    EXPECT_GT(surface, 5);  // the wet fraction's terms are exercised
   }
   EXPECT_LT(worst_x, 1e-6);
   EXPECT_LT(worst_v, 1e-6);
@@ -726,6 +753,13 @@ TEST(ImplicitIntegrator, AnalyticJacobianWithAxialDampingMatchesCentralDifferenc
 // profile's four points fall among the stations' elevations.
 TEST(ImplicitIntegrator, AnalyticJacobianWithSeabedAndCurrentProfileMatchesCentralDifferences) {
   ExpectJacobianMatchesCentralDifferences(0.2, true);
+}
+
+// With waves (waves.h, wave_forces.h) and a current profile: the drag on the water's velocity
+// (its gradient), the Morison inertia on its acceleration (its gradient and the links' normal),
+// the wet fractions of stations in the surface's band (buoyancy, drag, inertia, added masses).
+TEST(ImplicitIntegrator, AnalyticJacobianWithWavesMatchesCentralDifferences) {
+  ExpectJacobianMatchesCentralDifferences(0.2, false, true);
 }
 }  // namespace
 }  // namespace cablefilm

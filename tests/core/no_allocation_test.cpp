@@ -33,10 +33,18 @@ namespace cablefilm {
 namespace {
 
 long AllocationsWhileStepping(IntegratorKind kind, CableModelKind model, double dt,
-                              double error_tolerance) {
+                              double error_tolerance, bool waves = false) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml");
   scene.model = model;
   scene.environment.current = 0.5;  // every force term active: drag with current, prisms
+  if (waves) {  // and the waves' terms, the surface 2.5 m above the moving end's rest
+    scene.waves.present = true;
+    scene.waves.height = 2;
+    scene.waves.period = 8;
+    scene.waves.depth = 50;
+    scene.waves.surface_y = 33;
+    scene.waves.ramp_rate = 0.5;
+  }
   const CableModel m = BuildModel(scene);
   CableState s = SolveEquilibrium(m);  // the elastic equilibrium: a fine start for either model
   auto integrator = MakeIntegrator(kind, m, 0.5, error_tolerance);
@@ -76,6 +84,18 @@ TEST(NoAllocation, InextensibleStep) {
 TEST(NoAllocation, InextensibleStepUnderErrorControl) {
   EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kInextensible, CableModelKind::kInextensible,
                                      1.0 / 30, 1e-6),
+            0);
+}
+
+TEST(NoAllocation, EverySchemeInWaves) {
+  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kExplicit, CableModelKind::kElastic, 2e-4, 0,
+                                     true),
+            0);
+  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kImplicit, CableModelKind::kElastic, 1.0 / 30,
+                                     1e-5, true),
+            0);
+  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kInextensible, CableModelKind::kInextensible,
+                                     1.0 / 30, 1e-6, true),
             0);
 }
 

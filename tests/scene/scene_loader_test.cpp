@@ -11,6 +11,7 @@
 
 #include "core/equilibrium.h"
 #include "core/error.h"
+#include "core/waves.h"
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
@@ -709,6 +710,67 @@ TEST(SceneLoader, CurrentProfile) {
   ExpectError(With("current = 0.0", "current = [[0, \"fast\"]]"), key + "[0]", {"speed in m/s"});
   ExpectError(With("current = 0.0", "current = \"fast\""), key,
               {"a speed in m/s", "or a profile [[y, speed], ...]"});
+}
+
+// Issue 10, part 3: [waves], and an end that follows them.
+TEST(SceneLoader, Waves) {
+  const SceneDef s = ParseScene(kBase + "\n[waves]\nheight = 2\nperiod = 8\ndepth = 50\n", kFile);
+  ASSERT_TRUE(s.waves.present);
+  EXPECT_EQ(s.waves.surface_y, 0.0);     // default: the still water level at y = 0
+  EXPECT_EQ(s.waves.phase, 0.0);         // degrees
+  EXPECT_EQ(s.waves.ramp_rate, 0.5);     // 4 / T
+  const CableModel m = BuildModel(s);
+  ASSERT_TRUE(m.has_waves());
+  EXPECT_DOUBLE_EQ(m.wave.k, WaveNumber(2 * M_PI / 8, 9.80665, 50));
+  EXPECT_FALSE(BuildModel(ParseScene(kBase, kFile)).has_waves());  // no table, no waves
+  // The depth defaults to the still water level's height above the seabed.
+  const SceneDef d = ParseScene(kBase + "\n[seabed]\ny = -10\n\n[waves]\nheight = 1\nperiod = 8"
+                                        "\nsurface_y = 40\nphase = -90\nramp_rate = 0.1\n", kFile);
+  EXPECT_EQ(d.waves.depth, 50.0);
+  EXPECT_EQ(d.waves.ramp_rate, 0.1);
+  EXPECT_DOUBLE_EQ(BuildModel(d).wave.spec.phase, -M_PI / 2);
+  // motion = "wave": x_rao = [1, 90], y_rao = [1, 0] is the water particle at the surface:
+  // heave the surface elevation at the end's x, surge a cos(theta + 90 deg).
+  const std::string wave_end =
+      With("motion = \"trochoid\"\nx_amplitudes = [1.8288, 0.0]\ny_amplitudes = [0.0, 1.8288]\n"
+           "period = 10.0\nramp_rate = 0.5",
+           "motion = \"wave\"\nx_rao = [1.0, 90.0]\ny_rao = [1.0, 0.0]") +
+      "\n[waves]\nheight = 2\nperiod = 8\ndepth = 50\nsurface_y = 35\nphase = 30\n";
+  const SceneDef w = ParseScene(wave_end, kFile);
+  EXPECT_TRUE(w.end.follows_wave);
+  const CableModel mw = BuildModel(w);
+  for (double t : {100.0, 103.3, 107.9}) {  // the ramp complete (R = 1 - 5e-16)
+    const Eigen::Vector2d p = mw.end.Position(t) - mw.end.rest();
+    const double theta = mw.wave.k * 80.0 - mw.wave.omega * t + M_PI / 6;
+    EXPECT_NEAR(p.y(), SurfaceAt(mw.wave, 80.0, t) - 35.0, 1e-12);
+    EXPECT_NEAR(p.x(), std::cos(theta + M_PI / 2), 1e-12);
+  }
+}
+
+TEST(SceneLoader, WaveErrors) {
+  ExpectError(kBase + "\n[waves]\nheight = 2\nperiod = 8\n", "waves.depth", {"missing"});
+  ExpectError(kBase + "\n[waves]\nperiod = 8\ndepth = 50\n", "waves.height", {"missing"});
+  // Deep water: 20 m at 5 s (L = 39 m) is H / L = 0.51, far beyond 1/7.
+  ExpectError(kBase + "\n[waves]\nheight = 20\nperiod = 5\ndepth = 50\n", "waves.height",
+              {"the wave breaks", "H / L = 0.51", "at most 5.57", "Miche"});
+  // Shallow water: 2 m at 20 s in 2 m of water (L = 88 m, H / L = 0.023 < 1/7) breaks on the
+  // depth: tanh(kh) / 7 = 0.020.
+  ExpectError(kBase + "\n[waves]\nheight = 2\nperiod = 20\ndepth = 2\n", "waves.height",
+              {"the wave breaks", "k h = 0.14"});
+  ExpectError(kBase + "\n[waves]\nheight = 1\nperiod = 0\ndepth = 50\n", "waves.period",
+              {"in s"});
+  ExpectError(kBase + "\n[waves]\nheight = 1\nperiod = 8\ndepth = 50\nphase = 400\n",
+              "waves.phase", {"degrees", "-360 to 360"});
+  ExpectError(kBase + "\n[waves]\nheight = 1\nperiod = 8\ndepth = 50\nhieght = 2\n",
+              "waves.hieght", {"unknown key"});
+  ExpectError(kBase + "\n[seabed]\ny = -1\n\n[waves]\nheight = 1\nperiod = 8\nsurface_y = -5\n",
+              "waves.surface_y", {"above the seabed"});
+  const std::string wave_end = With("motion = \"trochoid\"", "motion = \"wave\"");
+  ExpectError(wave_end, "ends.end.motion", {"[waves]"});
+  ExpectError(With("motion = \"trochoid\"\nx_amplitudes = [1.8288, 0.0]",
+                   "motion = \"wave\"\nx_rao = [-1.0, 0.0]\nx_amplitudes = [1.8288, 0.0]") +
+                  "\n[waves]\nheight = 2\nperiod = 8\ndepth = 50\n",
+              "ends.end.x_rao", {"amplitude ratio"});
 }
 
 }  // namespace

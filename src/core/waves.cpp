@@ -1,0 +1,105 @@
+#include "core/waves.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cablefilm {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}  // namespace
+
+double WaveNumber(double omega, double g, double h) {
+  // x tanh x = y with y = omega^2 h / g. Fenton & McKee (1990): x0 = y (1 - e^{-y^{5/4}})^{-2/5},
+  // within 1.7 % of the root for every y (-> sqrt(y) shallow, -> y deep); f(x) = x tanh x - y is
+  // increasing and convex in x > 0, so Newton from there converges monotonically, in 2-4
+  // iterations to the last bit.
+  const double y = omega * omega * h / g;
+  double x = y * std::pow(-std::expm1(-std::pow(y, 1.25)), -0.4);
+  for (int it = 0; it < 50; ++it) {
+    const double th = std::tanh(x);
+    const double f = x * th - y;
+    const double df = th + x * (1.0 - th * th);
+    const double dx = f / df;
+    x -= dx;
+    if (std::abs(dx) <= 1e-15 * x) break;
+  }
+  return x / h;
+}
+
+WaveRamp RampAt(const WaveSpec& w, double t) {
+  WaveRamp r;
+  if (w.ramp_rate == 0) return r;
+  if (t <= 0) return WaveRamp{0.0, 0.0};
+  // Eq. (3)'s ramp, as the end motion's (end_motion.cpp): R = 1 - (1 + nu t) e^{-nu t},
+  // R' = nu^2 t e^{-nu t}.
+  const double nu = w.ramp_rate, e = std::exp(-nu * t);
+  r.value = 1.0 - (1.0 + nu * t) * e;
+  r.rate = nu * nu * t * e;
+  return r;
+}
+
+double Wave::length() const { return 2.0 * kPi / k; }
+
+Wave MakeWave(const WaveSpec& spec, double gravity) {
+  Wave w;
+  w.spec = spec;
+  w.omega = 2.0 * kPi / spec.period;
+  w.k = WaveNumber(w.omega, gravity, spec.depth);
+  w.amplitude = 0.5 * spec.height;
+  return w;
+}
+
+double SurfaceAt(const Wave& wave, double x, double t) {
+  const double R = RampAt(wave.spec, t).value;
+  return wave.spec.surface_y + R * wave.amplitude * std::cos(wave.k * x - wave.omega * t +
+                                                             wave.spec.phase);
+}
+
+WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t) {
+  WaterKinematics out;
+  const WaveRamp ramp = RampAt(wave.spec, t);
+  const double a = wave.amplitude, w = wave.omega, k = wave.k, h = wave.spec.depth;
+  const double theta = k * x - w * t + wave.spec.phase;
+  const double co = std::cos(theta), si = std::sin(theta);
+  const double R = ramp.value, dR = ramp.rate;
+  out.eta = R * a * co;
+  out.eta_gradient = Eigen::Vector2d(-R * a * k * si, 0.0);
+  if (a == 0) return out;
+  // Wheeler stretching: z_s = h (z - eta) / (h + eta) on [-h, 0]; held at the ends beyond.
+  const double z = y - wave.spec.surface_y, eta = out.eta;
+  double zs = h * (z - eta) / (h + eta);
+  double dzs_dx = -h * (h + z) / ((h + eta) * (h + eta)) * out.eta_gradient.x();
+  double dzs_dy = h / (h + eta);
+  if (zs > 0 || zs < -h) {
+    zs = std::clamp(zs, -h, 0.0);
+    dzs_dx = dzs_dy = 0.0;
+  }
+  // cosh(k (zs + h)) / sinh(k h) and sinh(...) / sinh(k h) without overflow at any k h:
+  // [e^{k zs} +- e^{-k (zs + 2h)}] / (1 - e^{-2 k h}).
+  const double den = -std::expm1(-2.0 * k * h);
+  const double e1 = std::exp(k * zs), e2 = std::exp(-k * (zs + 2.0 * h));
+  const double C = (e1 + e2) / den, S = (e1 - e2) / den;
+  // Each component q = A(zs) trig(theta): dq/dx = A'(zs) dzs/dx trig + A trig' k,
+  // dq/dy = A'(zs) dzs/dy trig, with C' = k S and S' = k C.
+  const double aw = a * w;
+  // Velocity.
+  const double ux = R * aw * C * co, uy = R * aw * S * si;
+  const double ux_z = R * aw * k * S * co, ux_th = -R * aw * C * si;
+  const double uy_z = R * aw * k * C * si, uy_th = R * aw * S * co;
+  // Acceleration d(R u)/dt at fixed zs: dR/dt u + R du/dt, d theta/dt = -omega.
+  const double ax = aw * C * (R * w * si + dR * co);
+  const double ay = aw * S * (-R * w * co + dR * si);
+  const double ax_z = aw * k * S * (R * w * si + dR * co);
+  const double ax_th = aw * C * (R * w * co - dR * si);
+  const double ay_z = aw * k * C * (-R * w * co + dR * si);
+  const double ay_th = aw * S * (R * w * si + dR * co);
+  out.velocity = Eigen::Vector2d(ux, uy);
+  out.acceleration = Eigen::Vector2d(ax, ay);
+  out.velocity_gradient << ux_z * dzs_dx + ux_th * k, ux_z * dzs_dy,
+      uy_z * dzs_dx + uy_th * k, uy_z * dzs_dy;
+  out.acceleration_gradient << ax_z * dzs_dx + ax_th * k, ax_z * dzs_dy,
+      ay_z * dzs_dx + ay_th * k, ay_z * dzs_dy;
+  return out;
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,68 @@
+#pragma once
+// Regular linear (Airy) waves travelling along +x in water of finite depth (not in the paper):
+// the free surface, the water particle velocity and acceleration, and their gradients in x and
+// y (for the implicit scheme's Jacobian). Plain data and pure functions; nothing allocates.
+//
+//   eta(x, t) = R(t) a cos(theta),  theta = k x - omega t + phase,  a = H / 2
+//   u = R a omega cosh(k (z + h)) / sinh(k h) cos(theta)       (horizontal, along +x)
+//   w = R a omega sinh(k (z + h)) / sinh(k h) sin(theta)       (vertical, along +y)
+//   omega^2 = g k tanh(k h)                                    (the dispersion relation)
+//
+// z = y - surface_y is the elevation above the still water level and R(t) = 1 - (1 + nu t)
+// e^{-nu t} the ramp of eq. (3) (the end motion's own), so the sea starts calm. Above the still
+// water level the kinematics are Wheeler-stretched: z is mapped from [-h, eta] onto [-h, 0],
+// z_s = h (z - eta) / (h + eta), and the formulas are evaluated at z_s (so the surface moves at
+// the linear surface velocity, not the exponentially growing extrapolation). Above the
+// instantaneous surface z_s is held at 0 and below the bed (z < -h) at -h. The acceleration is
+// the local one, d(R u)/dt at fixed z_s (the convective terms are second order in H / L).
+#include <Eigen/Core>
+
+namespace cablefilm {
+
+struct WaveSpec {
+  bool present = false;
+  double height = 0;      // H [m], crest to trough (0: still water with a surface)
+  double period = 1;      // T [s]
+  double depth = 1;       // h [m], still water level to the bed
+  double surface_y = 0;   // the still water level's elevation [m] (same y as positions)
+  double phase = 0;       // [rad]: theta at x = 0, t = 0 (0: a crest at x = 0)
+  double ramp_rate = 0;   // nu [1/s] of R(t); 0: no ramp (R = 1 from t = 0)
+};
+
+// The wave number k [1/m] of omega^2 = g k tanh(k h): Newton's method on x tanh x = omega^2 h / g
+// (x = k h) from Fenton & McKee's (1990) explicit approximation, to machine precision for any
+// k h (from very shallow, 1e-6, to deep, 1e6). omega [rad/s], g [m/s^2], h [m] all > 0.
+double WaveNumber(double omega, double g, double h);
+
+// R(t), dR/dt [1/s] of the ramp (eq. 3's form); R = 1 for nu = 0; R = 0 for t <= 0 otherwise.
+struct WaveRamp {
+  double value = 1, rate = 0;
+};
+WaveRamp RampAt(const WaveSpec& w, double t);
+
+// The wave with its derived constants.
+struct Wave {
+  WaveSpec spec;
+  double omega = 0;       // 2 pi / T [rad/s]
+  double k = 0;           // wave number [1/m]
+  double amplitude = 0;   // a = H / 2 [m]
+  double length() const;  // L = 2 pi / k [m]
+  double steepness() const { return spec.height / length(); }  // H / L
+};
+Wave MakeWave(const WaveSpec& spec, double gravity);
+
+// The water at one point and time.
+struct WaterKinematics {
+  double eta = 0;                       // surface elevation above the still water level [m]
+  Eigen::Vector2d eta_gradient = Eigen::Vector2d::Zero();  // (d eta/dx, 0)
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();      // (u, w) [m/s]
+  Eigen::Vector2d acceleration = Eigen::Vector2d::Zero();  // (du/dt, dw/dt) [m/s^2]
+  Eigen::Matrix2d velocity_gradient = Eigen::Matrix2d::Zero();  // d(u, w)/d(x, y) [1/s]
+  Eigen::Matrix2d acceleration_gradient = Eigen::Matrix2d::Zero();  // d(du/dt, dw/dt)/d(x, y)
+};
+WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t);
+
+// The surface's elevation (absolute y [m]) at x and t.
+double SurfaceAt(const Wave& wave, double x, double t);
+
+}  // namespace cablefilm
