@@ -3,10 +3,16 @@
 #   lib/libcablefilm_core.a               cablefilm::core (physics; Eigen only)
 #   include/cablefilm/core/*.h            its headers
 #   lib/cmake/cablefilm/                  cablefilmConfig.cmake, ...ConfigVersion.cmake, targets
+#   lib/python3.X/dist-packages/cablefilm.*.so   the Python module (when built)
 include(CMakePackageConfigHelpers)
 
 set(CABLEFILM_CMAKE_DIR lib/cmake/cablefilm)
 install(TARGETS cablefilm RUNTIME DESTINATION bin)
+# The Python module, when built (cmake/python.cmake): into the prefix's Python folder,
+# lib/python3.11/dist-packages on Debian.
+if(TARGET cablefilm_python)
+  install(TARGETS cablefilm_python LIBRARY DESTINATION ${CABLEFILM_PYTHON_INSTALL_DIR})
+endif()
 install(TARGETS cablefilm_core EXPORT cablefilmTargets
         ARCHIVE DESTINATION lib
         LIBRARY DESTINATION lib)

@@ -9,6 +9,7 @@ packages=(
   libosmesa6-dev libpng-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libfreetype-dev libfontconfig-dev fonts-dejavu-core
   libcivetweb-dev libturbojpeg0-dev nlohmann-json3-dev libnetcdf-dev
+  pybind11-dev python3-dev python3-numpy   # the Python module (src/python) and its arrays
 )
 if [ "${1:-}" = "--tests" ]; then
   packages+=(python3 chromium chromium-driver python3-selenium python3-websocket

@@ -285,23 +285,6 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
   return run;
 }
 
-FilmRequest MakeFilmRequest(const SceneDef& scene, const RunOptions& o,
-                            const std::string& out_dir) {
-  FilmRequest r;
-  r.out_dir = out_dir;
-  r.width = o.width > 0 ? o.width : scene.film.width;
-  r.height = o.height > 0 ? o.height : scene.film.height;
-  r.fps = o.fps > 0 ? o.fps : scene.film.fps;
-  r.speed = o.speed > 0 ? o.speed : scene.film.speed;
-  r.crf = scene.film.crf;
-  r.colormap = o.colormap.empty() ? scene.film.colormap : o.colormap;
-  r.tension_min = o.tension_min >= 0 ? o.tension_min : scene.film.tension_min;
-  r.tension_max = o.tension_max >= 0 ? o.tension_max : scene.film.tension_max;
-  r.frames = o.frames >= 0 ? o.frames == 1 : scene.output.frames;
-  r.shader_dir = o.shader_dir;
-  return r;
-}
-
 std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options) {
   const std::string out_dir = options.out_dir.empty() ? "output/" + scene.name : options.out_dir;
   std::error_code ec;
@@ -359,6 +342,28 @@ void Report(const ModelRun& run, RunReport* report) {
 }
 
 }  // namespace
+
+FilmRequest MakeFilmRequest(const SceneDef& scene, const RunOptions& o,
+                            const std::string& out_dir) {
+  FilmRequest r;
+  r.out_dir = out_dir;
+  r.width = o.width > 0 ? o.width : scene.film.width;
+  r.height = o.height > 0 ? o.height : scene.film.height;
+  r.fps = o.fps > 0 ? o.fps : scene.film.fps;
+  r.speed = o.speed > 0 ? o.speed : scene.film.speed;
+  r.crf = scene.film.crf;
+  r.colormap = o.colormap.empty() ? scene.film.colormap : o.colormap;
+  r.tension_min = o.tension_min >= 0 ? o.tension_min : scene.film.tension_min;
+  r.tension_max = o.tension_max >= 0 ? o.tension_max : scene.film.tension_max;
+  r.frames = o.frames >= 0 ? o.frames == 1 : scene.output.frames;
+  r.shader_dir = o.shader_dir;
+  return r;
+}
+
+std::string SceneErrorMessage(const std::string& scene_path, const std::string& what) {
+  const std::string prefix = EscapeText(scene_path) + ":";
+  return what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + " " + what;
+}
 
 int CheckCommand(const std::string& scene_path) {
   const SceneDef scene = LoadScene(scene_path);

@@ -33,6 +33,18 @@ struct RunReport {
   double film_last_row_max = std::numeric_limits<double>::quiet_NaN();  // the last row's, as plotted [N]
 };
 
+struct SceneDef;     // scene/scene_def.h
+struct FilmRequest;  // app/film_pass.h
+
+// The film a run makes into `out_dir`: the scene's [film] and [output] frames, the options
+// given (non-zero, non-empty) overriding them.
+FilmRequest MakeFilmRequest(const SceneDef& scene, const RunOptions& options,
+                            const std::string& out_dir);
+
+// An error about the scene `scene_path` as the program reports it after "cablefilm: error: ":
+// `what`, led by the scene's name unless it starts with it already (the loader's messages do).
+std::string SceneErrorMessage(const std::string& scene_path, const std::string& what);
+
 int RunCommand(const std::string& scene_path, const RunOptions& options,
                RunReport* report = nullptr);
 // The exit status after a signal stopped the work (128 + its number).

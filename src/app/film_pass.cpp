@@ -28,8 +28,10 @@ CableSnapshot ToSnapshot(const CableState& s, const Eigen::VectorXd& tension) {
   return snap;
 }
 
-FilmSpec MakeSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
-                  const FilmRequest& request, double duration) {
+}  // namespace
+
+FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
+                      const FilmRequest& request, double duration) {
   const FilmRun& run = runs.front();
   const CableModel& m = *run.model;
   FilmSpec spec;
@@ -79,8 +81,15 @@ FilmSpec MakeSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
     spec.seabed_y = m.seabed.y;
     spec.y_min = std::min(spec.y_min, m.seabed.y - SeabedMargin(spec.y_max - spec.y_min));
   }
+  if (m.has_waves()) {  // the surface in view: up to its crests, with a strip of sky
+    spec.surface = true;
+    const double crest = m.wave.spec.surface_y + m.wave.amplitude;
+    spec.y_max = std::max(spec.y_max, crest + SeabedMargin(crest - spec.y_min));
+  }
   return spec;
 }
+
+namespace {
 
 // The largest finite value of a series and its time (NaN when none).
 void FindPeak(const std::vector<double>& t, const std::vector<double>& v, PictureReport* r) {
@@ -218,7 +227,7 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
   o.shader_dir = request.shader_dir;
   o.write_max_tension = false;  // max_tension.png comes from the rows (WriteMaxTensionFigure)
   o.series_label = main.label;
-  FilmSpec spec = MakeSpec(scene, runs, request, frame_time(last));
+  FilmSpec spec = MakeFilmSpec(scene, runs, request, frame_time(last));
   spec.label = main.label;
   if (runs.size() > 1) {
     spec.companion_label = runs[1].label;
@@ -245,6 +254,9 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
     }
     if (!finished || !failure.empty()) break;
     CableSnapshot snap = ToSnapshot(steppers[0].state, steppers[0].integrator->tensions());
+    if (spec.surface)
+      SurfaceProfile(main.model->wave, snap.t, spec.x_min, spec.x_max, snap.surface_x,
+                     snap.surface_y);
     // The output rows up to this frame (all that are left at the last frame).
     const double until = k == last ? std::numeric_limits<double>::infinity()
                                    : steppers[0].state.t + 1e-9 * frame_interval;

@@ -53,6 +53,14 @@ struct PictureReport {
                                 // point: the last row's tension_max [N]
 };
 
+struct FilmSpec;  // render/frame.h
+
+// What stays fixed over the film of `runs` lasting `duration` simulated seconds (the first
+// run's cable, ends, sections, initial state; the colour range and the world box of every run,
+// or the request's range). Used by RenderFilm, and to draw a frame on its own.
+FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
+                      const FilmRequest& request, double duration);
+
 // <out_dir>/max_tension.png, or max_tension.partial.png when the rows are those of a run cut
 // short (`complete` false): every run's rows on one pair of axes, thinned to the extremes of
 // each 1/8192 of the time axis (ThinnedTrace), so that the largest value drawn is the rows'

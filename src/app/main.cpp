@@ -132,9 +132,7 @@ CLI::Option* Flag(CLI::App* app, const std::string& name, const std::string& hel
 // An error of a command: a scene's file named first (the loader's already start with it).
 int ReportError(const std::string& scene, const cablefilm::Error& e) {
   std::fflush(stdout);
-  std::string message = e.what();
-  const std::string prefix = cablefilm::EscapeText(scene) + ":";
-  if (message.compare(0, prefix.size(), prefix) != 0) message = prefix + " " + message;
+  const std::string message = cablefilm::SceneErrorMessage(scene, e.what());
   std::fprintf(stderr, "cablefilm: error: %s\n", message.c_str());
   return 1;
 }

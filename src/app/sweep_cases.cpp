@@ -392,6 +392,44 @@ std::string CaseSceneText(const std::string& scene_text, const std::string& scen
   return os.str();
 }
 
+std::string SceneValueDocument(const std::string& scene_text, const std::string& scene_path,
+                               const std::string& key) {
+  toml::table root;
+  try {
+    root = toml::parse(scene_text, scene_path);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream os;
+    os << EscapeText(scene_path) << ":" << e.source().begin.line
+       << ": not valid TOML: " << EscapeText(e.description());
+    throw Error(os.str());
+  }
+  const std::vector<PathStep> path = ParseKeyPath(key);
+  const toml::node* node = &root;
+  std::string here;
+  for (const PathStep& step : path) {
+    const toml::table* table = node->as_table();
+    if (!table) PathFail(key, EscapeText(here) + " is " + Kind(*node) + " in the scene, not a table");
+    here += (here.empty() ? "" : ".") + step.name;
+    node = table->get(step.name);
+    if (!node) PathFail(key, "the scene has no " + EscapeText(here));
+    for (const std::size_t index : step.indices) {
+      const toml::array* array = node->as_array();
+      if (!array)
+        PathFail(key, EscapeText(here) + " is " + Kind(*node) + " in the scene, not an array");
+      if (index >= array->size())
+        PathFail(key, EscapeText(here) + " is " + Kind(*node) + " in the scene: no [" +
+                          std::to_string(index) + "]");
+      here += "[" + std::to_string(index) + "]";
+      node = array->get(index);
+    }
+  }
+  toml::table out;
+  out.insert("v", *node);
+  std::ostringstream os;
+  os << out << "\n";
+  return os.str();
+}
+
 std::string CaseFolderName(size_t index, size_t count) {
   std::size_t width = 3;
   for (std::size_t n = count > 0 ? count - 1 : 0; n >= 1000; n /= 10) ++width;

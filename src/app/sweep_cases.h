@@ -52,6 +52,12 @@ std::string CaseSceneText(const std::string& scene_text, const std::string& scen
                           const std::vector<std::string>& keys,
                           const std::vector<std::string>& values, const std::string& comment);
 
+// The value of `key` (a dotted path, as above) in `scene_text` (the file `scene_path`), as a
+// TOML document whose one key "v" holds it ("v = 0.5", or "[v]" and its keys for a table).
+// Throws Error naming the key when the scene is no TOML or has no such value.
+std::string SceneValueDocument(const std::string& scene_text, const std::string& scene_path,
+                               const std::string& key);
+
 // Case folder names: case_000, case_001, ... (more digits beyond 1000 cases).
 std::string CaseFolderName(size_t index, size_t count);
 

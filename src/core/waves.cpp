@@ -55,6 +55,18 @@ double SurfaceAt(const Wave& wave, double x, double t) {
                                                              wave.spec.phase);
 }
 
+void SurfaceProfile(const Wave& wave, double t, double x0, double x1, std::vector<double>& xs,
+                    std::vector<double>& ys) {
+  const double waves = std::abs(x1 - x0) / wave.length();
+  const int n = static_cast<int>(std::clamp(std::ceil(24.0 * waves), 63.0, 4095.0)) + 1;
+  xs.resize(n);
+  ys.resize(n);
+  for (int i = 0; i < n; ++i) {
+    xs[i] = x0 + (x1 - x0) * i / (n - 1);
+    ys[i] = SurfaceAt(wave, xs[i], t);
+  }
+}
+
 WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t) {
   WaterKinematics out;
   const WaveRamp ramp = RampAt(wave.spec, t);

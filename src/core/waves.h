@@ -16,6 +16,7 @@
 // instantaneous surface z_s is held at 0 and below the bed (z < -h) at -h. The acceleration is
 // the local one, d(R u)/dt at fixed z_s (the convective terms are second order in H / L).
 #include <Eigen/Core>
+#include <vector>
 
 namespace cablefilm {
 
@@ -64,5 +65,10 @@ WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t);
 
 // The surface's elevation (absolute y [m]) at x and t.
 double SurfaceAt(const Wave& wave, double x, double t);
+
+// The surface from x0 to x1 [m] at time t, sampled for drawing: at least 24 points a wave length
+// (the polyline's sag below a crest is then under 1 % of the amplitude), from 64 to 4096 points.
+void SurfaceProfile(const Wave& wave, double t, double x0, double x1, std::vector<double>& xs,
+                    std::vector<double>& ys);
 
 }  // namespace cablefilm

@@ -117,6 +117,8 @@ void LiveHistory::Add(double t, const Eigen::Matrix2Xd& x, const Eigen::VectorXd
   }
   GrowRange(tmin, tmax);
   FollowBox(x);
+  if (scenery_.waves)  // across the box (its storage reused frame after frame)
+    SurfaceProfile(scenery_.wave, t, box_[0], box_[1], now_.surface_x, now_.surface_y);
 }
 
 void LiveHistory::AddMarker(double t, std::string label) {
@@ -163,6 +165,11 @@ LiveFrameInput LiveHistory::MakeInput(const std::string& status) const {
   in.seabed_y = scenery_.seabed_y;
   if (in.seabed)  // the bed in view, with a strip of ground below it
     in.y_min = std::min(in.y_min, in.seabed_y - SeabedMargin(in.y_max - in.y_min));
+  in.surface = scenery_.waves;
+  if (in.surface) {  // the surface in view, up to its crests
+    const double crest = scenery_.wave.spec.surface_y + scenery_.wave.amplitude;
+    in.y_max = std::max(in.y_max, crest + SeabedMargin(crest - in.y_min));
+  }
   // The panels are shaped by the box over the whole run so far, so they do not move as the
   // cable swings.
   in.layout_aspect = (union_box_[1] - union_box_[0]) / std::max(union_box_[3] - union_box_[2], 1e-9);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/waves.h"
 #include "render/live_frame.h"
 
 namespace cablefilm {
@@ -26,6 +27,8 @@ struct LiveScenery {
   double window = 60;                      // width of the time plot [s]
   bool seabed = false;                     // a flat seabed at seabed_y [m]
   double seabed_y = 0;
+  bool waves = false;                      // the water surface of `wave`, drawn as it moves
+  Wave wave;
 };
 
 class LiveHistory {

@@ -53,6 +53,8 @@ LiveScenery MakeScenery(const SceneDef& scene, const LiveSimulation& sim) {
   s.window = scene.simulation.duration;
   s.seabed = m.seabed.present;
   s.seabed_y = m.seabed.y;
+  s.waves = m.has_waves();
+  s.wave = m.wave;
   return s;
 }
 

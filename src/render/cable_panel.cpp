@@ -18,7 +18,7 @@ bool Inside(int j, std::size_t n) { return j >= 0 && static_cast<std::size_t>(j)
 PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::string& main_label,
                          const std::string& companion_label, const std::string& path_label,
                          Rgba swatch, const Theme& th, const std::string& reference_label,
-                         bool seabed) {
+                         bool seabed, bool surface) {
   PanelHead head;
   head.title = "Cable shape (to scale)";
   if (companion)  // the cables' names first, on a row of their own when space is short
@@ -35,6 +35,7 @@ PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::str
   if (!marks.free_ends.empty())
     marks_row.push_back({LegendEntry::kRing, th.marker_fill, "free end"});
   marks_row.push_back({LegendEntry::kDash, th.equilibrium, reference_label});
+  if (surface) marks_row.push_back({LegendEntry::kLine, th.water, "water surface"});
   if (seabed) marks_row.push_back({LegendEntry::kLine, th.seabed, "seabed"});
   head.groups.push_back(marks_row);
   return head;
@@ -56,6 +57,27 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
     const float y = std::clamp(in.world.PixelY(*in.seabed_y), r.y0, r.y1);
     if (y < r.y1) p.Rect({r.x0, y, r.x1, r.y1}, Mix(th.seabed, th.panel, 0.22f));
     p.Line({r.x0, y}, {r.x1, y}, 2 * k, th.seabed);
+  }
+  if (in.surface_x && in.surface_y && in.surface_x->size() == in.surface_y->size() &&
+      in.surface_x->size() > 1) {  // the water: a wash from the surface down, then its line
+    const PixelRect& r = in.world.rect;
+    const float bottom =
+        in.seabed_y && std::isfinite(*in.seabed_y)
+            ? std::clamp(in.world.PixelY(*in.seabed_y), r.y0, r.y1)
+            : r.y1;
+    std::vector<Vec2f> line;
+    line.reserve(in.surface_x->size());
+    for (std::size_t i = 0; i < in.surface_x->size(); ++i)
+      line.push_back(world((*in.surface_x)[i], (*in.surface_y)[i]));
+    const Rgba wash{th.water.r, th.water.g, th.water.b, 0.10f};
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      const Vec2f a = line[i - 1], b = line[i];
+      if (a.y >= bottom && b.y >= bottom) continue;
+      const Vec2f a1{a.x, std::min(a.y, bottom)}, b1{b.x, std::min(b.y, bottom)};
+      p.Triangle(a1, b1, {b.x, bottom}, wash);
+      p.Triangle(a1, {b.x, bottom}, {a.x, bottom}, wash);
+    }
+    p.Polyline(line, 2 * k, th.water);
   }
   if (in.equilibrium && in.equilibrium->x.size() == snap.x.size() &&
       in.equilibrium->y.size() == snap.x.size()) {

@@ -26,12 +26,12 @@ struct CableMarks {              // stations drawn with a marker; indices outsid
 // The panel's title and legend: an entry per kind of marker present, the two cables' names
 // when a companion is drawn, the end path (named `path_label`) and the dashed initial shape
 // (named `reference_label`: "equilibrium", or "initial state (straight)" for a straight start),
-// and the seabed when `seabed`. `swatch` colours the cables' entries (a mid colour of the map).
+// the seabed when `seabed` and the water surface when `surface`. `swatch` colours the cables' entries (a mid colour of the map).
 PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::string& main_label,
                          const std::string& companion_label, const std::string& path_label,
                          Rgba swatch, const Theme& th,
                          const std::string& reference_label = "equilibrium",
-                         bool seabed = false);
+                         bool seabed = false, bool surface = false);
 
 // Borrowed for one call: the pointers are not kept.
 struct CablePanelInput {
@@ -47,6 +47,10 @@ struct CablePanelInput {
   // Paths of the moving ends: polylines in world coordinates [m]; null = none.
   const std::vector<std::vector<Vec2f>>* end_paths = nullptr;
   const double* seabed_y = nullptr;  // the seabed's elevation [m]; null = no seabed
+  // The water surface now (CableSnapshot::surface_x, surface_y): its line, the water below it
+  // (down to the seabed or the box) a faint wash; empty = none.
+  const std::vector<double>* surface_x = nullptr;
+  const std::vector<double>* surface_y = nullptr;
 };
 
 void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& colormap,

@@ -25,6 +25,9 @@ struct CableSnapshot {            // one output time of the simulation
   // Optional, size s: each link's smallest and largest tension over those rows [N], so that
   // the min-max envelope of the tension plot covers every row too, not only the frames.
   std::vector<double> row_link_min, row_link_max;
+  // Optional: the water surface at this time, a polyline across the world box (x, y [m]);
+  // empty: none drawn (no waves).
+  std::vector<double> surface_x, surface_y;
 };
 
 // The name of the dashed initial state when a run starts from the straight chord at rest (not
@@ -51,6 +54,7 @@ struct FilmSpec {                          // fixed for the whole film
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // world box of the cable over the run [m]
   bool seabed = false;                     // a flat seabed, drawn in the cable panel
   double seabed_y = 0;                     // its elevation [m]
+  bool surface = false;                    // waves: each snapshot carries the water surface
   // Companion cable (see CableSnapshot::cx): drawn on the same tension scale. `label` names the
   // main cable (e.g. "elastic"), `companion_label` the companion (e.g. "inextensible"); a
   // non-empty companion_label means every snapshot carries a companion. The box above must

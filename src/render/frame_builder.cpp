@@ -61,7 +61,8 @@ FilmHeads MakeFilmHeads(const FilmSpec& spec, bool companion, Rgba swatch, const
   const CableMarks marks{spec.weight_stations, spec.fixed_ends, spec.moving_ends, spec.free_ends};
   FilmHeads h;
   h.cable = CablePanelHead(marks, companion, MainLabel(spec), CompanionLabel(spec), "its path",
-                           swatch, th, ReferenceLabel(spec), spec.seabed);
+                           swatch, th, ReferenceLabel(spec), spec.seabed,
+                           spec.surface);
   h.tension = TensionPanelHead(companion, named, companion && CompanionEquilibrium(spec),
                                MainLabel(spec), CompanionLabel(spec), "min\u2013max so far", th,
                                ReferenceLabel(spec));
@@ -293,6 +294,10 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
   }
   cable.end_paths = &paths;
   if (spec.seabed) cable.seabed_y = &spec.seabed_y;
+  if (!snap.surface_x.empty()) {
+    cable.surface_x = &snap.surface_x;
+    cable.surface_y = &snap.surface_y;
+  }
   DrawCablePanel(p, cable, colormap, th);
 
   // The colour bar, with a mark at the largest tension now (and the companion's).

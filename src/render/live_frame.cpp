@@ -23,7 +23,7 @@ LiveHeads MakeLiveHeads(const LiveFrameInput& in, Rgba swatch, const Theme& th) 
   LiveHeads h;
   const CableMarks marks{in.weight_stations, in.fixed_ends, in.moving_ends, in.free_ends};
   h.cable = CablePanelHead(marks, false, "", "", "recent path", swatch, th, in.reference_label,
-                           in.seabed);
+                           in.seabed, in.surface);
   h.tension = TensionPanelHead(false, false, false, "", "",
                                in.link_min.empty() ? "" : "min\u2013max so far", th,
                                in.reference_label);
@@ -158,6 +158,10 @@ Frame MakeLiveFrame(const LiveFrameInput& in, int width, int height, const Color
   cable.marks = {in.weight_stations, in.fixed_ends, in.moving_ends, in.free_ends};
   cable.end_paths = &in.end_paths;
   if (in.seabed) cable.seabed_y = &in.seabed_y;
+  if (in.surface && !snap.surface_x.empty()) {
+    cable.surface_x = &snap.surface_x;
+    cable.surface_y = &snap.surface_y;
+  }
   DrawCablePanel(p, cable, colormap, th);
 
   ColorBarInput bar;

@@ -33,6 +33,7 @@ struct LiveFrameInput {
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // world box to show [m] (follows the cable)
   bool seabed = false;                      // a flat seabed at seabed_y [m], in the cable panel
   double seabed_y = 0;
+  bool surface = false;                     // waves: the snapshot's water surface is drawn
   // Width / height the cable panel's width is fitted to; 0 = the box's. The panels move when
   // the box's shape changes by more than a step of 1/64 of the frame's width; a steady value
   // here (e.g. the box's over the run so far) keeps them still.

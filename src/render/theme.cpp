@@ -28,6 +28,7 @@ Theme Theme::Dark() {
   t.companion = Hex(0xf783ac);
   t.companion_rim = Hex(0xd0d7e1);
   t.event = Hex(0x3bc9db);
+  t.water = Hex(0x5aa9e6);   // sea blue: apart from the map's colours and the bed's olive
   t.seabed = Hex(0x8f9d5e);  // olive mud: apart from the orange of the end's path
   return t;
 }
@@ -50,6 +51,7 @@ Theme Theme::Light() {
   t.companion = Hex(0xc2255c);
   t.companion_rim = Hex(0x56616f);
   t.event = Hex(0x1098ad);
+  t.water = Hex(0x2f7fc1);
   t.seabed = Hex(0x6b7a34);
   return t;
 }

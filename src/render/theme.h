@@ -12,6 +12,7 @@ struct Theme {
       halo, marker_fill, marker_edge;
   Rgba companion, companion_rim;  // companion cable: its curves; the dotted rim of its shape
   Rgba event;  // control changes marked on the live view's time plot (apart from the accent)
+  Rgba water;   // the water surface's line (the water below it a faint wash)
   Rgba seabed;  // the seabed's line in the cable panel (the ground below it a faint mix)
   static Theme Dark();
   static Theme Light();

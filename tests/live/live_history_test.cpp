@@ -112,6 +112,31 @@ TEST(LiveHistory, SeabedInViewWithGroundBelowIt) {
   EXPECT_FALSE(LiveHistory(Scenery(60)).MakeInput("live").seabed);
 }
 
+// Waves: each frame carries the water surface across the box at its time, and the box reaches
+// up to the crests.
+TEST(LiveHistory, WaterSurfaceAcrossTheBoxUpToTheCrests) {
+  LiveScenery scenery = Scenery(60);
+  WaveSpec w;
+  w.present = true;
+  w.height = 2;
+  w.period = 4;
+  w.depth = 30;
+  w.surface_y = 20;  // above the line
+  scenery.waves = true;
+  scenery.wave = MakeWave(w, 9.80665);
+  LiveHistory h(scenery);
+  h.Add(1.3, Line(8.0), Eigen::VectorXd::Constant(10, 1000));
+  const LiveFrameInput in = h.MakeInput("live");
+  EXPECT_TRUE(in.surface);
+  ASSERT_GE(in.snapshot.surface_x.size(), 64u);
+  EXPECT_DOUBLE_EQ(in.snapshot.surface_x.front(), in.x_min);
+  EXPECT_DOUBLE_EQ(in.snapshot.surface_x.back(), in.x_max);
+  for (std::size_t i = 0; i < in.snapshot.surface_x.size(); i += 7)
+    EXPECT_DOUBLE_EQ(in.snapshot.surface_y[i], SurfaceAt(scenery.wave, in.snapshot.surface_x[i], 1.3));
+  EXPECT_GE(in.y_max, 21.0);
+  EXPECT_FALSE(LiveHistory(Scenery(60)).MakeInput("live").surface);
+}
+
 TEST(LiveHistory, ResetForgetsTheRunButNotALockedRange) {
   LiveHistory h(Scenery(60));
   h.Add(1.0, Line(3), Eigen::VectorXd::Constant(10, 3000));

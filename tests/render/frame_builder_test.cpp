@@ -361,6 +361,64 @@ TEST(MakeFrame, SeabedLineGroundAndLegend) {
   for (const Shape& s : f2.shapes) EXPECT_FALSE(SameColor(s.color, th.seabed));
 }
 
+// Waves: the snapshot's water surface drawn as a line through its samples, the water below it
+// (down to the seabed) washed with triangles, both before the cable; a legend entry; none
+// without.
+TEST(MakeFrame, WaterSurfaceLineWashAndLegend) {
+  FilmSpec spec = testing::StraightSpec();
+  spec.seabed = true;
+  spec.seabed_y = spec.y_min + 0.1 * (spec.y_max - spec.y_min);
+  spec.surface = true;
+  CableSnapshot snap = testing::StraightSnapshot(1.0);
+  const double level = spec.y_min + 0.8 * (spec.y_max - spec.y_min);
+  const int n = 33;
+  for (int i = 0; i < n; ++i) {
+    const double x = spec.x_min + (spec.x_max - spec.x_min) * i / (n - 1);
+    snap.surface_x.push_back(x);
+    snap.surface_y.push_back(level + 0.05 * (spec.y_max - spec.y_min) * std::cos(0.3 * i));
+  }
+  FilmHistory history(spec);
+  history.Add(snap);
+  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  const Theme th = Theme::Dark();
+  const Frame frame = MakeFrame(spec, history, snap, L, Colormap("viridis"), th);
+  int segments = 0, wash = 0, last_water = -1, first_cable = -1, matched = 0;
+  for (std::size_t i = 0; i < frame.shapes.size(); ++i) {
+    const Shape& s = frame.shapes[i];
+    if (first_cable < 0 && s.kind == ShapeKind::kSegment && s.size == L.cable_width)
+      first_cable = static_cast<int>(i);
+    // (the legend's swatch, in the panel's head above the plot, is not the surface)
+    if (s.kind == ShapeKind::kSegment && SameColor(s.color, th.water) &&
+        s.a.y >= L.cable.rect.y0) {
+      const Vec2f a = L.cable.ToPixel(snap.surface_x[segments], snap.surface_y[segments]);
+      const Vec2f b = L.cable.ToPixel(snap.surface_x[segments + 1], snap.surface_y[segments + 1]);
+      matched += a.x == s.a.x && a.y == s.a.y && b.x == s.b.x && b.y == s.b.y;
+      ++segments;
+      last_water = static_cast<int>(i);
+    }
+    if (s.kind == ShapeKind::kTriangle && s.color.r == th.water.r && s.color.a < 0.5f) {
+      ++wash;
+      // Down to the seabed's line, never below it.
+      EXPECT_LE(std::max({s.a.y, s.b.y, s.c.y}), L.cable.PixelY(spec.seabed_y) + 1e-3f);
+      last_water = std::max(last_water, static_cast<int>(i));
+    }
+  }
+  EXPECT_EQ(segments, n - 1);
+  EXPECT_EQ(matched, n - 1);  // through the samples, in order
+  EXPECT_EQ(wash, 2 * (n - 1));
+  EXPECT_LT(last_water, first_cable);
+  int legend = 0;
+  for (const TextItem& t : frame.texts)
+    legend += t.text == "water surface" && L.cable_panel.Contains(t.pos);
+  EXPECT_EQ(legend, 1);
+  const FilmSpec plain = testing::StraightSpec();
+  FilmHistory h2(plain);
+  const Frame f2 = MakeFrame(plain, h2, testing::StraightSnapshot(1.0),
+                             MakeFrameLayout(plain, 1280, 720), Colormap("viridis"), th);
+  for (const TextItem& t : f2.texts) EXPECT_NE(t.text, "water surface");
+  for (const Shape& s : f2.shapes) EXPECT_FALSE(SameColor(s.color, th.water));
+}
+
 TEST(MakeFrame, CompanionTensionCurveAndMaxTrace) {
   const FilmSpec spec = testing::StraightCompanionSpec();
   FilmHistory history(spec);

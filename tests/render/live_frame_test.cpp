@@ -125,6 +125,28 @@ TEST(LiveFrame, SeabedLineAndLegend) {
             nullptr);
 }
 
+// Waves: the snapshot's water surface is drawn (a segment between each pair of samples) and named.
+TEST(LiveFrame, WaterSurfaceLineAndLegend) {
+  LiveFrameInput in = StraightLive();
+  in.surface = true;
+  for (int i = 0; i < 9; ++i) {
+    in.snapshot.surface_x.push_back(in.x_min + (in.x_max - in.x_min) * i / 8);
+    in.snapshot.surface_y.push_back(in.y_min + 0.9 * (in.y_max - in.y_min));
+  }
+  const Theme th = Theme::Dark();
+  const Frame f = MakeLiveFrame(in, 1280, 720, Colormap("viridis"), th);
+  const FrameLayout L = MakeLiveFrameLayout(in, 1280, 720);
+  int line = 0;  // in the plot (the legend's swatch is in the panel's head, above it)
+  for (const Shape& s : f.shapes)
+    line += s.kind == ShapeKind::kSegment && SameColor(s.color, th.water) &&
+            s.a.y >= L.cable.rect.y0;
+  EXPECT_EQ(line, 8);
+  EXPECT_NE(FindText(f, "water surface"), nullptr);
+  EXPECT_EQ(FindText(MakeLiveFrame(StraightLive(), 1280, 720, Colormap("viridis"), th),
+                     "water surface"),
+            nullptr);
+}
+
 TEST(LiveFrame, CloseMarkersKeepTheNewestLabelAndLongLabelsAreCut) {
   LiveFrameInput in = StraightLive();
   in.markers = {{30, "first"}, {30.05, "second"}, {40, std::string(60, 'x')}};

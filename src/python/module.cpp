@@ -1,0 +1,608 @@
+// The Python module `cablefilm`: scenes loaded from a file or a dict and changed key by key,
+// runs as numpy arrays with no file written, the static equilibrium, the film and its frames,
+// sweeps over scene keys. Bindings only: the work is that of the program's libraries
+// (scene_loader, app/memory_run, app/film_pass, app/sweep_cases), called as the command line
+// calls them, so a run gives the very doubles of `cablefilm run`'s results.nc.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "app/commands.h"
+#include "app/memory_run.h"
+#include "app/run_report.h"
+#include "app/sweep_cases.h"
+#include "app/version.h"
+#include "core/equilibrium.h"
+#include "python/interruptible.h"
+#include "python/scene_handle.h"
+#include "python/toml_values.h"
+#include "scene/scene_limits.h"
+#ifdef CABLEFILM_PYTHON_RENDER
+#include "app/film_pass.h"
+#include "app/memory_film.h"
+#endif
+
+namespace py = pybind11;
+
+namespace cablefilm::python {
+namespace {
+
+// cablefilm.BlowUpError, made with the module (a reference kept for the process's life).
+PyObject* g_blow_up_error = nullptr;
+
+// A run held by Python: its rows stay where the run wrote them, and the arrays handed out are
+// read-only views of them that keep the Result alive.
+struct Result {
+  std::shared_ptr<const MemoryRun> run;
+  py::object scene;  // the Scene it ran (a copy, unchanged by later edits)
+};
+
+SceneHandle LoadScene(const py::handle& source, const std::optional<std::string>& name) {
+  if (py::isinstance<SceneHandle>(source)) return source.cast<SceneHandle>();
+  if (py::isinstance<py::dict>(source))
+    return SceneHandle::FromText(DictToToml(py::reinterpret_borrow<py::dict>(source)),
+                                 name.value_or("<dict>"));
+  if (!py::isinstance<py::str>(source) && !py::hasattr(source, "__fspath__"))
+    throw py::type_error("expected a scene: a path to a scene file (TOML), a dict or a Scene, "
+                         "got a " + std::string(py::str(py::type::of(source).attr("__name__"))));
+  const py::object path = py::module_::import("os").attr("fspath")(source);
+  if (!py::isinstance<py::str>(path)) throw py::type_error("expected a path as text, got bytes");
+  return SceneHandle::FromFile(path.cast<std::string>());
+}
+
+// The run of a scene, the GIL released. A scene with no initial state found is a SceneError
+// (as `check` reports it); a blow-up raises BlowUpError with the rows so far as its `result`.
+py::object RunScene(const SceneHandle& scene);
+
+py::object MakeResult(std::shared_ptr<const MemoryRun> run, const SceneHandle& scene) {
+  return py::cast(Result{std::move(run), py::cast(scene)});
+}
+
+py::object RunScene(const SceneHandle& scene) {
+  CancelFlag cancel{0};
+  std::shared_ptr<const MemoryRun> run;
+  try {
+    run = RunInterruptible(cancel, [&] {
+      return std::make_shared<const MemoryRun>(RunInMemory(scene.def(), scene.model(), &cancel));
+    });
+  } catch (const CancelledError&) {
+    throw;
+  } catch (const Error& e) {  // the initial state: the equilibrium not found
+    throw SceneProblem(SceneErrorMessage(scene.path(), e.what()));
+  }
+  py::object result = MakeResult(run, scene);
+  if (!run->failure.empty()) {
+    py::object error =
+        py::reinterpret_borrow<py::object>(g_blow_up_error)(py::str(run->failure));
+    error.attr("result") = result;
+    PyErr_SetObject(g_blow_up_error, error.ptr());
+    throw py::error_already_set();
+  }
+  return result;
+}
+
+const MemoryRun& RunOf(const py::object& obj, py::object* holder) {
+  if (py::isinstance<Result>(obj)) {
+    *holder = obj;
+  } else {
+    *holder = RunScene(LoadScene(obj, std::nullopt));
+  }
+  return *holder->cast<Result&>().run;
+}
+
+// A read-only view of `data` (shape, strides in elements) kept alive by `owner`.
+py::array View(const py::object& owner, const double* data, std::vector<py::ssize_t> shape,
+               std::vector<py::ssize_t> strides) {
+  for (py::ssize_t& s : strides) s *= static_cast<py::ssize_t>(sizeof(double));
+  py::array a(py::dtype::of<double>(), std::move(shape), std::move(strides), data, owner);
+  a.attr("flags").attr("writeable") = false;
+  return a;
+}
+
+py::array Copy(const Eigen::VectorXd& v) {
+  py::array_t<double> a(v.size());
+  std::memcpy(a.mutable_data(), v.data(), sizeof(double) * static_cast<std::size_t>(v.size()));
+  return std::move(a);
+}
+
+py::array LinkMidpoints(const CableModel& m) {
+  py::array_t<double> a(m.links);
+  double* out = a.mutable_data();
+  for (int j = 0; j < m.links; ++j) out[j] = 0.5 * (m.arc_length[j] + m.arc_length[j + 1]);
+  return std::move(a);
+}
+
+py::dict StatsDict(const MemoryRun& r) {
+  py::dict d;
+  d["integrator"] = r.integrator;
+  d["steps"] = r.stats.steps;
+  d["rejected"] = r.stats.rejected;
+  d["newton_iterations"] = r.stats.newton_iterations;
+  d["snaps"] = r.stats.record.snaps;
+  d["unresolved_snaps"] = r.stats.record.unresolved_snaps;
+  d["equilibrium_iterations"] = r.equilibrium.iterations;
+  d["equilibrium_residual"] = r.equilibrium.residual;
+  return d;
+}
+
+// The static equilibrium of a scene, whatever its [initial] state says.
+struct Equilibrium {
+  py::array x, y, tension, s, s_link;
+  int iterations = 0;
+  double residual = 0;
+  bool fallback = false;
+};
+
+Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
+  SceneDef def = scene.def();
+  def.initial = InitialStateKind::kEquilibrium;
+  const CableModel& m = scene.model();
+  struct Solved {
+    CableState state;
+    EquilibriumReport report;
+    Eigen::VectorXd tension;
+  };
+  CancelFlag cancel{0};
+  Solved solved;
+  try {
+    solved = RunInterruptible(cancel, [&] {
+      Solved s;
+      s.state = MakeInitialState(def, m, &s.report, &cancel);
+      // The tensions as the run's first row gives them: the integrator's, at the state.
+      auto integrator = MakeIntegrator(m, ChooseTimeGrid(m, def.simulation, def.output.interval));
+      integrator->Initialize(m, s.state);
+      s.tension = integrator->tensions();
+      return s;
+    });
+  } catch (const CancelledError&) {
+    throw;
+  } catch (const Error& e) {
+    throw SceneProblem(SceneErrorMessage(scene.path(), e.what()));
+  }
+  Equilibrium e;
+  e.x = Copy(solved.state.x.row(0).transpose());
+  e.y = Copy(solved.state.x.row(1).transpose());
+  e.tension = Copy(solved.tension);
+  e.s = Copy(m.arc_length);
+  e.s_link = LinkMidpoints(m);
+  e.iterations = solved.report.iterations;
+  e.residual = solved.report.residual;
+  e.fallback = solved.report.fallback;
+  return e;
+}
+
+#ifdef CABLEFILM_PYTHON_RENDER
+// The film's options: the scene's [film], with those given.
+FilmRequest FilmOptions(const MemoryRun& run, std::optional<int> width, std::optional<int> height,
+                        std::optional<double> fps, std::optional<double> speed,
+                        std::optional<std::string> colormap,
+                        std::optional<std::pair<double, double>> tension_range) {
+  RunOptions o;
+  auto size = [](const char* key, int v, int hi) {
+    if (v < kMinFilmSize || v > hi || v % 2 != 0)
+      throw py::value_error(std::string(key) + ": expected an even number of pixels from " +
+                            std::to_string(kMinFilmSize) + " to " + std::to_string(hi) +
+                            ", got " + std::to_string(v));
+    return v;
+  };
+  if (width) o.width = size("width", *width, kMaxFilmWidth);
+  if (height) o.height = size("height", *height, kMaxFilmHeight);
+  if (fps) {
+    if (!(*fps >= kMinFps && *fps <= kMaxFps))
+      throw py::value_error("fps: expected a number from " + FormatNumber(kMinFps) + " to " +
+                            FormatNumber(kMaxFps) + " frames per second, got " +
+                            FormatNumber(*fps));
+    o.fps = *fps;
+  }
+  if (speed) {
+    if (!(*speed > 0 && *speed <= kMaxTime))
+      throw py::value_error("speed: expected a positive number of simulated seconds per "
+                            "second of film, got " + FormatNumber(*speed));
+    o.speed = *speed;
+  }
+  if (colormap) {
+    const std::vector<std::string>& names = ColormapNames();
+    if (std::find(names.begin(), names.end(), *colormap) == names.end()) {
+      std::string known;
+      for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+      throw py::value_error("colormap: expected one of " + known + ", got \"" + *colormap + "\"");
+    }
+    o.colormap = *colormap;
+  }
+  if (tension_range) {
+    const auto [lo, hi] = *tension_range;
+    if (!(lo >= 0 && hi > lo && hi <= kMaxTension))
+      throw py::value_error("tension_range: expected (min, max) in N with 0 <= min < max, got (" +
+                            FormatNumber(lo) + ", " + FormatNumber(hi) + ")");
+    o.tension_min = lo;
+    o.tension_max = hi;
+  }
+  o.frames = 0;
+  return MakeFilmRequest(run.scene, o, "");
+}
+
+py::array RenderFrame(const py::object& obj, std::optional<double> t, std::optional<long> row,
+                      int width, int height, std::optional<std::string> colormap,
+                      std::optional<std::pair<double, double>> tension_range) {
+  py::object holder;
+  const MemoryRun& run = RunOf(obj, &holder);
+  FilmRequest request = FilmOptions(run, width, height, std::nullopt, std::nullopt, colormap,
+                                    tension_range);
+  long chosen = run.rows - 1;
+  if (row && t) throw py::value_error("give t or row, not both");
+  if (row) {
+    chosen = *row < 0 ? run.rows + *row : *row;
+    if (chosen < 0 || chosen >= run.rows)
+      throw py::index_error("row " + std::to_string(*row) + ": the run has " +
+                            std::to_string(run.rows) + " rows");
+  } else if (t) {  // the row nearest t (the earlier of two as near)
+    chosen = 0;
+    for (long r = 1; r < run.rows; ++r)
+      if (std::fabs(run.time[r] - *t) < std::fabs(run.time[chosen] - *t)) chosen = r;
+  }
+  CancelFlag cancel{0};
+  const Image image = RunInterruptible(cancel, [&] {
+    return DrawMemoryRunFrame(run, chosen, request);
+  });
+  py::array_t<std::uint8_t> out({image.height, image.width, 3});
+  std::uint8_t* dst = out.mutable_data();
+  for (std::size_t i = 0, n = static_cast<std::size_t>(image.width) * image.height; i < n; ++i) {
+    dst[3 * i] = image.rgba[4 * i];
+    dst[3 * i + 1] = image.rgba[4 * i + 1];
+    dst[3 * i + 2] = image.rgba[4 * i + 2];
+  }
+  return std::move(out);
+}
+
+std::string RenderFilmTo(const py::object& obj, const std::string& path,
+                         std::optional<int> width, std::optional<int> height,
+                         std::optional<double> fps, std::optional<double> speed,
+                         std::optional<std::string> colormap,
+                         std::optional<std::pair<double, double>> tension_range) {
+  namespace fs = std::filesystem;
+  py::object holder;
+  const MemoryRun& run = RunOf(obj, &holder);
+  FilmRequest request = FilmOptions(run, width, height, fps, speed, colormap, tension_range);
+  const std::string problem = FilmFramesProblem(
+      RunSpan(run.scene.simulation.duration, run.scene.output.interval), request.fps,
+      request.speed);
+  if (!problem.empty()) throw py::value_error("speed: " + problem);
+  // PATH.mp4: the film itself, made in a folder of its own beside it, then renamed; else a
+  // folder that gets film.mp4, as `cablefilm run --out PATH` does.
+  const fs::path target(path);
+  const bool file = target.extension() == ".mp4";
+  fs::path dir = target;
+  if (file) {
+    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    fs::create_directories(parent);
+    std::string pattern = (parent / ("." + target.filename().string() + ".XXXXXX")).string();
+    if (!mkdtemp(pattern.data()))
+      throw Error("cannot make a folder beside " + path + ": " + std::strerror(errno));
+    dir = pattern;
+  }
+  request.out_dir = dir.string();
+  CancelFlag cancel{0};
+  bool finished = false;
+  try {
+    finished = RunInterruptible(cancel, [&] { return RenderMemoryRunFilm(run, request, cancel); });
+  } catch (...) {
+    if (file) fs::remove_all(dir);
+    throw;
+  }
+  if (!file) return (dir / (finished ? "film.mp4" : "film.partial.mp4")).string();
+  fs::rename(dir / "film.mp4", target);
+  fs::remove_all(dir);
+  return target.string();
+}
+#endif
+
+// The sweep: every case's scene checked first (as `cablefilm sweep` does), then run on `jobs`
+// threads; one dict a case with the columns of sweep.csv.
+py::list Sweep(const py::object& source, const py::dict& values, std::optional<py::list> cases,
+               std::optional<int> jobs, bool keep_results) {
+  const SceneHandle scene = LoadScene(source, std::nullopt);
+  SweepCases listed;
+  std::vector<std::vector<py::object>> listed_objects;
+  if (cases) {
+    for (const py::handle row : *cases) {
+      const py::dict d = py::reinterpret_borrow<py::dict>(row);
+      if (listed.keys.empty())
+        for (const auto& item : d) listed.keys.push_back(item.first.cast<std::string>());
+      std::vector<std::string> texts;
+      std::vector<py::object> objects;
+      if (d.size() != listed.keys.size())
+        throw py::value_error("cases: every case must give the same keys");
+      for (const std::string& key : listed.keys) {
+        if (!d.contains(key)) throw py::value_error("cases: a case lacks " + key);
+        objects.push_back(d[py::str(key)]);
+        texts.push_back(ValueToToml(objects.back(), key));
+      }
+      listed.rows.push_back(texts);
+      listed_objects.push_back(objects);
+    }
+  }
+  std::vector<SweepKey> sets;
+  std::vector<std::vector<py::object>> set_objects;
+  for (const auto& item : values) {
+    SweepKey k;
+    k.key = item.first.cast<std::string>();
+    std::vector<py::object> objects;
+    for (const py::handle v : item.second) {
+      objects.push_back(py::reinterpret_borrow<py::object>(v));
+      k.values.push_back(ValueToToml(v, k.key));
+    }
+    sets.push_back(k);
+    set_objects.push_back(objects);
+  }
+  const SweepCases all = ExpandCases(listed, sets);
+  const std::size_t n = all.rows.size();
+  // Each case's values as Python objects (the texts are unique within a key: map them back).
+  auto object_of = [&](std::size_t column, const std::string& text) -> py::object {
+    if (column < listed.keys.size()) {
+      for (std::size_t r = 0; r < listed.rows.size(); ++r)
+        if (listed.rows[r][column] == text) return listed_objects[r][column];
+    } else {
+      const std::size_t s = column - listed.keys.size();
+      for (std::size_t v = 0; v < sets[s].values.size(); ++v)
+        if (sets[s].values[v] == text) return set_objects[s][v];
+    }
+    return py::str(text);
+  };
+  std::vector<SceneHandle> scenes;
+  scenes.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::string described;
+    for (std::size_t k = 0; k < all.keys.size(); ++k)
+      described += (k ? ", " : "") + all.keys[k] + " = " + all.rows[i][k];
+    try {
+      SceneHandle edited = scene;
+      edited.Set(all.keys, all.rows[i]);
+      scenes.push_back(std::move(edited));
+    } catch (const std::exception& e) {
+      throw SceneProblem(scene.path() + ": case " + std::to_string(i) + " (" + described +
+                         ") is refused, so no case was run: " + e.what());
+    }
+  }
+  const int threads = std::max(1, jobs.value_or(static_cast<int>(
+                                      std::max(1u, std::thread::hardware_concurrency()))));
+  if (jobs && *jobs < 1) throw py::value_error("jobs: expected at least 1");
+  struct Outcome {
+    std::shared_ptr<const MemoryRun> run;
+    std::string error;
+  };
+  std::vector<Outcome> outcomes(n);
+  CancelFlag cancel{0};
+  RunInterruptible(cancel, [&] {
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      for (std::size_t i; (i = next++) < n && cancel == 0;) {
+        try {
+          outcomes[i].run = std::make_shared<const MemoryRun>(
+              RunInMemory(scenes[i].def(), scenes[i].model(), &cancel));
+        } catch (const std::exception& e) {
+          outcomes[i].error = SceneErrorMessage(scenes[i].path(), e.what());
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads && static_cast<std::size_t>(t) < n; ++t) pool.emplace_back(worker);
+    for (std::thread& t : pool) t.join();
+    return 0;
+  });
+  py::list rows;
+  for (std::size_t i = 0; i < n; ++i) {
+    py::dict d;
+    d["case"] = i;
+    for (std::size_t k = 0; k < all.keys.size(); ++k) d[py::str(all.keys[k])] = object_of(k, all.rows[i][k]);
+    const Outcome& o = outcomes[i];
+    const py::object none = py::none();
+    d["status"] = o.run ? (o.run->completed ? "ok" : "blow-up") : "error";
+    std::vector<std::string> warnings;
+    if (o.run) warnings = TrustWarnings(o.run->model, o.run->stats);
+    d["message"] = !o.error.empty() ? o.error
+                   : o.run && !o.run->failure.empty() ? o.run->failure
+                   : !warnings.empty() ? warnings.front() : std::string();
+    const bool ok = o.run && o.run->completed;
+    d["peak_tension"] = ok ? py::object(py::float_(o.run->peak)) : none;
+    d["peak_time"] = ok ? py::object(py::float_(o.run->peak_t)) : none;
+    d["peak_link"] = ok ? py::object(py::int_(o.run->peak_link)) : none;
+    d["min_tension"] = ok ? py::object(py::float_(o.run->min_tension)) : none;
+    d["min_tension_time"] = ok ? py::object(py::float_(o.run->min_tension_t)) : none;
+    d["min_tension_link"] = ok ? py::object(py::int_(o.run->min_tension_link)) : none;
+    d["snaps"] = ok ? py::object(py::int_(o.run->stats.record.snaps)) : none;
+    d["peak_converged"] = ok ? py::object(py::bool_(warnings.empty())) : none;
+    if (keep_results) d["result"] = o.run ? MakeResult(o.run, scenes[i]) : none;
+    rows.append(d);
+  }
+  return rows;
+}
+
+}  // namespace
+}  // namespace cablefilm::python
+
+PYBIND11_MODULE(cablefilm, m) {
+  using namespace cablefilm;
+  using namespace cablefilm::python;
+  m.doc() = "cablefilm: the lumped-mass cable of Polachek et al. (1963) from Python";
+  std::string version = kVersion;
+  if (*kGitDescribe) version += std::string(" (git ") + kGitDescribe + ")";
+  m.attr("__version__") = version;
+  py::register_exception<SceneProblem>(m, "SceneError", PyExc_ValueError);
+  g_blow_up_error = PyErr_NewExceptionWithDoc(
+      "cablefilm.BlowUpError",
+      "The simulation stopped on a numerical blow-up; .result holds the rows up to then.",
+      PyExc_RuntimeError, nullptr);
+  if (!g_blow_up_error) throw py::error_already_set();
+  m.attr("BlowUpError") = py::reinterpret_borrow<py::object>(g_blow_up_error);
+
+  py::class_<SceneHandle>(m, "Scene", R"(A scene (the TOML schema of scene-format.md), always valid.
+scene["environment.current"] reads a value by its dotted key (as the loader's messages and
+`cablefilm sweep --set` spell it); scene["environment.current"] = 0.5 sets it, read again by
+the loader: a bad key or value raises SceneError and leaves the scene as it was.)")
+      .def(py::init([](const py::object& source, std::optional<std::string> name) {
+             return LoadScene(source, name);
+           }),
+           py::arg("source"), py::arg("name") = py::none(),
+           "A scene file's path, a dict of the TOML schema, or a Scene (copied). `name` names "
+           "a dict's scene in messages (default \"<dict>\").")
+      .def("__getitem__",
+           [](const SceneHandle& s, const std::string& key) {
+             try {
+               return TomlDocumentValue(s.ValueDocument(key));
+             } catch (const Error& e) {
+               throw py::key_error(e.what());
+             }
+           })
+      .def("__setitem__",
+           [](SceneHandle& s, const std::string& key, const py::object& value) {
+             s.Set({key}, {ValueToToml(value, key)});
+           })
+      .def("update",
+           [](SceneHandle& s, const py::dict& values) {
+             std::vector<std::string> keys, texts;
+             for (const auto& item : values) {
+               keys.push_back(item.first.cast<std::string>());
+               texts.push_back(ValueToToml(item.second, keys.back()));
+             }
+             s.Set(keys, texts);
+           },
+           py::arg("values"),
+           "Sets several keys at once ({key: value}), checked together: the scene changes only "
+           "if the whole is valid.")
+      .def("copy", [](const SceneHandle& s) { return s; })
+      .def("to_dict", [](const SceneHandle& s) { return TomlToDict(s.text()); },
+           "The scene as nested dicts and lists (what `cablefilm.Scene(d)` takes).")
+      .def_property_readonly("text", &SceneHandle::text, "The scene's TOML text.")
+      .def_property_readonly("path", &SceneHandle::path,
+                             "The file it came from (or the name given to a dict).")
+      .def_property_readonly("title", [](const SceneHandle& s) { return s.def().title; })
+      .def_property_readonly("stations", [](const SceneHandle& s) { return s.model().stations(); })
+      .def_property_readonly("links", [](const SceneHandle& s) { return s.model().links; })
+      .def("__repr__", [](const SceneHandle& s) {
+        return "<cablefilm.Scene " + s.path() + ": \"" + s.def().title + "\", " +
+               std::to_string(s.model().links) + " links>";
+      });
+
+  m.def("load", &LoadScene, py::arg("source"), py::arg("name") = py::none(),
+        "A Scene from a scene file's path or a dict of the same schema (SceneError when the "
+        "loader refuses it, with the message `cablefilm check` prints).");
+
+  py::class_<Result>(m, "Result", R"(The rows of a run, as results.nc holds them (the same doubles):
+time [n] (s), x, y [n, stations] (m), tension [n, links] (N, 0 when slack), the end motion
+x_start, y_start, x_end, y_end [n] (m), arc lengths s [stations], s_link [links] (m). The arrays
+are read-only views of the run.)")
+      .def_property_readonly("time", [](const py::object& self) {
+        const MemoryRun& r = *self.cast<Result&>().run;
+        return View(self, r.time.data(), {r.rows}, {1});
+      })
+      .def_property_readonly("x", [](const py::object& self) {
+        const MemoryRun& r = *self.cast<Result&>().run;
+        return View(self, r.x.data(), {r.rows, r.model.stations()}, {r.model.stations(), 1});
+      })
+      .def_property_readonly("y", [](const py::object& self) {
+        const MemoryRun& r = *self.cast<Result&>().run;
+        return View(self, r.y.data(), {r.rows, r.model.stations()}, {r.model.stations(), 1});
+      })
+      .def_property_readonly("tension", [](const py::object& self) {
+        const MemoryRun& r = *self.cast<Result&>().run;
+        return View(self, r.tension.data(), {r.rows, r.model.links}, {r.model.links, 1});
+      })
+      .def_property_readonly("x_start", [](const py::object& self) {
+        const MemoryRun& r = *self.cast<Result&>().run;
+        return View(self, r.x.data(), {r.rows}, {r.model.stations()});
+      })
+      .def_property_readonly("y_start", [](const py::object& self) {
+        const MemoryRun& r = *self.cast<Result&>().run;
+        return View(self, r.y.data(), {r.rows}, {r.model.stations()});
+      })
+      .def_property_readonly("x_end", [](const py::object& self) {
+        const MemoryRun& r = *self.cast<Result&>().run;
+        return View(self, r.x.data() + r.model.links, {r.rows}, {r.model.stations()});
+      })
+      .def_property_readonly("y_end", [](const py::object& self) {
+        const MemoryRun& r = *self.cast<Result&>().run;
+        return View(self, r.y.data() + r.model.links, {r.rows}, {r.model.stations()});
+      })
+      .def_property_readonly("s", [](const Result& r) { return Copy(r.run->model.arc_length); })
+      .def_property_readonly("s_link", [](const Result& r) { return LinkMidpoints(r.run->model); })
+      .def_property_readonly("scene", [](const Result& r) { return r.scene; })
+      .def_property_readonly("completed", [](const Result& r) { return r.run->completed; })
+      .def_property_readonly("failure", [](const Result& r) { return r.run->failure; })
+      .def_property_readonly("peak_tension", [](const Result& r) { return r.run->peak; },
+                             "The largest tension of any row [N] (the run's printed peak).")
+      .def_property_readonly("peak_time", [](const Result& r) { return r.run->peak_t; })
+      .def_property_readonly("peak_link", [](const Result& r) { return r.run->peak_link; })
+      .def_property_readonly("min_tension", [](const Result& r) { return r.run->min_tension; })
+      .def_property_readonly("min_tension_time", [](const Result& r) { return r.run->min_tension_t; })
+      .def_property_readonly("min_tension_link", [](const Result& r) { return r.run->min_tension_link; })
+      .def_property_readonly("stats", [](const Result& r) { return StatsDict(*r.run); })
+      .def_property_readonly("warnings", [](const Result& r) {
+        return TrustWarnings(r.run->model, r.run->stats);
+      }, "Why the peak cannot be trusted (empty: converged), as run_report.toml says.")
+      .def("__repr__", [](const Result& r) {
+        return "<cablefilm.Result " + std::to_string(r.run->rows) + " rows, " +
+               std::to_string(r.run->model.stations()) + " stations, peak " +
+               FormatNumber(r.run->peak) + " N" + (r.run->completed ? "" : ", cut short") + ">";
+      });
+
+  m.def("run", [](const py::object& scene) { return RunScene(LoadScene(scene, std::nullopt)); },
+        py::arg("scene"),
+        "Runs a scene (a Scene, a path or a dict) from its initial state to its end, writing no "
+        "file; the GIL is released meanwhile. Returns a Result. BlowUpError on a numerical "
+        "blow-up (its .result: the rows so far); SceneError when no initial state is found.");
+
+  py::class_<Equilibrium>(m, "Equilibrium",
+                          "The static equilibrium: x, y [stations] (m), tension [links] (N), "
+                          "s, s_link (m); unpacks as x, y, tension.")
+      .def_readonly("x", &Equilibrium::x)
+      .def_readonly("y", &Equilibrium::y)
+      .def_readonly("tension", &Equilibrium::tension)
+      .def_readonly("s", &Equilibrium::s)
+      .def_readonly("s_link", &Equilibrium::s_link)
+      .def_readonly("iterations", &Equilibrium::iterations)
+      .def_readonly("residual", &Equilibrium::residual, "largest out-of-balance force [N]")
+      .def_readonly("fallback", &Equilibrium::fallback)
+      .def("__iter__", [](const Equilibrium& e) {
+        return py::iter(py::make_tuple(e.x, e.y, e.tension));
+      });
+  m.def("equilibrium",
+        [](const py::object& scene) { return SolveSceneEquilibrium(LoadScene(scene, std::nullopt)); },
+        py::arg("scene"),
+        "The scene's static equilibrium with the ends at their t = 0 positions (the initial "
+        "state of a run with [initial] state = \"equilibrium\"), the GIL released.");
+
+#ifdef CABLEFILM_PYTHON_RENDER
+  m.def("render_frame", &RenderFrame, py::arg("run"), py::arg("t") = py::none(),
+        py::kw_only(), py::arg("row") = py::none(), py::arg("width") = 1280,
+        py::arg("height") = 720, py::arg("colormap") = py::none(),
+        py::arg("tension_range") = py::none(),
+        "The film's frame at the row nearest t [s] (or row; default the last) of a Result (a "
+        "scene is run first): an (height, width, 3) uint8 array, as the film draws it.");
+  m.def("render_film", &RenderFilmTo, py::arg("run"), py::arg("path"), py::kw_only(),
+        py::arg("width") = py::none(), py::arg("height") = py::none(), py::arg("fps") = py::none(),
+        py::arg("speed") = py::none(), py::arg("colormap") = py::none(),
+        py::arg("tension_range") = py::none(),
+        "The film of a Result (a scene is run first), as `cablefilm run` makes it: into PATH "
+        "when it ends in .mp4, else PATH/film.mp4. The scene's [film] unless given. Returns "
+        "the film's path.");
+#endif
+
+  m.def("sweep", &Sweep, py::arg("scene"), py::arg("values") = py::dict(), py::kw_only(),
+        py::arg("cases") = py::none(), py::arg("jobs") = py::none(),
+        py::arg("keep_results") = false,
+        "Runs the cross product of values ({key: [v1, v2, ...]}, the first key varying slowest) "
+        "times the cases (a list of {key: value}) on `jobs` threads (default one per core). "
+        "Every case is checked first (SceneError naming the case). Returns one dict a case "
+        "with the columns of sweep.csv (numbers as doubles; None for a case that did not "
+        "finish), and its Result under \"result\" with keep_results.");
+}

@@ -1,0 +1,125 @@
+#include "python/toml_values.h"
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+#include <toml++/toml.h>
+
+namespace py = pybind11;
+
+namespace cablefilm::python {
+namespace {
+
+[[noreturn]] void Unwritable(const py::handle& value, const std::string& key) {
+  throw py::type_error(key + ": a " + std::string(py::str(py::type::of(value).attr("__name__"))) +
+                       " cannot be written in a scene (expected a number, a string, true or "
+                       "false, a list or a dict)");
+}
+
+void MakeInline(toml::node& node) {
+  if (toml::table* t = node.as_table()) {
+    t->is_inline(true);
+    for (auto&& [k, v] : *t) MakeInline(v);
+  } else if (toml::array* a = node.as_array()) {
+    for (toml::node& v : *a) MakeInline(v);
+  }
+}
+
+// The TOML value of `obj`: a table, an array, a bool, an integer, a float or a string.
+std::unique_ptr<toml::node> ToNode(const py::handle& obj, const std::string& key);
+
+toml::table ToTable(const py::handle& obj, const std::string& key) {
+  toml::table table;
+  for (const auto& item : py::reinterpret_borrow<py::dict>(obj)) {
+    if (!py::isinstance<py::str>(item.first))
+      throw py::type_error(key + ": a dict's keys must be strings, got a " +
+                           std::string(py::str(py::type::of(item.first).attr("__name__"))));
+    const std::string name = item.first.cast<std::string>();
+    table.insert_or_assign(name, *ToNode(item.second, key.empty() ? name : key + "." + name));
+  }
+  return table;
+}
+
+std::unique_ptr<toml::node> ToNode(const py::handle& obj, const std::string& key) {
+  if (py::isinstance<py::bool_>(obj)) return std::make_unique<toml::value<bool>>(obj.cast<bool>());
+  if (py::isinstance<py::str>(obj))
+    return std::make_unique<toml::value<std::string>>(obj.cast<std::string>());
+  if (py::isinstance<py::dict>(obj)) return std::make_unique<toml::table>(ToTable(obj, key));
+  if (py::hasattr(obj, "tolist") && !py::isinstance<py::list>(obj) &&
+      !py::isinstance<py::tuple>(obj)) {
+    // A numpy array or scalar: its Python values (a scalar's tolist() is the scalar).
+    const py::object plain = obj.attr("tolist")();
+    if (!plain.is(obj)) return ToNode(plain, key);
+  }
+  if (py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj)) {
+    auto array = std::make_unique<toml::array>();
+    std::size_t i = 0;
+    for (const py::handle item : obj)
+      array->push_back(*ToNode(item, key + "[" + std::to_string(i++) + "]"));
+    return array;
+  }
+  if (py::isinstance<py::int_>(obj)) {
+    try {
+      return std::make_unique<toml::value<std::int64_t>>(obj.cast<std::int64_t>());
+    } catch (const py::cast_error&) {
+      throw py::value_error(key + ": the integer " + std::string(py::str(obj)) +
+                            " is beyond TOML's 64-bit integers");
+    }
+  }
+  if (py::isinstance<py::float_>(obj))
+    return std::make_unique<toml::value<double>>(obj.cast<double>());
+  Unwritable(obj, key);
+}
+
+py::object ToPython(const toml::node& node) {
+  if (const toml::table* t = node.as_table()) {
+    py::dict d;
+    for (auto&& [k, v] : *t) d[py::str(std::string(k.str()))] = ToPython(v);
+    return std::move(d);
+  }
+  if (const toml::array* a = node.as_array()) {
+    py::list l;
+    for (const toml::node& v : *a) l.append(ToPython(v));
+    return std::move(l);
+  }
+  if (const auto* s = node.as_string()) return py::str(s->get());
+  if (const auto* i = node.as_integer()) return py::int_(i->get());
+  if (const auto* f = node.as_floating_point()) return py::float_(f->get());
+  if (const auto* b = node.as_boolean()) return py::bool_(b->get());
+  std::ostringstream os;  // a date or a time: its TOML text
+  node.visit([&](auto&& v) { os << v; });
+  return py::str(os.str());
+}
+
+}  // namespace
+
+std::string DictToToml(const py::dict& scene) {
+  std::ostringstream os;
+  os << ToTable(scene, "") << "\n";
+  return os.str();
+}
+
+std::string ValueToToml(const py::handle& value, const std::string& key) {
+  toml::table holder;
+  holder.insert_or_assign("v", *ToNode(value, key));
+  MakeInline(*holder.get("v"));
+  std::ostringstream os;
+  os << holder;
+  std::string text = os.str();
+  const std::string lead = "v = ";
+  if (text.compare(0, lead.size(), lead) == 0) text.erase(0, lead.size());
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  return text;
+}
+
+py::object TomlDocumentValue(const std::string& document) {
+  const toml::table t = toml::parse(document);
+  return ToPython(*t.get("v"));
+}
+
+py::dict TomlToDict(const std::string& text) {
+  const toml::table t = toml::parse(text);
+  return py::reinterpret_steal<py::dict>(ToPython(t).release());
+}
+
+}  // namespace cablefilm::python

@@ -1,0 +1,403 @@
+#!/usr/bin/env python3
+"""Issue 12 part 4: the Python module `cablefilm` against the command line it shares its code
+with. Run by ctest with Debian's Python and PYTHONPATH=<build>/python; CABLEFILM_PROGRAM is
+the build's `cablefilm`, CABLEFILM_SOURCE_DIR the source tree, CABLEFILM_TEST_TMP a folder for
+what the tests write. One class per ctest test: module_test.py -v ReproducesTheCli.
+
+The truths are independent of the module: the program's own results.nc (read with netCDF4),
+sweep.csv and `cablefilm check` messages, and a static balance of forces worked out here from
+the scene's numbers.
+"""
+import os
+import struct
+import subprocess
+import tempfile
+import threading
+import tomllib
+import unittest
+import zlib
+
+import numpy as np
+import netCDF4
+
+import cablefilm
+
+PROGRAM = os.environ["CABLEFILM_PROGRAM"]
+SOURCE = os.environ["CABLEFILM_SOURCE_DIR"]
+TMP = os.environ.get("CABLEFILM_TEST_TMP", tempfile.gettempdir())
+P63 = os.path.join(SOURCE, "scenes", "polachek1963.toml")
+
+
+def workdir(name):
+    path = tempfile.mkdtemp(prefix=name + "_", dir=TMP)
+    return path
+
+
+def cli(*args):
+    """Runs the program; returns (status, stdout, stderr)."""
+    r = subprocess.run([PROGRAM, *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                       text=True)
+    return r.returncode, r.stdout, r.stderr
+
+
+def bits(a):
+    """The doubles' bit patterns: equal means equal to the bit (-0.0 and NaNs too)."""
+    return np.ascontiguousarray(a, dtype=np.float64).view(np.uint64)
+
+
+def assert_same_bits(test, a, b, what):
+    a, b = np.asarray(a), np.asarray(b)
+    test.assertEqual(a.shape, b.shape, what + ": shapes")
+    differ = np.count_nonzero(bits(a) != bits(b))
+    test.assertEqual(differ, 0, "%s: %d of %d doubles differ (largest difference %g)"
+                     % (what, differ, a.size, np.max(np.abs(a - b)) if a.size else 0))
+
+
+def cli_results(scene_path, out):
+    status, stdout, stderr = cli("run", scene_path, "--no-film", "--out", out)
+    if status != 0:
+        raise AssertionError("cablefilm run failed (%d): %s%s" % (status, stdout, stderr))
+    return netCDF4.Dataset(os.path.join(out, "results.nc"))
+
+
+def assert_result_is_file(test, result, ds):
+    """Every variable of results.nc, bit for bit, against the module's arrays."""
+    test.assertEqual(ds.dimensions["time"].size, result.time.shape[0])
+    for name in ["time", "x", "y", "tension", "x_start", "y_start", "x_end", "y_end", "s",
+                 "s_link"]:
+        assert_same_bits(test, getattr(result, name), ds.variables[name][:].data, name)
+
+
+class ReproducesTheCli(unittest.TestCase):
+    """Case P63 from the module and from `cablefilm run`: the same doubles."""
+
+    def test_p63_bit_for_bit(self):
+        with cli_results(P63, workdir("p63_cli")) as ds:
+            result = cablefilm.run(cablefilm.load(P63))
+            self.assertEqual(result.x.shape, (1801, 61))   # 60 s, a row every 1/30 s; 60 links
+            self.assertEqual(result.tension.shape, (1801, 60))
+            assert_result_is_file(self, result, ds)
+            eq = cablefilm.equilibrium(P63)   # the initial state, solved on its own
+            for name, ours in [("x_equilibrium", eq.x), ("y_equilibrium", eq.y),
+                               ("tension_equilibrium", eq.tension)]:
+                assert_same_bits(self, ours, ds.variables[name][:].data, name)
+            x, y, tension = eq   # unpacks so
+            assert_same_bits(self, x, result.x[0], "equilibrium = first row")
+            # The run's printed peak: the largest tension_max of the rows.
+            self.assertEqual(result.peak_tension, ds.variables["tension"][:].data.max())
+            self.assertTrue(result.completed)
+            self.assertEqual(result.warnings, [])
+
+    def test_changed_value_bit_for_bit(self):
+        # A value set from Python, then the program on the scene's text: the same doubles.
+        scene = cablefilm.load(P63)
+        scene["environment.current"] = 0.5
+        scene["simulation.duration"] = 10
+        self.assertEqual(scene["environment.current"], 0.5)
+        out = workdir("p63_current")
+        path = os.path.join(out, "scene.toml")
+        with open(path, "w") as f:
+            f.write(scene.text)
+        with cli_results(path, out) as ds:
+            result = cablefilm.run(scene)
+            self.assertEqual(result.time[-1], 10.0)
+            assert_result_is_file(self, result, ds)
+
+
+class SceneErrors(unittest.TestCase):
+    """A bad scene raises SceneError (a ValueError) with what `cablefilm check` prints."""
+
+    def check_message(self, path):
+        status, _, stderr = cli("check", path)
+        self.assertEqual(status, 1, stderr)
+        prefix = "cablefilm: error: "
+        self.assertTrue(stderr.startswith(prefix) and stderr.endswith("\n"), stderr)
+        return stderr[len(prefix):-1]
+
+    def bad_scene(self, old, new):
+        with open(P63) as f:
+            text = f.read()
+        self.assertIn(old, text)
+        out = workdir("bad")
+        path = os.path.join(out, "bad.toml")
+        with open(path, "w") as f:
+            f.write(text.replace(old, new, 1))
+        return path
+
+    def test_same_message_as_check(self):
+        cases = [
+            ("current = 0.0 ", "curent = 0.0 "),                    # unknown key
+            ("youngs_modulus = 9.0e10", "youngs_modulus = -1"),     # out of range
+            ("period = 10.0", "period = \"ten\""),                  # wrong type
+            ("[cable]", "[cable"),                                  # not TOML
+            ("position = [80.0, 30.48]", "position = [800.0, 30.48]"),  # the model's limits
+        ]
+        for old, new in cases:
+            with self.subTest(new=new):
+                path = self.bad_scene(old, new)
+                expected = self.check_message(path)
+                with self.assertRaises(cablefilm.SceneError) as caught:
+                    cablefilm.load(path)
+                self.assertIsInstance(caught.exception, ValueError)
+                self.assertEqual(str(caught.exception), expected)
+                # The same from run(), which loads a path itself.
+                with self.assertRaises(cablefilm.SceneError) as caught:
+                    cablefilm.run(path)
+                self.assertEqual(str(caught.exception), expected)
+
+    def test_missing_file(self):
+        path = os.path.join(workdir("missing"), "none.toml")
+        expected = self.check_message(path)
+        with self.assertRaises(cablefilm.SceneError) as caught:
+            cablefilm.load(path)
+        self.assertEqual(str(caught.exception), expected)
+
+    def test_bad_value_leaves_the_scene(self):
+        scene = cablefilm.load(P63)
+        before = scene.text
+        with self.assertRaises(cablefilm.SceneError) as caught:
+            scene["environment.current"] = "fast"
+        self.assertIn("environment.current", str(caught.exception))
+        with self.assertRaises(cablefilm.SceneError) as caught:
+            scene["environment.curent"] = 0.5
+        self.assertIn("environment.curent: unknown key", str(caught.exception))
+        with self.assertRaises(cablefilm.SceneError) as caught:
+            scene["material[2].diameter"] = 0.1
+        self.assertIn("material[2]", str(caught.exception))
+        with self.assertRaises(TypeError):
+            scene["environment.current"] = None
+        # update() sets keys together: one bad value and none is set.
+        with self.assertRaises(cablefilm.SceneError):
+            scene.update({"environment.current": 0.3, "simulation.duration": -1})
+        self.assertEqual(scene.text, before)
+        self.assertEqual(scene["environment.current"], 0.0)
+        with self.assertRaises(KeyError):
+            scene["environment.nothing"]
+
+
+class DictScenes(unittest.TestCase):
+    """A scene given as a dict is read by the same loader: same results, same checks."""
+
+    def test_dict_equals_file(self):
+        with open(P63, "rb") as f:
+            d = tomllib.load(f)
+        d["simulation"]["duration"] = 20.0
+        from_dict = cablefilm.run(cablefilm.load(d))
+        from_file = cablefilm.load(P63)
+        from_file["simulation.duration"] = 20.0
+        from_file = cablefilm.run(from_file)
+        for name in ["time", "x", "y", "tension"]:
+            assert_same_bits(self, getattr(from_dict, name), getattr(from_file, name), name)
+        # to_dict() gives the dict back; a numpy value is taken as its Python value.
+        self.assertEqual(cablefilm.load(d).to_dict(), d)
+        scene = cablefilm.load(d)
+        scene["ends.end.x_amplitudes"] = np.array([1.8288, 0.0])
+        scene["cable.section[0].segments"] = np.int64(30)
+        self.assertEqual(scene["ends.end.x_amplitudes"], [1.8288, 0.0])
+        self.assertEqual(scene["cable.section[0].segments"], 30)
+
+    def test_dict_errors_name_the_key(self):
+        with open(P63, "rb") as f:
+            d = tomllib.load(f)
+        d["environment"]["curent"] = 0.5
+        with self.assertRaises(cablefilm.SceneError) as caught:
+            cablefilm.load(d, name="p63")
+        message = str(caught.exception)
+        self.assertTrue(message.startswith("p63:"), message)
+        self.assertIn("environment.curent: unknown key", message)
+        with self.assertRaises(TypeError):
+            cablefilm.load({"environment": {"current": object()}})
+
+
+class Equilibrium(unittest.TestCase):
+    """A chain hanging between two fixed ends: the static balance worked out by hand."""
+
+    def test_hanging_chain_balance(self):
+        L, links, span = 100.0, 50, 80.0              # m, links, m between the ends
+        mu, area, E, rho, g = 10.0, 1e-3, 2e11, 1025.0, 9.80665
+        scene = cablefilm.load({
+            "title": "hanging chain",
+            "environment": {"gravity": g, "fluid_density": rho, "current": 0.0},
+            "material": [{"name": "chain", "diameter": 0.05, "area": area,
+                          "mass_per_length": mu, "youngs_modulus": E}],
+            "cable": {"section": [{"material": "chain", "length": L, "segments": links}]},
+            "ends": {"start": {"position": [0.0, 0.0], "motion": "fixed"},
+                     "end": {"position": [span, 0.0], "motion": "fixed"}},
+        }, name="chain")
+        x, y, T = cablefilm.equilibrium(scene)
+        self.assertEqual((x.shape, y.shape, T.shape), ((links + 1,), (links + 1,), (links,)))
+        # The interior stations carry the net weight of the cable but half a link at each end
+        # (those halves rest on the ends): the vertical pulls of the end links balance it.
+        w = (mu - rho * area) * g                      # net weight per metre [N/m]
+        carried = w * (L - L / links)                  # [N]
+        def vertical_pull(j0, j1, t):
+            dx, dy = x[j1] - x[j0], y[j1] - y[j0]
+            return t * dy / np.hypot(dx, dy)
+        pulls = vertical_pull(1, 0, T[0]) + vertical_pull(links - 1, links, T[-1])
+        # The solver stops at a residual of 1e-9 of its force scale; 1e-6 leaves room.
+        self.assertAlmostEqual(pulls / carried, 1.0, delta=1e-6)
+        # Symmetric ends, symmetric line: the lowest station in the middle.
+        self.assertEqual(int(np.argmin(y)), links // 2)
+        self.assertAlmostEqual(T[0], T[-1], delta=1e-6 * T[0])
+
+
+class Threads(unittest.TestCase):
+    """Runs release the GIL: two Python threads running cases give the serial results."""
+
+    def test_two_threads_same_as_serial(self):
+        scenes = []
+        for current in [0.1, 0.4]:
+            s = cablefilm.load(P63)
+            s.update({"environment.current": current, "simulation.duration": 20})
+            scenes.append(s)
+        serial = [cablefilm.run(s) for s in scenes]
+        threaded = [None, None]
+        def work(i):
+            threaded[i] = cablefilm.run(scenes[i])
+        threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        for a, b in zip(serial, threaded):
+            for name in ["time", "x", "y", "tension"]:
+                assert_same_bits(self, getattr(a, name), getattr(b, name), name)
+        # The two cases differ (else the test proves little).
+        self.assertNotEqual(serial[0].peak_tension, serial[1].peak_tension)
+
+
+class Sweep(unittest.TestCase):
+    """cablefilm.sweep against `cablefilm sweep`'s sweep.csv and single runs."""
+
+    def test_sweep_matches_cli_and_runs(self):
+        base = cablefilm.load(P63)
+        base.update({"simulation.duration": 5, "output.interval": 0.1})
+        out = workdir("sweep")
+        path = os.path.join(out, "base.toml")
+        with open(path, "w") as f:
+            f.write(base.text)
+        values = {"environment.current": [0.0, 0.5], "ends.end.period": [8, 12]}
+        rows = cablefilm.sweep(base, values, jobs=2)
+        self.assertEqual(len(rows), 4)
+        status, stdout, stderr = cli("sweep", path, "--set", "environment.current=0.0,0.5",
+                                     "--set", "ends.end.period=8,12", "--jobs", "2",
+                                     "--out", os.path.join(out, "cli"))
+        self.assertEqual(status, 0, stdout + stderr)
+        import csv
+        with open(os.path.join(out, "cli", "sweep.csv")) as f:
+            csv_rows = list(csv.DictReader(f))
+        for row, csv_row in zip(rows, csv_rows):
+            self.assertEqual(row["status"], "ok")
+            self.assertEqual(row["status"], csv_row["status"])
+            for key in values:
+                self.assertEqual(float(row[key]), float(csv_row[key]))
+            # sweep.csv has 10 significant digits.
+            for name in ["peak_tension", "peak_time", "min_tension", "min_tension_time"]:
+                self.assertAlmostEqual(row[name], float(csv_row[name]),
+                                       delta=abs(row[name]) * 1e-9 + 1e-300, msg=name)
+            for name in ["peak_link", "min_tension_link", "snaps"]:
+                self.assertEqual(row[name], int(csv_row[name]), name)
+            self.assertEqual(str(row["peak_converged"]).lower(), csv_row["peak_converged"])
+            single = base.copy()
+            single.update({k: row[k] for k in values})
+            self.assertEqual(row["peak_tension"], cablefilm.run(single).peak_tension)
+
+    def test_refused_case(self):
+        with self.assertRaises(cablefilm.SceneError) as caught:
+            cablefilm.sweep(P63, {"environment.curent": [0]})
+        self.assertIn("case 0 (environment.curent = 0) is refused, so no case was run",
+                      str(caught.exception))
+
+
+def read_png(path):
+    """An 8-bit RGB or RGBA, non-interlaced PNG as an (H, W, channels) array (zlib only)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, idat, header = 8, b"", None
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            header = struct.unpack(">IIBBBBB", body)
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    width, height, depth, color, _, _, interlace = header
+    assert depth == 8 and color in (2, 6) and interlace == 0, header
+    channels = 3 if color == 2 else 4
+    raw = np.frombuffer(zlib.decompress(idat), dtype=np.uint8)
+    stride = width * channels
+    rows = raw.reshape(height, stride + 1)
+    out = np.zeros((height, stride), dtype=np.int32)
+    prev = np.zeros(stride, dtype=np.int32)
+    for r in range(height):
+        kind, line = rows[r, 0], rows[r, 1:].astype(np.int32)
+        cur = np.zeros(stride, dtype=np.int32)
+        for i in range(stride):
+            a = cur[i - channels] if i >= channels else 0
+            b = prev[i]
+            c = prev[i - channels] if i >= channels else 0
+            if kind == 0:
+                p = 0
+            elif kind == 1:
+                p = a
+            elif kind == 2:
+                p = b
+            elif kind == 3:
+                p = (a + b) // 2
+            else:
+                pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
+                p = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+            cur[i] = (line[i] + p) & 0xFF
+        out[r] = cur
+        prev = cur
+    return out.reshape(height, width, channels).astype(np.uint8)
+
+
+class Pictures(unittest.TestCase):
+    """A frame as an array, and the film, drawn by the film pass of the program."""
+
+    def test_frame_is_the_films_frame(self):
+        scene = cablefilm.load(P63)
+        scene["simulation.duration"] = 2
+        out = workdir("frames")
+        path = os.path.join(out, "scene.toml")
+        with open(path, "w") as f:
+            f.write(scene.text)
+        status, stdout, stderr = cli("run", path, "--frames", "--size", "320x180",
+                                     "--out", out)
+        self.assertEqual(status, 0, stdout + stderr)
+        result = cablefilm.run(scene)
+        frame = cablefilm.render_frame(result, 1.0, width=320, height=180)
+        self.assertEqual(frame.shape, (180, 320, 3))
+        self.assertEqual(frame.dtype, np.uint8)
+        # Not a blank picture: many colours, dark background, the cable's colour map.
+        colours = np.unique(frame.reshape(-1, 3), axis=0)
+        self.assertGreater(len(colours), 100)
+        # Frame 30 of the film is t = 1 s (30 frames a second, a row a frame).
+        png = read_png(os.path.join(out, "frames", "frame_000030.png"))[:, :, :3]
+        differ = np.count_nonzero(np.any(png != frame, axis=2))
+        self.assertEqual(differ, 0, "%d of %d pixels differ from the film's frame 30"
+                         % (differ, frame.shape[0] * frame.shape[1]))
+        other = cablefilm.render_frame(result, row=0, width=320, height=180)
+        self.assertTrue(np.any(other != frame))
+
+    def test_film(self):
+        scene = cablefilm.load(P63)
+        scene["simulation.duration"] = 1
+        out = workdir("film")
+        film = os.path.join(out, "p63.mp4")
+        self.assertEqual(cablefilm.render_film(scene, film, width=320, height=180), film)
+        with open(film, "rb") as f:
+            head = f.read(12)
+        self.assertEqual(head[4:8], b"ftyp")
+        self.assertEqual(os.listdir(out), ["p63.mp4"])   # nothing else left beside it
+        with self.assertRaises(ValueError):
+            cablefilm.render_film(scene, film, width=321)
+        with self.assertRaises(ValueError):
+            cablefilm.render_frame(scene, colormap="rainbow")
+
+
+if __name__ == "__main__":
+    unittest.main()
