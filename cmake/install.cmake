@@ -49,5 +49,11 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libeigen3-dev")
+if(TARGET cablefilm_python)  # the Python it was built for (3.11 on Debian 12), numpy for arrays
+  math(EXPR next_minor "${Python3_VERSION_MINOR} + 1")
+  set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libeigen3-dev, python3 (>= \
+${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}), python3 (<< \
+${Python3_VERSION_MAJOR}.${next_minor}), python3-numpy")
+endif()
 set(CPACK_STRIP_FILES bin/cablefilm)
 include(CPack)

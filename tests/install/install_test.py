@@ -5,9 +5,10 @@
         prefix; the installed `cablefilm` (found on PATH) runs a shortened case P63 from another
         folder with the source and build trees hidden (an empty tmpfs mounted over them in a
         private mount namespace, when this runs as root), and writes the film and the results
-        the build tree's program writes.
-  install_test.py deb      ...   cpack -G DEB: the .deb's contents, its Debian dependencies, and
-        its program run from the unpacked package.
+        the build tree's program writes; the installed Python module (when built), imported
+        through PYTHONPATH under the prefix, gives the doubles of the build tree's results.nc.
+  install_test.py deb      ...   cpack -G DEB: the .deb's contents (the Python module too, when
+        built), its Debian dependencies, and its program run from the unpacked package.
   install_test.py consumer ...   tests/install/consumer configured against the temporary
         prefix with find_package(cablefilm), linked to cablefilm::core, run.
 """
@@ -66,6 +67,31 @@ def read_rows(path):
     with open(path) as f:
         lines = f.read().splitlines()
     return lines[0], [line.split(",") for line in lines[1:]]
+
+
+def built_module(build):
+    """The Python module of the build tree (<build>/python/cablefilm.*.so), or None."""
+    folder = os.path.join(build, "python")
+    names = [n for n in os.listdir(folder) if n.startswith("cablefilm.") and n.endswith(".so")] \
+        if os.path.isdir(folder) else []
+    return names[0] if names else None
+
+
+# Run by the interpreter of the installed module, in the folder of test_run's scene: the module
+# found through PYTHONPATH under the prefix, the same doubles as the build tree's results.nc.
+MODULE_CHECK = """
+import sys, numpy, netCDF4, cablefilm
+prefix = sys.argv[1]
+if not cablefilm.__file__.startswith(prefix):
+    sys.exit("cablefilm imported from %s, not from the prefix" % cablefilm.__file__)
+result = cablefilm.run("p63.toml")
+with netCDF4.Dataset("ref/results.nc") as ds:
+    for name in ["time", "x", "y", "tension"]:
+        if not numpy.array_equal(getattr(result, name), ds.variables[name][:].data):
+            sys.exit("the installed module's %s differs from results.nc" % name)
+print("installed module %s: %d rows, peak %.6g N, the doubles of results.nc"
+      % (cablefilm.__file__, len(result.time), result.peak_tension))
+"""
 
 
 def test_run(args):
@@ -149,6 +175,21 @@ def test_run(args):
         if not re.match(r"^cablefilm \d+\.\d+", version):
             fail("--version printed " + version)
         print(version)
+
+        module = built_module(build)
+        if module:  # the Python module, installed beside the program
+            lib = os.path.join(prefix, "lib")
+            found = [os.path.join(lib, v, p, module) for v in os.listdir(lib)
+                     if v.startswith("python3") for p in ("dist-packages", "site-packages")
+                     if os.path.isfile(os.path.join(lib, v, p, module))]
+            if len(found) != 1:
+                fail("cmake --install put %s under %s/lib/python3*: %s" % (module, prefix, found))
+            env["PYTHONPATH"] = os.path.dirname(found[0])
+            command = [sys.executable, "-c", MODULE_CHECK, prefix]
+            if can_hide_trees():
+                command = (["unshare", "--mount", "--propagation", "private", "--", "sh", "-c",
+                            script, "sh"] + hidden + ["--"] + command)
+            print(run(command, cwd=work, env=env))
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     print("PASS")
@@ -174,6 +215,10 @@ def test_deb(args):
                      "./usr/lib/cmake/cablefilm/cablefilmTargets.cmake"]:
             if want not in paths:
                 fail(debs[0] + " has no " + want)
+        module = built_module(build)
+        if module and not any(p.startswith("./usr/lib/python3") and p.endswith("/" + module)
+                              for p in paths):
+            fail(debs[0] + " has no Python module " + module + " under ./usr/lib/python3*")
         if any("shaders" in p or p.startswith("./usr/share/cablefilm") for p in paths):
             fail("the .deb ships shader files: they belong inside the program")
         depends = run(["dpkg-deb", "-f", deb, "Depends"]).strip()
