@@ -254,9 +254,9 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
     }
     if (!finished || !failure.empty()) break;
     CableSnapshot snap = ToSnapshot(steppers[0].state, steppers[0].integrator->tensions());
-    if (spec.surface)
-      SurfaceProfile(main.model->wave, snap.t, spec.x_min, spec.x_max, snap.surface_x,
-                     snap.surface_y);
+    if (spec.surface)  // a box's width beyond it on either side: the plot may be wider
+      SurfaceProfile(main.model->wave, snap.t, 2 * spec.x_min - spec.x_max,
+                     2 * spec.x_max - spec.x_min, snap.surface_x, snap.surface_y);
     // The output rows up to this frame (all that are left at the last frame).
     const double until = k == last ? std::numeric_limits<double>::infinity()
                                    : steppers[0].state.t + 1e-9 * frame_interval;

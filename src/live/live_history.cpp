@@ -117,8 +117,9 @@ void LiveHistory::Add(double t, const Eigen::Matrix2Xd& x, const Eigen::VectorXd
   }
   GrowRange(tmin, tmax);
   FollowBox(x);
-  if (scenery_.waves)  // across the box (its storage reused frame after frame)
-    SurfaceProfile(scenery_.wave, t, box_[0], box_[1], now_.surface_x, now_.surface_y);
+  if (scenery_.waves)  // a box's width beyond it on either side (the storage reused)
+    SurfaceProfile(scenery_.wave, t, 2 * box_[0] - box_[1], 2 * box_[1] - box_[0], now_.surface_x,
+                   now_.surface_y);
 }
 
 void LiveHistory::AddMarker(double t, std::string label) {

@@ -65,10 +65,23 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
         in.seabed_y && std::isfinite(*in.seabed_y)
             ? std::clamp(in.world.PixelY(*in.seabed_y), r.y0, r.y1)
             : r.y1;
+    // The samples (x increasing) clipped to the plot's x range, which the layout may widen
+    // beyond the cable's box.
+    const std::vector<double>&sx = *in.surface_x, &sy = *in.surface_y;
+    const double x_lo = std::min(in.world.x_lo, in.world.x_hi);
+    const double x_hi = std::max(in.world.x_lo, in.world.x_hi);
+    auto at = [&](std::size_t i, double x) {  // the segment i-1..i at x
+      const double f = (x - sx[i - 1]) / (sx[i] - sx[i - 1]);
+      return world(x, sy[i - 1] + f * (sy[i] - sy[i - 1]));
+    };
     std::vector<Vec2f> line;
-    line.reserve(in.surface_x->size());
-    for (std::size_t i = 0; i < in.surface_x->size(); ++i)
-      line.push_back(world((*in.surface_x)[i], (*in.surface_y)[i]));
+    line.reserve(sx.size());
+    for (std::size_t i = 1; i < sx.size(); ++i) {
+      if (!(sx[i] > sx[i - 1]) || sx[i] < x_lo || sx[i - 1] > x_hi) continue;
+      if (line.empty())
+        line.push_back(sx[i - 1] < x_lo ? at(i, x_lo) : world(sx[i - 1], sy[i - 1]));
+      line.push_back(sx[i] > x_hi ? at(i, x_hi) : world(sx[i], sy[i]));
+    }
     const Rgba wash{th.water.r, th.water.g, th.water.b, 0.10f};
     for (std::size_t i = 1; i < line.size(); ++i) {
       const Vec2f a = line[i - 1], b = line[i];

@@ -47,8 +47,9 @@ struct CablePanelInput {
   // Paths of the moving ends: polylines in world coordinates [m]; null = none.
   const std::vector<std::vector<Vec2f>>* end_paths = nullptr;
   const double* seabed_y = nullptr;  // the seabed's elevation [m]; null = no seabed
-  // The water surface now (CableSnapshot::surface_x, surface_y): its line, the water below it
-  // (down to the seabed or the box) a faint wash; empty = none.
+  // The water surface now (CableSnapshot::surface_x, surface_y, x increasing): its line within
+  // the plot's x range, the water below it (down to the seabed or the box) a faint wash;
+  // empty = none.
   const std::vector<double>* surface_x = nullptr;
   const std::vector<double>* surface_y = nullptr;
 };

@@ -25,8 +25,9 @@ struct CableSnapshot {            // one output time of the simulation
   // Optional, size s: each link's smallest and largest tension over those rows [N], so that
   // the min-max envelope of the tension plot covers every row too, not only the frames.
   std::vector<double> row_link_min, row_link_max;
-  // Optional: the water surface at this time, a polyline across the world box (x, y [m]);
-  // empty: none drawn (no waves).
+  // Optional: the water surface at this time, a polyline (x increasing, y) [m] reaching beyond
+  // the world box on both sides (the plot shows what falls in its x range); empty: none (no
+  // waves).
   std::vector<double> surface_x, surface_y;
 };
 

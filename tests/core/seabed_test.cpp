@@ -392,7 +392,9 @@ TEST(SeabedDynamics, DroppedLineComesToRest) {
     EXPECT_LE(gain, 1e-9 * std::abs(e0));        // the bed creates no energy
     EXPECT_LT(s.v.cwiseAbs().maxCoeff(), 1e-4);  // at rest
     EXPECT_LT(depth_error, 0.01 * sink);         // flat on the bed, sunk by w/k
-    if (implicit) EXPECT_LT(st.steps, 6000);     // no step collapse through the landing
+    if (implicit) {
+      EXPECT_LT(st.steps, 6000);  // no step collapse through the landing
+    }
   }
 }
 

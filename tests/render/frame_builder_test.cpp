@@ -411,6 +411,24 @@ TEST(MakeFrame, WaterSurfaceLineWashAndLegend) {
   for (const TextItem& t : frame.texts)
     legend += t.text == "water surface" && L.cable_panel.Contains(t.pos);
   EXPECT_EQ(legend, 1);
+  // A surface reaching a box's width beyond the box on either side (as the film samples it) is
+  // clipped to the plot's x range: its line runs from the plot's left edge to its right edge.
+  CableSnapshot wide = testing::StraightSnapshot(1.0);
+  const double width = spec.x_max - spec.x_min;
+  for (int i = 0; i <= 300; ++i) {
+    wide.surface_x.push_back(spec.x_min - width + 3 * width * i / 300);
+    wide.surface_y.push_back(level);
+  }
+  const Frame f3 = MakeFrame(spec, history, wide, L, Colormap("viridis"), th);
+  float left = 1e9f, right = -1e9f;
+  for (const Shape& s : f3.shapes)
+    if (s.kind == ShapeKind::kSegment && SameColor(s.color, th.water) &&
+        s.a.y >= L.cable.rect.y0) {
+      left = std::min({left, s.a.x, s.b.x});
+      right = std::max({right, s.a.x, s.b.x});
+    }
+  EXPECT_FLOAT_EQ(left, L.cable.rect.x0);
+  EXPECT_FLOAT_EQ(right, L.cable.rect.x1);
   const FilmSpec plain = testing::StraightSpec();
   FilmHistory h2(plain);
   const Frame f2 = MakeFrame(plain, h2, testing::StraightSnapshot(1.0),
