@@ -50,13 +50,13 @@ double ReadNumber(const Json& v, const char* field, double lo, double hi, const 
 const std::vector<std::string>& ControlFields() {
   static const std::vector<std::string> fields{
       "pause", "step", "restart", "speed", "amplitude_scale", "period",
-      "current", "colormap", "lock_range", "tension_range", "record"};
+      "current", "wave_height", "colormap", "lock_range", "tension_range", "record"};
   return fields;
 }
 
 bool ControlRequest::empty() const {
   return !pause && !step && !restart && !speed && !amplitude_scale && !period && !current &&
-         !colormap && !lock_range && !tension_range && !record;
+         !wave_height && !colormap && !lock_range && !tension_range && !record;
 }
 
 ControlRequest ParseControl(const std::string& body, const ControlLimits& limits) {
@@ -96,6 +96,10 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
                                        " (times the scene's amplitudes)");
     } else if (key == "current") {
       r.current = ReadNumber(v, "current", -limits.current_max, limits.current_max, " m/s");
+    } else if (key == "wave_height") {
+      if (!limits.has_waves) throw ControlError("wave_height: the scene has no [waves]");
+      r.wave_height = ReadNumber(v, "wave_height", 0, limits.wave_height_max,
+                                 " m (crest to trough, at most the breaking height)");
     } else if (key == "colormap") {
       std::string names;
       for (const std::string& n : limits.colormaps) names += (names.empty() ? "" : ", ") + n;

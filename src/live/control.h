@@ -19,6 +19,8 @@ struct ControlLimits {
   double current_max = 3;                   // |c| [m/s]
   double tension_max = 1e9;                 // largest colour range end [N]
   bool has_driven_end = true;               // a trochoid or table end: amplitude, period
+  bool has_waves = false;                   // [waves]: their height
+  double wave_height_max = 0;               // the breaking height of the scene's wave [m]
   std::vector<std::string> colormaps;       // the known colour maps
 };
 
@@ -27,6 +29,7 @@ struct ControlRequest {
   bool step = false;     // advance one frame (pauses first)
   bool restart = false;  // back to the scene's initial state and sea
   std::optional<double> speed, amplitude_scale, period, current;
+  std::optional<double> wave_height;                 // H [m], crest to trough
   std::optional<std::string> colormap;
   std::optional<bool> lock_range;                    // freeze the colour range (or let it grow)
   std::optional<std::array<double, 2>> tension_range;  // [min, max] N: a locked range

@@ -52,6 +52,8 @@ class LiveHistory {
 
   // The whole picture's input for the frame added last.
   LiveFrameInput MakeInput(const std::string& status) const;
+  // The waves as they are now (their height changed live); the surface of the next Add.
+  void SetWave(const Wave& wave) { scenery_.wave = wave; }
 
   static constexpr std::size_t kMaxPathPoints = 4096;  // per moving end
   static constexpr std::size_t kMaxTracePoints = 1 << 16;

@@ -67,6 +67,11 @@ ControlLimits MakeLimits(const LiveSimulation& sim) {
     l.period_max = sea.period * 10;
   }
   l.current_max = std::max(3.0, 2 * std::abs(sea.current));
+  if (sim.model().has_waves()) {  // up to the breaking height (Miche's, as the scene's check)
+    const Wave& w = sim.model().wave;
+    l.has_waves = true;
+    l.wave_height_max = std::tanh(w.k * w.spec.depth) / 7.0 * w.length();
+  }
   l.colormaps = Colormap::Names();
   return l;
 }
@@ -106,6 +111,7 @@ LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
   targets_ = sim_.targets();
   {
     std::lock_guard<std::mutex> lock(mu_);
+    history_.SetWave(sim_.model().wave);
     history_.Add(0, sim_.state().x, sim_.tensions());
     rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
     PublishLocked();
@@ -161,6 +167,7 @@ void LiveSession::ApplyPending() {
       if (todo[k].amplitude_scale) todo[i].amplitude_scale.reset();
       if (todo[k].period) todo[i].period.reset();
       if (todo[k].current) todo[i].current.reset();
+      if (todo[k].wave_height) todo[i].wave_height.reset();
     }
   std::vector<LiveMarker> markers;
   std::uint64_t applied = 0;
@@ -193,7 +200,13 @@ void LiveSession::ApplyPending() {
       else
         left.current = p.current;
     }
-    if (left.amplitude_scale || left.period || left.current)
+    if (p.wave_height) {
+      if (sim_.SetWaveHeight(*p.wave_height))
+        markers.push_back({t, "wave height " + Fixed("%.2f", *p.wave_height) + " m"});
+      else
+        left.wave_height = p.wave_height;
+    }
+    if (left.amplitude_scale || left.period || left.current || left.wave_height)
       deferred_.push_back(left);
     else if (deferred_.empty())  // in order: a control counts once those before it are in
       applied = std::max(applied, p.seq);
@@ -204,6 +217,7 @@ void LiveSession::ApplyPending() {
     rows_.Clear();
     error_.clear();
     progress_.clear();
+    history_.SetWave(sim_.model().wave);
     history_.Add(sim_.t(), sim_.state().x, sim_.tensions());
     rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
   }
@@ -260,6 +274,7 @@ void LiveSession::SimulationLoop() {
       ++state_version_;
       continue;
     }
+    history_.SetWave(sim_.model().wave);
     history_.Add(sim_.t(), sim_.state().x, sim_.tensions());
     rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
     progress_.emplace_back(Seconds(start_, Clock::now()), sim_.t());
@@ -448,6 +463,7 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     p.amplitude_scale = r.amplitude_scale;
     p.period = r.period;
     p.current = r.current;
+    p.wave_height = r.wave_height;
     pending_.push_back(p);
     if (r.restart) {
       targets_ = sim_.scene_sea();
@@ -456,6 +472,7 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     if (r.amplitude_scale) targets_.amplitude_scale = *r.amplitude_scale;
     if (r.period) targets_.period = *r.period;
     if (r.current) targets_.current = *r.current;
+    if (r.wave_height) targets_.wave_height = *r.wave_height;
     if (r.pause) paused_ = *r.pause;
     if (r.step) {
       paused_ = true;
@@ -501,6 +518,8 @@ std::string LiveSession::StateJsonLocked() const {
       {"has_period", sim_.has_driven_end()},
       {"current", targets_.current},
       {"current_now", Finite(current_now_)},
+      {"wave_height", limits_.has_waves ? Json(targets_.wave_height) : Json(nullptr)},
+      {"has_waves", limits_.has_waves},
       {"colormap", colormap_},
       {"colormaps", limits_.colormaps},
       {"range", {{"min", history_.range_min()}, {"max", history_.range_max()},
@@ -522,7 +541,8 @@ std::string LiveSession::StateJsonLocked() const {
       {"limits", {{"speed", {limits_.speed_min, limits_.speed_max}},
                   {"amplitude_scale", {0.0, limits_.amplitude_max}},
                   {"period", {limits_.period_min, limits_.period_max}},
-                  {"current", {-limits_.current_max, limits_.current_max}}}},
+                  {"current", {-limits_.current_max, limits_.current_max}},
+                  {"wave_height", {0.0, limits_.wave_height_max}}}},
   };
   if (!error_.empty()) j["error"] = error_;
   if (!render_error_.empty()) j["render_error"] = render_error_;

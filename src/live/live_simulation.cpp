@@ -37,6 +37,7 @@ LiveSimulation::LiveSimulation(const SceneDef& scene)
   if (const EndMotion* e = DrivenEnd(scene_model_)) base_period_ = e->period();
   scene_sea_.period = base_period_;
   scene_sea_.current = scene_model_.current;
+  scene_sea_.wave_height = scene_model_.has_waves() ? scene_model_.wave.spec.height : 0.0;
   Restart();
 }
 
@@ -46,6 +47,7 @@ void LiveSimulation::Restart() {
   scale_ = SmoothSchedule(1);
   rate_ = SmoothSchedule(1);
   current_ = SmoothSchedule(scene_sea_.current);
+  wave_height_ = SmoothSchedule(scene_sea_.wave_height);
   if (has_driven_end()) ApplyModulation();
   // A new integrator: an adaptive one would otherwise keep the step size it had reached.
   integrator_ = MakeIntegrator(model_, grid_);
@@ -57,10 +59,12 @@ SeaTargets LiveSimulation::targets() const {
   s.amplitude_scale = scale_.target();
   s.period = has_driven_end() ? base_period_ / rate_.target() : 0;
   s.current = current_.target();
+  s.wave_height = wave_height_.target();
   return s;
 }
 
 double LiveSimulation::current_now() const { return current_.ValueAt(state_.t); }
+double LiveSimulation::wave_height_now() const { return wave_height_.ValueAt(state_.t); }
 
 double LiveSimulation::MotionRamp() const {
   // One period of the motion as it is now: the change takes a cycle, as a ship's would.
@@ -91,6 +95,12 @@ bool LiveSimulation::SetCurrent(double current) {
   return current_.Change(state_.t, current, kCurrentRamp);
 }
 
+bool LiveSimulation::SetWaveHeight(double height) {
+  if (!model_.has_waves() || !(height >= 0)) return false;
+  const double ramp = std::clamp(model_.wave.spec.period, kMotionRamp, 30.0);
+  return wave_height_.Change(state_.t, height, ramp);
+}
+
 void LiveSimulation::Advance(double seconds) {
   if (!(seconds > 0)) return;
   const int steps =
@@ -101,6 +111,10 @@ void LiveSimulation::Advance(double seconds) {
     // The current of each step at its middle: a ramp of kCurrentRamp spans many steps, so the
     // drag changes by small increments.
     model_.current = current_.ValueAt(state_.t + 0.5 * dt);
+    if (model_.has_waves()) {  // likewise the waves' height (the scene's exactly when unchanged)
+      model_.wave.spec.height = wave_height_.ValueAt(state_.t + 0.5 * dt);
+      model_.wave.amplitude = 0.5 * model_.wave.spec.height;
+    }
     integrator_->Step(model_, state_, dt);
     state_.t = t0 + (i + 1) * dt;  // no round-off drift
   }
@@ -111,6 +125,7 @@ void LiveSimulation::Advance(double seconds) {
     retired = retired || s->ramping() != before;
   }
   current_.Retire(state_.t);
+  wave_height_.Retire(state_.t);
   if (retired) ApplyModulation();
 }
 

@@ -19,6 +19,7 @@ struct SeaTargets {
   double amplitude_scale = 1;  // times the scene's end-motion amplitudes
   double period = 0;           // of the driven end [s]; 0 when no end is driven
   double current = 0;          // c [m/s] along +x
+  double wave_height = 0;      // H [m] of the scene's [waves]; 0 without
 };
 
 class LiveSimulation {
@@ -38,6 +39,9 @@ class LiveSimulation {
   bool SetAmplitudeScale(double scale);
   bool SetPeriod(double period);  // [s]
   bool SetCurrent(double current);  // [m/s]
+  // The waves' height H [m], over one wave period (kMotionRamp to 30 s); false without waves.
+  // The wave's amplitude is held over each step at its value mid-step, as the current is.
+  bool SetWaveHeight(double height);
 
   static constexpr double kMotionRamp = 2.0;   // shortest amplitude/period ramp [s]
   static constexpr double kCurrentRamp = 5.0;  // current ramp [s]
@@ -51,6 +55,7 @@ class LiveSimulation {
   const SeaTargets& scene_sea() const { return scene_sea_; }
   SeaTargets targets() const;  // what the sea is ramping to
   double current_now() const;  // the current acting now [m/s]
+  double wave_height_now() const;  // H acting now [m]
   bool has_driven_end() const { return base_period_ > 0; }
   IntegratorStats stats() const { return integrator_->stats(); }
 
@@ -68,7 +73,7 @@ class LiveSimulation {
   Eigen::VectorXd initial_tension_;
   SeaTargets scene_sea_;
   double base_period_ = 0;        // the driven end's period in the scene [s]
-  SmoothSchedule scale_{1}, rate_{1}, current_{0};
+  SmoothSchedule scale_{1}, rate_{1}, current_{0}, wave_height_{0};
 };
 
 }  // namespace cablefilm

@@ -75,7 +75,7 @@ TEST(ParseControl, DeepNestingIsDescribedNotDumped) {
 TEST(ParseControl, UnknownFieldIsNamedAndEscaped) {
   EXPECT_EQ(Refusal(R"({"speed": 1, "sped": 2})"),
             "unknown field \"sped\"; expected any of pause, step, restart, speed, amplitude_scale, "
-            "period, current, colormap, lock_range, tension_range, record");
+            "period, current, wave_height, colormap, lock_range, tension_range, record");
   // A control character in a key comes back escaped, not raw to a terminal or page.
   EXPECT_EQ(Refusal("{\"a\\u001bb\": 1}").substr(0, 25), "unknown field \"a\\u001bb\";");
 }
@@ -127,6 +127,19 @@ TEST(ParseControl, NoDrivenEndRefusesItsControls) {
   EXPECT_EQ(Refusal(R"({"amplitude_scale": 1})", l), "amplitude_scale: " + why);
   EXPECT_EQ(Refusal(R"({"period": 10})", l), "period: " + why);
   EXPECT_NO_THROW(ParseControl(R"({"current": 1})", l));
+}
+
+// The waves' height: only with [waves], from 0 to the scene's breaking height.
+TEST(ParseControl, WaveHeightWithinTheBreakingHeight) {
+  ControlLimits l = Limits();
+  EXPECT_EQ(Refusal(R"({"wave_height": 2})", l), "wave_height: the scene has no [waves]");
+  l.has_waves = true;
+  l.wave_height_max = 22.3;
+  EXPECT_DOUBLE_EQ(*ParseControl(R"({"wave_height": 4.5})", l).wave_height, 4.5);
+  EXPECT_FALSE(ParseControl(R"({"wave_height": 0})", l).empty());
+  EXPECT_EQ(Refusal(R"({"wave_height": 30})", l),
+            "wave_height: expected a number in [0, 22.3] m (crest to trough, at most the "
+            "breaking height), got 30");
 }
 
 TEST(ParseControl, ARefusalIsWhole) {

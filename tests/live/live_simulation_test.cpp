@@ -59,6 +59,40 @@ TEST(LiveSimulation, RestartReturnsToTheScenesInitialStateAndSea) {
 // range (7.7 kN peak over a 6.2 kN static maximum: 1.5 kN, so ~30 N) for the amplitude and
 // the current (bound 150 N: 5 x the linear estimate); the period change shifts the phase by
 // up to 0.049 of a cycle by t = 45 s, 2 x 1.5 kN x sin(pi 0.049) = 460 N (bound 600 N).
+// The waves' height changed live: it ramps over one wave period from the scene's to the new one
+// (the model stepped carries it, as the picture's surface does), restart returns to the scene's,
+// and a scene without waves refuses it.
+TEST(LiveSimulation, WaveHeightRampsOverOnePeriod) {
+  SceneDef scene = P63();
+  EXPECT_FALSE(LiveSimulation(scene).SetWaveHeight(1.0));
+  scene.waves.present = true;
+  scene.waves.height = 1.0;
+  scene.waves.period = 6.0;
+  scene.waves.depth = 60.0;
+  scene.waves.surface_y = 40.0;  // above the fairlead's highest point (32.3 m)
+  scene.waves.ramp_rate = 1.0;
+  LiveSimulation sim(scene);
+  EXPECT_EQ(sim.scene_sea().wave_height, 1.0);
+  auto advance = [&](double seconds) {  // frame by frame, as the live view does
+    for (int i = 0; i < std::lround(seconds * 30); ++i) sim.Advance(1.0 / 30);
+  };
+  advance(2.0);
+  ASSERT_TRUE(sim.SetWaveHeight(3.0));
+  EXPECT_EQ(sim.targets().wave_height, 3.0);
+  advance(3.0);  // half-way: the smootherstep's value h(1/2) = 1/2
+  EXPECT_NEAR(sim.wave_height_now(), 2.0, 1e-9);
+  // Held over each frame at its middle: 1/60 s before the end of a 6 s ramp at its steepest
+  // (slope 1.875 x 2 m / 6 s) is 0.01 m short.
+  EXPECT_NEAR(sim.model().wave.spec.height, 2.0, 0.011);
+  advance(3.5);
+  EXPECT_EQ(sim.model().wave.spec.height, 3.0);
+  EXPECT_EQ(sim.model().wave.amplitude, 1.5);
+  EXPECT_TRUE(sim.state().x.allFinite());
+  sim.Restart();
+  EXPECT_EQ(sim.targets().wave_height, 1.0);
+  EXPECT_EQ(sim.model().wave.spec.height, 1.0);
+}
+
 TEST(LiveSimulation, SmallChangesMakeSmallDifferencesNoSpike) {
   LiveSimulation base(P63());
   base.Advance(20.0);

@@ -32,6 +32,7 @@ const fmt = {
   amplitude_scale: (v) => v.toFixed(2) + '×',
   period: (v) => v.toFixed(1) + ' s',
   current: (v) => (v > 0 ? '+' : '') + v.toFixed(2) + ' m/s',
+  wave_height: (v) => v.toFixed(2) + ' m',
 };
 
 // ---- frames -----------------------------------------------------------------------------
@@ -134,6 +135,9 @@ function applyState(s) {
   $('period-row').hidden = !s.has_period;
   $('period').disabled = !s.has_period;
   if (s.has_period) setSlider('period', s.period, L.period);
+  $('wave-height-row').hidden = !s.has_waves;
+  $('wave_height').disabled = !s.has_waves;
+  if (s.has_waves) setSlider('wave_height', s.wave_height, L.wave_height);
 
   const select = $('colormap');
   const names = (s.colormaps || [s.colormap]).join();
