@@ -30,6 +30,12 @@ CableSnapshot ToSnapshot(const CableState& s, const Eigen::VectorXd& tension) {
 
 }  // namespace
 
+void AddWaterSurface(const FilmSpec& spec, const CableModel& model, CableSnapshot* snap) {
+  if (spec.surface)  // a box's width beyond it on either side: the plot may be wider
+    SurfaceProfile(model.wave, snap->t, 2 * spec.x_min - spec.x_max,
+                   2 * spec.x_max - spec.x_min, snap->surface_x, snap->surface_y);
+}
+
 FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
                       const FilmRequest& request, double duration) {
   const FilmRun& run = runs.front();
@@ -254,9 +260,7 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
     }
     if (!finished || !failure.empty()) break;
     CableSnapshot snap = ToSnapshot(steppers[0].state, steppers[0].integrator->tensions());
-    if (spec.surface)  // a box's width beyond it on either side: the plot may be wider
-      SurfaceProfile(main.model->wave, snap.t, 2 * spec.x_min - spec.x_max,
-                     2 * spec.x_max - spec.x_min, snap.surface_x, snap.surface_y);
+    AddWaterSurface(spec, *main.model, &snap);
     // The output rows up to this frame (all that are left at the last frame).
     const double until = k == last ? std::numeric_limits<double>::infinity()
                                    : steppers[0].state.t + 1e-9 * frame_interval;
@@ -291,12 +295,14 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
   const bool complete = finished && failure.empty();
   if (complete) {
     writer.Finish();
-    std::printf("wrote %s/film.mp4%s\n", request.out_dir.c_str(),
-                request.frames ? " and frames/" : "");
+    if (request.say_written)
+      std::printf("wrote %s/film.mp4%s\n", request.out_dir.c_str(),
+                  request.frames ? " and frames/" : "");
   } else {
     writer.FinishPartial();  // plays up to the last frame drawn
-    std::printf("wrote %s/film.partial.mp4 (%s at t = %.4g s)\n", request.out_dir.c_str(),
-                failure.empty() ? "interrupted" : "the film pass failed", steppers[0].state.t);
+    if (request.say_written)
+      std::printf("wrote %s/film.partial.mp4 (%s at t = %.4g s)\n", request.out_dir.c_str(),
+                  failure.empty() ? "interrupted" : "the film pass failed", steppers[0].state.t);
   }
   if (report) {
     *report = PictureReport{};

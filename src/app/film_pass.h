@@ -28,6 +28,7 @@ struct FilmRequest {
   std::string colormap = "viridis";
   double tension_min = -1, tension_max = -1;  // [N]; negative: from the runs
   std::string shader_dir;
+  bool say_written = true;      // print "wrote DIR/film.mp4" (the Python module names its own file)
 };
 
 // A model already simulated once (its first pass gave the extent and the rows).
@@ -53,13 +54,18 @@ struct PictureReport {
                                 // point: the last row's tension_max [N]
 };
 
-struct FilmSpec;  // render/frame.h
+struct FilmSpec;       // render/frame.h
+struct CableSnapshot;  // render/frame.h
 
 // What stays fixed over the film of `runs` lasting `duration` simulated seconds (the first
 // run's cable, ends, sections, initial state; the colour range and the world box of every run,
 // or the request's range). Used by RenderFilm, and to draw a frame on its own.
 FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
                       const FilmRequest& request, double duration);
+
+// The water surface at the snapshot's time across the film's width, when the spec has waves:
+// what every frame of the film carries.
+void AddWaterSurface(const FilmSpec& spec, const CableModel& model, CableSnapshot* snap);
 
 // <out_dir>/max_tension.png, or max_tension.partial.png when the rows are those of a run cut
 // short (`complete` false): every run's rows on one pair of axes, thinned to the extremes of

@@ -69,6 +69,7 @@ Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& requ
     snap.row_max.assign(1, *std::max_element(T, T + links));
     snap.row_link_min = snap.tension;
     snap.row_link_max = snap.tension;
+    AddWaterSurface(spec, run.model, &snap);
     history.Add(snap);
   }
   RenderOptions options;

@@ -291,6 +291,7 @@ std::string RenderFilmTo(const py::object& obj, const std::string& path,
     dir = pattern;
   }
   request.out_dir = dir.string();
+  request.say_written = false;
   CancelFlag cancel{0};
   bool finished = false;
   try {

@@ -358,30 +358,38 @@ def read_png(path):
 class Pictures(unittest.TestCase):
     """A frame as an array, and the film, drawn by the film pass of the program."""
 
-    def test_frame_is_the_films_frame(self):
-        scene = cablefilm.load(P63)
+    def frame_against_film(self, scene_file, options, t, frame_number):
+        scene = cablefilm.load(os.path.join(SOURCE, "scenes", scene_file))
         scene["simulation.duration"] = 2
         out = workdir("frames")
         path = os.path.join(out, "scene.toml")
         with open(path, "w") as f:
             f.write(scene.text)
-        status, stdout, stderr = cli("run", path, "--frames", "--size", "320x180",
-                                     "--out", out)
+        status, stdout, stderr = cli("run", path, "--frames", "--size", "320x180", "--out", out,
+                                     *options)
         self.assertEqual(status, 0, stdout + stderr)
         result = cablefilm.run(scene)
-        frame = cablefilm.render_frame(result, 1.0, width=320, height=180)
+        frame = cablefilm.render_frame(result, t, width=320, height=180)
         self.assertEqual(frame.shape, (180, 320, 3))
         self.assertEqual(frame.dtype, np.uint8)
-        # Not a blank picture: many colours, dark background, the cable's colour map.
+        # Not a blank picture: the cable's colour map, the plots, the text.
         colours = np.unique(frame.reshape(-1, 3), axis=0)
         self.assertGreater(len(colours), 100)
-        # Frame 30 of the film is t = 1 s (30 frames a second, a row a frame).
-        png = read_png(os.path.join(out, "frames", "frame_000030.png"))[:, :, :3]
+        png = read_png(os.path.join(out, "frames", "frame_%06d.png" % frame_number))[:, :, :3]
         differ = np.count_nonzero(np.any(png != frame, axis=2))
-        self.assertEqual(differ, 0, "%d of %d pixels differ from the film's frame 30"
-                         % (differ, frame.shape[0] * frame.shape[1]))
+        self.assertEqual(differ, 0, "%s: %d of %d pixels differ from the film's frame %d"
+                         % (scene_file, differ, frame.shape[0] * frame.shape[1], frame_number))
         other = cablefilm.render_frame(result, row=0, width=320, height=180)
         self.assertTrue(np.any(other != frame))
+
+    def test_frame_is_the_films_frame(self):
+        # P63: 30 frames a second, a row a frame: frame 30 is t = 1 s.
+        self.frame_against_film("polachek1963.toml", [], 1.0, 30)
+
+    def test_frame_in_waves_is_the_films_frame(self):
+        # A row every 0.1 s; at 3 simulated seconds per second of film, a row a frame: frame 10
+        # is t = 1 s, with the water surface.
+        self.frame_against_film("grounded_mooring.toml", ["--speed", "3"], 1.0, 10)
 
     def test_film(self):
         scene = cablefilm.load(P63)
