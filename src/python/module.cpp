@@ -91,15 +91,6 @@ py::object RunScene(const SceneHandle& scene) {
   return result;
 }
 
-const MemoryRun& RunOf(const py::object& obj, py::object* holder) {
-  if (py::isinstance<Result>(obj)) {
-    *holder = obj;
-  } else {
-    *holder = RunScene(LoadScene(obj, std::nullopt));
-  }
-  return *holder->cast<Result&>().run;
-}
-
 // A read-only view of `data` (shape, strides in elements) kept alive by `owner`.
 py::array View(const py::object& owner, const double* data, std::vector<py::ssize_t> shape,
                std::vector<py::ssize_t> strides) {
@@ -182,6 +173,16 @@ Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
 }
 
 #ifdef CABLEFILM_PYTHON_RENDER
+// The run of a Result, or of a scene (run here; `holder` keeps it).
+const MemoryRun& RunOf(const py::object& obj, py::object* holder) {
+  if (py::isinstance<Result>(obj)) {
+    *holder = obj;
+  } else {
+    *holder = RunScene(LoadScene(obj, std::nullopt));
+  }
+  return *holder->cast<Result&>().run;
+}
+
 // The film's options: the scene's [film], with those given.
 FilmRequest FilmOptions(const MemoryRun& run, std::optional<int> width, std::optional<int> height,
                         std::optional<double> fps, std::optional<double> speed,
