@@ -5,7 +5,11 @@
 set(CABLEFILM_PYTHON AUTO CACHE STRING "Build the Python module: AUTO (if found), ON, OFF")
 set_property(CACHE CABLEFILM_PYTHON PROPERTY STRINGS AUTO ON OFF)
 set(CABLEFILM_PYTHON_MODULE OFF)
-if(NOT CABLEFILM_PYTHON STREQUAL "OFF")
+if(CABLEFILM_SANITIZE AND CABLEFILM_PYTHON STREQUAL "AUTO")
+  # A sanitized module cannot be loaded into an unsanitized Python (the runtime must come
+  # first): the sanitizer build tests the libraries, the optimised build the module.
+  message(STATUS "cablefilm: no Python module in the sanitizer build")
+elseif(NOT CABLEFILM_PYTHON STREQUAL "OFF")
   # The system's Python, whose numpy is Debian's python3-numpy, before another one first on the
   # PATH (pyenv, ...); -DPython3_EXECUTABLE=... chooses another.
   if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
