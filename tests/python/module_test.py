@@ -8,7 +8,9 @@ The truths are independent of the module: the program's own results.nc (read wit
 sweep.csv and `cablefilm check` messages, and a static balance of forces worked out here from
 the scene's numbers.
 """
+import atexit
 import os
+import shutil
 import struct
 import subprocess
 import tempfile
@@ -29,7 +31,10 @@ P63 = os.path.join(SOURCE, "scenes", "polachek1963.toml")
 
 
 def workdir(name):
+    """A new folder under TMP, removed when the tests end (kept with CABLEFILM_KEEP_TEST_FILES)."""
     path = tempfile.mkdtemp(prefix=name + "_", dir=TMP)
+    if not os.environ.get("CABLEFILM_KEEP_TEST_FILES"):
+        atexit.register(shutil.rmtree, path, True)
     return path
 
 
