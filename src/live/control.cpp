@@ -50,13 +50,13 @@ double ReadNumber(const Json& v, const char* field, double lo, double hi, const 
 const std::vector<std::string>& ControlFields() {
   static const std::vector<std::string> fields{
       "pause", "step", "restart", "speed", "amplitude_scale", "period",
-      "current", "wave_height", "colormap", "lock_range", "tension_range", "record"};
+      "current", "wave_height", "wave_period", "colormap", "lock_range", "tension_range", "record"};
   return fields;
 }
 
 bool ControlRequest::empty() const {
   return !pause && !step && !restart && !speed && !amplitude_scale && !period && !current &&
-         !wave_height && !colormap && !lock_range && !tension_range && !record;
+         !wave_height && !wave_period && !colormap && !lock_range && !tension_range && !record;
 }
 
 ControlRequest ParseControl(const std::string& body, const ControlLimits& limits) {
@@ -100,6 +100,10 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
       if (!limits.has_waves) throw ControlError("wave_height: the scene has no [waves]");
       r.wave_height = ReadNumber(v, "wave_height", 0, limits.wave_height_max,
                                  " m (crest to trough, at most the breaking height)");
+    } else if (key == "wave_period") {
+      if (!limits.has_waves) throw ControlError("wave_period: the scene has no [waves]");
+      r.wave_period = ReadNumber(v, "wave_period", limits.wave_period_min,
+                                 limits.wave_period_max, " s");
     } else if (key == "colormap") {
       std::string names;
       for (const std::string& n : limits.colormaps) names += (names.empty() ? "" : ", ") + n;

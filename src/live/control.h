@@ -21,6 +21,7 @@ struct ControlLimits {
   bool has_driven_end = true;               // a trochoid or table end: amplitude, period
   bool has_waves = false;                   // [waves]: their height
   double wave_height_max = 0;               // the breaking height of the scene's wave [m]
+  double wave_period_min = 0, wave_period_max = 0;  // the waves' period range [s]
   std::vector<std::string> colormaps;       // the known colour maps
 };
 
@@ -30,6 +31,7 @@ struct ControlRequest {
   bool restart = false;  // back to the scene's initial state and sea
   std::optional<double> speed, amplitude_scale, period, current;
   std::optional<double> wave_height;                 // H [m], crest to trough
+  std::optional<double> wave_period;                 // T [s]
   std::optional<std::string> colormap;
   std::optional<bool> lock_range;                    // freeze the colour range (or let it grow)
   std::optional<std::array<double, 2>> tension_range;  // [min, max] N: a locked range

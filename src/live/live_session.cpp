@@ -71,6 +71,10 @@ ControlLimits MakeLimits(const LiveSimulation& sim) {
     const Wave& w = sim.model().wave;
     l.has_waves = true;
     l.wave_height_max = std::tanh(w.k * w.spec.depth) / 7.0 * w.length();
+    // A third to three times the scene's period, within 1 s to 60 s (a shorter period lowers
+    // the breaking height: a higher wave is held at it, live_simulation.h).
+    l.wave_period_min = std::clamp(w.spec.period / 3, 1.0, w.spec.period);
+    l.wave_period_max = std::clamp(w.spec.period * 3, w.spec.period, 60.0);
   }
   l.colormaps = Colormap::Names();
   return l;
@@ -168,6 +172,7 @@ void LiveSession::ApplyPending() {
       if (todo[k].period) todo[i].period.reset();
       if (todo[k].current) todo[i].current.reset();
       if (todo[k].wave_height) todo[i].wave_height.reset();
+      if (todo[k].wave_period) todo[i].wave_period.reset();
     }
   std::vector<LiveMarker> markers;
   std::uint64_t applied = 0;
@@ -206,7 +211,14 @@ void LiveSession::ApplyPending() {
       else
         left.wave_height = p.wave_height;
     }
-    if (left.amplitude_scale || left.period || left.current || left.wave_height)
+    if (p.wave_period) {
+      if (sim_.SetWavePeriod(*p.wave_period))
+        markers.push_back({t, "wave period " + Fixed("%.3g", *p.wave_period) + " s"});
+      else
+        left.wave_period = p.wave_period;
+    }
+    if (left.amplitude_scale || left.period || left.current || left.wave_height ||
+        left.wave_period)
       deferred_.push_back(left);
     else if (deferred_.empty())  // in order: a control counts once those before it are in
       applied = std::max(applied, p.seq);
@@ -464,6 +476,7 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     p.period = r.period;
     p.current = r.current;
     p.wave_height = r.wave_height;
+    p.wave_period = r.wave_period;
     pending_.push_back(p);
     if (r.restart) {
       targets_ = sim_.scene_sea();
@@ -473,6 +486,8 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     if (r.period) targets_.period = *r.period;
     if (r.current) targets_.current = *r.current;
     if (r.wave_height) targets_.wave_height = *r.wave_height;
+    if (r.wave_period) targets_.wave_period = *r.wave_period;
+    if (r.wave_period && sim_.end_follows_wave()) targets_.period = *r.wave_period;
     if (r.pause) paused_ = *r.pause;
     if (r.step) {
       paused_ = true;
@@ -519,6 +534,7 @@ std::string LiveSession::StateJsonLocked() const {
       {"current", targets_.current},
       {"current_now", Finite(current_now_)},
       {"wave_height", limits_.has_waves ? Json(targets_.wave_height) : Json(nullptr)},
+      {"wave_period", limits_.has_waves ? Json(targets_.wave_period) : Json(nullptr)},
       {"has_waves", limits_.has_waves},
       {"colormap", colormap_},
       {"colormaps", limits_.colormaps},
@@ -542,7 +558,8 @@ std::string LiveSession::StateJsonLocked() const {
                   {"amplitude_scale", {0.0, limits_.amplitude_max}},
                   {"period", {limits_.period_min, limits_.period_max}},
                   {"current", {-limits_.current_max, limits_.current_max}},
-                  {"wave_height", {0.0, limits_.wave_height_max}}}},
+                  {"wave_height", {0.0, limits_.wave_height_max}},
+                  {"wave_period", {limits_.wave_period_min, limits_.wave_period_max}}}},
   };
   if (!error_.empty()) j["error"] = error_;
   if (!render_error_.empty()) j["render_error"] = render_error_;

@@ -121,7 +121,7 @@ class LiveSession {
   struct Pending {
     std::uint64_t seq = 0;
     bool restart = false, step = false;
-    std::optional<double> amplitude_scale, period, current, wave_height;
+    std::optional<double> amplitude_scale, period, current, wave_height, wave_period;
   };
   std::vector<Pending> pending_;
   std::vector<Pending> deferred_;  // refused while too many ramps ran (simulation thread only)

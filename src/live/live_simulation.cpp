@@ -38,6 +38,15 @@ LiveSimulation::LiveSimulation(const SceneDef& scene)
   scene_sea_.period = base_period_;
   scene_sea_.current = scene_model_.current;
   scene_sea_.wave_height = scene_model_.has_waves() ? scene_model_.wave.spec.height : 0.0;
+  scene_sea_.wave_period = scene_model_.has_waves() ? scene_model_.wave.spec.period : 0.0;
+  // The wave's phase is kept where the driven end is (else mid-way between the ends).
+  const int last = scene_model_.links;
+  wave_x_ = scene_model_.end.moves()     ? initial_.x(0, last)
+            : scene_model_.start.moves() ? initial_.x(0, 0)
+                                         : 0.5 * (initial_.x(0, 0) + initial_.x(0, last));
+  end_follows_wave_ = (scene_model_.end.moves() && scene.end.follows_wave) ||
+                      (!scene_model_.end.moves() && scene_model_.start.moves() &&
+                       scene.start.follows_wave);
   Restart();
 }
 
@@ -48,6 +57,7 @@ void LiveSimulation::Restart() {
   rate_ = SmoothSchedule(1);
   current_ = SmoothSchedule(scene_sea_.current);
   wave_height_ = SmoothSchedule(scene_sea_.wave_height);
+  wave_period_ = SmoothSchedule(scene_sea_.wave_period);
   if (has_driven_end()) ApplyModulation();
   // A new integrator: an adaptive one would otherwise keep the step size it had reached.
   integrator_ = MakeIntegrator(model_, grid_);
@@ -60,11 +70,13 @@ SeaTargets LiveSimulation::targets() const {
   s.period = has_driven_end() ? base_period_ / rate_.target() : 0;
   s.current = current_.target();
   s.wave_height = wave_height_.target();
+  s.wave_period = wave_period_.target();
   return s;
 }
 
 double LiveSimulation::current_now() const { return current_.ValueAt(state_.t); }
 double LiveSimulation::wave_height_now() const { return wave_height_.ValueAt(state_.t); }
+double LiveSimulation::wave_period_now() const { return wave_period_.ValueAt(state_.t); }
 
 double LiveSimulation::MotionRamp() const {
   // One period of the motion as it is now: the change takes a cycle, as a ship's would.
@@ -101,6 +113,34 @@ bool LiveSimulation::SetWaveHeight(double height) {
   return wave_height_.Change(state_.t, height, ramp);
 }
 
+bool LiveSimulation::SetWavePeriod(double period) {
+  if (!model_.has_waves() || !(period > 0)) return false;
+  const double ramp = std::clamp(wave_period_.ValueAt(state_.t), kMotionRamp, 30.0);
+  if (!wave_period_.Change(state_.t, period, ramp)) return false;
+  // The end that follows the wave: the same ramp of its clock (its rate is base / period).
+  if (end_follows_wave_ && has_driven_end() && rate_.Change(state_.t, base_period_ / period, ramp))
+    ApplyModulation();
+  return true;
+}
+
+void LiveSimulation::UpdateWave(double t) {
+  WaveSpec spec = model_.wave.spec;
+  const double period = wave_period_.ValueAt(t);
+  if (period != spec.period) {
+    // theta = k x - omega t + phase kept at wave_x_: the new phase takes up the old theta there.
+    const Wave& old = model_.wave;
+    const double theta = old.k * wave_x_ - old.omega * t + spec.phase;
+    spec.period = period;
+    const Wave next = MakeWave(spec, model_.gravity);
+    spec.phase = std::remainder(theta - next.k * wave_x_ + next.omega * t, 2.0 * M_PI);
+  }
+  // Miche's breaking height at this period: a higher wave would break.
+  const Wave shape = MakeWave(spec, model_.gravity);
+  spec.height = std::min(wave_height_.ValueAt(t),
+                         std::tanh(shape.k * spec.depth) / 7.0 * shape.length());
+  model_.wave = MakeWave(spec, model_.gravity);
+}
+
 void LiveSimulation::Advance(double seconds) {
   if (!(seconds > 0)) return;
   const int steps =
@@ -111,10 +151,11 @@ void LiveSimulation::Advance(double seconds) {
     // The current of each step at its middle: a ramp of kCurrentRamp spans many steps, so the
     // drag changes by small increments.
     model_.current = current_.ValueAt(state_.t + 0.5 * dt);
-    if (model_.has_waves()) {  // likewise the waves' height (the scene's exactly when unchanged)
-      model_.wave.spec.height = wave_height_.ValueAt(state_.t + 0.5 * dt);
-      model_.wave.amplitude = 0.5 * model_.wave.spec.height;
-    }
+    // Likewise the waves' height and period (the scene's wave exactly when unchanged).
+    if (model_.has_waves() && !(wave_height_.constant() && wave_period_.constant() &&
+                                model_.wave.spec.height == wave_height_.target() &&
+                                model_.wave.spec.period == wave_period_.target()))
+      UpdateWave(state_.t + 0.5 * dt);
     integrator_->Step(model_, state_, dt);
     state_.t = t0 + (i + 1) * dt;  // no round-off drift
   }
@@ -126,6 +167,7 @@ void LiveSimulation::Advance(double seconds) {
   }
   current_.Retire(state_.t);
   wave_height_.Retire(state_.t);
+  wave_period_.Retire(state_.t);
   if (retired) ApplyModulation();
 }
 

@@ -20,6 +20,7 @@ struct SeaTargets {
   double period = 0;           // of the driven end [s]; 0 when no end is driven
   double current = 0;          // c [m/s] along +x
   double wave_height = 0;      // H [m] of the scene's [waves]; 0 without
+  double wave_period = 0;      // T [s] of the scene's [waves]; 0 without
 };
 
 class LiveSimulation {
@@ -42,6 +43,13 @@ class LiveSimulation {
   // The waves' height H [m], over one wave period (kMotionRamp to 30 s); false without waves.
   // The wave's amplitude is held over each step at its value mid-step, as the current is.
   bool SetWaveHeight(double height);
+  // The waves' period T [s], over one wave period (kMotionRamp to 30 s); false without waves.
+  // Each step takes the period at its middle, with the wave number of the new period and the
+  // phase that keeps the wave's phase continuous at the driven end's x (where a ship would
+  // see the wave change); elsewhere the crests shift as k changes. An end that follows the
+  // wave (motion = "wave") changes its period along the same ramp. A wave higher than its
+  // breaking height at the period of the moment is held at that height (Miche's limit).
+  bool SetWavePeriod(double period);
 
   static constexpr double kMotionRamp = 2.0;   // shortest amplitude/period ramp [s]
   static constexpr double kCurrentRamp = 5.0;  // current ramp [s]
@@ -56,11 +64,14 @@ class LiveSimulation {
   SeaTargets targets() const;  // what the sea is ramping to
   double current_now() const;  // the current acting now [m/s]
   double wave_height_now() const;  // H acting now [m]
+  double wave_period_now() const;  // T acting now [s]
   bool has_driven_end() const { return base_period_ > 0; }
+  bool end_follows_wave() const { return end_follows_wave_; }  // set once, at construction
   IntegratorStats stats() const { return integrator_->stats(); }
 
  private:
   void ApplyModulation();
+  void UpdateWave(double t);  // the wave's height, period and phase at time t [s]
   double MotionRamp() const;  // [s]
 
   const CableModel scene_model_;  // as built from the scene
@@ -73,7 +84,9 @@ class LiveSimulation {
   Eigen::VectorXd initial_tension_;
   SeaTargets scene_sea_;
   double base_period_ = 0;        // the driven end's period in the scene [s]
-  SmoothSchedule scale_{1}, rate_{1}, current_{0}, wave_height_{0};
+  double wave_x_ = 0;             // where a period change keeps the wave's phase [m]
+  bool end_follows_wave_ = false; // the driven end's motion is the wave's (motion = "wave")
+  SmoothSchedule scale_{1}, rate_{1}, current_{0}, wave_height_{0}, wave_period_{0};
 };
 
 }  // namespace cablefilm

@@ -75,7 +75,8 @@ TEST(ParseControl, DeepNestingIsDescribedNotDumped) {
 TEST(ParseControl, UnknownFieldIsNamedAndEscaped) {
   EXPECT_EQ(Refusal(R"({"speed": 1, "sped": 2})"),
             "unknown field \"sped\"; expected any of pause, step, restart, speed, amplitude_scale, "
-            "period, current, wave_height, colormap, lock_range, tension_range, record");
+            "period, current, wave_height, wave_period, colormap, lock_range, tension_range, "
+            "record");
   // A control character in a key comes back escaped, not raw to a terminal or page.
   EXPECT_EQ(Refusal("{\"a\\u001bb\": 1}").substr(0, 25), "unknown field \"a\\u001bb\";");
 }
@@ -140,6 +141,18 @@ TEST(ParseControl, WaveHeightWithinTheBreakingHeight) {
   EXPECT_EQ(Refusal(R"({"wave_height": 30})", l),
             "wave_height: expected a number in [0, 22.3] m (crest to trough, at most the "
             "breaking height), got 30");
+}
+
+// The waves' period: only with [waves], within the range the session gives.
+TEST(ParseControl, WavePeriodWithinItsRange) {
+  ControlLimits l = Limits();
+  EXPECT_EQ(Refusal(R"({"wave_period": 8})", l), "wave_period: the scene has no [waves]");
+  l.has_waves = true;
+  l.wave_period_min = 2;
+  l.wave_period_max = 18;
+  EXPECT_DOUBLE_EQ(*ParseControl(R"({"wave_period": 12.5})", l).wave_period, 12.5);
+  EXPECT_EQ(Refusal(R"({"wave_period": 1})", l),
+            "wave_period: expected a number in [2, 18] s, got 1");
 }
 
 TEST(ParseControl, ARefusalIsWhole) {

@@ -4,9 +4,12 @@
 // control itself), and against the scene's initial state (restart).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/equilibrium.h"
+#include "core/waves.h"
 #include "live/live_simulation.h"
 #include "scene/scene_loader.h"
 
@@ -91,6 +94,85 @@ TEST(LiveSimulation, WaveHeightRampsOverOnePeriod) {
   sim.Restart();
   EXPECT_EQ(sim.targets().wave_height, 1.0);
   EXPECT_EQ(sim.model().wave.spec.height, 1.0);
+}
+
+// The waves' period changed live: it ramps over one wave period, each step with the wave number
+// of its period (the dispersion relation) and a phase that keeps the wave's phase continuous at
+// the driven end (x = 80 m in P63), so there theta(t) = theta(t0) - integral of omega(t) dt,
+// omega = 2 pi / T(t), T along the smootherstep. The model takes each frame's omega at the
+// frame's middle and carries the phase from one middle to the next: against the exact integral
+// that lags by half a frame's worth of the whole change of omega (2 pi (1/6 - 1/9) rad/s x
+// 1/60 s = 5.8e-3 rad); bound 0.01 rad. A wave made higher than its breaking height at a shorter period is
+// held at that height (Miche: tanh(k h) / 7 of the length).
+TEST(LiveSimulation, WavePeriodRampsWithThePhaseKeptAtTheDrivenEnd) {
+  SceneDef scene = P63();
+  EXPECT_FALSE(LiveSimulation(scene).SetWavePeriod(8.0));
+  scene.waves.present = true;
+  scene.waves.height = 1.0;
+  scene.waves.period = 6.0;
+  scene.waves.depth = 60.0;
+  scene.waves.surface_y = 40.0;  // above the fairlead's highest point (32.3 m)
+  scene.waves.ramp_rate = 1.0;
+  LiveSimulation sim(scene);
+  EXPECT_EQ(sim.scene_sea().wave_period, 6.0);
+  auto advance = [&](double seconds) {
+    for (int i = 0; i < std::lround(seconds * 30); ++i) sim.Advance(1.0 / 30);
+  };
+  auto theta = [&](double x, double t) {  // the model's wave phase at x, t [rad]
+    const Wave& w = sim.model().wave;
+    return w.k * x - w.omega * t + w.spec.phase;
+  };
+  const double x_end = sim.state().x(0, sim.model().links), g = sim.model().gravity;
+  advance(2.0);
+  const double theta0 = theta(x_end, 2.0);
+  ASSERT_TRUE(sim.SetWavePeriod(9.0));
+  EXPECT_EQ(sim.targets().wave_period, 9.0);
+  advance(6.0);  // the ramp: one period of the wave as it was (6 s)
+  // The exact integral of omega over the ramp, T(t) = 6 + 3 h((t - 2) / 6) (Simpson, 6000 panels).
+  auto omega = [](double t) {
+    const double u = std::clamp((t - 2.0) / 6.0, 0.0, 1.0);
+    return 2 * M_PI / (6.0 + 3.0 * u * u * u * (10 - 15 * u + 6 * u * u));
+  };
+  double integral = 0;
+  const int n = 6000;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 + 6.0 * i / n, b = 2.0 + 6.0 * (i + 1) / n;
+    integral += (b - a) / 6 * (omega(a) + 4 * omega(0.5 * (a + b)) + omega(b));
+  }
+  const double drift = std::remainder(theta(x_end, 8.0) - (theta0 - integral), 2 * M_PI);
+  std::printf("[ wave period ] phase at the driven end after the ramp: %.2e rad from the exact "
+              "integral of omega\n", drift);
+  EXPECT_LT(std::abs(drift), 0.01);
+  advance(0.1);  // past the ramp's end at every step's middle
+  EXPECT_EQ(sim.model().wave.spec.period, 9.0);
+  EXPECT_DOUBLE_EQ(sim.model().wave.omega, 2 * M_PI / 9.0);
+  EXPECT_DOUBLE_EQ(sim.model().wave.k, WaveNumber(2 * M_PI / 9.0, g, 60.0));
+  EXPECT_EQ(sim.model().wave.spec.height, 1.0);
+  // Higher, then shorter: at 4 s the wave breaks above tanh(k h) / 7 L (3.56 m here).
+  ASSERT_TRUE(sim.SetWaveHeight(7.0));
+  advance(9.5);
+  EXPECT_EQ(sim.model().wave.spec.height, 7.0);
+  ASSERT_TRUE(sim.SetWavePeriod(4.0));
+  advance(9.5);
+  const double k4 = WaveNumber(2 * M_PI / 4.0, g, 60.0);
+  EXPECT_NEAR(sim.model().wave.spec.height, std::tanh(k4 * 60.0) / 7.0 * 2 * M_PI / k4, 1e-12);
+  EXPECT_TRUE(sim.state().x.allFinite());
+  sim.Restart();
+  EXPECT_EQ(sim.targets().wave_period, 6.0);
+  EXPECT_EQ(sim.model().wave.spec.period, 6.0);
+  EXPECT_EQ(sim.model().wave.spec.phase, scene.waves.phase);
+}
+
+// An end that follows the wave (motion = "wave") follows its period too.
+TEST(LiveSimulation, AnEndThatFollowsTheWaveTakesItsPeriod) {
+  const SceneDef scene =
+      LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/grounded_mooring.toml");
+  ASSERT_TRUE(scene.end.follows_wave);
+  LiveSimulation sim(scene);
+  EXPECT_EQ(sim.targets().period, scene.waves.period);
+  ASSERT_TRUE(sim.SetWavePeriod(12.0));
+  EXPECT_EQ(sim.targets().wave_period, 12.0);
+  EXPECT_DOUBLE_EQ(sim.targets().period, 12.0);
 }
 
 TEST(LiveSimulation, SmallChangesMakeSmallDifferencesNoSpike) {

@@ -33,6 +33,7 @@ const fmt = {
   period: (v) => v.toFixed(1) + ' s',
   current: (v) => (v > 0 ? '+' : '') + v.toFixed(2) + ' m/s',
   wave_height: (v) => v.toFixed(2) + ' m',
+  wave_period: (v) => v.toFixed(1) + ' s',
 };
 
 // ---- frames -----------------------------------------------------------------------------
@@ -138,6 +139,9 @@ function applyState(s) {
   $('wave-height-row').hidden = !s.has_waves;
   $('wave_height').disabled = !s.has_waves;
   if (s.has_waves) setSlider('wave_height', s.wave_height, L.wave_height);
+  $('wave-period-row').hidden = !s.has_waves;
+  $('wave_period').disabled = !s.has_waves;
+  if (s.has_waves) setSlider('wave_period', s.wave_period, L.wave_period);
 
   const select = $('colormap');
   const names = (s.colormaps || [s.colormap]).join();
