@@ -18,6 +18,17 @@ namespace {
 
 SceneDef P63() { return LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml"); }
 
+// P63 under waves of 1 m and 6 s in 60 m of water (L = 56 m), their surface above the
+// fairlead's highest point (32.3 m).
+void AddWaves(SceneDef& scene) {
+  scene.waves.present = true;
+  scene.waves.height = 1.0;
+  scene.waves.period = 6.0;
+  scene.waves.depth = 60.0;
+  scene.waves.surface_y = 40.0;
+  scene.waves.ramp_rate = 1.0;
+}
+
 // The largest link tension at every 1/30 s of [t0, t1] [N].
 std::vector<double> MaxTensions(LiveSimulation& sim, double t1) {
   std::vector<double> out;
@@ -53,27 +64,13 @@ TEST(LiveSimulation, RestartReturnsToTheScenesInitialStateAndSea) {
   EXPECT_LT((sim.tensions() - fresh.tensions()).cwiseAbs().maxCoeff(), 1e-6);
 }
 
-// A 2 % change of the amplitude (or of the period, or a small current) part way through case
-// P63. A jump of the fairlead's position or velocity would ring the steel wire's axial modes at
-// once (EA/l = 3e7 N/m: a 1 mm jump is 30 kN). The ramps start with zero rate and curvature:
-// in the first second (a tenth of the 10 s ramp, h(0.1) < 0.9 %) the motion has changed by
-// less than 0.02 % of its amplitude, so the tension by a few newtons at most: bound 10 N.
-// Over the next 25 s the difference grows as the response follows: about 2 % of the dynamic
-// range (7.7 kN peak over a 6.2 kN static maximum: 1.5 kN, so ~30 N) for the amplitude and
-// the current (bound 150 N: 5 x the linear estimate); the period change shifts the phase by
-// up to 0.049 of a cycle by t = 45 s, 2 x 1.5 kN x sin(pi 0.049) = 460 N (bound 600 N).
 // The waves' height changed live: it ramps over one wave period from the scene's to the new one
 // (the model stepped carries it, as the picture's surface does), restart returns to the scene's,
 // and a scene without waves refuses it.
 TEST(LiveSimulation, WaveHeightRampsOverOnePeriod) {
   SceneDef scene = P63();
   EXPECT_FALSE(LiveSimulation(scene).SetWaveHeight(1.0));
-  scene.waves.present = true;
-  scene.waves.height = 1.0;
-  scene.waves.period = 6.0;
-  scene.waves.depth = 60.0;
-  scene.waves.surface_y = 40.0;  // above the fairlead's highest point (32.3 m)
-  scene.waves.ramp_rate = 1.0;
+  AddWaves(scene);
   LiveSimulation sim(scene);
   EXPECT_EQ(sim.scene_sea().wave_height, 1.0);
   auto advance = [&](double seconds) {  // frame by frame, as the live view does
@@ -102,17 +99,12 @@ TEST(LiveSimulation, WaveHeightRampsOverOnePeriod) {
 // omega = 2 pi / T(t), T along the smootherstep. The model takes each frame's omega at the
 // frame's middle and carries the phase from one middle to the next: against the exact integral
 // that lags by half a frame's worth of the whole change of omega (2 pi (1/6 - 1/9) rad/s x
-// 1/60 s = 5.8e-3 rad); bound 0.01 rad. A wave made higher than its breaking height at a shorter period is
-// held at that height (Miche: tanh(k h) / 7 of the length).
+// 1/60 s = 5.8e-3 rad); bound 0.01 rad. A wave made higher than its breaking height at a
+// shorter period is held at that height (Miche: tanh(k h) / 7 of the length).
 TEST(LiveSimulation, WavePeriodRampsWithThePhaseKeptAtTheDrivenEnd) {
   SceneDef scene = P63();
   EXPECT_FALSE(LiveSimulation(scene).SetWavePeriod(8.0));
-  scene.waves.present = true;
-  scene.waves.height = 1.0;
-  scene.waves.period = 6.0;
-  scene.waves.depth = 60.0;
-  scene.waves.surface_y = 40.0;  // above the fairlead's highest point (32.3 m)
-  scene.waves.ramp_rate = 1.0;
+  AddWaves(scene);
   LiveSimulation sim(scene);
   EXPECT_EQ(sim.scene_sea().wave_period, 6.0);
   auto advance = [&](double seconds) {
@@ -175,6 +167,15 @@ TEST(LiveSimulation, AnEndThatFollowsTheWaveTakesItsPeriod) {
   EXPECT_DOUBLE_EQ(sim.targets().period, 12.0);
 }
 
+// A 2 % change of the amplitude (or of the period, or a small current) part way through case
+// P63. A jump of the fairlead's position or velocity would ring the steel wire's axial modes at
+// once (EA/l = 3e7 N/m: a 1 mm jump is 30 kN). The ramps start with zero rate and curvature:
+// in the first second (a tenth of the 10 s ramp, h(0.1) < 0.9 %) the motion has changed by
+// less than 0.02 % of its amplitude, so the tension by a few newtons at most: bound 10 N.
+// Over the next 25 s the difference grows as the response follows: about 2 % of the dynamic
+// range (7.7 kN peak over a 6.2 kN static maximum: 1.5 kN, so ~30 N) for the amplitude and
+// the current (bound 150 N: 5 x the linear estimate); the period change shifts the phase by
+// up to 0.049 of a cycle by t = 45 s, 2 x 1.5 kN x sin(pi 0.049) = 460 N (bound 600 N).
 TEST(LiveSimulation, SmallChangesMakeSmallDifferencesNoSpike) {
   LiveSimulation base(P63());
   base.Advance(20.0);
