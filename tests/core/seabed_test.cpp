@@ -448,10 +448,13 @@ TEST(SeabedDynamics, DraggedChainTensionGrowsByMuWPerMetre) {
 // The standard case: the mooring line of the equilibrium tests (50 links) driven by its ship,
 // 3 m of surge and 1 m of heave at 12 s, so that its touchdown point moves to and fro and
 // stations land and lift off. The implicit scheme's automatic step runs through it with no
-// collapse: each landing changes a station's acceleration by about g (its weight taken by the
-// bed), which the error estimate h^2/3 |a_{n+1} - a_n| resolves with steps of about 0.02 s,
-// so it takes more steps than the same line without the bed (hanging below its anchor, no
-// event), but less than 2.5 times as many (measured 2.15). At a fixed step of 0.05 s, Newton
+// collapse: a landing changes a station's vertical acceleration by about g (its weight taken by
+// the bed), which the error estimate h^2/3 |a_{n+1} - a_n| leaves out for a station in the bed
+// at the step's end (generalized_alpha.cpp: the critically damped bed leaves it at rest however
+// the step resolves the landing); lift-offs and the line's motion near the touchdown are still
+// resolved, so it takes more steps than the same line without the bed (hanging below its
+// anchor, no event), but no more than twice as many, the bound (measured 1.97; 2.15
+// when the landings were resolved too). At a fixed step of 0.05 s, Newton
 // converges (a station its iteration drives into the bed lands at its resting penetration:
 // without that it cycled between the bed and the water and the run blew up).
 TEST(SeabedDynamics, ShipDrivenTouchdownRunsThroughWithoutStepCollapse) {
@@ -499,7 +502,7 @@ TEST(SeabedDynamics, ShipDrivenTouchdownRunsThroughWithoutStepCollapse) {
               g.grounded_min, g.grounded_max, g.steps, g.rejected, h.steps, h.rejected,
               static_cast<double>(g.steps) / h.steps, f.steps, f.rejected);
   EXPECT_GT(g.grounded_max - g.grounded_min, 20.0);  // the touchdown does move
-  EXPECT_LE(g.steps, 2.5 * h.steps);
+  EXPECT_LE(g.steps, 2.0 * h.steps);
   EXPECT_LT(f.rejected, f.steps / 20);  // Newton converges at the fixed step
 }
 
