@@ -364,18 +364,26 @@ SweepCases ExpandCases(const SweepCases& listed, const std::vector<SweepKey>& se
   return out;
 }
 
-std::string CaseSceneText(const std::string& scene_text, const std::string& scene_path,
-                          const std::vector<std::string>& keys,
-                          const std::vector<std::string>& values, const std::string& comment) {
-  toml::table root;
+namespace {
+
+// The scene's text as a TOML table; not TOML: an Error naming the file and line.
+toml::table ParseSceneToml(const std::string& scene_text, const std::string& scene_path) {
   try {
-    root = toml::parse(scene_text, scene_path);
+    return toml::parse(scene_text, scene_path);
   } catch (const toml::parse_error& e) {
     std::ostringstream os;
     os << EscapeText(scene_path) << ":" << e.source().begin.line
        << ": not valid TOML: " << EscapeText(e.description());
     throw Error(os.str());
   }
+}
+
+}  // namespace
+
+std::string CaseSceneText(const std::string& scene_text, const std::string& scene_path,
+                          const std::vector<std::string>& keys,
+                          const std::vector<std::string>& values, const std::string& comment) {
+  toml::table root = ParseSceneToml(scene_text, scene_path);
   for (std::size_t i = 0; i < keys.size(); ++i) {
     toml::table value;
     std::string why;
@@ -394,15 +402,7 @@ std::string CaseSceneText(const std::string& scene_text, const std::string& scen
 
 std::string SceneValueDocument(const std::string& scene_text, const std::string& scene_path,
                                const std::string& key) {
-  toml::table root;
-  try {
-    root = toml::parse(scene_text, scene_path);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream os;
-    os << EscapeText(scene_path) << ":" << e.source().begin.line
-       << ": not valid TOML: " << EscapeText(e.description());
-    throw Error(os.str());
-  }
+  toml::table root = ParseSceneToml(scene_text, scene_path);
   const std::vector<PathStep> path = ParseKeyPath(key);
   const toml::node* node = &root;
   std::string here;

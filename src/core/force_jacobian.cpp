@@ -7,14 +7,6 @@
 namespace cablefilm {
 namespace {
 
-// d n / d d for the unit normal n = R d / |d| of a link d = x_{k+1} - x_k (R: quarter turn).
-Eigen::Matrix2d NormalDerivative(const Eigen::Vector2d& t, double L) {
-  const Eigen::Matrix2d P = Eigen::Matrix2d::Identity() - t * t.transpose();
-  Eigen::Matrix2d dn;
-  dn << -P(1, 0), -P(1, 1), P(0, 0), P(0, 1);
-  return dn / L;
-}
-
 // Adds the 2x2 derivative blocks of a link's force pair to the rows of stations a = k, b = k+1.
 // dfa_dd, dfb_dd: derivatives w.r.t. d = x_b - x_a of the forces on a and b; dfa_dv, dfb_dv:
 // derivatives w.r.t. v_a and v_b (equal, through the link's mean velocity). Stored negated.

@@ -32,6 +32,13 @@ void ComputeGeometry(const CableModel& m, double t, const Eigen::Matrix2Xd& x, L
   if (m.has_waves()) ComputeSea(m, t, x, g.sea);
 }
 
+Eigen::Matrix2d NormalDerivative(const Eigen::Vector2d& t, double L) {
+  const Eigen::Matrix2d P = Eigen::Matrix2d::Identity() - t * t.transpose();
+  Eigen::Matrix2d dn;
+  dn << -P(1, 0), -P(1, 1), P(0, 0), P(0, 1);
+  return dn / L;
+}
+
 void ComputeHookeTensions(const CableModel& m, const LinkGeometry& g, Eigen::VectorXd& tension) {
   for (int j = 0; j < m.links; ++j) {
     const double strain = g.length[j] / m.rest_length[j] - 1.0;

@@ -42,6 +42,10 @@ void ComputeGeometry(const Eigen::Matrix2Xd& x, LinkGeometry& g);
 void ComputeGeometry(const CableModel& m, double t, const Eigen::Matrix2Xd& x, LinkGeometry& g);
 
 // Eq. (2), with a compressed link slack: T = max(0, sigma E (L/l - 1)).
+// d n / d d [1/m] for the unit normal n = R d / |d| of a link d = x_{k+1} - x_k (R: a quarter
+// turn), t = d / |d| its tangent and L = |d| its length [m]: the Jacobians' normal drag terms.
+Eigen::Matrix2d NormalDerivative(const Eigen::Vector2d& t, double L);
+
 void ComputeHookeTensions(const CableModel& m, const LinkGeometry& g, Eigen::VectorXd& tension);
 
 // Internal axial damping (Kelvin-Voigt, not in the paper): a taut link's tension gains

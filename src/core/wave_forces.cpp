@@ -8,14 +8,6 @@
 namespace cablefilm {
 namespace {
 
-// d n / d d for the unit normal n = R d / |d| of a link d = x_{k+1} - x_k (as force_jacobian.cpp).
-Eigen::Matrix2d NormalDerivative(const Eigen::Vector2d& t, double L) {
-  const Eigen::Matrix2d P = Eigen::Matrix2d::Identity() - t * t.transpose();
-  Eigen::Matrix2d dn;
-  dn << -P(1, 0), -P(1, 1), P(0, 0), P(0, 1);
-  return dn / L;
-}
-
 Eigen::Map<const Eigen::Matrix2d> Gradient(const Eigen::Matrix4Xd& g, int j) {
   return Eigen::Map<const Eigen::Matrix2d>(g.col(j).data());
 }
