@@ -94,7 +94,7 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
                 "1/s\n",
                 w.spec.height, w.spec.period, w.spec.depth, w.spec.surface_y, w.length(), kh,
                 kh > M_PI ? "deep" : kh < M_PI / 10 ? "shallow" : "intermediate depth",
-                w.steepness(), std::tanh(kh) / 7.0, w.omega / w.k, scene.waves.phase,
+                w.steepness(), w.breaking_steepness(), w.omega / w.k, scene.waves.phase,
                 w.spec.ramp_rate);
     for (const auto& [name, end] : {std::pair<const char*, const EndDef*>{"start", &scene.start},
                                     {"end", &scene.end}})

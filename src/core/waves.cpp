@@ -40,6 +40,8 @@ WaveRamp RampAt(const WaveSpec& w, double t) {
 
 double Wave::length() const { return 2.0 * kPi / k; }
 
+double Wave::breaking_steepness() const { return std::tanh(k * spec.depth) / 7.0; }
+
 Wave MakeWave(const WaveSpec& spec, double gravity) {
   Wave w;
   w.spec = spec;

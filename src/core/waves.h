@@ -49,6 +49,10 @@ struct Wave {
   double amplitude = 0;   // a = H / 2 [m]
   double length() const;  // L = 2 pi / k [m]
   double steepness() const { return spec.height / length(); }  // H / L
+  // Miche's (1944) breaking limit: H / L at most tanh(k h) / 7 (1/7 in deep water, H <= 0.88 h
+  // in shallow water). The steepest H / L and the highest H [m] at this period and depth.
+  double breaking_steepness() const;
+  double breaking_height() const { return breaking_steepness() * length(); }
 };
 Wave MakeWave(const WaveSpec& spec, double gravity);
 

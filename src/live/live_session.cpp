@@ -70,7 +70,7 @@ ControlLimits MakeLimits(const LiveSimulation& sim) {
   if (sim.model().has_waves()) {  // up to the breaking height (Miche's, as the scene's check)
     const Wave& w = sim.model().wave;
     l.has_waves = true;
-    l.wave_height_max = std::tanh(w.k * w.spec.depth) / 7.0 * w.length();
+    l.wave_height_max = w.breaking_height();
     // A third to three times the scene's period, within 1 s to 60 s (a shorter period lowers
     // the breaking height: a higher wave is held at it, live_simulation.h).
     l.wave_period_min = std::clamp(w.spec.period / 3, 1.0, w.spec.period);
@@ -187,36 +187,24 @@ void LiveSession::ApplyPending() {
     const double t = sim_.t();
     Pending left;  // what the ramps could not take yet
     left.seq = p.seq;
-    if (p.amplitude_scale) {
-      if (sim_.SetAmplitudeScale(*p.amplitude_scale))
-        markers.push_back({t, "amplitude \u00d7" + Fixed("%.2f", *p.amplitude_scale)});
+    // A change the ramps take is marked on the time plot; one they refuse waits in `left`.
+    auto apply = [&](const std::optional<double>& wanted, bool (LiveSimulation::*set)(double),
+                     std::optional<double>& refused, const char* label, const char* format,
+                     const char* unit) {
+      if (!wanted) return;
+      if ((sim_.*set)(*wanted))
+        markers.push_back({t, label + Fixed(format, *wanted) + unit});
       else
-        left.amplitude_scale = p.amplitude_scale;
-    }
-    if (p.period) {
-      if (sim_.SetPeriod(*p.period))
-        markers.push_back({t, "period " + Fixed("%.3g", *p.period) + " s"});
-      else
-        left.period = p.period;
-    }
-    if (p.current) {
-      if (sim_.SetCurrent(*p.current))
-        markers.push_back({t, "current " + Fixed("%.2f", *p.current) + " m/s"});
-      else
-        left.current = p.current;
-    }
-    if (p.wave_height) {
-      if (sim_.SetWaveHeight(*p.wave_height))
-        markers.push_back({t, "wave height " + Fixed("%.2f", *p.wave_height) + " m"});
-      else
-        left.wave_height = p.wave_height;
-    }
-    if (p.wave_period) {
-      if (sim_.SetWavePeriod(*p.wave_period))
-        markers.push_back({t, "wave period " + Fixed("%.3g", *p.wave_period) + " s"});
-      else
-        left.wave_period = p.wave_period;
-    }
+        refused = wanted;
+    };
+    apply(p.amplitude_scale, &LiveSimulation::SetAmplitudeScale, left.amplitude_scale,
+          "amplitude \u00d7", "%.2f", "");
+    apply(p.period, &LiveSimulation::SetPeriod, left.period, "period ", "%.3g", " s");
+    apply(p.current, &LiveSimulation::SetCurrent, left.current, "current ", "%.2f", " m/s");
+    apply(p.wave_height, &LiveSimulation::SetWaveHeight, left.wave_height, "wave height ", "%.2f",
+          " m");
+    apply(p.wave_period, &LiveSimulation::SetWavePeriod, left.wave_period, "wave period ", "%.3g",
+          " s");
     if (left.amplitude_scale || left.period || left.current || left.wave_height ||
         left.wave_period)
       deferred_.push_back(left);

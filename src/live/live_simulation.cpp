@@ -124,21 +124,19 @@ bool LiveSimulation::SetWavePeriod(double period) {
 }
 
 void LiveSimulation::UpdateWave(double t) {
-  WaveSpec spec = model_.wave.spec;
+  Wave& wave = model_.wave;
   const double period = wave_period_.ValueAt(t);
-  if (period != spec.period) {
+  if (period != wave.spec.period) {
     // theta = k x - omega t + phase kept at wave_x_: the new phase takes up the old theta there.
-    const Wave& old = model_.wave;
-    const double theta = old.k * wave_x_ - old.omega * t + spec.phase;
+    const double theta = wave.k * wave_x_ - wave.omega * t + wave.spec.phase;
+    WaveSpec spec = wave.spec;
     spec.period = period;
-    const Wave next = MakeWave(spec, model_.gravity);
-    spec.phase = std::remainder(theta - next.k * wave_x_ + next.omega * t, 2.0 * M_PI);
+    wave = MakeWave(spec, model_.gravity);
+    wave.spec.phase = std::remainder(theta - wave.k * wave_x_ + wave.omega * t, 2.0 * M_PI);
   }
-  // Miche's breaking height at this period: a higher wave would break.
-  const Wave shape = MakeWave(spec, model_.gravity);
-  spec.height = std::min(wave_height_.ValueAt(t),
-                         std::tanh(shape.k * spec.depth) / 7.0 * shape.length());
-  model_.wave = MakeWave(spec, model_.gravity);
+  // At most Miche's breaking height at this period: a higher wave would break.
+  wave.spec.height = std::min(wave_height_.ValueAt(t), wave.breaking_height());
+  wave.amplitude = 0.5 * wave.spec.height;
 }
 
 void LiveSimulation::Advance(double seconds) {

@@ -36,7 +36,6 @@ constexpr double kMaxWaveHeight = 1e3;     // m
 constexpr double kMinWavePeriod = 1e-3, kMaxWavePeriod = 1e6;  // s
 constexpr double kMaxPhase = 360;           // deg, either way
 constexpr double kMaxRao = 1e3;             // m of motion per m of wave amplitude
-constexpr double kMaxWaveSteepness = 1.0 / 7.0;  // H / L before tanh(k h) (Miche 1944)
 constexpr double kMaxWeightMass = 1e9;      // kg
 constexpr double kMaxVolume = 1e6;          // m^3 (volumes, added volumes)
 constexpr double kMaxDragArea = 1e6;        // m^2

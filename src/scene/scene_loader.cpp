@@ -322,9 +322,11 @@ void ReadWaves(TableReader& top, SceneDef& scene, const std::string& file) {
   w.ramp_rate = r.OptionalPositive("ramp_rate", 4.0 / w.period, " in 1/s", 0, kMaxRampRate);
   if (!(scene.environment.gravity > 0))
     r.Fail(t, "period", "expected gravity > 0 for waves (environment.gravity = 0)");
-  const double omega = 2.0 * M_PI / w.period;
-  const double k = WaveNumber(omega, scene.environment.gravity, w.depth);
-  const double L = 2.0 * M_PI / k, limit = kMaxWaveSteepness * std::tanh(k * w.depth) * L;
+  WaveSpec spec;  // the wave number and the breaking height need the period and depth only
+  spec.period = w.period;
+  spec.depth = w.depth;
+  const Wave wave = MakeWave(spec, scene.environment.gravity);
+  const double k = wave.k, L = wave.length(), limit = wave.breaking_height();
   if (!(w.height <= limit))
     r.Fail(t->get("height"), "height",
            "the wave breaks: H / L = " + TableReader::Fmt(w.height / L) + " (L = " +
