@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/error.h"
@@ -147,6 +148,7 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
     m.seabed_stiffness = Eigen::VectorXd::Zero(s + 1);
     m.seabed_damping = Eigen::VectorXd::Zero(s + 1);
     m.seabed_rest_depth = Eigen::VectorXd::Zero(s + 1);
+    m.seabed_landing_time = Eigen::VectorXd::Zero(s + 1);
     for (int i = 0; i <= s; ++i) {
       double share = 0, added = 0;
       for (int k = i - 1; k <= i; ++k) {
@@ -160,6 +162,9 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
                                 ? m.seabed.damping * share
                                 : 2.0 * std::sqrt(m.seabed_stiffness[i] * mass);
       m.seabed_rest_depth[i] = std::max(std::abs(m.net_weight[i]) / m.seabed_stiffness[i], 1e-9);
+      const bool critical = m.seabed_damping[i] >= 2.0 * std::sqrt(m.seabed_stiffness[i] * mass);
+      m.seabed_landing_time[i] = critical ? std::sqrt(mass / m.seabed_stiffness[i])
+                                          : std::numeric_limits<double>::infinity();
     }
   }
   if (env.waves.present) {

@@ -81,6 +81,10 @@ struct CableModel {
   Eigen::VectorXd seabed_rest_depth; // |W_j| / (k l_j) [m]: the penetration at which the
                                      // station's net weight rests on the bed (at least 1e-9 m;
                                      // size s+1; empty: no seabed)
+  Eigen::VectorXd seabed_landing_time;  // sqrt(m_j / (k l_j)) [s]: the time a bed damped at
+                                     // least critically takes to stop a landing station
+                                     // (without rebound); infinite on a bed damped less, whose
+                                     // rebound is physics (size s+1; empty: no seabed)
   // Waves (wave.spec.present; waves.h, wave_forces.h): the arrays below are sized only then.
   Wave wave;
   Eigen::VectorXd station_buoyancy;  // rho g (sigma l / 2 of each link + V*) [N] per station, the

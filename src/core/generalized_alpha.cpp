@@ -123,10 +123,47 @@ double GeneralizedAlphaIntegrator::LocalError(const CableModel& m, double h) con
   return h * h * std::abs(beta_ - 1.0 / 6.0) * da;
 }
 
+void GeneralizedAlphaIntegrator::SettleLandings(const CableModel& m, const CableState& s,
+                                                double h) {
+  // A bed damped at least critically stops a landing station within about its landing time
+  // sqrt(m_j / k_j) (1 ms for steel wire, 2 ms for chain on the default bed, at any link
+  // length). A step longer than that cannot resolve the stop: the scheme's answer to the
+  // unresolved stiff contact threw the station back up by millimetres, to land again and again,
+  // each landing a short step (2.5 times the resolved run's landings on a ship-driven line). So
+  // a landing step ends with the station at rest vertically, the state a resolved landing
+  // reaches within the step; the line's own motion still lifts it when it does
+  // (SeabedDynamics.LandingsStopWithoutRebound). On the grounded mooring scene: 20 % fewer
+  // steps, a third of the rejections, tensions as close to the converged explicit run's.
+  if (!m.seabed.present) return;
+  bool settled = false;
+  for (int j = m.first_free(); j <= m.last_free(); ++j) {
+    const bool landed = s.x(1, j) >= m.seabed.y && x_(1, j) < m.seabed.y;
+    if (!landed || !(h > m.seabed_landing_time[j])) continue;
+    v_(1, j) = 0;
+    a1_(1, j) = 0;
+    abar1_(1, j) = 0;
+    settled = true;
+  }
+  // The tensions' axial damping sees the velocities.
+  if (settled) ComputeTensions(m, ws_.geometry, v_, ws_.tension);
+}
+
 void GeneralizedAlphaIntegrator::Commit(const CableModel& m, CableState& s, double h) {
   s.x.swap(x_);
   s.v.swap(v_);
+  // A station at rest (on the seabed) sees its velocity and acceleration decay geometrically
+  // step by step, down to subnormal numbers, whose arithmetic (in drag's q |q|, say) is a hundred
+  // times slower: a grounded line ran 25 % slower from the minute its anchor end came to rest.
+  // Below 1e-100 (m/s, m/s^2) they are zero.
+  auto flush = [](double& q) {
+    if (std::abs(q) < 1e-100) q = 0;
+  };
   for (int j = m.first_free(); j <= m.last_free(); ++j) {
+    for (int i = 0; i < 2; ++i) {
+      flush(s.v(i, j));
+      flush(a1_(i, j));
+      flush(abar1_(i, j));
+    }
     a_.col(j) = a1_.col(j);
     abar_.col(j) = abar1_.col(j);
   }
@@ -181,6 +218,7 @@ void GeneralizedAlphaIntegrator::Step(const CableModel& m, CableState& s, double
                             : 0.5 * h;
       continue;
     }
+    SettleLandings(m, s, h);
     Commit(m, s, h);
     failures = 0;
     if (truncated) continue;  // a short last piece says nothing about the step size

@@ -37,6 +37,8 @@ class GeneralizedAlphaIntegrator : public Integrator {
   bool Solve(const CableModel& m, const CableState& s, double h);
   // The local position error of the solved step [m].
   double LocalError(const CableModel& m, double h) const;
+  // Brings to rest (vertically) the stations that landed on the seabed in the solved step.
+  void SettleLandings(const CableModel& m, const CableState& s, double h);
   // Makes the solved step the state.
   void Commit(const CableModel& m, CableState& s, double h);
   // a_{n+1}, v_{n+1} and abar_{n+1} implied by the positions x (free stations).

@@ -53,8 +53,9 @@ void ComputeSea(const CableModel& m, double t, const Eigen::Matrix2Xd& x, SeaSta
     sea.wet_gradient.resize(2, n);
   }
   sea.t = t;
+  const WaveRamp ramp = RampAt(m.wave.spec, t);
   for (int j = 0; j < n; ++j) {
-    const WaterKinematics w = KinematicsAt(m.wave, x(0, j), x(1, j), t);
+    const WaterKinematics w = KinematicsAt(m.wave, x(0, j), x(1, j), t, ramp);
     sea.velocity.col(j) = w.velocity;
     sea.acceleration.col(j) = w.acceleration;
     Eigen::Map<Eigen::Matrix2d>(sea.velocity_gradient.col(j).data()) = w.velocity_gradient;

@@ -48,6 +48,8 @@ Wave MakeWave(const WaveSpec& spec, double gravity) {
   w.omega = 2.0 * kPi / spec.period;
   w.k = WaveNumber(w.omega, gravity, spec.depth);
   w.amplitude = 0.5 * spec.height;
+  w.decay = std::exp(-2.0 * w.k * spec.depth);
+  w.decay_gap = -std::expm1(-2.0 * w.k * spec.depth);
   return w;
 }
 
@@ -70,8 +72,12 @@ void SurfaceProfile(const Wave& wave, double t, double x0, double x1, std::vecto
 }
 
 WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t) {
+  return KinematicsAt(wave, x, y, t, RampAt(wave.spec, t));
+}
+
+WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t,
+                             const WaveRamp& ramp) {
   WaterKinematics out;
-  const WaveRamp ramp = RampAt(wave.spec, t);
   const double a = wave.amplitude, w = wave.omega, k = wave.k, h = wave.spec.depth;
   const double theta = k * x - w * t + wave.spec.phase;
   const double co = std::cos(theta), si = std::sin(theta);
@@ -89,10 +95,10 @@ WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t) {
     dzs_dx = dzs_dy = 0.0;
   }
   // cosh(k (zs + h)) / sinh(k h) and sinh(...) / sinh(k h) without overflow at any k h:
-  // [e^{k zs} +- e^{-k (zs + 2h)}] / (1 - e^{-2 k h}).
-  const double den = -std::expm1(-2.0 * k * h);
-  const double e1 = std::exp(k * zs), e2 = std::exp(-k * (zs + 2.0 * h));
-  const double C = (e1 + e2) / den, S = (e1 - e2) / den;
+  // [e^{k zs} +- e^{-k (zs + 2h)}] / (1 - e^{-2 k h}), e^{-k (zs + 2h)} = e^{-2 k h} / e^{k zs}
+  // (both 0 when e^{k zs} underflows: k h > 700 then).
+  const double e1 = std::exp(k * zs), e2 = e1 > 0 ? wave.decay / e1 : 0.0;
+  const double C = (e1 + e2) / wave.decay_gap, S = (e1 - e2) / wave.decay_gap;
   // Each component q = A(zs) trig(theta): dq/dx = A'(zs) dzs/dx trig + A trig' k,
   // dq/dy = A'(zs) dzs/dy trig, with C' = k S and S' = k C.
   const double aw = a * w;

@@ -47,6 +47,8 @@ struct Wave {
   double omega = 0;       // 2 pi / T [rad/s]
   double k = 0;           // wave number [1/m]
   double amplitude = 0;   // a = H / 2 [m]
+  double decay = 0;       // e^{-2 k h}: the depth profiles' constants (KinematicsAt), set by
+  double decay_gap = 1;   // 1 - e^{-2 k h}  MakeWave with k
   double length() const;  // L = 2 pi / k [m]
   double steepness() const { return spec.height / length(); }  // H / L
   // Miche's (1944) breaking limit: H / L at most tanh(k h) / 7 (1/7 in deep water, H <= 0.88 h
@@ -66,6 +68,8 @@ struct WaterKinematics {
   Eigen::Matrix2d acceleration_gradient = Eigen::Matrix2d::Zero();  // d(du/dt, dw/dt)/d(x, y)
 };
 WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t);
+// The same with the ramp at t given (RampAt(wave.spec, t)): one ramp for many points.
+WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t, const WaveRamp& ramp);
 
 // The surface's elevation (absolute y [m]) at x and t.
 double SurfaceAt(const Wave& wave, double x, double t);
