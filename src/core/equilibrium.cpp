@@ -81,7 +81,7 @@ class StaticProblem {
         slack_tension_(m.seabed.present ? StaticForceScale(m) : 0.0) {}
 
   const Eigen::Matrix2Xd& Residual(const Eigen::Matrix2Xd& x) {
-    ComputeGeometry(x, ws_.geometry);
+    ComputeGeometry(m_, 0.0, x, ws_.geometry);
     ComputeHookeTensions(m_, ws_.geometry, ws_.tension);
     ComputeStationForces(m_, ws_.geometry, ws_.tension, zero_v_, ws_.force);
     return ws_.force;
@@ -464,11 +464,13 @@ CableState SolveEquilibrium(const CableModel& m, EquilibriumReport* report,
 
 CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
                             EquilibriumReport* report_out, const EquilibriumOptions& options) {
-  if (m.has_waves()) {
-    // The mean state: the waves (and their surface) are left out, the line in calm water with
-    // the current; the waves' ramp starts the run from it.
+  if (m.has_waves() && m.wave.amplitude != 0) {
+    // The mean state: the line in calm water with the current, under the still water level (a
+    // station above it has no buoyancy, drag or added mass, as in the run); the waves' ramp
+    // starts the run from it.
     CableModel calm = m;
-    calm.wave.spec.present = false;
+    calm.wave.amplitude = 0;
+    calm.wave.spec.height = 0;
     return SolveEquilibrium(calm, guess, report_out, options);
   }
   if (!m.start.prescribed() && !m.end.prescribed())

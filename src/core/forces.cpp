@@ -192,6 +192,7 @@ double PotentialEnergy(const CableModel& m, const Eigen::Matrix2Xd& x) {
   double e = 0;
   for (int j = 0; j <= m.links; ++j) e += m.net_weight[j] * x(1, j);
   if (m.seabed.present) e += SeabedEnergy(m, x);
+  if (m.has_waves()) e += SurfaceBuoyancyEnergy(m, x);
   return e;
 }
 

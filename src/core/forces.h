@@ -90,7 +90,8 @@ void ComputeAccelerations(const CableModel& m, double t, const Eigen::Matrix2Xd&
 
 // Energies for conservation checks [J]: kinetic (with the normal added mass), elastic strain
 // energy of the links, and potential of the net weight (y = 0 datum) plus the strain energy of
-// the seabed's springs (k l_j p_j^2 / 2 for the stations below it).
+// the seabed's springs (k l_j p_j^2 / 2 for the stations below it) and, with waves, of the
+// buoyancy lost above the still water level (SurfaceBuoyancyEnergy).
 double KineticEnergy(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v);
 double ElasticEnergy(const CableModel& m, const LinkGeometry& g);
 double PotentialEnergy(const CableModel& m, const Eigen::Matrix2Xd& x);

@@ -42,6 +42,25 @@ double WetFractionSlope(double u) {
   return 6.0 * u * (1.0 - u);
 }
 
+double SurfaceBuoyancyEnergy(const CableModel& m, const Eigen::Matrix2Xd& x) {
+  if (!m.has_waves()) return 0.0;
+  // G(u) = int_0^u phi: 0 below the band, u^3 - u^4 / 2 across it, u - 1/2 beyond.
+  auto G = [](double u) {
+    if (u <= 0) return 0.0;
+    if (u >= 1) return u - 0.5;
+    return u * u * u * (1.0 - 0.5 * u);
+  };
+  double e = 0;
+  for (int j = 0; j < m.stations(); ++j) {
+    const double band = m.wet_band[j];
+    if (m.station_buoyancy[j] == 0 || !(band > 0)) continue;
+    const double u = (m.wave.spec.surface_y - x(1, j)) / band + 0.5;
+    // Under water y + l G(u) = y_surface + l/2 - l/2: the same for every depth.
+    e += m.station_buoyancy[j] * (x(1, j) + band * G(u));
+  }
+  return e;
+}
+
 void ComputeSea(const CableModel& m, double t, const Eigen::Matrix2Xd& x, SeaState& sea) {
   const int n = m.stations();
   if (sea.wet.size() != n) {

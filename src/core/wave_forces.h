@@ -33,6 +33,11 @@ void ComputeSea(const CableModel& m, double t, const Eigen::Matrix2Xd& x, SeaSta
 double WetFraction(double u);
 double WetFractionSlope(double u);
 
+// The potential [J] of the buoyancy lost above the still water level (the static problem's
+// surface): -dV/dy_j = -(1 - phi_j) B_j, V_j = B_j (y_j + l_j G(u_j)) with G(u) the integral of
+// phi from 0 to u, u_j = (y_surface - y_j) / l_j + 1/2; constant for a station under water.
+double SurfaceBuoyancyEnergy(const CableModel& m, const Eigen::Matrix2Xd& x);
+
 // The external forces with waves (the formulas above), weight included, seabed excluded.
 void AddWaveExternalForces(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
                            Eigen::Matrix2Xd& force);

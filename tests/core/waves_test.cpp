@@ -468,6 +468,58 @@ TEST(WaveMooring, LinePiercingTheSurfaceRunsThroughInBothSchemes) {
   EXPECT_LT(imp.steps, 2 * imp_calm.steps);
 }
 
+// The static equilibrium counts the surface: 30 m of wire hanging from a point 5 m above the
+// still water level, its lower end free. Each link carries the weight of the line below it,
+// in air above the surface and submerged below it, so the top link (its midpoint 0.25 m below
+// the top) carries w_air 4.75 m + w_sub 25 m. The lumped line has station 10 at the surface,
+// half wet over its 0.5 m share of line (the wet fraction is symmetric about the surface): the
+// midpoint rule of that integral, exact for a step in the weight. The stretch of the top 5 m
+// (T / EA, 9.5e-5 m) sinks station 10 below the surface by that much, wetting 1.5 (9.5e-5 / 0.5)
+// more of its buoyancy (6.3 N): 1.8e-3 N, 6.9e-7 of the tension, within the bound of 1e-6.
+// Ignoring the surface (as the equilibrium did before) gives w_sub 29.75 m, 2.3 % less. From that equilibrium, under a still
+// surface (H = 0), the line stays at rest: no start transient.
+TEST(WaveEquilibrium, LinePiercingTheSurfaceHangsWithItsDryPartInAir) {
+  const double mu = 10.0, area = 1.2566e-3, E = 1e11, rho = 1025;
+  EnvironmentSpec env;
+  env.fluid_density = rho;
+  env.waves = Spec(2.0, 8.0, 100.0);
+  env.waves.ramp_rate = 0.2;
+  SectionSpec s{30.0, 60, 0.04, area, mu, E, 1.2, 1.0};
+  auto build = [&](const EnvironmentSpec& e) {
+    return BuildCableModel({s}, {}, e, EndMotion::Fixed({0, 5}), EndMotion::Free({0, -25}),
+                           LinkLaw::kElastic);
+  };
+  const CableModel m = build(env);
+  const CableState st = SolveEquilibrium(m);
+  ForceWorkspace ws(m.links);
+  ComputeGeometry(m, 0.0, st.x, ws.geometry);
+  ComputeHookeTensions(m, ws.geometry, ws.tension);
+  const double w_air = mu * kG, w_sub = (mu - rho * area) * kG;
+  const double expected = w_air * 4.75 + w_sub * 25.0;
+  std::printf("[ surface statics ] top link %.6f N, expected %.6f N (relative %.2e; ignoring "
+              "the surface: %.6f N); station 10 at y = %.3e m\n",
+              ws.tension[0], expected, ws.tension[0] / expected - 1, w_sub * 29.75, st.x(1, 10));
+  EXPECT_NEAR(ws.tension[0], expected, 1e-6 * expected);
+
+  EnvironmentSpec still = env;
+  still.waves.height = 0;
+  const CableModel calm = build(still);
+  CableState run = SolveEquilibrium(calm);
+  const Eigen::Matrix2Xd start = run.x;
+  auto integ = MakeIntegrator(IntegratorKind::kImplicit, calm, 0.5, 1e-6 * 30);
+  integ->Initialize(calm, run);
+  double fastest = 0;
+  for (int i = 0; i < 200; ++i) {  // 20 s
+    integ->Step(calm, run, 0.1);
+    fastest = std::max(fastest, run.v.cwiseAbs().maxCoeff());
+  }
+  const double moved = (run.x - start).cwiseAbs().maxCoeff();
+  std::printf("[ surface statics ] still surface, 20 s from the equilibrium: fastest station "
+              "%.2e m/s, moved %.2e m\n", fastest, moved);
+  EXPECT_LT(fastest, 1e-6);  // at rest (the buoyancy lost at t = 0 moved it by cm/s)
+  EXPECT_LT(moved, 1e-6);
+}
+
 // ---------------------------------------------------------------------------------------------
 // The surface: a station in the air has its weight, no buoyancy, no drag and no added mass; one
 // deep in the water all of them; still water (H = 0) far above the line gives the forces and
