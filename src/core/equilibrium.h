@@ -16,6 +16,8 @@ struct EquilibriumReport {
   int current_steps = 0;    // continuation steps in the current (0 without current)
   double residual = 0;      // largest out-of-balance force on a station at the end [N]
   double force_scale = 0;   // the force the residual is measured against [N]
+  double roundoff_floor = 0;  // the residual the link tensions' round-off allows [N]: an
+                              // iteration that stalls below it has converged
   bool fallback = false;    // Newton failed and pseudo-transient continuation took over
   int fallback_iterations = 0;  // of `iterations`, those of the pseudo-transient fallback
 };
