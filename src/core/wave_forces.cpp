@@ -55,7 +55,7 @@ double SurfaceBuoyancyEnergy(const CableModel& m, const Eigen::Matrix2Xd& x) {
     const double band = m.wet_band[j];
     if (m.station_buoyancy[j] == 0 || !(band > 0)) continue;
     const double u = (m.wave.spec.surface_y - x(1, j)) / band + 0.5;
-    // Under water y + l G(u) = y_surface + l/2 - l/2: the same for every depth.
+    // Under water (u >= 1) y + l G(u) = y_surface: the same at every depth.
     e += m.station_buoyancy[j] * (x(1, j) + band * G(u));
   }
   return e;
