@@ -123,7 +123,7 @@ void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::V
       B(1, 1) = r.dN_dp - kv * r.dN_dvy;
       if (bed.friction > 0) {
         const double u = v(0, j) / bed.friction_velocity;
-        const double th = std::tanh(u), sech2 = 1.0 - th * th;
+        const double th = FrictionShape(u), sech2 = 1.0 - th * th;
         B(0, 1) = -bed.friction * th * B(1, 1);
         B(0, 0) = kv * bed.friction * r.N * sech2 / bed.friction_velocity;
       }

@@ -91,7 +91,7 @@ void AddSeabedForces(const CableModel& m, const LinkGeometry& g, const Eigen::Ma
     const double N = SeabedNormal(m, j, p, v(1, j)).N;
     force(1, j) += N;
     if (bed.friction > 0)
-      force(0, j) -= bed.friction * N * std::tanh(v(0, j) / bed.friction_velocity);
+      force(0, j) -= bed.friction * N * FrictionShape(v(0, j) / bed.friction_velocity);
   }
 }
 
