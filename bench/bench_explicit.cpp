@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "app/simulation_run.h"
+#include "run/simulation_run.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 

@@ -1,4 +1,4 @@
-// Film throughput on this machine: a procedural P63-like cable (61 stations, src/render/
+// Film throughput on this machine: a procedural P63-like cable (61 stations, src/view/
 // demo_cable.h; the real simulator is not involved) drawn and encoded end to end through
 // FilmWriter at 1920x1080 and 1280x720, and separately the render+readback rate (MakeFrame +
 // Renderer::Draw) and the encode rate (RGBA->yuv420p + libx264). Prints frames per second.
@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "encode/video_encoder.h"
-#include "render/demo_cable.h"
-#include "render/film_writer.h"
-#include "render/frame_builder.h"
-#include "render/renderer.h"
+#include "view/demo_cable.h"
+#include "view/film_writer.h"
+#include "view/frame_builder.h"
+#include "view/renderer.h"
 
 using namespace cablefilm;
 using Clock = std::chrono::steady_clock;

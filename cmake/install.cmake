@@ -18,6 +18,7 @@ install(TARGETS cablefilm_core EXPORT cablefilmTargets
         LIBRARY DESTINATION lib)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/core/ DESTINATION include/cablefilm/core
         FILES_MATCHING PATTERN "*.h")
+install(FILES ${PROJECT_BINARY_DIR}/src/generated/core/version.h DESTINATION include/cablefilm/core)
 install(EXPORT cablefilmTargets NAMESPACE cablefilm:: DESTINATION ${CABLEFILM_CMAKE_DIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/cablefilmConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/cablefilmConfig.cmake

@@ -12,15 +12,15 @@
 #include <sstream>
 #include <string>
 
-#include "app/film_pass.h"
-#include "app/max_tension_log.h"
-#include "app/netcdf_results.h"
+#include "view/film_pass.h"
+#include "run/max_tension_log.h"
+#include "io/netcdf_results.h"
 #include "app/progress.h"
-#include "app/result_files.h"
-#include "app/run_extent.h"
-#include "app/run_report.h"
-#include "app/simulation_run.h"
-#include "app/version.h"
+#include "io/result_files.h"
+#include "run/run_extent.h"
+#include "io/run_report_file.h"
+#include "run/simulation_run.h"
+#include "core/version.h"
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
@@ -295,20 +295,6 @@ std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options) {
   return out_dir;
 }
 
-// What the options change of the scene's film, checked before anything is simulated (the
-// loader checked the scene's own [film] keys when its film is on): the film of the run must
-// have from 1 to kMaxFilmFrames frames.
-void CheckFilmOptions(const SceneDef& scene, const RunOptions& o, bool film) {
-  if (!film) return;
-  const double fps = o.fps > 0 ? o.fps : scene.film.fps;
-  const double speed = o.speed > 0 ? o.speed : scene.film.speed;
-  const std::string problem = FilmFramesProblem(
-      RunSpan(scene.simulation.duration, scene.output.interval), fps, speed);
-  if (problem.empty()) return;
-  const std::string key = o.speed > 0 ? "--speed" : o.fps > 0 ? "--fps" : "film.speed";
-  throw Error(EscapeText(scene.path) + ": " + key + ": " + problem);
-}
-
 FilmRun ToFilmRun(const ModelRun& r, const std::string& label) {
   return FilmRun{label, &r.model, r.grid, r.initial, r.initial_tension, r.extent, &r.rows};
 }
@@ -343,28 +329,6 @@ void Report(const ModelRun& run, RunReport* report) {
 
 }  // namespace
 
-FilmRequest MakeFilmRequest(const SceneDef& scene, const RunOptions& o,
-                            const std::string& out_dir) {
-  FilmRequest r;
-  r.out_dir = out_dir;
-  r.width = o.width > 0 ? o.width : scene.film.width;
-  r.height = o.height > 0 ? o.height : scene.film.height;
-  r.fps = o.fps > 0 ? o.fps : scene.film.fps;
-  r.speed = o.speed > 0 ? o.speed : scene.film.speed;
-  r.crf = scene.film.crf;
-  r.colormap = o.colormap.empty() ? scene.film.colormap : o.colormap;
-  r.tension_min = o.tension_min >= 0 ? o.tension_min : scene.film.tension_min;
-  r.tension_max = o.tension_max >= 0 ? o.tension_max : scene.film.tension_max;
-  r.frames = o.frames >= 0 ? o.frames == 1 : scene.output.frames;
-  r.shader_dir = o.shader_dir;
-  return r;
-}
-
-std::string SceneErrorMessage(const std::string& scene_path, const std::string& what) {
-  const std::string prefix = EscapeText(scene_path) + ":";
-  return what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + " " + what;
-}
-
 int CheckCommand(const std::string& scene_path) {
   const SceneDef scene = LoadScene(scene_path);
   const CableModel m = BuildModel(scene);
@@ -389,7 +353,7 @@ int InterruptedExitStatus() { return 128 + (g_signal != 0 ? g_signal.load() : SI
 int RunCommand(const std::string& scene_path, const RunOptions& options, RunReport* report) {
   const SceneDef scene = LoadScene(scene_path);
   const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
-  CheckFilmOptions(scene, options, film);
+  const FilmSettings look = film ? ResolveFilm(scene, options, kCommandLineNames) : FilmSettings{};
   const CableModel model = BuildModel(scene);
   CheckModelLimits(scene, model);
   const std::string out_dir = PrepareOutDir(scene, options);
@@ -405,7 +369,7 @@ int RunCommand(const std::string& scene_path, const RunOptions& options, RunRepo
   if (!film) return 0;
   PictureReport shown;
   const bool finished =
-      RenderFilm(scene, runs, MakeFilmRequest(scene, options, out_dir), g_signal, &shown);
+      RenderFilm(scene, runs, MakeFilmRequest(look, out_dir, options.shader_dir), g_signal, &shown);
   if (report) {
     report->film_peak = shown.peak;
     report->film_peak_t = shown.peak_t;
@@ -420,7 +384,7 @@ int RunCommand(const std::string& scene_path, const RunOptions& options, RunRepo
 int CompareCommand(const std::string& scene_path, const RunOptions& options) {
   SceneDef scene = LoadScene(scene_path);
   const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
-  CheckFilmOptions(scene, options, film);
+  const FilmSettings look = film ? ResolveFilm(scene, options, kCommandLineNames) : FilmSettings{};
   for (const CableModelKind kind : {CableModelKind::kElastic, CableModelKind::kInextensible}) {
     scene.model = kind;
     CheckModelLimits(scene, BuildModel(scene));
@@ -441,7 +405,7 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
               rigid.rows.peak() / elastic.rows.peak());
   WriteMaxTensionFigure(scene, runs, out_dir, options.shader_dir, true);
   if (!film) return 0;
-  const bool finished = RenderFilm(scene, runs, MakeFilmRequest(scene, options, out_dir), g_signal);
+  const bool finished = RenderFilm(scene, runs, MakeFilmRequest(look, out_dir, options.shader_dir), g_signal);
   return finished ? 0 : 128 + g_signal;
 }
 

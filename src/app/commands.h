@@ -3,16 +3,14 @@
 #include <limits>
 #include <string>
 
+#include "scene/film_settings.h"
+
 namespace cablefilm {
 
-struct RunOptions {
+// What the command line says of a run: the film's settings over the scene's, and where it goes.
+struct RunOptions : FilmOverrides {
   std::string out_dir;          // empty: output/<scene name>
   int film = -1;                // -1: as the scene says, 0: no film, 1: film
-  int frames = -1;              // -1: as the scene says, 0/1: keep PNG frames or not
-  int width = 0, height = 0;    // 0: as the scene says
-  double fps = 0, speed = 0;    // 0: as the scene says
-  std::string colormap;         // empty: as the scene says
-  double tension_min = -1, tension_max = -1;  // colour range [N]; negative: as the scene says
   std::string shader_dir;       // empty: CABLEFILM_SHADERS or the built-in path
 };
 
@@ -32,18 +30,6 @@ struct RunReport {
   double film_last_t = std::numeric_limits<double>::quiet_NaN();    // and its time [s]
   double film_last_row_max = std::numeric_limits<double>::quiet_NaN();  // the last row's, as plotted [N]
 };
-
-struct SceneDef;     // scene/scene_def.h
-struct FilmRequest;  // app/film_pass.h
-
-// The film a run makes into `out_dir`: the scene's [film] and [output] frames, the options
-// given (non-zero, non-empty) overriding them.
-FilmRequest MakeFilmRequest(const SceneDef& scene, const RunOptions& options,
-                            const std::string& out_dir);
-
-// An error about the scene `scene_path` as the program reports it after "cablefilm: error: ":
-// `what`, led by the scene's name unless it starts with it already (the loader's messages do).
-std::string SceneErrorMessage(const std::string& scene_path, const std::string& what);
 
 int RunCommand(const std::string& scene_path, const RunOptions& options,
                RunReport* report = nullptr);

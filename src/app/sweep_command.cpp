@@ -22,7 +22,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "app/result_files.h"
+#include "io/result_files.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "scene/build_model.h"
@@ -203,7 +203,7 @@ class Sweep {
           "# cablefilm sweep, case " + std::to_string(i) + " of " + std::to_string(n) + ": " +
           EscapeText(scene_path_) + " with " + DescribeValues(cases_, i) + "\n\n";
       try {
-        scenes[i] = CaseSceneText(text, scene_path_, cases_.keys, cases_.rows[i], comment);
+        scenes[i] = EditSceneText(text, scene_path_, cases_.keys, cases_.rows[i], comment);
         ValidateCase(scenes[i], path, options_.run);
       } catch (const Error& e) {
         throw Error(EscapeText(scene_path_) + ": case " + std::to_string(i) + " (" +

@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "app/sweep_cases.h"
+#include "run/sweep_plan.h"
+#include "scene/scene_edit.h"
 
 namespace cablefilm {
 

@@ -13,9 +13,9 @@
 #include "core/error.h"
 #include "encode/png_writer.h"
 #include "encode/video_encoder.h"
-#include "live/jpeg_encoder.h"
-#include "render/colormap.h"
-#include "render/renderer.h"
+#include "encode/jpeg_encoder.h"
+#include "view/colormap.h"
+#include "view/renderer.h"
 
 namespace cablefilm {
 namespace {

@@ -19,7 +19,7 @@
 
 #include "encode/image.h"
 #include "live/control.h"
-#include "live/live_history.h"
+#include "view/live_history.h"
 #include "live/live_simulation.h"
 #include "live/row_log.h"
 #include "scene/scene_def.h"

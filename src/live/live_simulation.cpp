@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/simulation_run.h"
+#include "run/simulation_run.h"
 #include "scene/build_model.h"
 
 namespace cablefilm {

@@ -9,7 +9,7 @@
 #include "core/cable_model.h"
 #include "core/cable_state.h"
 #include "core/integrator.h"
-#include "app/simulation_run.h"
+#include "run/simulation_run.h"
 #include "core/smooth_schedule.h"
 #include "scene/scene_def.h"
 

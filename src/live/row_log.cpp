@@ -6,7 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "app/result_files.h"
+#include "io/result_files.h"
 #include "core/error.h"
 
 namespace cablefilm {

@@ -15,21 +15,24 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
-#include "app/commands.h"
-#include "app/memory_run.h"
-#include "app/run_report.h"
-#include "app/sweep_cases.h"
-#include "app/version.h"
+#include "scene/film_settings.h"
+#include "scene/scene_loader.h"
+#include "run/memory_run.h"
+#include "run/run_summary.h"
+#include "run/sweep_plan.h"
+#include "scene/scene_edit.h"
+#include "core/version.h"
 #include "core/equilibrium.h"
 #include "python/interruptible.h"
 #include "python/scene_handle.h"
 #include "python/toml_values.h"
 #include "scene/scene_limits.h"
 #ifdef CABLEFILM_PYTHON_RENDER
-#include "app/film_pass.h"
-#include "app/memory_film.h"
+#include "view/film_pass.h"
+#include "view/memory_film.h"
 #endif
 
 namespace py = pybind11;
@@ -47,7 +50,7 @@ struct Result {
   py::object scene;  // the Scene it ran (a copy, unchanged by later edits)
 };
 
-SceneHandle LoadScene(const py::handle& source, const std::optional<std::string>& name) {
+SceneHandle SceneOf(const py::handle& source, const std::optional<std::string>& name) {
   if (py::isinstance<SceneHandle>(source)) return source.cast<SceneHandle>();
   if (py::isinstance<py::dict>(source))
     return SceneHandle::FromText(DictToToml(py::reinterpret_borrow<py::dict>(source)),
@@ -178,58 +181,39 @@ const MemoryRun& RunOf(const py::object& obj, py::object* holder) {
   if (py::isinstance<Result>(obj)) {
     *holder = obj;
   } else {
-    *holder = RunScene(LoadScene(obj, std::nullopt));
+    *holder = RunScene(SceneOf(obj, std::nullopt));
   }
   return *holder->cast<Result&>().run;
 }
 
-// The film's options: the scene's [film], with those given.
+// The film's options: the scene's [film], with those given (each checked as the loader and the
+// command line check theirs); a whole film's frame count too.
 FilmRequest FilmOptions(const MemoryRun& run, std::optional<int> width, std::optional<int> height,
                         std::optional<double> fps, std::optional<double> speed,
                         std::optional<std::string> colormap,
-                        std::optional<std::pair<double, double>> tension_range) {
-  RunOptions o;
-  auto size = [](const char* key, int v, int hi) {
-    if (v < kMinFilmSize || v > hi || v % 2 != 0)
-      throw py::value_error(std::string(key) + ": expected an even number of pixels from " +
-                            std::to_string(kMinFilmSize) + " to " + std::to_string(hi) +
-                            ", got " + std::to_string(v));
-    return v;
+                        std::optional<std::pair<double, double>> tension_range, bool whole_film) {
+  auto check = [](const char* key, const std::string& problem) {
+    if (!problem.empty()) throw py::value_error(std::string(key) + ": " + problem);
   };
-  if (width) o.width = size("width", *width, kMaxFilmWidth);
-  if (height) o.height = size("height", *height, kMaxFilmHeight);
-  if (fps) {
-    if (!(*fps >= kMinFps && *fps <= kMaxFps))
-      throw py::value_error("fps: expected a number from " + FormatNumber(kMinFps) + " to " +
-                            FormatNumber(kMaxFps) + " frames per second, got " +
-                            FormatNumber(*fps));
-    o.fps = *fps;
+  FilmOverrides o;
+  if (width || height) {
+    o.width = width.value_or(run.scene.film.width);
+    o.height = height.value_or(run.scene.film.height);
+    check(width ? "width" : "height", FilmSizeProblem(o.width, o.height));
   }
-  if (speed) {
-    if (!(*speed > 0 && *speed <= kMaxTime))
-      throw py::value_error("speed: expected a positive number of simulated seconds per "
-                            "second of film, got " + FormatNumber(*speed));
-    o.speed = *speed;
-  }
-  if (colormap) {
-    const std::vector<std::string>& names = ColormapNames();
-    if (std::find(names.begin(), names.end(), *colormap) == names.end()) {
-      std::string known;
-      for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
-      throw py::value_error("colormap: expected one of " + known + ", got \"" + *colormap + "\"");
-    }
-    o.colormap = *colormap;
-  }
+  if (fps) check("fps", FpsProblem(o.fps = *fps));
+  if (speed) check("speed", SpeedProblem(o.speed = *speed));
+  if (colormap) check("colormap", ColormapProblem(o.colormap = *colormap));
   if (tension_range) {
-    const auto [lo, hi] = *tension_range;
-    if (!(lo >= 0 && hi > lo && hi <= kMaxTension))
-      throw py::value_error("tension_range: expected (min, max) in N with 0 <= min < max, got (" +
-                            FormatNumber(lo) + ", " + FormatNumber(hi) + ")");
-    o.tension_min = lo;
-    o.tension_max = hi;
+    std::tie(o.tension_min, o.tension_max) = *tension_range;
+    check("tension_range", TensionRangeProblem(o.tension_min, o.tension_max));
   }
   o.frames = 0;
-  return MakeFilmRequest(run.scene, o, "");
+  try {
+    return MakeFilmRequest(ResolveFilm(run.scene, o, kPythonNames, whole_film), "", "");
+  } catch (const Error& e) {
+    throw py::value_error(e.what());
+  }
 }
 
 py::array RenderFrame(const py::object& obj, std::optional<double> t, std::optional<long> row,
@@ -238,7 +222,7 @@ py::array RenderFrame(const py::object& obj, std::optional<double> t, std::optio
   py::object holder;
   const MemoryRun& run = RunOf(obj, &holder);
   FilmRequest request = FilmOptions(run, width, height, std::nullopt, std::nullopt, colormap,
-                                    tension_range);
+                                    tension_range, false);
   long chosen = run.rows - 1;
   if (row && t) throw py::value_error("give t or row, not both");
   if (row) {
@@ -273,11 +257,7 @@ std::string RenderFilmTo(const py::object& obj, const std::string& path,
   namespace fs = std::filesystem;
   py::object holder;
   const MemoryRun& run = RunOf(obj, &holder);
-  FilmRequest request = FilmOptions(run, width, height, fps, speed, colormap, tension_range);
-  const std::string problem = FilmFramesProblem(
-      RunSpan(run.scene.simulation.duration, run.scene.output.interval), request.fps,
-      request.speed);
-  if (!problem.empty()) throw py::value_error("speed: " + problem);
+  FilmRequest request = FilmOptions(run, width, height, fps, speed, colormap, tension_range, true);
   // PATH.mp4: the film itself, made in a folder of its own beside it, then renamed; else a
   // folder that gets film.mp4, as `cablefilm run --out PATH` does.
   const fs::path target(path);
@@ -312,7 +292,7 @@ std::string RenderFilmTo(const py::object& obj, const std::string& path,
 // threads; one dict a case with the columns of sweep.csv.
 py::list Sweep(const py::object& source, const py::dict& values, std::optional<py::list> cases,
                std::optional<int> jobs, bool keep_results) {
-  const SceneHandle scene = LoadScene(source, std::nullopt);
+  const SceneHandle scene = SceneOf(source, std::nullopt);
   SweepCases listed;
   std::vector<std::vector<py::object>> listed_objects;
   if (cases) {
@@ -452,7 +432,7 @@ scene["environment.current"] reads a value by its dotted key (as the loader's me
 `cablefilm sweep --set` spell it); scene["environment.current"] = 0.5 sets it, read again by
 the loader: a bad key or value raises SceneError and leaves the scene as it was.)")
       .def(py::init([](const py::object& source, std::optional<std::string> name) {
-             return LoadScene(source, name);
+             return SceneOf(source, name);
            }),
            py::arg("source"), py::arg("name") = py::none(),
            "A scene file's path, a dict of the TOML schema, or a Scene (copied). `name` names "
@@ -495,7 +475,7 @@ the loader: a bad key or value raises SceneError and leaves the scene as it was.
                std::to_string(s.model().links) + " links>";
       });
 
-  m.def("load", &LoadScene, py::arg("source"), py::arg("name") = py::none(),
+  m.def("load", &SceneOf, py::arg("source"), py::arg("name") = py::none(),
         "A Scene from a scene file's path or a dict of the same schema (SceneError when the "
         "loader refuses it, with the message `cablefilm check` prints).");
 
@@ -557,7 +537,7 @@ are read-only views of the run.)")
                FormatNumber(r.run->peak) + " N" + (r.run->completed ? "" : ", cut short") + ">";
       });
 
-  m.def("run", [](const py::object& scene) { return RunScene(LoadScene(scene, std::nullopt)); },
+  m.def("run", [](const py::object& scene) { return RunScene(SceneOf(scene, std::nullopt)); },
         py::arg("scene"),
         "Runs a scene (a Scene, a path or a dict) from its initial state to its end, writing no "
         "file; the GIL is released meanwhile. Returns a Result. BlowUpError on a numerical "
@@ -578,7 +558,7 @@ are read-only views of the run.)")
         return py::iter(py::make_tuple(e.x, e.y, e.tension));
       });
   m.def("equilibrium",
-        [](const py::object& scene) { return SolveSceneEquilibrium(LoadScene(scene, std::nullopt)); },
+        [](const py::object& scene) { return SolveSceneEquilibrium(SceneOf(scene, std::nullopt)); },
         py::arg("scene"),
         "The scene's static equilibrium with the ends at their t = 0 positions (the initial "
         "state of a run with [initial] state = \"equilibrium\"), the GIL released.");

@@ -3,8 +3,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/commands.h"
-#include "app/sweep_cases.h"
+#include "scene/film_settings.h"
+#include "scene/scene_loader.h"
+#include "run/sweep_plan.h"
+#include "scene/scene_edit.h"
 #include "core/error.h"
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
@@ -52,7 +54,7 @@ void SceneHandle::Set(const std::vector<std::string>& keys,
                       const std::vector<std::string>& values) {
   std::string edited;
   try {
-    edited = CaseSceneText(text_, path_, keys, values, "");
+    edited = EditSceneText(text_, path_, keys, values, "");
   } catch (const Error& e) {
     throw SceneProblem(e.what());
   }

@@ -2,7 +2,7 @@
 // The Python module's Scene: a scene's TOML text and the path it came from, always valid. It
 // is read by the same loader as `cablefilm check` (scene_loader.h, then the built model's
 // limits, scene_limits.h); a change of a value goes through the sweep's editing of scene keys
-// (app/sweep_cases.h) and is read again, so a bad value is refused with the loader's message
+// (scene/scene_edit.h) and is read again, so a bad value is refused with the loader's message
 // and the scene keeps its former text.
 #include <stdexcept>
 #include <string>
@@ -35,7 +35,7 @@ class SceneHandle {
   // Sets keys[i] (dotted scene paths) to the TOML values values[i], all at once; on a problem
   // throws SceneProblem (or Error for a key that does not fit the scene) and changes nothing.
   void Set(const std::vector<std::string>& keys, const std::vector<std::string>& values);
-  // The value of a key as a TOML document "v = ..." (see app/sweep_cases.h).
+  // The value of a key as a TOML document "v = ..." (see scene/scene_edit.h).
   std::string ValueDocument(const std::string& key) const;
 
  private:

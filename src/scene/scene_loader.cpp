@@ -750,4 +750,9 @@ std::string ReadSceneFile(const std::string& path) {
 
 SceneDef LoadScene(const std::string& path) { return ParseScene(ReadSceneFile(path), path); }
 
+std::string SceneErrorMessage(const std::string& scene_path, const std::string& what) {
+  const std::string prefix = EscapeText(scene_path) + ":";
+  return what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + " " + what;
+}
+
 }  // namespace cablefilm

@@ -13,4 +13,8 @@ SceneDef LoadScene(const std::string& path);
 std::string ReadSceneFile(const std::string& path);
 SceneDef ParseScene(const std::string& text, const std::string& path);  // path: for messages
 
+// An error about the scene `scene_path` as the program reports it after "cablefilm: error: ":
+// `what`, led by the scene's name unless it starts with it already (the loader's messages do).
+std::string SceneErrorMessage(const std::string& scene_path, const std::string& what);
+
 }  // namespace cablefilm

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "app/simulation_run.h"
+#include "run/simulation_run.h"
 #include "core/stability.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"

@@ -14,7 +14,7 @@
 
 #include "text_support.h"
 #include "app/commands.h"
-#include "app/max_tension_log.h"
+#include "run/max_tension_log.h"
 #include "core/error.h"
 
 namespace cablefilm {

@@ -14,7 +14,7 @@
 
 #include "text_support.h"
 #include "app/commands.h"
-#include "app/simulation_run.h"
+#include "run/simulation_run.h"
 #include "core/error.h"
 #include "core/explicit_integrator.h"
 #include "core/integrator.h"

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "app/simulation_run.h"
+#include "run/simulation_run.h"
 #include "core/equilibrium.h"
 #include "core/integrator.h"
 #include "scene/build_model.h"

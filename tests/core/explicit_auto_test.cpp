@@ -11,7 +11,7 @@
 #include <memory>
 #include <string>
 
-#include "app/simulation_run.h"
+#include "run/simulation_run.h"
 #include "core/equilibrium.h"
 #include "core/explicit_integrator.h"
 #include "core/forces.h"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "app/simulation_run.h"
+#include "run/simulation_run.h"
 #include "core/block_tridiagonal.h"
 #include "core/equilibrium.h"
 #include "core/force_jacobian.h"

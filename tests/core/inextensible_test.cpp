@@ -25,7 +25,7 @@
 #include <unistd.h>
 
 #include "app/commands.h"
-#include "app/simulation_run.h"
+#include "run/simulation_run.h"
 #include "core/equilibrium.h"
 #include "core/forces.h"
 #include "core/inextensible.h"

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <string>
 
-#include "app/run_report.h"
-#include "app/simulation_run.h"
+#include "run/run_summary.h"
+#include "run/simulation_run.h"
 #include "core/equilibrium.h"
 #include "core/integrator.h"
 #include "core/snap_monitor.h"

@@ -31,9 +31,9 @@
 #include <thread>
 
 #include "app/commands.h"
-#include "app/result_files.h"
-#include "app/run_extent.h"
-#include "app/simulation_run.h"
+#include "io/result_files.h"
+#include "run/run_extent.h"
+#include "run/simulation_run.h"
 #include "core/cancel.h"
 #include "core/error.h"
 #include "scene/build_model.h"

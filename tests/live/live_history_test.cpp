@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "live/live_history.h"
+#include "view/live_history.h"
 
 namespace cablefilm {
 namespace {

@@ -1,0 +1,324 @@
+#include "io/netcdf_results.h"
+
+#include <malloc.h>
+#include <netcdf.h>
+#include <pthread.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "core/error.h"
+
+namespace cablefilm {
+namespace {
+
+void Check(int status, const std::string& file, const char* what) {
+  if (status != NC_NOERR)
+    throw Error("cannot write " + file + " (" + what + "): " + nc_strerror(status));
+}
+
+void Text(int ncid, int var, const char* name, const std::string& value, const std::string& file) {
+  Check(nc_put_att_text(ncid, var, name, value.size(), value.data()), file, name);
+}
+
+// zlib allocates about 270 KiB of state for every chunk it deflates and frees it at once. With
+// glibc's default trim threshold (128 KiB) every free hands those pages back to the kernel and
+// the next chunk faults them in again, which on this machine cost several times the compression
+// itself (case P63: 0.2-0.35 s to close the file instead of 10 ms). Keeping up to 8 MiB free at
+// the top of a heap ends the churn; the rest of the program allocates nothing in its loops.
+void KeepFreedMemoryForTheCompressor() {
+#if defined(__GLIBC__)
+  static const bool once = [] {
+    mallopt(M_TOP_PAD, 1 << 20);
+    mallopt(M_TRIM_THRESHOLD, 8 << 20);
+    return true;
+  }();
+  (void)once;
+#endif
+}
+
+}  // namespace
+
+NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
+                                         const CableModel& m, const CableState& initial,
+                                         const Eigen::VectorXd& initial_tension)
+    : path_(path), temp_path_(path + ".tmp" + std::to_string(::getpid())) {
+  KeepFreedMemoryForTheCompressor();
+  try {
+    Define(info, m, initial, initial_tension);
+    filling_ = NewBlock();
+    StartWriter();
+  } catch (...) {
+    if (ncid_ >= 0) nc_close(ncid_);
+    std::remove(temp_path_.c_str());
+    throw;
+  }
+}
+
+void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const CableModel& m,
+                                 const CableState& initial,
+                                 const Eigen::VectorXd& initial_tension) {
+  stations_ = m.stations();
+  links_ = m.links;
+  const std::string& f = temp_path_;
+  int created = -1;
+  Check(nc_create(f.c_str(), NC_NETCDF4 | NC_CLOBBER, &created), f, "create");
+  ncid_ = created;
+  const int nc = ncid_;
+
+  // Chunks of all stations (at most kChunkBytes of them) by up to kChunkRows rows.
+  const long per_chunk = kChunkBytes / static_cast<long>(sizeof(double));
+  const size_t chunk_stations = static_cast<size_t>(std::min<long>(stations_, per_chunk));
+  chunk_rows_ = static_cast<int>(
+      std::clamp<long>(per_chunk / static_cast<long>(chunk_stations), 1, kChunkRows));
+  const size_t rows = static_cast<size_t>(chunk_rows_);
+
+  int dim_time = -1, dim_station = -1, dim_link = -1;
+  Check(nc_def_dim(nc, "time", NC_UNLIMITED, &dim_time), f, "time");
+  Check(nc_def_dim(nc, "station", static_cast<size_t>(stations_), &dim_station), f, "station");
+  Check(nc_def_dim(nc, "link", static_cast<size_t>(links_), &dim_link), f, "link");
+
+  // A variable with its units and long name, compressed; chunked when it has a time axis.
+  auto define = [&](const char* name, nc_type type, std::vector<int> dims, const char* units,
+                    const std::string& long_name) {
+    int var = -1;
+    Check(nc_def_var(nc, name, type, static_cast<int>(dims.size()), dims.data(), &var), f, name);
+    if (dims[0] == dim_time) {
+      std::vector<size_t> chunks{dims.size() == 1 ? rows * 16 : rows};
+      if (dims.size() == 2) chunks.push_back(std::min(chunk_stations, static_cast<size_t>(links_)));
+      if (dims.size() == 2 && dims[1] == dim_station) chunks[1] = chunk_stations;
+      Check(nc_def_var_chunking(nc, var, NC_CHUNKED, chunks.data()), f, name);
+      // A 2-D variable gets whole chunks, each written once: no cache, so each is deflated and
+      // written as it comes (by the writer's thread) rather than all at the close. A 1-D one
+      // gets a 16th of a chunk at a time: a cache of two chunks, the full one leaving it as the
+      // next is begun.
+      const size_t cache = dims.size() == 1 ? 2 * chunks[0] * sizeof(double) : 0;
+      Check(nc_set_var_chunk_cache(nc, var, cache, 101, 1.0f), f, name);
+    }
+    Check(nc_def_var_deflate(nc, var, 1, 1, 4), f, name);
+    Check(nc_def_var_fill(nc, var, NC_NOFILL, nullptr), f, name);  // every value is written
+    Text(nc, var, "units", units, f);
+    Text(nc, var, "long_name", long_name, f);
+    return var;
+  };
+
+  var_time_ = define("time", NC_DOUBLE, {dim_time}, "s", "simulated time");
+  Text(nc, var_time_, "axis", "T", f);
+  const int var_station = define("station", NC_INT, {dim_station}, "1",
+                                 "station index j, from 0 at the start to s at the end");
+  const int var_link =
+      define("link", NC_INT, {dim_link}, "1", "link index j of link j+1/2 (stations j to j+1)");
+  const int var_s = define("s", NC_DOUBLE, {dim_station}, "m",
+                           "unstretched arc length of the station from station 0");
+  const int var_s_link = define("s_link", NC_DOUBLE, {dim_link}, "m",
+                                "unstretched arc length of the link midpoint from station 0");
+
+  var_x_ = define("x", NC_DOUBLE, {dim_time, dim_station}, "m",
+                  "horizontal position of the station");
+  var_y_ = define("y", NC_DOUBLE, {dim_time, dim_station}, "m",
+                  "vertical position of the station (up; gravity along -y)");
+  var_tension_ = define("tension", NC_DOUBLE, {dim_time, dim_link}, "N",
+                        "tension of the link (0 when slack)");
+  for (int var : {var_x_, var_y_}) Text(nc, var, "coordinates", "s", f);
+  Text(nc, var_tension_, "coordinates", "s_link", f);
+
+  const char* end_names[4] = {"x_start", "y_start", "x_end", "y_end"};
+  const char* end_long[4] = {"horizontal position of the start (station 0)",
+                             "vertical position of the start (station 0)",
+                             "horizontal position of the end (station s)",
+                             "vertical position of the end (station s)"};
+  for (int k = 0; k < 4; ++k)
+    var_end_[k] = define(end_names[k], NC_DOUBLE, {dim_time}, "m", end_long[k]);
+
+  const bool equilibrium = info.initial_state != "straight";
+  const std::string state = equilibrium ? "static equilibrium at t = 0"
+                                        : "initial state at t = 0 (the straight chord at rest, "
+                                          "not an equilibrium)";
+  const int var_x_eq = define("x_equilibrium", NC_DOUBLE, {dim_station}, "m",
+                              "horizontal position of the station, " + state);
+  const int var_y_eq = define("y_equilibrium", NC_DOUBLE, {dim_station}, "m",
+                              "vertical position of the station, " + state);
+  const int var_t_eq = define("tension_equilibrium", NC_DOUBLE, {dim_link}, "N",
+                              "tension of the link, " + state);
+  for (int var : {var_x_eq, var_y_eq}) Text(nc, var, "coordinates", "s", f);
+  Text(nc, var_t_eq, "coordinates", "s_link", f);
+
+  Text(nc, NC_GLOBAL, "Conventions", "CF-1.8", f);
+  Text(nc, NC_GLOBAL, "title", info.title, f);
+  Text(nc, NC_GLOBAL, "source", "cablefilm " + info.version, f);
+  Text(nc, NC_GLOBAL, "references",
+       "Polachek, Walton, Mejia and Dawson (1963), Transient motion of an elastic cable "
+       "immersed in a fluid",
+       f);
+  Text(nc, NC_GLOBAL, "cablefilm_version", info.version, f);
+  Text(nc, NC_GLOBAL, "model", info.model, f);
+  Text(nc, NC_GLOBAL, "initial_state", info.initial_state, f);
+  Text(nc, NC_GLOBAL, "scene_file", info.scene_file, f);
+  Text(nc, NC_GLOBAL, "scene", info.scene, f);
+  Check(nc_enddef(nc), f, "enddef");
+
+  std::vector<int> index(static_cast<size_t>(stations_));
+  for (int j = 0; j < stations_; ++j) index[static_cast<size_t>(j)] = j;
+  std::vector<double> s_link(static_cast<size_t>(links_)), row(static_cast<size_t>(stations_));
+  for (int j = 0; j < links_; ++j)
+    s_link[static_cast<size_t>(j)] = 0.5 * (m.arc_length[j] + m.arc_length[j + 1]);
+  Check(nc_put_var_int(nc, var_station, index.data()), f, "station");
+  Check(nc_put_var_int(nc, var_link, index.data()), f, "link");
+  Check(nc_put_var_double(nc, var_s, m.arc_length.data()), f, "s");
+  Check(nc_put_var_double(nc, var_s_link, s_link.data()), f, "s_link");
+  for (int c = 0; c < 2; ++c) {
+    for (int j = 0; j < stations_; ++j) row[static_cast<size_t>(j)] = initial.x(c, j);
+    Check(nc_put_var_double(nc, c == 0 ? var_x_eq : var_y_eq, row.data()), f, "equilibrium");
+  }
+  Check(nc_put_var_double(nc, var_t_eq, initial_tension.data()), f, "tension_equilibrium");
+}
+
+void NetcdfResultsWriter::StartWriter() {
+  // SIGINT and SIGTERM blocked in the writer's thread: the program's handlers run on the
+  // simulation's thread.
+  sigset_t block, previous;
+  sigemptyset(&block);
+  sigaddset(&block, SIGINT);
+  sigaddset(&block, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &block, &previous);
+  try {
+    writer_ = std::thread([this] { WriterLoop(); });
+  } catch (...) {
+    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    throw;
+  }
+  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+}
+
+NetcdfResultsWriter::~NetcdfResultsWriter() {
+  StopWriter(true);
+  if (ncid_ >= 0) nc_close(ncid_);
+  if (!committed_) std::remove(temp_path_.c_str());
+}
+
+std::unique_ptr<NetcdfResultsWriter::Block> NetcdfResultsWriter::NewBlock() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!free_.empty()) {
+      std::unique_ptr<Block> b = std::move(free_.back());
+      free_.pop_back();
+      b->rows = 0;
+      return b;
+    }
+  }
+  auto b = std::make_unique<Block>();
+  const size_t rows = static_cast<size_t>(chunk_rows_);
+  b->time.resize(rows);
+  b->x.resize(rows * static_cast<size_t>(stations_));
+  b->y.resize(b->x.size());
+  b->tension.resize(rows * static_cast<size_t>(links_));
+  for (auto& e : b->ends) e.resize(rows);
+  return b;
+}
+
+void NetcdfResultsWriter::Append(const CableState& s, const Eigen::VectorXd& tension) {
+  if (!filling_) filling_ = NewBlock();  // after a failed hand-over
+  Block& b = *filling_;
+  if (b.rows == 0) b.first = rows_;
+  const size_t r = static_cast<size_t>(b.rows);
+  const size_t n = static_cast<size_t>(stations_);
+  b.time[r] = s.t;
+  double* x = b.x.data() + r * n;
+  double* y = b.y.data() + r * n;
+  for (int j = 0; j < stations_; ++j) {
+    x[j] = s.x(0, j);
+    y[j] = s.x(1, j);
+  }
+  std::copy(tension.data(), tension.data() + links_, b.tension.data() + r * links_);
+  b.ends[0][r] = s.x(0, 0);
+  b.ends[1][r] = s.x(1, 0);
+  b.ends[2][r] = s.x(0, links_);
+  b.ends[3][r] = s.x(1, links_);
+  ++b.rows;
+  ++rows_;
+  if (b.rows == chunk_rows_) {
+    Hand(std::move(filling_));
+    filling_ = NewBlock();
+  }
+}
+
+void NetcdfResultsWriter::Hand(std::unique_ptr<Block> block) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [&] { return queue_.size() < kQueuedChunks || !error_.empty(); });
+  if (!error_.empty()) throw Error(error_);
+  queue_.push_back(std::move(block));
+  changed_.notify_all();
+}
+
+void NetcdfResultsWriter::WriterLoop() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    changed_.wait(lock, [&] { return !queue_.empty() || stopping_; });
+    if (queue_.empty()) return;  // stopping, and all written
+    std::unique_ptr<Block> b = std::move(queue_.front());
+    queue_.pop_front();
+    const bool failed = !error_.empty();
+    lock.unlock();
+    std::string error;
+    if (!failed) {
+      try {
+        Write(*b);
+      } catch (const std::exception& e) {
+        error = e.what();
+      }
+    }
+    lock.lock();
+    if (!error.empty() && error_.empty()) error_ = error;
+    free_.push_back(std::move(b));
+    changed_.notify_all();
+  }
+}
+
+void NetcdfResultsWriter::Write(const Block& b) {
+  const std::string& f = temp_path_;
+  const size_t start[2] = {static_cast<size_t>(b.first), 0};
+  const size_t count_x[2] = {static_cast<size_t>(b.rows), static_cast<size_t>(stations_)};
+  const size_t count_t[2] = {static_cast<size_t>(b.rows), static_cast<size_t>(links_)};
+  Check(nc_put_vara_double(ncid_, var_time_, start, count_x, b.time.data()), f, "time");
+  Check(nc_put_vara_double(ncid_, var_x_, start, count_x, b.x.data()), f, "x");
+  Check(nc_put_vara_double(ncid_, var_y_, start, count_x, b.y.data()), f, "y");
+  Check(nc_put_vara_double(ncid_, var_tension_, start, count_t, b.tension.data()), f, "tension");
+  for (int k = 0; k < 4; ++k)
+    Check(nc_put_vara_double(ncid_, var_end_[k], start, count_x, b.ends[k].data()), f, "ends");
+}
+
+void NetcdfResultsWriter::StopWriter(bool drop) {
+  if (!writer_.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (drop) queue_.clear();
+    stopping_ = true;
+    changed_.notify_all();
+  }
+  writer_.join();
+}
+
+void NetcdfResultsWriter::Close() {
+  if (committed_ || ncid_ < 0) throw Error("internal: " + path_ + " committed twice");
+  if (filling_ && filling_->rows > 0) Hand(std::move(filling_));
+  StopWriter(false);  // the thread writes what waits, then ends
+  if (!error_.empty()) throw Error(error_);
+  const int id = ncid_;
+  ncid_ = -1;
+  Check(nc_close(id), temp_path_, "close");
+}
+
+void NetcdfResultsWriter::Commit() { CommitPartial(path_); }
+
+void NetcdfResultsWriter::CommitPartial(const std::string& path) {
+  Close();
+  if (std::rename(temp_path_.c_str(), path.c_str()) != 0)
+    throw Error("cannot rename " + temp_path_ + " to " + path + ": " + std::strerror(errno));
+  committed_ = true;
+}
+
+}  // namespace cablefilm

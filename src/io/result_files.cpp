@@ -1,0 +1,72 @@
+#include "io/result_files.h"
+
+#include <filesystem>
+#include <vector>
+
+#include "core/error.h"
+
+namespace cablefilm {
+
+void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const CableState& state,
+                         const Eigen::VectorXd& tension) {
+  AtomicFile file(path);
+  std::FILE* f = file.stream();
+  std::fprintf(f, "j,s,x,y,tension\n");
+  for (int j = 0; j <= m.links; ++j) {
+    std::fprintf(f, "%d,%.10g,%.12g,%.12g,", j, m.arc_length[j], state.x(0, j), state.x(1, j));
+    if (j < m.links) std::fprintf(f, "%.10g", tension[j]);
+    std::fprintf(f, "\n");
+  }
+  file.Commit();
+}
+
+void RemoveEarlierResults(const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> stale;
+  for (const char* name :
+       {"equilibrium.csv", "equilibrium_inextensible.csv", "timeseries.csv",
+        "timeseries.partial.csv", "timeseries_inextensible.csv",
+        "timeseries_inextensible.partial.csv", "film.mp4", "film.partial.mp4",
+        "max_tension.png", "max_tension.partial.png", "run_report.toml",
+        "run_report_inextensible.toml", "results.nc", "results.partial.nc",
+        "results_inextensible.nc", "results_inextensible.partial.nc"})
+    stale.push_back(fs::path(out_dir) / name);
+  std::error_code ec;
+  const fs::path frames = fs::path(out_dir) / "frames";
+  if (fs::is_directory(frames, ec))
+    for (const auto& entry : fs::directory_iterator(frames, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("frame_", 0) == 0 && entry.path().extension() == ".png")
+        stale.push_back(entry.path());
+    }
+  for (const fs::path& p : stale) {
+    if (!fs::is_regular_file(fs::symlink_status(p, ec))) continue;  // ours are plain files
+    fs::remove(p, ec);
+    if (ec) throw Error("cannot remove the earlier result " + p.string() + ": " + ec.message());
+  }
+}
+
+const char kTimeseriesHeader[] = "t,x_end,y_end,tension_start,tension_end,tension_max,link_max\n";
+
+void WriteTimeseriesRow(std::FILE* f, const CableModel& m, const CableState& s,
+                        const Eigen::VectorXd& tension) {
+  Eigen::Index link_max = 0;
+  const double t_max = tension.maxCoeff(&link_max);
+  std::fprintf(f, "%.10g,%.12g,%.12g,%.10g,%.10g,%.10g,%d\n", s.t, s.x(0, m.links),
+               s.x(1, m.links), tension[0], tension[m.links - 1], t_max,
+               static_cast<int>(link_max));
+}
+
+TimeseriesWriter::TimeseriesWriter(const std::string& path) : file_(path) {
+  std::fputs(kTimeseriesHeader, file_.stream());
+}
+
+void TimeseriesWriter::Append(const CableModel& m, const CableState& s,
+                              const Eigen::VectorXd& tension) {
+  WriteTimeseriesRow(file_.stream(), m, s, tension);
+}
+
+void TimeseriesWriter::Commit() { file_.Commit(); }
+void TimeseriesWriter::CommitPartial(const std::string& path) { file_.CommitAs(path); }
+
+}  // namespace cablefilm

@@ -1,0 +1,60 @@
+#include "live/live_command.h"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <thread>
+
+#include "live/http_server.h"
+#include "live/live_session.h"
+#include "scene/scene_loader.h"
+
+namespace cablefilm {
+namespace {
+
+std::atomic<int> g_live_signal{0};
+extern "C" void OnLiveSignal(int sig) {
+  if (g_live_signal != 0) std::_Exit(128 + sig);  // a second Ctrl-C: at once
+  g_live_signal = sig;
+}
+
+bool IsLoopback(const std::string& address) {
+  return address.rfind("127.", 0) == 0 || address == "localhost";
+}
+
+}  // namespace
+
+int LiveCommand(const std::string& scene_path, const LiveCommandOptions& o) {
+  const SceneDef scene = LoadScene(scene_path);
+  LiveOptions lo;
+  lo.width = o.width;
+  lo.height = o.height;
+  lo.fps = o.fps;
+  lo.speed = o.speed;
+  lo.colormap = o.colormap;
+  lo.out_dir = o.out_dir.empty() ? "output/" + scene.name : o.out_dir;
+  lo.shader_dir = o.shader_dir;
+  std::signal(SIGINT, OnLiveSignal);
+  std::signal(SIGTERM, OnLiveSignal);
+  std::signal(SIGPIPE, SIG_IGN);  // a viewer that hangs up is an error of its write, not a kill
+  LiveSession session(scene, lo);
+  ServerOptions so;
+  so.bind = o.bind;
+  so.port = o.port;
+  LiveServer server(session, so);
+  if (!IsLoopback(o.bind))
+    std::fprintf(stderr,
+                 "cablefilm: warning: serving on %s: anyone who can reach this address can watch "
+                 "and steer the simulation (there is no authentication)\n",
+                 o.bind.c_str());
+  std::printf("live view at %s\n", server.url().c_str());
+  std::fflush(stdout);
+  while (g_live_signal == 0 && !session.stopped())
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  std::fprintf(stderr, "cablefilm: stopping the live view\n");
+  session.Stop();  // first: viewers' streams end when the session says it stopped
+  return 0;        // the server closes as it goes out of scope
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,157 @@
+#include "view/cable_panel.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "view/cable_style.h"
+#include "view/plot_axes.h"
+
+namespace cablefilm {
+namespace {
+
+Rgba PathColor(const Theme& th) { return Mix(th.accent, th.panel, 0.45f); }
+
+bool Inside(int j, std::size_t n) { return j >= 0 && static_cast<std::size_t>(j) < n; }
+
+}  // namespace
+
+PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::string& main_label,
+                         const std::string& companion_label, const std::string& path_label,
+                         Rgba swatch, const Theme& th, const std::string& reference_label,
+                         bool seabed, bool surface) {
+  PanelHead head;
+  head.title = "Cable shape (to scale)";
+  if (companion)  // the cables' names first, on a row of their own when space is short
+    head.groups.push_back({{LegendEntry::kCable, swatch, main_label},
+                           {LegendEntry::kCompanion, swatch, companion_label}});
+  LegendGroup marks_row;
+  if (!marks.weights.empty()) marks_row.push_back({LegendEntry::kDiamond, th.marker_fill, "weight"});
+  if (!marks.fixed_ends.empty())
+    marks_row.push_back({LegendEntry::kSquare, th.marker_fill, "fixed end"});
+  if (!marks.moving_ends.empty()) {
+    marks_row.push_back({LegendEntry::kRing, th.accent, "moving end"});
+    marks_row.push_back({LegendEntry::kLine, PathColor(th), path_label});
+  }
+  if (!marks.free_ends.empty())
+    marks_row.push_back({LegendEntry::kRing, th.marker_fill, "free end"});
+  marks_row.push_back({LegendEntry::kDash, th.equilibrium, reference_label});
+  if (surface) marks_row.push_back({LegendEntry::kLine, th.water, "water surface"});
+  if (seabed) marks_row.push_back({LegendEntry::kLine, th.seabed, "seabed"});
+  head.groups.push_back(marks_row);
+  return head;
+}
+
+void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& colormap,
+                    const Theme& th) {
+  const float k = p.k();
+  const CableSnapshot& snap = *in.now;
+  const double lo = in.tension_min, hi = in.tension_max;
+  const std::size_t links = snap.tension.size();
+  const bool comp = snap.has_companion();
+  DrawPanelHead(p, in.panel, in.head, in.world.rect.y0, th);
+  DrawAxes(p, in.world, "x [m]", "y [m]", th, 10, 5);
+
+  auto world = [&](double x, double y) { return in.world.ToPixel(x, y); };
+  if (in.seabed_y && std::isfinite(*in.seabed_y)) {  // beneath everything: the ground, its line
+    const PixelRect& r = in.world.rect;
+    const float y = std::clamp(in.world.PixelY(*in.seabed_y), r.y0, r.y1);
+    if (y < r.y1) p.Rect({r.x0, y, r.x1, r.y1}, Mix(th.seabed, th.panel, 0.22f));
+    p.Line({r.x0, y}, {r.x1, y}, 2 * k, th.seabed);
+  }
+  if (in.surface_x && in.surface_y && in.surface_x->size() == in.surface_y->size() &&
+      in.surface_x->size() > 1) {  // the water: a wash from the surface down, then its line
+    const PixelRect& r = in.world.rect;
+    const float bottom =
+        in.seabed_y && std::isfinite(*in.seabed_y)
+            ? std::clamp(in.world.PixelY(*in.seabed_y), r.y0, r.y1)
+            : r.y1;
+    // The samples (x increasing) clipped to the plot's x range, which the layout may widen
+    // beyond the cable's box.
+    const std::vector<double>&sx = *in.surface_x, &sy = *in.surface_y;
+    const double x_lo = std::min(in.world.x_lo, in.world.x_hi);
+    const double x_hi = std::max(in.world.x_lo, in.world.x_hi);
+    auto at = [&](std::size_t i, double x) {  // the segment i-1..i at x
+      const double f = (x - sx[i - 1]) / (sx[i] - sx[i - 1]);
+      return world(x, sy[i - 1] + f * (sy[i] - sy[i - 1]));
+    };
+    std::vector<Vec2f> line;
+    line.reserve(sx.size());
+    for (std::size_t i = 1; i < sx.size(); ++i) {
+      if (!(sx[i] > sx[i - 1]) || sx[i] < x_lo || sx[i - 1] > x_hi) continue;
+      if (line.empty())
+        line.push_back(sx[i - 1] < x_lo ? at(i, x_lo) : world(sx[i - 1], sy[i - 1]));
+      line.push_back(sx[i] > x_hi ? at(i, x_hi) : world(sx[i], sy[i]));
+    }
+    const Rgba wash{th.water.r, th.water.g, th.water.b, 0.10f};
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      const Vec2f a = line[i - 1], b = line[i];
+      if (a.y >= bottom && b.y >= bottom) continue;
+      const Vec2f a1{a.x, std::min(a.y, bottom)}, b1{b.x, std::min(b.y, bottom)};
+      p.Triangle(a1, b1, {b.x, bottom}, wash);
+      p.Triangle(a1, {b.x, bottom}, {a.x, bottom}, wash);
+    }
+    p.Polyline(line, 2 * k, th.water);
+  }
+  if (in.equilibrium && in.equilibrium->x.size() == snap.x.size() &&
+      in.equilibrium->y.size() == snap.x.size()) {
+    std::vector<Vec2f> eq;
+    for (std::size_t j = 0; j < in.equilibrium->x.size(); ++j)
+      eq.push_back(world(in.equilibrium->x[j], in.equilibrium->y[j]));
+    p.Dashed(eq, 1.6f * k, th.equilibrium, 8 * k, 6 * k);
+  }
+  if (in.end_paths)
+    for (const auto& path : *in.end_paths) {
+      std::vector<Vec2f> px;
+      px.reserve(path.size());
+      for (const Vec2f& q : path) px.push_back(world(q.x, q.y));
+      for (std::size_t i = 1; i < px.size(); ++i) p.Line(px[i - 1], px[i], 2 * k, PathColor(th));
+    }
+  const float cw = in.cable_width;
+  if (comp) {  // beneath the main cable; its dotted rim shows where the two coincide
+    std::vector<Vec2f> c;
+    for (std::size_t j = 0; j < snap.cx.size(); ++j) c.push_back(world(snap.cx[j], snap.cy[j]));
+    DrawCompanionRim(p, c, cw + 7 * k, th);
+    for (std::size_t j = 0; j < links && j + 1 < c.size(); ++j)
+      p.Line(c[j], c[j + 1], in.companion_width, colormap.Map(snap.ctension[j], lo, hi));
+  }
+  for (std::size_t j = 0; j < links; ++j)  // a thin rim keeps the dark end of the map visible
+    p.Line(world(snap.x[j], snap.y[j]), world(snap.x[j + 1], snap.y[j + 1]), cw + 2.5f * k,
+           th.halo);
+  for (std::size_t j = 0; j < links; ++j)
+    p.Line(world(snap.x[j], snap.y[j]), world(snap.x[j + 1], snap.y[j + 1]), cw,
+           colormap.Map(snap.tension[j], lo, hi));
+  if (comp)  // the companion's weights, smaller: hidden by the main's where the two coincide
+    for (int w : in.marks.weights) {
+      if (!Inside(w, snap.cx.size())) continue;
+      const Vec2f c = world(snap.cx[w], snap.cy[w]);
+      p.Diamond(c, 8.5f * k, th.companion_rim);
+      p.Diamond(c, 6 * k, th.marker_fill);
+    }
+  for (int w : in.marks.weights) {
+    if (!Inside(w, snap.x.size())) continue;
+    const Vec2f c = world(snap.x[w], snap.y[w]);
+    p.Diamond(c, 11 * k, th.marker_edge);
+    p.Diamond(c, 8 * k, th.marker_fill);
+  }
+  for (int e : in.marks.fixed_ends) {
+    if (!Inside(e, snap.x.size())) continue;
+    const Vec2f c = world(snap.x[e], snap.y[e]);
+    p.Square(c, 8 * k, th.marker_edge);
+    p.Square(c, 5.5f * k, th.marker_fill);
+  }
+  for (int e : in.marks.moving_ends) {
+    if (!Inside(e, snap.x.size())) continue;
+    const Vec2f c = world(snap.x[e], snap.y[e]);
+    p.Disc(c, 9 * k, th.accent);
+    p.Disc(c, 4.5f * k, th.panel);
+  }
+  for (int e : in.marks.free_ends) {
+    if (!Inside(e, snap.x.size())) continue;
+    const Vec2f c = world(snap.x[e], snap.y[e]);
+    p.Disc(c, 8.5f * k, th.marker_edge);
+    p.Disc(c, 7 * k, th.marker_fill);
+    p.Disc(c, 3.5f * k, th.panel);
+  }
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,339 @@
+#include "view/film_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/cancel.h"
+#include "core/error.h"
+#include "view/cable_panel.h"
+#include "view/film_writer.h"
+#include "view/time_trace.h"
+#include "scene/text_escape.h"
+
+namespace cablefilm {
+namespace {
+
+CableSnapshot ToSnapshot(const CableState& s, const Eigen::VectorXd& tension) {
+  CableSnapshot snap;
+  snap.t = s.t;
+  snap.x.resize(s.x.cols());
+  snap.y.resize(s.x.cols());
+  for (Eigen::Index j = 0; j < s.x.cols(); ++j) {
+    snap.x[j] = s.x(0, j);
+    snap.y[j] = s.x(1, j);
+  }
+  snap.tension.assign(tension.data(), tension.data() + tension.size());
+  return snap;
+}
+
+}  // namespace
+
+FilmRequest MakeFilmRequest(const FilmSettings& s, const std::string& out_dir,
+                            const std::string& shader_dir) {
+  FilmRequest r;
+  r.out_dir = out_dir;
+  r.frames = s.frames;
+  r.width = s.look.width;
+  r.height = s.look.height;
+  r.fps = s.look.fps;
+  r.speed = s.look.speed;
+  r.crf = s.look.crf;
+  r.colormap = s.look.colormap;
+  r.tension_min = s.look.tension_min;
+  r.tension_max = s.look.tension_max;
+  r.shader_dir = shader_dir;
+  return r;
+}
+
+void AddWaterSurface(const FilmSpec& spec, const CableModel& model, CableSnapshot* snap) {
+  if (spec.surface)  // a box's width beyond it on either side: the plot may be wider
+    SurfaceProfile(model.wave, snap->t, 2 * spec.x_min - spec.x_max,
+                   2 * spec.x_max - spec.x_min, snap->surface_x, snap->surface_y);
+}
+
+FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
+                      const FilmRequest& request, double duration) {
+  const FilmRun& run = runs.front();
+  const CableModel& m = *run.model;
+  FilmSpec spec;
+  spec.title = scene.title;
+  spec.arc_length.assign(m.arc_length.data(), m.arc_length.data() + m.arc_length.size());
+  spec.section_boundaries = m.section_boundaries;
+  // Each section by its material's name, when every section has one (the model keeps one
+  // boundary between each two sections, so the counts agree).
+  for (const SectionDef& section : scene.sections) {
+    const bool named = section.material >= 0 &&
+                       static_cast<std::size_t>(section.material) < scene.materials.size() &&
+                       !scene.materials[section.material].name.empty();
+    if (!named) {
+      spec.section_names.clear();
+      break;
+    }
+    spec.section_names.push_back(scene.materials[section.material].name);
+  }
+  if (spec.section_names.size() != spec.section_boundaries.size() + 1) spec.section_names.clear();
+  spec.weight_stations = m.weight_stations;
+  // Each end by its role in the scene: fixed, moving (driven) or free.
+  for (int j : {0, m.links}) {
+    if (m.end_motion(j).moves()) spec.moving_ends.push_back(j);
+    if (m.end_motion(j).kind() == EndKind::kFixed) spec.fixed_ends.push_back(j);
+    if (m.end_motion(j).kind() == EndKind::kFree) spec.free_ends.push_back(j);
+  }
+  spec.equilibrium = ToSnapshot(run.initial, run.initial_tension);
+  if (scene.initial == InitialStateKind::kStraight) spec.reference_label = kStraightStateLabel;
+  spec.duration = duration;
+  double t_lo = run.extent.tension_min, t_hi = run.extent.tension_max;
+  Eigen::Vector2d lo = run.extent.box_min, hi = run.extent.box_max;
+  for (const FilmRun& r : runs) {
+    t_lo = std::min(t_lo, r.extent.tension_min);
+    t_hi = std::max(t_hi, r.extent.tension_max);
+    lo = lo.cwiseMin(r.extent.box_min);
+    hi = hi.cwiseMax(r.extent.box_max);
+  }
+  // Colour range from zero (slack) to a little above the largest tension of every run.
+  spec.tension_min = request.tension_min >= 0 ? request.tension_min : std::min(0.0, t_lo);
+  spec.tension_max = request.tension_max >= 0 ? request.tension_max : 1.05 * std::max(t_hi, 1.0);
+  spec.x_min = lo.x();
+  spec.x_max = hi.x();
+  spec.y_min = lo.y();
+  spec.y_max = hi.y();
+  if (m.seabed.present) {  // the bed in view, with a strip of ground below it
+    spec.seabed = true;
+    spec.seabed_y = m.seabed.y;
+    spec.y_min = std::min(spec.y_min, m.seabed.y - SeabedMargin(spec.y_max - spec.y_min));
+  }
+  if (m.has_waves()) {  // the surface in view: up to its crests, with a strip of sky
+    spec.surface = true;
+    const double crest = m.wave.spec.surface_y + m.wave.amplitude;
+    spec.y_max = std::max(spec.y_max, crest + SeabedMargin(crest - spec.y_min));
+  }
+  return spec;
+}
+
+namespace {
+
+// The largest finite value of a series and its time (NaN when none).
+void FindPeak(const std::vector<double>& t, const std::vector<double>& v, PictureReport* r) {
+  for (std::size_t i = 0; i < t.size() && i < v.size(); ++i)
+    if (std::isfinite(v[i]) && !(v[i] <= r->peak)) {
+      r->peak = v[i];
+      r->peak_t = t[i];
+    }
+}
+
+}  // namespace
+
+PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<FilmRun>& runs,
+                                    const std::string& out_dir, const std::string& shader_dir,
+                                    bool complete) {
+  const std::string name = complete ? "max_tension.png" : "max_tension.partial.png";
+  // The time axis spans the rows of every run (all runs have the same output times).
+  double t_end = 0;
+  for (const FilmRun& run : runs) {
+    MaxTensionLog::Cursor c(*run.rows);
+    double t, v;
+    while (c.Next(std::numeric_limits<double>::infinity(), &t, &v)) t_end = std::max(t_end, t);
+  }
+  std::vector<MaxTensionSeries> series;
+  PictureReport report;
+  std::string peak_label;
+  for (const FilmRun& run : runs) {
+    ThinnedTrace trace(1, t_end > 0 ? t_end / 8192 : 0);
+    MaxTensionLog::Cursor c(*run.rows);
+    double t, v;
+    while (c.Next(std::numeric_limits<double>::infinity(), &t, &v)) trace.Add(t, v);
+    series.push_back({run.label, trace.times(), trace.values()});
+    const double before = report.peak;
+    FindPeak(trace.times(), trace.values(), &report);
+    if (!(report.peak == before)) peak_label = run.label;
+  }
+  std::string title = "Maximum tension along the cable: " + scene.title;
+  if (!complete) title += " (cut short)";
+  try {
+    WriteMaxTensionPng(out_dir + "/" + name, series, 1600, 900, title, shader_dir);
+  } catch (const Error& e) {
+    throw Error(name + " could not be drawn with the off-screen (OSMesa) renderer: " + e.what());
+  }
+  std::printf("wrote %s/%s (maximum tension of every output row: peak %.6g N at t = %.4g s%s)\n",
+              EscapeText(out_dir).c_str(), name.c_str(), report.peak, report.peak_t,
+              runs.size() > 1 ? (", " + peak_label).c_str() : "");
+  return report;
+}
+
+bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
+                const FilmRequest& request, const std::atomic<int>& stop, PictureReport* report) {
+  const double frame_interval = request.speed / request.fps;  // simulated seconds per frame
+  const FilmRun& main = runs.front();
+  const double run_end = main.grid.outputs * main.grid.interval;
+  // Frames at k x frame_interval, and one at the run's end when it falls between two (so the
+  // film shows every row: its time plot ends where the run does).
+  const long whole = static_cast<long>(std::floor(run_end / frame_interval + 1e-9));
+  const long last = whole + (run_end - whole * frame_interval > 1e-9 * frame_interval ? 1 : 0);
+  auto frame_time = [&](long k) { return k <= whole ? k * frame_interval : run_end; };
+  // Every run steps through the same frame times (in lockstep, so that a second run can be
+  // drawn over the first). When a frame is a whole number of output intervals (the default: a
+  // row a frame), each run repeats its first pass step for step (deterministic), so a frame's
+  // cable is exactly the state of its row; otherwise each steps to the frame times with its own
+  // scheme's step rule.
+  const double rows_per_frame = std::round(frame_interval / main.grid.interval);
+  const bool on_rows = rows_per_frame >= 1 &&
+                       std::fabs(rows_per_frame * main.grid.interval - frame_interval) <=
+                           1e-9 * frame_interval;
+  struct Stepper {
+    TimeGrid grid;
+    CableState state;
+    std::unique_ptr<Integrator> integrator;
+    MaxTensionLog::Cursor rows;
+    long output = 0;  // on_rows: the output rows reached
+    Eigen::VectorXd row_min, row_max;  // on_rows: each link's envelope over the rows since the
+                                       // last frame [N] (empty: none yet)
+  };
+  std::vector<Stepper> steppers;
+  for (const FilmRun& run : runs) {
+    Stepper st{run.grid, run.initial, nullptr, MaxTensionLog::Cursor(*run.rows), 0, {}, {}};
+    if (!on_rows) {
+      st.grid.steps_per_output =
+          std::max(1, static_cast<int>(std::ceil(frame_interval / run.grid.dt - 1e-9)));
+      st.grid.interval = frame_interval;
+      st.grid.dt = frame_interval / st.grid.steps_per_output;
+      st.grid.outputs = whole;
+    }
+    st.integrator = MakeIntegrator(*run.model, st.grid);
+    st.integrator->Initialize(*run.model, st.state);
+    steppers.push_back(std::move(st));
+  }
+  // Steps run r to frame k (k >= 1). Throws BlowUpError, CancelledError.
+  auto advance = [&](std::size_t r, long k) {
+    Stepper& st = steppers[r];
+    const CableModel& m = *runs[r].model;
+    if (on_rows) {  // as Simulate does, output by output
+      const long target = k <= whole ? k * static_cast<long>(rows_per_frame) : st.grid.outputs;
+      while (st.output < target) {
+        for (int i = 0; i < st.grid.steps_per_output; ++i) {
+          ThrowIfCancelled(&stop, "the film");
+          st.integrator->Step(m, st.state, st.grid.dt);
+        }
+        st.state.t = ++st.output * st.grid.interval;
+        const Eigen::VectorXd& T = st.integrator->tensions();
+        if (st.row_min.size() == 0) {
+          st.row_min = st.row_max = T;
+        } else {
+          st.row_min = st.row_min.cwiseMin(T);
+          st.row_max = st.row_max.cwiseMax(T);
+        }
+      }
+      return;
+    }
+    // The step rule of a whole frame, or of the shorter last one.
+    int steps = st.grid.steps_per_output;
+    double dt = st.grid.dt;
+    if (k > whole) {
+      const double span = frame_time(k) - frame_time(k - 1);
+      steps = std::max(1, static_cast<int>(std::ceil(span / runs[r].grid.dt - 1e-9)));
+      dt = span / steps;
+    }
+    for (int i = 0; i < steps; ++i) {
+      ThrowIfCancelled(&stop, "the film");
+      st.integrator->Step(m, st.state, dt);
+    }
+    st.state.t = frame_time(k);
+  };
+  FilmOptions o;
+  o.width = request.width;
+  o.height = request.height;
+  o.fps = request.fps;
+  o.crf = request.crf;
+  o.colormap = request.colormap;
+  o.write_frames = request.frames;
+  o.shader_dir = request.shader_dir;
+  o.write_max_tension = false;  // max_tension.png comes from the rows (WriteMaxTensionFigure)
+  o.series_label = main.label;
+  FilmSpec spec = MakeFilmSpec(scene, runs, request, frame_time(last));
+  spec.label = main.label;
+  if (runs.size() > 1) {
+    spec.companion_label = runs[1].label;
+    spec.companion_equilibrium = ToSnapshot(runs[1].initial, runs[1].initial_tension);
+  }
+  FilmWriter writer(o, spec, request.out_dir, static_cast<int>(last + 1));
+  bool finished = true;
+  std::string failure;  // a blow-up in this pass: the film is then partial too
+  for (long k = 0; k <= last && failure.empty(); ++k) {
+    if (stop != 0) {
+      finished = false;
+      break;
+    }
+    for (size_t r = 0; k > 0 && r < steppers.size() && failure.empty(); ++r) {
+      try {
+        advance(r, k);
+      } catch (const CancelledError&) {
+        finished = false;
+        break;
+      } catch (const BlowUpError& e) {
+        failure = std::string(e.what()) + " (" + runs[r].label + " run)";
+        break;
+      }
+    }
+    if (!finished || !failure.empty()) break;
+    CableSnapshot snap = ToSnapshot(steppers[0].state, steppers[0].integrator->tensions());
+    AddWaterSurface(spec, *main.model, &snap);
+    // The output rows up to this frame (all that are left at the last frame).
+    const double until = k == last ? std::numeric_limits<double>::infinity()
+                                   : steppers[0].state.t + 1e-9 * frame_interval;
+    double t, v;
+    while (steppers[0].rows.Next(until, &t, &v)) {
+      snap.row_t.push_back(t);
+      snap.row_max.push_back(v);
+    }
+    if (steppers[0].row_min.size() == static_cast<Eigen::Index>(snap.tension.size())) {
+      const Eigen::VectorXd& lo = steppers[0].row_min;
+      const Eigen::VectorXd& hi = steppers[0].row_max;
+      snap.row_link_min.assign(lo.data(), lo.data() + lo.size());
+      snap.row_link_max.assign(hi.data(), hi.data() + hi.size());
+      steppers[0].row_min.resize(0);
+      steppers[0].row_max.resize(0);
+    }
+    if (steppers.size() > 1) {
+      const CableSnapshot other =
+          ToSnapshot(steppers[1].state, steppers[1].integrator->tensions());
+      snap.cx = other.x;
+      snap.cy = other.y;
+      snap.ctension = other.tension;
+      for (std::size_t i = 0; i < snap.row_t.size(); ++i) {
+        if (!steppers[1].rows.Next(until, &t, &v) || t != snap.row_t[i])
+          throw Error("film: the " + runs[1].label + " run's output rows do not line up with the " +
+                      main.label + " run's at t = " + std::to_string(snap.row_t[i]) + " s");
+        snap.row_cmax.push_back(v);
+      }
+    }
+    writer.Push(std::move(snap));
+  }
+  const bool complete = finished && failure.empty();
+  if (complete) {
+    writer.Finish();
+    if (request.say_written)
+      std::printf("wrote %s/film.mp4%s\n", request.out_dir.c_str(),
+                  request.frames ? " and frames/" : "");
+  } else {
+    writer.FinishPartial();  // plays up to the last frame drawn
+    if (request.say_written)
+      std::printf("wrote %s/film.partial.mp4 (%s at t = %.4g s)\n", request.out_dir.c_str(),
+                  failure.empty() ? "interrupted" : "the film pass failed", steppers[0].state.t);
+  }
+  if (report) {
+    *report = PictureReport{};
+    const std::vector<MaxTensionSeries> shown = writer.all_max_tension_series();
+    FindPeak(shown[0].t, shown[0].tension, report);
+    report->frames = writer.frames_done();
+    report->last_frame_max = steppers[0].integrator->tensions().maxCoeff();
+    report->last_frame_t = steppers[0].state.t;
+    if (!shown[0].tension.empty()) report->last_row_max = shown[0].tension.back();
+  }
+  if (!failure.empty())
+    throw Error("the film pass failed: " + failure + "; the film up to then is " +
+                request.out_dir + "/film.partial.mp4");
+  return finished;
+}
+
+}  // namespace cablefilm

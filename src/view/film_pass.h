@@ -1,0 +1,92 @@
+#pragma once
+// The pictures of a run. max_tension.png (the paper's Figure 1) is drawn from every output row
+// of the simulation (MaxTensionLog: the tension_max column of timeseries.csv), for every run,
+// film or not. The film is a second, deterministic pass over the simulation that pushes a
+// snapshot every film frame to the renderer, so the colour range and the world box found by the
+// first pass hold for every frame while memory stays bounded whatever the film's length; each
+// snapshot carries the output rows since the previous frame, so the film's time plot shows
+// every row too: the run's reported peak, the CSV, the figure and the film agree on the peak.
+#include <Eigen/Core>
+#include <atomic>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "run/max_tension_log.h"
+#include "run/run_extent.h"
+#include "run/simulation_run.h"
+#include "scene/film_settings.h"
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+struct FilmRequest {
+  std::string out_dir;
+  bool frames = false;          // frames/frame_000000.png ...
+  int width = 1920, height = 1080;
+  double fps = 30, speed = 1;   // film frames per second; simulated seconds per film second
+  int crf = 20;
+  std::string colormap = "viridis";
+  double tension_min = -1, tension_max = -1;  // [N]; negative: from the runs
+  std::string shader_dir;       // empty: CABLEFILM_SHADERS or the built-in shaders
+  bool say_written = true;      // print "wrote DIR/film.mp4" (the Python module names its own file)
+};
+
+// The film of `settings` (scene/film_settings.h) into `out_dir`.
+FilmRequest MakeFilmRequest(const FilmSettings& settings, const std::string& out_dir,
+                            const std::string& shader_dir);
+
+// A model already simulated once (its first pass gave the extent and the rows).
+struct FilmRun {
+  std::string label;            // "elastic", "inextensible"
+  const CableModel* model;
+  TimeGrid grid;
+  CableState initial;
+  Eigen::VectorXd initial_tension;  // [N]
+  RunExtent extent;
+  const MaxTensionLog* rows;    // the largest link tension of every output row
+};
+
+// What a picture shows: the largest value drawn [N] and its time [s] (NaN: nothing drawn).
+struct PictureReport {
+  double peak = std::numeric_limits<double>::quiet_NaN();
+  double peak_t = std::numeric_limits<double>::quiet_NaN();
+  long frames = 0;              // the film's frames
+  double last_frame_max = std::numeric_limits<double>::quiet_NaN();  // its cable's largest
+                                // tension at the last frame [N] (the "now" of the plot)
+  double last_frame_t = std::numeric_limits<double>::quiet_NaN();    // that frame's time [s]
+  double last_row_max = std::numeric_limits<double>::quiet_NaN();    // the time plot's newest
+                                // point: the last row's tension_max [N]
+};
+
+struct FilmSpec;       // view/frame.h
+struct CableSnapshot;  // view/frame.h
+
+// What stays fixed over the film of `runs` lasting `duration` simulated seconds (the first
+// run's cable, ends, sections, initial state; the colour range and the world box of every run,
+// or the request's range). Used by RenderFilm, and to draw a frame on its own.
+FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
+                      const FilmRequest& request, double duration);
+
+// The water surface at the snapshot's time across the film's width, when the spec has waves:
+// what every frame of the film carries.
+void AddWaterSurface(const FilmSpec& spec, const CableModel& model, CableSnapshot* snap);
+
+// <out_dir>/max_tension.png, or max_tension.partial.png when the rows are those of a run cut
+// short (`complete` false): every run's rows on one pair of axes, thinned to the extremes of
+// each 1/8192 of the time axis (ThinnedTrace), so that the largest value drawn is the rows'
+// peak. Only `label` and `rows` of the runs are used. Throws Error when it cannot be drawn
+// (e.g. no off-screen OSMesa context), saying so.
+PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<FilmRun>& runs,
+                                    const std::string& out_dir, const std::string& shader_dir,
+                                    bool complete);
+
+// Renders film.mp4 of the first run, with the second (if any) drawn over it on the same colour
+// range. Frames are at k x speed / fps and, when the run's end is not on one, at its end.
+// Returns false if `stop` was raised (the film is then closed at the last frame drawn, as
+// film.partial.mp4). `report` (optional): the film's time plot at its last frame. Throws Error.
+bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
+                const FilmRequest& request, const std::atomic<int>& stop,
+                PictureReport* report = nullptr);
+
+}  // namespace cablefilm

@@ -1,0 +1,21 @@
+// Built when CABLEFILM_RENDER is OFF: the result files are written, the pictures are not.
+#include <cstdio>
+
+#include "view/film_pass.h"
+
+namespace cablefilm {
+
+PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<FilmRun>&,
+                                    const std::string&, const std::string&, bool complete) {
+  std::printf("%s: not drawn (this build has no renderer: CABLEFILM_RENDER=OFF)\n",
+              complete ? "max_tension.png" : "max_tension.partial.png");
+  return {};
+}
+
+bool RenderFilm(const SceneDef&, const std::vector<FilmRun>&, const FilmRequest&,
+                const std::atomic<int>&, PictureReport*) {
+  std::printf("film: not rendered (this build has no renderer: CABLEFILM_RENDER=OFF)\n");
+  return true;
+}
+
+}  // namespace cablefilm

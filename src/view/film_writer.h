@@ -1,0 +1,77 @@
+#pragma once
+// The film of a run: snapshots pushed by the simulation are drawn and encoded on a thread of
+// their own, fed by a bounded queue (memory bounded whatever the film's length), into
+// <out_dir>/film.mp4, optionally <out_dir>/frames/frame_000000.png ..., and at the end
+// <out_dir>/max_tension.png. A film cut short (FinishPartial, or destroyed unfinished) stays as
+// film.partial.mp4, which plays up to its last frame; no incomplete film takes the final name.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "view/frame.h"
+#include "view/frame_builder.h"
+
+namespace cablefilm {
+
+struct FilmOptions {
+  int width = 1920, height = 1080;  // even
+  double fps = 30;                  // frames per second of film
+  int crf = 20;                     // x264 quality (lower = better, bigger)
+  std::string preset = "veryfast";  // x264 speed preset
+  std::string colormap = "viridis"; // viridis, cividis, magma, inferno, plasma
+  bool write_film = true;           // film.mp4
+  bool write_frames = false;        // frames/frame_000000.png ...
+  std::string shader_dir;           // empty = $CABLEFILM_SHADERS, else the compiled-in dir
+  std::string font_path;            // empty = DejaVu Sans through fontconfig
+  // Added fields (defaults keep the behaviour above):
+  bool write_max_tension = true;    // max_tension.png at Finish()
+  std::string series_label = "elastic";  // legend of this run in max_tension.png
+  int still_width = 1600, still_height = 900;  // size of max_tension.png
+  int queue_capacity = 4;           // snapshots waiting to be drawn (Push blocks beyond)
+  bool progress = true;             // progress line on stderr (only when it is a terminal)
+  int png_compression = 1;          // zlib level of the frame PNGs (speed over size)
+};
+
+class FilmWriter {
+ public:
+  // Checks the options and the spec, creates out_dir (and frames/), starts the drawing thread
+  // and waits until its context, shaders, font and encoder are ready: a bad option fails here.
+  // `total_frames` is only for the progress line (0 = unknown).
+  FilmWriter(const FilmOptions& options, const FilmSpec& spec, const std::string& out_dir,
+             int total_frames);
+  ~FilmWriter();  // if not finished: FinishPartial(), an error then printed on stderr
+  FilmWriter(const FilmWriter&) = delete;
+  FilmWriter& operator=(const FilmWriter&) = delete;
+
+  // Queues a snapshot (times increasing); blocks while the queue is full. Rethrows an error of
+  // the drawing thread (then nothing more is drawn).
+  void Push(CableSnapshot snapshot);
+  // Draws what is queued, flushes and closes film.mp4, writes max_tension.png. Idempotent;
+  // rethrows an error of the drawing thread (the film is then not written).
+  void Finish();
+  // For a film cut short (Ctrl-C, a failure): draws what is queued and closes the film under
+  // its partial name, film.partial.mp4, where it plays; max_tension.partial.png likewise.
+  void FinishPartial();
+
+  long frames_done() const;  // frames drawn so far
+  // After Finish(): the film's time plot as its last frame shows it (FilmHistory: every output
+  // row the snapshots carried, else one sample a frame), labelled options.series_label.
+  MaxTensionSeries max_tension_series() const;
+  // After Finish(): the main cable's series (labelled spec.label, else options.series_label)
+  // followed, when the spec names a companion cable, by the companion's (labelled
+  // spec.companion_label). These are also the curves of the max_tension.png it writes.
+  std::vector<MaxTensionSeries> all_max_tension_series() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The paper's Figure 1 as a still: every series on one pair of axes (light theme, for print).
+// Renders in its own off-screen context; written whole or not at all. Throws Error.
+void WriteMaxTensionPng(const std::string& path, const std::vector<MaxTensionSeries>& series,
+                        int width = 1600, int height = 900,
+                        const std::string& title = "Maximum tension along the cable",
+                        const std::string& shader_dir = "", const std::string& font_path = "");
+
+}  // namespace cablefilm

@@ -1,0 +1,46 @@
+#pragma once
+// Where the header and the four panels of a frame go (the film's and the live view's alike),
+// with the data-to-pixel maps of their plots. The cable is drawn to scale (equal x and y), so
+// the cable panel is given the width its box needs: when that leaves room, the cable sits at
+// the left of the top row beside the tension along the cable, above a full-width time plot;
+// when the cable is too wide for that, it takes the whole top row above the two plots.
+#include <string>
+
+#include "view/legend.h"
+#include "view/plot_layout.h"
+
+namespace cablefilm {
+
+struct FrameLayout {
+  int width = 0, height = 0;
+  float scale = 1;         // size of a "design pixel" of the 1920x1080 layout [px]
+  // true: cable | tension along the cable on top, tension against time below (full width);
+  // false: cable on top (full width), tension along the cable | tension against time below.
+  bool side_by_side = false;
+  PixelRect cable_panel, tension_panel, max_panel;  // max_panel: tension against time
+  PlotMapping cable;       // world [m] -> pixels, equal scale in x and y
+  PlotMapping tension;     // unstretched arc length [m], tension [kN]
+  PlotMapping max_tension; // time [s], tension [kN]
+  PixelRect colorbar;      // the colour bar: bottom = tension_min, top = tension_max
+  float colorbar_caption_x = 0;  // where the colour bar's vertical caption goes [px]
+  float cable_width = 6;   // [px]
+  float companion_width = 3.6f;  // the companion cable's coloured line (drawn under the main) [px]
+  // A plot's head (title and legend) takes a second row: its plot starts lower.
+  bool legend_rows = false;
+};
+
+struct LayoutRequest {
+  double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // world box the cable panel shows [m]
+  // Width / height of the world box the cable panel's width is fitted to; 0 = the box's own.
+  // (A live view whose box follows the cable can pass a steady value so panels stay put.)
+  double fit_aspect = 0;
+  double arc_length = 1;                   // of the whole cable [m], > 0
+  double t_lo = 0, t_hi = 1;               // time axis [s], increasing
+  double tension_min = 0, tension_max = 1; // [N], increasing; the plots widen it to nice ticks
+  PanelHead cable_head, tension_head, time_head;  // titles and legends (sizes matter only)
+};
+
+// Throws Error on a frame smaller than 16x16 or an invalid range.
+FrameLayout LayoutFrame(const LayoutRequest& request, int width, int height);
+
+}  // namespace cablefilm

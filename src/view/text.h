@@ -1,0 +1,63 @@
+#pragma once
+// Text with FreeType: fonts found through fontconfig (DejaVu Sans by default) or given by path,
+// glyphs rasterised on demand (anti-aliased, 8-bit coverage) into one CPU-side atlas that the
+// renderer uploads as a texture, and the layout of a TextItem into positioned glyph quads.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "view/frame.h"
+
+namespace cablefilm {
+
+// The font file fontconfig picks for a pattern such as "DejaVu Sans:style=Book". Throws Error.
+std::string FindFontFile(const std::string& pattern);
+std::u32string DecodeUtf8(const std::string& text);  // invalid bytes become U+FFFD
+
+struct GlyphQuad {
+  Vec2f corner[4];  // screen positions [px]: top left, top right, bottom right, bottom left
+  Vec2f uv0, uv1;   // atlas texture coordinates of the bitmap's top left and bottom right
+};
+
+class FontAtlas {
+ public:
+  // `font_path` empty: DejaVu Sans (Book and Bold) through fontconfig; else that file for both.
+  explicit FontAtlas(const std::string& font_path = "", int atlas_size = 1024);
+  ~FontAtlas();
+  FontAtlas(const FontAtlas&) = delete;
+  FontAtlas& operator=(const FontAtlas&) = delete;
+
+  // Appends the quads of `item`, rasterising any glyph not yet in the atlas.
+  void Layout(const TextItem& item, std::vector<GlyphQuad>* quads);
+  // Advance width of the text at a pixel size [px].
+  float MeasureWidth(const std::string& text, float size, bool bold = false);
+
+  int atlas_size() const { return size_; }
+  const std::vector<std::uint8_t>& pixels() const { return pixels_; }  // size x size, R8
+  bool dirty() const { return dirty_; }
+  void ClearDirty() { dirty_ = false; }
+  const std::string& regular_path() const { return paths_[0]; }
+
+ private:
+  struct Glyph {
+    int x = 0, y = 0, w = 0, h = 0;  // place in the atlas
+    int left = 0, top = 0;           // bitmap offset from the pen, FreeType's bitmap_left/top
+    float advance = 0;               // [px]
+  };
+  struct Face;
+  const Glyph& GetGlyph(char32_t code, int pixel_size, bool bold);
+  Face& SizedFace(int pixel_size, bool bold);
+
+  int size_;
+  std::vector<std::uint8_t> pixels_;
+  bool dirty_ = true;
+  int shelf_x_ = 1, shelf_y_ = 1, shelf_h_ = 0;
+  std::string paths_[2];
+  void* library_ = nullptr;  // FT_Library
+  std::unique_ptr<Face> faces_[2];
+  std::unordered_map<std::uint64_t, Glyph> glyphs_;
+};
+
+}  // namespace cablefilm

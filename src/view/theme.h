@@ -1,0 +1,27 @@
+#pragma once
+// Colours of the frames: the film and the live view use the dark theme, the still of the
+// maximum tension the light one (print). Plus the two colour helpers the panels use.
+#include <cstdint>
+
+#include "view/frame.h"
+
+namespace cablefilm {
+
+struct Theme {
+  Rgba background, panel, grid, axis, text, text_dim, current, equilibrium, envelope, accent,
+      halo, marker_fill, marker_edge;
+  Rgba companion, companion_rim;  // companion cable: its curves; the dotted rim of its shape
+  Rgba event;  // control changes marked on the live view's time plot (apart from the accent)
+  Rgba water;   // the water surface's line (the water below it a faint wash)
+  Rgba seabed;  // the seabed's line in the cable panel (the ground below it a faint mix)
+  static Theme Dark();
+  static Theme Light();
+};
+
+// 0xRRGGBB with alpha a.
+Rgba Hex(std::uint32_t rgb, float a = 1);
+// Opaque blend of a over b (t = weight of a): faint lines stay opaque, so joints of a
+// polyline do not double-blend.
+Rgba Mix(Rgba a, Rgba b, float t);
+
+}  // namespace cablefilm

@@ -1,0 +1,137 @@
+#include "view/time_panel.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "view/plot_axes.h"
+
+namespace cablefilm {
+namespace {
+
+// The first n characters (not bytes) of a UTF-8 string, with an ellipsis when cut.
+std::string Shorten(const std::string& s, std::size_t n) {
+  std::size_t chars = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if ((static_cast<unsigned char>(s[i]) & 0xC0) == 0x80) continue;  // inside a character
+    if (chars == n) return s.substr(0, i) + "\u2026";  // character n + 1 starts here
+    ++chars;
+  }
+  return s;
+}
+
+}  // namespace
+
+PanelHead TimePanelHead(bool companion, bool note_row, const std::string& main_label,
+                        const std::string& companion_label, const Theme& th) {
+  PanelHead head;
+  head.title = "Maximum tension along the cable";
+  if (companion) {
+    head.groups.push_back({{LegendEntry::kLine, th.accent, main_label},
+                           {LegendEntry::kLine, th.companion, companion_label}});
+    head.note_row = note_row;
+  }
+  return head;
+}
+
+void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
+  const float k = p.k();
+  const PlotMapping& mm = in.plot;
+  constexpr double kN = kNewtonsPerKilonewton;
+  const std::vector<double>& ts = *in.times;
+  const std::vector<double>& vs = *in.max_tension;
+  if (ts.size() != vs.size())
+    throw Error("time panel: " + std::to_string(ts.size()) + " times and " +
+                std::to_string(vs.size()) + " maximum tensions");
+  const std::vector<LegendGroup> rows = DrawPanelHead(p, in.panel, in.head, mm.rect.y0, th);
+  if (!in.note.empty()) {
+    const bool own_row = in.head.note_row && rows.size() >= 2;
+    p.Text(in.note,
+           {in.panel.x1 - 26 * k,
+            in.panel.y0 + HeadBaseline(own_row ? static_cast<int>(rows.size()) - 1 : 0, k)},
+           (own_row ? 15 : 16) * k, th.text_dim, HAlign::kRight);
+  }
+  DrawAxes(p, mm, "time [s]", "tension [kN]", th, 8, 6);
+
+  // Markers: lines first, under the traces; labels newest first, each kept only when clear
+  // of the last one kept, so that a burst of changes stays readable.
+  struct Label {
+    std::string text;
+    Vec2f pos;
+    bool left;  // of its line (near the plot's right edge)
+  };
+  std::vector<Label> labels;
+  const float label_font = 13 * k;
+  if (in.markers) {
+    std::vector<const TimeMarker*> inside;
+    for (const TimeMarker& m : *in.markers)
+      if (m.t >= std::min(mm.x_lo, mm.x_hi) && m.t <= std::max(mm.x_lo, mm.x_hi)) inside.push_back(&m);
+    std::stable_sort(inside.begin(), inside.end(),
+                     [](const TimeMarker* a, const TimeMarker* b) { return a->t > b->t; });
+    float last = INFINITY;  // x of the last label kept [px]
+    for (const TimeMarker* m : inside) {
+      const float x = mm.PixelX(m->t);
+      p.Dashed({{x, mm.rect.y0}, {x, mm.rect.y1}}, 1.6f * k, th.event, 6 * k, 4 * k);
+      if (m->label.empty() || std::fabs(last - x) < label_font + 6 * k) continue;
+      last = x;
+      const bool left = x > mm.rect.x1 - label_font - 8 * k;
+      labels.push_back({Shorten(m->label, kMaxMarkerLabel),
+                        {left ? x - 4 * k : x + 4 * k, mm.rect.y0 + 6 * k}, left});
+    }
+  }
+  const std::vector<Vec2f> trace = DecimatedTrace(mm, ts, vs, kN);
+  const bool companion = in.companion_max && in.companion_max->size() == ts.size();
+  const std::vector<Vec2f> companion_trace =
+      companion ? DecimatedTrace(mm, ts, *in.companion_max, kN) : std::vector<Vec2f>{};
+  float veil_y0 = 0, veil_y1 = 0;  // the equilibrium label's veil, if it needs one [px]
+  PixelRect eq_box{};
+  if (std::isfinite(in.equilibrium_max)) {
+    // Labelled above the line at one end; below it when a trace crosses the place above, and
+    // on a veil when a trace crosses both.
+    const float y = PlotPoint(mm, mm.x_lo, in.equilibrium_max / kN).y;
+    p.Dashed({{mm.rect.x0, y}, {mm.rect.x1, y}}, 1.6f * k, th.equilibrium, 8 * k, 6 * k);
+    const float font = 14 * k, w = EstimateTextWidth(in.equilibrium_label, font);
+    const float x0 = in.equilibrium_label_left ? mm.rect.x0 + 6 * k : mm.rect.x1 - 6 * k - w;
+    const PixelRect above{x0, y - 6 * k - std::max(kMinFontSize, font), x0 + w, y - 3 * k};
+    const PixelRect below{x0, y + 3 * k, x0 + w, y + 6 * k + std::max(kMinFontSize, font)};
+    auto crossed = [&](const PixelRect& box) {
+      for (const auto* t : {&trace, &companion_trace})
+        for (std::size_t i = 1; i < t->size(); ++i) {
+          const Vec2f a = (*t)[i - 1], b = (*t)[i];
+          if (std::max(a.x, b.x) < box.x0 || std::min(a.x, b.x) > box.x1) continue;
+          if (std::max(a.y, b.y) >= box.y0 && std::min(a.y, b.y) <= box.y1) return true;
+        }
+      return false;
+    };
+    const bool under = crossed(above) && !crossed(below);
+    eq_box = under ? below : above;
+    if (crossed(eq_box)) {
+      veil_y0 = eq_box.y0;
+      veil_y1 = eq_box.y1;
+    }
+    p.Text(in.equilibrium_label, {x0, under ? y + 6 * k : y - 6 * k}, font, th.equilibrium, HAlign::kLeft,
+           under ? VAlign::kTop : VAlign::kBaseline);
+  }
+  p.Polyline(trace, 2.4f * k, th.accent);
+  if (!ts.empty() && std::isfinite(vs.back()))
+    p.Disc(PlotPoint(mm, ts.back(), vs.back() / kN), 5 * k, th.accent);
+  if (companion) {  // thinner, on top, like the tension curves
+    const std::vector<double>& cs = *in.companion_max;
+    p.Polyline(companion_trace, 1.8f * k, th.companion);
+    if (!ts.empty() && std::isfinite(cs.back()))
+      p.Disc(PlotPoint(mm, ts.back(), cs.back() / kN), 4 * k, th.companion);
+  }
+  const Rgba veil{th.panel.r, th.panel.g, th.panel.b, 0.8f};
+  if (veil_y1 > veil_y0) p.Rect({eq_box.x0 - 2 * k, veil_y0, eq_box.x1 + 2 * k, veil_y1}, veil);
+  // Each label reads bottom to top, its end near the plot's top, on a veil of the panel's
+  // colour that keeps it readable where the trace crosses it.
+  for (const Label& l : labels) {
+    const float across = std::max(kMinFontSize, label_font), along = EstimateTextWidth(l.text, label_font);
+    const float x0 = l.left ? l.pos.x - across : l.pos.x - 1 * k;
+    p.Rect({x0, l.pos.y - 2 * k, x0 + across + 1 * k, l.pos.y + along + 2 * k}, veil);
+    p.Text(l.text, l.pos, label_font, th.event, HAlign::kRight,
+           l.left ? VAlign::kBottom : VAlign::kTop, true);
+  }
+}
+
+}  // namespace cablefilm
