@@ -4,7 +4,11 @@
 #   include/cablefilm/core/*.h            its headers
 #   lib/cmake/cablefilm/                  cablefilmConfig.cmake, ...ConfigVersion.cmake, targets
 #   lib/python3.X/dist-packages/cablefilm.*.so   the Python module (when built)
+#   share/cablefilm/scenes/               the example scenes (scenes/*.toml) and the motion
+#                                         tables they read (scenes/*.csv)
+#   share/doc/cablefilm/                  the user's manual (docs/: *.md, recipes/)
 include(CMakePackageConfigHelpers)
+include(GNUInstallDirs)  # CMAKE_INSTALL_DATADIR (share), CMAKE_INSTALL_DOCDIR (share/doc/cablefilm)
 
 set(CABLEFILM_CMAKE_DIR lib/cmake/cablefilm)
 install(TARGETS cablefilm RUNTIME DESTINATION bin)
@@ -20,6 +24,13 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/core/ DESTINATION include/cablefilm/
         FILES_MATCHING PATTERN "*.h")
 install(FILES ${PROJECT_BINARY_DIR}/src/generated/core/version.h DESTINATION include/cablefilm/core)
 install(EXPORT cablefilmTargets NAMESPACE cablefilm:: DESTINATION ${CABLEFILM_CMAKE_DIR})
+# The example scenes beside the tables they name (a table's `file` is relative to its scene),
+# so that `cablefilm run <prefix>/share/cablefilm/scenes/ship_table.toml` works as installed.
+file(GLOB CABLEFILM_SCENE_FILES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/scenes/*.toml
+     ${PROJECT_SOURCE_DIR}/scenes/*.csv)
+install(FILES ${CABLEFILM_SCENE_FILES} DESTINATION ${CMAKE_INSTALL_DATADIR}/cablefilm/scenes)
+# The manual: docs/README.md is its index; docs/recipes/ holds the recipes' scenes and table.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/cablefilmConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/cablefilmConfig.cmake
                               INSTALL_DESTINATION ${CABLEFILM_CMAKE_DIR})

@@ -7,8 +7,11 @@
         private mount namespace, when this runs as root), and writes the film and the results
         the build tree's program writes; the installed Python module (when built), imported
         through PYTHONPATH under the prefix, gives the doubles of the build tree's results.nc.
-  install_test.py deb      ...   cpack -G DEB: the .deb's contents (the Python module too, when
-        built), its Debian dependencies, and its program run from the unpacked package.
+        The example scenes (share/cablefilm/scenes) and the manual (share/doc/cablefilm) are
+        installed, and an installed scene that reads a motion table passes `cablefilm check`.
+  install_test.py deb      ...   cpack -G DEB: the .deb's contents (the Python module, the
+        example scenes and the manual too), its Debian dependencies, and its program run from
+        the unpacked package.
   install_test.py consumer ...   tests/install/consumer configured against the temporary
         prefix with find_package(cablefilm), linked to cablefilm::core, run.
 """
@@ -44,7 +47,11 @@ def install(build_dir, prefix):
                  "include/cablefilm/core/equilibrium.h",
                  "lib/cmake/cablefilm/cablefilmConfig.cmake",
                  "lib/cmake/cablefilm/cablefilmConfigVersion.cmake",
-                 "lib/cmake/cablefilm/cablefilmTargets.cmake"]:
+                 "lib/cmake/cablefilm/cablefilmTargets.cmake",
+                 "share/cablefilm/scenes/polachek1963.toml",
+                 "share/cablefilm/scenes/ship_table.toml", "share/cablefilm/scenes/ship_motion.csv",
+                 "share/doc/cablefilm/README.md", "share/doc/cablefilm/scene-format.md",
+                 "share/doc/cablefilm/recipes/towed_cable.toml"]:
         if not os.path.isfile(os.path.join(prefix, path)):
             fail("cmake --install left no " + path)
     print("installed into " + prefix)
@@ -171,6 +178,11 @@ def test_run(args):
                     open(os.path.join(work, "ref", name)) as b:
                 if a.read() != b.read():
                     fail(name + " differs from the build tree's program")
+        # The installed example scenes run as installed: a motion table's `file` is found
+        # beside its scene.
+        installed_scene = os.path.join(prefix, "share", "cablefilm", "scenes", "ship_table.toml")
+        if "ok" not in run(["cablefilm", "check", installed_scene], cwd=work, env=env):
+            fail("cablefilm check of the installed " + installed_scene + " printed no ok")
         version = run(["cablefilm", "--version"], env=env).strip()
         if not re.match(r"^cablefilm \d+\.\d+", version):
             fail("--version printed " + version)
@@ -212,14 +224,19 @@ def test_deb(args):
                      "./usr/include/cablefilm/core/equilibrium.h",
                      "./usr/lib/cmake/cablefilm/cablefilmConfig.cmake",
                      "./usr/lib/cmake/cablefilm/cablefilmConfigVersion.cmake",
-                     "./usr/lib/cmake/cablefilm/cablefilmTargets.cmake"]:
+                     "./usr/lib/cmake/cablefilm/cablefilmTargets.cmake",
+                     "./usr/share/cablefilm/scenes/polachek1963.toml",
+                     "./usr/share/doc/cablefilm/scene-format.md"]:
             if want not in paths:
                 fail(debs[0] + " has no " + want)
         module = built_module(build)
         if module and not any(p.startswith("./usr/lib/python3") and p.endswith("/" + module)
                               for p in paths):
             fail(debs[0] + " has no Python module " + module + " under ./usr/lib/python3*")
-        if any("shaders" in p or p.startswith("./usr/share/cablefilm") for p in paths):
+        if any("shaders" in p or (p.startswith("./usr/share/cablefilm/")
+                                   and p != "./usr/share/cablefilm/"
+                                   and not p.startswith("./usr/share/cablefilm/scenes/"))
+               for p in paths):
             fail("the .deb ships shader files: they belong inside the program")
         depends = run(["dpkg-deb", "-f", deb, "Depends"]).strip()
         print("Depends: " + depends)
