@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "run/simulation_run.h"
+#include "run/driver.h"
+#include "run/initial_state.h"
+#include "run/time_grid.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 
@@ -52,7 +54,7 @@ int main(int argc, char** argv) {
       scene.simulation.integrator = IntegratorChoice::kImplicit;
       scene.simulation.time_step = implicit_dt;
     }
-    const CableModel m = BuildModel(scene);
+    const Model m = BuildModel(scene);
     TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
     const double total_steps = static_cast<double>(grid.outputs) * grid.steps_per_output;
     bool projected = false;
@@ -62,32 +64,34 @@ int main(int argc, char** argv) {
     }
     const auto t0 = std::chrono::steady_clock::now();
     EquilibriumReport eq;
-    CableState state = MakeInitialState(scene, m, &eq);
+    State state = MakeInitialState(scene, m, &eq);
     const auto t1 = std::chrono::steady_clock::now();
-    auto integrator = MakeIntegrator(m, grid);
+    const Inputs in = SceneInputs(m);
+    Data d = MakeData(m, in, grid.options, state);
     double peak = 0, peak_t = 0;
-    Simulate(m, *integrator, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
-      if (T.maxCoeff() > peak) {
-        peak = T.maxCoeff();
-        peak_t = s.t;
+    RowFunction sink([&](const Data& row) {
+      if (row.tension().maxCoeff() > peak) {
+        peak = row.tension().maxCoeff();
+        peak_t = row.state.t;
       }
       return true;
     });
+    Drive(m, d, in, grid, {&sink});
     const auto t2 = std::chrono::steady_clock::now();
     const double wall = std::chrono::duration<double>(t2 - t1).count();
     const double steps = static_cast<double>(grid.outputs) * grid.steps_per_output;
-    const double rate = steps * (m.links + 1) / wall;
+    const double rate = steps * (m.line.links + 1) / wall;
     const double eq_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-    const IntegratorStats st = integrator->stats();
+    const StepStats st = d.step_stats();
     if (st.newton_iterations)
       std::printf("   (%ld steps, %ld rejected, %.2f Newton iterations per step)\n", st.steps,
                   st.rejected, double(st.newton_iterations) / st.steps);
     if (projected)
       std::printf("%7d %11.4g %10.4g %10.4g %12.3g %14.3g %12.6g %9.4g projected: ran %.3g s of %.4g s\n",
-                  m.links, grid.dt, total_steps, wall * total_steps / steps, eq_ms, rate, peak,
+                  m.line.links, grid.dt, total_steps, wall * total_steps / steps, eq_ms, rate, peak,
                   peak_t, grid.outputs * grid.interval, duration);
     else
-      std::printf("%7d %11.4g %10.4g %10.4g %12.3g %14.3g %12.6g %9.4g\n", m.links, grid.dt,
+      std::printf("%7d %11.4g %10.4g %10.4g %12.3g %14.3g %12.6g %9.4g\n", m.line.links, grid.dt,
                   total_steps, wall, eq_ms, rate, peak, peak_t);
     std::fflush(stdout);
   }

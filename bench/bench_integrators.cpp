@@ -17,7 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "run/simulation_run.h"
+#include "run/driver.h"
+#include "run/initial_state.h"
+#include "run/time_grid.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 
@@ -49,7 +51,7 @@ struct RunResult {
   bool projected = false;
   double dt = 0;
   double peak = 0;         // of tension_max over the outputs [N]
-  IntegratorStats stats;
+  StepStats stats;
 };
 
 // max_steps <= 0: no cap. dt_override > 0: that step (explicit), else the scene's "auto".
@@ -58,7 +60,7 @@ RunResult Run(const SceneDef& scene_in, IntegratorChoice kind, double max_steps,
   SceneDef scene = scene_in;
   scene.simulation.integrator = kind;
   scene.simulation.time_step = dt_override;
-  const CableModel m = BuildModel(scene);
+  const Model m = BuildModel(scene);
   TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
   RunResult r;
   r.dt = grid.dt;
@@ -68,15 +70,17 @@ RunResult Run(const SceneDef& scene_in, IntegratorChoice kind, double max_steps,
     r.projected = true;
   }
   r.steps_run = static_cast<double>(grid.outputs) * grid.steps_per_output;
-  CableState state = MakeInitialState(scene, m, nullptr);
-  auto integrator = MakeIntegrator(m, grid);
-  const auto t0 = Clock::now();
-  Simulate(m, *integrator, state, grid, [&](const CableState&, const Eigen::VectorXd& T) {
-    r.peak = std::max(r.peak, T.maxCoeff());
+  State state = MakeInitialState(scene, m, nullptr);
+  const Inputs in = SceneInputs(m);
+  Data d = MakeData(m, in, grid.options, state);
+  RowFunction sink([&](const Data& row) {
+    r.peak = std::max(r.peak, row.tension().maxCoeff());
     return true;
   });
+  const auto t0 = Clock::now();
+  Drive(m, d, in, grid, {&sink});
   r.wall = std::chrono::duration<double>(Clock::now() - t0).count();
-  r.stats = integrator->stats();
+  r.stats = d.step_stats();
   return r;
 }
 
@@ -108,7 +112,7 @@ int main(int argc, char** argv) {
   // Static equilibrium at 60 links: median of several solves.
   {
     const SceneDef scene = Resized(base, 60, duration);
-    const CableModel m = BuildModel(scene);
+    const Model m = BuildModel(scene);
     std::vector<double> ms;
     EquilibriumReport rep;
     for (int i = 0; i < std::max(5, repeat); ++i) {

@@ -12,15 +12,13 @@
 #include <sstream>
 #include <string>
 
-#include "view/film_pass.h"
-#include "run/max_tension_log.h"
-#include "io/netcdf_results.h"
 #include "app/progress.h"
-#include "io/result_files.h"
-#include "run/run_extent.h"
-#include "io/run_report_file.h"
-#include "run/simulation_run.h"
 #include "core/version.h"
+#include "io/netcdf_results.h"
+#include "io/result_files.h"
+#include "io/run_report_file.h"
+#include "run/initial_state.h"
+#include "run/run.h"
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
@@ -41,52 +39,50 @@ void InstallSignalHandlers() {
   std::signal(SIGTERM, OnSignal);
 }
 
-const char* ModelName(const CableModel& m) {
-  return m.law == LinkLaw::kElastic ? "elastic" : "inextensible";
-}
+const char* ModelName(const Model& m) { return LawName(m.line.law); }
 
-void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& grid) {
-  const double cable_mass = m.link_mass.sum();
+void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
+  const double cable_mass = m.line.link_mass.sum();
   double weights = 0;
   for (const WeightDef& w : scene.weights) weights += w.mass;
   std::printf("scene %s: %s\n", EscapeText(scene.path).c_str(), QuoteText(scene.title).c_str());
   std::printf("  %s cable: %d stations, %d links in %zu section(s), unstretched length %.6g m\n",
-              ModelName(m), m.stations(), m.links, scene.sections.size(), m.total_length());
+              ModelName(m), m.stations(), m.line.links, scene.sections.size(), m.line.total_length());
   std::printf("  mass %.6g kg (cable %.6g kg, %zu weight(s) %.6g kg), net weight in fluid %.6g N\n",
               cable_mass + weights, cable_mass, scene.weights.size(), weights,
-              m.net_weight.sum());
-  if (!m.current_profile.empty()) {
-    const CurrentProfile& p = m.current_profile;
+              m.line.net_weight.sum());
+  if (!m.env.current_profile.empty()) {
+    const CurrentProfile& p = m.env.current_profile;
     const auto [lo, hi] = std::minmax_element(p.speed.begin(), p.speed.end());
     std::printf("  current profile: %zu point(s) from y = %.6g to %.6g m, %.4g to %.4g m/s along "
                 "+x, linear between them, constant beyond\n",
-                p.y.size(), p.y.front(), p.y.back(), m.current + *lo, m.current + *hi);
+                p.y.size(), p.y.front(), p.y.back(), m.env.current + *lo, m.env.current + *hi);
   }
-  if (m.seabed.present) {
+  if (m.env.seabed.present) {
     // What a station resting on it sinks: its net weight over its share of the bed's stiffness.
     double sink = 0, damping_lo = 1e300, damping_hi = 0;
     int deepest = 0;
     for (int j = m.first_free(); j <= m.last_free(); ++j) {
-      const double share = m.seabed_stiffness[j] / m.seabed.stiffness;  // [m of line]
-      damping_lo = std::min(damping_lo, m.seabed_damping[j] / share);
-      damping_hi = std::max(damping_hi, m.seabed_damping[j] / share);
-      if (m.net_weight[j] / m.seabed_stiffness[j] > sink) {
-        sink = m.net_weight[j] / m.seabed_stiffness[j];
+      const double share = m.line.seabed_stiffness[j] / m.env.seabed.stiffness;  // [m of line]
+      damping_lo = std::min(damping_lo, m.line.seabed_damping[j] / share);
+      damping_hi = std::max(damping_hi, m.line.seabed_damping[j] / share);
+      if (m.line.net_weight[j] / m.line.seabed_stiffness[j] > sink) {
+        sink = m.line.net_weight[j] / m.line.seabed_stiffness[j];
         deepest = j;
       }
     }
     std::printf("  seabed at y = %.6g m: stiffness %.4g N/m per m of line, damping %.4g",
-                m.seabed.y, m.seabed.stiffness, damping_lo);
+                m.env.seabed.y, m.env.seabed.stiffness, damping_lo);
     if (damping_hi > damping_lo * (1 + 1e-9)) std::printf(" to %.4g", damping_hi);
-    std::printf(" N s/m per m (%s), friction %.3g", m.seabed.damping < 0 ? "critical" : "given",
-                m.seabed.friction);
-    if (m.seabed.friction > 0)
-      std::printf(" (regularised over %.3g m/s)", m.seabed.friction_velocity);
+    std::printf(" N s/m per m (%s), friction %.3g", m.env.seabed.damping < 0 ? "critical" : "given",
+                m.env.seabed.friction);
+    if (m.env.seabed.friction > 0)
+      std::printf(" (regularised over %.3g m/s)", m.env.seabed.friction_velocity);
     std::printf("; a line resting on it sinks at most %.3g mm (station %d)\n", 1e3 * sink,
                 deepest);
   }
   if (m.has_waves()) {
-    const Wave& w = m.wave;
+    const Wave& w = m.env.wave;
     const double kh = w.k * w.spec.depth;
     std::printf("  waves (linear Airy, along +x): height %.4g m, period %.4g s, depth %.6g m, "
                 "still water level y = %.6g m: length %.6g m, k h = %.4g (%s), steepness H/L = "
@@ -104,11 +100,11 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
                     name, end->x_rao[0], end->x_rao[1], end->y_rao[0], end->y_rao[1]);
   }
   const long steps = grid.outputs * grid.steps_per_output;
-  if (m.law == LinkLaw::kElastic)
+  if (m.line.law == LinkLaw::kElastic)
     std::printf("  stable time step of the explicit scheme %.4g s (stiffest at station %d)\n",
                 grid.limit.time_step, grid.limit.station);
-  switch (grid.kind) {
-    case IntegratorKind::kExplicit:
+  switch (grid.options.scheme) {
+    case Scheme::kExplicit:
       std::printf("  integrator explicit, time step %.4g s = %.2f x the stability limit%s, %ld steps\n",
                   grid.dt, grid.dt / grid.limit.time_step,
                   grid.automatic ? " (auto: safety factor)" : " (given)", steps);
@@ -116,40 +112,40 @@ void PrintSummary(const SceneDef& scene, const CableModel& m, const TimeGrid& gr
         std::printf("  warning: the time step is above the stability limit; the explicit scheme "
                     "will blow up (use integrator = \"implicit\" or time_step = \"auto\")\n");
       break;
-    case IntegratorKind::kImplicit:
+    case Scheme::kImplicit:
       if (grid.automatic)
         std::printf("  integrator implicit (generalized-alpha, rho_inf %.2f), adaptive step up to "
                     "%.4g s (%.0f x the explicit limit), tolerance %.3g m: each step's local "
                     "position error estimate kept below it (the error a step adds, not the "
                     "run's total)\n",
-                    grid.rho_inf, grid.dt, grid.dt / grid.limit.time_step, grid.error_tolerance);
+                    grid.options.rho_inf, grid.dt, grid.dt / grid.limit.time_step, grid.options.tolerance);
       else
         std::printf("  integrator implicit (generalized-alpha, rho_inf %.2f), time step %.4g s "
                     "(given) = %.0f x the explicit limit, %ld steps\n",
-                    grid.rho_inf, grid.dt, grid.dt / grid.limit.time_step, steps);
+                    grid.options.rho_inf, grid.dt, grid.dt / grid.limit.time_step, steps);
       break;
-    case IntegratorKind::kInextensible:
-      if (grid.error_tolerance > 0)
+    case Scheme::kInextensible:
+      if (grid.options.tolerance > 0)
         std::printf("  integrator inextensible (constraint tensions), output every %.4g s, "
                     "substeps below the transverse wave limit and error-controlled: tolerance "
                     "%.3g m, each step's local position error estimate kept below it\n",
-                    grid.interval, grid.error_tolerance);
+                    grid.interval, grid.options.tolerance);
       else
         std::printf("  integrator inextensible (constraint tensions), output every %.4g s, "
                     "substeps from the transverse wave limit\n",
                     grid.interval);
       break;
   }
-  const Eigen::Vector2d a = m.start.Position(0), b = m.end.Position(0);
-  if (m.law == LinkLaw::kElastic && m.start.prescribed() && m.end.prescribed() &&
-      (b - a).norm() > m.total_length())
+  const Vec a = m.ends.start.Position(0), b = m.ends.end.Position(0);
+  if (m.line.law == LinkLaw::kElastic && m.ends.start.prescribed() && m.ends.end.prescribed() &&
+      (b - a).norm() > m.line.total_length())
     std::printf("  warning: the ends are %.3g %% further apart than the cable is long: it starts "
                 "stretched\n",
-                100.0 * ((b - a).norm() / m.total_length() - 1.0));
+                100.0 * ((b - a).norm() / m.line.total_length() - 1.0));
 }
 
 // results.nc's attributes: the scene (its path and text) and the program's version.
-NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const CableModel& m) {
+NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const Model& m) {
   NetcdfResultsInfo info;
   info.title = scene.title;
   info.scene_file = EscapeText(scene.path);
@@ -164,34 +160,32 @@ NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const CableModel& m) {
   return info;
 }
 
-// One model of a scene simulated into result files: the equilibrium, the time series (with
-// `suffix` before .csv), every station and link (results<suffix>.nc), the largest tension of
-// every row (for the pictures) and what the film needs. A run cut short (completed false) has
-// committed its rows under the .partial names; `failure` then holds a blow-up's message
-// (empty: stopped by a signal).
-struct ModelRun {
-  CableModel model;
-  TimeGrid grid;
-  CableState initial;
-  Eigen::VectorXd initial_tension;  // [N]
-  RunExtent extent;
-  MaxTensionLog rows;               // the peak is rows.peak(): the largest tension_max of the CSV
-  bool completed = false;
-  std::string failure;
+// The progress line of a run, and its stop at a signal (seen between rows; within a step, the
+// inputs' stop flag).
+class ProgressSink : public RowSink {
+ public:
+  ProgressSink(const std::string& label, double end) : line_(label, end, "s") {}
+  bool Row(const Data& d) override {
+    line_.Update(d.state.t);
+    return g_signal == 0;
+  }
+  void Finish() { line_.Finish(); }
+
+ private:
+  ProgressLine line_;
 };
 
-ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::string& out_dir,
-                         const std::string& suffix) {
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
-  PrintSummary(scene, m, grid);
-  const auto t0 = std::chrono::steady_clock::now();
-  EquilibriumReport eq;
-  CableState initial = MakeInitialState(scene, m, &eq, &g_signal);
-  const double eq_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  auto integrator = MakeIntegrator(m, grid);
-  integrator->Initialize(m, initial);
-  ModelRun run{m, grid, initial, integrator->tensions(), RunExtent(initial), MaxTensionLog(), false, ""};
+// One model of a scene simulated into result files: the equilibrium, the time series (with
+// `suffix` before .csv), every station and link (results<suffix>.nc), the run's report; the
+// run keeps the largest tension of every row (for the pictures) and what the film needs. A run
+// cut short (summary.completed false) has committed its rows under the .partial names;
+// summary.failure then holds a blow-up's message (empty: stopped by a signal).
+Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& out_dir,
+                    const std::string& suffix) {
+  PrintSummary(scene, m, ChooseTimeGrid(m, scene.simulation, scene.output.interval));
+  Run run = PrepareRun(scene, m, LawName(m.line.law), &g_signal);
+  const EquilibriumReport& eq = run.equilibrium;
+  const Eigen::VectorXd& T0 = run.initial.tension();
   if (scene.initial == InitialStateKind::kEquilibrium)
     std::printf("equilibrium: %d Newton iterations%s, residual %.3g N (of %.4g N), %.2f ms; "
                 "tension %.6g N at the start, %.6g N at the end\n",
@@ -199,88 +193,48 @@ ModelRun SimulateToFiles(const SceneDef& scene, const CableModel& m, const std::
                 eq.fallback ? (" (" + std::to_string(eq.fallback_iterations) +
                                " pseudo-transient after Newton stalled)").c_str()
                             : "",
-                eq.residual, eq.force_scale, eq_ms, run.initial_tension[0],
-                run.initial_tension[m.links - 1]);
+                eq.residual, eq.force_scale, run.equilibrium_ms, T0[0], T0[m.line.links - 1]);
   else
     std::printf("initial state: the straight chord at rest (not an equilibrium), written to "
                 "equilibrium%s.csv; tension %.6g N at the start, %.6g N at the end\n",
-                suffix.c_str(), run.initial_tension[0], run.initial_tension[m.links - 1]);
-  WriteEquilibriumCsv(out_dir + "/equilibrium" + suffix + ".csv", m, initial,
-                      run.initial_tension);
+                suffix.c_str(), T0[0], T0[m.line.links - 1]);
+  WriteEquilibriumCsv(out_dir + "/equilibrium" + suffix + ".csv", m, run.initial.state, T0);
 
   const std::string series_path = out_dir + "/timeseries" + suffix + ".csv";
   const std::string partial_path = out_dir + "/timeseries" + suffix + ".partial.csv";
-  TimeseriesWriter series(series_path);
+  TimeseriesWriter series(series_path, m);
   const std::string nc_path = out_dir + "/results" + suffix + ".nc";
   const std::string nc_partial_path = out_dir + "/results" + suffix + ".partial.nc";
-  NetcdfResultsWriter links(nc_path, MakeNetcdfInfo(scene, m), m, initial, run.initial_tension);
-  CableState state = initial;
-  ProgressLine progress(std::string("simulating (") + ModelName(m) + ")",
-                        grid.outputs * grid.interval, "s");
-  // The smallest tension of the rows (sampled as the peak is), its time and link.
-  double min_tension = std::numeric_limits<double>::quiet_NaN(), min_tension_t = 0;
-  int min_tension_link = -1;
-  const auto t1 = std::chrono::steady_clock::now();
-  try {
-    run.completed =
-        Simulate(m, *integrator, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
-          series.Append(m, s, T);
-          links.Append(s, T);
-          run.extent.Add(s, T);
-          Eigen::Index link = 0;
-          const double tmax = T.maxCoeff(&link);  // the row's tension_max and link_max
-          run.rows.Append(s.t, tmax, static_cast<int>(link));
-          Eigen::Index low = 0;
-          const double tmin = T.minCoeff(&low);
-          if (std::isnan(min_tension) || tmin < min_tension) {
-            min_tension = tmin;
-            min_tension_t = s.t;
-            min_tension_link = static_cast<int>(low);
-          }
-          progress.Update(s.t);
-          return g_signal == 0;
-        }, &g_signal);
-  } catch (const BlowUpError& e) {
-    progress.Finish();
-    series.CommitPartial(partial_path);
-    links.CommitPartial(nc_partial_path);
-    run.failure = std::string(e.what()) + " (" + integrator->name() + ", time step " +
-                  std::to_string(grid.dt) + " s); the rows up to then are in " +
-                  EscapeText(partial_path) + " and " + EscapeText(nc_partial_path);
-    return run;
-  }
+  NetcdfResultsWriter links(nc_path, MakeNetcdfInfo(scene, m), m, run.initial.state, T0);
+  ProgressSink progress(std::string("simulating (") + run.label + ")", run.grid.end());
+  ExecuteRun(run, {&series, &links, &progress});
   progress.Finish();
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-  if (!run.completed) {
+  RunSummary& s = run.summary;
+  if (!s.completed) {
     series.CommitPartial(partial_path);
     links.CommitPartial(nc_partial_path);
-    std::fprintf(stderr, "interrupted at t = %.4g s; rows so far in %s and %s\n", state.t,
-                 EscapeText(partial_path).c_str(), EscapeText(nc_partial_path).c_str());
+    if (!s.failure.empty())
+      s.failure += "; the rows up to then are in " + EscapeText(partial_path) + " and " +
+                   EscapeText(nc_partial_path);
+    else
+      std::fprintf(stderr, "interrupted at t = %.4g s; rows so far in %s and %s\n", s.duration,
+                   EscapeText(partial_path).c_str(), EscapeText(nc_partial_path).c_str());
     return run;
   }
   series.Commit();
   links.Commit();
-  const IntegratorStats st = integrator->stats();
-  std::printf("simulated %.6g s in %.3g s of computer time: %s, %.3g station-steps/s\n", state.t,
-              wall, DescribeSteps(st).c_str(),
-              static_cast<double>(st.steps) * m.stations() / wall);
+  std::printf("simulated %.6g s in %.3g s of computer time: %s, %.3g station-steps/s\n",
+              s.duration, s.wall, DescribeSteps(s.stats).c_str(),
+              static_cast<double>(s.stats.steps) * m.stations() / s.wall);
   // Sampled as the CSV is: at the output rows (every `interval`), not at every step.
   std::printf("peak tension %.6g N at t = %.4g s in link %d (the largest tension_max of the "
               "%ld rows, one every %.4g s)\n",
-              run.rows.peak(), run.rows.peak_t(), run.rows.peak_link(), run.rows.rows(),
-              grid.interval);
+              s.peak, s.peak_t, s.peak_link, s.rows, run.grid.interval);
   std::printf("wrote %s\n", EscapeText(series_path).c_str());
   std::printf("wrote %s\n", EscapeText(nc_path).c_str());
-  const std::vector<std::string> warnings = TrustWarnings(m, st);
-  for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
-  RunFacts facts{integrator->name(), grid.automatic ? grid.error_tolerance : 0.0, state.t, wall,
-                 st, run.rows.peak(), run.rows.peak_t(), run.rows.peak_link(), run.rows.rows()};
-  facts.min_tension = min_tension;
-  facts.min_tension_t = min_tension_t;
-  facts.min_tension_link = min_tension_link;
+  for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());
   const std::string report_path = out_dir + "/run_report" + suffix + ".toml";
-  WriteRunReport(report_path, facts, warnings);
+  WriteRunReport(report_path, s);
   std::printf("wrote %s\n", EscapeText(report_path).c_str());
   return run;
 }
@@ -295,14 +249,10 @@ std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options) {
   return out_dir;
 }
 
-FilmRun ToFilmRun(const ModelRun& r, const std::string& label) {
-  return FilmRun{label, &r.model, r.grid, r.initial, r.initial_tension, r.extent, &r.rows};
-}
-
 // The runs so far, the last cut short: max_tension.partial.png beside timeseries.partial.csv
 // (a failure to draw it is reported, not thrown: the run's own message comes next). Then a
 // blow-up's message is thrown; a signal gives its exit status.
-int EndCutShort(const SceneDef& scene, const std::vector<FilmRun>& runs,
+int EndCutShort(const SceneDef& scene, const std::vector<const Run*>& runs,
                 const std::string& failure, const std::string& out_dir,
                 const RunOptions& options, RunReport* report) {
   bool drawn = false;
@@ -310,7 +260,7 @@ int EndCutShort(const SceneDef& scene, const std::vector<FilmRun>& runs,
     const PictureReport figure = WriteMaxTensionFigure(scene, runs, out_dir, options.shader_dir,
                                                        false);
     drawn = !std::isnan(figure.peak);
-    if (report) report->figure_peak = figure.peak;
+    if (report) report->figure = figure;
   } catch (const Error& e) {
     std::fprintf(stderr, "%s\n", e.what());
   }
@@ -319,19 +269,11 @@ int EndCutShort(const SceneDef& scene, const std::vector<FilmRun>& runs,
   return 128 + g_signal;
 }
 
-void Report(const ModelRun& run, RunReport* report) {
-  if (!report) return;
-  report->rows = run.rows.rows();
-  report->peak = run.rows.peak();
-  report->peak_t = run.rows.peak_t();
-  report->peak_link = run.rows.peak_link();
-}
-
 }  // namespace
 
 int CheckCommand(const std::string& scene_path) {
   const SceneDef scene = LoadScene(scene_path);
-  const CableModel m = BuildModel(scene);
+  const Model m = BuildModel(scene);
   CheckModelLimits(scene, m);
   PrintSummary(scene, m, ChooseTimeGrid(m, scene.simulation, scene.output.interval));
   if (scene.initial == InitialStateKind::kEquilibrium) {
@@ -354,30 +296,24 @@ int RunCommand(const std::string& scene_path, const RunOptions& options, RunRepo
   const SceneDef scene = LoadScene(scene_path);
   const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
   const FilmSettings look = film ? ResolveFilm(scene, options, kCommandLineNames) : FilmSettings{};
-  const CableModel model = BuildModel(scene);
+  const Model model = BuildModel(scene);
   CheckModelLimits(scene, model);
   const std::string out_dir = PrepareOutDir(scene, options);
   InstallSignalHandlers();
-  const ModelRun run = SimulateToFiles(scene, model, out_dir, "");
-  Report(run, report);
-  const std::vector<FilmRun> runs{ToFilmRun(run, ModelName(run.model))};
-  if (!run.completed) return EndCutShort(scene, runs, run.failure, out_dir, options, report);
+  const Run run = SimulateToFiles(scene, model, out_dir, "");
+  if (report) report->summary = run.summary;
+  const std::vector<const Run*> runs{&run};
+  if (!run.summary.completed)
+    return EndCutShort(scene, runs, run.summary.failure, out_dir, options, report);
   // Figure 1 from every row, film or not (a film cut short leaves it whole: it has every row).
   const PictureReport figure =
       WriteMaxTensionFigure(scene, runs, out_dir, options.shader_dir, true);
-  if (report) report->figure_peak = figure.peak;
+  if (report) report->figure = figure;
   if (!film) return 0;
   PictureReport shown;
   const bool finished =
       RenderFilm(scene, runs, MakeFilmRequest(look, out_dir, options.shader_dir), g_signal, &shown);
-  if (report) {
-    report->film_peak = shown.peak;
-    report->film_peak_t = shown.peak_t;
-    report->film_frames = shown.frames;
-    report->film_last_max = shown.last_frame_max;
-    report->film_last_t = shown.last_frame_t;
-    report->film_last_row_max = shown.last_row_max;
-  }
+  if (report) report->film = shown;
   return finished ? 0 : 128 + g_signal;
 }
 
@@ -392,20 +328,23 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
   const std::string out_dir = PrepareOutDir(scene, options);
   InstallSignalHandlers();
   scene.model = CableModelKind::kElastic;
-  const ModelRun elastic = SimulateToFiles(scene, BuildModel(scene), out_dir, "");
-  std::vector<FilmRun> runs{ToFilmRun(elastic, "elastic")};
-  if (!elastic.completed) return EndCutShort(scene, runs, elastic.failure, out_dir, options, nullptr);
+  const Run elastic = SimulateToFiles(scene, BuildModel(scene), out_dir, "");
+  std::vector<const Run*> runs{&elastic};
+  if (!elastic.summary.completed)
+    return EndCutShort(scene, runs, elastic.summary.failure, out_dir, options, nullptr);
   scene.model = CableModelKind::kInextensible;
-  const ModelRun rigid = SimulateToFiles(scene, BuildModel(scene), out_dir, "_inextensible");
-  runs.push_back(ToFilmRun(rigid, "inextensible"));
-  if (!rigid.completed) return EndCutShort(scene, runs, rigid.failure, out_dir, options, nullptr);
+  const Run rigid = SimulateToFiles(scene, BuildModel(scene), out_dir, "_inextensible");
+  runs.push_back(&rigid);
+  if (!rigid.summary.completed)
+    return EndCutShort(scene, runs, rigid.summary.failure, out_dir, options, nullptr);
+  const RunSummary &e = elastic.summary, &r = rigid.summary;
   std::printf("peak tension: elastic %.6g N (t = %.4g s), inextensible %.6g N (t = %.4g s), "
               "ratio inextensible/elastic %.4g\n",
-              elastic.rows.peak(), elastic.rows.peak_t(), rigid.rows.peak(), rigid.rows.peak_t(),
-              rigid.rows.peak() / elastic.rows.peak());
+              e.peak, e.peak_t, r.peak, r.peak_t, r.peak / e.peak);
   WriteMaxTensionFigure(scene, runs, out_dir, options.shader_dir, true);
   if (!film) return 0;
-  const bool finished = RenderFilm(scene, runs, MakeFilmRequest(look, out_dir, options.shader_dir), g_signal);
+  const bool finished =
+      RenderFilm(scene, runs, MakeFilmRequest(look, out_dir, options.shader_dir), g_signal);
   return finished ? 0 : 128 + g_signal;
 }
 

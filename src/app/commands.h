@@ -3,7 +3,9 @@
 #include <limits>
 #include <string>
 
+#include "run/run_summary.h"
 #include "scene/film_settings.h"
+#include "view/film_pass.h"
 
 namespace cablefilm {
 
@@ -18,17 +20,9 @@ struct RunOptions : FilmOverrides {
 // the same output rows, so the peaks agree: the film's to the last bit, the CSV's to its 10
 // significant digits.
 struct RunReport {
-  long rows = 0;                // output rows (of timeseries.csv, or its .partial)
-  double peak = std::numeric_limits<double>::quiet_NaN();    // "peak tension" printed [N]
-  double peak_t = std::numeric_limits<double>::quiet_NaN();  // its time [s]
-  int peak_link = -1;
-  double figure_peak = std::numeric_limits<double>::quiet_NaN();  // largest drawn in max_tension[.partial].png [N]
-  double film_peak = std::numeric_limits<double>::quiet_NaN();    // largest in the film's time plot, last frame [N]
-  double film_peak_t = std::numeric_limits<double>::quiet_NaN();  // its time [s]
-  long film_frames = 0;
-  double film_last_max = std::numeric_limits<double>::quiet_NaN();  // the last frame's cable: largest tension [N]
-  double film_last_t = std::numeric_limits<double>::quiet_NaN();    // and its time [s]
-  double film_last_row_max = std::numeric_limits<double>::quiet_NaN();  // the last row's, as plotted [N]
+  RunSummary summary;     // the run's: its rows and the peak it printed
+  PictureReport figure;   // max_tension[.partial].png
+  PictureReport film;     // the film's time plot at its last frame
 };
 
 int RunCommand(const std::string& scene_path, const RunOptions& options,

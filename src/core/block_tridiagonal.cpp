@@ -25,7 +25,7 @@ void BlockTridiagonal::SetZero() {
 bool BlockTridiagonal::Solve() {
   const int n = size();
   for (int i = 0; i < n; ++i) {
-    Eigen::Matrix2d pivot = diag[i];
+    Mat pivot = diag[i];
     if (i > 0) {
       pivot.noalias() -= lower[i] * c_prime_[i - 1];
       rhs[i].noalias() -= lower[i] * rhs[i - 1];
@@ -33,7 +33,7 @@ bool BlockTridiagonal::Solve() {
     const double det = pivot.determinant();
     const double scale = pivot.cwiseAbs().maxCoeff();
     if (!(std::abs(det) > 1e-14 * scale * scale)) return false;
-    const Eigen::Matrix2d inv = pivot.inverse();
+    const Mat inv = pivot.inverse();
     if (i + 1 < n) c_prime_[i].noalias() = inv * upper[i];
     rhs[i] = inv * rhs[i];
   }

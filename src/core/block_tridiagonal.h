@@ -1,9 +1,9 @@
 #pragma once
-// A linear system whose matrix is block tridiagonal with 2x2 blocks, one block row per station:
+// A linear system whose matrix is block tridiagonal with kDim x kDim blocks, one block row per station:
 //   lower_i x_{i-1} + diag_i x_i + upper_i x_{i+1} = rhs_i.
 // Solved by block Gaussian elimination without pivoting (the block Thomas algorithm) in O(n);
 // fine for the systems here, which are block diagonally dominant or symmetric definite.
-#include <Eigen/Core>
+#include "core/vec.h"
 #include <vector>
 
 namespace cablefilm {
@@ -19,11 +19,11 @@ class BlockTridiagonal {
   // singular to working precision.
   bool Solve();
 
-  std::vector<Eigen::Matrix2d> lower, diag, upper;  // lower[0] and upper[n-1] are unused
-  std::vector<Eigen::Vector2d> rhs;
+  std::vector<Mat> lower, diag, upper;  // lower[0] and upper[n-1] are unused
+  std::vector<Vec> rhs;
 
  private:
-  std::vector<Eigen::Matrix2d> c_prime_;  // eliminated upper blocks
+  std::vector<Mat> c_prime_;  // eliminated upper blocks
 };
 
 }  // namespace cablefilm

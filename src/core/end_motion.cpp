@@ -7,21 +7,21 @@
 
 namespace cablefilm {
 
-EndMotion EndMotion::Fixed(Eigen::Vector2d rest) {
+EndMotion EndMotion::Fixed(Vec rest) {
   EndMotion m;
   m.kind_ = EndKind::kFixed;
   m.rest_ = rest;
   return m;
 }
 
-EndMotion EndMotion::Free(Eigen::Vector2d start) {
+EndMotion EndMotion::Free(Vec start) {
   EndMotion m;
   m.kind_ = EndKind::kFree;
   m.rest_ = start;
   return m;
 }
 
-EndMotion EndMotion::Trochoid(Eigen::Vector2d rest, double a, double b, double c, double d,
+EndMotion EndMotion::Trochoid(Vec rest, double a, double b, double c, double d,
                               double omega, double nu) {
   EndMotion m;
   m.kind_ = EndKind::kTrochoid;
@@ -35,7 +35,7 @@ EndMotion EndMotion::Trochoid(Eigen::Vector2d rest, double a, double b, double c
   return m;
 }
 
-EndMotion EndMotion::Table(Eigen::Vector2d rest, const std::vector<Eigen::Vector3d>& rows) {
+EndMotion EndMotion::Table(Vec rest, const std::vector<Eigen::Vector3d>& rows) {
   if (rows.size() < 2) throw Error("end motion table needs at least two rows");
   EndMotion m;
   m.kind_ = EndKind::kTable;
@@ -43,7 +43,7 @@ EndMotion EndMotion::Table(Eigen::Vector2d rest, const std::vector<Eigen::Vector
   const size_t n = rows.size();
   m.knot_t_.resize(n);
   m.knot_p_.resize(n);
-  m.knot_m_.assign(n, Eigen::Vector2d::Zero());
+  m.knot_m_.assign(n, Vec::Zero());
   for (size_t i = 0; i < n; ++i) {
     m.knot_t_[i] = rows[i][0];
     m.knot_p_[i] = rows[i].tail<2>();
@@ -54,11 +54,11 @@ EndMotion EndMotion::Table(Eigen::Vector2d rest, const std::vector<Eigen::Vector
   // Natural cubic spline (zero second derivative at both ends): tridiagonal solve for the
   // second derivatives M_i, so position, velocity and acceleration are all continuous.
   std::vector<double> c_prime(n, 0.0);
-  std::vector<Eigen::Vector2d> d_prime(n, Eigen::Vector2d::Zero());
+  std::vector<Vec> d_prime(n, Vec::Zero());
   for (size_t i = 1; i + 1 < n; ++i) {
     const double h0 = m.knot_t_[i] - m.knot_t_[i - 1];
     const double h1 = m.knot_t_[i + 1] - m.knot_t_[i];
-    const Eigen::Vector2d rhs =
+    const Vec rhs =
         6.0 * ((m.knot_p_[i + 1] - m.knot_p_[i]) / h1 - (m.knot_p_[i] - m.knot_p_[i - 1]) / h0);
     const double diag = 2.0 * (h0 + h1) - h0 * c_prime[i - 1];
     c_prime[i] = h1 / diag;
@@ -68,15 +68,9 @@ EndMotion EndMotion::Table(Eigen::Vector2d rest, const std::vector<Eigen::Vector
   return m;
 }
 
-Eigen::Vector2d EndMotion::Position(double t) const { return Evaluate(t, 0); }
-Eigen::Vector2d EndMotion::Velocity(double t) const { return Evaluate(t, 1); }
-Eigen::Vector2d EndMotion::Acceleration(double t) const { return Evaluate(t, 2); }
-
-void EndMotion::Modulate(const SmoothSchedule& scale, const SmoothSchedule& clock_rate) {
-  modulated_ = true;
-  scale_ = scale;
-  clock_rate_ = clock_rate;
-}
+Vec EndMotion::Position(double t) const { return Evaluate(t, 0); }
+Vec EndMotion::Velocity(double t) const { return Evaluate(t, 1); }
+Vec EndMotion::Acceleration(double t) const { return Evaluate(t, 2); }
 
 double EndMotion::period() const {
   if (kind_ == EndKind::kTrochoid) return omega_ > 0 ? 2 * 3.14159265358979323846 / omega_ : 0;
@@ -84,8 +78,7 @@ double EndMotion::period() const {
   return 0;
 }
 
-Eigen::Vector2d EndMotion::Evaluate(double t, int order) const {
-  if (modulated_ && moves()) return EvaluateModulated(t, order);
+Vec EndMotion::Evaluate(double t, int order) const {
   switch (kind_) {
     case EndKind::kTrochoid:
       return EvaluateTrochoid(t, order);
@@ -95,33 +88,37 @@ Eigen::Vector2d EndMotion::Evaluate(double t, int order) const {
     case EndKind::kFree:
       break;
   }
-  return order == 0 ? rest_ : Eigen::Vector2d::Zero();
+  return order == 0 ? rest_ : Vec::Zero();
 }
 
-Eigen::Vector2d EndMotion::EvaluateTrochoid(double t, int order) const {
-  if (t <= 0) return order == 0 ? rest_ : Eigen::Vector2d::Zero();
+Vec EndMotion::EvaluateTrochoid(double t, int order) const {
+  if (t <= 0) return order == 0 ? rest_ : Vec::Zero();
   // Ramp R(t) = 1 - (1 + nu t) e^{-nu t}; R' = nu^2 t e^{-nu t}; R'' = nu^2 (1 - nu t) e^{-nu t}.
   const double e = std::exp(-nu_ * t);
   const double ramp[3] = {1.0 - (1.0 + nu_ * t) * e, nu_ * nu_ * t * e,
                           nu_ * nu_ * (1.0 - nu_ * t) * e};
   // Orbit P(t) = (a cos wt + b sin wt, c cos wt + d sin wt) and its derivatives.
   const double co = std::cos(omega_ * t), si = std::sin(omega_ * t);
-  const Eigen::Vector2d p0(a_ * co + b_ * si, c_ * co + d_ * si);
-  const Eigen::Vector2d p1 = omega_ * Eigen::Vector2d(-a_ * si + b_ * co, -c_ * si + d_ * co);
-  const Eigen::Vector2d p2 = -omega_ * omega_ * p0;
+  const Vec p0(a_ * co + b_ * si, c_ * co + d_ * si);
+  const Vec p1 = omega_ * Vec(-a_ * si + b_ * co, -c_ * si + d_ * co);
+  const Vec p2 = -omega_ * omega_ * p0;
   if (order == 0) return rest_ + ramp[0] * p0;
   if (order == 1) return ramp[1] * p0 + ramp[0] * p1;
   return ramp[2] * p0 + 2.0 * ramp[1] * p1 + ramp[0] * p2;
 }
 
-Eigen::Vector2d EndMotion::EvaluateModulated(double t, int order) const {
-  if (kind_ == EndKind::kTrochoid && t <= 0) return order == 0 ? rest_ : Eigen::Vector2d::Zero();
+Vec EndMotion::Evaluate(double t, int order, const SmoothSchedule& scale,
+                        const SmoothSchedule& clock) const {
+  const bool as_scene = scale.constant() && clock.constant() && scale.target() == 1.0 &&
+                        clock.target() == 1.0;
+  if (as_scene || !moves()) return Evaluate(t, order);
+  if (kind_ == EndKind::kTrochoid && t <= 0) return order == 0 ? rest_ : Vec::Zero();
   // offset(t) = G(t) P(tau(t)), G = scale x the ramp R of eq. (3) (1 for a table), tau the
   // motion's clock (tau' = rate); the derivatives by the product and chain rules.
-  const SmoothSchedule::Value s = scale_.At(t), r = clock_rate_.At(t);
+  const SmoothSchedule::Value s = scale.At(t), r = clock.At(t);
   const double tau = r.integral;
   double g[3] = {s.value, s.rate, s.rate2};
-  Eigen::Vector2d p[3];  // P, dP/dtau, d2P/dtau2
+  Vec p[3];  // P, dP/dtau, d2P/dtau2
   if (kind_ == EndKind::kTrochoid) {
     const double e = std::exp(-nu_ * t);
     const double ramp[3] = {1.0 - (1.0 + nu_ * t) * e, nu_ * nu_ * t * e,
@@ -130,8 +127,8 @@ Eigen::Vector2d EndMotion::EvaluateModulated(double t, int order) const {
     g[1] = s.rate * ramp[0] + s.value * ramp[1];
     g[0] = s.value * ramp[0];
     const double co = std::cos(omega_ * tau), si = std::sin(omega_ * tau);
-    p[0] = Eigen::Vector2d(a_ * co + b_ * si, c_ * co + d_ * si);
-    p[1] = omega_ * Eigen::Vector2d(-a_ * si + b_ * co, -c_ * si + d_ * co);
+    p[0] = Vec(a_ * co + b_ * si, c_ * co + d_ * si);
+    p[1] = omega_ * Vec(-a_ * si + b_ * co, -c_ * si + d_ * co);
     p[2] = -omega_ * omega_ * p[0];
   } else {
     p[0] = EvaluateTable(tau, 0) - rest_;
@@ -139,23 +136,23 @@ Eigen::Vector2d EndMotion::EvaluateModulated(double t, int order) const {
     p[2] = EvaluateTable(tau, 2);
   }
   // d/dt P(tau) = P' r, d2/dt2 P(tau) = P'' r^2 + P' r'.
-  const Eigen::Vector2d q0 = p[0], q1 = p[1] * r.value,
+  const Vec q0 = p[0], q1 = p[1] * r.value,
                         q2 = p[2] * (r.value * r.value) + p[1] * r.rate;
   if (order == 0) return rest_ + g[0] * q0;
   if (order == 1) return g[1] * q0 + g[0] * q1;
   return g[2] * q0 + 2 * g[1] * q1 + g[0] * q2;
 }
 
-Eigen::Vector2d EndMotion::EvaluateTable(double t, int order) const {
+Vec EndMotion::EvaluateTable(double t, int order) const {
   const size_t n = knot_t_.size();
-  if (t <= knot_t_.front()) return order == 0 ? Eigen::Vector2d(rest_ + knot_p_.front()) : Eigen::Vector2d::Zero();
-  if (t >= knot_t_.back()) return order == 0 ? Eigen::Vector2d(rest_ + knot_p_.back()) : Eigen::Vector2d::Zero();
+  if (t <= knot_t_.front()) return order == 0 ? Vec(rest_ + knot_p_.front()) : Vec::Zero();
+  if (t >= knot_t_.back()) return order == 0 ? Vec(rest_ + knot_p_.back()) : Vec::Zero();
   const size_t i =
       std::min<size_t>(n - 2, std::upper_bound(knot_t_.begin(), knot_t_.end(), t) - knot_t_.begin() - 1);
   const double h = knot_t_[i + 1] - knot_t_[i];
   const double A = (knot_t_[i + 1] - t) / h, B = (t - knot_t_[i]) / h;
-  const Eigen::Vector2d &p0 = knot_p_[i], &p1 = knot_p_[i + 1];
-  const Eigen::Vector2d &m0 = knot_m_[i], &m1 = knot_m_[i + 1];
+  const Vec &p0 = knot_p_[i], &p1 = knot_p_[i + 1];
+  const Vec &m0 = knot_m_[i], &m1 = knot_m_[i + 1];
   if (order == 0)
     return rest_ + A * p0 + B * p1 + ((A * A * A - A) * m0 + (B * B * B - B) * m1) * (h * h / 6.0);
   if (order == 1)

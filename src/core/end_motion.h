@@ -2,10 +2,10 @@
 // How an end of the cable (station 0 or s) moves. A prescribed end's position, velocity and
 // acceleration are exact functions of time, evaluated at every stage of every step: a
 // piecewise-constant end velocity would shake the stiff axial modes.
-#include <Eigen/Core>
 #include <vector>
 
 #include "core/smooth_schedule.h"
+#include "core/vec.h"
 
 namespace cablefilm {
 
@@ -18,56 +18,50 @@ enum class EndKind {
 
 class EndMotion {
  public:
-  static EndMotion Fixed(Eigen::Vector2d rest);
-  static EndMotion Free(Eigen::Vector2d start);
+  static EndMotion Fixed(Vec rest);
+  static EndMotion Free(Vec start);
   // Eq. (3): x = x0 + R(t)(a cos wt + b sin wt), y = y0 + R(t)(c cos wt + d sin wt),
   // R(t) = 1 - (1 + nu t) exp(-nu t).
-  static EndMotion Trochoid(Eigen::Vector2d rest, double a, double b, double c, double d,
-                            double omega, double nu);
+  static EndMotion Trochoid(Vec rest, double a, double b, double c, double d, double omega,
+                            double nu);
   // Rows (t [s], dx [m], dy [m]), t strictly increasing, at least two rows. Offsets are added
   // to `rest`; before the first row and after the last the end holds still at that row.
-  static EndMotion Table(Eigen::Vector2d rest, const std::vector<Eigen::Vector3d>& rows);
+  static EndMotion Table(Vec rest, const std::vector<Eigen::Vector3d>& rows);
 
   EndKind kind() const { return kind_; }
   bool prescribed() const { return kind_ != EndKind::kFree; }
   bool moves() const { return kind_ == EndKind::kTrochoid || kind_ == EndKind::kTable; }
-  const Eigen::Vector2d& rest() const { return rest_; }
+  const Vec& rest() const { return rest_; }
 
-  Eigen::Vector2d Position(double t) const;      // [m]
-  Eigen::Vector2d Velocity(double t) const;      // [m/s]
-  Eigen::Vector2d Acceleration(double t) const;  // [m/s^2]
+  // The motion as the scene gives it.
+  Vec Position(double t) const;      // [m]
+  Vec Velocity(double t) const;      // [m/s]
+  Vec Acceleration(double t) const;  // [m/s^2]
 
-  // Changes made while the cable runs (the live view): the orbit of eq. (3), or the table's
-  // offsets, are scaled by `scale` (1 = as the scene says), and the motion's own clock runs at
-  // `clock_rate` times real time (the period becomes period / rate), its phase the integral of
-  // the rate, so position, velocity and acceleration stay continuous through a change. The
-  // ramp R(t) of eq. (3) keeps real time. Without a call the motion is exactly the scene's.
-  void Modulate(const SmoothSchedule& scale, const SmoothSchedule& clock_rate);
-  bool modulated() const { return modulated_; }
-  const SmoothSchedule& scale() const { return scale_; }
-  const SmoothSchedule& clock_rate() const { return clock_rate_; }
+  // The motion changed while the cable runs (the live view, inputs.h): the orbit of eq. (3), or
+  // the table's offsets, scaled by `scale` (1 = as the scene says), and the motion's own clock
+  // running at `clock` times real time (the period becomes period / rate), its phase the
+  // integral of the rate, so position, velocity and acceleration stay continuous through a
+  // change. The ramp R(t) of eq. (3) keeps real time. Both constant at 1: exactly the scene's.
+  // Order 0: position [m], 1: velocity [m/s], 2: acceleration [m/s^2].
+  Vec Evaluate(double t, int order, const SmoothSchedule& scale,
+               const SmoothSchedule& clock) const;
   double period() const;  // 2 pi / omega_s of eq. (3) [s]; the table's span; 0 otherwise
 
  private:
-  // Value (order 0), velocity (1) or acceleration (2).
-  Eigen::Vector2d Evaluate(double t, int order) const;
-  Eigen::Vector2d EvaluateTrochoid(double t, int order) const;
-  Eigen::Vector2d EvaluateTable(double t, int order) const;
-  // The offset from rest, scaled and on the modulated clock.
-  Eigen::Vector2d EvaluateModulated(double t, int order) const;
+  Vec Evaluate(double t, int order) const;
+  Vec EvaluateTrochoid(double t, int order) const;
+  Vec EvaluateTable(double t, int order) const;
 
   EndKind kind_ = EndKind::kFixed;
-  Eigen::Vector2d rest_ = Eigen::Vector2d::Zero();  // x_s^0, y_s^0 [m]
+  Vec rest_ = Vec::Zero();  // x_s^0, y_s^0 [m]
   // Trochoid, eq. (3).
   double a_ = 0, b_ = 0, c_ = 0, d_ = 0;  // [m]
   double omega_ = 0;                      // omega_s [rad/s]
   double nu_ = 0;                         // nu_s [1/s]
   // Table: knots and the spline's second derivatives at the knots.
   std::vector<double> knot_t_;
-  std::vector<Eigen::Vector2d> knot_p_, knot_m_;
-  // Live changes (Modulate).
-  bool modulated_ = false;
-  SmoothSchedule scale_{1.0}, clock_rate_{1.0};
+  std::vector<Vec> knot_p_, knot_m_;
 };
 
 }  // namespace cablefilm

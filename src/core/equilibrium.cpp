@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/block_tridiagonal.h"
+#include "core/constraints.h"
 #include "core/error.h"
 #include "core/force_jacobian.h"
 #include "core/forces.h"
@@ -14,25 +15,25 @@
 namespace cablefilm {
 namespace {
 
-double MinAxialStiffness(const CableModel& m) { return m.axial_stiffness.minCoeff(); }
+double MinAxialStiffness(const Model& m) { return m.line.axial_stiffness.minCoeff(); }
 
 // Stations hanging from the prescribed end along the net weight, each link stretched by the
 // weight it carries (exact for a vertical chain in still fluid).
-Eigen::Matrix2Xd HangingGuess(const CableModel& m) {
-  const bool from_start = m.start.prescribed();
-  const Eigen::Vector2d top = from_start ? m.start.Position(0) : m.end.Position(0);
-  const double total = m.net_weight.sum();
-  const Eigen::Vector2d dir(0.0, total >= 0 ? -1.0 : 1.0);
-  Eigen::Matrix2Xd x(2, m.stations());
-  const int s = m.links;
+Points HangingGuess(const Model& m) {
+  const bool from_start = m.ends.start.prescribed();
+  const Vec top = from_start ? m.ends.start.Position(0) : m.ends.end.Position(0);
+  const double total = m.line.net_weight.sum();
+  const Vec dir(0.0, total >= 0 ? -1.0 : 1.0);
+  Points x(kDim, m.stations());
+  const int s = m.line.links;
   double carried = 0, along = 0;  // weight below the link [N], stretched length so far [m]
   // Walk from the free end towards the prescribed one, accumulating the carried weight.
   Eigen::VectorXd stretched(s);
   for (int k = 0; k < s; ++k) {
     const int link = from_start ? s - 1 - k : k;
     const int below = from_start ? link + 1 : link;
-    carried += m.net_weight[below];
-    stretched[link] = m.rest_length[link] * (1.0 + std::abs(carried) / m.axial_stiffness[link]);
+    carried += m.line.net_weight[below];
+    stretched[link] = m.line.rest_length[link] * (1.0 + std::abs(carried) / m.line.axial_stiffness[link]);
   }
   for (int k = 0; k <= s; ++k) {
     const int j = from_start ? k : s - k;
@@ -44,8 +45,8 @@ Eigen::Matrix2Xd HangingGuess(const CableModel& m) {
 
 // Stations on the catenary of length `length` through a and b, at arc length proportional to
 // the unstretched arc length; `sag_up` flips it for a buoyant cable.
-Eigen::Matrix2Xd CatenaryGuess(const CableModel& m, const Eigen::Vector2d& a,
-                               const Eigen::Vector2d& b, double length, bool sag_up) {
+Points CatenaryGuess(const Model& m, const Vec& a,
+                               const Vec& b, double length, bool sag_up) {
   const double sx = b.x() >= a.x() ? 1.0 : -1.0, sy = sag_up ? -1.0 : 1.0;
   const double h = std::abs(b.x() - a.x());
   const double v = sy * (b.y() - a.y());
@@ -60,15 +61,15 @@ Eigen::Matrix2Xd CatenaryGuess(const CableModel& m, const Eigen::Vector2d& a,
   const double c = h / (2.0 * z);                       // catenary parameter H/w [m]
   const double xm = 0.5 * h - c * std::atanh(v / length);  // abscissa of the lowest point
   const double s0 = std::sinh(-xm / c), c0 = std::cosh(-xm / c);
-  Eigen::Matrix2Xd x(2, m.stations());
-  for (int j = 0; j <= m.links; ++j) {
-    const double arc = m.arc_length[j] / m.total_length() * length;
+  Points x(kDim, m.stations());
+  for (int j = 0; j <= m.line.links; ++j) {
+    const double arc = m.line.arc_length[j] / m.line.total_length() * length;
     const double xl = xm + c * std::asinh(arc / c + s0);
     const double yl = c * (std::cosh((xl - xm) / c) - c0);
-    x.col(j) = a + Eigen::Vector2d(sx * xl, sy * yl);
+    x.col(j) = a + Vec(sx * xl, sy * yl);
   }
   x.col(0) = a;
-  x.col(m.links) = b;
+  x.col(m.line.links) = b;
   return x;
 }
 
@@ -76,15 +77,15 @@ Eigen::Matrix2Xd CatenaryGuess(const CableModel& m, const Eigen::Vector2d& a,
 // the negated Jacobian -dR/dx of the free stations plus beta on the diagonal.
 class StaticProblem {
  public:
-  explicit StaticProblem(const CableModel& m)
-      : m_(m), ws_(m.links), zero_v_(Eigen::Matrix2Xd::Zero(2, m.stations())),
+  StaticProblem(const Model& m, const Water& water)
+      : m_(m), water_(water), ws_(m.line.links), zero_v_(Points::Zero(kDim, m.stations())),
         system_(m.last_free() - m.first_free() + 1),
-        slack_tension_(m.seabed.present ? StaticForceScale(m) : 0.0) {}
+        slack_tension_(m.env.seabed.present ? StaticForceScale(m, water) : 0.0) {}
 
-  const Eigen::Matrix2Xd& Residual(const Eigen::Matrix2Xd& x) {
-    ComputeGeometry(m_, 0.0, x, ws_.geometry);
+  const Points& Residual(const Points& x) {
+    ComputeGeometry(m_, water_, 0.0, x, ws_.geometry);
     ComputeHookeTensions(m_, ws_.geometry, ws_.tension);
-    ComputeStationForces(m_, ws_.geometry, ws_.tension, zero_v_, ws_.force);
+    ComputeStationForces(m_, water_, ws_.geometry, ws_.tension, zero_v_, ws_.force);
     return ws_.force;
   }
   double MaxResidual(int* station = nullptr) const {
@@ -98,7 +99,7 @@ class StaticProblem {
     }
     return r;
   }
-  double ResidualDot(const Eigen::Matrix2Xd& dx) const {
+  double ResidualDot(const Points& dx) const {
     double d = 0;
     for (int j = m_.first_free(); j <= m_.last_free(); ++j) d += ws_.force.col(j).dot(dx.col(j));
     return d;
@@ -108,7 +109,7 @@ class StaticProblem {
         .squaredNorm();
   }
   // Total potential energy of the conservative forces: strain energy plus net weight [J].
-  double Energy(const Eigen::Matrix2Xd& x) {
+  double Energy(const Points& x) {
     ComputeGeometry(x, ws_.geometry);
     return ElasticEnergy(m_, ws_.geometry) + PotentialEnergy(m_, x);
   }
@@ -120,25 +121,25 @@ class StaticProblem {
   // loses it, and the step is solved again until the set is consistent (a few passes). Without
   // this a station just above the bed sees no support, the step drops it far into the stiff bed
   // and the line search cuts the whole step to the few millimetres it may fall.
-  bool NewtonStep(double beta, Eigen::Matrix2Xd& dx) {
+  bool NewtonStep(double beta, Points& dx) {
     const int j0 = m_.first_free(), j1 = m_.last_free();
-    if (m_.seabed.present) {
+    if (m_.env.seabed.present) {
       landed_.resize(m_.stations());
-      for (int j = j0; j <= j1; ++j) landed_[j] = m_.seabed.y - ws_.geometry.elevation[j] > 0;
+      for (int j = j0; j <= j1; ++j) landed_[j] = m_.env.seabed.y - ws_.geometry.elevation[j] > 0;
     }
     for (int pass = 0; pass < kActiveSetPasses; ++pass) {
       system_.SetZero();
-      AddForceJacobian(m_, ws_.geometry, ws_.tension, zero_v_, 0.0, system_);
+      AddForceJacobian(m_, water_, ws_.geometry, ws_.tension, zero_v_, 0.0, system_);
       for (int j = j0; j <= j1; ++j) {
         system_.diag[j - j0].diagonal().array() += beta;
         system_.rhs[j - j0] = ws_.force.col(j);
       }
-      if (m_.seabed.present) {
+      if (m_.env.seabed.present) {
         AddSlackStiffness();
         for (int j = j0; j <= j1; ++j) {
-          const double p = m_.seabed.y - ws_.geometry.elevation[j];  // the bed's force: k p
+          const double p = m_.env.seabed.y - ws_.geometry.elevation[j];  // the bed's force: k p
           if (landed_[j] == (p > 0)) continue;
-          const double k = m_.seabed_stiffness[j];
+          const double k = m_.line.seabed_stiffness[j];
           const double sign = landed_[j] ? 1.0 : -1.0;  // add the spring, or take it away
           system_.diag[j - j0](1, 1) += sign * k;
           system_.rhs[j - j0].y() += sign * k * p;
@@ -148,10 +149,10 @@ class StaticProblem {
       dx.setZero();
       for (int j = j0; j <= j1; ++j) dx.col(j) = system_.rhs[j - j0];
       if (!dx.allFinite()) return false;
-      if (!m_.seabed.present) break;
+      if (!m_.env.seabed.present) break;
       bool changed = false;
       for (int j = j0; j <= j1; ++j) {
-        const bool lands = ws_.geometry.elevation[j] + dx(1, j) < m_.seabed.y;
+        const bool lands = ws_.geometry.elevation[j] + dx(1, j) < m_.env.seabed.y;
         changed |= lands != landed_[j];
         landed_[j] = lands;
       }
@@ -174,10 +175,10 @@ class StaticProblem {
   // term is positive semi-definite, so the step still descends the energy.
   void AddSlackStiffness() {
     const int j0 = m_.first_free(), j1 = m_.last_free();
-    for (int k = 0; k < m_.links; ++k) {
-      if (ws_.geometry.length[k] > m_.rest_length[k]) continue;
-      const Eigen::Vector2d t = ws_.geometry.tangent.col(k);
-      const Eigen::Matrix2d K = (slack_tension_ / m_.rest_length[k]) * t * t.transpose();
+    for (int k = 0; k < m_.line.links; ++k) {
+      if (ws_.geometry.length[k] > m_.line.rest_length[k]) continue;
+      const Vec t = ws_.geometry.tangent.col(k);
+      const Mat K = (slack_tension_ / m_.line.rest_length[k]) * t * t.transpose();
       const int a = k, c = k + 1;
       const bool fa = a >= j0 && a <= j1, fc = c >= j0 && c <= j1;
       if (fa) system_.diag[a - j0] += K;
@@ -189,9 +190,10 @@ class StaticProblem {
     }
   }
 
-  const CableModel& m_;
+  const Model& m_;
+  const Water& water_;
   ForceWorkspace ws_;
-  Eigen::Matrix2Xd zero_v_;
+  Points zero_v_;
   BlockTridiagonal system_;
   std::vector<char> landed_;  // per station: in the bed after the step (seabed only)
   double slack_tension_;      // [N]: see AddSlackStiffness (seabed only)
@@ -202,28 +204,28 @@ class StaticProblem {
 // l (1/cos(phi) - 1), which for stiff links is a force far larger than any load and makes
 // Newton and the pseudo-transient flow crawl. Stations are rebuilt from station 0 and the
 // closure error at a prescribed last station is spread along the arc length.
-void CurvilinearUpdate(const CableModel& m, const Eigen::Matrix2Xd& x, const Eigen::Matrix2Xd& dx,
-                       Eigen::Matrix2Xd& y) {
+void CurvilinearUpdate(const Model& m, const Points& x, const Points& dx,
+                       Points& y) {
   y.col(0) = x.col(0) + dx.col(0);
-  for (int j = 0; j < m.links; ++j) {
-    const Eigen::Vector2d d = x.col(j + 1) - x.col(j);
+  for (int j = 0; j < m.line.links; ++j) {
+    const Vec d = x.col(j + 1) - x.col(j);
     const double L = d.norm();
-    const Eigen::Vector2d delta = dx.col(j + 1) - dx.col(j);
-    if (!(L > 1e-12 * m.rest_length[j])) {
+    const Vec delta = dx.col(j + 1) - dx.col(j);
+    if (!(L > 1e-12 * m.line.rest_length[j])) {
       y.col(j + 1) = y.col(j) + d + delta;
       continue;
     }
-    const Eigen::Vector2d t = d / L, n(-t.y(), t.x());
+    const Vec t = d / L, n(-t.y(), t.x());
     const double stretched = std::max(L + t.dot(delta), 1e-3 * L);  // new length [m]
     const double turn = n.dot(delta) / L;                          // rotation [rad]
     const double c = std::cos(turn), s = std::sin(turn);
-    y.col(j + 1) = y.col(j) + stretched * Eigen::Vector2d(c * t.x() - s * t.y(),
+    y.col(j + 1) = y.col(j) + stretched * Vec(c * t.x() - s * t.y(),
                                                           s * t.x() + c * t.y());
   }
-  const Eigen::Vector2d closure = y.col(m.links) - (x.col(m.links) + dx.col(m.links));
-  if (m.end.prescribed()) {
-    for (int j = 1; j <= m.links; ++j)
-      y.col(j) -= (m.arc_length[j] / m.total_length()) * closure;
+  const Vec closure = y.col(m.line.links) - (x.col(m.line.links) + dx.col(m.line.links));
+  if (m.ends.end.prescribed()) {
+    for (int j = 1; j <= m.line.links; ++j)
+      y.col(j) -= (m.line.arc_length[j] / m.line.total_length()) * closure;
   }
 }
 
@@ -232,19 +234,19 @@ void CurvilinearUpdate(const CableModel& m, const Eigen::Matrix2Xd& x, const Eig
 // negative), so the step descends the energy: an Armijo line search on it makes the iteration
 // converge from slack starts where the links carry nothing. With current the drag is not
 // conservative and the residual norm is the merit function instead. Returns true if converged.
-bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_iter,
+bool Newton(const Model& m, const Water& water, Points& x, double tol_force, int max_iter,
             EquilibriumReport& report, const CancelFlag* cancel) {
-  StaticProblem problem(m);
+  StaticProblem problem(m, water);
   // The seabed's spring is conservative too (its energy is in PotentialEnergy); its damping
   // and friction vanish at rest.
-  const bool conservative = !m.has_current();
+  const bool conservative = !HasCurrent(m, water);
   // With a seabed, a step that lowers the residual but raises the energy is refused (beyond the
   // energy's round-off): the contact's kinks otherwise let the two criteria take turns and the
   // iteration cycle. Near the solution the energy's changes fall below its round-off and the
   // residual decides alone, as without a seabed.
-  const bool energy_first = conservative && m.seabed.present;
-  Eigen::Matrix2Xd dx(2, m.stations()), scaled(2, m.stations()), trial(2, m.stations());
-  const double length_scale = m.total_length();
+  const bool energy_first = conservative && m.env.seabed.present;
+  Points dx(kDim, m.stations()), scaled(kDim, m.stations()), trial(kDim, m.stations());
+  const double length_scale = m.line.total_length();
   problem.Residual(x);
   double r_inf = problem.MaxResidual();
   double beta = 0;
@@ -296,15 +298,16 @@ bool Newton(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_
 // a damped dynamic run would settle in. beta halves after a step that lowered the residual and
 // doubles after one that raised it, so the last steps are Newton's. No link is stretched or
 // turned by more than a quarter of its length in one step, so no step folds the line.
-bool PseudoTransient(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force, int max_iter,
+bool PseudoTransient(const Model& m, const Water& water, Points& x, double tol_force,
+                     int max_iter,
                      EquilibriumReport& report, const CancelFlag* cancel) {
-  StaticProblem problem(m);
-  Eigen::Matrix2Xd dx(2, m.stations()), trial(2, m.stations());
+  StaticProblem problem(m, water);
+  Points dx(kDim, m.stations()), trial(kDim, m.stations());
   problem.Residual(x);
   double r_inf = problem.MaxResidual();
   double r2 = problem.ResidualNorm2();
   // Start where a step moves the most loaded station by about a tenth of the shortest link.
-  const double beta0 = std::max(r_inf, 1e-12) / (0.1 * m.rest_length.minCoeff());  // [N/m]
+  const double beta0 = std::max(r_inf, 1e-12) / (0.1 * m.line.rest_length.minCoeff());  // [N/m]
   double beta = beta0;
   for (int it = 0; it < max_iter; ++it, ++report.iterations) {
     if (r_inf <= tol_force) return true;
@@ -314,9 +317,9 @@ bool PseudoTransient(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force,
       continue;
     }
     double scale = 1.0;
-    for (int j = 0; j < m.links; ++j) {
+    for (int j = 0; j < m.line.links; ++j) {
       const double relative = (dx.col(j + 1) - dx.col(j)).norm();  // [m]
-      if (relative * scale > 0.25 * m.rest_length[j]) scale = 0.25 * m.rest_length[j] / relative;
+      if (relative * scale > 0.25 * m.line.rest_length[j]) scale = 0.25 * m.line.rest_length[j] / relative;
     }
     dx *= scale;
     CurvilinearUpdate(m, x, dx, trial);
@@ -337,27 +340,29 @@ bool PseudoTransient(const CableModel& m, Eigen::Matrix2Xd& x, double tol_force,
 
 }  // namespace
 
-double StaticForceScale(const CableModel& m) {
+double StaticForceScale(const Model& m) { return StaticForceScale(m, SceneWater(m)); }
+
+double StaticForceScale(const Model& m, const Water& water) {
   // The cable's and prisms' net weights and the drag of the current on them (as if broadside),
   // and, for ends further apart than the cable is long, the tension of the stretched chord: a
   // weightless taut line has no other force scale (without it the tolerance would be 1e-18 N).
-  const double current_load = 0.5 * m.max_current() * m.max_current() *
-                              (2.0 * m.drag_factor.sum() + m.prism_drag.colwise().sum().sum());
+  const double current_load = 0.5 * MaxCurrent(m, water) * MaxCurrent(m, water) *
+                              (2.0 * m.line.drag_factor.sum() + m.line.prism_drag.colwise().sum().sum());
   double chord_tension = 0;
-  if (m.start.prescribed() && m.end.prescribed()) {
-    const double chord = (m.end.Position(0) - m.start.Position(0)).norm();
-    chord_tension = m.axial_stiffness.minCoeff() * std::max(0.0, chord / m.total_length() - 1.0);
+  if (m.ends.start.prescribed() && m.ends.end.prescribed()) {
+    const double chord = (m.ends.end.Position(0) - m.ends.start.Position(0)).norm();
+    chord_tension = m.line.axial_stiffness.minCoeff() * std::max(0.0, chord / m.line.total_length() - 1.0);
   }
-  return std::max(m.net_weight.cwiseAbs().sum() + current_load + chord_tension, 1e-9);
+  return std::max(m.line.net_weight.cwiseAbs().sum() + current_load + chord_tension, 1e-9);
 }
 
-Eigen::Matrix2Xd StraightChord(const CableModel& m) {
-  if (!m.start.prescribed() && !m.end.prescribed())
+Points StraightChord(const Model& m) {
+  if (!m.ends.start.prescribed() && !m.ends.end.prescribed())
     throw Error("the cable needs at least one prescribed end (fixed or moving)");
-  const Eigen::Vector2d a = m.start.Position(0), b = m.end.Position(0);
-  Eigen::Matrix2Xd x(2, m.stations());
-  for (int j = 0; j <= m.links; ++j) {
-    const double f = m.arc_length[j] / m.total_length();
+  const Vec a = m.ends.start.Position(0), b = m.ends.end.Position(0);
+  Points x(kDim, m.stations());
+  for (int j = 0; j <= m.line.links; ++j) {
+    const double f = m.line.arc_length[j] / m.line.total_length();
     x.col(j) = (1.0 - f) * a + f * b;
   }
   return x;
@@ -368,10 +373,10 @@ namespace {
 // Stations of a guess that lie below the seabed raised onto it (the catenary of a long line sags
 // through it): a guess far inside the bed's stiff spring starts Newton with forces far above
 // any load.
-Eigen::Matrix2Xd OntoSeabed(const CableModel& m, Eigen::Matrix2Xd x) {
-  if (!m.seabed.present) return x;
+Points OntoSeabed(const Model& m, Points x) {
+  if (!m.env.seabed.present) return x;
   for (int j = m.first_free(); j <= m.last_free(); ++j)
-    x(1, j) = std::max(x(1, j), m.seabed.y);
+    x(1, j) = std::max(x(1, j), m.env.seabed.y);
   return x;
 }
 
@@ -382,11 +387,11 @@ Eigen::Matrix2Xd OntoSeabed(const CableModel& m, Eigen::Matrix2Xd x) {
 // (a clipped catenary leaves them short, and Newton would pull them straight a link at a time).
 // False if no touchdown fits (the line too short to reach the bed tangentially, or so long it
 // would pile up on it).
-bool GroundedGuess(const CableModel& m, double length, Eigen::Matrix2Xd& x) {
-  const double bed = m.seabed.y;
-  const bool start_low = m.start.Position(0).y() <= m.end.Position(0).y();
-  const Eigen::Vector2d A = start_low ? m.start.Position(0) : m.end.Position(0);
-  const Eigen::Vector2d B = start_low ? m.end.Position(0) : m.start.Position(0);
+bool GroundedGuess(const Model& m, double length, Points& x) {
+  const double bed = m.env.seabed.y;
+  const bool start_low = m.ends.start.Position(0).y() <= m.ends.end.Position(0).y();
+  const Vec A = start_low ? m.ends.start.Position(0) : m.ends.end.Position(0);
+  const Vec B = start_low ? m.ends.end.Position(0) : m.ends.start.Position(0);
   const double drop = A.y() - bed, rise = B.y() - bed;  // [m], both >= 0
   const double span = std::abs(B.x() - A.x()), sx = B.x() >= A.x() ? 1.0 : -1.0;
   if (!(rise > 0) || !(span > 0) || drop < 0) return false;
@@ -414,72 +419,63 @@ bool GroundedGuess(const CableModel& m, double length, Eigen::Matrix2Xd& x) {
   }
   const double run = 0.5 * (lo + hi), c = parameter(run);
   const double grounded = span - run;
-  x.resize(2, m.stations());
-  for (int j = 0; j <= m.links; ++j) {
-    const double f = m.arc_length[j] / m.total_length();
+  x.resize(kDim, m.stations());
+  for (int j = 0; j <= m.line.links; ++j) {
+    const double f = m.line.arc_length[j] / m.line.total_length();
     double sigma = (start_low ? f : 1.0 - f) * length;  // path length from A
-    Eigen::Vector2d p;
+    Vec p;
     if (sigma <= drop) {
-      p = Eigen::Vector2d(A.x(), A.y() - sigma);
+      p = Vec(A.x(), A.y() - sigma);
     } else if ((sigma -= drop) <= grounded) {
-      p = Eigen::Vector2d(A.x() + sx * sigma, bed);
+      p = Vec(A.x() + sx * sigma, bed);
     } else {
       sigma -= grounded;  // arc length along the catenary from the touchdown
       const double u = std::asinh(sigma / c);
-      p = Eigen::Vector2d(A.x() + sx * (grounded + c * u), bed + c * (std::cosh(u) - 1.0));
+      p = Vec(A.x() + sx * (grounded + c * u), bed + c * (std::cosh(u) - 1.0));
     }
     x.col(j) = p;
   }
-  x.col(0) = m.start.Position(0);
-  x.col(m.links) = m.end.Position(0);
+  x.col(0) = m.ends.start.Position(0);
+  x.col(m.line.links) = m.ends.end.Position(0);
   return true;
 }
 
-Eigen::Matrix2Xd FreeGuess(const CableModel& m) {
-  if (!m.start.prescribed() || !m.end.prescribed()) {
+Points FreeGuess(const Model& m) {
+  if (!m.ends.start.prescribed() || !m.ends.end.prescribed()) {
     StraightChord(m);  // throws when both ends are free
     return HangingGuess(m);
   }
-  const Eigen::Vector2d a = m.start.Position(0), b = m.end.Position(0);
-  const double chord = (b - a).norm(), length = m.total_length();
-  const double w = m.net_weight.sum() / length;  // mean net weight [N/m]
+  const Vec a = m.ends.start.Position(0), b = m.ends.end.Position(0);
+  const double chord = (b - a).norm(), length = m.line.total_length();
+  const double w = m.line.net_weight.sum() / length;  // mean net weight [N/m]
   // Stretch the guess by the tension a catenary of the mean weight would have, so that its
   // links are taut (a guess at exactly the rest length sits on the slack switch).
   const double tension_guess = std::abs(w) * length;
   const double stretched = length * (1.0 + std::max(1e-6, tension_guess / MinAxialStiffness(m)));
   const double h = std::abs(b.x() - a.x());
   if (chord >= stretched || h < 1e-6 * length) return StraightChord(m);
-  Eigen::Matrix2Xd x = CatenaryGuess(m, a, b, stretched, w < 0);
-  if (m.seabed.present && w > 0 && x.row(1).minCoeff() < m.seabed.y) GroundedGuess(m, stretched, x);
+  Points x = CatenaryGuess(m, a, b, stretched, w < 0);
+  if (m.env.seabed.present && w > 0 && x.row(1).minCoeff() < m.env.seabed.y) GroundedGuess(m, stretched, x);
   return x;
 }
 
 }  // namespace
 
-Eigen::Matrix2Xd EquilibriumGuess(const CableModel& m) { return OntoSeabed(m, FreeGuess(m)); }
+Points EquilibriumGuess(const Model& m) { return OntoSeabed(m, FreeGuess(m)); }
 
-CableState SolveEquilibrium(const CableModel& m, EquilibriumReport* report,
+State SolveEquilibrium(const Model& m, EquilibriumReport* report,
                             const EquilibriumOptions& options) {
   return SolveEquilibrium(m, EquilibriumGuess(m), report, options);
 }
 
-CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
+State SolveEquilibrium(const Model& m, const Points& guess,
                             EquilibriumReport* report_out, const EquilibriumOptions& options) {
-  if (m.has_waves() && m.wave.amplitude != 0) {
-    // The mean state: the line in calm water with the current, under the still water level (a
-    // station above it has no buoyancy, drag or added mass, as in the run); the waves' ramp
-    // starts the run from it.
-    CableModel calm = m;
-    calm.wave.amplitude = 0;
-    calm.wave.spec.height = 0;
-    return SolveEquilibrium(calm, guess, report_out, options);
-  }
-  if (!m.start.prescribed() && !m.end.prescribed())
+  if (!m.ends.start.prescribed() && !m.ends.end.prescribed())
     throw Error("the cable needs at least one prescribed end (fixed or moving)");
   EquilibriumReport report;
-  Eigen::Matrix2Xd x = guess;
-  x.col(0) = m.start.prescribed() ? m.start.Position(0) : x.col(0);
-  x.col(m.links) = m.end.prescribed() ? m.end.Position(0) : x.col(m.links);
+  Points x = guess;
+  x.col(0) = m.ends.start.prescribed() ? m.ends.start.Position(0) : x.col(0);
+  x.col(m.line.links) = m.ends.end.prescribed() ? m.ends.end.Position(0) : x.col(m.line.links);
 
   report.force_scale = StaticForceScale(m);
   const double tol = options.tolerance * report.force_scale;
@@ -489,23 +485,28 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
   // the 5e-4 N asked, and a grounded chain in a sheared current never converged. An iteration
   // that stalls within that floor has converged as far as double precision allows.
   const double reach = std::max(x.cwiseAbs().maxCoeff(), 1.0);  // m
-  const double stiffest = (m.axial_stiffness.array() / m.rest_length.array()).maxCoeff();  // N/m
+  const double stiffest = (m.line.axial_stiffness.array() / m.line.rest_length.array()).maxCoeff();  // N/m
   report.roundoff_floor = 4.0 * std::numeric_limits<double>::epsilon() * reach * stiffest;
 
   // Continuation in the current: solve still water first, then raise the current in steps,
   // each starting from the last equilibrium (the drag load is not conservative). The
   // parameter is the uniform current itself, or with a profile the fraction of the whole
   // current (uniform and profile alike).
-  const bool profile = !m.current_profile.empty();
-  const double full = profile ? 1.0 : m.current;
+  // With waves the mean state: the line in calm water with the current, under the still water
+  // level (a station above it has no buoyancy, drag or added mass, as in the run); the waves'
+  // ramp starts the run from it.
+  Water calm = SceneWater(m);
+  calm.wave.amplitude = 0;
+  calm.wave.spec.height = 0;
+  const bool profile = !m.env.current_profile.empty();
+  const double full = profile ? 1.0 : m.env.current;
   auto with_current = [&](double level) {
-    if (profile) return ScaleCurrent(m, level);
-    CableModel c = m;
-    c.current = level;
-    return c;
+    Water w = calm;
+    (profile ? w.current_scale : w.current) = level;
+    return w;
   };
-  const CableModel still = with_current(0.0);
-  bool ok = Newton(still, x, tol, options.max_iterations, report, options.cancel);
+  const Water still = with_current(0.0);
+  bool ok = Newton(m, still, x, tol, options.max_iterations, report, options.cancel);
   double reached = 0;
   double increment = 0.25 * full;
   // Bounded: a current so small that a quarter of it underflows goes in at once.
@@ -514,10 +515,10 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
                         ? full
                         : reached + increment;
     if (target == reached) target = full;
-    const CableModel step = with_current(target);
-    Eigen::Matrix2Xd trial = x;
+    const Water step = with_current(target);
+    Points trial = x;
     ++report.current_steps;
-    if (Newton(step, trial, tol, options.max_iterations, report, options.cancel)) {
+    if (Newton(m, step, trial, tol, options.max_iterations, report, options.cancel)) {
       x = trial;
       reached = target;
     } else if (std::abs(increment) > 1e-3 * std::abs(full) &&
@@ -534,11 +535,11 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
     // first guess) does not need one.
     report.fallback = true;
     const int before = report.iterations;
-    ok = PseudoTransient(m, x, tol, options.max_pseudo_transient_iterations, report,
+    ok = PseudoTransient(m, calm, x, tol, options.max_pseudo_transient_iterations, report,
                          options.cancel);
     report.fallback_iterations = report.iterations - before;
   }
-  StaticProblem problem(m);
+  StaticProblem problem(m, calm);
   problem.Residual(x);
   int worst = 0;
   report.residual = problem.MaxResidual(&worst);
@@ -555,11 +556,41 @@ CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
           "[initial] state = \"straight\" starts it from the chord instead";
     throw Error(os.str());
   }
-  CableState state;
+  State state;
   state.t = 0;
   state.x = x;
-  state.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+  state.v = Points::Zero(kDim, m.stations());
   return state;
+}
+
+
+State SolveInextensibleEquilibrium(const Model& m, EquilibriumReport* report) {
+  if (m.ends.start.prescribed() && m.ends.end.prescribed()) {
+    const double chord = (m.ends.end.Position(0) - m.ends.start.Position(0)).norm();
+    if (chord >= m.line.total_length()) {
+      std::ostringstream os;
+      os << "the ends are " << chord << " m apart but the inextensible cable is only "
+         << m.line.total_length() << " m long";
+      throw Error(os.str());
+    }
+  }
+  // A penalty stiffness that stretches the cable by about 1e-6 under its loads: stiff enough
+  // for Richardson extrapolation in 1/EA to be exact to O(1e-12), soft enough for the Newton
+  // residual to stay above round-off.
+  const double load = StaticForceScale(m);
+  Model stiff = m;
+  stiff.line.law = LinkLaw::kElastic;
+  stiff.line.axial_stiffness.setConstant(1e6 * load);
+  EquilibriumReport first;
+  const State soft = SolveEquilibrium(stiff, &first);
+  stiff.line.axial_stiffness *= 2.0;
+  State hard = SolveEquilibrium(stiff, soft.x, report);
+  if (report) report->iterations += first.iterations;
+  hard.x = 2.0 * hard.x - soft.x;  // the limit EA -> infinity, error O(1/EA^2)
+  ConstraintSolver solver(m);
+  if (!solver.ProjectPositions(m, hard.x, 1e-13))
+    throw Error("cannot place the inextensible cable at its rest lengths between its ends");
+  return hard;
 }
 
 }  // namespace cablefilm

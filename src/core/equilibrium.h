@@ -5,9 +5,10 @@
 // tridiagonal (2x2 blocks), so each iteration costs O(s).
 #include <Eigen/Core>
 
-#include "core/cable_model.h"
-#include "core/cable_state.h"
+#include "core/model.h"
 #include "core/cancel.h"
+#include "core/data.h"
+#include "core/inputs.h"
 
 namespace cablefilm {
 
@@ -30,25 +31,32 @@ struct EquilibriumOptions {
   const CancelFlag* cancel = nullptr;  // polled every iteration: CancelledError when raised
 };
 
-// The static load the residual is measured against [N]: net weights plus the current's drag.
-double StaticForceScale(const CableModel& m);
+// The static load the residual is measured against [N]: net weights plus the current's drag
+// (the scene's current, or that of `water`).
+double StaticForceScale(const Model& m);
+double StaticForceScale(const Model& m, const Water& water);
 
 // A first guess that is close for most cables: an elastic catenary of the mean net weight
 // through the two ends (straight and uniformly stretched when taut), or a line hanging from
 // the prescribed end along the net weight when the other end is free. A catenary that sags
 // through a seabed is replaced by the catenary with a grounded part (lying along the bed from
 // the lower end, leaving it tangentially); any station still below the bed is raised onto it.
-Eigen::Matrix2Xd EquilibriumGuess(const CableModel& m);
+Points EquilibriumGuess(const Model& m);
 
 // The stations evenly spaced on the chord between the ends (the "straight" initial state and
 // the poorest reasonable start of the solver).
-Eigen::Matrix2Xd StraightChord(const CableModel& m);
+Points StraightChord(const Model& m);
 
 // Throws Error with the iterations and the residual if it does not converge.
-CableState SolveEquilibrium(const CableModel& m, const Eigen::Matrix2Xd& guess,
+State SolveEquilibrium(const Model& m, const Points& guess,
                             EquilibriumReport* report = nullptr,
                             const EquilibriumOptions& options = {});
-CableState SolveEquilibrium(const CableModel& m, EquilibriumReport* report = nullptr,
+State SolveEquilibrium(const Model& m, EquilibriumReport* report = nullptr,
                             const EquilibriumOptions& options = {});
+
+// Static equilibrium of the inextensible cable: the elastic equilibrium with a stiffness so
+// high that the stretch is negligible, extrapolated to infinite stiffness, projected exactly
+// onto the rest lengths. Throws Error if the ends are further apart than the cable is long.
+State SolveInextensibleEquilibrium(const Model& m, EquilibriumReport* report);
 
 }  // namespace cablefilm

@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 
 #include "core/block_tridiagonal.h"
-#include "core/cable_model.h"
+#include "core/model.h"
 #include "core/forces.h"
 
 namespace cablefilm {
@@ -14,12 +14,13 @@ namespace cablefilm {
 // links' normal drag through
 // both their orientation and the relative velocity, and the prisms' drag. kv = dv/dx of the
 // time-stepping scheme (0 for statics). `g` and `tension` must be those of x.
-void AddForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::VectorXd& tension,
-                      const Eigen::Matrix2Xd& v, double kv, BlockTridiagonal& system);
+void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
+                      const Eigen::VectorXd& tension, const Points& v, double kv,
+                      BlockTridiagonal& system);
 
 // Adds  ka M(x) + d(M(x) a)/dx  to `system`: the inertia of eq. (1) with the dependence of the
 // normal added mass on the links' orientation. ka = da/dx of the time-stepping scheme.
-void AddInertiaJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& a,
+void AddInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
                         double ka, BlockTridiagonal& system);
 
 }  // namespace cablefilm

@@ -5,24 +5,25 @@
 #include <Eigen/Core>
 #include <cmath>
 
-#include "core/cable_model.h"
+#include "core/inputs.h"
+#include "core/model.h"
 
 namespace cablefilm {
 
 // The water at each station at one time (waves only: wave_forces.h fills it; empty otherwise).
 struct SeaState {
   double t = 0;                       // the time it is for [s]
-  Eigen::Matrix2Xd velocity;          // water particle velocity (u, w) [m/s] (2 x s+1)
-  Eigen::Matrix2Xd acceleration;      // its local acceleration [m/s^2] (2 x s+1)
-  Eigen::Matrix4Xd velocity_gradient;      // d(u, w)/d(x, y) [1/s], column-major 2x2 per station
-  Eigen::Matrix4Xd acceleration_gradient;  // d(du/dt, dw/dt)/d(x, y) [1/s^2], likewise
+  Points velocity;          // water particle velocity (u, w) [m/s] (2 x s+1)
+  Points acceleration;      // its local acceleration [m/s^2] (2 x s+1)
+  Gradients velocity_gradient;     // d(u, w)/d(x, y) [1/s], column-major kDim x kDim per station
+  Gradients acceleration_gradient; // d(du/dt, dw/dt)/d(x, y) [1/s^2], likewise
   Eigen::VectorXd wet;                // phi_j in [0, 1]: the station's wet fraction
-  Eigen::Matrix2Xd wet_gradient;      // d phi_j / d(x_j, y_j) [1/m]
+  Points wet_gradient;      // d phi_j / d(x_j, y_j) [1/m]
 };
 
 struct LinkGeometry {
   Eigen::VectorXd length;    // L_{j+1/2} = |x_{j+1} - x_j| [m] (size s)
-  Eigen::Matrix2Xd tangent;  // (cos theta, sin theta)_{j+1/2} (2 x s); zero for a zero-length link
+  Points tangent;  // (cos theta, sin theta)_{j+1/2} (2 x s); zero for a zero-length link
   Eigen::VectorXd elevation;  // y_j of the stations [m] (size s+1): the seabed, the current
                               // profile
   SeaState sea;               // the waves' water at the stations (only with waves)
@@ -31,31 +32,32 @@ struct LinkGeometry {
 struct ForceWorkspace {
   LinkGeometry geometry;
   Eigen::VectorXd tension;   // T_{j+1/2} [N] (size s)
-  Eigen::Matrix2Xd force;    // right-hand side of eq. (1) per station (X + tension terms) [N]
+  Points force;    // right-hand side of eq. (1) per station (X + tension terms) [N]
 
   explicit ForceWorkspace(int links = 0) { Resize(links); }
   void Resize(int links);
 };
 
-void ComputeGeometry(const Eigen::Matrix2Xd& x, LinkGeometry& g);
-// The same, and with waves the sea at time t [s] (wave_forces.h): what the forces of a
-// simulation at time t need. Without waves it is the one above.
-void ComputeGeometry(const CableModel& m, double t, const Eigen::Matrix2Xd& x, LinkGeometry& g);
+void ComputeGeometry(const Points& x, LinkGeometry& g);
+// The same, and with waves the sea of `water` at time t [s] (wave_forces.h): what the forces of
+// a simulation at time t need. Without waves it is the one above.
+void ComputeGeometry(const Model& m, const Water& water, double t, const Points& x,
+                     LinkGeometry& g);
 
 // Eq. (2), with a compressed link slack: T = max(0, sigma E (L/l - 1)).
 // d n / d d [1/m] for the unit normal n = R d / |d| of a link d = x_{k+1} - x_k (R: a quarter
 // turn), t = d / |d| its tangent and L = |d| its length [m]: the Jacobians' normal drag terms.
-Eigen::Matrix2d NormalDerivative(const Eigen::Vector2d& t, double L);
+Mat NormalDerivative(const Vec& t, double L);
 
-void ComputeHookeTensions(const CableModel& m, const LinkGeometry& g, Eigen::VectorXd& tension);
+void ComputeHookeTensions(const Model& m, const LinkGeometry& g, Eigen::VectorXd& tension);
 
 // Internal axial damping (Kelvin-Voigt, not in the paper): a taut link's tension gains
 // c_{j+1/2} dL/dt, dL/dt = t . (v_{j+1} - v_j), and stays >= 0 (a cable cannot push); a slack
 // link has none. No-op when the model has no damping.
-void AddAxialDamping(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
+void AddAxialDamping(const Model& m, const LinkGeometry& g, const Points& v,
                      Eigen::VectorXd& tension);
 // The tension of the dynamics: Hooke's law plus the axial damping.
-void ComputeTensions(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
+void ComputeTensions(const Model& m, const LinkGeometry& g, const Points& v,
                      Eigen::VectorXd& tension);
 
 // The seabed's normal reaction N on station j at penetration p > 0 with vertical velocity vy
@@ -73,37 +75,37 @@ struct SeabedReaction {
   double dN_dp = 0;   // [N/m]
   double dN_dvy = 0;  // [N s/m]
 };
-SeabedReaction SeabedNormal(const CableModel& m, int j, double p, double vy);
+SeabedReaction SeabedNormal(const Model& m, int j, double p, double vy);
 
 // force_j = T_{j+1/2} t_{j+1/2} - T_{j-1/2} t_{j-1/2} + (X_j, Y_j), for every station.
-// v: station velocities; the current enters through the relative velocity.
-void ComputeStationForces(const CableModel& m, const LinkGeometry& g,
-                          const Eigen::VectorXd& tension, const Eigen::Matrix2Xd& v,
-                          Eigen::Matrix2Xd& force);
+// v: station velocities; the current (of `water`) enters through the relative velocity.
+void ComputeStationForces(const Model& m, const Water& water, const LinkGeometry& g,
+                          const Eigen::VectorXd& tension, const Points& v, Points& force);
 
 // The external part (X_j, Y_j) only: drag, prism drag, weight and buoyancy, and the seabed's
 // reaction and friction (SeabedSpec) on the stations below it. With waves also the water's
 // velocity in the drag, its acceleration (Morison inertia) and the surface (wave_forces.h);
 // g.sea must then be filled (ComputeGeometry with the model and the time).
-void AddExternalForces(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
-                       Eigen::Matrix2Xd& force);
+void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g,
+                       const Points& v, Points& force);
 
 // The inertia tensor of eq. (1) at station j: [[I_j, -K_j], [-K_j, J_j]] [kg]. With waves the
 // added masses are those of the wet part (g.sea.wet; all wet if g.sea is empty).
-Eigen::Matrix2d StationInertia(const CableModel& m, const LinkGeometry& g, int j);
+Mat StationInertia(const Model& m, const LinkGeometry& g, int j);
 
-// Accelerations of the stations whose motion is computed (free stations); prescribed ends get
-// their exact acceleration. Fills ws.geometry, ws.tension and ws.force along the way.
-void ComputeAccelerations(const CableModel& m, double t, const Eigen::Matrix2Xd& x,
-                          const Eigen::Matrix2Xd& v, ForceWorkspace& ws, Eigen::Matrix2Xd& a);
+// Accelerations of the stations whose motion is computed (free stations) in `water`; prescribed
+// ends get their exact acceleration (as the inputs move them). Fills ws.geometry, ws.tension and
+// ws.force along the way.
+void ComputeAccelerations(const Model& m, const Inputs& in, const Water& water, double t,
+                          const Points& x, const Points& v, ForceWorkspace& ws, Points& a);
 
 // Energies for conservation checks [J]: kinetic (with the normal added mass), elastic strain
 // energy of the links, and potential of the net weight (y = 0 datum) plus the strain energy of
 // the seabed's springs (k l_j p_j^2 / 2 for the stations below it) and, with waves, of the
 // buoyancy lost above the still water level (SurfaceBuoyancyEnergy).
-double KineticEnergy(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v);
-double ElasticEnergy(const CableModel& m, const LinkGeometry& g);
-double PotentialEnergy(const CableModel& m, const Eigen::Matrix2Xd& x);
-double SeabedEnergy(const CableModel& m, const Eigen::Matrix2Xd& x);  // the springs only
+double KineticEnergy(const Model& m, const LinkGeometry& g, const Points& v);
+double ElasticEnergy(const Model& m, const LinkGeometry& g);
+double PotentialEnergy(const Model& m, const Points& x);
+double SeabedEnergy(const Model& m, const Points& x);  // the springs only
 
 }  // namespace cablefilm

@@ -5,13 +5,13 @@
 
 namespace cablefilm {
 
-SnapMonitor::SnapMonitor(const CableModel& m)
-    : rest_length_(m.rest_length), tau_(m.links), taut_(m.links) {
-  for (int j = 0; j < m.links; ++j) {
+SnapMonitor::SnapMonitor(const Model& m)
+    : rest_length_(m.line.rest_length), tau_(m.line.links), taut_(m.line.links) {
+  for (int j = 0; j < m.line.links; ++j) {
     // Station masses along the link [kg]: cable plus prism (the smaller axis, the faster mode).
-    const double ma = m.cable_mass[j] + m.prism_mass.col(j).minCoeff();
-    const double mb = m.cable_mass[j + 1] + m.prism_mass.col(j + 1).minCoeff();
-    const double k = m.axial_stiffness[j] / m.rest_length[j];  // [N/m]
+    const double ma = m.line.cable_mass[j] + m.line.prism_mass.col(j).minCoeff();
+    const double mb = m.line.cable_mass[j + 1] + m.line.prism_mass.col(j + 1).minCoeff();
+    const double k = m.line.axial_stiffness[j] / m.line.rest_length[j];  // [N/m]
     const double omega2 = k * (1.0 / ma + 1.0 / mb);           // [1/s^2]
     tau_[j] = omega2 > 0 ? M_PI / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
   }

@@ -10,7 +10,7 @@
 // The monitor also keeps the smallest and largest step. O(s) per step, no allocation.
 #include <Eigen/Core>
 
-#include "core/cable_model.h"
+#include "core/model.h"
 
 namespace cablefilm {
 
@@ -29,7 +29,8 @@ struct StepRecord {
 
 class SnapMonitor {
  public:
-  explicit SnapMonitor(const CableModel& m);
+  SnapMonitor() = default;
+  explicit SnapMonitor(const Model& m);
   // The state the steps start from: which links are taut (stretched beyond their rest length;
   // with axial damping a stretched link's tension can be 0 for a moment).
   void Start(const Eigen::VectorXd& length);

@@ -6,16 +6,16 @@
 
 namespace cablefilm {
 
-StabilityLimit ComputeStabilityLimit(const CableModel& m) {
+StabilityLimit ComputeStabilityLimit(const Model& m) {
   // Axial stiffness k = sigma E / l of each link; the smallest eigenvalue of the station inertia
   // is at least m_j + min(m^x, m^y) (the normal added mass only adds). Gershgorin's bound on
   // the mass-scaled stiffness matrix M^-1/2 K M^-1/2, row j:
   //   (k_l + k_r)/m_j + k_l/sqrt(m_j m_{j-1}) + k_r/sqrt(m_j m_{j+1}).
-  auto inertia = [&](int j) { return m.cable_mass[j] + m.SmallestPrismMass(j); };
+  auto inertia = [&](int j) { return m.line.cable_mass[j] + m.SmallestPrismMass(j); };
   // The same bound on M^-1/2 C M^-1/2 for the axial damping c gives gamma_max [1/s].
   auto coefficient = [&](const Eigen::VectorXd& per_link, int k, bool stiffness) {
     if (per_link.size() == 0) return 0.0;
-    return stiffness ? per_link[k] / m.rest_length[k] : per_link[k];
+    return stiffness ? per_link[k] / m.line.rest_length[k] : per_link[k];
   };
   StabilityLimit out;
   double lambda_max = 0, gamma_max = 0;
@@ -23,13 +23,13 @@ StabilityLimit ComputeStabilityLimit(const CableModel& m) {
     const double mj = inertia(j);
     double row[2] = {0, 0};  // stiffness, damping
     for (int which = 0; which < 2; ++which) {
-      const Eigen::VectorXd& per_link = which == 0 ? m.axial_stiffness : m.axial_damping;
+      const Eigen::VectorXd& per_link = which == 0 ? m.line.axial_stiffness : m.line.axial_damping;
       if (j > 0) {
         const double k = coefficient(per_link, j - 1, which == 0);
         row[which] += k / mj;
         if (!m.prescribed(j - 1)) row[which] += k / std::sqrt(mj * inertia(j - 1));
       }
-      if (j < m.links) {
+      if (j < m.line.links) {
         const double k = coefficient(per_link, j, which == 0);
         row[which] += k / mj;
         if (!m.prescribed(j + 1)) row[which] += k / std::sqrt(mj * inertia(j + 1));
@@ -38,9 +38,9 @@ StabilityLimit ComputeStabilityLimit(const CableModel& m) {
     // The seabed's spring and dashpot act on the station alone (the diagonal): any station
     // may come to rest on it, so every one counts. Its reaction is at most twice the spring's
     // (forces.cpp), a stiffness of up to 2 k l_j.
-    if (m.seabed.present) {
-      row[0] += 2.0 * m.seabed_stiffness[j] / mj;
-      row[1] += m.seabed_damping[j] / mj;
+    if (m.env.seabed.present) {
+      row[0] += 2.0 * m.line.seabed_stiffness[j] / mj;
+      row[1] += m.line.seabed_damping[j] / mj;
     }
     if (row[0] > lambda_max) {
       lambda_max = row[0];

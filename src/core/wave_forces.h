@@ -21,13 +21,13 @@
 #include <Eigen/Core>
 
 #include "core/block_tridiagonal.h"
-#include "core/cable_model.h"
+#include "core/model.h"
 #include "core/forces.h"
 
 namespace cablefilm {
 
 // Fills g.sea for time t at the positions x (sizes it on the first call).
-void ComputeSea(const CableModel& m, double t, const Eigen::Matrix2Xd& x, SeaState& sea);
+void ComputeSea(const Model& m, const Water& water, double t, const Points& x, SeaState& sea);
 
 // The wet fraction phi(u) of the surface band and its derivative d phi / du.
 double WetFraction(double u);
@@ -36,24 +36,24 @@ double WetFractionSlope(double u);
 // The potential [J] of the buoyancy lost above the still water level (the static problem's
 // surface): -dV/dy_j = -(1 - phi_j) B_j, V_j = B_j (y_j + l_j G(u_j)) with G(u) the integral of
 // phi from 0 to u, u_j = (y_surface - y_j) / l_j + 1/2; constant for a station under water.
-double SurfaceBuoyancyEnergy(const CableModel& m, const Eigen::Matrix2Xd& x);
+double SurfaceBuoyancyEnergy(const Model& m, const Points& x);
 
 // The external forces with waves (the formulas above), weight included, seabed excluded.
-void AddWaveExternalForces(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
-                           Eigen::Matrix2Xd& force);
+void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometry& g,
+                           const Points& v, Points& force);
 
 // The inertia tensor of station j with the wet fractions of g.sea (all wet if it is empty).
-Eigen::Matrix2d WaveStationInertia(const CableModel& m, const LinkGeometry& g, int j);
+Mat WaveStationInertia(const Model& m, const LinkGeometry& g, int j);
 
 // -dF/dx - kv dF/dv of the forces above (force_jacobian.h's convention): through the links'
 // orientation, the water's velocity and acceleration gradients, the current profile, the wet
 // fractions' gradients (drag, inertia, buoyancy) and the relative velocity.
-void AddWaveForceJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& v,
-                          double kv, BlockTridiagonal& system);
+void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
+                          const Points& v, double kv, BlockTridiagonal& system);
 
 // d(M(x) a)/dx through the wet fractions of the added masses (the orientation part is in
 // AddInertiaJacobian).
-void AddWaveInertiaJacobian(const CableModel& m, const LinkGeometry& g, const Eigen::Matrix2Xd& a,
+void AddWaveInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
                             BlockTridiagonal& system);
 
 }  // namespace cablefilm

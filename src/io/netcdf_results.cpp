@@ -44,7 +44,7 @@ void KeepFreedMemoryForTheCompressor() {
 }  // namespace
 
 NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
-                                         const CableModel& m, const CableState& initial,
+                                         const Model& m, const State& initial,
                                          const Eigen::VectorXd& initial_tension)
     : path_(path), temp_path_(path + ".tmp" + std::to_string(::getpid())) {
   KeepFreedMemoryForTheCompressor();
@@ -59,11 +59,11 @@ NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfRe
   }
 }
 
-void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const CableModel& m,
-                                 const CableState& initial,
+void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
+                                 const State& initial,
                                  const Eigen::VectorXd& initial_tension) {
   stations_ = m.stations();
-  links_ = m.links;
+  links_ = m.line.links;
   const std::string& f = temp_path_;
   int created = -1;
   Check(nc_create(f.c_str(), NC_NETCDF4 | NC_CLOBBER, &created), f, "create");
@@ -165,10 +165,10 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const CableModel
   for (int j = 0; j < stations_; ++j) index[static_cast<size_t>(j)] = j;
   std::vector<double> s_link(static_cast<size_t>(links_)), row(static_cast<size_t>(stations_));
   for (int j = 0; j < links_; ++j)
-    s_link[static_cast<size_t>(j)] = 0.5 * (m.arc_length[j] + m.arc_length[j + 1]);
+    s_link[static_cast<size_t>(j)] = 0.5 * (m.line.arc_length[j] + m.line.arc_length[j + 1]);
   Check(nc_put_var_int(nc, var_station, index.data()), f, "station");
   Check(nc_put_var_int(nc, var_link, index.data()), f, "link");
-  Check(nc_put_var_double(nc, var_s, m.arc_length.data()), f, "s");
+  Check(nc_put_var_double(nc, var_s, m.line.arc_length.data()), f, "s");
   Check(nc_put_var_double(nc, var_s_link, s_link.data()), f, "s_link");
   for (int c = 0; c < 2; ++c) {
     for (int j = 0; j < stations_; ++j) row[static_cast<size_t>(j)] = initial.x(c, j);
@@ -220,7 +220,7 @@ std::unique_ptr<NetcdfResultsWriter::Block> NetcdfResultsWriter::NewBlock() {
   return b;
 }
 
-void NetcdfResultsWriter::Append(const CableState& s, const Eigen::VectorXd& tension) {
+void NetcdfResultsWriter::Append(const State& s, const Eigen::VectorXd& tension) {
   if (!filling_) filling_ = NewBlock();  // after a failed hand-over
   Block& b = *filling_;
   if (b.rows == 0) b.first = rows_;

@@ -25,8 +25,9 @@
 #include <thread>
 #include <vector>
 
-#include "core/cable_model.h"
-#include "core/cable_state.h"
+#include "core/model.h"
+#include "core/data.h"
+#include "run/driver.h"
 
 namespace cablefilm {
 
@@ -40,7 +41,7 @@ struct NetcdfResultsInfo {
   std::string initial_state;  // "equilibrium" or "straight"
 };
 
-class NetcdfResultsWriter {
+class NetcdfResultsWriter : public RowSink {
  public:
   static constexpr int kChunkRows = 64;            // rows of a chunk, at most
   static constexpr long kChunkBytes = 4L << 20;    // bytes of a chunk of x, at most (about)
@@ -48,7 +49,7 @@ class NetcdfResultsWriter {
 
   // Creates `path`'s temporary file and writes what does not change over time. Throws Error.
   NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
-                      const CableModel& m, const CableState& initial,
+                      const Model& m, const State& initial,
                       const Eigen::VectorXd& initial_tension);
   ~NetcdfResultsWriter();  // uncommitted: the rows not yet written are dropped, the temporary
                            // file removed
@@ -56,7 +57,11 @@ class NetcdfResultsWriter {
   NetcdfResultsWriter& operator=(const NetcdfResultsWriter&) = delete;
 
   // One output row. Throws Error on a write error (of this row or of an earlier chunk).
-  void Append(const CableState& state, const Eigen::VectorXd& tension);
+  void Append(const State& state, const Eigen::VectorXd& tension);
+  bool Row(const Data& d) override {
+    Append(d.state, d.tension());
+    return true;
+  }
   // Writes the rows still waiting, closes and renames; throws Error on a write error.
   void Commit();                                // the complete file, under its name
   void CommitPartial(const std::string& path);  // an incomplete run, under another name
@@ -71,7 +76,7 @@ class NetcdfResultsWriter {
     int rows = 0;
     std::vector<double> time, x, y, tension, ends[4];  // ends: x_start, y_start, x_end, y_end
   };
-  void Define(const NetcdfResultsInfo& info, const CableModel& m, const CableState& initial,
+  void Define(const NetcdfResultsInfo& info, const Model& m, const State& initial,
               const Eigen::VectorXd& initial_tension);  // the file and what is fixed
   void StartWriter();
   std::unique_ptr<Block> NewBlock();  // a free one, or a new one

@@ -7,14 +7,14 @@
 
 namespace cablefilm {
 
-void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const CableState& state,
+void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& state,
                          const Eigen::VectorXd& tension) {
   AtomicFile file(path);
   std::FILE* f = file.stream();
   std::fprintf(f, "j,s,x,y,tension\n");
-  for (int j = 0; j <= m.links; ++j) {
-    std::fprintf(f, "%d,%.10g,%.12g,%.12g,", j, m.arc_length[j], state.x(0, j), state.x(1, j));
-    if (j < m.links) std::fprintf(f, "%.10g", tension[j]);
+  for (int j = 0; j <= m.line.links; ++j) {
+    std::fprintf(f, "%d,%.10g,%.12g,%.12g,", j, m.line.arc_length[j], state.x(0, j), state.x(1, j));
+    if (j < m.line.links) std::fprintf(f, "%.10g", tension[j]);
     std::fprintf(f, "\n");
   }
   file.Commit();
@@ -48,22 +48,23 @@ void RemoveEarlierResults(const std::string& out_dir) {
 
 const char kTimeseriesHeader[] = "t,x_end,y_end,tension_start,tension_end,tension_max,link_max\n";
 
-void WriteTimeseriesRow(std::FILE* f, const CableModel& m, const CableState& s,
+void WriteTimeseriesRow(std::FILE* f, const Model& m, const State& s,
                         const Eigen::VectorXd& tension) {
   Eigen::Index link_max = 0;
   const double t_max = tension.maxCoeff(&link_max);
-  std::fprintf(f, "%.10g,%.12g,%.12g,%.10g,%.10g,%.10g,%d\n", s.t, s.x(0, m.links),
-               s.x(1, m.links), tension[0], tension[m.links - 1], t_max,
+  std::fprintf(f, "%.10g,%.12g,%.12g,%.10g,%.10g,%.10g,%d\n", s.t, s.x(0, m.line.links),
+               s.x(1, m.line.links), tension[0], tension[m.line.links - 1], t_max,
                static_cast<int>(link_max));
 }
 
-TimeseriesWriter::TimeseriesWriter(const std::string& path) : file_(path) {
+TimeseriesWriter::TimeseriesWriter(const std::string& path, const Model& m)
+    : file_(path), m_(m) {
   std::fputs(kTimeseriesHeader, file_.stream());
 }
 
-void TimeseriesWriter::Append(const CableModel& m, const CableState& s,
-                              const Eigen::VectorXd& tension) {
-  WriteTimeseriesRow(file_.stream(), m, s, tension);
+bool TimeseriesWriter::Row(const Data& d) {
+  WriteTimeseriesRow(file_.stream(), m_, d.state, d.tension());
+  return true;
 }
 
 void TimeseriesWriter::Commit() { file_.Commit(); }

@@ -5,14 +5,15 @@
 #include <memory>
 #include <string>
 
-#include "core/cable_model.h"
-#include "core/cable_state.h"
+#include "core/model.h"
+#include "core/data.h"
 #include "io/atomic_file.h"
+#include "run/driver.h"
 
 namespace cablefilm {
 
 // equilibrium.csv: j,s,x,y,tension (tension of link j+1/2; empty on the last row).
-void WriteEquilibriumCsv(const std::string& path, const CableModel& m, const CableState& state,
+void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& state,
                          const Eigen::VectorXd& tension);
 
 // Removes the result files an earlier run may have left in `out_dir` (only the names a run
@@ -23,19 +24,21 @@ void RemoveEarlierResults(const std::string& out_dir);
 
 // One row of timeseries.csv, and its header line (shared with the live view's /timeseries.csv).
 extern const char kTimeseriesHeader[];  // with its newline
-void WriteTimeseriesRow(std::FILE* f, const CableModel& m, const CableState& state,
+void WriteTimeseriesRow(std::FILE* f, const Model& m, const State& state,
                         const Eigen::VectorXd& tension);
 
-// timeseries.csv: t,x_end,y_end,tension_start,tension_end,tension_max,link_max.
-class TimeseriesWriter {
+// timeseries.csv: t,x_end,y_end,tension_start,tension_end,tension_max,link_max; a run's rows as
+// they come.
+class TimeseriesWriter : public RowSink {
  public:
-  explicit TimeseriesWriter(const std::string& path);
-  void Append(const CableModel& m, const CableState& state, const Eigen::VectorXd& tension);
+  TimeseriesWriter(const std::string& path, const Model& m);
+  bool Row(const Data& d) override;
   void Commit();                                  // the complete file, under its name
   void CommitPartial(const std::string& path);    // an incomplete run, under another name
 
  private:
   AtomicFile file_;
+  const Model& m_;
 };
 
 }  // namespace cablefilm

@@ -1,6 +1,8 @@
 #include "io/run_report_file.h"
 
 #include <cstdio>
+#include <limits>
+#include <toml++/toml.h>
 
 #include "core/snap_monitor.h"
 #include "io/atomic_file.h"
@@ -20,8 +22,8 @@ std::string TomlString(const std::string& text) {
 
 }  // namespace
 
-void WriteRunReport(const std::string& path, const RunFacts& f,
-                    const std::vector<std::string>& warnings) {
+void WriteRunReport(const std::string& path, const RunSummary& f) {
+  const std::vector<std::string>& warnings = f.warnings;
   AtomicFile file(path);
   std::FILE* out = file.stream();
   // TOML, like the scene: a reader of the scene reads this too.
@@ -46,12 +48,48 @@ void WriteRunReport(const std::string& path, const RunFacts& f,
                f.min_tension);
   std::fprintf(out, "min_tension_time = %.10g     # [s]\nmin_tension_link = %d\n", f.min_tension_t,
                f.min_tension_link);
-  std::fprintf(out, "peak_converged = %s\n", warnings.empty() ? "true" : "false");
+  std::fprintf(out, "peak_converged = %s\n", f.peak_converged() ? "true" : "false");
   std::fprintf(out, "warnings = [");
   for (size_t i = 0; i < warnings.size(); ++i)
     std::fprintf(out, "%s\n  %s", i ? "," : "", TomlString(warnings[i]).c_str());
   std::fprintf(out, "%s]\n", warnings.empty() ? "" : "\n");
   file.Commit();
+}
+
+bool ReadRunReport(const std::string& path, RunSummary* s) {
+  toml::table r;
+  try {
+    r = toml::parse_file(path);
+  } catch (const std::exception&) {
+    return false;
+  }
+  auto number = [&](const char* key, double fallback) {
+    return r[key].value<double>().value_or(fallback);
+  };
+  auto whole = [&](const char* key) { return r[key].value<long>().value_or(-1); };
+  s->scheme = r["scheme"].value<std::string>().value_or("");
+  s->tolerance = number("tolerance", 0);
+  s->duration = number("duration", 0);
+  s->wall = number("computer_time", 0);
+  s->stats.steps = whole("steps");
+  s->stats.rejected = whole("rejected_steps");
+  s->stats.newton_iterations = whole("newton_iterations");
+  s->stats.record.smallest_step = number("smallest_step", 0);
+  s->stats.record.largest_step = number("largest_step", 0);
+  s->stats.record.snaps = whole("snaps");
+  s->stats.record.unresolved_snaps = whole("unresolved_snaps");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  s->peak = number("peak_tension", nan);
+  s->peak_t = number("peak_time", nan);
+  s->peak_link = static_cast<int>(whole("peak_link"));
+  s->min_tension = number("min_tension", nan);
+  s->min_tension_t = number("min_tension_time", nan);
+  s->min_tension_link = static_cast<int>(whole("min_tension_link"));
+  s->warnings.clear();
+  if (const toml::array* w = r["warnings"].as_array())
+    for (const toml::node& n : *w) s->warnings.push_back(n.value<std::string>().value_or(""));
+  s->completed = true;  // a report is written for a complete run only
+  return r.contains("peak_tension");
 }
 
 }  // namespace cablefilm

@@ -8,8 +8,12 @@
 
 namespace cablefilm {
 
-// Writes run_report<suffix>.toml into out_dir, whole or not at all.
-void WriteRunReport(const std::string& path, const RunFacts& facts,
-                    const std::vector<std::string>& warnings);
+// Writes a run's summary to `path` (run_report.toml, run_report_inextensible.toml), whole or not
+// at all.
+void WriteRunReport(const std::string& path, const RunSummary& summary);
+
+// The summary a run_report.toml holds (the numbers a sweep's row shows); false when `path` is
+// none such.
+bool ReadRunReport(const std::string& path, RunSummary* summary);
 
 }  // namespace cablefilm

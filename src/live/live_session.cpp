@@ -23,7 +23,7 @@ namespace {
 using Json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-CableSnapshot ToSnapshot(double t, const Eigen::Matrix2Xd& x, const Eigen::VectorXd& tension) {
+CableSnapshot ToSnapshot(double t, const Points& x, const Eigen::VectorXd& tension) {
   CableSnapshot s;
   s.t = t;
   for (Eigen::Index j = 0; j < x.cols(); ++j) {
@@ -35,15 +35,15 @@ CableSnapshot ToSnapshot(double t, const Eigen::Matrix2Xd& x, const Eigen::Vecto
 }
 
 LiveScenery MakeScenery(const SceneDef& scene, const LiveSimulation& sim) {
-  const CableModel& m = sim.model();
+  const Model& m = sim.model();
   LiveScenery s;
   s.title = scene.title;
-  s.arc_length.assign(m.arc_length.data(), m.arc_length.data() + m.arc_length.size());
-  s.section_boundaries = m.section_boundaries;
+  s.arc_length.assign(m.line.arc_length.data(), m.line.arc_length.data() + m.line.arc_length.size());
+  s.section_boundaries = m.line.section_boundaries;
   for (const SectionDef& sec : scene.sections)
     s.section_names.push_back(scene.materials.at(sec.material).name);
-  s.weight_stations = m.weight_stations;
-  for (int j : {0, m.links}) {
+  s.weight_stations = m.line.weight_stations;
+  for (int j : {0, m.line.links}) {
     if (m.end_motion(j).moves()) s.moving_ends.push_back(j);
     if (m.end_motion(j).kind() == EndKind::kFixed) s.fixed_ends.push_back(j);
     if (m.end_motion(j).kind() == EndKind::kFree) s.free_ends.push_back(j);
@@ -51,10 +51,10 @@ LiveScenery MakeScenery(const SceneDef& scene, const LiveSimulation& sim) {
   s.equilibrium = ToSnapshot(0, sim.initial_state().x, sim.initial_tensions());
   if (scene.initial == InitialStateKind::kStraight) s.reference_label = kStraightStateLabel;
   s.window = scene.simulation.duration;
-  s.seabed = m.seabed.present;
-  s.seabed_y = m.seabed.y;
+  s.seabed = m.env.seabed.present;
+  s.seabed_y = m.env.seabed.y;
   s.waves = m.has_waves();
-  s.wave = m.wave;
+  s.wave = sim.wave();
   return s;
 }
 
@@ -68,7 +68,7 @@ ControlLimits MakeLimits(const LiveSimulation& sim) {
   }
   l.current_max = std::max(3.0, 2 * std::abs(sea.current));
   if (sim.model().has_waves()) {  // up to the breaking height (Miche's, as the scene's check)
-    const Wave& w = sim.model().wave;
+    const Wave& w = sim.model().env.wave;
     l.has_waves = true;
     l.wave_height_max = w.breaking_height();
     // A third to three times the scene's period, within 1 s to 60 s (a shorter period lowers
@@ -115,7 +115,7 @@ LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
   targets_ = sim_.targets();
   {
     std::lock_guard<std::mutex> lock(mu_);
-    history_.SetWave(sim_.model().wave);
+    history_.SetWave(sim_.wave());
     history_.Add(0, sim_.state().x, sim_.tensions());
     rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
     PublishLocked();
@@ -217,7 +217,7 @@ void LiveSession::ApplyPending() {
     rows_.Clear();
     error_.clear();
     progress_.clear();
-    history_.SetWave(sim_.model().wave);
+    history_.SetWave(sim_.wave());
     history_.Add(sim_.t(), sim_.state().x, sim_.tensions());
     rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
   }
@@ -274,7 +274,7 @@ void LiveSession::SimulationLoop() {
       ++state_version_;
       continue;
     }
-    history_.SetWave(sim_.model().wave);
+    history_.SetWave(sim_.wave());
     history_.Add(sim_.t(), sim_.state().x, sim_.tensions());
     rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
     progress_.emplace_back(Seconds(start_, Clock::now()), sim_.t());

@@ -27,7 +27,7 @@ void RowLog::Clear() {
   rows_ = 0;
 }
 
-void RowLog::Append(const CableModel& m, const CableState& s, const Eigen::VectorXd& tension) {
+void RowLog::Append(const Model& m, const State& s, const Eigen::VectorXd& tension) {
   WriteTimeseriesRow(file_, m, s, tension);
   ++rows_;
 }

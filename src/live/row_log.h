@@ -7,8 +7,8 @@
 #include <functional>
 #include <string>
 
-#include "core/cable_model.h"
-#include "core/cable_state.h"
+#include "core/model.h"
+#include "core/data.h"
 
 namespace cablefilm {
 
@@ -20,7 +20,7 @@ class RowLog {
   RowLog& operator=(const RowLog&) = delete;
 
   void Clear();  // a restart
-  void Append(const CableModel& m, const CableState& s, const Eigen::VectorXd& tension);
+  void Append(const Model& m, const State& s, const Eigen::VectorXd& tension);
   long rows() const { return rows_; }
   // The bytes written so far (flushed): call under the session's lock...
   long Flush();

@@ -20,6 +20,7 @@
 
 #include "scene/film_settings.h"
 #include "scene/scene_loader.h"
+#include "run/initial_state.h"
 #include "run/memory_run.h"
 #include "run/run_summary.h"
 #include "run/sweep_plan.h"
@@ -84,9 +85,9 @@ py::object RunScene(const SceneHandle& scene) {
     throw SceneProblem(SceneErrorMessage(scene.path(), e.what()));
   }
   py::object result = MakeResult(run, scene);
-  if (!run->failure.empty()) {
+  if (!run->run.summary.failure.empty()) {
     py::object error =
-        py::reinterpret_borrow<py::object>(g_blow_up_error)(py::str(run->failure));
+        py::reinterpret_borrow<py::object>(g_blow_up_error)(py::str(run->run.summary.failure));
     error.attr("result") = result;
     PyErr_SetObject(g_blow_up_error, error.ptr());
     throw py::error_already_set();
@@ -103,29 +104,40 @@ py::array View(const py::object& owner, const double* data, std::vector<py::ssiz
   return a;
 }
 
+// The positions along `axis` of every row [rows, stations] (station -1), or of the start (0) or
+// the end (1) station [rows].
+py::array Positions(const py::object& self, int axis, int station) {
+  const MemoryRun& r = *self.cast<Result&>().run;
+  const int stations = r.run.model.stations();
+  const double* data = r.rows.x[axis].data();
+  if (station < 0) return View(self, data, {r.rows.rows, stations}, {stations, 1});
+  return View(self, data + (station == 0 ? 0 : stations - 1), {r.rows.rows}, {stations});
+}
+
 py::array Copy(const Eigen::VectorXd& v) {
   py::array_t<double> a(v.size());
   std::memcpy(a.mutable_data(), v.data(), sizeof(double) * static_cast<std::size_t>(v.size()));
   return std::move(a);
 }
 
-py::array LinkMidpoints(const CableModel& m) {
-  py::array_t<double> a(m.links);
+py::array LinkMidpoints(const Model& m) {
+  py::array_t<double> a(m.line.links);
   double* out = a.mutable_data();
-  for (int j = 0; j < m.links; ++j) out[j] = 0.5 * (m.arc_length[j] + m.arc_length[j + 1]);
+  for (int j = 0; j < m.line.links; ++j) out[j] = 0.5 * (m.line.arc_length[j] + m.line.arc_length[j + 1]);
   return std::move(a);
 }
 
 py::dict StatsDict(const MemoryRun& r) {
+  const RunSummary& s = r.run.summary;
   py::dict d;
-  d["integrator"] = r.integrator;
-  d["steps"] = r.stats.steps;
-  d["rejected"] = r.stats.rejected;
-  d["newton_iterations"] = r.stats.newton_iterations;
-  d["snaps"] = r.stats.record.snaps;
-  d["unresolved_snaps"] = r.stats.record.unresolved_snaps;
-  d["equilibrium_iterations"] = r.equilibrium.iterations;
-  d["equilibrium_residual"] = r.equilibrium.residual;
+  d["integrator"] = s.scheme;
+  d["steps"] = s.stats.steps;
+  d["rejected"] = s.stats.rejected;
+  d["newton_iterations"] = s.stats.newton_iterations;
+  d["snaps"] = s.stats.record.snaps;
+  d["unresolved_snaps"] = s.stats.record.unresolved_snaps;
+  d["equilibrium_iterations"] = r.run.equilibrium.iterations;
+  d["equilibrium_residual"] = r.run.equilibrium.residual;
   return d;
 }
 
@@ -140,9 +152,9 @@ struct Equilibrium {
 Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
   SceneDef def = scene.def();
   def.initial = InitialStateKind::kEquilibrium;
-  const CableModel& m = scene.model();
+  const Model& m = scene.model();
   struct Solved {
-    CableState state;
+    State state;
     EquilibriumReport report;
     Eigen::VectorXd tension;
   };
@@ -152,10 +164,9 @@ Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
     solved = RunInterruptible(cancel, [&] {
       Solved s;
       s.state = MakeInitialState(def, m, &s.report, &cancel);
-      // The tensions as the run's first row gives them: the integrator's, at the state.
-      auto integrator = MakeIntegrator(m, ChooseTimeGrid(m, def.simulation, def.output.interval));
-      integrator->Initialize(m, s.state);
-      s.tension = integrator->tensions();
+      // The tensions as the run's first row gives them: its scheme's, at the state.
+      const TimeGrid grid = ChooseTimeGrid(m, def.simulation, def.output.interval);
+      s.tension = MakeData(m, SceneInputs(m), grid.options, s.state).tension();
       return s;
     });
   } catch (const CancelledError&) {
@@ -167,7 +178,7 @@ Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
   e.x = Copy(solved.state.x.row(0).transpose());
   e.y = Copy(solved.state.x.row(1).transpose());
   e.tension = Copy(solved.tension);
-  e.s = Copy(m.arc_length);
+  e.s = Copy(m.line.arc_length);
   e.s_link = LinkMidpoints(m);
   e.iterations = solved.report.iterations;
   e.residual = solved.report.residual;
@@ -223,17 +234,18 @@ py::array RenderFrame(const py::object& obj, std::optional<double> t, std::optio
   const MemoryRun& run = RunOf(obj, &holder);
   FilmRequest request = FilmOptions(run, width, height, std::nullopt, std::nullopt, colormap,
                                     tension_range, false);
-  long chosen = run.rows - 1;
+  const MemoryRows& rows = run.rows;
+  long chosen = rows.rows - 1;
   if (row && t) throw py::value_error("give t or row, not both");
   if (row) {
-    chosen = *row < 0 ? run.rows + *row : *row;
-    if (chosen < 0 || chosen >= run.rows)
+    chosen = *row < 0 ? rows.rows + *row : *row;
+    if (chosen < 0 || chosen >= rows.rows)
       throw py::index_error("row " + std::to_string(*row) + ": the run has " +
-                            std::to_string(run.rows) + " rows");
+                            std::to_string(rows.rows) + " rows");
   } else if (t) {  // the row nearest t (the earlier of two as near)
     chosen = 0;
-    for (long r = 1; r < run.rows; ++r)
-      if (std::fabs(run.time[r] - *t) < std::fabs(run.time[chosen] - *t)) chosen = r;
+    for (long r = 1; r < rows.rows; ++r)
+      if (std::fabs(rows.time[r] - *t) < std::fabs(rows.time[chosen] - *t)) chosen = r;
   }
   CancelFlag cancel{0};
   const Image image = RunInterruptible(cancel, [&] {
@@ -388,21 +400,21 @@ py::list Sweep(const py::object& source, const py::dict& values, std::optional<p
     for (std::size_t k = 0; k < all.keys.size(); ++k) d[py::str(all.keys[k])] = object_of(k, all.rows[i][k]);
     const Outcome& o = outcomes[i];
     const py::object none = py::none();
-    d["status"] = o.run ? (o.run->completed ? "ok" : "blow-up") : "error";
-    std::vector<std::string> warnings;
-    if (o.run) warnings = TrustWarnings(o.run->model, o.run->stats);
-    d["message"] = !o.error.empty() ? o.error
-                   : o.run && !o.run->failure.empty() ? o.run->failure
-                   : !warnings.empty() ? warnings.front() : std::string();
-    const bool ok = o.run && o.run->completed;
-    d["peak_tension"] = ok ? py::object(py::float_(o.run->peak)) : none;
-    d["peak_time"] = ok ? py::object(py::float_(o.run->peak_t)) : none;
-    d["peak_link"] = ok ? py::object(py::int_(o.run->peak_link)) : none;
-    d["min_tension"] = ok ? py::object(py::float_(o.run->min_tension)) : none;
-    d["min_tension_time"] = ok ? py::object(py::float_(o.run->min_tension_t)) : none;
-    d["min_tension_link"] = ok ? py::object(py::int_(o.run->min_tension_link)) : none;
-    d["snaps"] = ok ? py::object(py::int_(o.run->stats.record.snaps)) : none;
-    d["peak_converged"] = ok ? py::object(py::bool_(warnings.empty())) : none;
+    const RunSummary* s = o.run ? &o.run->run.summary : nullptr;
+    d["status"] = s ? (s->completed ? "ok" : "blow-up") : "error";
+    d["message"] = !o.error.empty()           ? o.error
+                   : s && !s->failure.empty() ? s->failure
+                   : s && !s->warnings.empty() ? s->warnings.front()
+                                               : std::string();
+    const bool ok = s && s->completed;
+    d["peak_tension"] = ok ? py::object(py::float_(s->peak)) : none;
+    d["peak_time"] = ok ? py::object(py::float_(s->peak_t)) : none;
+    d["peak_link"] = ok ? py::object(py::int_(s->peak_link)) : none;
+    d["min_tension"] = ok ? py::object(py::float_(s->min_tension)) : none;
+    d["min_tension_time"] = ok ? py::object(py::float_(s->min_tension_t)) : none;
+    d["min_tension_link"] = ok ? py::object(py::int_(s->min_tension_link)) : none;
+    d["snaps"] = ok ? py::object(py::int_(s->stats.record.snaps)) : none;
+    d["peak_converged"] = ok ? py::object(py::bool_(s->peak_converged())) : none;
     if (keep_results) d["result"] = o.run ? MakeResult(o.run, scenes[i]) : none;
     rows.append(d);
   }
@@ -469,10 +481,10 @@ the loader: a bad key or value raises SceneError and leaves the scene as it was.
                              "The file it came from (or the name given to a dict).")
       .def_property_readonly("title", [](const SceneHandle& s) { return s.def().title; })
       .def_property_readonly("stations", [](const SceneHandle& s) { return s.model().stations(); })
-      .def_property_readonly("links", [](const SceneHandle& s) { return s.model().links; })
+      .def_property_readonly("links", [](const SceneHandle& s) { return s.model().line.links; })
       .def("__repr__", [](const SceneHandle& s) {
         return "<cablefilm.Scene " + s.path() + ": \"" + s.def().title + "\", " +
-               std::to_string(s.model().links) + " links>";
+               std::to_string(s.model().line.links) + " links>";
       });
 
   m.def("load", &SceneOf, py::arg("source"), py::arg("name") = py::none(),
@@ -484,57 +496,41 @@ time [n] (s), x, y [n, stations] (m), tension [n, links] (N, 0 when slack), the 
 x_start, y_start, x_end, y_end [n] (m), arc lengths s [stations], s_link [links] (m). The arrays
 are read-only views of the run.)")
       .def_property_readonly("time", [](const py::object& self) {
-        const MemoryRun& r = *self.cast<Result&>().run;
+        const MemoryRows& r = self.cast<Result&>().run->rows;
         return View(self, r.time.data(), {r.rows}, {1});
       })
-      .def_property_readonly("x", [](const py::object& self) {
-        const MemoryRun& r = *self.cast<Result&>().run;
-        return View(self, r.x.data(), {r.rows, r.model.stations()}, {r.model.stations(), 1});
-      })
-      .def_property_readonly("y", [](const py::object& self) {
-        const MemoryRun& r = *self.cast<Result&>().run;
-        return View(self, r.y.data(), {r.rows, r.model.stations()}, {r.model.stations(), 1});
-      })
+      .def_property_readonly("x", [](const py::object& self) { return Positions(self, 0, -1); })
+      .def_property_readonly("y", [](const py::object& self) { return Positions(self, 1, -1); })
       .def_property_readonly("tension", [](const py::object& self) {
         const MemoryRun& r = *self.cast<Result&>().run;
-        return View(self, r.tension.data(), {r.rows, r.model.links}, {r.model.links, 1});
+        const int links = r.run.model.line.links;
+        return View(self, r.rows.tension.data(), {r.rows.rows, links}, {links, 1});
       })
-      .def_property_readonly("x_start", [](const py::object& self) {
-        const MemoryRun& r = *self.cast<Result&>().run;
-        return View(self, r.x.data(), {r.rows}, {r.model.stations()});
-      })
-      .def_property_readonly("y_start", [](const py::object& self) {
-        const MemoryRun& r = *self.cast<Result&>().run;
-        return View(self, r.y.data(), {r.rows}, {r.model.stations()});
-      })
-      .def_property_readonly("x_end", [](const py::object& self) {
-        const MemoryRun& r = *self.cast<Result&>().run;
-        return View(self, r.x.data() + r.model.links, {r.rows}, {r.model.stations()});
-      })
-      .def_property_readonly("y_end", [](const py::object& self) {
-        const MemoryRun& r = *self.cast<Result&>().run;
-        return View(self, r.y.data() + r.model.links, {r.rows}, {r.model.stations()});
-      })
-      .def_property_readonly("s", [](const Result& r) { return Copy(r.run->model.arc_length); })
-      .def_property_readonly("s_link", [](const Result& r) { return LinkMidpoints(r.run->model); })
+      .def_property_readonly("x_start", [](const py::object& self) { return Positions(self, 0, 0); })
+      .def_property_readonly("y_start", [](const py::object& self) { return Positions(self, 1, 0); })
+      .def_property_readonly("x_end", [](const py::object& self) { return Positions(self, 0, 1); })
+      .def_property_readonly("y_end", [](const py::object& self) { return Positions(self, 1, 1); })
+      .def_property_readonly("s", [](const Result& r) { return Copy(r.run->run.model.line.arc_length); })
+      .def_property_readonly("s_link", [](const Result& r) { return LinkMidpoints(r.run->run.model); })
       .def_property_readonly("scene", [](const Result& r) { return r.scene; })
-      .def_property_readonly("completed", [](const Result& r) { return r.run->completed; })
-      .def_property_readonly("failure", [](const Result& r) { return r.run->failure; })
-      .def_property_readonly("peak_tension", [](const Result& r) { return r.run->peak; },
+      .def_property_readonly("completed", [](const Result& r) { return r.run->run.summary.completed; })
+      .def_property_readonly("failure", [](const Result& r) { return r.run->run.summary.failure; })
+      .def_property_readonly("peak_tension", [](const Result& r) { return r.run->run.summary.peak; },
                              "The largest tension of any row [N] (the run's printed peak).")
-      .def_property_readonly("peak_time", [](const Result& r) { return r.run->peak_t; })
-      .def_property_readonly("peak_link", [](const Result& r) { return r.run->peak_link; })
-      .def_property_readonly("min_tension", [](const Result& r) { return r.run->min_tension; })
-      .def_property_readonly("min_tension_time", [](const Result& r) { return r.run->min_tension_t; })
-      .def_property_readonly("min_tension_link", [](const Result& r) { return r.run->min_tension_link; })
+      .def_property_readonly("peak_time", [](const Result& r) { return r.run->run.summary.peak_t; })
+      .def_property_readonly("peak_link", [](const Result& r) { return r.run->run.summary.peak_link; })
+      .def_property_readonly("min_tension", [](const Result& r) { return r.run->run.summary.min_tension; })
+      .def_property_readonly("min_tension_time", [](const Result& r) { return r.run->run.summary.min_tension_t; })
+      .def_property_readonly("min_tension_link", [](const Result& r) { return r.run->run.summary.min_tension_link; })
       .def_property_readonly("stats", [](const Result& r) { return StatsDict(*r.run); })
       .def_property_readonly("warnings", [](const Result& r) {
-        return TrustWarnings(r.run->model, r.run->stats);
+        return r.run->run.summary.warnings;
       }, "Why the peak cannot be trusted (empty: converged), as run_report.toml says.")
       .def("__repr__", [](const Result& r) {
-        return "<cablefilm.Result " + std::to_string(r.run->rows) + " rows, " +
-               std::to_string(r.run->model.stations()) + " stations, peak " +
-               FormatNumber(r.run->peak) + " N" + (r.run->completed ? "" : ", cut short") + ">";
+        const RunSummary& s = r.run->run.summary;
+        return "<cablefilm.Result " + std::to_string(r.run->rows.rows) + " rows, " +
+               std::to_string(r.run->run.model.stations()) + " stations, peak " +
+               FormatNumber(s.peak) + " N" + (s.completed ? "" : ", cut short") + ">";
       });
 
   m.def("run", [](const py::object& scene) { return RunScene(SceneOf(scene, std::nullopt)); },

@@ -17,7 +17,7 @@ namespace cablefilm::python {
 SceneHandle SceneHandle::Checked(std::string text, std::string path, SceneDef def) {
   // What `check` does before the equilibrium: the model built and its limits.
   try {
-    CableModel model = BuildModel(def);
+    Model model = BuildModel(def);
     CheckModelLimits(def, model);
     return SceneHandle(std::move(text), std::move(path), std::move(def), std::move(model));
   } catch (const Error& e) {

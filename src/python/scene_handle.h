@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/cable_model.h"
+#include "core/model.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm::python {
@@ -30,7 +30,7 @@ class SceneHandle {
   const std::string& text() const { return text_; }
   const std::string& path() const { return path_; }
   const SceneDef& def() const { return def_; }
-  const CableModel& model() const { return model_; }
+  const Model& model() const { return model_; }
 
   // Sets keys[i] (dotted scene paths) to the TOML values values[i], all at once; on a problem
   // throws SceneProblem (or Error for a key that does not fit the scene) and changes nothing.
@@ -39,14 +39,14 @@ class SceneHandle {
   std::string ValueDocument(const std::string& key) const;
 
  private:
-  SceneHandle(std::string text, std::string path, SceneDef def, CableModel model)
+  SceneHandle(std::string text, std::string path, SceneDef def, Model model)
       : text_(std::move(text)), path_(std::move(path)), def_(std::move(def)),
         model_(std::move(model)) {}
   static SceneHandle Checked(std::string text, std::string path, SceneDef def);
   std::string text_;
   std::string path_;
   SceneDef def_;
-  CableModel model_;
+  Model model_;
 };
 
 }  // namespace cablefilm::python

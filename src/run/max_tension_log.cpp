@@ -26,22 +26,13 @@ MaxTensionLog::MaxTensionLog(MaxTensionLog&& o) noexcept
     : file_(o.file_),
       rows_(o.rows_),
       written_(o.written_),
-      pending_(std::move(o.pending_)),
-      peak_(o.peak_),
-      peak_t_(o.peak_t_),
-      peak_link_(o.peak_link_) {
+      pending_(std::move(o.pending_)) {
   o.file_ = nullptr;
   o.rows_ = o.written_ = 0;
   o.pending_.clear();
 }
 
-void MaxTensionLog::Append(double t, double tension_max, int link) {
-  // The first row, or a larger tension (NaN peak_: none yet); the first of equal ones stays.
-  if (!std::isnan(tension_max) && !(tension_max <= peak_)) {
-    peak_ = tension_max;
-    peak_t_ = t;
-    peak_link_ = link;
-  }
+void MaxTensionLog::Append(double t, double tension_max) {
   pending_.push_back(t);
   pending_.push_back(tension_max);
   ++rows_;

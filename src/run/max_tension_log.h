@@ -1,9 +1,9 @@
 #pragma once
 // The largest link tension of every output row of a run (the tension_max column of
 // timeseries.csv, as exact doubles), kept in an anonymous temporary file (16 bytes a row, gone
-// when the program ends: memory stays bounded however long the run) with the peak over the
-// rows. The one source of the run's reported peak, of max_tension.png and of the film's time
-// plot, so that all of them agree with the CSV.
+// when the program ends: memory stays bounded however long the run). The one source of
+// max_tension.png and of the film's time plot, so that both agree with the CSV and the run's
+// reported peak (RunSummary, from the same rows).
 #include <cstdio>
 #include <limits>
 #include <vector>
@@ -19,16 +19,11 @@ class MaxTensionLog {
   MaxTensionLog(const MaxTensionLog&) = delete;
   MaxTensionLog& operator=(const MaxTensionLog&) = delete;
 
-  // One output row: its time t [s] (increasing), the largest link tension [N] and its link.
-  // Throws Error if the temporary file cannot be written.
-  void Append(double t, double tension_max, int link);
+  // One output row: its time t [s] (increasing) and its largest link tension [N]. Throws Error
+  // if the temporary file cannot be written.
+  void Append(double t, double tension_max);
 
   long rows() const { return rows_; }
-  // The largest tension_max of the rows [N], the first row's time holding it [s] and its link;
-  // NaN (link -1) before any row.
-  double peak() const { return peak_; }
-  double peak_t() const { return peak_t_; }
-  int peak_link() const { return peak_link_; }
 
   // Reads the rows in order, from the first. Appending meanwhile is allowed (a cursor sees the
   // rows appended before each call).
@@ -54,9 +49,6 @@ class MaxTensionLog {
   long rows_ = 0;
   long written_ = 0;             // rows in the file; the rest are in pending_
   std::vector<double> pending_;  // (t, tension) pairs not yet written
-  double peak_ = std::numeric_limits<double>::quiet_NaN();
-  double peak_t_ = std::numeric_limits<double>::quiet_NaN();
-  int peak_link_ = -1;
 };
 
 }  // namespace cablefilm

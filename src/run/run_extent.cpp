@@ -1,16 +1,11 @@
 #include "run/run_extent.h"
 
-#include <limits>
-
 namespace cablefilm {
 
-RunExtent::RunExtent(const CableState& initial)
-    : tension_min(std::numeric_limits<double>::infinity()),
-      tension_max(-std::numeric_limits<double>::infinity()),
-      box_min(initial.x.rowwise().minCoeff()),
-      box_max(initial.x.rowwise().maxCoeff()) {}
+RunExtent::RunExtent(const State& initial)
+    : box_min(initial.x.rowwise().minCoeff()), box_max(initial.x.rowwise().maxCoeff()) {}
 
-void RunExtent::Add(const CableState& s, const Eigen::VectorXd& tension) {
+void RunExtent::Add(const State& s, const Eigen::VectorXd& tension) {
   tension_min = std::min(tension_min, tension.minCoeff());
   tension_max = std::max(tension_max, tension.maxCoeff());
   box_min = box_min.cwiseMin(s.x.rowwise().minCoeff());

@@ -1,18 +1,22 @@
 #pragma once
-// What the whole run covers, gathered during the first pass so that every frame of the film
-// uses one colour range and one world box.
+// What the whole run covers, gathered as the rows come so that every frame of the film uses one
+// colour range and one world box.
 #include <Eigen/Core>
+#include <limits>
 
-#include "core/cable_state.h"
+#include "core/data.h"
 
 namespace cablefilm {
 
 struct RunExtent {
-  explicit RunExtent(const CableState& initial);
-  void Add(const CableState& s, const Eigen::VectorXd& tension);
+  RunExtent() = default;
+  explicit RunExtent(const State& initial);
+  void Add(const State& s, const Eigen::VectorXd& tension);
 
-  double tension_min = 0, tension_max = 0;  // over all links and output times [N]
-  Eigen::Vector2d box_min, box_max;         // of all stations over the run [m]
+  // Over all links and rows [N].
+  double tension_min = std::numeric_limits<double>::infinity();
+  double tension_max = -std::numeric_limits<double>::infinity();
+  Vec box_min = Vec::Zero(), box_max = Vec::Zero();  // of all stations over the run [m]
 };
 
 }  // namespace cablefilm

@@ -9,7 +9,45 @@
 
 namespace cablefilm {
 
-std::vector<std::string> TrustWarnings(const CableModel& m, const IntegratorStats& stats) {
+void RunSummary::AddRow(double t, const Eigen::VectorXd& tension) {
+  ++rows;
+  Eigen::Index link = 0;
+  const double tmax = tension.maxCoeff(&link);  // the row's tension_max and link_max
+  // The first row, or a larger tension (NaN peak: none yet); the first of equal ones stays.
+  if (!std::isnan(tmax) && !(tmax <= peak)) {
+    peak = tmax;
+    peak_t = t;
+    peak_link = static_cast<int>(link);
+  }
+  const double tmin = tension.minCoeff(&link);
+  if (std::isnan(min_tension) || tmin < min_tension) {
+    min_tension = tmin;
+    min_tension_t = t;
+    min_tension_link = static_cast<int>(link);
+  }
+}
+
+const char* const kSummaryColumns[] = {"peak_tension",     "peak_time",        "peak_link",
+                                       "min_tension",      "min_tension_time", "min_tension_link",
+                                       "snaps",            "peak_converged",   nullptr};
+
+std::vector<std::string> SummaryCells(const RunSummary& s) {
+  auto number = [](double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return std::string(buf);
+  };
+  return {number(s.peak),
+          number(s.peak_t),
+          std::to_string(s.peak_link),
+          number(s.min_tension),
+          number(s.min_tension_t),
+          std::to_string(s.min_tension_link),
+          std::to_string(s.stats.record.snaps),
+          s.peak_converged() ? "true" : "false"};
+}
+
+std::vector<std::string> TrustWarnings(const Model& m, const StepStats& stats) {
   std::vector<std::string> warnings;
   const StepRecord& r = stats.record;
   if (r.unresolved_snaps > 0) {
@@ -32,7 +70,7 @@ std::vector<std::string> TrustWarnings(const CableModel& m, const IntegratorStat
   return warnings;
 }
 
-std::string DescribeSteps(const IntegratorStats& stats) {
+std::string DescribeSteps(const StepStats& stats) {
   std::ostringstream os;
   os.precision(4);
   os << stats.steps << " steps";

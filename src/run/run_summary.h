@@ -1,33 +1,51 @@
 #pragma once
-// What a finished run says about itself: the steps it took and whether its peak tension can be
-// trusted. Printed after the run and written beside its results as run_report.toml (suffix
-// before .toml for compare's second model), so a script or a later reader sees the same.
+// What a run says about itself: the steps it took, its peak and least tension over the rows,
+// how it ended, and whether its peak can be trusted. One struct with one writer each: printed
+// after the run, written beside its results as run_report.toml (io/run_report_file.h), a row
+// of sweep.csv (SummaryCells), a Python dict (python/module.cpp).
+#include <limits>
 #include <string>
 #include <vector>
 
-#include "core/cable_model.h"
-#include "core/integrator.h"
+#include "core/data.h"
+#include "core/model.h"
 
 namespace cablefilm {
 
-struct RunFacts {
-  std::string scheme;             // the integrator's name
+struct RunSummary {
+  std::string scheme;             // the scheme's name (core/data.h, SchemeName)
   double tolerance = 0;           // local position error per step [m]; 0: fixed steps
-  double duration = 0;            // simulated [s]
-  double wall = 0;                // computer time [s]
-  IntegratorStats stats;
-  double peak = 0, peak_t = 0;    // largest tension_max of the rows [N], when [s]
-  int peak_link = 0;
-  long rows = 0;
-  double min_tension = 0, min_tension_t = 0;  // smallest tension of the rows [N], when [s]
-  int min_tension_link = 0;
+  double duration = 0;            // simulated: the time reached [s]
+  double wall = 0;                // computer time of the stepping [s]
+  StepStats stats;
+  long rows = 0;                  // output rows handed out (t = 0 included)
+  // Over the rows, as timeseries.csv has them: the largest tension_max (the first row holding
+  // it) and the smallest tension of any link (the first), their times and links.
+  double peak = std::numeric_limits<double>::quiet_NaN();            // [N]
+  double peak_t = std::numeric_limits<double>::quiet_NaN();          // [s]
+  int peak_link = -1;
+  double min_tension = std::numeric_limits<double>::quiet_NaN();     // [N]
+  double min_tension_t = std::numeric_limits<double>::quiet_NaN();   // [s]
+  int min_tension_link = -1;
+  bool completed = false;         // every row; false: stopped, or a blow-up (`failure`)
+  std::string failure;            // a blow-up's message
+  std::vector<std::string> warnings;  // why the peak cannot be trusted (TrustWarnings)
+  bool peak_converged() const { return warnings.empty(); }
+
+  // One output row's tensions [N] at time t [s], taken into the peak and the least tension.
+  void AddRow(double t, const Eigen::VectorXd& tension);
 };
 
 // Reasons the peak tension cannot be trusted (empty: none found): snaps within steps too long to
 // resolve them (see core/snap_monitor.h), with what would resolve them.
-std::vector<std::string> TrustWarnings(const CableModel& m, const IntegratorStats& stats);
+std::vector<std::string> TrustWarnings(const Model& m, const StepStats& stats);
 
 // "N steps (M rejected) from a to b s[, k Newton iterations per step]".
-std::string DescribeSteps(const IntegratorStats& stats);
+std::string DescribeSteps(const StepStats& stats);
+
+// The columns of a sweep's row from a run's summary (after the case's status and message),
+// null-terminated, and their cells (numbers with 10 significant digits, as run_report.toml).
+extern const char* const kSummaryColumns[];
+std::vector<std::string> SummaryCells(const RunSummary& s);
 
 }  // namespace cablefilm

@@ -8,7 +8,7 @@ namespace cablefilm {
 namespace {
 
 EndMotion MakeEndMotion(const EndDef& e) {
-  const Eigen::Vector2d rest(e.position[0], e.position[1]);
+  const Vec rest(e.position[0], e.position[1]);
   switch (e.motion) {
     case EndMotionKind::kFixed:
       return EndMotion::Fixed(rest);
@@ -57,7 +57,7 @@ int StationAt(const SceneDef& scene, double arc_length) {
               " m is not on a station");
 }
 
-CableModel BuildModel(const SceneDef& scene) {
+Model BuildModel(const SceneDef& scene) {
   std::vector<SectionSpec> sections;
   for (const SectionDef& def : scene.sections) {
     const MaterialDef& mat = scene.materials.at(def.material);
@@ -102,8 +102,8 @@ CableModel BuildModel(const SceneDef& scene) {
   env.waves = MakeWaveSpec(scene);
   const LinkLaw law =
       scene.model == CableModelKind::kElastic ? LinkLaw::kElastic : LinkLaw::kInextensible;
-  return BuildCableModel(sections, prisms, env, MakeEndMotion(scene.start),
-                         MakeEndMotion(scene.end), law);
+  return MakeModel(sections, prisms, env, MakeEndMotion(scene.start), MakeEndMotion(scene.end),
+                   law);
 }
 
 }  // namespace cablefilm

@@ -1,11 +1,11 @@
 #pragma once
 // From the scene's plain data to the physics model (parse, then build).
-#include "core/cable_model.h"
+#include "core/model.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {
 
-CableModel BuildModel(const SceneDef& scene);
+Model BuildModel(const SceneDef& scene);
 
 // The scene's [waves] for the core (phase in rad); not present without the table.
 WaveSpec MakeWaveSpec(const SceneDef& scene);

@@ -50,28 +50,28 @@ std::string FilmFramesProblem(double span, double fps, double speed) {
   return why;
 }
 
-void CheckModelLimits(const SceneDef& scene, const CableModel& m) {
+void CheckModelLimits(const SceneDef& scene, const Model& m) {
   const std::string file = EscapeText(scene.path);
   auto fail = [&](const std::string& key, const std::string& message) {
     throw Error(file + ": " + key + ": " + message);
   };
-  if (m.start.prescribed() && m.end.prescribed()) {
-    const double chord = (m.end.Position(0) - m.start.Position(0)).norm();
-    const double length = m.total_length();
+  if (m.ends.start.prescribed() && m.ends.end.prescribed()) {
+    const double chord = (m.ends.end.Position(0) - m.ends.start.Position(0)).norm();
+    const double length = m.line.total_length();
     // The same comparison as the inextensible equilibrium (chord >= length fails there).
-    if (m.law == LinkLaw::kInextensible && chord >= length)
+    if (m.line.law == LinkLaw::kInextensible && chord >= length)
       fail("ends.end.position",
            "expected the ends less than the inextensible cable's length (" +
                FormatNumber(length) + " m) apart at t = 0, they are " + FormatNumber(chord) +
                " m apart (an inextensible cable cannot reach)");
-    if (m.law == LinkLaw::kElastic && chord > length) {
+    if (m.line.law == LinkLaw::kElastic && chord > length) {
       // The most stretched link at t = 0: a straight start stretches every link alike; the
       // equilibrium shares one tension, stretching the most compliant link most.
       double stretch = chord / length;
       if (scene.initial == InitialStateKind::kEquilibrium) {
-        const double compliance = (m.rest_length.array() / m.axial_stiffness.array()).sum();
+        const double compliance = (m.line.rest_length.array() / m.line.axial_stiffness.array()).sum();
         const double tension = (chord - length) / compliance;
-        stretch = 1.0 + tension / m.axial_stiffness.minCoeff();
+        stretch = 1.0 + tension / m.line.axial_stiffness.minCoeff();
       }
       if (!(stretch <= kMaxStartStretch))
         fail("ends.end.position",
@@ -84,7 +84,7 @@ void CheckModelLimits(const SceneDef& scene, const CableModel& m) {
     }
   }
   const SimulationDef& sim = scene.simulation;
-  if (m.law == LinkLaw::kElastic && sim.integrator == IntegratorChoice::kExplicit &&
+  if (m.line.law == LinkLaw::kElastic && sim.integrator == IntegratorChoice::kExplicit &&
       sim.time_step <= 0) {
     const StabilityLimit limit = ComputeStabilityLimit(m);
     const double dt = sim.safety_factor * limit.time_step;

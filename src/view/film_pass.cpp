@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/cancel.h"
+#include "core/step.h"
 #include "core/error.h"
 #include "view/cable_panel.h"
 #include "view/film_writer.h"
@@ -15,7 +16,7 @@
 namespace cablefilm {
 namespace {
 
-CableSnapshot ToSnapshot(const CableState& s, const Eigen::VectorXd& tension) {
+CableSnapshot ToSnapshot(const State& s, const Eigen::VectorXd& tension) {
   CableSnapshot snap;
   snap.t = s.t;
   snap.x.resize(s.x.cols());
@@ -47,20 +48,20 @@ FilmRequest MakeFilmRequest(const FilmSettings& s, const std::string& out_dir,
   return r;
 }
 
-void AddWaterSurface(const FilmSpec& spec, const CableModel& model, CableSnapshot* snap) {
+void AddWaterSurface(const FilmSpec& spec, const Model& model, CableSnapshot* snap) {
   if (spec.surface)  // a box's width beyond it on either side: the plot may be wider
-    SurfaceProfile(model.wave, snap->t, 2 * spec.x_min - spec.x_max,
+    SurfaceProfile(model.env.wave, snap->t, 2 * spec.x_min - spec.x_max,
                    2 * spec.x_max - spec.x_min, snap->surface_x, snap->surface_y);
 }
 
-FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
+FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<const Run*>& runs,
                       const FilmRequest& request, double duration) {
-  const FilmRun& run = runs.front();
-  const CableModel& m = *run.model;
+  const Run& run = *runs.front();
+  const Model& m = run.model;
   FilmSpec spec;
   spec.title = scene.title;
-  spec.arc_length.assign(m.arc_length.data(), m.arc_length.data() + m.arc_length.size());
-  spec.section_boundaries = m.section_boundaries;
+  spec.arc_length.assign(m.line.arc_length.data(), m.line.arc_length.data() + m.line.arc_length.size());
+  spec.section_boundaries = m.line.section_boundaries;
   // Each section by its material's name, when every section has one (the model keeps one
   // boundary between each two sections, so the counts agree).
   for (const SectionDef& section : scene.sections) {
@@ -74,23 +75,23 @@ FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
     spec.section_names.push_back(scene.materials[section.material].name);
   }
   if (spec.section_names.size() != spec.section_boundaries.size() + 1) spec.section_names.clear();
-  spec.weight_stations = m.weight_stations;
+  spec.weight_stations = m.line.weight_stations;
   // Each end by its role in the scene: fixed, moving (driven) or free.
-  for (int j : {0, m.links}) {
+  for (int j : {0, m.line.links}) {
     if (m.end_motion(j).moves()) spec.moving_ends.push_back(j);
     if (m.end_motion(j).kind() == EndKind::kFixed) spec.fixed_ends.push_back(j);
     if (m.end_motion(j).kind() == EndKind::kFree) spec.free_ends.push_back(j);
   }
-  spec.equilibrium = ToSnapshot(run.initial, run.initial_tension);
+  spec.equilibrium = ToSnapshot(run.initial.state, run.initial.tension());
   if (scene.initial == InitialStateKind::kStraight) spec.reference_label = kStraightStateLabel;
   spec.duration = duration;
   double t_lo = run.extent.tension_min, t_hi = run.extent.tension_max;
-  Eigen::Vector2d lo = run.extent.box_min, hi = run.extent.box_max;
-  for (const FilmRun& r : runs) {
-    t_lo = std::min(t_lo, r.extent.tension_min);
-    t_hi = std::max(t_hi, r.extent.tension_max);
-    lo = lo.cwiseMin(r.extent.box_min);
-    hi = hi.cwiseMax(r.extent.box_max);
+  Vec lo = run.extent.box_min, hi = run.extent.box_max;
+  for (const Run* r : runs) {
+    t_lo = std::min(t_lo, r->extent.tension_min);
+    t_hi = std::max(t_hi, r->extent.tension_max);
+    lo = lo.cwiseMin(r->extent.box_min);
+    hi = hi.cwiseMax(r->extent.box_max);
   }
   // Colour range from zero (slack) to a little above the largest tension of every run.
   spec.tension_min = request.tension_min >= 0 ? request.tension_min : std::min(0.0, t_lo);
@@ -99,14 +100,14 @@ FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
   spec.x_max = hi.x();
   spec.y_min = lo.y();
   spec.y_max = hi.y();
-  if (m.seabed.present) {  // the bed in view, with a strip of ground below it
+  if (m.env.seabed.present) {  // the bed in view, with a strip of ground below it
     spec.seabed = true;
-    spec.seabed_y = m.seabed.y;
-    spec.y_min = std::min(spec.y_min, m.seabed.y - SeabedMargin(spec.y_max - spec.y_min));
+    spec.seabed_y = m.env.seabed.y;
+    spec.y_min = std::min(spec.y_min, m.env.seabed.y - SeabedMargin(spec.y_max - spec.y_min));
   }
   if (m.has_waves()) {  // the surface in view: up to its crests, with a strip of sky
     spec.surface = true;
-    const double crest = m.wave.spec.surface_y + m.wave.amplitude;
+    const double crest = m.env.wave.spec.surface_y + m.env.wave.amplitude;
     spec.y_max = std::max(spec.y_max, crest + SeabedMargin(crest - spec.y_min));
   }
   return spec;
@@ -125,29 +126,29 @@ void FindPeak(const std::vector<double>& t, const std::vector<double>& v, Pictur
 
 }  // namespace
 
-PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<FilmRun>& runs,
+PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<const Run*>& runs,
                                     const std::string& out_dir, const std::string& shader_dir,
                                     bool complete) {
   const std::string name = complete ? "max_tension.png" : "max_tension.partial.png";
   // The time axis spans the rows of every run (all runs have the same output times).
   double t_end = 0;
-  for (const FilmRun& run : runs) {
-    MaxTensionLog::Cursor c(*run.rows);
+  for (const Run* run : runs) {
+    MaxTensionLog::Cursor c(run->row_max);
     double t, v;
     while (c.Next(std::numeric_limits<double>::infinity(), &t, &v)) t_end = std::max(t_end, t);
   }
   std::vector<MaxTensionSeries> series;
   PictureReport report;
   std::string peak_label;
-  for (const FilmRun& run : runs) {
+  for (const Run* run : runs) {
     ThinnedTrace trace(1, t_end > 0 ? t_end / 8192 : 0);
-    MaxTensionLog::Cursor c(*run.rows);
+    MaxTensionLog::Cursor c(run->row_max);
     double t, v;
     while (c.Next(std::numeric_limits<double>::infinity(), &t, &v)) trace.Add(t, v);
-    series.push_back({run.label, trace.times(), trace.values()});
+    series.push_back({run->label, trace.times(), trace.values()});
     const double before = report.peak;
     FindPeak(trace.times(), trace.values(), &report);
-    if (!(report.peak == before)) peak_label = run.label;
+    if (!(report.peak == before)) peak_label = run->label;
   }
   std::string title = "Maximum tension along the cable: " + scene.title;
   if (!complete) title += " (cut short)";
@@ -162,61 +163,60 @@ PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<Fil
   return report;
 }
 
-bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
+bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
                 const FilmRequest& request, const std::atomic<int>& stop, PictureReport* report) {
   const double frame_interval = request.speed / request.fps;  // simulated seconds per frame
-  const FilmRun& main = runs.front();
-  const double run_end = main.grid.outputs * main.grid.interval;
+  const Run& main = *runs.front();
+  const double run_end = main.grid.end();
   // Frames at k x frame_interval, and one at the run's end when it falls between two (so the
   // film shows every row: its time plot ends where the run does).
   const long whole = static_cast<long>(std::floor(run_end / frame_interval + 1e-9));
   const long last = whole + (run_end - whole * frame_interval > 1e-9 * frame_interval ? 1 : 0);
   auto frame_time = [&](long k) { return k <= whole ? k * frame_interval : run_end; };
-  // Every run steps through the same frame times (in lockstep, so that a second run can be
-  // drawn over the first). When a frame is a whole number of output intervals (the default: a
-  // row a frame), each run repeats its first pass step for step (deterministic), so a frame's
-  // cable is exactly the state of its row; otherwise each steps to the frame times with its own
-  // scheme's step rule.
+  // Every run steps again from its initial Data, on the frames' grid (in lockstep, so that a
+  // second run can be drawn over the first). When a frame is a whole number of output
+  // intervals (the default: a row a frame), that grid is the rows' and the run repeats its
+  // first pass step for step (deterministic), so a frame's cable is exactly the state of its
+  // row; otherwise the grid is the frames' own with the scheme's step rule.
   const double rows_per_frame = std::round(frame_interval / main.grid.interval);
   const bool on_rows = rows_per_frame >= 1 &&
                        std::fabs(rows_per_frame * main.grid.interval - frame_interval) <=
                            1e-9 * frame_interval;
   struct Stepper {
     TimeGrid grid;
-    CableState state;
-    std::unique_ptr<Integrator> integrator;
+    Inputs inputs;
+    Data data;
     MaxTensionLog::Cursor rows;
-    long output = 0;  // on_rows: the output rows reached
     Eigen::VectorXd row_min, row_max;  // on_rows: each link's envelope over the rows since the
                                        // last frame [N] (empty: none yet)
   };
   std::vector<Stepper> steppers;
-  for (const FilmRun& run : runs) {
-    Stepper st{run.grid, run.initial, nullptr, MaxTensionLog::Cursor(*run.rows), 0, {}, {}};
+  steppers.reserve(runs.size());
+  for (const Run* run : runs) {
+    Stepper st{run->grid, run->inputs, run->initial, MaxTensionLog::Cursor(run->row_max), {}, {}};
+    st.inputs.stop = &stop;
     if (!on_rows) {
       st.grid.steps_per_output =
-          std::max(1, static_cast<int>(std::ceil(frame_interval / run.grid.dt - 1e-9)));
+          std::max(1, static_cast<int>(std::ceil(frame_interval / run->grid.dt - 1e-9)));
       st.grid.interval = frame_interval;
       st.grid.dt = frame_interval / st.grid.steps_per_output;
       st.grid.outputs = whole;
     }
-    st.integrator = MakeIntegrator(*run.model, st.grid);
-    st.integrator->Initialize(*run.model, st.state);
     steppers.push_back(std::move(st));
   }
+  std::vector<RowStepper> row_steppers;
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    row_steppers.emplace_back(runs[r]->model, steppers[r].data, steppers[r].inputs,
+                              steppers[r].grid);
   // Steps run r to frame k (k >= 1). Throws BlowUpError, CancelledError.
   auto advance = [&](std::size_t r, long k) {
     Stepper& st = steppers[r];
-    const CableModel& m = *runs[r].model;
-    if (on_rows) {  // as Simulate does, output by output
+    RowStepper& rows = row_steppers[r];
+    if (on_rows) {
       const long target = k <= whole ? k * static_cast<long>(rows_per_frame) : st.grid.outputs;
-      while (st.output < target) {
-        for (int i = 0; i < st.grid.steps_per_output; ++i) {
-          ThrowIfCancelled(&stop, "the film");
-          st.integrator->Step(m, st.state, st.grid.dt);
-        }
-        st.state.t = ++st.output * st.grid.interval;
-        const Eigen::VectorXd& T = st.integrator->tensions();
+      while (rows.row() < target) {
+        rows.Next();
+        const Eigen::VectorXd& T = st.data.tension();
         if (st.row_min.size() == 0) {
           st.row_min = st.row_max = T;
         } else {
@@ -226,19 +226,18 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
       }
       return;
     }
-    // The step rule of a whole frame, or of the shorter last one.
-    int steps = st.grid.steps_per_output;
-    double dt = st.grid.dt;
-    if (k > whole) {
-      const double span = frame_time(k) - frame_time(k - 1);
-      steps = std::max(1, static_cast<int>(std::ceil(span / runs[r].grid.dt - 1e-9)));
-      dt = span / steps;
+    if (k <= whole) {
+      rows.Next();
+      return;
     }
+    // The shorter last frame, with the step rule of the run's own grid.
+    const double span = frame_time(k) - frame_time(k - 1);
+    const int steps = std::max(1, static_cast<int>(std::ceil(span / runs[r]->grid.dt - 1e-9)));
     for (int i = 0; i < steps; ++i) {
       ThrowIfCancelled(&stop, "the film");
-      st.integrator->Step(m, st.state, dt);
+      Step(runs[r]->model, st.data, st.inputs, span / steps);
     }
-    st.state.t = frame_time(k);
+    st.data.state.t = frame_time(k);
   };
   FilmOptions o;
   o.width = request.width;
@@ -253,8 +252,8 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
   FilmSpec spec = MakeFilmSpec(scene, runs, request, frame_time(last));
   spec.label = main.label;
   if (runs.size() > 1) {
-    spec.companion_label = runs[1].label;
-    spec.companion_equilibrium = ToSnapshot(runs[1].initial, runs[1].initial_tension);
+    spec.companion_label = runs[1]->label;
+    spec.companion_equilibrium = ToSnapshot(runs[1]->initial.state, runs[1]->initial.tension());
   }
   FilmWriter writer(o, spec, request.out_dir, static_cast<int>(last + 1));
   bool finished = true;
@@ -271,16 +270,16 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
         finished = false;
         break;
       } catch (const BlowUpError& e) {
-        failure = std::string(e.what()) + " (" + runs[r].label + " run)";
+        failure = std::string(e.what()) + " (" + runs[r]->label + " run)";
         break;
       }
     }
     if (!finished || !failure.empty()) break;
-    CableSnapshot snap = ToSnapshot(steppers[0].state, steppers[0].integrator->tensions());
-    AddWaterSurface(spec, *main.model, &snap);
+    CableSnapshot snap = ToSnapshot(steppers[0].data.state, steppers[0].data.tension());
+    AddWaterSurface(spec, main.model, &snap);
     // The output rows up to this frame (all that are left at the last frame).
     const double until = k == last ? std::numeric_limits<double>::infinity()
-                                   : steppers[0].state.t + 1e-9 * frame_interval;
+                                   : steppers[0].data.state.t + 1e-9 * frame_interval;
     double t, v;
     while (steppers[0].rows.Next(until, &t, &v)) {
       snap.row_t.push_back(t);
@@ -295,14 +294,13 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
       steppers[0].row_max.resize(0);
     }
     if (steppers.size() > 1) {
-      const CableSnapshot other =
-          ToSnapshot(steppers[1].state, steppers[1].integrator->tensions());
+      const CableSnapshot other = ToSnapshot(steppers[1].data.state, steppers[1].data.tension());
       snap.cx = other.x;
       snap.cy = other.y;
       snap.ctension = other.tension;
       for (std::size_t i = 0; i < snap.row_t.size(); ++i) {
         if (!steppers[1].rows.Next(until, &t, &v) || t != snap.row_t[i])
-          throw Error("film: the " + runs[1].label + " run's output rows do not line up with the " +
+          throw Error("film: the " + runs[1]->label + " run's output rows do not line up with the " +
                       main.label + " run's at t = " + std::to_string(snap.row_t[i]) + " s");
         snap.row_cmax.push_back(v);
       }
@@ -319,15 +317,16 @@ bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
     writer.FinishPartial();  // plays up to the last frame drawn
     if (request.say_written)
       std::printf("wrote %s/film.partial.mp4 (%s at t = %.4g s)\n", request.out_dir.c_str(),
-                  failure.empty() ? "interrupted" : "the film pass failed", steppers[0].state.t);
+                  failure.empty() ? "interrupted" : "the film pass failed",
+                  steppers[0].data.state.t);
   }
   if (report) {
     *report = PictureReport{};
     const std::vector<MaxTensionSeries> shown = writer.all_max_tension_series();
     FindPeak(shown[0].t, shown[0].tension, report);
     report->frames = writer.frames_done();
-    report->last_frame_max = steppers[0].integrator->tensions().maxCoeff();
-    report->last_frame_t = steppers[0].state.t;
+    report->last_frame_max = steppers[0].data.tension().maxCoeff();
+    report->last_frame_t = steppers[0].data.state.t;
     if (!shown[0].tension.empty()) report->last_row_max = shown[0].tension.back();
   }
   if (!failure.empty())

@@ -12,9 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "run/max_tension_log.h"
-#include "run/run_extent.h"
-#include "run/simulation_run.h"
+#include "run/run.h"
 #include "scene/film_settings.h"
 #include "scene/scene_def.h"
 
@@ -36,17 +34,6 @@ struct FilmRequest {
 FilmRequest MakeFilmRequest(const FilmSettings& settings, const std::string& out_dir,
                             const std::string& shader_dir);
 
-// A model already simulated once (its first pass gave the extent and the rows).
-struct FilmRun {
-  std::string label;            // "elastic", "inextensible"
-  const CableModel* model;
-  TimeGrid grid;
-  CableState initial;
-  Eigen::VectorXd initial_tension;  // [N]
-  RunExtent extent;
-  const MaxTensionLog* rows;    // the largest link tension of every output row
-};
-
 // What a picture shows: the largest value drawn [N] and its time [s] (NaN: nothing drawn).
 struct PictureReport {
   double peak = std::numeric_limits<double>::quiet_NaN();
@@ -64,20 +51,21 @@ struct CableSnapshot;  // view/frame.h
 
 // What stays fixed over the film of `runs` lasting `duration` simulated seconds (the first
 // run's cable, ends, sections, initial state; the colour range and the world box of every run,
-// or the request's range). Used by RenderFilm, and to draw a frame on its own.
-FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<FilmRun>& runs,
+// or the request's range). Each run has been run once (run/run.h: ExecuteRun). Used by
+// RenderFilm, and to draw a frame on its own.
+FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<const Run*>& runs,
                       const FilmRequest& request, double duration);
 
 // The water surface at the snapshot's time across the film's width, when the spec has waves:
 // what every frame of the film carries.
-void AddWaterSurface(const FilmSpec& spec, const CableModel& model, CableSnapshot* snap);
+void AddWaterSurface(const FilmSpec& spec, const Model& model, CableSnapshot* snap);
 
 // <out_dir>/max_tension.png, or max_tension.partial.png when the rows are those of a run cut
 // short (`complete` false): every run's rows on one pair of axes, thinned to the extremes of
 // each 1/8192 of the time axis (ThinnedTrace), so that the largest value drawn is the rows'
-// peak. Only `label` and `rows` of the runs are used. Throws Error when it cannot be drawn
+// peak. Only the runs' labels and row maxima are used. Throws Error when it cannot be drawn
 // (e.g. no off-screen OSMesa context), saying so.
-PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<FilmRun>& runs,
+PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<const Run*>& runs,
                                     const std::string& out_dir, const std::string& shader_dir,
                                     bool complete);
 
@@ -85,7 +73,7 @@ PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<Fil
 // range. Frames are at k x speed / fps and, when the run's end is not on one, at its end.
 // Returns false if `stop` was raised (the film is then closed at the last frame drawn, as
 // film.partial.mp4). `report` (optional): the film's time plot at its last frame. Throws Error.
-bool RenderFilm(const SceneDef& scene, const std::vector<FilmRun>& runs,
+bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
                 const FilmRequest& request, const std::atomic<int>& stop,
                 PictureReport* report = nullptr);
 

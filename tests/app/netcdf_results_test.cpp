@@ -18,10 +18,13 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "run/simulation_run.h"
+#include "run/driver.h"
+#include "run/initial_state.h"
+#include "run/time_grid.h"
 #include "core/stability.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "../core/drive_support.h"
 
 namespace cablefilm {
 namespace {
@@ -266,14 +269,14 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   // One time, bit for bit what the run computed (the same simulation in this process).
   const size_t at_row = 100;  // t = 3.333 s
   const SceneDef def = LoadScene(scene);
-  const CableModel m = BuildModel(def);
+  const Model m = BuildModel(def);
   const TimeGrid grid = ChooseTimeGrid(m, def.simulation, def.output.interval);
-  CableState state = MakeInitialState(def, m, nullptr);
-  auto integrator = MakeIntegrator(m, grid);
+  State state = MakeInitialState(def, m, nullptr);
+  auto integrator = testing::MakeStepper(m, grid);
   size_t row = 0;
   Eigen::VectorXd computed;
-  Eigen::Matrix2Xd where;
-  Simulate(m, *integrator, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
+  Points where;
+  testing::Simulate(m, *integrator, state, grid, [&](const State& s, const Eigen::VectorXd& T) {
     if (row++ != at_row) return true;
     computed = T;
     where = s.x;

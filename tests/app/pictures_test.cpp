@@ -15,6 +15,7 @@
 #include "text_support.h"
 #include "app/commands.h"
 #include "run/max_tension_log.h"
+#include "run/run_summary.h"
 #include "core/error.h"
 
 namespace cablefilm {
@@ -80,7 +81,7 @@ TEST_F(Pictures, PeakBetweenFilmFramesIsTheSameInTheReportCsvFigureAndFilm) {
   ASSERT_EQ(RunCommand(Scene(), o, &r), 0);
   const std::vector<Row> rows = ReadRows(dir_ / "out" / "timeseries.csv");
   ASSERT_EQ(rows.size(), 201u);
-  EXPECT_EQ(r.rows, 201);
+  EXPECT_EQ(r.summary.rows, 201);
   Row csv_peak{0, -1}, frames_peak{0, -1};
   for (const Row& row : rows) {
     if (row.tension_max > csv_peak.tension_max) csv_peak = row;
@@ -89,23 +90,23 @@ TEST_F(Pictures, PeakBetweenFilmFramesIsTheSameInTheReportCsvFigureAndFilm) {
   }
   std::printf("[ peaks ] run %.10g N at t = %.4g s; csv %.10g N at %.4g s; figure %.10g N; "
               "film %.10g N at %.4g s; the frames' rows only %.10g N at %.4g s\n",
-              r.peak, r.peak_t, csv_peak.tension_max, csv_peak.t, r.figure_peak, r.film_peak,
-              r.film_peak_t, frames_peak.tension_max, frames_peak.t);
+              r.summary.peak, r.summary.peak_t, csv_peak.tension_max, csv_peak.t, r.figure.peak, r.film.peak,
+              r.film.peak_t, frames_peak.tension_max, frames_peak.t);
   // The case is one the film used to miss: the peak is far above every frame's.
   EXPECT_LT(frames_peak.tension_max, 0.8 * csv_peak.tension_max);
   EXPECT_GT(std::fabs(csv_peak.t * 2 - std::round(csv_peak.t * 2)), 0.01);
   // The report and the CSV (printed to 10 significant digits).
-  EXPECT_NEAR(r.peak, csv_peak.tension_max, 1e-9 * csv_peak.tension_max);
-  EXPECT_DOUBLE_EQ(r.peak_t, csv_peak.t);
+  EXPECT_NEAR(r.summary.peak, csv_peak.tension_max, 1e-9 * csv_peak.tension_max);
+  EXPECT_DOUBLE_EQ(r.summary.peak_t, csv_peak.t);
   // The figure and the film's time plot: the very same number.
-  EXPECT_EQ(r.figure_peak, r.peak);
-  EXPECT_EQ(r.film_peak, r.peak);
-  EXPECT_EQ(r.film_peak_t, r.peak_t);
+  EXPECT_EQ(r.figure.peak, r.summary.peak);
+  EXPECT_EQ(r.film.peak, r.summary.peak);
+  EXPECT_EQ(r.film.peak_t, r.summary.peak_t);
   // A frame every 50 rows: the film's cable is the rows' state, bit for bit (the "now").
-  EXPECT_EQ(r.film_frames, 5);
-  EXPECT_DOUBLE_EQ(r.film_last_t, 2.0);
-  EXPECT_EQ(r.film_last_max, r.film_last_row_max);
-  EXPECT_NEAR(r.film_last_max, rows.back().tension_max, 1e-9 * rows.back().tension_max);
+  EXPECT_EQ(r.film.frames, 5);
+  EXPECT_DOUBLE_EQ(r.film.last_frame_t, 2.0);
+  EXPECT_EQ(r.film.last_frame_max, r.film.last_row_max);
+  EXPECT_NEAR(r.film.last_frame_max, rows.back().tension_max, 1e-9 * rows.back().tension_max);
   EXPECT_TRUE(fs::exists(dir_ / "out" / "max_tension.png"));
   EXPECT_TRUE(fs::exists(dir_ / "out" / "film.mp4"));
   EXPECT_FALSE(fs::exists(dir_ / "out" / "max_tension.partial.png"));
@@ -120,10 +121,10 @@ TEST_F(Pictures, MaxTensionFigureWithoutAFilm) {
   EXPECT_TRUE(fs::exists(dir_ / "out" / "max_tension.png"));
   EXPECT_FALSE(fs::exists(dir_ / "out" / "film.mp4"));
   EXPECT_FALSE(fs::exists(dir_ / "out" / "film.partial.mp4"));
-  EXPECT_EQ(r.figure_peak, r.peak);
-  EXPECT_GT(r.peak, 1e4);  // the snap loads: tens of kN
-  EXPECT_TRUE(std::isnan(r.film_peak));
-  EXPECT_EQ(r.film_frames, 0);
+  EXPECT_EQ(r.figure.peak, r.summary.peak);
+  EXPECT_GT(r.summary.peak, 1e4);  // the snap loads: tens of kN
+  EXPECT_TRUE(std::isnan(r.film.peak));
+  EXPECT_EQ(r.film.frames, 0);
 }
 
 TEST_F(Pictures, RunEndingBetweenFramesGetsALastFrameAtItsEnd) {
@@ -135,12 +136,12 @@ TEST_F(Pictures, RunEndingBetweenFramesGetsALastFrameAtItsEnd) {
   ASSERT_EQ(RunCommand(Scene("2.2"), o, &r), 0);
   const std::vector<Row> rows = ReadRows(dir_ / "out" / "timeseries.csv");
   ASSERT_EQ(rows.size(), 221u);
-  EXPECT_EQ(r.film_frames, 6);
-  EXPECT_DOUBLE_EQ(r.film_last_t, 2.2);
-  EXPECT_EQ(r.film_last_max, r.film_last_row_max);
-  EXPECT_NEAR(r.film_last_max, rows.back().tension_max, 1e-9 * rows.back().tension_max);
-  EXPECT_EQ(r.film_peak, r.peak);
-  EXPECT_EQ(r.figure_peak, r.peak);
+  EXPECT_EQ(r.film.frames, 6);
+  EXPECT_DOUBLE_EQ(r.film.last_frame_t, 2.2);
+  EXPECT_EQ(r.film.last_frame_max, r.film.last_row_max);
+  EXPECT_NEAR(r.film.last_frame_max, rows.back().tension_max, 1e-9 * rows.back().tension_max);
+  EXPECT_EQ(r.film.peak, r.summary.peak);
+  EXPECT_EQ(r.figure.peak, r.summary.peak);
 }
 
 TEST_F(Pictures, BlowUpLeavesAPartialFigureOfTheRowsSoFar) {
@@ -165,8 +166,8 @@ TEST_F(Pictures, BlowUpLeavesAPartialFigureOfTheRowsSoFar) {
   EXPECT_FALSE(fs::exists(dir_ / "out" / "film.mp4"));
   const std::vector<Row> rows = ReadRows(dir_ / "out" / "timeseries.partial.csv");
   ASSERT_GE(rows.size(), 1u);
-  EXPECT_EQ(r.rows, static_cast<long>(rows.size()));
-  EXPECT_EQ(r.figure_peak, r.peak);
+  EXPECT_EQ(r.summary.rows, static_cast<long>(rows.size()));
+  EXPECT_EQ(r.figure.peak, r.summary.peak);
 }
 
 TEST_F(Pictures, FigureThatCannotBeDrawnIsAnErrorSayingSo) {
@@ -192,17 +193,24 @@ TEST_F(Pictures, FigureThatCannotBeDrawnIsAnErrorSayingSo) {
   EXPECT_FALSE(fs::exists(dir_ / "out" / "max_tension.png"));
 }
 
-TEST(MaxTensionLog, RowsComeBackExactlyInOrderWithTheirPeak) {
+TEST(MaxTensionLog, RowsComeBackExactlyInOrderAndTheSummaryHasTheirPeak) {
   MaxTensionLog log;
-  EXPECT_TRUE(std::isnan(log.peak()));
+  RunSummary summary;
+  EXPECT_TRUE(std::isnan(summary.peak));
   const int n = 10000;  // beyond one block: some rows in the file, the last ones pending
   // Two rows hold the largest value: the first of them is the peak.
   auto value = [](int i) { return i == 4321 || i == 7000 ? 2000.0 : 1000 + 100 * std::sin(0.37 * i); };
-  for (int i = 0; i < n; ++i) log.Append(i * 0.1, value(i), i % 7);
+  for (int i = 0; i < n; ++i) {
+    log.Append(i * 0.1, value(i));
+    Eigen::VectorXd row = Eigen::VectorXd::Constant(7, 500.0);  // the largest in link i % 7
+    row[i % 7] = value(i);
+    summary.AddRow(i * 0.1, row);
+  }
   EXPECT_EQ(log.rows(), n);
-  EXPECT_EQ(log.peak(), 2000.0);
-  EXPECT_EQ(log.peak_t(), 4321 * 0.1);
-  EXPECT_EQ(log.peak_link(), 4321 % 7);
+  EXPECT_EQ(summary.rows, n);
+  EXPECT_EQ(summary.peak, 2000.0);
+  EXPECT_EQ(summary.peak_t, 4321 * 0.1);
+  EXPECT_EQ(summary.peak_link, 4321 % 7);
   MaxTensionLog::Cursor c(log);
   double t, v;
   int i = 0;

@@ -14,13 +14,16 @@
 
 #include "text_support.h"
 #include "app/commands.h"
-#include "run/simulation_run.h"
+#include "run/driver.h"
+#include "run/initial_state.h"
+#include "run/time_grid.h"
 #include "core/error.h"
-#include "core/explicit_integrator.h"
-#include "core/integrator.h"
+#include "core/explicit_step.h"
+#include "core/step.h"
 #include "core/stability.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "../core/drive_support.h"
 
 namespace cablefilm {
 namespace {
@@ -87,10 +90,10 @@ TEST_F(RunCommandTest, BlowUpIsDetectedAndNothingNonFiniteIsWritten) {
 
 TEST(BlowUp, IntegratorThrowsWithTimeAndStation) {
   const SceneDef s = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const CableModel m = BuildModel(s);
+  const Model m = BuildModel(s);
   const double dt = 3.0 * ComputeStabilityLimit(m).time_step;
-  CableState st = MakeInitialState(s, m, nullptr);
-  ExplicitIntegrator integ(m);
+  State st = MakeInitialState(s, m, nullptr);
+  testing::Stepper integ(Scheme::kExplicit);
   integ.Initialize(m, st);
   try {
     for (int k = 0; k < 100000; ++k) integ.Step(m, st, dt);
@@ -99,7 +102,7 @@ TEST(BlowUp, IntegratorThrowsWithTimeAndStation) {
     std::printf("[ blow-up ] %s (after %.0f steps)\n", e.what(), e.time / dt);
     EXPECT_GT(e.time, 0.0);
     EXPECT_GE(e.station, 0);
-    EXPECT_LE(e.station, m.links);
+    EXPECT_LE(e.station, m.line.links);
     EXPECT_NE(std::string(e.what()).find("station"), std::string::npos);
   }
 }
@@ -107,10 +110,10 @@ TEST(BlowUp, IntegratorThrowsWithTimeAndStation) {
 TEST(BlowUp, StableBelowTheLimit) {
   // The same scene at 0.9x the limit runs its 2 s without complaint (the limit is real).
   const SceneDef s = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const CableModel m = BuildModel(s);
+  const Model m = BuildModel(s);
   const double dt = 0.9 * ComputeStabilityLimit(m).time_step;
-  CableState st = MakeInitialState(s, m, nullptr);
-  ExplicitIntegrator integ(m);
+  State st = MakeInitialState(s, m, nullptr);
+  testing::Stepper integ(Scheme::kExplicit);
   integ.Initialize(m, st);
   EXPECT_NO_THROW(for (double t = 0; t < 2.0; t += dt) integ.Step(m, st, dt));
 }
@@ -118,12 +121,12 @@ TEST(BlowUp, StableBelowTheLimit) {
 // Runs a scene in-process and returns every output's state and tensions as raw doubles.
 std::vector<double> RunSeries(const std::string& path) {
   const SceneDef s = LoadScene(path);
-  const CableModel m = BuildModel(s);
+  const Model m = BuildModel(s);
   const TimeGrid grid = ChooseTimeGrid(m, s.simulation, s.output.interval);
-  CableState st = MakeInitialState(s, m, nullptr);
-  auto integ = MakeIntegrator(m, grid);
+  State st = MakeInitialState(s, m, nullptr);
+  auto integ = testing::MakeStepper(m, grid);
   std::vector<double> out;
-  Simulate(m, *integ, st, grid, [&](const CableState& c, const Eigen::VectorXd& T) {
+  testing::Simulate(m, *integ, st, grid, [&](const State& c, const Eigen::VectorXd& T) {
     out.push_back(c.t);
     out.insert(out.end(), c.x.data(), c.x.data() + c.x.size());
     out.insert(out.end(), c.v.data(), c.v.data() + c.v.size());

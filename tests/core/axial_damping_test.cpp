@@ -7,8 +7,9 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/cable_model.h"
-#include "core/integrator.h"
+#include "core/model.h"
+#include "test_support.h"
+#include "core/step.h"
 #include "core/stability.h"
 
 namespace cablefilm {
@@ -23,7 +24,7 @@ constexpr double kG = 9.80665;
 // w^2 = k / m, zeta = c / (2 sqrt(k m)), w_d = w sqrt(1 - zeta^2).
 struct DampedLink {
   double l = 1.0, area = 1e-4, E = 1e8, mu = 0.1, M = 10.0, zeta = 0.05;
-  CableModel model;
+  Model model;
   double k = 0, m = 0, c = 0, y_eq = 0, d0 = 0;
   DampedLink() {
     SectionSpec s;
@@ -42,7 +43,7 @@ struct DampedLink {
     p.mass = M;
     EnvironmentSpec vacuum;
     vacuum.fluid_density = 0;
-    model = BuildCableModel({s}, {p}, vacuum, EndMotion::Fixed({0, 0}),
+    model = MakeModel({s}, {p}, vacuum, EndMotion::Fixed({0, 0}),
                             EndMotion::Free({0, -l}), LinkLaw::kElastic);
     const double stretch = m * kG / k;  // static [m]
     y_eq = -(l + stretch);
@@ -54,13 +55,13 @@ struct DampedLink {
                       (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t));
   }
   // Largest |y - exact| over five periods, with steps of a thousandth of a period.
-  double MaxError(IntegratorKind kind) const {
-    auto integrator = MakeIntegrator(kind, model);
-    CableState s;
+  double MaxError(Scheme kind) const {
+    auto integrator = testing::MakeStepper(kind, model);
+    State s;
     s.t = 0;
-    s.x = Eigen::Matrix2Xd::Zero(2, 2);
+    s.x = Points::Zero(kDim, 2);
     s.x(1, 1) = y_eq - d0;
-    s.v = Eigen::Matrix2Xd::Zero(2, 2);
+    s.v = Points::Zero(kDim, 2);
     integrator->Initialize(model, s);
     const double period = 2 * M_PI / std::sqrt(k / m), h = period / 1000;
     double err = 0;
@@ -75,14 +76,14 @@ struct DampedLink {
 
 TEST(AxialDamping, LinkDecaysAsTheDampedOscillator) {
   const DampedLink link;
-  EXPECT_NEAR(link.model.axial_damping[0], link.c, 1e-9 * link.c);
+  EXPECT_NEAR(link.model.line.axial_damping[0], link.c, 1e-9 * link.c);
   // Second-order schemes at w h = 2 pi / 1000: phase error ~ (w h)^2 / 12 = 3e-6 per radian,
   // 1e-4 over the 31 radians of five periods, i.e. 1e-4 d0; 1e-3 d0 leaves a factor 10. Without
   // the damping term the error would be the whole decay, d0 (1 - e^(-zeta w t)) ~ 0.8 d0.
-  for (IntegratorKind kind : {IntegratorKind::kImplicit, IntegratorKind::kExplicit}) {
+  for (Scheme kind : {Scheme::kImplicit, Scheme::kExplicit}) {
     const double err = link.MaxError(kind);
     std::printf("[ damping ] %s: largest error %.2e of the displacement\n",
-                kind == IntegratorKind::kImplicit ? "implicit" : "explicit", err / link.d0);
+                kind == Scheme::kImplicit ? "implicit" : "explicit", err / link.d0);
     EXPECT_LT(err, 1e-3 * link.d0);
   }
 }
@@ -103,12 +104,12 @@ TEST(AxialDamping, RatioIsOfTheLinksOwnAxialMode) {
   p.added_volume = {0.001, 0.002};  // the smaller axis's added mass counts: rho 1e-3
   EnvironmentSpec sea;
   sea.fluid_density = 1000;
-  const CableModel m = BuildCableModel({s}, {p}, sea, EndMotion::Fixed({0, 0}),
+  const Model m = MakeModel({s}, {p}, sea, EndMotion::Fixed({0, 0}),
                                        EndMotion::Free({0, -4}), LinkLaw::kElastic);
   const double k = 2e-4 * 5e9 / 2.0;
   const double m0 = 3.0, m1 = 6.0, m2 = 3.0 + 5.0 + 1.0;  // [kg]: half links, prism, added
-  EXPECT_NEAR(m.axial_damping[0], 1.4 * std::sqrt(k * m0 * m1 / (m0 + m1)), 1e-9);
-  EXPECT_NEAR(m.axial_damping[1], 1.4 * std::sqrt(k * m1 * m2 / (m1 + m2)), 1e-9);
+  EXPECT_NEAR(m.line.axial_damping[0], 1.4 * std::sqrt(k * m0 * m1 / (m0 + m1)), 1e-9);
+  EXPECT_NEAR(m.line.axial_damping[1], 1.4 * std::sqrt(k * m1 * m2 / (m1 + m2)), 1e-9);
 }
 
 // The explicit limit shrinks by sqrt(1 + 4 zeta^2) - 2 zeta for the bound's zeta, and the scheme
@@ -116,21 +117,21 @@ TEST(AxialDamping, RatioIsOfTheLinksOwnAxialMode) {
 // 0.95 of the undamped limit grows.
 TEST(AxialDamping, ExplicitLimitAccountsForTheDamping) {
   DampedLink undamped, damped;
-  undamped.model.axial_damping.setZero();
+  undamped.model.line.axial_damping.setZero();
   const StabilityLimit a = ComputeStabilityLimit(undamped.model);
   const StabilityLimit b = ComputeStabilityLimit(damped.model);
   const double gamma = damped.c / damped.m, zeta = gamma / (2 * a.omega_max);
   EXPECT_NEAR(b.time_step / a.time_step, std::sqrt(1 + 4 * zeta * zeta) - 2 * zeta, 1e-12);
 
-  damped.model.axial_damping[0] = 2 * std::sqrt(damped.k * damped.m);  // critical
+  damped.model.line.axial_damping[0] = 2 * std::sqrt(damped.k * damped.m);  // critical
   const double limit = ComputeStabilityLimit(damped.model).time_step;
   auto run = [&](double fraction) {
-    auto integrator = MakeIntegrator(IntegratorKind::kExplicit, damped.model);
-    CableState s;
+    auto integrator = testing::MakeStepper(Scheme::kExplicit, damped.model);
+    State s;
     s.t = 0;
-    s.x = Eigen::Matrix2Xd::Zero(2, 2);
+    s.x = Points::Zero(kDim, 2);
     s.x(1, 1) = damped.y_eq - damped.d0;  // small enough to stay taut: a linear oscillator
-    s.v = Eigen::Matrix2Xd::Zero(2, 2);
+    s.v = Points::Zero(kDim, 2);
     integrator->Initialize(damped.model, s);
     double largest = 0;
     for (int n = 0; n < 4000; ++n) {

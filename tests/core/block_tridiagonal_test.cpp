@@ -5,6 +5,7 @@
 #include <random>
 
 #include "core/block_tridiagonal.h"
+#include "core/vec.h"
 
 namespace cablefilm {
 namespace {
@@ -25,9 +26,9 @@ TEST(BlockTridiagonal, MatchesDenseSolve) {
           sys.diag[i](r, c) = u(rng);
         }
       // Block diagonally dominant: the diagonal outweighs the off-diagonal row sums.
-      sys.diag[i] += 6.0 * Eigen::Matrix2d::Identity();
+      sys.diag[i] += 6.0 * Mat::Identity();
       const double first = u(rng);  // drawn in order: argument order differs by compiler
-      sys.rhs[i] = Eigen::Vector2d(first, u(rng));
+      sys.rhs[i] = Vec(first, u(rng));
       A.block<2, 2>(2 * i, 2 * i) = sys.diag[i];
       if (i > 0) A.block<2, 2>(2 * i, 2 * i - 2) = sys.lower[i];
       if (i + 1 < n) A.block<2, 2>(2 * i, 2 * i + 2) = sys.upper[i];

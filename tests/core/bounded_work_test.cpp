@@ -5,11 +5,14 @@
 
 #include <string>
 
-#include "run/simulation_run.h"
+#include "run/driver.h"
+#include "run/initial_state.h"
+#include "run/time_grid.h"
 #include "core/equilibrium.h"
-#include "core/integrator.h"
+#include "core/step.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "drive_support.h"
 
 namespace cablefilm {
 namespace {
@@ -20,19 +23,19 @@ SceneDef P63() { return LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/p
 // in the current never advanced. It now goes in at once, and the answer is still water's.
 TEST(BoundedWork, AnUnderflowingCurrentStillReachesItsEquilibrium) {
   SceneDef scene = P63();
-  CableModel still = BuildModel(scene);
-  CableModel tiny = still;
-  tiny.current = 5e-324;
+  Model still = BuildModel(scene);
+  Model tiny = still;
+  tiny.env.current = 5e-324;
   EquilibriumReport report;
-  const CableState a = SolveEquilibrium(tiny, &report);
-  const CableState b = SolveEquilibrium(still);
+  const State a = SolveEquilibrium(tiny, &report);
+  const State b = SolveEquilibrium(still);
   EXPECT_LE(report.current_steps, EquilibriumOptions().max_current_steps);
   // The drag of 5e-324 m/s is below any representable force: the same shape to round-off.
   EXPECT_LT((a.x - b.x).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 TEST(BoundedWork, ARaisedFlagStopsTheEquilibriumAtItsFirstIteration) {
-  CableModel m = BuildModel(P63());
+  Model m = BuildModel(P63());
   CancelFlag flag{2};
   EquilibriumOptions options;
   options.cancel = &flag;
@@ -41,16 +44,16 @@ TEST(BoundedWork, ARaisedFlagStopsTheEquilibriumAtItsFirstIteration) {
 
 TEST(BoundedWork, ARaisedFlagStopsTheImplicitStepAndTheOutputLoop) {
   const SceneDef scene = P63();
-  const CableModel m = BuildModel(scene);
+  const Model m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
-  auto integrator = MakeIntegrator(m, grid);
+  auto integrator = testing::MakeStepper(m, grid);
   EquilibriumReport report;
-  CableState s = MakeInitialState(scene, m, &report);
+  State s = MakeInitialState(scene, m, &report);
   CancelFlag flag{0};
   int outputs = 0;
   // Raised by the third output: Simulate returns false with the rows so far.
-  const bool finished = Simulate(m, *integrator, s, grid,
-                                 [&](const CableState&, const Eigen::VectorXd&) {
+  const bool finished = testing::Simulate(m, *integrator, s, grid,
+                                 [&](const State&, const Eigen::VectorXd&) {
                                    if (++outputs == 3) flag = 15;
                                    return true;
                                  },
@@ -71,13 +74,13 @@ TEST(BoundedWork, AMotionFasterThanAnyStepEndsInAClearError) {
   SceneDef scene = P63();
   scene.end.motion = EndMotionKind::kTable;
   scene.end.table = {{0, 0, 0}, {1e-9, 1, 0}, {0.2, 0, 0}};
-  const CableModel m = BuildModel(scene);
+  const Model m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
-  auto integrator = MakeIntegrator(m, grid);
+  auto integrator = testing::MakeStepper(m, grid);
   EquilibriumReport report;
-  CableState s = MakeInitialState(scene, m, &report);
+  State s = MakeInitialState(scene, m, &report);
   try {
-    Simulate(m, *integrator, s, grid, [](const CableState&, const Eigen::VectorXd&) { return true; });
+    testing::Simulate(m, *integrator, s, grid, [](const State&, const Eigen::VectorXd&) { return true; });
     FAIL() << "a 1e9 m/s end motion ran to the end";
   } catch (const BlowUpError& e) {
     EXPECT_NE(std::string(e.what()).find("faster than the scheme can follow"), std::string::npos)

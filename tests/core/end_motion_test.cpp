@@ -10,20 +10,20 @@ namespace cablefilm {
 namespace {
 
 // Eq. (3) typed in from the paper.
-Eigen::Vector2d Eq3(double t, const Eigen::Vector2d& rest, double a, double b, double c, double d,
+Vec Eq3(double t, const Vec& rest, double a, double b, double c, double d,
                     double w, double nu) {
   const double R = 1 - (1 + nu * t) * std::exp(-nu * t);
-  return rest + R * Eigen::Vector2d(a * std::cos(w * t) + b * std::sin(w * t),
+  return rest + R * Vec(a * std::cos(w * t) + b * std::sin(w * t),
                                     c * std::cos(w * t) + d * std::sin(w * t));
 }
 
 TEST(EndMotion, TrochoidFollowsEquation3) {
-  const Eigen::Vector2d rest(80.0, 30.48);
+  const Vec rest(80.0, 30.48);
   const double a = 1.8288, b = 0.3, c = -0.2, d = 1.8288, w = 2 * M_PI / 10, nu = 0.5;
   const EndMotion e = EndMotion::Trochoid(rest, a, b, c, d, w, nu);
   // Starts from rest: R(0) = 0 and R'(0) = 0.
   EXPECT_EQ(e.Position(0.0), rest);
-  EXPECT_EQ(e.Velocity(0.0), Eigen::Vector2d::Zero());
+  EXPECT_EQ(e.Velocity(0.0), Vec::Zero());
   EXPECT_EQ(e.Position(-1.0), rest);  // holds before t = 0
   // Just after 0 it has barely moved: R(t) ~ nu^2 t^2 / 2, R'(t) ~ nu^2 t.
   EXPECT_LT(e.Velocity(1e-6).norm(), 1e-6 * nu * nu * 2.0 * 2.0);
@@ -33,10 +33,10 @@ TEST(EndMotion, TrochoidFollowsEquation3) {
     // 1e-16 * 80 / h ~ 1e-11 (velocity) and 1e-16 * 80 / h^2 ~ 1e-8 (acceleration, from the
     // velocity: 1e-16 / h ~ 1e-12). Tolerances 1e-7 hold both with room.
     const double h = 1e-4;
-    const Eigen::Vector2d v_fd = (Eq3(t + h, rest, a, b, c, d, w, nu) -
+    const Vec v_fd = (Eq3(t + h, rest, a, b, c, d, w, nu) -
                                   Eq3(t - h, rest, a, b, c, d, w, nu)) / (2 * h);
     EXPECT_LT((e.Velocity(t) - v_fd).norm(), 1e-7) << t;
-    const Eigen::Vector2d a_fd = (e.Velocity(t + h) - e.Velocity(t - h)) / (2 * h);
+    const Vec a_fd = (e.Velocity(t + h) - e.Velocity(t - h)) / (2 * h);
     EXPECT_LT((e.Acceleration(t) - a_fd).norm(), 1e-7) << t;
   }
   // Late on the ramp is done: a circle of radius 1.83 m about rest (a = d, b = -c would be
@@ -46,9 +46,9 @@ TEST(EndMotion, TrochoidFollowsEquation3) {
 
 TEST(EndMotion, FixedAndFreeHoldStill) {
   const EndMotion f = EndMotion::Fixed({1, 2});
-  EXPECT_EQ(f.Position(5.0), Eigen::Vector2d(1, 2));
-  EXPECT_EQ(f.Velocity(5.0), Eigen::Vector2d::Zero());
-  EXPECT_EQ(f.Acceleration(5.0), Eigen::Vector2d::Zero());
+  EXPECT_EQ(f.Position(5.0), Vec(1, 2));
+  EXPECT_EQ(f.Velocity(5.0), Vec::Zero());
+  EXPECT_EQ(f.Acceleration(5.0), Vec::Zero());
   EXPECT_TRUE(f.prescribed());
   EXPECT_FALSE(EndMotion::Free({0, 0}).prescribed());
 }
@@ -58,11 +58,11 @@ std::vector<Eigen::Vector3d> Rows() {
 }
 
 TEST(EndMotion, TableSplineThroughKnotsC2AndHeld) {
-  const Eigen::Vector2d rest(10.0, -2.0);
+  const Vec rest(10.0, -2.0);
   const auto rows = Rows();
   const EndMotion e = EndMotion::Table(rest, rows);
   for (const auto& r : rows)
-    EXPECT_LT((e.Position(r[0]) - rest - Eigen::Vector2d(r[1], r[2])).norm(), 1e-14) << r[0];
+    EXPECT_LT((e.Position(r[0]) - rest - Vec(r[1], r[2])).norm(), 1e-14) << r[0];
   // C2 at the interior knots: value, slope and curvature agree from both sides.
   const double eps = 1e-9;
   for (size_t i = 1; i + 1 < rows.size(); ++i) {
@@ -83,9 +83,9 @@ TEST(EndMotion, TableSplineThroughKnotsC2AndHeld) {
   EXPECT_LT(e.Acceleration(3.2 - 1e-12).norm(), 1e-9);
   // Holds still outside the table.
   EXPECT_EQ(e.Position(-1.0), rest);
-  EXPECT_LT((e.Position(10.0) - rest - Eigen::Vector2d(0.6, -0.5)).norm(), 1e-15);
-  EXPECT_EQ(e.Velocity(10.0), Eigen::Vector2d::Zero());
-  EXPECT_EQ(e.Acceleration(-1.0), Eigen::Vector2d::Zero());
+  EXPECT_LT((e.Position(10.0) - rest - Vec(0.6, -0.5)).norm(), 1e-15);
+  EXPECT_EQ(e.Velocity(10.0), Vec::Zero());
+  EXPECT_EQ(e.Acceleration(-1.0), Vec::Zero());
 }
 
 TEST(EndMotion, TableSplineHandValues) {

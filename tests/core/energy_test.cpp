@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/explicit_integrator.h"
+#include "core/explicit_step.h"
 #include "core/forces.h"
 #include "core/stability.h"
 #include "test_support.h"
@@ -29,18 +29,17 @@ EnergyRun RunReleasedLine(double dt_fraction, double duration) {
   EnvironmentSpec env;
   env.fluid_density = 0;  // vacuum: no drag, no buoyancy, no added mass
   const int N = 20;
-  const CableModel m = testing::UniformCable(N, 10.0, 1.0, 1e-4, 1e9, env,
+  const Model m = testing::UniformCable(N, 10.0, 1.0, 1e-4, 1e9, env,
                                              EndMotion::Fixed({0, 0}), EndMotion::Fixed({10.1, 0}));
   const double dt = dt_fraction * ComputeStabilityLimit(m).time_step;
-  CableState s;
-  s.x = Eigen::Matrix2Xd(2, N + 1);
-  for (int j = 0; j <= N; ++j) s.x.col(j) = Eigen::Vector2d(10.1 * j / N, 0.0);
-  s.v = Eigen::Matrix2Xd::Zero(2, N + 1);
-  ExplicitIntegrator integ(m);
-  integ.Initialize(m, s);
+  Points x(kDim, N + 1);
+  for (int j = 0; j <= N; ++j) x.col(j) = Vec(10.1 * j / N, 0.0);
+  Data d = testing::StartData(m, testing::AtRest(x), Scheme::kExplicit);
+  const State& s = d.state;
+  const Inputs in = SceneInputs(m);
   LinkGeometry g;
   g.length.resize(N);
-  g.tangent.resize(2, N);
+  g.tangent.resize(kDim, N);
   auto energy = [&](double* kinetic) {
     ComputeGeometry(s.x, g);
     *kinetic = KineticEnergy(m, g, s.v);
@@ -50,14 +49,14 @@ EnergyRun RunReleasedLine(double dt_fraction, double duration) {
   const double e0 = energy(&ke);
   const long steps = std::lround(duration / dt);
   EnergyRun r;
-  r.min_tension = integ.tensions().minCoeff();
+  r.min_tension = d.tension().minCoeff();
   long n_first = 0, n_last = 0;
   for (long k = 1; k <= steps; ++k) {
-    integ.Step(m, s, dt);
+    Step(m, d, in, dt);
     const double err = energy(&ke) - e0;
     r.max_error = std::max(r.max_error, std::abs(err));
     r.swing = std::max(r.swing, ke);
-    r.min_tension = std::min(r.min_tension, integ.tensions().minCoeff());
+    r.min_tension = std::min(r.min_tension, d.tension().minCoeff());
     if (k <= steps / 4) {
       r.first_mean += err;
       ++n_first;

@@ -10,7 +10,7 @@
 #include "core/equilibrium.h"
 #include "core/error.h"
 #include "core/forces.h"
-#include "core/integrator.h"
+#include "core/step.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -29,21 +29,21 @@ struct Errors {
 };
 
 // Compares a lumped equilibrium with the exact catenary (station 0 at `origin`).
-Errors Compare(const CableModel& m, const CableState& st, const ExactCatenary& exact,
-               const Eigen::Vector2d& origin) {
-  ForceWorkspace ws(m.links);
+Errors Compare(const Model& m, const State& st, const ExactCatenary& exact,
+               const Vec& origin) {
+  ForceWorkspace ws(m.line.links);
   ComputeGeometry(st.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
   Errors e;
   double tmax = 0;
-  for (int j = 0; j <= m.links; ++j) {
-    Eigen::Vector2d r;
-    exact.Evaluate(exact.H(), exact.V0(), m.arc_length[j], &r, nullptr);
+  for (int j = 0; j <= m.line.links; ++j) {
+    Vec r;
+    exact.Evaluate(exact.H(), exact.V0(), m.line.arc_length[j], &r, nullptr);
     e.position = std::max(e.position, (st.x.col(j) - origin - r).norm());
   }
-  for (int j = 0; j < m.links; ++j) {
+  for (int j = 0; j < m.line.links; ++j) {
     double T;
-    exact.Evaluate(exact.H(), exact.V0(), 0.5 * (m.arc_length[j] + m.arc_length[j + 1]), nullptr,
+    exact.Evaluate(exact.H(), exact.V0(), 0.5 * (m.line.arc_length[j] + m.line.arc_length[j + 1]), nullptr,
                    &T);
     tmax = std::max(tmax, T);
     e.tension = std::max(e.tension, std::abs(ws.tension[j] - T));
@@ -60,11 +60,11 @@ Errors Compare(const CableModel& m, const CableState& st, const ExactCatenary& e
 // the lumped station j should sit off the exact line by the leading term
 //   e(s_j) = (l^2/24) [J_{s_j} J_L^{-1} D(L) - D(s_j)],  D(s) = sum over pieces of f'(.^-) - f'(.^+)
 // computed here from the exact solution alone. This is the 1/N^2 error itself, not a bound.
-Eigen::Vector2d LeadingError(const ExactCatenary& exact, const std::vector<double>& piece_ends,
+Vec LeadingError(const ExactCatenary& exact, const std::vector<double>& piece_ends,
                              double l, double s) {
   const double H = exact.H(), V0 = exact.V0();
   auto D = [&](double upto) {
-    Eigen::Vector2d d = Eigen::Vector2d::Zero();
+    Vec d = Vec::Zero();
     double a = 0;
     for (double b : piece_ends) {
       if (upto <= a) break;
@@ -75,9 +75,9 @@ Eigen::Vector2d LeadingError(const ExactCatenary& exact, const std::vector<doubl
     return d;
   };
   auto J = [&](double at) {
-    Eigen::Matrix2d j;
+    Mat j;
     const double dh = 1e-6 * H, dv = 1e-6 * (std::abs(V0) + H);
-    Eigen::Vector2d p, q;
+    Vec p, q;
     exact.Evaluate(H + dh, V0, at, &p, nullptr);
     exact.Evaluate(H - dh, V0, at, &q, nullptr);
     j.col(0) = (p - q) / (2 * dh);
@@ -87,20 +87,20 @@ Eigen::Vector2d LeadingError(const ExactCatenary& exact, const std::vector<doubl
     return j;
   };
   const double L = piece_ends.back();
-  const Eigen::Vector2d dp = J(L).fullPivLu().solve(D(L));
+  const Vec dp = J(L).fullPivLu().solve(D(L));
   return (l * l / 24.0) * (J(s) * dp - D(s));
 }
 
 // Largest gap between the lumped error and its predicted leading term, relative to the largest
 // predicted error.
-double LeadingTermMismatch(const CableModel& m, const CableState& st, const ExactCatenary& exact,
-                           const std::vector<double>& piece_ends, const Eigen::Vector2d& origin) {
+double LeadingTermMismatch(const Model& m, const State& st, const ExactCatenary& exact,
+                           const std::vector<double>& piece_ends, const Vec& origin) {
   double gap = 0, size = 0;
-  const double l = m.rest_length[0];
-  for (int j = 0; j <= m.links; ++j) {
-    Eigen::Vector2d r;
-    exact.Evaluate(exact.H(), exact.V0(), m.arc_length[j], &r, nullptr);
-    const Eigen::Vector2d predicted = LeadingError(exact, piece_ends, l, m.arc_length[j]);
+  const double l = m.line.rest_length[0];
+  for (int j = 0; j <= m.line.links; ++j) {
+    Vec r;
+    exact.Evaluate(exact.H(), exact.V0(), m.line.arc_length[j], &r, nullptr);
+    const Vec predicted = LeadingError(exact, piece_ends, l, m.line.arc_length[j]);
     gap = std::max(gap, (st.x.col(j) - origin - r - predicted).norm());
     size = std::max(size, predicted.norm());
   }
@@ -110,7 +110,7 @@ double LeadingTermMismatch(const CableModel& m, const CableState& st, const Exac
 struct UniformCase {
   const char* name;
   double length, mu, area, E, rho;  // m, kg/m, m^2, Pa, kg/m^3
-  Eigen::Vector2d a, b;             // ends [m]
+  Vec a, b;             // ends [m]
 };
 
 class IrvineCatenary : public ::testing::TestWithParam<UniformCase> {};
@@ -122,7 +122,7 @@ TEST_P(IrvineCatenary, LumpedEquilibriumConvergesAtSecondOrder) {
   const double w = (c.mu - c.rho * c.area) * kG;  // net weight per unstretched length [N/m]
   const double EA = c.E * c.area;
   ExactCatenary exact({{c.length, w, EA, 0.0}});
-  const Eigen::Vector2d target = c.b - c.a;
+  const Vec target = c.b - c.a;
   // Newton from H = wL, V0 = -wL/2 (the guess only picks the root).
   const double miss = exact.Shoot(target, std::abs(w) * c.length, -0.5 * w * c.length);
   ASSERT_LT(miss, 1e-10 * c.length) << "the exact catenary's shooting did not converge";
@@ -130,10 +130,10 @@ TEST_P(IrvineCatenary, LumpedEquilibriumConvergesAtSecondOrder) {
   Errors prev;
   const int sizes[] = {30, 60, 120};
   for (int N : sizes) {
-    const CableModel m = UniformCable(N, c.length, c.mu, c.area, c.E, env, EndMotion::Fixed(c.a),
+    const Model m = UniformCable(N, c.length, c.mu, c.area, c.E, env, EndMotion::Fixed(c.a),
                                       EndMotion::Fixed(c.b));
     EquilibriumReport rep;
-    const CableState st = SolveEquilibrium(m, &rep);
+    const State st = SolveEquilibrium(m, &rep);
     const Errors e = Compare(m, st, exact, c.a);
     const double mismatch = LeadingTermMismatch(m, st, exact, {c.length}, c.a);
     std::printf("[ %s ] N=%d H=%.6g V0=%.6g: max position error %.3e m, off the predicted "
@@ -202,22 +202,22 @@ TEST(P63Equilibrium, MatchesExactPiecewiseCatenary) {
   for (int factor : {1, 2, 4}) {  // 60, 120, 240 links
     SceneDef s = scene;
     for (SectionDef& sec : s.sections) sec.segments *= factor;
-    const CableModel m = BuildModel(s);
+    const Model m = BuildModel(s);
     EquilibriumReport rep;
-    const CableState st = SolveEquilibrium(m, &rep);
+    const State st = SolveEquilibrium(m, &rep);
     const Errors e = Compare(m, st, exact, {0.0, 0.0});
     const double mismatch = LeadingTermMismatch(m, st, exact, piece_ends, {0.0, 0.0});
     std::printf("[ P63 ] N=%d: max position error %.3e m, off the predicted leading term by "
                 "%.2e of it; max tension error %.3e (relative), %d iterations, residual %.2e N "
                 "of %.4g N\n",
-                m.links, e.position, mismatch, e.tension, rep.iterations, rep.residual,
+                m.line.links, e.position, mismatch, e.tension, rep.iterations, rep.residual,
                 rep.force_scale);
     EXPECT_LT(mismatch, 0.01);  // O(1/N^2) remainder, as for the uniform line
     // Absolute accuracy the case needs: station positions within 0.1 mm at the baseline 60.
     EXPECT_LT(e.position, 1e-4);
     if (factor > 1) {
       const double rp = prev.position / e.position, rt = prev.tension / e.tension;
-      std::printf("[ P63 ] ratio N=%d/N=%d: position %.3f, tension %.3f\n", m.links / 2, m.links,
+      std::printf("[ P63 ] ratio N=%d/N=%d: position %.3f, tension %.3f\n", m.line.links / 2, m.line.links,
                   rp, rt);
       EXPECT_GT(rp, 3.0);  // second order, as for the uniform line
       EXPECT_LT(rp, 5.0);
@@ -232,11 +232,11 @@ TEST(P63Equilibrium, MatchesExactPiecewiseCatenary) {
 // Robustness: from the straight chord (the poorest reasonable start).
 
 // The largest out-of-balance force on a free station, recomputed here from the returned state.
-double MaxResidual(const CableModel& m, const CableState& st) {
-  ForceWorkspace ws(m.links);
+double MaxResidual(const Model& m, const State& st) {
+  ForceWorkspace ws(m.line.links);
   ComputeGeometry(st.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
-  ComputeStationForces(m, ws.geometry, ws.tension, Eigen::Matrix2Xd::Zero(2, m.stations()),
+  ComputeStationForces(m, SceneWater(m), ws.geometry, ws.tension, Points::Zero(kDim, m.stations()),
                        ws.force);
   double r = 0;
   for (int j = m.first_free(); j <= m.last_free(); ++j)
@@ -244,9 +244,9 @@ double MaxResidual(const CableModel& m, const CableState& st) {
   return r;
 }
 
-void ExpectConvergedFromChord(const CableModel& m, const char* what) {
+void ExpectConvergedFromChord(const Model& m, const char* what) {
   EquilibriumReport rep;
-  CableState st;
+  State st;
   ASSERT_NO_THROW(st = SolveEquilibrium(m, StraightChord(m), &rep)) << what;
   const double r = MaxResidual(m, st);
   std::printf("[ robust ] %s: %d iterations, %d current steps, residual %.2e N (reported %.2e) "
@@ -291,7 +291,7 @@ TEST(EquilibriumRobustness, FromStraightChord) {
   buoy.volume = 0.1;  // 1025 * 0.1 = 102.5 kg of lift: net buoyant
   EnvironmentSpec sea;
   sea.fluid_density = 1025;
-  ExpectConvergedFromChord(BuildCableModel({s}, {clump, buoy}, sea, fixed(0, 0), fixed(45, 5),
+  ExpectConvergedFromChord(MakeModel({s}, {clump, buoy}, sea, fixed(0, 0), fixed(45, 5),
                                            LinkLaw::kElastic),
                            "weights_and_buoy");
 
@@ -299,13 +299,13 @@ TEST(EquilibriumRobustness, FromStraightChord) {
   SceneDef p63 = LoadScene(P63Path());
   ExpectConvergedFromChord(BuildModel(p63), "P63");
   p63.environment.current = 0.5;
-  const CableModel pc = BuildModel(p63);
+  const Model pc = BuildModel(p63);
   ExpectConvergedFromChord(pc, "P63-C");
   // The current pushes the line downstream: the middle moves along +x from still water.
   p63.environment.current = 0.0;
-  const CableState still = SolveEquilibrium(BuildModel(p63));
+  const State still = SolveEquilibrium(BuildModel(p63));
   EquilibriumReport rep;
-  const CableState drift = SolveEquilibrium(pc, &rep);
+  const State drift = SolveEquilibrium(pc, &rep);
   EXPECT_GT(rep.current_steps, 0);
   EXPECT_GT(drift.x(0, 30), still.x(0, 30));
 }
@@ -319,14 +319,14 @@ TEST(EquilibriumRobustness, FreeHangingCable) {
   EnvironmentSpec sea;
   sea.fluid_density = rho;
   // Station 0 free and starting off to the side; station s fixed at the top.
-  const CableModel m = UniformCable(N, L, mu, area, E, sea, EndMotion::Free({15.0, -5.0}),
+  const Model m = UniformCable(N, L, mu, area, E, sea, EndMotion::Free({15.0, -5.0}),
                                     EndMotion::Fixed({1.0, 2.0}));
   EquilibriumReport rep;
-  const CableState st = SolveEquilibrium(m, StraightChord(m), &rep);
+  const State st = SolveEquilibrium(m, StraightChord(m), &rep);
   const double l = L / N, w = (mu - rho * area) * kG, EA = area * E;
   double y = 2.0, err = 0;
   for (int j = N; j >= 0; --j) {
-    err = std::max(err, (st.x.col(j) - Eigen::Vector2d(1.0, y)).norm());
+    err = std::max(err, (st.x.col(j) - Vec(1.0, y)).norm());
     if (j > 0) {
       const double T = w * l * (j - 0.5);  // weight below link j-1/2 (stations 0..j-1)
       y -= l * (1.0 + T / EA);
@@ -355,21 +355,21 @@ TEST(EquilibriumTowedCable, EveryLinkAtTheCriticalAngle) {
     for (double U : {0.25, 1.0, 2.0}) {
       sea.current = U;
       // The issue's first guess: the free end straight below the fixed one.
-      const CableModel m = UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed({0, 0}),
+      const Model m = UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed({0, 0}),
                                         EndMotion::Free({0, -L}), d, Cd);
       EquilibriumReport rep;
-      CableState st;
+      State st;
       ASSERT_NO_THROW(st = SolveEquilibrium(m, &rep)) << n << " links, " << U << " m/s";
       const double l = L / n, wl = (mu - rho * area) * kG * l, k = 0.5 * rho * Cd * d * l;
       const double a = k * U * U;  // a (1 - s^2) = wl s  ->  a s^2 + wl s - a = 0
       const double sin_theta = (-wl + std::sqrt(wl * wl + 4 * a * a)) / (2 * a);
       const double theta = std::asin(sin_theta);
-      ForceWorkspace ws(m.links);
+      ForceWorkspace ws(m.line.links);
       ComputeGeometry(st.x, ws.geometry);
       ComputeHookeTensions(m, ws.geometry, ws.tension);
       double angle_err = 0, tension_err = 0;
       for (int i = 0; i < n; ++i) {
-        const Eigen::Vector2d t = ws.geometry.tangent.col(i);  // downwards and downstream
+        const Vec t = ws.geometry.tangent.col(i);  // downwards and downstream
         angle_err = std::max(angle_err, std::abs(std::atan2(t.x(), -t.y()) - theta));
         const double T = wl * std::cos(theta) * (n - i - 0.5);
         tension_err = std::max(tension_err, std::abs(ws.tension[i] - T) / (wl * n));
@@ -391,7 +391,7 @@ TEST(EquilibriumTowedCable, EveryLinkAtTheCriticalAngle) {
 }
 
 // A slack line in a current (issue 11, defect 9): 300 m between fixed ends 54 m apart.
-CableModel SlackLineInCurrent(int links, double current) {
+Model SlackLineInCurrent(int links, double current) {
   EnvironmentSpec sea;
   sea.fluid_density = 1025;
   sea.current = current;
@@ -403,9 +403,9 @@ TEST(EquilibriumSlackLine, ConvergesInEveryCurrent) {
   for (int n : {10, 30, 100, 300}) {
     double previous = 1e-9;
     for (double U : {0.1, 0.3, 1.0, 2.0}) {
-      const CableModel m = SlackLineInCurrent(n, U);
+      const Model m = SlackLineInCurrent(n, U);
       EquilibriumReport rep;
-      CableState st;
+      State st;
       ASSERT_NO_THROW(st = SolveEquilibrium(m, &rep)) << n << " links, " << U << " m/s";
       std::printf("[ slack ] %3d links, %.1f m/s: %4d iterations%s, residual %.1e N\n", n, U,
                   rep.iterations, rep.fallback ? " (fallback)" : "", MaxResidual(m, st));
@@ -424,10 +424,10 @@ TEST(EquilibriumSlackLine, ConvergesInEveryCurrent) {
 // but was unstable would drift away within a few of its slowest periods (tens of seconds for
 // this 300 m line); a stable one moves only by the integrator's error, far below 1 mm.
 TEST(EquilibriumSlackLine, IsTheStateTheDynamicsSettleIn) {
-  const CableModel m = SlackLineInCurrent(30, 1.0);
-  CableState st = SolveEquilibrium(m);
-  const Eigen::Matrix2Xd start = st.x;
-  auto integrator = MakeIntegrator(IntegratorKind::kImplicit, m, 0.5, 1e-6);
+  const Model m = SlackLineInCurrent(30, 1.0);
+  State st = SolveEquilibrium(m);
+  const Points start = st.x;
+  auto integrator = testing::MakeStepper(Scheme::kImplicit, m, 0.5, 1e-6);
   integrator->Initialize(m, st);
   for (int k = 0; k < 60; ++k) integrator->Step(m, st, 1.0);
   const double moved = (st.x - start).cwiseAbs().maxCoeff();
@@ -440,12 +440,12 @@ TEST(EquilibriumSlackLine, IsTheStateTheDynamicsSettleIn) {
 // link), so the two states agree to about residual / stiffness of the softest (transverse)
 // mode; 1e-4 m is a generous bound on that for a 300 m line.
 TEST(EquilibriumSlackLine, PseudoTransientFallbackReachesTheSameState) {
-  const CableModel m = SlackLineInCurrent(60, 1.0);
+  const Model m = SlackLineInCurrent(60, 1.0);
   EquilibriumReport newton_report, fallback_report;
-  const CableState newton = SolveEquilibrium(m, &newton_report);
+  const State newton = SolveEquilibrium(m, &newton_report);
   EquilibriumOptions starved;
   starved.max_iterations = 2;
-  CableState fallback;
+  State fallback;
   ASSERT_NO_THROW(fallback = SolveEquilibrium(m, &fallback_report, starved));
   EXPECT_FALSE(newton_report.fallback);
   EXPECT_TRUE(fallback_report.fallback);
@@ -458,7 +458,7 @@ TEST(EquilibriumSlackLine, PseudoTransientFallbackReachesTheSameState) {
 TEST(EquilibriumRobustness, ReportsNonConvergence) {
   EnvironmentSpec vacuum;
   vacuum.fluid_density = 0;
-  const CableModel m = UniformCable(20, 10.0, 1.0, 1e-4, 1e10, vacuum, EndMotion::Fixed({0, 0}),
+  const Model m = UniformCable(20, 10.0, 1.0, 1e-4, 1e10, vacuum, EndMotion::Fixed({0, 0}),
                                     EndMotion::Fixed({6, 0}));
   EquilibriumOptions opt;
   opt.max_iterations = 1;

@@ -11,13 +11,16 @@
 #include <memory>
 #include <string>
 
-#include "run/simulation_run.h"
+#include "run/driver.h"
+#include "run/initial_state.h"
+#include "run/time_grid.h"
 #include "core/equilibrium.h"
-#include "core/explicit_integrator.h"
+#include "core/explicit_step.h"
 #include "core/forces.h"
 #include "core/stability.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "drive_support.h"
 
 namespace cablefilm {
 namespace {
@@ -32,9 +35,9 @@ struct EnergyRun {
 };
 
 // Steps `integ` by dt for `duration` and follows the energy after every step asked.
-EnergyRun FollowEnergy(const CableModel& m, CableState s, Integrator& integ, double dt,
+EnergyRun FollowEnergy(const Model& m, State s, testing::Stepper& integ, double dt,
                        double duration) {
-  ForceWorkspace ws(m.links);
+  ForceWorkspace ws(m.line.links);
   auto energy = [&](double* kinetic) {
     ComputeGeometry(s.x, ws.geometry);
     *kinetic = KineticEnergy(m, ws.geometry, s.v);
@@ -53,21 +56,21 @@ EnergyRun FollowEnergy(const CableModel& m, CableState s, Integrator& integ, dou
     r.loss = std::max(r.loss, -e);
     r.top_kinetic = std::max(r.top_kinetic, kinetic);
     const Eigen::VectorXd& T = integ.tensions();
-    for (int k = 0; k < m.links; ++k) r.changes += (previous[k] > 0) != (T[k] > 0);
+    for (int k = 0; k < m.line.links; ++k) r.changes += (previous[k] > 0) != (T[k] > 0);
     previous = T;
   }
   r.steps = integ.stats().steps;
-  if (auto* e = dynamic_cast<ExplicitIntegrator*>(&integ)) r.refinement = e->finest_refinement();
+  r.refinement = integ.stats().finest_refinement;
   return r;
 }
 
-EnergyRun FixedFraction(const CableModel& m, const CableState& s, double fraction,
+EnergyRun FixedFraction(const Model& m, const State& s, double fraction,
                         double duration) {
-  ExplicitIntegrator integ(m);
+  testing::Stepper integ(Scheme::kExplicit);
   return FollowEnergy(m, s, integ, fraction * ComputeStabilityLimit(m).time_step, duration);
 }
 
-EnergyRun Auto(const CableModel& m, const CableState& s, double interval, double duration) {
+EnergyRun Auto(const Model& m, const State& s, double interval, double duration) {
   SimulationDef sim;
   sim.integrator = IntegratorChoice::kExplicit;
   sim.time_step = 0;  // "auto"
@@ -75,7 +78,7 @@ EnergyRun Auto(const CableModel& m, const CableState& s, double interval, double
   const TimeGrid grid = ChooseTimeGrid(m, sim, interval);
   EXPECT_TRUE(grid.automatic);
   EXPECT_LE(grid.dt, 0.8 * grid.limit.time_step);
-  auto integ = MakeIntegrator(m, grid);
+  auto integ = testing::MakeStepper(m, grid);
   return FollowEnergy(m, s, *integ, grid.dt, duration);
 }
 
@@ -90,7 +93,7 @@ void Print(const char* what, const EnergyRun& r) {
 // dt below 0.2 of the limit divides it by about 4), scaled as dt^2 to the largest step "auto"
 // takes, 0.8 of the limit: (0.8 / 0.1)^2 = 64 times. "auto" must stay below it; the old fixed
 // 0.8 of the limit, which pumps energy, must not (else the case would not test anything).
-void ExpectNoEnergyPumped(const CableModel& m, const CableState& s, double interval,
+void ExpectNoEnergyPumped(const Model& m, const State& s, double interval,
                           double duration) {
   const EnergyRun fine = FixedFraction(m, s, 0.1, duration);
   const EnergyRun old = FixedFraction(m, s, 0.8, duration);
@@ -114,13 +117,13 @@ TEST(ExplicitAuto, WhippingChainInVacuumGainsNoEnergy) {
   SectionSpec wire{20.0, 20, 0.0254, 5.067e-4, 2.75, 9.0e10, 0, 0};
   EnvironmentSpec env;
   env.fluid_density = 0;
-  const Eigen::Vector2d dir(std::sin(M_PI / 3), -std::cos(M_PI / 3));
-  const CableModel m = BuildCableModel({wire}, {}, env, EndMotion::Fixed({0, 0}),
+  const Vec dir(std::sin(M_PI / 3), -std::cos(M_PI / 3));
+  const Model m = MakeModel({wire}, {}, env, EndMotion::Fixed({0, 0}),
                                        EndMotion::Free(20.0 * dir), LinkLaw::kElastic);
-  CableState s;
+  State s;
   s.x.resize(2, m.stations());
-  for (int j = 0; j <= m.links; ++j) s.x.col(j) = m.arc_length[j] * dir;
-  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+  for (int j = 0; j <= m.line.links; ++j) s.x.col(j) = m.line.arc_length[j] * dir;
+  s.v = Points::Zero(kDim, m.stations());
   ExpectNoEnergyPumped(m, s, 1.0 / 30, 10.0);
 }
 
@@ -128,9 +131,9 @@ TEST(ExplicitAuto, CatenaryFallingFromItsChordGainsNoEnergy) {
   // scenes/catenary.toml: 100 m of chain (EA 1e7 N) between fixed points 82.5 m apart, released
   // from the straight chord: every link slack, it falls 20 m and snaps taut hard (1e5 N). 5 s.
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const CableModel m = BuildModel(scene);
-  ASSERT_EQ(m.fluid_density, 0.0);
-  const CableState s = MakeInitialState(scene, m, nullptr);
+  const Model m = BuildModel(scene);
+  ASSERT_EQ(m.env.fluid_density, 0.0);
+  const State s = MakeInitialState(scene, m, nullptr);
   ExpectNoEnergyPumped(m, s, scene.output.interval, 5.0);
 }
 
@@ -140,11 +143,11 @@ TEST(ExplicitAuto, WithoutSlackLinksItTakesTheStepsAsked) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml");
   scene.simulation.integrator = IntegratorChoice::kExplicit;
   scene.simulation.duration = 10;
-  const CableModel m = BuildModel(scene);
+  const Model m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
-  CableState s = MakeInitialState(scene, m, nullptr);
-  auto integ = MakeIntegrator(m, grid);
-  ASSERT_TRUE(Simulate(m, *integ, s, grid, [](const CableState&, const Eigen::VectorXd& T) {
+  State s = MakeInitialState(scene, m, nullptr);
+  auto integ = testing::MakeStepper(m, grid);
+  ASSERT_TRUE(testing::Simulate(m, *integ, s, grid, [](const State&, const Eigen::VectorXd& T) {
     return T.minCoeff() > 0;
   }));
   EXPECT_EQ(integ->stats().steps, grid.outputs * grid.steps_per_output);

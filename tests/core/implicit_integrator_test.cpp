@@ -13,17 +13,20 @@
 #include <string>
 #include <vector>
 
-#include "run/simulation_run.h"
+#include "run/driver.h"
+#include "run/initial_state.h"
+#include "run/time_grid.h"
 #include "core/block_tridiagonal.h"
 #include "core/equilibrium.h"
 #include "core/force_jacobian.h"
 #include "core/forces.h"
-#include "core/generalized_alpha.h"
-#include "core/integrator.h"
+#include "core/implicit_step.h"
+#include "core/step.h"
 #include "core/stability.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
+#include "drive_support.h"
 
 namespace cablefilm {
 namespace {
@@ -39,7 +42,7 @@ struct TautString {
   static constexpr int N = 20;
   static constexpr double l0 = 1.0, mu = 1.0, EA = 1e4, strain = 0.01;
   static constexpr double L = l0 * (1 + strain), T0 = EA * strain, mass = mu * l0;
-  CableModel model;
+  Model model;
   TautString() {
     EnvironmentSpec env;
     env.gravity = 0;
@@ -51,11 +54,11 @@ struct TautString {
   static double Shape(int k, int j) { return std::sin(k * M_PI * j / N); }
   // Mode k with amplitude A at rest: a transverse amplitude of 1e-4 m changes the link tension
   // by (EA/T0) slope^2/2 ~ 1e-8 relative, so the motion is linear to that order.
-  CableState Initial(int k, double A) const {
-    CableState s;
+  State Initial(int k, double A) const {
+    State s;
     s.x.resize(2, N + 1);
-    s.v = Eigen::Matrix2Xd::Zero(2, N + 1);
-    for (int j = 0; j <= N; ++j) s.x.col(j) = Eigen::Vector2d(j * L, A * Shape(k, j));
+    s.v = Points::Zero(kDim, N + 1);
+    for (int j = 0; j <= N; ++j) s.x.col(j) = Vec(j * L, A * Shape(k, j));
     return s;
   }
 };
@@ -92,8 +95,8 @@ double TautStringError(int steps_per_period, double periods, double rho_inf) {
   const double A = 1e-4, omega = TautString::Omega(k), P = 2 * M_PI / omega;
   const double h = P / steps_per_period;
   const int sample = steps_per_period / 20;
-  CableState s = ts.Initial(k, A);
-  auto integ = MakeIntegrator(IntegratorKind::kImplicit, ts.model, rho_inf);
+  State s = ts.Initial(k, A);
+  auto integ = testing::MakeStepper(Scheme::kImplicit, ts.model, rho_inf);
   integ->Initialize(ts.model, s);
   double err = 0;
   const long steps = std::lround(periods * steps_per_period);
@@ -138,7 +141,7 @@ SceneDef P63Scene(int links = 60) {
 
 struct Series {
   std::vector<double> t, start, max;
-  IntegratorStats stats;
+  StepStats stats;
 };
 
 // Runs the scene with the given integrator and step (0: auto), output every 1/30 s.
@@ -148,12 +151,12 @@ Series RunScene(const SceneDef& scene_in, IntegratorChoice kind, double time_ste
   scene.simulation.integrator = kind;
   scene.simulation.time_step = time_step;
   scene.simulation.duration = duration;
-  const CableModel m = BuildModel(scene);
+  const Model m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30.0);
-  CableState state = MakeInitialState(scene, m, nullptr);
-  auto integ = MakeIntegrator(m, grid);
+  State state = MakeInitialState(scene, m, nullptr);
+  auto integ = testing::MakeStepper(m, grid);
   Series out;
-  Simulate(m, *integ, state, grid, [&](const CableState& s, const Eigen::VectorXd& T) {
+  testing::Simulate(m, *integ, state, grid, [&](const State& s, const Eigen::VectorXd& T) {
     out.t.push_back(s.t);
     out.start.push_back(T[0]);
     out.max.push_back(T.maxCoeff());
@@ -165,7 +168,7 @@ Series RunScene(const SceneDef& scene_in, IntegratorChoice kind, double time_ste
 
 // A chain of steel wire over nylon rope (20 m each, `n` links each) hanging from a fixed top,
 // its lower end free and carrying a 100 kg weight, in water with a current `current` along x.
-CableModel ChainWithWeight(double current, int n) {
+Model ChainWithWeight(double current, int n) {
   SectionSpec a{20.0, n, 0.0254, 5.067e-4, 2.75, 9.0e10, 1.2, 1.0};
   SectionSpec b{20.0, n, 0.0508, 2.027e-3, 1.70, 2.0e9, 1.2, 1.0};
   PrismSpec p;
@@ -178,18 +181,18 @@ CableModel ChainWithWeight(double current, int n) {
   EnvironmentSpec env;
   env.fluid_density = 1025;
   env.current = current;
-  return BuildCableModel({a, b}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -40}),
+  return MakeModel({a, b}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -40}),
                          LinkLaw::kElastic);
 }
 
 // Station positions every 1/30 s over `duration` from the still, vertical equilibrium, as the
 // current (0.5 m/s) starts to act: a swing into the current's deflected shape.
-std::vector<Eigen::Matrix2Xd> SwingIntoCurrent(IntegratorKind kind, double h, double duration) {
-  const CableModel still = ChainWithWeight(0.0, 20), m = ChainWithWeight(0.5, 20);
-  CableState s = SolveEquilibrium(still);
-  auto integ = MakeIntegrator(kind, m, 0.8);
+std::vector<Points> SwingIntoCurrent(Scheme kind, double h, double duration) {
+  const Model still = ChainWithWeight(0.0, 20), m = ChainWithWeight(0.5, 20);
+  State s = SolveEquilibrium(still);
+  auto integ = testing::MakeStepper(kind, m, 0.8);
   integ->Initialize(m, s);
-  std::vector<Eigen::Matrix2Xd> out;
+  std::vector<Points> out;
   const long steps = std::lround(duration / h), every = std::lround(1.0 / 30.0 / h);
   for (long i = 1; i <= steps; ++i) {
     integ->Step(m, s, h);
@@ -211,10 +214,10 @@ TEST(ImplicitIntegrator, SecondOrderWithDragAddedMassAndWeight) {
   // P63 itself is no good for this: eq. (3) starts the end with a jump in acceleration
   // (R''(0) = nu^2), which rings the axial modes undamped (drag is normal only), and the error
   // in following those settles at ~1e-5 m / ~13 N for all steps from 1/120 to 1/480 s.
-  const auto ref = SwingIntoCurrent(IntegratorKind::kExplicit, 1.0 / 7680, 10.0);
+  const auto ref = SwingIntoCurrent(Scheme::kExplicit, 1.0 / 7680, 10.0);
   std::vector<double> err;
   for (int n : {240, 480, 960}) {
-    const auto run = SwingIntoCurrent(IntegratorKind::kImplicit, 1.0 / n, 10.0);
+    const auto run = SwingIntoCurrent(Scheme::kImplicit, 1.0 / n, 10.0);
     double e = 0;
     for (size_t i = 0; i < run.size(); ++i) e = std::max(e, (run[i] - ref[i]).cwiseAbs().maxCoeff());
     err.push_back(e);
@@ -231,19 +234,19 @@ TEST(ImplicitIntegrator, SecondOrderWithDragAddedMassAndWeight) {
 TEST(ImplicitIntegrator, NoEnergyGainAndBoundedDampingOnTautString) {
   // The first mode of the taut string at 40 steps per period for 100 periods, rho_inf = 0.8.
   const TautString ts;
-  const CableModel& m = ts.model;
+  const Model& m = ts.model;
   const double A = 1e-4, omega = TautString::Omega(1), P = 2 * M_PI / omega, h = P / 40;
-  CableState s = ts.Initial(1, A);
-  auto integ = MakeIntegrator(IntegratorKind::kImplicit, m, 0.8);
+  State s = ts.Initial(1, A);
+  auto integ = testing::MakeStepper(Scheme::kImplicit, m, 0.8);
   integ->Initialize(m, s);
-  ForceWorkspace ws(m.links);
+  ForceWorkspace ws(m.line.links);
   auto energy = [&]() {
     ComputeGeometry(s.x, ws.geometry);
     return KineticEnergy(m, ws.geometry, s.v) + ElasticEnergy(m, ws.geometry) +
            PotentialEnergy(m, s.x);
   };
   // The vibration's energy: the total less that of the straight, stretched string at rest.
-  CableState straight = ts.Initial(1, 0.0);
+  State straight = ts.Initial(1, 0.0);
   ComputeGeometry(straight.x, ws.geometry);
   const double e_static = ElasticEnergy(m, ws.geometry);
   const double e0 = energy() - e_static;
@@ -301,23 +304,23 @@ TEST(ImplicitIntegrator, SwingingChainInVacuumGainsNoEnergy) {
   SectionSpec wire{20.0, 20, 0.0254, 5.067e-4, 2.75, 9.0e10, 0, 0};
   EnvironmentSpec env;
   env.fluid_density = 0;
-  const Eigen::Vector2d dir(std::sin(M_PI / 3), -std::cos(M_PI / 3));
-  const CableModel m = BuildCableModel({wire}, {}, env, EndMotion::Fixed({0, 0}),
+  const Vec dir(std::sin(M_PI / 3), -std::cos(M_PI / 3));
+  const Model m = MakeModel({wire}, {}, env, EndMotion::Fixed({0, 0}),
                                        EndMotion::Free(20.0 * dir), LinkLaw::kElastic);
-  CableState s;
+  State s;
   s.x.resize(2, m.stations());
-  for (int j = 0; j <= m.links; ++j) s.x.col(j) = m.arc_length[j] * dir;
-  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+  for (int j = 0; j <= m.line.links; ++j) s.x.col(j) = m.line.arc_length[j] * dir;
+  s.v = Points::Zero(kDim, m.stations());
   const double h = 20 * ComputeStabilityLimit(m).time_step;
-  auto integ = MakeIntegrator(IntegratorKind::kImplicit, m, 0.5, kDefaultRelativeTolerance * 20.0);
+  auto integ = testing::MakeStepper(Scheme::kImplicit, m, 0.5, kDefaultRelativeTolerance * 20.0);
   integ->Initialize(m, s);
-  ForceWorkspace ws(m.links);
+  ForceWorkspace ws(m.line.links);
   auto energy = [&]() {
     ComputeGeometry(s.x, ws.geometry);
     return KineticEnergy(m, ws.geometry, s.v) + ElasticEnergy(m, ws.geometry) +
            PotentialEnergy(m, s.x);
   };
-  const double e0 = energy(), scale = m.net_weight.sum() * 20.0;
+  const double e0 = energy(), scale = m.line.net_weight.sum() * 20.0;
   double worst_gain = -1e300, lowest = e0, max_speed = 0;
   const long steps = std::lround(20.0 / h);
   for (long n = 1; n <= steps; ++n) {
@@ -401,17 +404,17 @@ SceneDef SnapScene() {
 struct SnapResult {
   double peak = 0, max_strain = 0, max_speed = 0;
   int most_slack = 0;
-  IntegratorStats stats;
+  StepStats stats;
 };
 
 SnapResult RunSnap(double rho_inf, double step_factor) {
   const SceneDef scene = SnapScene();
-  const CableModel m = BuildModel(scene);
-  CableState s = MakeInitialState(scene, m, nullptr);
+  const Model m = BuildModel(scene);
+  State s = MakeInitialState(scene, m, nullptr);
   const double h = step_factor * ComputeStabilityLimit(m).time_step;
-  auto integ = MakeIntegrator(IntegratorKind::kImplicit, m, rho_inf);
+  auto integ = testing::MakeStepper(Scheme::kImplicit, m, rho_inf);
   integ->Initialize(m, s);
-  ForceWorkspace ws(m.links);
+  ForceWorkspace ws(m.line.links);
   SnapResult r;
   const long steps = std::lround(10.0 / h);
   for (long n = 1; n <= steps; ++n) {
@@ -421,7 +424,7 @@ SnapResult RunSnap(double rho_inf, double step_factor) {
     r.peak = std::max(r.peak, T.maxCoeff());
     r.most_slack = std::max(r.most_slack, static_cast<int>((T.array() == 0).count()));
     ComputeGeometry(s.x, ws.geometry);
-    r.max_strain = std::max(r.max_strain, (ws.geometry.length.cwiseQuotient(m.rest_length)).maxCoeff() - 1);
+    r.max_strain = std::max(r.max_strain, (ws.geometry.length.cwiseQuotient(m.line.rest_length)).maxCoeff() - 1);
     r.max_speed = std::max(r.max_speed, s.v.colwise().norm().maxCoeff());
   }
   r.stats = integ->stats();
@@ -439,19 +442,19 @@ SnapResult RunSnap(double rho_inf, double step_factor) {
 // farthest point. A numerical blow-up breaks this bound.
 double SnapTensionBound() {
   SceneDef scene = SnapScene();
-  const CableModel m = BuildModel(scene);
+  const Model m = BuildModel(scene);
   double end_speed = 0;
-  for (double t = 0; t <= 10; t += 1e-3) end_speed = std::max(end_speed, m.end.Velocity(t).norm());
-  const double max_speed = end_speed + m.gravity * 3.0;
+  for (double t = 0; t <= 10; t += 1e-3) end_speed = std::max(end_speed, m.ends.end.Velocity(t).norm());
+  const double max_speed = end_speed + m.env.gravity * 3.0;
   double z = 0;  // largest sqrt(EA mu) over the links [kg/s]
-  for (int k = 0; k < m.links; ++k)
-    z = std::max(z, std::sqrt(m.axial_stiffness[k] * (m.link_mass[k] + m.virtual_mass[k]) /
-                              m.rest_length[k]));
+  for (int k = 0; k < m.line.links; ++k)
+    z = std::max(z, std::sqrt(m.line.axial_stiffness[k] * (m.line.link_mass[k] + m.line.virtual_mass[k]) /
+                              m.line.rest_length[k]));
   scene.end.motion = EndMotionKind::kFixed;
   scene.end.position[0] += 2.0;
-  const CableModel far = BuildModel(scene);
-  CableState eq = SolveEquilibrium(far);
-  ForceWorkspace ws(far.links);
+  const Model far = BuildModel(scene);
+  State eq = SolveEquilibrium(far);
+  ForceWorkspace ws(far.line.links);
   ComputeGeometry(eq.x, ws.geometry);
   ComputeHookeTensions(far, ws.geometry, ws.tension);
   return ws.tension.maxCoeff() + 2.0 * z * (2.0 * max_speed);
@@ -459,21 +462,21 @@ double SnapTensionBound() {
 
 void ExpectSnapRunsThrough(double rho_inf) {
   const SceneDef scene = SnapScene();
-  const CableModel m = BuildModel(scene);
-  CableState s0 = MakeInitialState(scene, m, nullptr);
-  ForceWorkspace ws(m.links);
+  const Model m = BuildModel(scene);
+  State s0 = MakeInitialState(scene, m, nullptr);
+  ForceWorkspace ws(m.line.links);
   ComputeGeometry(s0.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
   const double t0 = ws.tension.maxCoeff();
   SnapResult r;
   ASSERT_NO_THROW(r = RunSnap(rho_inf, 50.0));
   const double bound = SnapTensionBound();
-  const double ea_min = m.axial_stiffness.minCoeff();
+  const double ea_min = m.line.axial_stiffness.minCoeff();
   std::printf("[ snap ] rho_inf %.2g, h = 50 x explicit limit: %ld steps, %ld rejected, %.2f "
               "Newton/step; up to %d of %d links slack; peak tension %.0f N (initial %.0f N, "
               "energy bound %.0f N); largest strain %.4f; top speed %.2f m/s\n",
               rho_inf, r.stats.steps, r.stats.rejected,
-              double(r.stats.newton_iterations) / r.stats.steps, r.most_slack, m.links, r.peak, t0,
+              double(r.stats.newton_iterations) / r.stats.steps, r.most_slack, m.line.links, r.peak, t0,
               bound, r.max_strain, r.max_speed);
   EXPECT_GE(r.most_slack, 10);    // the line did go slack ...
   EXPECT_GT(r.peak, 1.5 * t0);    // ... and snapped
@@ -502,20 +505,20 @@ TEST(ImplicitIntegrator, SlackThenSnapWithAdaptiveStepDefaultRhoInf) {
   scene.simulation.duration = 10;
   scene.simulation.time_step = 0;
   scene.simulation.integrator = IntegratorChoice::kImplicit;
-  const CableModel m = BuildModel(scene);
+  const Model m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
-  ASSERT_GT(grid.error_tolerance, 0);
-  CableState s = MakeInitialState(scene, m, nullptr);
-  auto integ = MakeIntegrator(m, grid);
+  ASSERT_GT(grid.options.tolerance, 0);
+  State s = MakeInitialState(scene, m, nullptr);
+  auto integ = testing::MakeStepper(m, grid);
   double peak = 0;
   int most_slack = 0;
-  ASSERT_NO_THROW(Simulate(m, *integ, s, grid, [&](const CableState&, const Eigen::VectorXd& T) {
+  ASSERT_NO_THROW(testing::Simulate(m, *integ, s, grid, [&](const State&, const Eigen::VectorXd& T) {
     EXPECT_TRUE(T.allFinite());
     peak = std::max(peak, T.maxCoeff());
     most_slack = std::max(most_slack, static_cast<int>((T.array() == 0).count()));
     return true;
   }));
-  const IntegratorStats st = integ->stats();
+  const StepStats st = integ->stats();
   const double bound = SnapTensionBound();
   std::printf("[ snap ] auto step, default rho_inf: %ld steps, %ld rejected, %.2f Newton/step; up to "
               "%d links slack; peak tension %.0f N (energy bound %.0f N)\n",
@@ -555,7 +558,7 @@ TEST(ImplicitIntegrator, StepIndependentOfStations) {
 // `sea`: a seabed through the random configuration (stiff, damped, with friction regularised
 // over 1 m/s so its velocity derivative is of the size of the others) and a sheared current
 // profile whose points fall among the stations' elevations.
-CableModel JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = false) {
+Model JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = false) {
   SectionSpec a{6.0, 6, 0.05, 1e-3, 1.5, 1e6, 1.2, 1.0};   // EA = 1 kN
   SectionSpec b{4.0, 5, 0.03, 5e-4, 0.8, 4e6, 1.0, 0.8};   // EA = 2 kN
   a.axial_damping_ratio = damping_ratio;
@@ -595,32 +598,32 @@ CableModel JacobianModel(double damping_ratio = 0, bool sea = false, bool waves 
     env.current_profile.y = {-3.0, -0.7, 0.4, 2.5};
     env.current_profile.speed = {0.2, 0.9, -0.4, 1.1};
   }
-  return BuildCableModel({a, b}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({10, -1}),
+  return MakeModel({a, b}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({10, -1}),
                          LinkLaw::kElastic);
 }
 
 // Station positions and velocities: links alternately 5-15 % stretched and 10-40 % short, at
 // random angles; velocities up to 3 m/s.
-void RandomConfiguration(const CableModel& m, std::mt19937& rng, Eigen::Matrix2Xd& x,
-                         Eigen::Matrix2Xd& v, Eigen::Matrix2Xd& a) {
+void RandomConfiguration(const Model& m, std::mt19937& rng, Points& x,
+                         Points& v, Points& a) {
   std::uniform_real_distribution<double> u(-1, 1);
   x.resize(2, m.stations());
   v.resize(2, m.stations());
   a.resize(2, m.stations());
   x.col(0).setZero();
-  for (int k = 0; k < m.links; ++k) {
+  for (int k = 0; k < m.line.links; ++k) {
     const double ratio = k % 3 == 2 ? 0.75 + 0.15 * u(rng) : 1.1 + 0.05 * u(rng);
     const double angle = 0.8 * u(rng);
-    x.col(k + 1) = x.col(k) + ratio * m.rest_length[k] * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    x.col(k + 1) = x.col(k) + ratio * m.line.rest_length[k] * Vec(std::cos(angle), std::sin(angle));
   }
   // Drawn one by one: the order in which a call's arguments are evaluated differs between
   // compilers, and every compiler must test the same states (among them a taut link whose
   // damping holds its tension at zero, which only clang's order drew before).
   auto draw = [&](double scale) {
     const double first = u(rng);
-    return Eigen::Vector2d(scale * first, scale * u(rng));
+    return Vec(scale * first, scale * u(rng));
   };
-  for (int j = 0; j <= m.links; ++j) {
+  for (int j = 0; j <= m.line.links; ++j) {
     v.col(j) = draw(3.0);
     a.col(j) = draw(10.0);
   }
@@ -645,38 +648,38 @@ double RelativeError(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& fd)
 
 void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = false,
                                              bool waves = false) {
-  const CableModel m = JacobianModel(damping_ratio, sea, waves);
+  const Model m = JacobianModel(damping_ratio, sea, waves);
   const double t = 2.0;  // [s]: the time of the sea (waves only)
   const int j0 = m.first_free(), j1 = m.last_free(), n = j1 - j0 + 1;
   ASSERT_EQ(j0, 1);
-  ASSERT_EQ(j1, m.links);  // the free end is included
+  ASSERT_EQ(j1, m.line.links);  // the free end is included
   std::mt19937 rng(20240605);
   double worst_x = 0, worst_v = 0, worst_m = 0, worst_ma = 0;
   int grounded = 0;  // stations on the bed, over the trials
   int surface = 0;   // stations in the surface's band (partly wet), over the trials
   for (int trial = 0; trial < 5; ++trial) {
-    Eigen::Matrix2Xd x, v, a;
+    Points x, v, a;
     RandomConfiguration(m, rng, x, v, a);
     for (int j = j0; sea && j <= j1; ++j) {
-      const double p = m.seabed.y - x(1, j);  // pressing: N = k p - c v_y > 0
-      grounded += p > 0 && m.seabed_stiffness[j] * p > m.seabed_damping[j] * v(1, j);
+      const double p = m.env.seabed.y - x(1, j);  // pressing: N = k p - c v_y > 0
+      grounded += p > 0 && m.line.seabed_stiffness[j] * p > m.line.seabed_damping[j] * v(1, j);
     }
-    ForceWorkspace ws(m.links);
+    ForceWorkspace ws(m.line.links);
     if (waves) {
-      ComputeGeometry(m, t, x, ws.geometry);
+      ComputeGeometry(m, SceneWater(m), t, x, ws.geometry);
       for (int j = j0; j <= j1; ++j)
         surface += ws.geometry.sea.wet[j] > 0 && ws.geometry.sea.wet[j] < 1;
     }
-    auto forces = [&](const Eigen::Matrix2Xd& xx, const Eigen::Matrix2Xd& vv) {
-      ComputeGeometry(m, t, xx, ws.geometry);
+    auto forces = [&](const Points& xx, const Points& vv) {
+      ComputeGeometry(m, SceneWater(m), t, xx, ws.geometry);
       ComputeTensions(m, ws.geometry, vv, ws.tension);
-      ComputeStationForces(m, ws.geometry, ws.tension, vv, ws.force);
+      ComputeStationForces(m, SceneWater(m), ws.geometry, ws.tension, vv, ws.force);
       Eigen::VectorXd f(2 * n);
       for (int j = j0; j <= j1; ++j) f.segment<2>(2 * (j - j0)) = ws.force.col(j);
       return f;
     };
-    auto inertia_times_a = [&](const Eigen::Matrix2Xd& xx) {
-      ComputeGeometry(m, t, xx, ws.geometry);
+    auto inertia_times_a = [&](const Points& xx) {
+      ComputeGeometry(m, SceneWater(m), t, xx, ws.geometry);
       Eigen::VectorXd f(2 * n);
       for (int j = j0; j <= j1; ++j)
         f.segment<2>(2 * (j - j0)) = StationInertia(m, ws.geometry, j) * a.col(j);
@@ -689,7 +692,7 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
     for (int j = j0; j <= j1; ++j)
       for (int c = 0; c < 2; ++c) {
         const int col = 2 * (j - j0) + c;
-        Eigen::Matrix2Xd xp = x, xm = x, vp = v, vm = v;
+        Points xp = x, xm = x, vp = v, vm = v;
         xp(c, j) += d;
         xm(c, j) -= d;
         vp(c, j) += d;
@@ -699,12 +702,12 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
         dMadx.col(col) = (inertia_times_a(xp) - inertia_times_a(xm)) / (2 * d);
       }
     // Analytic: kv = 0 gives -dF/dx; kv = 1 adds -dF/dv. ka = 0 gives d(M a)/dx; ka = 1 adds M.
-    ComputeGeometry(m, t, x, ws.geometry);
+    ComputeGeometry(m, SceneWater(m), t, x, ws.geometry);
     ComputeTensions(m, ws.geometry, v, ws.tension);
     BlockTridiagonal s0(n), s1(n), i0(n), i1(n);
     for (BlockTridiagonal* s : {&s0, &s1, &i0, &i1}) s->SetZero();
-    AddForceJacobian(m, ws.geometry, ws.tension, v, 0.0, s0);
-    AddForceJacobian(m, ws.geometry, ws.tension, v, 1.0, s1);
+    AddForceJacobian(m, SceneWater(m), ws.geometry, ws.tension, v, 0.0, s0);
+    AddForceJacobian(m, SceneWater(m), ws.geometry, ws.tension, v, 1.0, s1);
     AddInertiaJacobian(m, ws.geometry, a, 0.0, i0);
     AddInertiaJacobian(m, ws.geometry, a, 1.0, i1);
     Eigen::MatrixXd M = Eigen::MatrixXd::Zero(2 * n, 2 * n);

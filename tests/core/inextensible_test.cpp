@@ -25,12 +25,16 @@
 #include <unistd.h>
 
 #include "app/commands.h"
-#include "run/simulation_run.h"
+#include "run/driver.h"
+#include "run/initial_state.h"
+#include "run/time_grid.h"
 #include "core/equilibrium.h"
 #include "core/forces.h"
-#include "core/inextensible.h"
+#include "core/inextensible_step.h"
+#include "core/equilibrium.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "drive_support.h"
 
 #ifndef CABLEFILM_TEST_RENDER
 #define CABLEFILM_TEST_RENDER 0
@@ -44,7 +48,7 @@ const std::string kP63 = std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek19
 
 // A uniform inextensible chain of `links` links in vacuum (no drag, no added mass, no buoyancy):
 // station masses mu l inside, mu l / 2 at the ends.
-CableModel Chain(int links, double length, double mu, EndMotion start, EndMotion end) {
+Model Chain(int links, double length, double mu, EndMotion start, EndMotion end) {
   SectionSpec s;
   s.length = length;
   s.segments = links;
@@ -55,7 +59,7 @@ CableModel Chain(int links, double length, double mu, EndMotion start, EndMotion
   EnvironmentSpec env;
   env.gravity = kG;
   env.fluid_density = 0;
-  return BuildCableModel({s}, {}, env, std::move(start), std::move(end), LinkLaw::kInextensible);
+  return MakeModel({s}, {}, env, std::move(start), std::move(end), LinkLaw::kInextensible);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -103,9 +107,9 @@ class Pendulum {
       w += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
     }
   }
-  Eigen::Vector2d EndPosition(const Eigen::VectorXd& th) const {
-    Eigen::Vector2d r = Eigen::Vector2d::Zero();
-    for (int i = 0; i < n_; ++i) r += l_[i] * Eigen::Vector2d(std::cos(th[i]), std::sin(th[i]));
+  Vec EndPosition(const Eigen::VectorXd& th) const {
+    Vec r = Vec::Zero();
+    for (int i = 0; i < n_; ++i) r += l_[i] * Vec(std::cos(th[i]), std::sin(th[i]));
     return r;
   }
   // Tension of link 0: stations 1..N feel only link 0's pull -T t_0 and gravity, so
@@ -113,15 +117,15 @@ class Pendulum {
   // a_j = sum_{i<j} l_i (th_i'' n_i - th_i'^2 t_i) (t_i = (cos, sin), n_i = (-sin, cos)).
   double FirstTension(const Eigen::VectorXd& th, const Eigen::VectorXd& w) const {
     const Eigen::VectorXd al = Accel(th, w);
-    Eigen::Vector2d p = Eigen::Vector2d(0, g_ * S_[0]);
-    Eigen::Vector2d a = Eigen::Vector2d::Zero();
+    Vec p = Vec(0, g_ * S_[0]);
+    Vec a = Vec::Zero();
     for (int j = 1; j <= n_; ++j) {
       const int i = j - 1;
-      const Eigen::Vector2d t(std::cos(th[i]), std::sin(th[i])), nn(-std::sin(th[i]), std::cos(th[i]));
+      const Vec t(std::cos(th[i]), std::sin(th[i])), nn(-std::sin(th[i]), std::cos(th[i]));
       a += l_[i] * (al[i] * nn - w[i] * w[i] * t);
       p += mass_[j] * a;
     }
-    return -Eigen::Vector2d(std::cos(th[0]), std::sin(th[0])).dot(p);
+    return -Vec(std::cos(th[0]), std::sin(th[0])).dot(p);
   }
 
  private:
@@ -132,14 +136,14 @@ class Pendulum {
   std::vector<double> mass_;
 };
 
-Pendulum PendulumOf(const CableModel& m) {
-  std::vector<double> l(m.rest_length.data(), m.rest_length.data() + m.links);
-  std::vector<double> mass(m.cable_mass.data(), m.cable_mass.data() + m.stations());
-  return Pendulum(l, mass, m.gravity);
+Pendulum PendulumOf(const Model& m) {
+  std::vector<double> l(m.line.rest_length.data(), m.line.rest_length.data() + m.line.links);
+  std::vector<double> mass(m.line.cable_mass.data(), m.line.cable_mass.data() + m.stations());
+  return Pendulum(l, mass, m.env.gravity);
 }
 
 struct Sample {
-  Eigen::Vector2d end;
+  Vec end;
   double tension0;
 };
 
@@ -156,19 +160,19 @@ std::vector<Sample> PendulumTruth(const Pendulum& p, double interval, int count,
 }
 
 // cablefilm's inextensible integrator from the same state, outer step dt.
-std::vector<Sample> CablefilmRun(const CableModel& m, double interval, int count, double dt,
+std::vector<Sample> CablefilmRun(const Model& m, double interval, int count, double dt,
                                  long* substeps = nullptr) {
-  CableState s;
-  s.x = Eigen::Matrix2Xd::Zero(2, m.stations());
-  for (int j = 0; j <= m.links; ++j) s.x(0, j) = m.arc_length[j];
-  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
-  InextensibleIntegrator integ(m);
+  State s;
+  s.x = Points::Zero(kDim, m.stations());
+  for (int j = 0; j <= m.line.links; ++j) s.x(0, j) = m.line.arc_length[j];
+  s.v = Points::Zero(kDim, m.stations());
+  testing::Stepper integ(Scheme::kInextensible);
   integ.Initialize(m, s);
   const long steps = std::lround(interval / dt);
   std::vector<Sample> out;
   for (int k = 0; k < count; ++k) {
     for (long n = 0; n < steps; ++n) integ.Step(m, s, interval / steps);
-    out.push_back({s.x.col(m.links), integ.tensions()[0]});
+    out.push_back({s.x.col(m.line.links), integ.tensions()[0]});
   }
   if (substeps) *substeps = integ.stats().steps;
   return out;
@@ -192,7 +196,7 @@ Errors MaxErrors(const std::vector<Sample>& a, const std::vector<Sample>& b) {
 void CheckPendulumRelease(int links, double interval, int count, double dt, double pos_tol,
                           double ten_tol, double rk4_step) {
   const double L = 1.0, mu = 1.0;
-  const CableModel m = Chain(links, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Free({L, 0}));
+  const Model m = Chain(links, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Free({L, 0}));
   const Pendulum p = PendulumOf(m);
   // RK4 at a tiny step h; its own error (global O(h^4)) is 1/15 of the difference from the
   // run at 2h, which must be below 1 % of the tolerances: the truth is exact for this purpose.
@@ -263,23 +267,23 @@ TEST(InextensiblePendulum, TwentyLinksReleasedFromHorizontal) {
 // the substeps (before the local error control, the run took one step per row and was 15 mm off
 // at t = 1 s with 5 links); the local error control must.
 struct ChainSample {
-  Eigen::Matrix2Xd x;  // every station [m]
+  Points x;  // every station [m]
   double tension0;     // first link [N]
 };
 
 // The pendulum's stations, station 0 at the origin.
-Eigen::Matrix2Xd PendulumStations(const CableModel& m, const Eigen::VectorXd& th) {
-  Eigen::Matrix2Xd x = Eigen::Matrix2Xd::Zero(2, m.stations());
-  for (int i = 0; i < m.links; ++i)
-    x.col(i + 1) = x.col(i) + m.rest_length[i] * Eigen::Vector2d(std::cos(th[i]), std::sin(th[i]));
+Points PendulumStations(const Model& m, const Eigen::VectorXd& th) {
+  Points x = Points::Zero(kDim, m.stations());
+  for (int i = 0; i < m.line.links; ++i)
+    x.col(i + 1) = x.col(i) + m.line.rest_length[i] * Vec(std::cos(th[i]), std::sin(th[i]));
   return x;
 }
 
 // The truth at the given times (multiples of `quantum`), from rest with every angle 0, by RK4.
-std::vector<ChainSample> ChainTruth(const CableModel& m, const std::vector<double>& times,
+std::vector<ChainSample> ChainTruth(const Model& m, const std::vector<double>& times,
                                     double quantum, double h) {
   const Pendulum p = PendulumOf(m);
-  Eigen::VectorXd th = Eigen::VectorXd::Zero(m.links), w = Eigen::VectorXd::Zero(m.links);
+  Eigen::VectorXd th = Eigen::VectorXd::Zero(m.line.links), w = Eigen::VectorXd::Zero(m.line.links);
   const long steps = std::lround(quantum / h);
   std::vector<ChainSample> out;
   long done = 0;
@@ -292,26 +296,26 @@ std::vector<ChainSample> ChainTruth(const CableModel& m, const std::vector<doubl
 
 struct AutoRun {
   std::vector<ChainSample> samples;  // at the compared times
-  IntegratorStats stats;
+  StepStats stats;
 };
 
-AutoRun RunAuto(const CableModel& m, double tolerance, const std::vector<double>& times) {
+AutoRun RunAuto(const Model& m, double tolerance, const std::vector<double>& times) {
   SimulationDef sim;
   sim.duration = times.back();
   sim.time_step = 0;  // "auto"
   sim.tolerance = tolerance;
   const TimeGrid grid = ChooseTimeGrid(m, sim, 0.05);
-  EXPECT_EQ(grid.kind, IntegratorKind::kInextensible);
+  EXPECT_EQ(grid.options.scheme, Scheme::kInextensible);
   EXPECT_EQ(grid.steps_per_output, 1);  // the substeps are the integrator's own
-  EXPECT_NEAR(grid.error_tolerance, tolerance > 0 ? tolerance : 1e-6 * m.total_length(), 1e-18);
-  CableState s;
-  s.x = Eigen::Matrix2Xd::Zero(2, m.stations());
-  for (int j = 0; j <= m.links; ++j) s.x(0, j) = m.arc_length[j];
-  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
-  auto integ = MakeIntegrator(m, grid);
+  EXPECT_NEAR(grid.options.tolerance, tolerance > 0 ? tolerance : 1e-6 * m.line.total_length(), 1e-18);
+  State s;
+  s.x = Points::Zero(kDim, m.stations());
+  for (int j = 0; j <= m.line.links; ++j) s.x(0, j) = m.line.arc_length[j];
+  s.v = Points::Zero(kDim, m.stations());
+  auto integ = testing::MakeStepper(m, grid);
   AutoRun r;
   size_t next = 0;
-  Simulate(m, *integ, s, grid, [&](const CableState& st, const Eigen::VectorXd& T) {
+  testing::Simulate(m, *integ, s, grid, [&](const State& st, const Eigen::VectorXd& T) {
     if (next < times.size() && std::abs(st.t - times[next]) < 1e-9) {
       r.samples.push_back({st.x, T[0]});
       ++next;
@@ -325,7 +329,7 @@ AutoRun RunAuto(const CableModel& m, double tolerance, const std::vector<double>
 
 void CheckAutoRelease(int links, double rk4_step) {
   const double L = 5.0, mu = 1.0;
-  const CableModel m = Chain(links, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Free({L, 0}));
+  const Model m = Chain(links, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Free({L, 0}));
   const std::vector<double> times = {0.25, 0.5, 1.0};
   // RK4's own error is 1/15 of its difference from the run at 2h: held to 1e-7 m and 1e-6 of
   // the tension, 1e-2 or less of the smallest errors measured below (3e-6 m, 2e-6).
@@ -387,10 +391,10 @@ TEST(InextensibleAuto, EndsPulledApartEndTheRunWithABlowUpError) {
   // A 10 m chain whose far end is pulled from 8 m to 12 m from the pinned one in 1 s: at
   // t = 0.5 s it would have to stretch. The error control must not chase ever smaller substeps
   // (a hang): it ends the run with a BlowUpError that says why, near t = 0.5 s.
-  const CableModel m = Chain(10, 10.0, 1.0, EndMotion::Fixed({0, 0}),
+  const Model m = Chain(10, 10.0, 1.0, EndMotion::Fixed({0, 0}),
                              EndMotion::Table({8, 0}, {{0, 0, 0}, {1, 4, 0}}));
-  CableState s = SolveInextensibleEquilibrium(m, nullptr);
-  InextensibleIntegrator integ(m, 1e-5);
+  State s = SolveInextensibleEquilibrium(m, nullptr);
+  testing::Stepper integ(Scheme::kInextensible, 0.5, 1e-5);
   integ.Initialize(m, s);
   try {
     for (int k = 0; k < 40; ++k) integ.Step(m, s, 0.025);
@@ -414,15 +418,15 @@ struct HangingModes {
   Eigen::MatrixXd M;
 };
 
-HangingModes HangingChainModes(const CableModel& m) {
-  const int n = m.links;
+HangingModes HangingChainModes(const Model& m) {
+  const int n = m.line.links;
   std::vector<double> S(n);
   double acc = 0;
-  for (int i = n - 1; i >= 0; --i) S[i] = (acc += m.cable_mass[i + 1]);
+  for (int i = n - 1; i >= 0; --i) S[i] = (acc += m.line.cable_mass[i + 1]);
   Eigen::MatrixXd M(n, n), K = Eigen::MatrixXd::Zero(n, n);
   for (int i = 0; i < n; ++i) {
-    K(i, i) = m.gravity * m.rest_length[i] * S[i];
-    for (int k = 0; k < n; ++k) M(i, k) = m.rest_length[i] * m.rest_length[k] * S[std::max(i, k)];
+    K(i, i) = m.env.gravity * m.line.rest_length[i] * S[i];
+    for (int k = 0; k < n; ++k) M(i, k) = m.line.rest_length[i] * m.line.rest_length[k] * S[std::max(i, k)];
   }
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
   return {es.eigenvalues().cwiseSqrt(), es.eigenvectors(), M};
@@ -431,22 +435,22 @@ HangingModes HangingChainModes(const CableModel& m) {
 // Released from rest with link angles amplitude * shape: the period of the modal coordinate
 // q = shape^T M phi(t) from zero crossings (linear interpolation; q'' ~ -w^2 q vanishes at a
 // crossing, so the interpolation error is O(dt^3)).
-double SimulatedPeriod(const CableModel& m, const Eigen::VectorXd& shape, const Eigen::MatrixXd& M,
+double SimulatedPeriod(const Model& m, const Eigen::VectorXd& shape, const Eigen::MatrixXd& M,
                        double amplitude, double dt, int crossings) {
   const Eigen::VectorXd phi0 = amplitude / shape.cwiseAbs().maxCoeff() * shape;
-  CableState s;
-  s.x = Eigen::Matrix2Xd::Zero(2, m.stations());
-  for (int i = 0; i < m.links; ++i)
+  State s;
+  s.x = Points::Zero(kDim, m.stations());
+  for (int i = 0; i < m.line.links; ++i)
     s.x.col(i + 1) =
-        s.x.col(i) + m.rest_length[i] * Eigen::Vector2d(std::sin(phi0[i]), -std::cos(phi0[i]));
-  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
-  InextensibleIntegrator integ(m);
+        s.x.col(i) + m.line.rest_length[i] * Vec(std::sin(phi0[i]), -std::cos(phi0[i]));
+  s.v = Points::Zero(kDim, m.stations());
+  testing::Stepper integ(Scheme::kInextensible);
   integ.Initialize(m, s);
   const Eigen::VectorXd Ms = M * shape;
   auto modal = [&]() {
     double q = 0;
-    for (int i = 0; i < m.links; ++i) {
-      const Eigen::Vector2d d = s.x.col(i + 1) - s.x.col(i);
+    for (int i = 0; i < m.line.links; ++i) {
+      const Vec d = s.x.col(i + 1) - s.x.col(i);
       q += Ms[i] * std::atan2(d.x(), -d.y());
     }
     return q;
@@ -466,7 +470,7 @@ double SimulatedPeriod(const CableModel& m, const Eigen::VectorXd& shape, const 
 TEST(InextensibleHangingChain, SmallOscillationPeriods) {
   const int N = 20;
   const double L = 1.0;
-  const CableModel m = Chain(N, L, 1.0, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -L}));
+  const Model m = Chain(N, L, 1.0, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -L}));
   const HangingModes modes = HangingChainModes(m);
   const double dt = 1e-3;
   for (int k = 0; k < 2; ++k) {
@@ -496,7 +500,7 @@ TEST(InextensibleHangingChain, SmallOscillationPeriods) {
     const double exact = 0.5 * j0[k] * std::sqrt(kG / L);
     double prev = 0;
     for (int n : {20, 40, 80}) {
-      const CableModel mn = Chain(n, L, 1.0, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -L}));
+      const Model mn = Chain(n, L, 1.0, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -L}));
       const double err = std::abs(HangingChainModes(mn).omega[k] / exact - 1);
       std::printf("  mode %d, N=%d: discrete omega vs Bessel %.3e relative\n", k + 1, n, err);
       if (n == 20) {
@@ -511,7 +515,7 @@ TEST(InextensibleHangingChain, SmallOscillationPeriods) {
 }
 
 // ---------------------------------------------------------------------------------------------
-LinkGeometry GeometryOf(const Eigen::Matrix2Xd& x) {
+LinkGeometry GeometryOf(const Points& x) {
   ForceWorkspace ws(static_cast<int>(x.cols()) - 1);
   ComputeGeometry(x, ws.geometry);
   return ws.geometry;
@@ -519,15 +523,15 @@ LinkGeometry GeometryOf(const Eigen::Matrix2Xd& x) {
 
 // Static tensions of a model with both ends fixed at the state x (v = 0): the constraint solve.
 // *imbalance: the largest net force on a free station [N] (zero at an equilibrium).
-Eigen::VectorXd ConstraintTensions(const CableModel& m, const Eigen::Matrix2Xd& x,
+Eigen::VectorXd ConstraintTensions(const Model& m, const Points& x,
                                    double* imbalance = nullptr) {
-  CableModel fixed = m;
-  fixed.start = m.start.prescribed() ? EndMotion::Fixed(m.start.Position(0)) : m.start;
-  fixed.end = m.end.prescribed() ? EndMotion::Fixed(m.end.Position(0)) : m.end;
+  Model fixed = m;
+  fixed.ends.start = m.ends.start.prescribed() ? EndMotion::Fixed(m.ends.start.Position(0)) : m.ends.start;
+  fixed.ends.end = m.ends.end.prescribed() ? EndMotion::Fixed(m.ends.end.Position(0)) : m.ends.end;
   ConstraintSolver solver(fixed);
-  ForceWorkspace ws(fixed.links);
-  Eigen::Matrix2Xd a(2, fixed.stations());
-  solver.Accelerations(fixed, 0, x, Eigen::Matrix2Xd::Zero(2, fixed.stations()), ws, a);
+  ForceWorkspace ws(fixed.line.links);
+  Points a(kDim, fixed.stations());
+  solver.Accelerations(fixed, SceneInputs(fixed), SceneWater(fixed), 0, x, Points::Zero(kDim, fixed.stations()), ws, a);
   if (imbalance)
     *imbalance = ws.force.middleCols(fixed.first_free(), fixed.last_free() - fixed.first_free() + 1)
                      .colwise()
@@ -536,17 +540,17 @@ Eigen::VectorXd ConstraintTensions(const CableModel& m, const Eigen::Matrix2Xd& 
   return ws.tension;
 }
 
-Eigen::VectorXd HookeTensions(const CableModel& m, const Eigen::Matrix2Xd& x) {
+Eigen::VectorXd HookeTensions(const Model& m, const Points& x) {
   const LinkGeometry g = GeometryOf(x);
-  Eigen::VectorXd t(m.links);
+  Eigen::VectorXd t(m.line.links);
   ComputeHookeTensions(m, g, t);
   return t;
 }
 
 TEST(InextensibleLimit, ElasticP63EquilibriumApproachesItAsOneOverEA) {
   SceneDef scene = LoadScene(kP63);
-  const CableModel base = BuildModel(scene);  // elastic
-  const CableState rigid = SolveInextensibleEquilibrium(base, nullptr);
+  const Model base = BuildModel(scene);  // elastic
+  const State rigid = SolveInextensibleEquilibrium(base, nullptr);
   double imbalance = 0;
   const Eigen::VectorXd T_rigid = ConstraintTensions(base, rigid.x, &imbalance);
   // The inextensible equilibrium is one: with the constraint tensions every free station is in
@@ -556,10 +560,10 @@ TEST(InextensibleLimit, ElasticP63EquilibriumApproachesItAsOneOverEA) {
   EXPECT_LT(imbalance, 1e-8 * StaticForceScale(base));
   std::vector<double> dT, dx;
   for (double scale : {1.0, 100.0, 200.0, 400.0, 800.0}) {
-    CableModel m = base;
-    m.axial_stiffness *= scale;
+    Model m = base;
+    m.line.axial_stiffness *= scale;
     EquilibriumReport rep;
-    const CableState el = SolveEquilibrium(m, &rep);
+    const State el = SolveEquilibrium(m, &rep);
     dT.push_back((HookeTensions(m, el.x) - T_rigid).cwiseAbs().maxCoeff());
     dx.push_back((el.x - rigid.x).colwise().norm().maxCoeff());
     std::printf("  EA x %4.0f: max |T_elastic - T_inextensible| %.6e N, max |x diff| %.6e m; "
@@ -584,19 +588,19 @@ TEST(InextensibleLimit, ElasticP63EquilibriumApproachesItAsOneOverEA) {
 TEST(InextensibleP63, LinkLengthsHeldOverTheFullRun) {
   SceneDef scene = LoadScene(kP63);
   scene.model = CableModelKind::kInextensible;
-  const CableModel m = BuildModel(scene);
-  ASSERT_EQ(m.law, LinkLaw::kInextensible);
+  const Model m = BuildModel(scene);
+  ASSERT_EQ(m.line.law, LinkLaw::kInextensible);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
-  ASSERT_EQ(grid.kind, IntegratorKind::kInextensible);
+  ASSERT_EQ(grid.options.scheme, Scheme::kInextensible);
   EquilibriumReport report;
-  CableState state = MakeInitialState(scene, m, &report);
-  auto integ = MakeIntegrator(m, grid);
+  State state = MakeInitialState(scene, m, &report);
+  auto integ = testing::MakeStepper(m, grid);
   double worst = 0, peak = 0;
   long rows = 0;
-  const bool done = Simulate(m, *integ, state, grid, [&](const CableState& s,
+  const bool done = testing::Simulate(m, *integ, state, grid, [&](const State& s,
                                                           const Eigen::VectorXd& T) {
     const LinkGeometry g = GeometryOf(s.x);
-    worst = std::max(worst, (g.length.array() / m.rest_length.array() - 1).abs().maxCoeff());
+    worst = std::max(worst, (g.length.array() / m.line.rest_length.array() - 1).abs().maxCoeff());
     EXPECT_TRUE(T.allFinite());
     peak = std::max(peak, T.maxCoeff());
     ++rows;
@@ -623,35 +627,35 @@ struct DiscreteChain {
   int n;
   double l, W;
   double H = 0, V0 = 0;
-  Eigen::Vector2d End(double H_, double V0_, Eigen::Matrix2d* J) const {
-    Eigen::Vector2d r = Eigen::Vector2d::Zero();
+  Vec End(double H_, double V0_, Mat* J) const {
+    Vec r = Vec::Zero();
     if (J) J->setZero();
     for (int k = 0; k < n; ++k) {
       const double V = V0_ + k * W, T = std::hypot(H_, V), T3 = T * T * T;
-      r += l / T * Eigen::Vector2d(H_, V);
-      if (J) *J += l / T3 * (Eigen::Matrix2d() << V * V, -H_ * V, -H_ * V, H_ * H_).finished();
+      r += l / T * Vec(H_, V);
+      if (J) *J += l / T3 * (Mat() << V * V, -H_ * V, -H_ * V, H_ * H_).finished();
     }
     return r;
   }
-  void Solve(const Eigen::Vector2d& target, double H_guess, double V0_guess) {
+  void Solve(const Vec& target, double H_guess, double V0_guess) {
     H = H_guess;
     V0 = V0_guess;
     for (int it = 0; it < 100; ++it) {
-      Eigen::Matrix2d J;
-      const Eigen::Vector2d r = End(H, V0, &J) - target;
+      Mat J;
+      const Vec r = End(H, V0, &J) - target;
       if (r.norm() < 1e-15 * n * l) break;
-      Eigen::Vector2d step = -J.partialPivLu().solve(r);
+      Vec step = -J.partialPivLu().solve(r);
       double a = 1;
       while (H + a * step[0] <= 0) a *= 0.5;
       H += a * step[0];
       V0 += a * step[1];
     }
   }
-  Eigen::Vector2d Station(int j) const {
-    Eigen::Vector2d r = Eigen::Vector2d::Zero();
+  Vec Station(int j) const {
+    Vec r = Vec::Zero();
     for (int k = 0; k < j; ++k) {
       const double V = V0 + k * W;
-      r += l / std::hypot(H, V) * Eigen::Vector2d(H, V);
+      r += l / std::hypot(H, V) * Vec(H, V);
     }
     return r;
   }
@@ -676,7 +680,7 @@ struct Catenary {
     x0 = D / 2 - a * std::atanh(h / L);
   }
   double U(double s) const { return s / a - std::sinh(x0 / a); }
-  Eigen::Vector2d Point(double s) const {
+  Vec Point(double s) const {
     const double u = U(s);
     return {x0 + a * std::asinh(u), a * (std::sqrt(1 + u * u) - std::cosh(x0 / a))};
   }
@@ -690,22 +694,22 @@ struct CatenaryErrors {
 
 CatenaryErrors CheckCatenary(int N) {
   const double L = 10, D = 8, h = 2, mu = 1.5;
-  const CableModel m = Chain(N, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Fixed({D, h}));
+  const Model m = Chain(N, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Fixed({D, h}));
   EquilibriumReport rep;
-  const CableState st = SolveInextensibleEquilibrium(m, &rep);
-  InextensibleIntegrator integ(m);
+  const State st = SolveInextensibleEquilibrium(m, &rep);
+  testing::Stepper integ(Scheme::kInextensible);
   integ.Initialize(m, st);
   const Eigen::VectorXd T = integ.tensions();
   CatenaryErrors e{};
   ConstraintTensions(m, st.x, &e.imbalance);
   const LinkGeometry g = GeometryOf(st.x);
-  e.length = (g.length.array() / m.rest_length.array() - 1).abs().maxCoeff();
+  e.length = (g.length.array() / m.line.rest_length.array() - 1).abs().maxCoeff();
 
   const Catenary cat(L, D, h, mu * kG);
   DiscreteChain dc{N, L / N, mu * L / N * kG};
   // The continuous catenary's (H, V at s = l/2) seed Newton; the answer is the discrete chain's.
   dc.Solve({D, h}, cat.w * cat.a, cat.V(0.5 * L / N));
-  EXPECT_LT((dc.Station(N) - Eigen::Vector2d(D, h)).norm(), 1e-12 * L);
+  EXPECT_LT((dc.Station(N) - Vec(D, h)).norm(), 1e-12 * L);
   for (int j = 0; j <= N; ++j) {
     e.discrete_x = std::max(e.discrete_x, (st.x.col(j) - dc.Station(j)).norm());
     e.continuous_x = std::max(e.continuous_x, (st.x.col(j) - cat.Point(j * L / N)).norm());
@@ -746,12 +750,12 @@ TEST(InextensibleEquilibrium, ChainBetweenFixedPointsIsTheCatenary) {
 }
 
 TEST(InextensibleEquilibrium, EndsFurtherApartThanTheCableThrow) {
-  const CableModel taut = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({10.1, 0}));
+  const Model taut = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({10.1, 0}));
   EXPECT_THROW(SolveInextensibleEquilibrium(taut, nullptr), Error);
-  const CableModel slant = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({6, 8.2}));
+  const Model slant = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({6, 8.2}));
   EXPECT_THROW(SolveInextensibleEquilibrium(slant, nullptr), Error);
   // Just shorter than the cable is fine (and lies on the chord's rest lengths).
-  const CableModel ok = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({6, 7.9}));
+  const Model ok = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({6, 7.9}));
   EXPECT_NO_THROW(SolveInextensibleEquilibrium(ok, nullptr));
 }
 

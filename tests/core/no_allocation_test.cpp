@@ -8,9 +8,10 @@
 #include <vector>
 
 #include "core/equilibrium.h"
-#include "core/explicit_integrator.h"
+#include "test_support.h"
+#include "core/explicit_step.h"
 #include "core/stability.h"
-#include "core/integrator.h"
+#include "core/step.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 
@@ -32,7 +33,7 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 namespace cablefilm {
 namespace {
 
-long AllocationsWhileStepping(IntegratorKind kind, CableModelKind model, double dt,
+long AllocationsWhileStepping(Scheme kind, CableModelKind model, double dt,
                               double error_tolerance, bool waves = false) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml");
   scene.model = model;
@@ -45,9 +46,9 @@ long AllocationsWhileStepping(IntegratorKind kind, CableModelKind model, double 
     scene.waves.surface_y = 33;
     scene.waves.ramp_rate = 0.5;
   }
-  const CableModel m = BuildModel(scene);
-  CableState s = SolveEquilibrium(m);  // the elastic equilibrium: a fine start for either model
-  auto integrator = MakeIntegrator(kind, m, 0.5, error_tolerance);
+  const Model m = BuildModel(scene);
+  State s = SolveEquilibrium(m);  // the elastic equilibrium: a fine start for either model
+  auto integrator = testing::MakeStepper(kind, m, 0.5, error_tolerance);
   integrator->Initialize(m, s);
   for (int i = 0; i < 10; ++i) integrator->Step(m, s, dt);  // warm-up
   const long before = g_allocations;
@@ -63,38 +64,38 @@ TEST(NoAllocation, TheCounterCounts) {  // else the tests below could not fail
 }
 
 TEST(NoAllocation, ExplicitStep) {
-  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kExplicit, CableModelKind::kElastic, 2e-4, 0),
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kExplicit, CableModelKind::kElastic, 2e-4, 0),
             0);
 }
 
 TEST(NoAllocation, ImplicitStepFixedAndAdaptive) {
-  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kImplicit, CableModelKind::kElastic, 1.0 / 30, 0),
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kImplicit, CableModelKind::kElastic, 1.0 / 30, 0),
             0);
   EXPECT_EQ(
-      AllocationsWhileStepping(IntegratorKind::kImplicit, CableModelKind::kElastic, 1.0 / 30, 1e-5),
+      AllocationsWhileStepping(Scheme::kImplicit, CableModelKind::kElastic, 1.0 / 30, 1e-5),
       0);
 }
 
 TEST(NoAllocation, InextensibleStep) {
-  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kInextensible, CableModelKind::kInextensible,
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kInextensible, CableModelKind::kInextensible,
                                      1.0 / 30, 0),
             0);
 }
 
 TEST(NoAllocation, InextensibleStepUnderErrorControl) {
-  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kInextensible, CableModelKind::kInextensible,
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kInextensible, CableModelKind::kInextensible,
                                      1.0 / 30, 1e-6),
             0);
 }
 
 TEST(NoAllocation, EverySchemeInWaves) {
-  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kExplicit, CableModelKind::kElastic, 2e-4, 0,
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kExplicit, CableModelKind::kElastic, 2e-4, 0,
                                      true),
             0);
-  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kImplicit, CableModelKind::kElastic, 1.0 / 30,
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kImplicit, CableModelKind::kElastic, 1.0 / 30,
                                      1e-5, true),
             0);
-  EXPECT_EQ(AllocationsWhileStepping(IntegratorKind::kInextensible, CableModelKind::kInextensible,
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kInextensible, CableModelKind::kInextensible,
                                      1.0 / 30, 1e-6, true),
             0);
 }
@@ -104,12 +105,12 @@ TEST(NoAllocation, ExplicitAutoStepThroughSnaps) {
   // "auto" refines its substeps (the check that predicts the snaps, the cable's energy it then
   // needs) and takes them.
   const SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const CableModel m = BuildModel(scene);
-  CableState s;
+  const Model m = BuildModel(scene);
+  State s;
   s.x = StraightChord(m);
-  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+  s.v = Points::Zero(kDim, m.stations());
   const double dt = 0.8 * ComputeStabilityLimit(m).time_step;
-  ExplicitIntegrator integrator(m, 0.8);
+  testing::Stepper integrator(Scheme::kExplicit, 0.5, 0, 0.8);
   integrator.Initialize(m, s);
   while (s.t < 0.4) integrator.Step(m, s, dt);
   ASSERT_EQ(integrator.stats().rejected, 0);

@@ -13,7 +13,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/explicit_integrator.h"
+#include "core/explicit_step.h"
+#include "test_support.h"
 #include "core/forces.h"
 
 namespace cablefilm {
@@ -23,7 +24,7 @@ constexpr double kRho = 1000.0, kG = 9.80665;
 constexpr double kMass = 10.0, kVolume = 0.002, kAddedY = 0.005, kCy = 1.0, kSy = 0.05;
 constexpr double kLink = 1000.0, kHair = 1e-9;
 
-CableModel PrismModel() {
+Model PrismModel() {
   SectionSpec s{kLink, 1, kHair, kHair, kHair, 1e9, 1.2, 1.0};
   PrismSpec p;
   p.station = 1;
@@ -35,7 +36,7 @@ CableModel PrismModel() {
   EnvironmentSpec env;
   env.gravity = kG;
   env.fluid_density = kRho;
-  return BuildCableModel({s}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -1}),
+  return MakeModel({s}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -1}),
                          LinkLaw::kElastic);
 }
 
@@ -51,13 +52,13 @@ struct Closed {
 
 // Max velocity and position error over a 4 s fall (about 12 time constants v_t / a0).
 void Fall(double dt, double* v_err, double* y_err, double* v_end) {
-  const CableModel m = PrismModel();
+  const Model m = PrismModel();
   const Closed c;
-  CableState s;
-  s.x = Eigen::Matrix2Xd(2, 2);
+  State s;
+  s.x = Points(2, 2);
   s.x << 0, 0, 0, -1;
-  s.v = Eigen::Matrix2Xd::Zero(2, 2);
-  ExplicitIntegrator integ(m);
+  s.v = Points::Zero(kDim, 2);
+  testing::Stepper integ(Scheme::kExplicit);
   integ.Initialize(m, s);
   *v_err = *y_err = 0;
   const long steps = std::lround(4.0 / dt);
@@ -72,12 +73,12 @@ void Fall(double dt, double* v_err, double* y_err, double* v_end) {
 }
 
 TEST(PrismFall, InitialAccelerationIncludesVirtualMass) {
-  const CableModel m = PrismModel();
+  const Model m = PrismModel();
   const Closed c;
-  ForceWorkspace ws(m.links);
-  Eigen::Matrix2Xd x(2, 2), v = Eigen::Matrix2Xd::Zero(2, 2), a(2, 2);
+  ForceWorkspace ws(m.line.links);
+  Points x(2, 2), v = Points::Zero(kDim, 2), a(2, 2);
   x << 0, 0, 0, -1;
-  ComputeAccelerations(m, 0.0, x, v, ws, a);
+  ComputeAccelerations(m, SceneInputs(m), SceneWater(m), 0.0, x, v, ws, a);
   std::printf("[ prism ] a(0) = %.12f m/s^2, W/(m* + rho V^y + cable) = %.12f m/s^2 "
               "(without virtual mass it would be %.6f)\n",
               a(1, 1), -c.a0, -c.W / (kMass + 0.5 * kHair * kLink));

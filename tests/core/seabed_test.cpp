@@ -12,10 +12,11 @@
 #include <vector>
 
 #include "core/equilibrium.h"
-#include "core/explicit_integrator.h"
+#include "core/explicit_step.h"
 #include "core/forces.h"
-#include "core/inextensible.h"
-#include "core/integrator.h"
+#include "core/inextensible_step.h"
+#include "core/equilibrium.h"
+#include "core/step.h"
 #include "core/stability.h"
 #include "test_support.h"
 
@@ -90,7 +91,7 @@ struct MooringCase {
   double w() const { return (mu - rho * area) * kG; }  // 980.5 N/m submerged
 };
 
-CableModel MooringLine(const MooringCase& c, int links, SeabedSpec bed = {}) {
+Model MooringLine(const MooringCase& c, int links, SeabedSpec bed = {}) {
   EnvironmentSpec env;
   env.fluid_density = c.rho;
   bed.present = true;
@@ -109,26 +110,26 @@ struct GroundedResult {
 // weight the bed carries over the weight per length (the vertical balance that defines it in
 // the closed form: the fairlead carries the suspended part, the bed the rest); the touchdown at
 // that arc length, interpolated between stations; the deepest penetration.
-GroundedResult Measure(const CableModel& m, const CableState& st, double w) {
-  ForceWorkspace ws(m.links);
+GroundedResult Measure(const Model& m, const State& st, double w) {
+  ForceWorkspace ws(m.line.links);
   ComputeGeometry(st.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
   GroundedResult r{};
   r.anchor_tension = ws.tension[0];
-  r.fairlead_tension = ws.tension[m.links - 1];
+  r.fairlead_tension = ws.tension[m.line.links - 1];
   double carried = 0;
-  for (int j = 0; j <= m.links; ++j) {
-    const double p = m.seabed.y - st.x(1, j);
-    if (p > 0) carried += m.seabed_stiffness[j] * p;
+  for (int j = 0; j <= m.line.links; ++j) {
+    const double p = m.env.seabed.y - st.x(1, j);
+    if (p > 0) carried += m.line.seabed_stiffness[j] * p;
     r.penetration = std::max(r.penetration, p);
   }
   // The anchor station's own reaction is the prescribed end's: it is not among the stations
   // the bed carries in the lumped model, but half its first link's weight rests there.
-  r.grounded_length = carried / w + 0.5 * m.rest_length[0];
+  r.grounded_length = carried / w + 0.5 * m.line.rest_length[0];
   const double s = r.grounded_length;
   int j = 0;
-  while (j + 1 < m.links && m.arc_length[j + 1] < s) ++j;
-  const double f = (s - m.arc_length[j]) / m.rest_length[j];
+  while (j + 1 < m.line.links && m.line.arc_length[j + 1] < s) ++j;
+  const double f = (s - m.line.arc_length[j]) / m.line.rest_length[j];
   r.touchdown_x = (1 - f) * st.x(0, j) + f * st.x(0, j + 1) - st.x(0, 0);
   return r;
 }
@@ -153,9 +154,9 @@ TEST(SeabedEquilibrium, GroundedCatenaryConvergesAtSecondOrder) {
       MooringCase k = c;
       k.span = c.span + phase * l / kPhases;
       const GroundedCatenary exact = SolveGroundedCatenary(k.length, k.w(), k.EA, k.span, k.depth);
-      const CableModel m = MooringLine(k, N);
+      const Model m = MooringLine(k, N);
       EquilibriumReport rep;
-      const CableState st = SolveEquilibrium(m, &rep);
+      const State st = SolveEquilibrium(m, &rep);
       const GroundedResult r = Measure(m, st, k.w());
       const double fair = std::hypot(exact.H, k.w() * (k.length - exact.Lb - 0.5 * l));
       const double e[4] = {std::abs(r.anchor_tension - exact.H) / exact.H,
@@ -213,31 +214,31 @@ TEST(SeabedEquilibrium, GroundedCatenaryConvergesAtSecondOrder) {
 TEST(SeabedEquilibrium, FindsTheGroundedLengthFromPoorStarts) {
   const MooringCase c;
   const int N = 200;
-  const CableModel m = MooringLine(c, N);
-  const CableState reference = SolveEquilibrium(m);
+  const Model m = MooringLine(c, N);
+  const State reference = SolveEquilibrium(m);
   const GroundedResult ref = Measure(m, reference, c.w());
 
-  CableModel no_bed = m;
-  no_bed.seabed = SeabedSpec{};
-  no_bed.seabed_stiffness.resize(0);
-  no_bed.seabed_damping.resize(0);
-  const Eigen::Matrix2Xd through = EquilibriumGuess(no_bed);
+  Model no_bed = m;
+  no_bed.env.seabed = SeabedSpec{};
+  no_bed.line.seabed_stiffness.resize(0);
+  no_bed.line.seabed_damping.resize(0);
+  const Points through = EquilibriumGuess(no_bed);
   ASSERT_LT(through.row(1).minCoeff(), c.bed_y - 40.0);  // it does cut through the bed
 
-  Eigen::Matrix2Xd flat(2, m.stations());
-  for (int j = 0; j < m.links; ++j)
-    flat.col(j) = Eigen::Vector2d(c.span * j / (m.links - 1.0) * 0.999, c.bed_y);
-  flat.col(m.links) = m.end.Position(0);
+  Points flat(2, m.stations());
+  for (int j = 0; j < m.line.links; ++j)
+    flat.col(j) = Vec(c.span * j / (m.line.links - 1.0) * 0.999, c.bed_y);
+  flat.col(m.line.links) = m.ends.end.Position(0);
 
   const struct {
     const char* name;
-    Eigen::Matrix2Xd guess;
+    Points guess;
   } starts[] = {{"catenary through the bed", through},
                 {"lying flat", flat},
                 {"straight chord", StraightChord(m)}};
   for (const auto& start : starts) {
     EquilibriumReport rep;
-    CableState st;
+    State st;
     ASSERT_NO_THROW(st = SolveEquilibrium(m, start.guess, &rep)) << start.name;
     const GroundedResult r = Measure(m, st, c.w());
     const double dx = (st.x - reference.x).cwiseAbs().maxCoeff();
@@ -261,7 +262,7 @@ TEST(SeabedEquilibrium, FindsTheGroundedLengthFromPoorStarts) {
 // 20 m of the chain (20 links) lying on the bed at rest, its start anchored on the bed; its end
 // anchored too (frictionless bed), or free (with friction: on a frictionless bed a free line
 // has nothing holding it along the bed, and the model no drag along a link).
-CableModel ChainOnBed(double friction) {
+Model ChainOnBed(double friction) {
   const MooringCase c;
   EnvironmentSpec env;
   env.fluid_density = 1025;
@@ -273,8 +274,8 @@ CableModel ChainOnBed(double friction) {
                       0.137, 2.4, 1.0);
 }
 
-double TotalEnergy(const CableModel& m, const CableState& s) {
-  ForceWorkspace ws(m.links);
+double TotalEnergy(const Model& m, const State& s) {
+  ForceWorkspace ws(m.line.links);
   const LinkGeometry& g = ws.geometry;
   ComputeGeometry(s.x, ws.geometry);
   return KineticEnergy(m, g, s.v) + ElasticEnergy(m, g) + PotentialEnergy(m, s.x);
@@ -290,29 +291,29 @@ double TotalEnergy(const CableModel& m, const CableState& s) {
 // or taut: the line lies at zero tension, where every axial ripple does).
 TEST(SeabedDynamics, RestingLineNeitherCreepsNorBounces) {
   for (const double friction : {0.0, 0.5}) {
-    const CableModel m = ChainOnBed(friction);
-    const double w = m.net_weight[5] / m.rest_length[5];  // submerged weight per length [N/m]
-    const double sink = w / m.seabed.stiffness;             // 3.27e-5 m
+    const Model m = ChainOnBed(friction);
+    const double w = m.line.net_weight[5] / m.line.rest_length[5];  // submerged weight per length [N/m]
+    const double sink = w / m.env.seabed.stiffness;             // 3.27e-5 m
     const struct {
       const char* name;
-      IntegratorKind kind;
+      Scheme kind;
       double step, tolerance;
-    } runs[] = {{"implicit auto", IntegratorKind::kImplicit, 0.1, 1e-6 * 20},
-                {"implicit 0.1 s", IntegratorKind::kImplicit, 0.1, 0},
-                {"explicit auto", IntegratorKind::kExplicit, 0.01, 0}};
+    } runs[] = {{"implicit auto", Scheme::kImplicit, 0.1, 1e-6 * 20},
+                {"implicit 0.1 s", Scheme::kImplicit, 0.1, 0},
+                {"explicit auto", Scheme::kExplicit, 0.01, 0}};
     for (const auto& run : runs) {
-      CableState s;
+      State s;
       s.x = StraightChord(m);  // on the bed, links at rest length
       for (int j = m.first_free(); j <= m.last_free(); ++j)
-        s.x(1, j) = -m.net_weight[j] / m.seabed_stiffness[j];  // each station's own weight
-      s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
-      const Eigen::Matrix2Xd x0 = s.x;
+        s.x(1, j) = -m.line.net_weight[j] / m.line.seabed_stiffness[j];  // each station's own weight
+      s.v = Points::Zero(kDim, m.stations());
+      const Points x0 = s.x;
       const double e0 = TotalEnergy(m, s);
-      std::unique_ptr<Integrator> integ =
-          run.kind == IntegratorKind::kExplicit
-              ? std::make_unique<ExplicitIntegrator>(m, 0.8)  // "auto": 0.8 of the limit,
+      std::unique_ptr<testing::Stepper> integ =
+          run.kind == Scheme::kExplicit
+              ? std::make_unique<testing::Stepper>(Scheme::kExplicit, 0.5, 0, 0.8)  // "auto": 0.8 of the limit,
                                                               // refined at slack-taut changes
-              : MakeIntegrator(run.kind, m, 0.5, run.tolerance);
+              : testing::MakeStepper(run.kind, m, 0.5, run.tolerance);
       integ->Initialize(m, s);
       double highest = -1, gain = -1e300, creep = 0;
       const int per_tenth = static_cast<int>(std::lround(std::max(1.0, 0.1 / run.step)));
@@ -326,7 +327,7 @@ TEST(SeabedDynamics, RestingLineNeitherCreepsNorBounces) {
                   "gain at most %.2e J, creep %.2e m, penetration at the end %.4e m (w/k "
                   "%.4e m), fastest station %.2e m/s\n",
                   friction, run.name, integ->stats().steps, highest, gain, creep,
-                  -s.x(1, m.links / 2), sink, s.v.cwiseAbs().maxCoeff());
+                  -s.x(1, m.line.links / 2), sink, s.v.cwiseAbs().maxCoeff());
       // No bounce: the stations stay at or below the bed surface (the anchors are on it).
       EXPECT_LE(highest, 0.0) << run.name;
       // The bed creates no energy: the start is not quite at rest (the links to the anchors,
@@ -339,7 +340,7 @@ TEST(SeabedDynamics, RestingLineNeitherCreepsNorBounces) {
       // 6e-6 m/s while the pull lasts). A micrometre in 30 s.
       EXPECT_LT(creep, 1e-6) << run.name;
       // At rest at w/k (the middle station): within 1e-3 of it.
-      EXPECT_NEAR(-s.x(1, m.links / 2), sink, 1e-3 * sink) << run.name;
+      EXPECT_NEAR(-s.x(1, m.line.links / 2), sink, 1e-3 * sink) << run.name;
       EXPECT_LT(s.v.cwiseAbs().maxCoeff(), 1e-6) << run.name;
     }
   }
@@ -357,19 +358,19 @@ TEST(SeabedDynamics, DroppedLineComesToRest) {
   env.seabed.present = true;
   env.seabed.y = 0;
   env.seabed.friction = 0.5;
-  const CableModel m = UniformCable(40, 20.0, c.mu, c.area, c.EA / c.area, env,
+  const Model m = UniformCable(40, 20.0, c.mu, c.area, c.EA / c.area, env,
                                     EndMotion::Fixed({0, 0}), EndMotion::Free({19.9, 2.0}), 0.137,
                                     2.4, 1.0);
-  const double sink = m.net_weight[5] / m.rest_length[5] / m.seabed.stiffness;
-  for (const IntegratorKind kind : {IntegratorKind::kImplicit, IntegratorKind::kExplicit}) {
-    const bool implicit = kind == IntegratorKind::kImplicit;
-    CableState s;
+  const double sink = m.line.net_weight[5] / m.line.rest_length[5] / m.env.seabed.stiffness;
+  for (const Scheme kind : {Scheme::kImplicit, Scheme::kExplicit}) {
+    const bool implicit = kind == Scheme::kImplicit;
+    State s;
     s.x = StraightChord(m);
-    s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
+    s.v = Points::Zero(kDim, m.stations());
     const double e0 = TotalEnergy(m, s);
-    std::unique_ptr<Integrator> integ =
-        implicit ? MakeIntegrator(kind, m, 0.5, 1e-6 * 20)
-                 : std::make_unique<ExplicitIntegrator>(m, 0.8);  // "auto"
+    std::unique_ptr<testing::Stepper> integ =
+        implicit ? testing::MakeStepper(kind, m, 0.5, 1e-6 * 20)
+                 : std::make_unique<testing::Stepper>(Scheme::kExplicit, 0.5, 0, 0.8);  // "auto"
     integ->Initialize(m, s);
     const double h = implicit ? 0.1 : 0.01;
     const int per_tenth = static_cast<int>(std::lround(std::max(1.0, 0.1 / h)));
@@ -377,11 +378,11 @@ TEST(SeabedDynamics, DroppedLineComesToRest) {
     for (int tenth = 1; tenth <= 600; ++tenth) {  // 60 s
       for (int i = 0; i < per_tenth; ++i) integ->Step(m, s, 0.1 / per_tenth);
       gain = std::max(gain, TotalEnergy(m, s) - e0);
-      if (landed_at < 0 && s.x(1, m.links) < 0) landed_at = s.t;
+      if (landed_at < 0 && s.x(1, m.line.links) < 0) landed_at = s.t;
     }
-    const IntegratorStats st = integ->stats();
+    const StepStats st = integ->stats();
     const double depth_error =
-        (s.x.row(1).segment(1, m.links).array() + sink).abs().maxCoeff();
+        (s.x.row(1).segment(1, m.line.links).array() + sink).abs().maxCoeff();
     std::printf("[ dropped ] %s: the end lands at t = %.2f s; after 60 s: fastest station "
                 "%.2e m/s, stations within %.2e m of the resting penetration %.3e m; energy "
                 "%.4g J from %.4g J, never above it (largest gain %.2e J); %ld steps, %ld "
@@ -422,23 +423,23 @@ TEST(SeabedDynamics, DraggedChainTensionGrowsByMuWPerMetre) {
     const double t = 0.05 * i, tau = 1.0;
     rows.emplace_back(t, speed * (t - tau + tau * std::exp(-t / tau)), 0.0);
   }
-  const CableModel m = BuildCableModel({sec}, {}, env, EndMotion::Free({0, 0}),
+  const Model m = MakeModel({sec}, {}, env, EndMotion::Free({0, 0}),
                                        EndMotion::Table({30, 0}, rows), LinkLaw::kElastic);
-  CableState s;
+  State s;
   s.x = StraightChord(m);
-  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
-  auto integ = MakeIntegrator(IntegratorKind::kImplicit, m, 0.5, 1e-6 * 30);
+  s.v = Points::Zero(kDim, m.stations());
+  auto integ = testing::MakeStepper(Scheme::kImplicit, m, 0.5, 1e-6 * 30);
   integ->Initialize(m, s);
   for (int i = 0; i < 150; ++i) integ->Step(m, s, 0.1);  // 15 s
   const double w = c.mu * kG;
   double worst = 0;
-  for (int j = 0; j < m.links; ++j) {
-    const double expected = mu * w * 0.5 * (m.arc_length[j] + m.arc_length[j + 1]);
+  for (int j = 0; j < m.line.links; ++j) {
+    const double expected = mu * w * 0.5 * (m.line.arc_length[j] + m.line.arc_length[j + 1]);
     worst = std::max(worst, std::abs(integ->tensions()[j] - expected) / (mu * w * 30));
   }
   std::printf("[ friction ] after 15 s: pulled-end tension %.2f N (mu w L = %.2f N), largest "
               "error along the line %.2e of it; tail speed %.4f m/s; %ld steps\n",
-              integ->tensions()[m.links - 1], mu * w * 30, worst, s.v(0, 0),
+              integ->tensions()[m.line.links - 1], mu * w * 30, worst, s.v(0, 0),
               integ->stats().steps);
   // The steady state is exact in the lumped model (each station's friction is mu N_j with
   // N_j its weight, and the link sums them); what remains is the start's decaying wave.
@@ -473,20 +474,20 @@ TEST(SeabedDynamics, ShipDrivenTouchdownRunsThroughWithoutStepCollapse) {
     return UniformCable(N, c.length, c.mu, c.area, c.EA / c.area, e,
                         EndMotion::Fixed({0.0, c.bed_y}), ship, 0.137, 2.4, 1.0);
   };
-  const CableModel grounded = line(env), hanging = line(no_bed);
+  const Model grounded = line(env), hanging = line(no_bed);
   struct Run {
     long steps = 0, rejected = 0;
     double grounded_min = 1e300, grounded_max = 0;
   };
-  auto run = [&](const CableModel& m, double tolerance, double h) {
-    CableState s = SolveEquilibrium(m);
-    auto integ = MakeIntegrator(IntegratorKind::kImplicit, m, 0.5, tolerance);
+  auto run = [&](const Model& m, double tolerance, double h) {
+    State s = SolveEquilibrium(m);
+    auto integ = testing::MakeStepper(Scheme::kImplicit, m, 0.5, tolerance);
     integ->Initialize(m, s);
     Run r;
     for (int tenth = 1; tenth <= 600; ++tenth) {  // 60 s
       for (double t = 0; t < 0.1 - 1e-12; t += h) integ->Step(m, s, h);
       EXPECT_TRUE(s.x.allFinite());
-      if (m.seabed.present) {
+      if (m.env.seabed.present) {
         const double g = Measure(m, s, c.w()).grounded_length;
         r.grounded_min = std::min(r.grounded_min, g);
         r.grounded_max = std::max(r.grounded_max, g);
@@ -528,22 +529,22 @@ TEST(SeabedDynamics, LandingsStopWithoutRebound) {
   env.fluid_density = c.rho;
   env.seabed.present = true;
   env.seabed.y = c.bed_y;
-  const CableModel m = UniformCable(50, c.length, c.mu, c.area, c.EA / c.area, env,
+  const Model m = UniformCable(50, c.length, c.mu, c.area, c.EA / c.area, env,
                                     EndMotion::Fixed({0.0, c.bed_y}), ship, 0.137, 2.4, 1.0);
   struct Events {
     int landings = 0;
     double highest_hop = 0;  // m above the bed, between a lift-off and a landing within 1 s
   };
-  auto observe = [&](std::unique_ptr<Integrator> integ) {
-    CableState s = SolveEquilibrium(m);
+  auto observe = [&](std::unique_ptr<testing::Stepper> integ) {
+    State s = SolveEquilibrium(m);
     integ->Initialize(m, s);
     std::vector<double> lifted_at(m.stations(), -1e300), risen(m.stations(), 0.0);
     std::vector<bool> down(m.stations());
-    for (int j = 0; j <= m.links; ++j) down[j] = s.x(1, j) < c.bed_y;
+    for (int j = 0; j <= m.line.links; ++j) down[j] = s.x(1, j) < c.bed_y;
     Events e;
     for (int i = 0; i < 3000; ++i) {  // 30 s
       integ->Step(m, s, 0.01);
-      for (int j = 1; j < m.links; ++j) {
+      for (int j = 1; j < m.line.links; ++j) {
         const bool now = s.x(1, j) < c.bed_y;
         if (now && !down[j]) {
           ++e.landings;
@@ -559,9 +560,9 @@ TEST(SeabedDynamics, LandingsStopWithoutRebound) {
     }
     return e;
   };
-  const Events resolved = observe(std::make_unique<ExplicitIntegrator>(m, 0.8));
+  const Events resolved = observe(std::make_unique<testing::Stepper>(Scheme::kExplicit, 0.5, 0, 0.8));
   const Events implicit =
-      observe(MakeIntegrator(IntegratorKind::kImplicit, m, 0.5, 1e-6 * c.length));
+      observe(testing::MakeStepper(Scheme::kImplicit, m, 0.5, 1e-6 * c.length));
   std::printf("[ landings ] 30 s ship-driven, seen every 0.01 s: explicit (resolved) %d "
               "landings, highest hop %.2f mm; implicit auto %d landings, highest hop %.2f mm\n",
               resolved.landings, 1e3 * resolved.highest_hop, implicit.landings,
@@ -584,11 +585,11 @@ TEST(SeabedInextensible, GroundedCatenaryAndRestingLine) {
   env.seabed.present = true;
   env.seabed.y = c.bed_y;
   SectionSpec sec{c.length, 200, 0.137, c.area, c.mu, c.EA / c.area, 2.4, 1.0};
-  const CableModel m = BuildCableModel({sec}, {}, env, EndMotion::Fixed({0.0, c.bed_y}),
+  const Model m = MakeModel({sec}, {}, env, EndMotion::Fixed({0.0, c.bed_y}),
                                        EndMotion::Fixed({c.span, c.bed_y + c.depth}),
                                        LinkLaw::kInextensible);
-  CableState st = SolveInextensibleEquilibrium(m, nullptr);
-  InextensibleIntegrator integ(m, 1e-6 * c.length);
+  State st = SolveInextensibleEquilibrium(m, nullptr);
+  testing::Stepper integ(Scheme::kInextensible, 0.5, 1e-6 * c.length);
   integ.Initialize(m, st);
   const double anchor = integ.tensions()[0];
   const GroundedResult r = Measure(m, st, c.w());
@@ -599,7 +600,7 @@ TEST(SeabedInextensible, GroundedCatenaryAndRestingLine) {
   // largest errors at 200 links over the phases: 2.7e-4, 2 cm).
   EXPECT_NEAR(anchor, exact.H, 5e-4 * exact.H);
   EXPECT_NEAR(r.grounded_length, exact.Lb, 0.05);
-  const Eigen::Matrix2Xd x0 = st.x;
+  const Points x0 = st.x;
   for (int i = 0; i < 100; ++i) integ.Step(m, st, 0.1);  // 10 s
   const double moved = (st.x - x0).cwiseAbs().maxCoeff();
   std::printf("[ inextensible ] after 10 s at rest: stations moved by %.2e m, %ld substeps\n",
@@ -628,15 +629,15 @@ TEST(SeabedInextensible, GroundedChainInAShearedCurrent) {
   env.current_profile.speed = {0.2, 0.4, 0.8};
   auto line = [&](double ea_factor, LinkLaw law) {
     SectionSpec sec{c.length, 100, 0.137, c.area, c.mu, ea_factor * c.EA / c.area, 2.4, 1.0};
-    return BuildCableModel({sec}, {}, env, EndMotion::Fixed({0.0, c.bed_y}),
+    return MakeModel({sec}, {}, env, EndMotion::Fixed({0.0, c.bed_y}),
                            EndMotion::Fixed({c.span, c.bed_y + c.depth}), law);
   };
-  const CableModel m = line(1.0, LinkLaw::kInextensible);
+  const Model m = line(1.0, LinkLaw::kInextensible);
   EquilibriumReport report;
-  const CableState st = SolveInextensibleEquilibrium(m, &report);
-  const Eigen::Matrix2Xd x100 = SolveEquilibrium(line(100.0, LinkLaw::kElastic)).x;
-  const Eigen::Matrix2Xd x200 = SolveEquilibrium(line(200.0, LinkLaw::kElastic)).x;
-  const Eigen::Matrix2Xd limit = 2.0 * x200 - x100;
+  const State st = SolveInextensibleEquilibrium(m, &report);
+  const Points x100 = SolveEquilibrium(line(100.0, LinkLaw::kElastic)).x;
+  const Points x200 = SolveEquilibrium(line(200.0, LinkLaw::kElastic)).x;
+  const Points limit = 2.0 * x200 - x100;
   const double diff = (st.x - limit).cwiseAbs().maxCoeff();
   std::printf("[ inextensible ] sheared current: %d iterations, round-off floor %.2e N; stations "
               "within %.2e m of the elastic line's EA -> infinity limit\n",
@@ -672,14 +673,14 @@ TEST(CurrentProfile, LinkDragTakesTheCurrentAtItsMidpoint) {
   env.gravity = 0;
   env.current_profile.y = {-10.0, 0.0};
   env.current_profile.speed = {3.0, 0.5};
-  const CableModel m = UniformCable(1, 2.0, 1.0, 1e-4, 1e11, env, EndMotion::Fixed({0, 0}),
+  const Model m = UniformCable(1, 2.0, 1.0, 1e-4, 1e11, env, EndMotion::Fixed({0, 0}),
                                     EndMotion::Free({0, -2}), 0.1, 1.0, 0.0);
-  ForceWorkspace ws(m.links);
-  Eigen::Matrix2Xd x(2, 2), v = Eigen::Matrix2Xd::Zero(2, 2);
+  ForceWorkspace ws(m.line.links);
+  Points x(2, 2), v = Points::Zero(kDim, 2);
   x << 0, 0, 0, -2;
   ComputeGeometry(x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
-  ComputeStationForces(m, ws.geometry, ws.tension, v, ws.force);
+  ComputeStationForces(m, SceneWater(m), ws.geometry, ws.tension, v, ws.force);
   const double fD = 0.5 * 1000 * 1.0 * 2.0 * 0.1;  // rho/2 C^D l d [kg/m]
   EXPECT_NEAR(ws.force(0, 1), 0.5 * fD * 0.75 * 0.75, 1e-12);
   EXPECT_NEAR(ws.force(1, 1), 0.0, 1e-12);
@@ -699,39 +700,39 @@ TEST(CurrentProfile, ConstantTableIsTheUniformCurrent) {
     p.added_volume = {0.02, 0.02};
     p.drag_coefficient = {1.0, 1.0};
     p.drag_area = {0.1, 0.1};
-    return BuildCableModel({a}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -20}),
+    return MakeModel({a}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -20}),
                            LinkLaw::kElastic);
   };
   EnvironmentSpec uniform;
   uniform.fluid_density = 1025;
   uniform.current = 0.7;
-  const CableModel mu = chain(uniform);
-  const CableState eq = SolveEquilibrium(mu);
+  const Model mu = chain(uniform);
+  const State eq = SolveEquilibrium(mu);
   for (const std::vector<double>& ys :
        {std::vector<double>{-5.0}, std::vector<double>{-1000.0, 1000.0}}) {
     EnvironmentSpec table = uniform;
     table.current = 0;
     table.current_profile.y = ys;
     table.current_profile.speed.assign(ys.size(), 0.7);
-    const CableModel mt = chain(table);
+    const Model mt = chain(table);
     // Forces at a moving state.
-    ForceWorkspace a(mu.links), b(mt.links);
-    Eigen::Matrix2Xd v = Eigen::Matrix2Xd::Constant(2, mu.stations(), 0.3);
+    ForceWorkspace a(mu.line.links), b(mt.line.links);
+    Points v = Points::Constant(2, mu.stations(), 0.3);
     for (auto* pair : {&a, &b}) ComputeGeometry(eq.x, pair->geometry);
     ComputeTensions(mu, a.geometry, v, a.tension);
     ComputeTensions(mt, b.geometry, v, b.tension);
-    ComputeStationForces(mu, a.geometry, a.tension, v, a.force);
-    ComputeStationForces(mt, b.geometry, b.tension, v, b.force);
+    ComputeStationForces(mu, SceneWater(mu), a.geometry, a.tension, v, a.force);
+    ComputeStationForces(mt, SceneWater(mt), b.geometry, b.tension, v, b.force);
     EXPECT_EQ((a.force - b.force).cwiseAbs().maxCoeff(), 0.0);
     // Equilibrium.
-    const CableState eqt = SolveEquilibrium(mt);
+    const State eqt = SolveEquilibrium(mt);
     EXPECT_LT((eqt.x - eq.x).cwiseAbs().maxCoeff(), 1e-9);
     // Motion: swinging into the current from the still-water equilibrium.
-    CableModel still = mu;
-    still.current = 0;
-    CableState su = SolveEquilibrium(still), st = su;
-    auto iu = MakeIntegrator(IntegratorKind::kImplicit, mu, 0.5, 2e-5);
-    auto it = MakeIntegrator(IntegratorKind::kImplicit, mt, 0.5, 2e-5);
+    Model still = mu;
+    still.env.current = 0;
+    State su = SolveEquilibrium(still), st = su;
+    auto iu = testing::MakeStepper(Scheme::kImplicit, mu, 0.5, 2e-5);
+    auto it = testing::MakeStepper(Scheme::kImplicit, mt, 0.5, 2e-5);
     iu->Initialize(mu, su);
     it->Initialize(mt, st);
     for (int i = 0; i < 100; ++i) {

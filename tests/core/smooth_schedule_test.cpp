@@ -73,14 +73,22 @@ TEST(SmoothSchedule, RefusesMoreRampsThanItHolds) {
   EXPECT_FALSE(s.Change(200.0, 1.0, 0.0));  // a zero duration is refused too
 }
 
+// An end motion as the inputs change it (core/inputs.h): its amplitude scaled, its clock's rate.
+struct Modulated {
+  EndMotion motion;
+  SmoothSchedule scale, rate;
+  Vec Position(double t) const { return motion.Evaluate(t, 0, scale, rate); }
+  Vec Velocity(double t) const { return motion.Evaluate(t, 1, scale, rate); }
+  Vec Acceleration(double t) const { return motion.Evaluate(t, 2, scale, rate); }
+};
+
 EndMotion P63Fairlead() {  // case P63's circular orbit: radius 1.8288 m, period 10 s, nu 0.5
   return EndMotion::Trochoid({80.0, 30.48}, 1.8288, 0.0, 0.0, 1.8288, 2 * kPi / 10, 0.5);
 }
 
 TEST(ModulatedEndMotion, IdentityModulationIsTheScenesMotion) {
   const EndMotion plain = P63Fairlead();
-  EndMotion modulated = plain;
-  modulated.Modulate(SmoothSchedule(1.0), SmoothSchedule(1.0));
+  const Modulated modulated{plain, SmoothSchedule(1.0), SmoothSchedule(1.0)};
   for (double t : {0.0, 0.3, 2.0, 7.7, 31.0, 1234.5}) {
     EXPECT_LT((modulated.Position(t) - plain.Position(t)).norm(), 1e-12) << t;
     EXPECT_LT((modulated.Velocity(t) - plain.Velocity(t)).norm(), 1e-12) << t;
@@ -93,15 +101,14 @@ TEST(ModulatedEndMotion, IdentityModulationIsTheScenesMotion) {
 // scene's orbit scaled, on a clock of the new period.
 TEST(ModulatedEndMotion, ChangesAreSmoothAndEndOnTheNewOrbit) {
   const EndMotion plain = P63Fairlead();
-  EndMotion m = plain;
   SmoothSchedule scale(1.0), rate(1.0);
   ASSERT_TRUE(scale.Change(20.0, 2.0, 10.0));
   ASSERT_TRUE(rate.Change(25.0, 10.0 / 6.0, 10.0));  // period 10 s -> 6 s
-  m.Modulate(scale, rate);
+  const Modulated m{plain, scale, rate};
   const double h = 1e-5;
   for (double t = 15.0; t < 40.0; t += 0.37) {
-    const Eigen::Vector2d v_fd = (m.Position(t + h) - m.Position(t - h)) / (2 * h);
-    const Eigen::Vector2d a_fd = (m.Velocity(t + h) - m.Velocity(t - h)) / (2 * h);
+    const Vec v_fd = (m.Position(t + h) - m.Position(t - h)) / (2 * h);
+    const Vec a_fd = (m.Velocity(t + h) - m.Velocity(t - h)) / (2 * h);
     // Central differences of an orbit of ~2-4 m at ~1 rad/s: truncation ~1e-10 and
     // round-off ~1e-16 * 80 m / 1e-5 s ~ 1e-9; 1e-7 is far below any jump a ramp could cause.
     EXPECT_LT((m.Velocity(t) - v_fd).norm(), 1e-7) << t;
@@ -111,7 +118,7 @@ TEST(ModulatedEndMotion, ChangesAreSmoothAndEndOnTheNewOrbit) {
   EXPECT_LT((m.Position(19.0) - plain.Position(19.0)).norm(), 1e-12);
   // After both: radius 2 x 1.8288 m about the rest point (the ramp R(t) is 1 to 1e-9 by
   // t = 50 s), period 6 s.
-  const Eigen::Vector2d rest(80.0, 30.48);
+  const Vec rest(80.0, 30.48);
   for (double t : {50.0, 51.3, 77.7}) {
     EXPECT_NEAR((m.Position(t) - rest).norm(), 2 * 1.8288, 1e-8) << t;
     EXPECT_LT((m.Position(t + 6.0) - m.Position(t)).norm(), 1e-8) << t;
@@ -122,12 +129,11 @@ TEST(ModulatedEndMotion, ChangesAreSmoothAndEndOnTheNewOrbit) {
 TEST(ModulatedEndMotion, TableMotionIsScaledAndRetimed) {
   const std::vector<Eigen::Vector3d> rows{{0, 0, 0}, {1, 1, 0}, {2, 1, 1}, {3, 0, 1}, {4, 0, 0}};
   const EndMotion plain = EndMotion::Table({5, 5}, rows);
-  EndMotion m = plain;
   SmoothSchedule scale(3.0), rate(0.5);  // constant: three times the offsets, half as fast
-  m.Modulate(scale, rate);
+  const Modulated m{plain, scale, rate};
   for (double t : {0.5, 1.7, 3.3, 6.1}) {
-    const Eigen::Vector2d expect = Eigen::Vector2d(5, 5) + 3.0 * (plain.Position(0.5 * t) -
-                                                                   Eigen::Vector2d(5, 5));
+    const Vec expect = Vec(5, 5) + 3.0 * (plain.Position(0.5 * t) -
+                                                                   Vec(5, 5));
     EXPECT_LT((m.Position(t) - expect).norm(), 1e-12) << t;
     EXPECT_LT((m.Velocity(t) - 1.5 * plain.Velocity(0.5 * t)).norm(), 1e-12) << t;
     EXPECT_LT((m.Acceleration(t) - 0.75 * plain.Acceleration(0.5 * t)).norm(), 1e-12) << t;

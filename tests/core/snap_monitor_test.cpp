@@ -7,13 +7,16 @@
 #include <string>
 
 #include "run/run_summary.h"
-#include "run/simulation_run.h"
+#include "run/driver.h"
+#include "run/initial_state.h"
+#include "run/time_grid.h"
 #include "core/equilibrium.h"
-#include "core/integrator.h"
+#include "core/step.h"
 #include "core/snap_monitor.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
+#include "drive_support.h"
 
 namespace cablefilm {
 namespace {
@@ -26,8 +29,8 @@ using testing::UniformCable;
 // pi / (2 omega), and the link goes slack again after pi / omega.
 struct OneLinkSnap {
   double l = 1.0, EA = 1e6, mu = 2.0, v = 1.5;  // [m], [N], [kg/m], [m/s]
-  CableModel model;
-  CableState state;
+  Model model;
+  State state;
   OneLinkSnap() {
     EnvironmentSpec vacuum;
     vacuum.fluid_density = 0;
@@ -35,12 +38,12 @@ struct OneLinkSnap {
     model = UniformCable(1, l, mu, 1e-4, EA / 1e-4, vacuum, EndMotion::Fixed({0, 0}),
                          EndMotion::Free({0.9 * l, 0}));
     state.t = 0;
-    state.x = Eigen::Matrix2Xd::Zero(2, 2);
-    state.x.col(1) = Eigen::Vector2d(0.9 * l, 0);  // slack: 0.1 l to go
-    state.v = Eigen::Matrix2Xd::Zero(2, 2);
-    state.v.col(1) = Eigen::Vector2d(v, 0);
+    state.x = Points::Zero(kDim, 2);
+    state.x.col(1) = Vec(0.9 * l, 0);  // slack: 0.1 l to go
+    state.v = Points::Zero(kDim, 2);
+    state.v.col(1) = Vec(v, 0);
   }
-  double station_mass() const { return model.cable_mass[1]; }  // mu l / 2
+  double station_mass() const { return model.line.cable_mass[1]; }  // mu l / 2
   double peak() const { return v * std::sqrt(EA / l * station_mass()); }
 };
 
@@ -57,7 +60,7 @@ TEST(SnapMonitor, SnapTimeIsTheLinksHalfPeriod) {
 TEST(SnapMonitor, ResolvedSnapReachesTheClosedFormPeak) {
   OneLinkSnap snap;
   const double tau = SnapMonitor(snap.model).snap_times()[0];
-  auto integrator = MakeIntegrator(IntegratorKind::kExplicit, snap.model);
+  auto integrator = testing::MakeStepper(Scheme::kExplicit, snap.model);
   integrator->Initialize(snap.model, snap.state);
   const double h = 0.05 * tau;  // half the resolved bound
   double peak = 0;
@@ -81,7 +84,7 @@ TEST(SnapMonitor, ResolvedSnapReachesTheClosedFormPeak) {
 TEST(SnapMonitor, CoarseStepIsReportedUnresolved) {
   OneLinkSnap snap;
   const double tau = SnapMonitor(snap.model).snap_times()[0];
-  auto integrator = MakeIntegrator(IntegratorKind::kImplicit, snap.model, 0.5, 0.0);
+  auto integrator = testing::MakeStepper(Scheme::kImplicit, snap.model, 0.5, 0.0);
   integrator->Initialize(snap.model, snap.state);
   const int steps = static_cast<int>((0.1 * snap.l / snap.v + 3 * tau) / (0.5 * tau));
   for (int k = 0; k < steps; ++k) integrator->Step(snap.model, snap.state, 0.5 * tau);
@@ -92,13 +95,13 @@ TEST(SnapMonitor, CoarseStepIsReportedUnresolved) {
   EXPECT_FALSE(TrustWarnings(snap.model, integrator->stats()).empty());
 }
 
-IntegratorStats RunScene(const std::string& name, double duration = 0) {
+StepStats RunScene(const std::string& name, double duration = 0) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + name);
   if (duration > 0) scene.simulation.duration = duration;
-  const CableModel m = BuildModel(scene);
+  const Model m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
-  CableState state = SolveEquilibrium(m);
-  auto integrator = MakeIntegrator(m, grid);
+  State state = SolveEquilibrium(m);
+  auto integrator = testing::MakeStepper(m, grid);
   integrator->Initialize(m, state);
   for (long k = 0; k < grid.outputs; ++k) integrator->Step(m, state, grid.interval);
   return integrator->stats();
@@ -107,7 +110,7 @@ IntegratorStats RunScene(const std::string& name, double duration = 0) {
 // Issue 9: the snapping line's default run is not converged (its peak moved from 0.4 to 7.7 kN
 // as the steps shrank), and it must say so.
 TEST(SnapMonitor, SnappingLineDefaultSaysItsPeakIsNotConverged) {
-  const IntegratorStats st = RunScene("snapping_line.toml");
+  const StepStats st = RunScene("snapping_line.toml");
   const SceneDef scene =
       LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/snapping_line.toml");
   const std::vector<std::string> w = TrustWarnings(BuildModel(scene), st);
@@ -122,7 +125,7 @@ TEST(SnapMonitor, SnappingLineDefaultSaysItsPeakIsNotConverged) {
 
 // Case P63 stays taut: no snap, no warning (its default is within 0.6 % of the converged peak).
 TEST(SnapMonitor, P63HasNoSnap) {
-  const IntegratorStats st = RunScene("polachek1963.toml", 20.0);
+  const StepStats st = RunScene("polachek1963.toml", 20.0);
   EXPECT_EQ(st.record.snaps, 0);
   EXPECT_GT(st.record.smallest_step, 0);
   EXPECT_LE(st.record.smallest_step, st.record.largest_step);

@@ -19,7 +19,7 @@ namespace {
 
 // Two sections (wire and a softer, lighter rope) in sea water, a heavy prism at station 7, both
 // ends fixed.
-CableModel Line(int links) {
+Model Line(int links) {
   SectionSpec wire{20.0, links / 2, 0.0254, 5.067e-4, 2.75, 9.0e10, 1.2, 1.0};
   SectionSpec rope{20.0, links - links / 2, 0.0508, 2.027e-3, 1.70, 2.0e9, 1.2, 1.0};
   PrismSpec weight;
@@ -31,29 +31,29 @@ CableModel Line(int links) {
   weight.drag_area = {0.16, 0.16};
   EnvironmentSpec env;
   env.fluid_density = 1025;
-  return BuildCableModel({wire, rope}, {weight}, env, EndMotion::Fixed({0, 0}),
+  return MakeModel({wire, rope}, {weight}, env, EndMotion::Fixed({0, 0}),
                          EndMotion::Fixed({40, 0}), LinkLaw::kElastic);
 }
 
 // omega_max^2 of the linearised free stations at x (v = 0: no drag, so the forces are the
 // tensions and the weights, and K is the Hessian of the potential).
-double HighestEigenvalue(const CableModel& m, const Eigen::Matrix2Xd& x) {
+double HighestEigenvalue(const Model& m, const Points& x) {
   const int j0 = m.first_free(), n = m.last_free() - j0 + 1;
-  ForceWorkspace ws(m.links);
-  const Eigen::Matrix2Xd v = Eigen::Matrix2Xd::Zero(2, m.stations());
-  auto forces = [&](const Eigen::Matrix2Xd& y) {
+  ForceWorkspace ws(m.line.links);
+  const Points v = Points::Zero(kDim, m.stations());
+  auto forces = [&](const Points& y) {
     ComputeGeometry(y, ws.geometry);
     ComputeHookeTensions(m, ws.geometry, ws.tension);
-    ComputeStationForces(m, ws.geometry, ws.tension, v, ws.force);
-    return Eigen::Matrix2Xd(ws.force);
+    ComputeStationForces(m, SceneWater(m), ws.geometry, ws.tension, v, ws.force);
+    return Points(ws.force);
   };
   Eigen::MatrixXd K(2 * n, 2 * n), M = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  const double h = 1e-7 * m.rest_length.minCoeff();
+  const double h = 1e-7 * m.line.rest_length.minCoeff();
   for (int c = 0; c < 2 * n; ++c) {
-    Eigen::Matrix2Xd xp = x, xm = x;
+    Points xp = x, xm = x;
     xp(c % 2, j0 + c / 2) += h;
     xm(c % 2, j0 + c / 2) -= h;
-    const Eigen::Matrix2Xd df = (forces(xp) - forces(xm)) / (2 * h);
+    const Points df = (forces(xp) - forces(xm)) / (2 * h);
     for (int r = 0; r < 2 * n; ++r) K(r, c) = -df(r % 2, j0 + r / 2);
   }
   K = 0.5 * (K + K.transpose()).eval();
@@ -64,19 +64,19 @@ double HighestEigenvalue(const CableModel& m, const Eigen::Matrix2Xd& x) {
 }
 
 // Stations along a wave y = a sin(k x) with link j stretched by strain[j] (negative: slack).
-Eigen::Matrix2Xd WavyState(const CableModel& m, double amplitude, const std::vector<double>& strain) {
-  Eigen::Matrix2Xd x(2, m.stations());
+Points WavyState(const Model& m, double amplitude, const std::vector<double>& strain) {
+  Points x(2, m.stations());
   x.col(0).setZero();
-  for (int j = 0; j < m.links; ++j) {
+  for (int j = 0; j < m.line.links; ++j) {
     const double angle = amplitude * std::cos(0.7 * j);
-    x.col(j + 1) = x.col(j) + m.rest_length[j] * (1 + strain[j]) *
-                                  Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    x.col(j + 1) = x.col(j) + m.line.rest_length[j] * (1 + strain[j]) *
+                                  Vec(std::cos(angle), std::sin(angle));
   }
   return x;
 }
 
 TEST(StabilityLimit, HoldsInStretchedCurvedSlackStatesWithAddedMass) {
-  const CableModel m = Line(16);
+  const Model m = Line(16);
   const StabilityLimit limit = ComputeStabilityLimit(m);
   const double bound = limit.omega_max * limit.omega_max;
   struct Case {
@@ -96,10 +96,10 @@ TEST(StabilityLimit, HoldsInStretchedCurvedSlackStatesWithAddedMass) {
   cases.push_back({"curved (1.2 rad), strain 3 % to 10 %", 1.2, big});
   cases.push_back({"curved (0.9 rad), some links slack, others to 10 %", 0.9, mixed});
   for (const Case& c : cases) {
-    Eigen::Matrix2Xd x = WavyState(m, c.amplitude, c.strain);
+    Points x = WavyState(m, c.amplitude, c.strain);
     // The far end fixed where the state puts it.
-    CableModel at = m;
-    at.end = EndMotion::Fixed(x.col(m.links));
+    Model at = m;
+    at.ends.end = EndMotion::Fixed(x.col(m.line.links));
     const double lambda = HighestEigenvalue(at, x);
     std::printf("[ stability ] %s: omega_max^2 %.6e, Gershgorin bound %.6e, ratio %.4f\n", c.what,
                 lambda, bound, lambda / bound);

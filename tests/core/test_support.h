@@ -5,15 +5,78 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
-#include "core/cable_model.h"
+#include "core/data.h"
+#include "core/model.h"
+#include "core/step.h"
 
 namespace cablefilm::testing {
 
+// The Data a test steps: state `s` under a scheme, with the model's own inputs.
+inline Data StartData(const Model& m, const State& s, Scheme scheme, double rho_inf = 0.5,
+                      double tolerance = 0, double safety_factor = 0) {
+  StepOptions o;
+  o.scheme = scheme;
+  o.rho_inf = rho_inf;
+  o.tolerance = tolerance;
+  o.safety_factor = safety_factor;
+  return MakeData(m, SceneInputs(m), o, s);
+}
+
+// A scheme as the tests step it: a Data with the model's own inputs whose state follows the
+// test's State (taken in before each step, given back after it), so that a test may look at
+// and change its state between steps as it likes.
+class Stepper {
+ public:
+  explicit Stepper(const StepOptions& options) : options_(options) {}
+  Stepper(Scheme scheme, double rho_inf = 0.5, double tolerance = 0, double safety_factor = 0) {
+    options_.scheme = scheme;
+    options_.rho_inf = rho_inf;
+    options_.tolerance = tolerance;
+    options_.safety_factor = safety_factor;
+  }
+  void Initialize(const Model& m, const State& s) {
+    inputs_ = SceneInputs(m);
+    inputs_.stop = stop_;
+    data_ = MakeData(m, inputs_, options_, s);
+  }
+  void Step(const Model& m, State& s, double dt) {
+    data_.state = s;
+    cablefilm::Step(m, data_, inputs_, dt);
+    s = data_.state;
+  }
+  const Eigen::VectorXd& tensions() const { return data_.tension(); }
+  StepStats stats() const { return data_.step_stats(); }
+  const Data& data() const { return data_; }
+  Data& data() { return data_; }
+  const Inputs& inputs() const { return inputs_; }
+  void set_cancel(const CancelFlag* stop) { stop_ = inputs_.stop = stop; }
+
+ private:
+  StepOptions options_;
+  Inputs inputs_;
+  const CancelFlag* stop_ = nullptr;
+  Data data_;
+};
+
+inline std::unique_ptr<Stepper> MakeStepper(Scheme scheme, const Model&, double rho_inf = 0.5,
+                                            double tolerance = 0) {
+  return std::make_unique<Stepper>(scheme, rho_inf, tolerance);
+}
+
+// A state at rest at positions x (t = 0).
+inline State AtRest(const Points& x) {
+  State s;
+  s.x = x;
+  s.v = Points::Zero(kDim, x.cols());
+  return s;
+}
+
 // A uniform line of `links` links between two end motions.
-inline CableModel UniformCable(int links, double length, double mass_per_length, double area,
+inline Model UniformCable(int links, double length, double mass_per_length, double area,
                                double youngs_modulus, const EnvironmentSpec& env, EndMotion start,
                                EndMotion end, double diameter = 0.0, double drag = 0.0,
                                double added_mass = 0.0) {
@@ -26,7 +89,7 @@ inline CableModel UniformCable(int links, double length, double mass_per_length,
   s.youngs_modulus = youngs_modulus;
   s.drag_coefficient = drag;
   s.added_mass_coefficient = added_mass;
-  return BuildCableModel({s}, {}, env, std::move(start), std::move(end), LinkLaw::kElastic);
+  return MakeModel({s}, {}, env, std::move(start), std::move(end), LinkLaw::kElastic);
 }
 
 // The exact static shape of an elastic line in Lagrangian (unstretched) arc length s, Irvine
@@ -51,8 +114,8 @@ class ExactCatenary {
   explicit ExactCatenary(std::vector<Piece> pieces) : pieces_(std::move(pieces)) {}
 
   // Position (x, y) relative to station 0 and the tension at arc length s.
-  void Evaluate(double H, double V0, double s, Eigen::Vector2d* r, double* tension) const {
-    Eigen::Vector2d p = Eigen::Vector2d::Zero();
+  void Evaluate(double H, double V0, double s, Vec* r, double* tension) const {
+    Vec p = Vec::Zero();
     double V = V0, start = 0;
     for (size_t i = 0; i < pieces_.size(); ++i) {
       const Piece& pc = pieces_[i];
@@ -67,7 +130,7 @@ class ExactCatenary {
     if (tension) *tension = std::hypot(H, V);
   }
   // dr/ds = (1 + T/EA) (H, V)/T at arc length s (just after s at a point load).
-  Eigen::Vector2d Slope(double H, double V0, double s) const {
+  Vec Slope(double H, double V0, double s) const {
     double V = V0, start = 0, EA = pieces_.front().EA;
     for (const Piece& pc : pieces_) {
       if (s < start) break;
@@ -77,11 +140,11 @@ class ExactCatenary {
       start += pc.length;
     }
     const double T = std::hypot(H, V);
-    return (1.0 + T / EA) / T * Eigen::Vector2d(H, V);
+    return (1.0 + T / EA) / T * Vec(H, V);
   }
   // d/ds of dr/ds at s, from the left (s^-) or the right (s^+) of a piece boundary:
   // with dV/ds = w, d/ds[(1/EA + 1/T)(H, V)] = (0, w/EA) + (w H / T^3)(-V, H).
-  Eigen::Vector2d SlopeDerivative(double H, double V0, double s, bool from_left) const {
+  Vec SlopeDerivative(double H, double V0, double s, bool from_left) const {
     double V = V0, start = 0, EA = 0, w = 0;
     for (const Piece& pc : pieces_) {
       V += pc.point_load;
@@ -92,15 +155,15 @@ class ExactCatenary {
       start += pc.length;
     }
     const double T = std::hypot(H, V);
-    return Eigen::Vector2d(0.0, w / EA) + (w * H / (T * T * T)) * Eigen::Vector2d(-V, H);
+    return Vec(0.0, w / EA) + (w * H / (T * T * T)) * Vec(-V, H);
   }
   double total_length() const {
     double L = 0;
     for (const Piece& p : pieces_) L += p.length;
     return L;
   }
-  Eigen::Vector2d EndPoint(double H, double V0) const {
-    Eigen::Vector2d r;
+  Vec EndPoint(double H, double V0) const {
+    Vec r;
     Evaluate(H, V0, total_length(), &r, nullptr);
     return r;
   }
@@ -108,18 +171,18 @@ class ExactCatenary {
   // Newton on (log H, V0) so that the far end lands on `target` (relative to station 0), with a
   // finite-difference Jacobian and backtracking. The guess only selects the root; the answer is
   // fixed by the closed form. Returns the end-point miss [m].
-  double Shoot(const Eigen::Vector2d& target, double H_guess, double V0_guess) {
+  double Shoot(const Vec& target, double H_guess, double V0_guess) {
     double u = std::log(H_guess), V0 = V0_guess;
-    auto miss = [&](double uu, double vv) -> Eigen::Vector2d { return EndPoint(std::exp(uu), vv) - target; };
-    Eigen::Vector2d r = miss(u, V0);
+    auto miss = [&](double uu, double vv) -> Vec { return EndPoint(std::exp(uu), vv) - target; };
+    Vec r = miss(u, V0);
     for (int it = 0; it < 200 && r.norm() > 1e-13 * total_length(); ++it) {
       const double du = 1e-7, dv = 1e-7 * (std::abs(V0) + std::exp(u));
-      Eigen::Matrix2d J;
+      Mat J;
       J.col(0) = (miss(u + du, V0) - miss(u - du, V0)) / (2 * du);
       J.col(1) = (miss(u, V0 + dv) - miss(u, V0 - dv)) / (2 * dv);
-      const Eigen::Vector2d step = -J.fullPivLu().solve(r);
+      const Vec step = -J.fullPivLu().solve(r);
       double a = 1.0;
-      Eigen::Vector2d r_new;
+      Vec r_new;
       for (int k = 0; k < 60; ++k, a *= 0.5) {
         const double su = std::max(-2.0, std::min(2.0, a * step[0]));
         r_new = miss(u + su, V0 + a * step[1]);
@@ -140,7 +203,7 @@ class ExactCatenary {
   double V0() const { return V0_; }
 
  private:
-  static Eigen::Vector2d Segment(double H, double Va, double w, double EA, double s) {
+  static Vec Segment(double H, double Va, double w, double EA, double s) {
     const double Vb = Va + w * s;
     const double x = H * s / EA + H / w * (std::asinh(Vb / H) - std::asinh(Va / H));
     // sqrt(H^2+Vb^2) - sqrt(H^2+Va^2) written without cancellation.

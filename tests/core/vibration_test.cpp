@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/explicit_integrator.h"
+#include "core/explicit_step.h"
 #include "core/stability.h"
 #include "test_support.h"
 
@@ -25,16 +25,16 @@ double VerletFrequency(double omega, double dt) { return 2.0 / dt * std::asin(0.
 // q(t) = sum_j weight_j * x_j (x: the transverse coordinate `axis`), measured between the first
 // and the last of `crossings` zero crossings (linear interpolation: at a crossing q'' = -W^2 q
 // vanishes, so the interpolation error is O(dt^3)).
-double MeasurePeriod(const CableModel& m, const Eigen::Matrix2Xd& x0, double dt,
+double MeasurePeriod(const Model& m, const Points& x0, double dt,
                      const Eigen::VectorXd& weight, int axis, int crossings) {
-  CableState s;
+  State s;
   s.x = x0;
-  s.v = Eigen::Matrix2Xd::Zero(2, m.stations());
-  ExplicitIntegrator integ(m);
+  s.v = Points::Zero(kDim, m.stations());
+  testing::Stepper integ(Scheme::kExplicit);
   integ.Initialize(m, s);
   auto modal = [&]() {
     double q = 0;
-    for (int j = 0; j <= m.links; ++j) q += weight[j] * s.x(axis, j);
+    for (int j = 0; j <= m.line.links; ++j) q += weight[j] * s.x(axis, j);
     return q;
   };
   std::vector<double> times;
@@ -57,7 +57,7 @@ TEST(TautString, TransverseModesMatchDiscreteFrequencies) {
   EnvironmentSpec env;
   env.gravity = 0;
   env.fluid_density = 0;
-  const CableModel m = UniformCable(N, N * l0, mu, 1e-4, EA / 1e-4, env, EndMotion::Fixed({0, 0}),
+  const Model m = UniformCable(N, N * l0, mu, 1e-4, EA / 1e-4, env, EndMotion::Fixed({0, 0}),
                                     EndMotion::Fixed({N * L, 0}));
   // A stretched link turned by a small angle pulls back with T0 times the angle: transverse
   // stiffness T0 / L. So m y_j'' = (T0/L)(y_{j+1} - 2 y_j + y_{j-1}), with modes
@@ -68,11 +68,11 @@ TEST(TautString, TransverseModesMatchDiscreteFrequencies) {
     const double expected = 2 * M_PI / VerletFrequency(omega, dt);
     // Amplitude 1e-4 / k m: the extra stretch it causes changes the tension by
     // (EA/T0) slope^2 / 2 ~ 1e-8 relative, so the motion is linear to that order.
-    Eigen::Matrix2Xd x0(2, N + 1);
+    Points x0(2, N + 1);
     Eigen::VectorXd shape(N + 1);
     for (int j = 0; j <= N; ++j) {
       shape[j] = std::sin(k * M_PI * j / N);
-      x0.col(j) = Eigen::Vector2d(j * L, 1e-4 / k * shape[j]);
+      x0.col(j) = Vec(j * L, 1e-4 / k * shape[j]);
     }
     const double period = MeasurePeriod(m, x0, dt, shape, 1, 7);  // three periods
     const double rel = std::abs(period / expected - 1);
@@ -146,18 +146,18 @@ TEST(HangingChain, SimulatedPeriodMatchesEigenproblemAndConverges) {
     EnvironmentSpec env;
     env.gravity = g;
     env.fluid_density = 0;
-    const CableModel m = UniformCable(N, L, mu, area, EA / area, env, EndMotion::Fixed({0, 0}),
+    const Model m = UniformCable(N, L, mu, area, EA / area, env, EndMotion::Fixed({0, 0}),
                                       EndMotion::Free({0, -L}));
     Eigen::VectorXd mode;
     const double omega = ChainFirstMode(N, L, mu, g, EA, &mode);
     mode /= std::abs(mode[N]);
     // The exact lumped equilibrium: hanging straight down, each link stretched by its load.
     const double l = L / N;
-    Eigen::Matrix2Xd x0(2, N + 1);
+    Points x0(2, N + 1);
     double y = 0;
     for (int j = 0; j <= N; ++j) {
       if (j > 0) y -= l * (1 + g * mu * l * (N - j + 0.5) / EA);
-      x0.col(j) = Eigen::Vector2d(1e-4 * L * mode[j], y);  // 1 mm at the free end
+      x0.col(j) = Vec(1e-4 * L * mode[j], y);  // 1 mm at the free end
     }
     const double dt = 0.5 * ComputeStabilityLimit(m).time_step;
     // Mass-weighted projection on the mode: the modal coordinate.

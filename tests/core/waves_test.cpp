@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "core/equilibrium.h"
-#include "core/explicit_integrator.h"
+#include "core/explicit_step.h"
 #include "core/forces.h"
-#include "core/integrator.h"
+#include "core/step.h"
 #include "core/wave_forces.h"
 #include "core/waves.h"
 #include "test_support.h"
@@ -78,11 +78,11 @@ struct Airy {
   double a, omega, k, h;
   double C(double z) const { return std::cosh(k * (z + h)) / std::sinh(k * h); }
   double S(double z) const { return std::sinh(k * (z + h)) / std::sinh(k * h); }
-  Eigen::Vector2d velocity(double z, double th) const {
-    return a * omega * Eigen::Vector2d(C(z) * std::cos(th), S(z) * std::sin(th));
+  Vec velocity(double z, double th) const {
+    return a * omega * Vec(C(z) * std::cos(th), S(z) * std::sin(th));
   }
-  Eigen::Vector2d acceleration(double z, double th) const {
-    return a * omega * omega * Eigen::Vector2d(C(z) * std::sin(th), -S(z) * std::cos(th));
+  Vec acceleration(double z, double th) const {
+    return a * omega * omega * Vec(C(z) * std::sin(th), -S(z) * std::cos(th));
   }
 };
 
@@ -184,7 +184,7 @@ TEST(WaveKinematics, IncompressibleAndIrrotational) {
     for (double zf : {-0.9, -0.5, -0.05})
       for (double x : {0.1 * L, 0.6 * L}) {
         const WaterKinematics w = KinematicsAt(wave, x, zf * c.h, 1.3);
-        const Eigen::Matrix2d& G = w.velocity_gradient;
+        const Mat& G = w.velocity_gradient;
         EXPECT_LT(std::abs(G(0, 0) + G(1, 1)), order * scale) << c.what;
         EXPECT_LT(std::abs(G(0, 1) - G(1, 0)), order * scale) << c.what;
       }
@@ -207,9 +207,9 @@ TEST(WaveKinematics, GradientsMatchCentralDifferences) {
       for (double xf : {0.05, 0.3, 0.8}) {
         const double x = xf * L, y = zf * c.h;
         const WaterKinematics w = KinematicsAt(wave, x, y, t);
-        Eigen::Matrix2d Gu, Ga;
+        Mat Gu, Ga;
         for (int axis = 0; axis < 2; ++axis) {
-          const Eigen::Vector2d e = d * Eigen::Vector2d::Unit(axis);
+          const Vec e = d * Vec::Unit(axis);
           const WaterKinematics p = KinematicsAt(wave, x + e.x(), y + e.y(), t);
           const WaterKinematics m = KinematicsAt(wave, x - e.x(), y - e.y(), t);
           Gu.col(axis) = (p.velocity - m.velocity) / (2 * d);
@@ -236,7 +236,7 @@ TEST(WaveKinematics, AccelerationIsTheVelocitysRate) {
     const double scale = wave.amplitude * wave.omega * wave.omega / std::tanh(wave.k * c.h);
     for (double t : {0.3 * c.T, 2.1 * c.T}) {
       const double dt = 1e-5 * c.T;
-      const Eigen::Vector2d rate = (KinematicsAt(wave, 0.2 * L, -0.3 * c.h, t + dt).velocity -
+      const Vec rate = (KinematicsAt(wave, 0.2 * L, -0.3 * c.h, t + dt).velocity -
                                     KinematicsAt(wave, 0.2 * L, -0.3 * c.h, t - dt).velocity) /
                                    (2 * dt);
       EXPECT_LT((KinematicsAt(wave, 0.2 * L, -0.3 * c.h, t).acceleration - rate).norm(),
@@ -269,19 +269,19 @@ OrbitFit RunPoint(double drag_area, bool morison_inertia, long* steps) {
   p.station = 1;
   p.mass = rho * volume;  // neutrally buoyant
   p.volume = volume;
-  p.added_volume = morison_inertia ? Eigen::Vector2d(volume, volume) : Eigen::Vector2d::Zero();
+  p.added_volume = morison_inertia ? Vec(volume, volume) : Vec::Zero();
   p.drag_coefficient = {1.0, 1.0};
   p.drag_area = {drag_area, drag_area};
-  CableModel m = BuildCableModel({link}, {p}, env, EndMotion::Fixed({0, -45}),
+  Model m = MakeModel({link}, {p}, env, EndMotion::Fixed({0, -45}),
                                  EndMotion::Free({0, -20}), LinkLaw::kElastic);
-  if (!morison_inertia) m.prism_fluid_mass.setZero();  // drag alone carries the point
-  CableState s;
-  s.x = Eigen::Matrix2Xd(2, 2);
+  if (!morison_inertia) m.line.prism_fluid_mass.setZero();  // drag alone carries the point
+  State s;
+  s.x = Points(2, 2);
   s.x << 0, 0, -45, -20;
-  s.v = Eigen::Matrix2Xd::Zero(2, 2);
-  auto integ = MakeIntegrator(IntegratorKind::kImplicit, m, 0.5, 1e-9);
+  s.v = Points::Zero(kDim, 2);
+  auto integ = testing::MakeStepper(Scheme::kImplicit, m, 0.5, 1e-9);
   integ->Initialize(m, s);
-  const double dt = 0.02, omega = m.wave.omega;
+  const double dt = 0.02, omega = m.env.wave.omega;
   Eigen::MatrixXd A(0, 4);
   std::vector<double> xs, ys, ts;
   for (int i = 1; i <= 5000; ++i) {
@@ -358,7 +358,7 @@ struct WaveRun {
 };
 
 WaveRun RunMooringInWaves(int N, bool waves, bool inextensible = false, double fairlead_y = 0.0,
-                          IntegratorKind kind = IntegratorKind::kImplicit, double duration = 60,
+                          Scheme kind = Scheme::kImplicit, double duration = 60,
                           double tolerance = 1e-6 * 500) {
   const double rho = 1025, mu = 115, area = 0.01465, EA = 5.4e8, bed_y = -100;
   EnvironmentSpec env;
@@ -375,20 +375,20 @@ WaveRun RunMooringInWaves(int N, bool waves, bool inextensible = false, double f
   SectionSpec s{500.0, N, 0.137, area, mu, EA / area, 2.4, 1.0};
   const EndMotion ship =
       EndMotion::Trochoid({450, fairlead_y}, 3.0, 0.0, 0.0, 1.0, 2 * kPi / 12.0, 0.3);
-  const CableModel m =
-      BuildCableModel({s}, {}, env, EndMotion::Fixed({0.0, bed_y}), ship,
+  const Model m =
+      MakeModel({s}, {}, env, EndMotion::Fixed({0.0, bed_y}), ship,
                       inextensible ? LinkLaw::kInextensible : LinkLaw::kElastic);
-  CableState st = SolveEquilibrium(m);
-  std::unique_ptr<Integrator> integ =
-      kind == IntegratorKind::kExplicit
-          ? std::make_unique<ExplicitIntegrator>(m, 0.8)  // "auto": 0.8 of the limit
-          : MakeIntegrator(inextensible ? IntegratorKind::kInextensible : kind, m, 0.5,
+  State st = SolveEquilibrium(m);
+  std::unique_ptr<testing::Stepper> integ =
+      kind == Scheme::kExplicit
+          ? std::make_unique<testing::Stepper>(Scheme::kExplicit, 0.5, 0, 0.8)  // "auto": 0.8 of the limit
+          : testing::MakeStepper(inextensible ? Scheme::kInextensible : kind, m, 0.5,
                            tolerance);
   integ->Initialize(m, st);
   WaveRun r;
   for (int i = 0; i < duration; ++i) {
     integ->Step(m, st, 1.0);
-    const double T = integ->tensions()[m.links - 1];
+    const double T = integ->tensions()[m.line.links - 1];
     r.finite = r.finite && std::isfinite(T) && st.x.allFinite() && st.v.allFinite();
     r.fairlead.push_back(T);
     r.peak = std::max(r.peak, T);
@@ -452,10 +452,10 @@ TEST(WaveMooring, InextensibleModelRunsInWaves) {
 // kN with the implicit tolerance at 1e-4 of its default), and the waves must not add to that
 // beyond 20 % (measured 3.8 kN; 1.5 kN at 1e-4 of the tolerance).
 TEST(WaveMooring, LinePiercingTheSurfaceRunsThroughInBothSchemes) {
-  const WaveRun imp = RunMooringInWaves(50, true, false, 14.0, IntegratorKind::kImplicit, 30);
-  const WaveRun exp = RunMooringInWaves(50, true, false, 14.0, IntegratorKind::kExplicit, 30);
-  const WaveRun imp_calm = RunMooringInWaves(50, false, false, 14.0, IntegratorKind::kImplicit, 30);
-  const WaveRun exp_calm = RunMooringInWaves(50, false, false, 14.0, IntegratorKind::kExplicit, 30);
+  const WaveRun imp = RunMooringInWaves(50, true, false, 14.0, Scheme::kImplicit, 30);
+  const WaveRun exp = RunMooringInWaves(50, true, false, 14.0, Scheme::kExplicit, 30);
+  const WaveRun imp_calm = RunMooringInWaves(50, false, false, 14.0, Scheme::kImplicit, 30);
+  const WaveRun exp_calm = RunMooringInWaves(50, false, false, 14.0, Scheme::kExplicit, 30);
   EXPECT_TRUE(imp.finite && exp.finite);
   const double d = RmsDifference(imp, exp), d_calm = RmsDifference(imp_calm, exp_calm);
   std::printf("[ piercing ] fairlead 9 m above the surface: peak %.1f kN implicit (%ld steps), "
@@ -486,13 +486,13 @@ TEST(WaveEquilibrium, LinePiercingTheSurfaceHangsWithItsDryPartInAir) {
   env.waves.ramp_rate = 0.2;
   SectionSpec s{30.0, 60, 0.04, area, mu, E, 1.2, 1.0};
   auto build = [&](const EnvironmentSpec& e) {
-    return BuildCableModel({s}, {}, e, EndMotion::Fixed({0, 5}), EndMotion::Free({0, -25}),
+    return MakeModel({s}, {}, e, EndMotion::Fixed({0, 5}), EndMotion::Free({0, -25}),
                            LinkLaw::kElastic);
   };
-  const CableModel m = build(env);
-  const CableState st = SolveEquilibrium(m);
-  ForceWorkspace ws(m.links);
-  ComputeGeometry(m, 0.0, st.x, ws.geometry);
+  const Model m = build(env);
+  const State st = SolveEquilibrium(m);
+  ForceWorkspace ws(m.line.links);
+  ComputeGeometry(m, SceneWater(m), 0.0, st.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
   const double w_air = mu * kG, w_sub = (mu - rho * area) * kG;
   const double expected = w_air * 4.75 + w_sub * 25.0;
@@ -503,10 +503,10 @@ TEST(WaveEquilibrium, LinePiercingTheSurfaceHangsWithItsDryPartInAir) {
 
   EnvironmentSpec still = env;
   still.waves.height = 0;
-  const CableModel calm = build(still);
-  CableState run = SolveEquilibrium(calm);
-  const Eigen::Matrix2Xd start = run.x;
-  auto integ = MakeIntegrator(IntegratorKind::kImplicit, calm, 0.5, 1e-6 * 30);
+  const Model calm = build(still);
+  State run = SolveEquilibrium(calm);
+  const Points start = run.x;
+  auto integ = testing::MakeStepper(Scheme::kImplicit, calm, 0.5, 1e-6 * 30);
   integ->Initialize(calm, run);
   double fastest = 0;
   for (int i = 0; i < 200; ++i) {  // 20 s
@@ -530,26 +530,26 @@ TEST(WaveForces, StationsAboveTheSurfaceAreDryAndStillWaterChangesNothing) {
   env.current = 0.4;
   SectionSpec s{10.0, 10, 0.05, 1e-3, 8.0, 1e9, 1.2, 1.0};
   auto build = [&](const EnvironmentSpec& e) {
-    return BuildCableModel({s}, {}, e, EndMotion::Fixed({0, -12}), EndMotion::Fixed({6, 0}),
+    return MakeModel({s}, {}, e, EndMotion::Fixed({0, -12}), EndMotion::Fixed({6, 0}),
                            LinkLaw::kElastic);
   };
-  const CableModel plain = build(env);
+  const Model plain = build(env);
   EnvironmentSpec still = env;
   still.waves = Spec(0.0, 5.0, 100.0);
   still.waves.surface_y = 50.0;
-  const CableModel calm = build(still);
-  Eigen::Matrix2Xd x(2, 11), v(2, 11);
+  const Model calm = build(still);
+  Points x(2, 11), v(2, 11);
   for (int j = 0; j <= 10; ++j) {
-    x.col(j) = Eigen::Vector2d(0.6 * j, -12.0 + 1.2 * j);
-    v.col(j) = Eigen::Vector2d(0.1 * std::sin(j), 0.2 * std::cos(j));
+    x.col(j) = Vec(0.6 * j, -12.0 + 1.2 * j);
+    v.col(j) = Vec(0.1 * std::sin(j), 0.2 * std::cos(j));
   }
   ForceWorkspace a(10), b(10);
   ComputeGeometry(x, a.geometry);
-  ComputeGeometry(calm, 0.0, x, b.geometry);
+  ComputeGeometry(calm, SceneWater(calm), 0.0, x, b.geometry);
   ComputeTensions(plain, a.geometry, v, a.tension);
   ComputeTensions(calm, b.geometry, v, b.tension);
-  ComputeStationForces(plain, a.geometry, a.tension, v, a.force);
-  ComputeStationForces(calm, b.geometry, b.tension, v, b.force);
+  ComputeStationForces(plain, SceneWater(plain), a.geometry, a.tension, v, a.force);
+  ComputeStationForces(calm, SceneWater(calm), b.geometry, b.tension, v, b.force);
   EXPECT_LT((a.force - b.force).cwiseAbs().maxCoeff(), 1e-12 * a.force.cwiseAbs().maxCoeff());
   for (int j = 0; j <= 10; ++j)
     EXPECT_LT((StationInertia(plain, a.geometry, j) - StationInertia(calm, b.geometry, j))
@@ -559,29 +559,29 @@ TEST(WaveForces, StationsAboveTheSurfaceAreDryAndStillWaterChangesNothing) {
   EnvironmentSpec cut = env;
   cut.waves = Spec(0.0, 5.0, 100.0);
   cut.waves.surface_y = -6.0;
-  const CableModel half = build(cut);
-  ComputeGeometry(half, 0.0, x, b.geometry);
+  const Model half = build(cut);
+  ComputeGeometry(half, SceneWater(half), 0.0, x, b.geometry);
   ComputeTensions(half, b.geometry, v, b.tension);
-  ComputeStationForces(half, b.geometry, b.tension, v, b.force);
+  ComputeStationForces(half, SceneWater(half), b.geometry, b.tension, v, b.force);
   const double buoyancy = 1025 * kG * 1e-3 * 1.0;  // rho g sigma l_j of an inner station [N]
   for (int j = 1; j <= 9; ++j) {
     const double wet = b.geometry.sea.wet[j];
     EXPECT_EQ(wet, j < 5 ? 1.0 : j > 5 ? 0.0 : 0.5) << "station " << j;
     // Same tensions, so the difference is the external force alone. Stations 4 and 6 share a
     // link with the half-wet station 5 (its drag and added mass are a quarter dry or wet).
-    const Eigen::Vector2d diff = b.force.col(j) - a.force.col(j);
+    const Vec diff = b.force.col(j) - a.force.col(j);
     if (j < 4) {
       EXPECT_LT(diff.norm(), 1e-9);
     }
     if (j > 6) {
       // In the air: the buoyancy lost, and no drag (the plain model's drag on it removed).
-      Eigen::Matrix2Xd drag_only = Eigen::Matrix2Xd::Zero(2, 11);
-      AddExternalForces(plain, a.geometry, v, drag_only);
-      drag_only(1, j) += plain.net_weight[j];  // leave the drag
+      Points drag_only = Points::Zero(kDim, 11);
+      AddExternalForces(plain, SceneWater(plain), a.geometry, v, drag_only);
+      drag_only(1, j) += plain.line.net_weight[j];  // leave the drag
       EXPECT_NEAR(diff.y(), -buoyancy - drag_only(1, j), 1e-9) << "station " << j;
       EXPECT_NEAR(diff.x(), -drag_only(0, j), 1e-9) << "station " << j;
-      const Eigen::Matrix2d M = StationInertia(half, b.geometry, j);
-      EXPECT_LT((M - plain.cable_mass[j] * Eigen::Matrix2d::Identity()).cwiseAbs().maxCoeff(),
+      const Mat M = StationInertia(half, b.geometry, j);
+      EXPECT_LT((M - plain.line.cable_mass[j] * Mat::Identity()).cwiseAbs().maxCoeff(),
                 1e-12) << "station " << j;
     }
   }

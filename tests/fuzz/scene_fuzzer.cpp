@@ -31,11 +31,11 @@
 #include <thread>
 
 #include "app/commands.h"
-#include "io/result_files.h"
-#include "run/run_extent.h"
-#include "run/simulation_run.h"
 #include "core/cancel.h"
 #include "core/error.h"
+#include "io/result_files.h"
+#include "run/run.h"
+#include "run/time_grid.h"
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
@@ -137,44 +137,30 @@ long Links(const SceneDef& scene) {
   return links;
 }
 
-enum class RunEnd { kFinished, kError, kBudget };
+enum class Outcome { kFinished, kError, kBudget };
 
 // What SimulateToFiles does for `run` and `compare`, on the first kMaxOutputs outputs.
-RunEnd RunModel(const SceneDef& scene, const std::string& suffix, const CancelFlag* cancel) {
+Outcome RunModel(const SceneDef& scene, const std::string& suffix, const CancelFlag* cancel) {
   try {
-    const CableModel m = BuildModel(scene);
+    const Model m = BuildModel(scene);
     CheckModelLimits(scene, m);
-    const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
-    EquilibriumReport report;
-    const CableState initial = MakeInitialState(scene, m, &report, cancel);
-    auto integrator = MakeIntegrator(m, grid);
-    integrator->Initialize(m, initial);
-    RunExtent extent(initial);
+    Run run = PrepareRun(scene, m, LawName(m.line.law), cancel);
     const std::string out = g_setup->out.string();
-    WriteEquilibriumCsv(out + "/equilibrium" + suffix + ".csv", m, initial,
-                        integrator->tensions());
-    TimeseriesWriter series(out + "/timeseries" + suffix + ".csv");
-    CableState state = initial;
+    WriteEquilibriumCsv(out + "/equilibrium" + suffix + ".csv", m, run.initial.state,
+                        run.initial.tension());
+    TimeseriesWriter series(out + "/timeseries" + suffix + ".csv", m);
     long outputs = 0;
-    double peak = -1;
-    const bool completed = Simulate(
-        m, *integrator, state, grid,
-        [&](const CableState& s, const Eigen::VectorXd& tension) {
-          series.Append(m, s, tension);
-          extent.Add(s, tension);
-          peak = std::max(peak, tension.maxCoeff());
-          return outputs++ < kMaxOutputs;
-        },
-        cancel);
-    if (completed)
+    RowFunction enough([&](const Data&) { return outputs++ < kMaxOutputs; });
+    ExecuteRun(run, {&series, &enough});
+    if (run.summary.completed)
       series.Commit();
     else
       series.CommitPartial(out + "/timeseries" + suffix + ".partial.csv");
   } catch (const Error& e) {
     Explain("run", e);
-    return *cancel != 0 ? RunEnd::kBudget : RunEnd::kError;
+    return *cancel != 0 ? Outcome::kBudget : Outcome::kError;
   }
-  return *cancel != 0 ? RunEnd::kBudget : RunEnd::kFinished;
+  return *cancel != 0 ? Outcome::kBudget : Outcome::kFinished;
 }
 
 void RunOne(const char* data, std::size_t size) {
@@ -207,7 +193,7 @@ void RunOne(const char* data, std::size_t size) {
         scene.initial != InitialStateKind::kEquilibrium) {
       CheckCommand(g_setup->scene.string());
     } else {
-      const CableModel m = BuildModel(scene);
+      const Model m = BuildModel(scene);
       CheckModelLimits(scene, m);
       ChooseTimeGrid(m, scene.simulation, scene.output.interval);
     }
@@ -224,7 +210,7 @@ void RunOne(const char* data, std::size_t size) {
   // 2. The run, and compare's second model when its limits allow it.
   ++g_counts.simulated;
   const CancelFlag* cancel = g_setup->watchdog->Arm(g_setup->budget);
-  RunEnd end = RunModel(scene, "", cancel);
+  Outcome end = RunModel(scene, "", cancel);
   SceneDef other = scene;
   other.model = scene.model == CableModelKind::kElastic ? CableModelKind::kInextensible
                                                         : CableModelKind::kElastic;
@@ -234,13 +220,13 @@ void RunOne(const char* data, std::size_t size) {
   } catch (const Error&) {
     other_ok = false;  // compare refuses the scene: nothing more to run
   }
-  if (other_ok && end != RunEnd::kBudget) {
-    const RunEnd second = RunModel(other, "_other", cancel);
-    if (second != RunEnd::kFinished) end = second;
+  if (other_ok && end != Outcome::kBudget) {
+    const Outcome second = RunModel(other, "_other", cancel);
+    if (second != Outcome::kFinished) end = second;
   }
   g_setup->watchdog->Disarm();
-  if (end == RunEnd::kError) ++g_counts.run_errors;
-  if (end == RunEnd::kBudget) ++g_counts.budget_cut;
+  if (end == Outcome::kError) ++g_counts.run_errors;
+  if (end == Outcome::kBudget) ++g_counts.budget_cut;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "view/live_history.h"
+#include "core/vec.h"
 
 namespace cablefilm {
 namespace {
@@ -23,8 +24,8 @@ LiveScenery Scenery(double window) {
   return s;
 }
 
-Eigen::Matrix2Xd Line(double end_y) {
-  Eigen::Matrix2Xd x(2, 11);
+Points StraightLine(double end_y) {
+  Points x(kDim, 11);
   for (int j = 0; j <= 10; ++j) x.col(j) << j, end_y * j / 10.0;
   return x;
 }
@@ -34,7 +35,7 @@ TEST(LiveHistory, WindowRollsAndMemoryStaysBounded) {
   // Two simulated hours at 30 frames/s.
   for (long k = 0; k <= 2 * 3600 * 30; ++k) {
     const double t = k / 30.0;
-    h.Add(t, Line(std::sin(t)), Eigen::VectorXd::Constant(10, 1000 + 100 * std::sin(t)));
+    h.Add(t, StraightLine(std::sin(t)), Eigen::VectorXd::Constant(10, 1000 + 100 * std::sin(t)));
     if (k % 3000 == 0) h.AddMarker(t, "change");
   }
   const LiveFrameInput in = h.MakeInput("live");
@@ -59,15 +60,15 @@ TEST(LiveHistory, RangeGrowsToNiceNumbersUnlessLocked) {
   EXPECT_GE(h.range_max(), 1050);  // the equilibrium's 1000 N
   EXPECT_LE(h.range_max(), 2100);
   EXPECT_TRUE(nice(h.range_max())) << h.range_max();
-  h.Add(0.1, Line(0), Eigen::VectorXd::Constant(10, 4700));
+  h.Add(0.1, StraightLine(0), Eigen::VectorXd::Constant(10, 4700));
   const double grown = h.range_max();
   EXPECT_GE(grown, 1.05 * 4700);
   EXPECT_LE(grown, 2 * 1.05 * 4700);
   EXPECT_TRUE(nice(grown)) << grown;
-  h.Add(0.15, Line(0), Eigen::VectorXd::Constant(10, 3000));
+  h.Add(0.15, StraightLine(0), Eigen::VectorXd::Constant(10, 3000));
   EXPECT_EQ(h.range_max(), grown);  // it never shrinks while unlocked
   h.LockRange(true);
-  h.Add(0.2, Line(0), Eigen::VectorXd::Constant(10, 9000));
+  h.Add(0.2, StraightLine(0), Eigen::VectorXd::Constant(10, 9000));
   EXPECT_EQ(h.range_max(), grown);  // locked: the colours keep their meaning
   h.LockRange(false);                      // unlocked: catches up with what was seen
   EXPECT_GE(h.range_max(), 1.05 * 9000);
@@ -83,7 +84,7 @@ TEST(LiveHistory, BoxAlwaysHoldsTheCableAndShrinksSlowly) {
   LiveHistory h(Scenery(60));
   for (int k = 0; k < 100; ++k) {
     const double end_y = k < 50 ? 8.0 : 1.0;  // a big swing, then a small one
-    h.Add(k / 30.0, Line(end_y), Eigen::VectorXd::Constant(10, 1000));
+    h.Add(k / 30.0, StraightLine(end_y), Eigen::VectorXd::Constant(10, 1000));
     const LiveFrameInput in = h.MakeInput("live");
     for (std::size_t j = 0; j < in.snapshot.x.size(); ++j) {
       EXPECT_GE(in.snapshot.y[j], in.y_min);
@@ -104,7 +105,7 @@ TEST(LiveHistory, SeabedInViewWithGroundBelowIt) {
   scenery.seabed = true;
   scenery.seabed_y = 0;  // the line lies on it
   LiveHistory h(scenery);
-  h.Add(0.1, Line(8.0), Eigen::VectorXd::Constant(10, 1000));
+  h.Add(0.1, StraightLine(8.0), Eigen::VectorXd::Constant(10, 1000));
   const LiveFrameInput in = h.MakeInput("live");
   EXPECT_TRUE(in.seabed);
   EXPECT_EQ(in.seabed_y, 0.0);
@@ -125,7 +126,7 @@ TEST(LiveHistory, WaterSurfaceAcrossTheBoxUpToTheCrests) {
   scenery.waves = true;
   scenery.wave = MakeWave(w, 9.80665);
   LiveHistory h(scenery);
-  h.Add(1.3, Line(8.0), Eigen::VectorXd::Constant(10, 1000));
+  h.Add(1.3, StraightLine(8.0), Eigen::VectorXd::Constant(10, 1000));
   const LiveFrameInput in = h.MakeInput("live");
   EXPECT_TRUE(in.surface);
   ASSERT_GE(in.snapshot.surface_x.size(), 64u);
@@ -140,7 +141,7 @@ TEST(LiveHistory, WaterSurfaceAcrossTheBoxUpToTheCrests) {
 
 TEST(LiveHistory, ResetForgetsTheRunButNotALockedRange) {
   LiveHistory h(Scenery(60));
-  h.Add(1.0, Line(3), Eigen::VectorXd::Constant(10, 3000));
+  h.Add(1.0, StraightLine(3), Eigen::VectorXd::Constant(10, 3000));
   h.AddMarker(1.0, "current 1 m/s");
   h.SetRange(0, 9000);
   h.Reset();

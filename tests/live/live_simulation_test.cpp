@@ -41,7 +41,7 @@ std::vector<double> MaxTensions(LiveSimulation& sim, double t1) {
 
 TEST(LiveSimulation, RestartReturnsToTheScenesInitialStateAndSea) {
   LiveSimulation sim(P63());
-  const CableState initial = sim.state();
+  const State initial = sim.state();
   const Eigen::VectorXd tension = sim.tensions();
   sim.Advance(5.0);
   ASSERT_TRUE(sim.SetCurrent(0.8));
@@ -83,14 +83,14 @@ TEST(LiveSimulation, WaveHeightRampsOverOnePeriod) {
   EXPECT_NEAR(sim.wave_height_now(), 2.0, 1e-9);
   // Held over each frame at its middle: 1/60 s before the end of a 6 s ramp at its steepest
   // (slope 1.875 x 2 m / 6 s) is 0.01 m short.
-  EXPECT_NEAR(sim.model().wave.spec.height, 2.0, 0.011);
+  EXPECT_NEAR(sim.wave().spec.height, 2.0, 0.011);
   advance(3.5);
-  EXPECT_EQ(sim.model().wave.spec.height, 3.0);
-  EXPECT_EQ(sim.model().wave.amplitude, 1.5);
+  EXPECT_EQ(sim.wave().spec.height, 3.0);
+  EXPECT_EQ(sim.wave().amplitude, 1.5);
   EXPECT_TRUE(sim.state().x.allFinite());
   sim.Restart();
   EXPECT_EQ(sim.targets().wave_height, 1.0);
-  EXPECT_EQ(sim.model().wave.spec.height, 1.0);
+  EXPECT_EQ(sim.wave().spec.height, 1.0);
 }
 
 // The waves' period changed live: it ramps over one wave period, each step with the wave number
@@ -111,10 +111,10 @@ TEST(LiveSimulation, WavePeriodRampsWithThePhaseKeptAtTheDrivenEnd) {
     for (int i = 0; i < std::lround(seconds * 30); ++i) sim.Advance(1.0 / 30);
   };
   auto theta = [&](double x, double t) {  // the model's wave phase at x, t [rad]
-    const Wave& w = sim.model().wave;
+    const Wave& w = sim.wave();
     return w.k * x - w.omega * t + w.spec.phase;
   };
-  const double x_end = sim.state().x(0, sim.model().links), g = sim.model().gravity;
+  const double x_end = sim.state().x(0, sim.model().line.links), g = sim.model().env.gravity;
   advance(2.0);
   const double theta0 = theta(x_end, 2.0);
   ASSERT_TRUE(sim.SetWavePeriod(9.0));
@@ -136,23 +136,23 @@ TEST(LiveSimulation, WavePeriodRampsWithThePhaseKeptAtTheDrivenEnd) {
               "integral of omega\n", drift);
   EXPECT_LT(std::abs(drift), 0.01);
   advance(0.1);  // past the ramp's end at every step's middle
-  EXPECT_EQ(sim.model().wave.spec.period, 9.0);
-  EXPECT_DOUBLE_EQ(sim.model().wave.omega, 2 * M_PI / 9.0);
-  EXPECT_DOUBLE_EQ(sim.model().wave.k, WaveNumber(2 * M_PI / 9.0, g, 60.0));
-  EXPECT_EQ(sim.model().wave.spec.height, 1.0);
+  EXPECT_EQ(sim.wave().spec.period, 9.0);
+  EXPECT_DOUBLE_EQ(sim.wave().omega, 2 * M_PI / 9.0);
+  EXPECT_DOUBLE_EQ(sim.wave().k, WaveNumber(2 * M_PI / 9.0, g, 60.0));
+  EXPECT_EQ(sim.wave().spec.height, 1.0);
   // Higher, then shorter: at 4 s the wave breaks above tanh(k h) / 7 L (3.56 m here).
   ASSERT_TRUE(sim.SetWaveHeight(7.0));
   advance(9.5);
-  EXPECT_EQ(sim.model().wave.spec.height, 7.0);
+  EXPECT_EQ(sim.wave().spec.height, 7.0);
   ASSERT_TRUE(sim.SetWavePeriod(4.0));
   advance(9.5);
   const double k4 = WaveNumber(2 * M_PI / 4.0, g, 60.0);
-  EXPECT_NEAR(sim.model().wave.spec.height, std::tanh(k4 * 60.0) / 7.0 * 2 * M_PI / k4, 1e-12);
+  EXPECT_NEAR(sim.wave().spec.height, std::tanh(k4 * 60.0) / 7.0 * 2 * M_PI / k4, 1e-12);
   EXPECT_TRUE(sim.state().x.allFinite());
   sim.Restart();
   EXPECT_EQ(sim.targets().wave_period, 6.0);
-  EXPECT_EQ(sim.model().wave.spec.period, 6.0);
-  EXPECT_EQ(sim.model().wave.spec.phase, scene.waves.phase);
+  EXPECT_EQ(sim.wave().spec.period, 6.0);
+  EXPECT_EQ(sim.wave().spec.phase, scene.waves.phase);
 }
 
 // An end that follows the wave (motion = "wave") follows its period too.
@@ -218,9 +218,9 @@ TEST(LiveSimulation, ACurrentRampedInSettlesOnTheEquilibriumInThatCurrent) {
   sim.Advance(2.5);
   EXPECT_NEAR(sim.current_now(), 0.25, 1e-3);  // half way through the 5 s ramp (sampled mid-step)
   for (int i = 0; i < 600; ++i) sim.Advance(1.0);
-  CableModel in_current = sim.model();
-  in_current.current = 0.5;
-  const CableState expected = SolveEquilibrium(in_current);
+  Model in_current = sim.model();
+  in_current.env.current = 0.5;
+  const State expected = SolveEquilibrium(in_current);
   // Drag damps the swing geometrically; after 600 s what is left is far below a millimetre.
   EXPECT_LT((sim.state().x - expected.x).cwiseAbs().maxCoeff(), 1e-3);
   // It did move: the current pushes this fairly taut line 0.16 m downstream.

@@ -15,6 +15,7 @@
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
+#include "core/inputs.h"
 
 namespace cablefilm {
 namespace {
@@ -109,7 +110,7 @@ TEST(SceneLoader, BaseSceneLoads) {
   EXPECT_EQ(s.sections.size(), 2u);
   EXPECT_EQ(s.weights.size(), 1u);
   EXPECT_EQ(s.name, "bad_scene");
-  EXPECT_EQ(BuildModel(s).weight_stations, std::vector<int>{18});
+  EXPECT_EQ(BuildModel(s).line.weight_stations, std::vector<int>{18});
 }
 
 TEST(SceneLoader, UnknownKeys) {
@@ -285,8 +286,8 @@ TEST_F(TableMotion, GoodTableLoads) {
   const SceneDef s = ParseScene(TableScene("ship.csv"), scene_);
   ASSERT_EQ(s.end.table.size(), 3u);
   EXPECT_DOUBLE_EQ(s.end.table[2][2], -0.3);
-  const CableModel m = BuildModel(s);
-  EXPECT_NEAR(m.end.Position(1.0).x(), 80.5, 1e-12);  // offsets from the rest position
+  const Model m = BuildModel(s);
+  EXPECT_NEAR(m.ends.end.Position(1.0).x(), 80.5, 1e-12);  // offsets from the rest position
 }
 
 TEST_F(TableMotion, MissingTable) {
@@ -351,7 +352,7 @@ TEST(SceneLoader, ShippedScenesLoadBuildAndSolve) {
     const std::string path = std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + name + ".toml";
     SceneDef s;
     ASSERT_NO_THROW(s = LoadScene(path)) << path;
-    const CableModel m = BuildModel(s);
+    const Model m = BuildModel(s);
     EquilibriumReport rep;
     EXPECT_NO_THROW(SolveEquilibrium(m, &rep)) << path;
     EXPECT_LE(rep.residual, 1e-6 * rep.force_scale) << path;
@@ -643,11 +644,11 @@ TEST(SceneLoader, SeabedLoadsWithDefaults) {
   EXPECT_LT(s.seabed.damping, 0);         // critical for each station
   EXPECT_EQ(s.seabed.friction, 0.0);
   EXPECT_EQ(s.seabed.friction_velocity, 0.01);
-  const CableModel m = BuildModel(s);
-  ASSERT_TRUE(m.seabed.present);
+  const Model m = BuildModel(s);
+  ASSERT_TRUE(m.env.seabed.present);
   // Station 1: half of each of its two links of 45.72 / 30 m.
-  EXPECT_DOUBLE_EQ(m.seabed_stiffness[1], 3e7 * 45.72 / 30);
-  EXPECT_GT(m.seabed_damping[1], 0);
+  EXPECT_DOUBLE_EQ(m.line.seabed_stiffness[1], 3e7 * 45.72 / 30);
+  EXPECT_GT(m.line.seabed_damping[1], 0);
   EXPECT_FALSE(ParseScene(kBase, kFile).seabed.present);  // no table, no seabed
   const SceneDef t = ParseScene(kBase + "\n[seabed]\ny = 0\nstiffness = 1e6\ndamping = 2e3\n"
                                         "friction = 0.6\nfriction_velocity = 0.05\n",
@@ -657,7 +658,7 @@ TEST(SceneLoader, SeabedLoadsWithDefaults) {
   EXPECT_EQ(t.seabed.damping, 2e3);
   EXPECT_EQ(t.seabed.friction, 0.6);
   EXPECT_EQ(t.seabed.friction_velocity, 0.05);
-  EXPECT_DOUBLE_EQ(BuildModel(t).seabed_damping[1], 2e3 * 45.72 / 30);
+  EXPECT_DOUBLE_EQ(BuildModel(t).line.seabed_damping[1], 2e3 * 45.72 / 30);
 }
 
 TEST(SceneLoader, SeabedErrors) {
@@ -687,14 +688,13 @@ TEST(SceneLoader, CurrentProfile) {
       ParseScene(With("current = 0.0", "current = [[-10, 0.2], [0.0, 1.0], [5, 1.5]]"), kFile);
   ASSERT_EQ(s.environment.current_profile.size(), 3u);
   EXPECT_EQ(s.environment.current, 0.0);
-  const CableModel m = BuildModel(s);
-  EXPECT_DOUBLE_EQ(m.CurrentAt(-5.0), 0.6);
-  EXPECT_DOUBLE_EQ(m.CurrentAt(-50.0), 0.2);
-  EXPECT_DOUBLE_EQ(m.CurrentAt(50.0), 1.5);
+  const Model m = BuildModel(s);
+  EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -5.0), 0.6);
+  EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -50.0), 0.2);
+  EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), 50.0), 1.5);
   // One pair: a uniform current written as a table.
-  EXPECT_DOUBLE_EQ(BuildModel(ParseScene(With("current = 0.0", "current = [[3, -0.4]]"), kFile))
-                       .CurrentAt(-20.0),
-                   -0.4);
+  const Model one = BuildModel(ParseScene(With("current = 0.0", "current = [[3, -0.4]]"), kFile));
+  EXPECT_DOUBLE_EQ(CurrentAt(one, SceneWater(one), -20.0), -0.4);
   const std::string key = "environment.current";
   ExpectError(With("current = 0.0", "current = []"), key, {"from 1 to 10000 pairs", "got 0"});
   ExpectError(With("current = 0.0", "current = [[0, 1, 2]]"), key + "[0]", {"[y, speed]"});
@@ -719,16 +719,16 @@ TEST(SceneLoader, Waves) {
   EXPECT_EQ(s.waves.surface_y, 0.0);     // default: the still water level at y = 0
   EXPECT_EQ(s.waves.phase, 0.0);         // degrees
   EXPECT_EQ(s.waves.ramp_rate, 0.5);     // 4 / T
-  const CableModel m = BuildModel(s);
+  const Model m = BuildModel(s);
   ASSERT_TRUE(m.has_waves());
-  EXPECT_DOUBLE_EQ(m.wave.k, WaveNumber(2 * M_PI / 8, 9.80665, 50));
+  EXPECT_DOUBLE_EQ(m.env.wave.k, WaveNumber(2 * M_PI / 8, 9.80665, 50));
   EXPECT_FALSE(BuildModel(ParseScene(kBase, kFile)).has_waves());  // no table, no waves
   // The depth defaults to the still water level's height above the seabed.
   const SceneDef d = ParseScene(kBase + "\n[seabed]\ny = -10\n\n[waves]\nheight = 1\nperiod = 8"
                                         "\nsurface_y = 40\nphase = -90\nramp_rate = 0.1\n", kFile);
   EXPECT_EQ(d.waves.depth, 50.0);
   EXPECT_EQ(d.waves.ramp_rate, 0.1);
-  EXPECT_DOUBLE_EQ(BuildModel(d).wave.spec.phase, -M_PI / 2);
+  EXPECT_DOUBLE_EQ(BuildModel(d).env.wave.spec.phase, -M_PI / 2);
   // motion = "wave": x_rao = [1, 90], y_rao = [1, 0] is the water particle at the surface:
   // heave the surface elevation at the end's x, surge a cos(theta + 90 deg).
   const std::string wave_end =
@@ -738,11 +738,11 @@ TEST(SceneLoader, Waves) {
       "\n[waves]\nheight = 2\nperiod = 8\ndepth = 50\nsurface_y = 35\nphase = 30\n";
   const SceneDef w = ParseScene(wave_end, kFile);
   EXPECT_TRUE(w.end.follows_wave);
-  const CableModel mw = BuildModel(w);
+  const Model mw = BuildModel(w);
   for (double t : {100.0, 103.3, 107.9}) {  // the ramp complete (R = 1 - 5e-16)
-    const Eigen::Vector2d p = mw.end.Position(t) - mw.end.rest();
-    const double theta = mw.wave.k * 80.0 - mw.wave.omega * t + M_PI / 6;
-    EXPECT_NEAR(p.y(), SurfaceAt(mw.wave, 80.0, t) - 35.0, 1e-12);
+    const Vec p = mw.ends.end.Position(t) - mw.ends.end.rest();
+    const double theta = mw.env.wave.k * 80.0 - mw.env.wave.omega * t + M_PI / 6;
+    EXPECT_NEAR(p.y(), SurfaceAt(mw.env.wave, 80.0, t) - 35.0, 1e-12);
     EXPECT_NEAR(p.x(), std::cos(theta + M_PI / 2), 1e-12);
   }
 }

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/cable_model.h"
+#include "core/model.h"
 #include "core/equilibrium.h"
 #include "core/forces.h"
 
@@ -35,12 +35,12 @@ int main() {
   sea.gravity = g;
   sea.fluid_density = rho;
   // Fixed at the origin; the free end starts off to the side, so the solver has work to do.
-  const CableModel m = BuildCableModel({chain}, {clump}, sea, EndMotion::Fixed({0.0, 0.0}),
+  const Model m = MakeModel({chain}, {clump}, sea, EndMotion::Fixed({0.0, 0.0}),
                                        EndMotion::Free({20.0, -40.0}), LinkLaw::kElastic);
   EquilibriumReport report;
-  const CableState state = SolveEquilibrium(m, StraightChord(m), &report);
+  const State state = SolveEquilibrium(m, StraightChord(m), &report);
 
-  ForceWorkspace ws(m.links);
+  ForceWorkspace ws(m.line.links);
   ComputeGeometry(state.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
 

@@ -16,8 +16,8 @@
 // in 20 s at 0.8 of the limit). The stability limit itself is not the cause: it holds in every
 // state (see stability.h).
 //
-// With automatic steps (the second constructor) each step asked of Step() is cut into 2^k equal
-// substeps, k chosen as the run goes: before a substep is taken its positions are predicted
+// With automatic steps (StepOptions::safety_factor > 0) each step asked of Step() is cut into
+// 2^k equal substeps, k chosen as the run goes: before a substep is taken its positions are predicted
 // (they are explicit: x_n + h v_{n+1/2}), and if a link would change between slack and taut with
 // |delta| above kSnapEnergyFraction of that link's own energy (the kinetic energy of its two
 // stations' motion along it, at the start or the end of the step, with their reduced mass, plus
@@ -28,8 +28,7 @@
 // O(h^2): on the whipping chain k settles at 3 (0.1 of the limit), with the energy error of a
 // fixed 0.1 of the limit. A case that never goes slack takes the steps asked, exactly as with
 // fixed steps; the check costs O(s) per step (3 % of a step on case P63).
-#include "core/forces.h"
-#include "core/integrator.h"
+#include "core/data.h"
 
 namespace cablefilm {
 
@@ -42,52 +41,7 @@ constexpr int kQuietSteps = 64;
 // The finest subdivision: 2^kMaxRefinement substeps per step asked.
 constexpr int kMaxRefinement = 24;
 
-class ExplicitIntegrator : public Integrator {
- public:
-  // Fixed steps: Step(dt) takes dt as it is (a dt above the stability limit blows up).
-  explicit ExplicitIntegrator(const CableModel& m);
-  // Automatic steps: Step(dt) takes substeps of at most safety_factor x the stability limit,
-  // refined around slack-taut changes as above.
-  ExplicitIntegrator(const CableModel& m, double safety_factor);
-  std::string name() const override;
-  void Initialize(const CableModel& m, const CableState& state) override;
-  void Step(const CableModel& m, CableState& state, double dt) override;
-  const Eigen::VectorXd& tensions() const override { return ws_.tension; }
-  // steps: substeps taken; rejected: substeps refused and refined before they were taken.
-  IntegratorStats stats() const override {
-    IntegratorStats s = stats_;
-    s.record = snaps_.record();
-    return s;
-  }
-  // The current subdivision k of the steps asked (0 with fixed steps).
-  int refinement() const { return level_; }
-  int finest_refinement() const { return finest_level_; }
-
- private:
-  // The positions x_{n+1} of a step h into next_x_ (prescribed ends exact at t + h), with
-  // v_{n+1/2} and the predicted v_{n+1} of the free stations; true if a link changes between
-  // slack and taut in it.
-  bool Drift(const CableModel& m, const CableState& s, double h);
-  // False if a link changing between slack and taut in the drifted step h has an energy error
-  // above the bounds.
-  bool SnapsResolved(const CableModel& m, const CableState& s, double h) const;
-  // Completes the drifted step: velocities, accelerations at t + h.
-  void Commit(const CableModel& m, CableState& s, double h);
-
-  ForceWorkspace ws_;
-  Eigen::Matrix2Xd a_;       // a_n [m/s^2]
-  Eigen::Matrix2Xd v_pred_;  // predicted v_{n+1} for the drag terms [m/s]
-  Eigen::Matrix2Xd next_x_;  // x_{n+1} of the step being taken [m]
-  Eigen::Matrix2Xd next_v_;  // v_{n+1/2} of the step being taken [m/s]
-  Eigen::VectorXd inertia_;  // m_j + min(m^x_j, m^y_j), the least inertia of station j [kg]
-  IntegratorStats stats_;
-  SnapMonitor snaps_;
-  bool initialized_ = false;
-  bool automatic_ = false;
-  double max_step_ = 0;      // safety factor x the stability limit [s] (automatic steps)
-  int level_ = 0;            // k: steps asked are cut into 2^k substeps
-  int finest_level_ = 0;
-  double quiet_time_ = 0;    // since a link last changed between slack and taut [s]
-};
+// The explicit scheme's step of dt [s] (data.options.safety_factor > 0: automatic substeps).
+void ExplicitStep(const Model& m, Data& d, const Inputs& in, double dt);
 
 }  // namespace cablefilm

@@ -1,10 +1,14 @@
 #pragma once
-// The discrete cable of Polachek et al. (1963): stations j = 0..s carrying lumped masses, joined
-// by weightless links j+1/2 (stored at index j). Built once from a scene; const while it runs.
+// The model of Polachek et al. (1963), const while it runs (MuJoCo's mjModel): the line (its
+// stations j = 0..s carrying lumped masses, joined by weightless links j+1/2 stored at index
+// j), the environment it lies in, and its ends (the boundary). Built once from a scene; what
+// changes while it runs (the state, the schemes' memory) is in Data (data.h), what a control
+// changes (the current, the waves, the ends' motion) in Inputs (inputs.h).
 #include <Eigen/Core>
 #include <vector>
 
 #include "core/end_motion.h"
+#include "core/vec.h"
 #include "core/waves.h"
 
 namespace cablefilm {
@@ -16,20 +20,21 @@ struct CurrentProfile {
   std::vector<double> speed;  // the current there [m/s] along +x
 
   bool empty() const { return y.empty(); }
-  double At(double elevation) const;     // c(y) [m/s]
-  // dc/dy [1/s]: the slope of the piece holding y (the piece above at a point), 0 beyond the
-  // ends.
-  double Slope(double elevation) const;
+  // c(y) [m/s] and dc/dy [1/s] (the slope of the piece holding y, the piece above at a point, 0
+  // beyond the ends), with every speed multiplied by `scale` first (the equilibrium's
+  // continuation in the current: the same arithmetic as a profile of scaled speeds).
+  double At(double elevation, double scale = 1.0) const;
+  double Slope(double elevation, double scale = 1.0) const;
 };
 
 // A flat seabed at elevation y: each station below it gets a normal reaction
 //   N_j = k l_j p_j + clamp(-c_j v_y, -k l_j p_j, k l_j p_j),  p_j = y - y_j > 0 (penetration):
 // a spring on the penetration and a dashpot on the normal velocity, the dashpot's force no
-// larger than the spring's: the reaction never pulls the line down (as MoorDyn's), and it
-// starts from 0 when a falling station touches (a dashpot force c v from the first contact
-// would be a jump that an implicit step cannot land on), so 0 <= N_j <= 2 k l_j p_j. Coulomb
-// friction along x regularised by a velocity, -mu N_j tanh(v_x / v_f). l_j is the station's
-// share of the unstretched line (half of each adjoining link).
+// larger than the spring's: the reaction never pulls the line down, and it starts from 0 when
+// a falling station touches (a dashpot force c v from the first contact would be a jump that an
+// implicit step cannot land on), so 0 <= N_j <= 2 k l_j p_j. Coulomb friction along x
+// regularised by a velocity, -mu N_j tanh(v_x / v_f). l_j is the station's share of the
+// unstretched line (half of each adjoining link).
 struct SeabedSpec {
   bool present = false;
   double y = 0;                  // elevation [m]
@@ -47,8 +52,10 @@ enum class LinkLaw {
   kInextensible,  // rest length kept exactly; tension from the constraint (reference [1])
 };
 
-struct CableModel {
+// The line: what eq. (1) needs per link j+1/2 (size s) and per station j (size s+1).
+struct Line {
   int links = 0;  // s: the number of links; stations are 0..s
+  LinkLaw law = LinkLaw::kElastic;
 
   // Per link j+1/2 (size s).
   Eigen::VectorXd rest_length;    // l_{j+1/2} [m], unstretched
@@ -64,29 +71,23 @@ struct CableModel {
   // Per station j (size s+1).
   Eigen::VectorXd arc_length;     // unstretched arc length from station 0 [m]
   Eigen::VectorXd cable_mass;     // m_j = (mu l)_{j-1/2}/2 + (mu l)_{j+1/2}/2 [kg]
-  Eigen::Matrix2Xd prism_mass;    // (m^x_j, m^y_j) = m*_j + rho (V^x_j, V^y_j) [kg]
+  Points prism_mass;              // (m^x_j, m^y_j) = m*_j + rho (V^x_j, V^y_j) [kg]
   Eigen::VectorXd net_weight;     // W_j + W*_j [N], acting along -y
-  Eigen::Matrix2Xd prism_drag;    // (f^x_j, f^y_j) = rho/2 (C^x S^x, C^y S^y) [kg/m]
+  Points prism_drag;              // (f^x_j, f^y_j) = rho/2 (C^x S^x, C^y S^y) [kg/m]
   std::vector<int> weight_stations;  // stations carrying a prism
 
   std::vector<double> section_boundaries;  // interior section ends, unstretched arc length [m]
 
-  double gravity = 9.80665;       // g [m/s^2]
-  double fluid_density = 0;       // rho [kg/m^3]
-  double current = 0;             // c [m/s] along +x, uniform
-  CurrentProfile current_profile; // added to c: the current at y is c + profile(y) [m/s]
-  SeabedSpec seabed;              // seabed.present: contact on the stations below seabed.y
-  Eigen::VectorXd seabed_stiffness;  // k l_j [N/m] per station (size s+1; empty: no seabed)
-  Eigen::VectorXd seabed_damping;    // c_j [N s/m] per station (size s+1; empty: no seabed)
+  // On a seabed (environment.seabed.present; empty otherwise), per station (size s+1):
+  Eigen::VectorXd seabed_stiffness;  // k l_j [N/m]
+  Eigen::VectorXd seabed_damping;    // c_j [N s/m]
   Eigen::VectorXd seabed_rest_depth; // |W_j| / (k l_j) [m]: the penetration at which the
-                                     // station's net weight rests on the bed (at least 1e-9 m;
-                                     // size s+1; empty: no seabed)
+                                     // station's net weight rests on the bed (at least 1e-9 m)
   Eigen::VectorXd seabed_landing_time;  // sqrt(m_j / (k l_j)) [s]: the time a bed damped at
                                      // least critically takes to stop a landing station
                                      // (without rebound); infinite on a bed damped less, whose
-                                     // rebound is physics (size s+1; empty: no seabed)
-  // Waves (wave.spec.present; waves.h, wave_forces.h): the arrays below are sized only then.
-  Wave wave;
+                                     // rebound is physics
+  // In waves (environment.wave.spec.present; waves.h, wave_forces.h; empty otherwise):
   Eigen::VectorXd station_buoyancy;  // rho g (sigma l / 2 of each link + V*) [N] per station, the
                                      // buoyancy lost above the surface (size s+1)
   Eigen::VectorXd wet_band;          // l_j [m]: the station's share of line (half of each link),
@@ -94,37 +95,48 @@ struct CableModel {
   Eigen::VectorXd link_fluid_mass;   // rho sigma l (1 + k) [kg] per link: Froude-Krylov plus
                                      // the normal added mass e, on the water's normal
                                      // acceleration (Morison's C_M = 1 + k)
-  Eigen::Matrix2Xd prism_added_mass; // rho (V^x, V^y) [kg] per station
-  Eigen::Matrix2Xd prism_fluid_mass; // rho (V* + V^x, V* + V^y) [kg] per station
-  LinkLaw law = LinkLaw::kElastic;
-
-  EndMotion start;                // station 0
-  EndMotion end;                  // station s
+  Points prism_added_mass;           // rho (V^x, V^y) [kg] per station
+  Points prism_fluid_mass;           // rho (V* + V^x, V* + V^y) [kg] per station
 
   int stations() const { return links + 1; }
   double total_length() const { return arc_length[links]; }
+};
+
+// The fluid and the ground the line lies in, as the scene gives them.
+struct Environment {
+  double gravity = 9.80665;       // g [m/s^2]
+  double fluid_density = 0;       // rho [kg/m^3]
+  double current = 0;             // c [m/s] along +x, uniform
+  CurrentProfile current_profile; // added to c: the current at y is c + profile(y) [m/s]
+  SeabedSpec seabed;              // seabed.present: contact on the stations below seabed.y
+  Wave wave;                      // wave.spec.present: regular waves with a free surface
+};
+
+// How the ends move: station 0 (start) and station s (end).
+struct Ends {
+  EndMotion start;
+  EndMotion end;
+};
+
+struct Model {
+  Line line;
+  Environment env;
+  Ends ends;
+
+  int stations() const { return line.stations(); }
   // The first and last station whose motion is computed (free ends included).
-  int first_free() const { return start.prescribed() ? 1 : 0; }
-  int last_free() const { return end.prescribed() ? links - 1 : links; }
-  const EndMotion& end_motion(int j) const { return j == 0 ? start : end; }
-  // The current at elevation y [m/s] and its y-derivative [1/s].
-  double CurrentAt(double y) const {
-    return current_profile.empty() ? current : current + current_profile.At(y);
+  int first_free() const { return ends.start.prescribed() ? 1 : 0; }
+  int last_free() const { return ends.end.prescribed() ? line.links - 1 : line.links; }
+  const EndMotion& end_motion(int j) const { return j == 0 ? ends.start : ends.end; }
+  bool prescribed(int j) const {
+    return (j == 0 && ends.start.prescribed()) || (j == line.links && ends.end.prescribed());
   }
-  double CurrentSlope(double y) const {
-    return current_profile.empty() ? 0.0 : current_profile.Slope(y);
-  }
-  bool has_waves() const { return wave.spec.present; }
-  bool has_current() const;  // anywhere non-zero
-  double max_current() const;  // the largest |c(y)| over all y [m/s]
+  bool has_waves() const { return env.wave.spec.present; }
   // min(m^x_j, m^y_j) [kg] in any state: without the prism's added mass when waves can lift it
   // out of the water.
   double SmallestPrismMass(int j) const {
-    return has_waves() ? (prism_mass.col(j) - prism_added_mass.col(j)).minCoeff()
-                       : prism_mass.col(j).minCoeff();
-  }
-  bool prescribed(int j) const {
-    return (j == 0 && start.prescribed()) || (j == links && end.prescribed());
+    return has_waves() ? (line.prism_mass.col(j) - line.prism_added_mass.col(j)).minCoeff()
+                       : line.prism_mass.col(j).minCoeff();
   }
 };
 
@@ -147,9 +159,9 @@ struct PrismSpec {
   int station = 0;
   double mass = 0;                   // m* [kg]
   double volume = 0;                 // V* [m^3]
-  Eigen::Vector2d added_volume = Eigen::Vector2d::Zero();  // (V^x, V^y) [m^3]
-  Eigen::Vector2d drag_coefficient = Eigen::Vector2d::Zero();  // (C^x, C^y)
-  Eigen::Vector2d drag_area = Eigen::Vector2d::Zero();   // (S^x, S^y) [m^2]
+  Vec added_volume = Vec::Zero();    // (V^x, V^y) [m^3]
+  Vec drag_coefficient = Vec::Zero();  // (C^x, C^y)
+  Vec drag_area = Vec::Zero();       // (S^x, S^y) [m^2]
 };
 
 struct EnvironmentSpec {
@@ -161,14 +173,9 @@ struct EnvironmentSpec {
   WaveSpec waves;              // none unless present
 };
 
-// The model with its current (uniform and profile) multiplied by `factor`: the continuation of
-// the static equilibrium in the current.
-CableModel ScaleCurrent(const CableModel& m, double factor);
-
 // Assembles the per-link and per-station quantities of eq. (1). Sections must be valid
 // (the scene loader checks them); throws Error on a prism at a station that does not exist.
-CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
-                           const std::vector<PrismSpec>& prisms, const EnvironmentSpec& env,
-                           EndMotion start, EndMotion end, LinkLaw law);
+Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<PrismSpec>& prisms,
+                const EnvironmentSpec& env, EndMotion start, EndMotion end, LinkLaw law);
 
 }  // namespace cablefilm

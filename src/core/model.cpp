@@ -1,4 +1,4 @@
-#include "core/cable_model.h"
+#include "core/model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,65 +19,46 @@ int Piece(const std::vector<double>& y, double elevation) {
 
 }  // namespace
 
-double CurrentProfile::At(double elevation) const {
+double CurrentProfile::At(double elevation, double scale) const {
   const int n = static_cast<int>(y.size());
   const int i = Piece(y, elevation);
-  if (i < 0) return speed.front();
-  if (i >= n - 1) return speed.back();
+  if (i < 0) return speed.front() * scale;
+  if (i >= n - 1) return speed.back() * scale;
   const double f = (elevation - y[i]) / (y[i + 1] - y[i]);
-  return speed[i] + f * (speed[i + 1] - speed[i]);
+  const double a = speed[i] * scale, b = speed[i + 1] * scale;
+  return a + f * (b - a);
 }
 
-double CurrentProfile::Slope(double elevation) const {
+double CurrentProfile::Slope(double elevation, double scale) const {
   const int n = static_cast<int>(y.size());
   const int i = Piece(y, elevation);
   if (i < 0 || i >= n - 1) return 0.0;
-  return (speed[i + 1] - speed[i]) / (y[i + 1] - y[i]);
+  return (speed[i + 1] * scale - speed[i] * scale) / (y[i + 1] - y[i]);
 }
 
-bool CableModel::has_current() const {
-  if (current != 0 && current_profile.empty()) return true;
-  for (double c : current_profile.speed)
-    if (current + c != 0) return true;
-  return false;
-}
-
-double CableModel::max_current() const {
-  // c + profile(y) is piecewise linear in y: its extremes are at the points.
-  double c = current_profile.empty() ? std::abs(current) : 0.0;
-  for (double v : current_profile.speed) c = std::max(c, std::abs(current + v));
-  return c;
-}
-
-CableModel ScaleCurrent(const CableModel& m, double factor) {
-  CableModel out = m;
-  out.current = m.current * factor;
-  for (double& v : out.current_profile.speed) v *= factor;
-  return out;
-}
-
-CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
-                           const std::vector<PrismSpec>& prisms, const EnvironmentSpec& env,
-                           EndMotion start, EndMotion end, LinkLaw law) {
-  CableModel m;
+Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<PrismSpec>& prisms,
+                const EnvironmentSpec& env, EndMotion start, EndMotion end, LinkLaw law) {
+  Model model;
+  Line& m = model.line;
+  Environment& e = model.env;
   int s = 0;
   for (const SectionSpec& sec : sections) s += sec.segments;
   if (s < 1) throw Error("the cable has no links");
   m.links = s;
-  m.gravity = env.gravity;
-  m.fluid_density = env.fluid_density;
-  m.current = env.current;
-  m.current_profile = env.current_profile;
-  if (m.current_profile.y.size() != m.current_profile.speed.size())
-    throw Error("the current profile has " + std::to_string(m.current_profile.y.size()) +
-                " elevations but " + std::to_string(m.current_profile.speed.size()) + " speeds");
-  for (size_t i = 1; i < m.current_profile.y.size(); ++i)
-    if (!(m.current_profile.y[i] > m.current_profile.y[i - 1]))
+  e.gravity = env.gravity;
+  e.fluid_density = env.fluid_density;
+  e.current = env.current;
+  e.current_profile = env.current_profile;
+  if (e.current_profile.y.size() != e.current_profile.speed.size())
+    throw Error("the current profile has " + std::to_string(e.current_profile.y.size()) +
+                " elevations but " + std::to_string(e.current_profile.speed.size()) + " speeds");
+  for (size_t i = 1; i < e.current_profile.y.size(); ++i)
+    if (!(e.current_profile.y[i] > e.current_profile.y[i - 1]))
       throw Error("the current profile's elevations must increase strictly");
-  m.seabed = env.seabed;
+  e.seabed = env.seabed;
   m.law = law;
-  m.start = std::move(start);
-  m.end = std::move(end);
+  model.ends.start = std::move(start);
+  model.ends.end = std::move(end);
 
   const double rho = env.fluid_density, g = env.gravity;
   m.rest_length.resize(s);
@@ -117,13 +98,13 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
     m.net_weight[i] += 0.5 * m.link_net_weight[i];
     m.net_weight[i + 1] += 0.5 * m.link_net_weight[i];
   }
-  m.prism_mass = Eigen::Matrix2Xd::Zero(2, s + 1);
-  m.prism_drag = Eigen::Matrix2Xd::Zero(2, s + 1);
+  m.prism_mass = Points::Zero(kDim, s + 1);
+  m.prism_drag = Points::Zero(kDim, s + 1);
   for (const PrismSpec& p : prisms) {
     if (p.station < 0 || p.station > s)
       throw Error("weight at station " + std::to_string(p.station) + " is off the cable (0.." +
                   std::to_string(s) + ")");
-    m.prism_mass.col(p.station) += Eigen::Vector2d::Constant(p.mass) + rho * p.added_volume;
+    m.prism_mass.col(p.station) += Vec::Constant(p.mass) + rho * p.added_volume;
     m.prism_drag.col(p.station) += 0.5 * rho * p.drag_coefficient.cwiseProduct(p.drag_area);
     m.net_weight[p.station] += (p.mass - rho * p.volume) * g;
     m.weight_stations.push_back(p.station);
@@ -140,7 +121,7 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
       m.axial_damping[j] = 2.0 * sec.axial_damping_ratio * std::sqrt(k * ma * mb / (ma + mb));
     }
   }
-  if (m.seabed.present) {
+  if (e.seabed.present) {
     // Each station's share of the line, half of each adjoining link, carries the bed's
     // stiffness and damping per unit length. The default damping is critical for the station
     // on its spring with its inertia across a line lying flat (its mass, the prism's m^y and
@@ -156,10 +137,10 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
         share += 0.5 * m.rest_length[k];
         added += 0.5 * m.virtual_mass[k];
       }
-      m.seabed_stiffness[i] = m.seabed.stiffness * share;
+      m.seabed_stiffness[i] = e.seabed.stiffness * share;
       const double mass = m.cable_mass[i] + m.prism_mass(1, i) + added;
-      m.seabed_damping[i] = m.seabed.damping >= 0
-                                ? m.seabed.damping * share
+      m.seabed_damping[i] = e.seabed.damping >= 0
+                                ? e.seabed.damping * share
                                 : 2.0 * std::sqrt(m.seabed_stiffness[i] * mass);
       m.seabed_rest_depth[i] = std::max(std::abs(m.net_weight[i]) / m.seabed_stiffness[i], 1e-9);
       const bool critical = m.seabed_damping[i] >= 2.0 * std::sqrt(m.seabed_stiffness[i] * mass);
@@ -168,7 +149,7 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
     }
   }
   if (env.waves.present) {
-    m.wave = MakeWave(env.waves, g);
+    e.wave = MakeWave(env.waves, g);
     m.station_buoyancy = Eigen::VectorXd::Zero(s + 1);
     m.wet_band = Eigen::VectorXd::Zero(s + 1);
     m.link_fluid_mass.resize(s);
@@ -183,16 +164,16 @@ CableModel BuildCableModel(const std::vector<SectionSpec>& sections,
         }
       }
     }
-    m.prism_added_mass = Eigen::Matrix2Xd::Zero(2, s + 1);
-    m.prism_fluid_mass = Eigen::Matrix2Xd::Zero(2, s + 1);
+    m.prism_added_mass = Points::Zero(kDim, s + 1);
+    m.prism_fluid_mass = Points::Zero(kDim, s + 1);
     for (const PrismSpec& p : prisms) {
       m.prism_added_mass.col(p.station) += rho * p.added_volume;
       m.prism_fluid_mass.col(p.station) +=
-          rho * (p.added_volume + Eigen::Vector2d::Constant(p.volume));
+          rho * (p.added_volume + Vec::Constant(p.volume));
       m.station_buoyancy[p.station] += rho * p.volume * g;
     }
   }
-  return m;
+  return model;
 }
 
 }  // namespace cablefilm

@@ -1,0 +1,113 @@
+#pragma once
+// What changes while a model runs (MuJoCo's mjData): the state, the tensions of the state, the
+// memory the time-stepping scheme carries from step to step, the water of the last step, and
+// the statistics. A complete checkpoint: a copy of a Data, stepped with the same model and
+// inputs, goes on exactly as the original would (a restart, a film frame, a continuation).
+// Its scratch memory is sized once (MakeData), so that stepping allocates nothing.
+#include <Eigen/Core>
+#include <string>
+
+#include "core/block_tridiagonal.h"
+#include "core/constraints.h"
+#include "core/error.h"
+#include "core/forces.h"
+#include "core/inputs.h"
+#include "core/model.h"
+#include "core/snap_monitor.h"
+#include "core/vec.h"
+
+namespace cablefilm {
+
+enum class Scheme {
+  kExplicit,      // central differences (velocity Verlet form), second order, below the limit
+  kImplicit,      // generalized-alpha, second order, unconditionally stable, Newton per step
+  kInextensible,  // constraint tensions, links at rest length (reference [1] of the paper)
+};
+
+// How the scheme steps (a scene's [simulation]; the run layer's time grid chooses them).
+struct StepOptions {
+  Scheme scheme = Scheme::kImplicit;
+  double rho_inf = 0.5;        // implicit: spectral radius at infinite frequency, [0, 1]
+  double tolerance = 0;        // implicit, inextensible: local position error per step [m];
+                               // 0: the steps asked of Step() (inextensible: split below the
+                               // transverse-wave limit)
+  double safety_factor = 0;    // explicit: > 0, automatic substeps of at most this fraction of
+                               // the stability limit, refined where links snap
+                               // (explicit_step.h); 0: the steps asked, as they are
+};
+
+struct State {
+  double t = 0;  // time [s]
+  Points x;      // station positions x_j [m] (kDim x s+1)
+  Points v;      // station velocities [m/s] (kDim x s+1)
+};
+
+struct StepStats {
+  long steps = 0;              // steps taken (accepted)
+  long rejected = 0;           // steps rejected and retried shorter (explicit: refined)
+  long newton_iterations = 0;  // in all (the implicit scheme)
+  int finest_refinement = 0;   // explicit, automatic: the finest k of 2^k substeps a step
+  StepRecord record;           // step range, and links snapping taut (elastic schemes)
+};
+
+// Thrown when the solution stops being finite or physically possible.
+class BlowUpError : public Error {
+ public:
+  BlowUpError(const std::string& what, double t, int station)
+      : Error(what), time(t), station(station) {}
+  double time;   // [s]
+  int station;   // the first station found broken
+};
+
+// Scratch memory of the schemes: trial values of a step, the Newton system, the constraint
+// solver's; no meaning between steps.
+struct Scratch {
+  Points x, v, a, abar;     // a trial step's x_{n+1}, v_{n+1} (explicit: v_{n+1/2}), a_{n+1},
+                            // abar_{n+1}
+  Points v_pred;            // explicit, inextensible: the predicted v_{n+1} of the drag [m/s]
+  ForceWorkspace trial;     // inextensible: the forces of the trial step
+  BlockTridiagonal system;  // implicit: Newton's matrix; its right-hand side
+  ConstraintSolver constraints;  // inextensible: the constraints' tridiagonal system
+  // Constants of the model and the options, computed once:
+  Eigen::VectorXd least_inertia;  // explicit: m_j + min(m^x_j, m^y_j), station j's least
+                                  // inertia in any direction [kg]
+  double max_substep = 0;         // explicit, automatic: safety x the stability limit [s]
+  double newton_tolerance = 0;    // implicit: Newton has converged when |dx| is below it [m]
+};
+
+struct Data {
+  StepOptions options;
+  State state;
+  ForceWorkspace forces;  // of the state: link geometry, tensions T_{j+1/2} [N], station forces
+  Water water;            // the water of the last step (the waves' phase carries over)
+  // The scheme's memory.
+  Points a;               // a_n [m/s^2]
+  Points abar;            // implicit: generalized-alpha's pseudo-acceleration abar_n [m/s^2]
+  double proposed_step = 0;  // adaptive schemes: the next step to try [s]
+  int refinement = 0;     // explicit, automatic: k, steps asked are cut into 2^k substeps
+  double quiet_time = 0;  // explicit, automatic: since a link last went slack or taut [s]
+  SnapMonitor snaps;      // which links are taut; the steps' record
+  StepStats stats;
+  Scratch scratch;
+
+  const Eigen::VectorXd& tension() const { return forces.tension; }  // [N]
+  StepStats step_stats() const {
+    StepStats s = stats;
+    s.record = snaps.record();
+    return s;
+  }
+};
+
+// The Data of `state` under `options`: its accelerations and tensions computed (in the water of
+// the inputs at state.t), the scratch sized. Throws BlowUpError if the state is not finite or
+// a link is stretched beyond any physical meaning.
+Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, const State& state);
+
+// The scheme's name, as a run reports it ("implicit (generalized-alpha, rho_inf = 0.5)").
+std::string SchemeName(const Model& m, const StepOptions& options);
+
+// Throws BlowUpError naming the time and the first station with a non-finite position or
+// velocity, or the first link stretched beyond twice its rest length.
+void CheckStateSane(const Model& m, const State& state, const Eigen::VectorXd& length);
+
+}  // namespace cablefilm

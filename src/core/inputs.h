@@ -1,0 +1,56 @@
+#pragma once
+// What changes while a model runs without the model changing (MuJoCo's controls): the current,
+// the waves' height and period, the driven ends' amplitude and clock. A run takes the scene's
+// own (SceneInputs: every schedule constant); the live view ramps them along SmoothSchedule,
+// so that nothing a control changes jumps; the static equilibrium's continuation raises the
+// current through current_scale. Step() evaluates them into the Water of the step (the current
+// and the wave it holds over the step, at its middle) and the ends' motion at every stage.
+#include "core/cancel.h"
+#include "core/model.h"
+#include "core/smooth_schedule.h"
+
+namespace cablefilm {
+
+struct Inputs {
+  SmoothSchedule current{0};       // c [m/s], the uniform part along +x (a profile adds to it)
+  double current_scale = 1;        // times the whole current, uniform and profile
+  SmoothSchedule wave_height{0};   // H [m] (with waves)
+  SmoothSchedule wave_period{0};   // T [s] (with waves)
+  double wave_phase_x = 0;         // x [m] where a change of period keeps the wave's phase
+  SmoothSchedule end_scale{1};     // the driven ends' orbit (or table) amplitude, times the scene's
+  SmoothSchedule end_clock{1};     // the rate of their motion's clock, times real time
+  const CancelFlag* stop = nullptr;  // polled within a step (each substep, each Newton step):
+                                     // when raised, Step throws CancelledError
+};
+
+// The model's own inputs: its current and waves, its ends as the scene moves them.
+Inputs SceneInputs(const Model& m);
+
+// The water over a step: the current and the waves it holds.
+struct Water {
+  double current = 0;        // c [m/s], uniform part
+  double current_scale = 1;  // times the whole current (Inputs::current_scale)
+  Wave wave;                 // the waves (wave.spec.present as the model's)
+};
+
+// The model's water, as the scene gives it (scaled by `current_scale`).
+Water SceneWater(const Model& m, double current_scale = 1.0);
+// The water of the inputs at time t [s], from the water of the step before (`water`): the
+// current and the waves' height at t; a new period with the phase kept at wave_phase_x (where a
+// ship would see the wave change), so the waves' phase carries over; the height held at
+// Miche's breaking limit of the period at t. Exactly the model's water while the inputs are.
+void UpdateWater(const Model& m, const Inputs& in, double t, Water* water);
+
+// The current at elevation y [m/s] and its y-derivative [1/s].
+double CurrentAt(const Model& m, const Water& w, double y);
+double CurrentSlope(const Model& m, const Water& w, double y);
+bool HasCurrent(const Model& m, const Water& w);    // anywhere non-zero
+double MaxCurrent(const Model& m, const Water& w);  // the largest |c(y)| over all y [m/s]
+
+// A prescribed end's position [m], velocity [m/s] and acceleration [m/s^2] at t [s] (j = 0 or
+// s), as the inputs move it.
+Vec EndPosition(const Model& m, const Inputs& in, int j, double t);
+Vec EndVelocity(const Model& m, const Inputs& in, int j, double t);
+Vec EndAcceleration(const Model& m, const Inputs& in, int j, double t);
+
+}  // namespace cablefilm

@@ -1,0 +1,17 @@
+#pragma once
+// A run's initial state, as its scene says: the static equilibrium with the ends at rest (the
+// paper's) or the straight chord at rest; and the Data a run starts from.
+#include "core/cancel.h"
+#include "core/data.h"
+#include "core/equilibrium.h"
+#include "run/time_grid.h"
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+// The scene's initial state: static equilibrium (the report is filled) or the straight chord.
+// Throws Error when the equilibrium is not found, CancelledError when `cancel` is raised.
+State MakeInitialState(const SceneDef& scene, const Model& m, EquilibriumReport* report,
+                       const CancelFlag* cancel = nullptr);
+
+}  // namespace cablefilm

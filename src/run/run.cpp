@@ -1,0 +1,67 @@
+#include "run/run.h"
+
+#include <chrono>
+
+#include "run/initial_state.h"
+
+namespace cablefilm {
+namespace {
+
+// The run's own record of every row.
+class RecordSink : public RowSink {
+ public:
+  explicit RecordSink(Run& run) : run_(run) {}
+  bool Row(const Data& d) override {
+    const Eigen::VectorXd& T = d.tension();
+    run_.extent.Add(d.state, T);
+    run_.row_max.Append(d.state.t, T.maxCoeff());
+    run_.summary.AddRow(d.state.t, T);
+    return true;
+  }
+
+ private:
+  Run& run_;
+};
+
+}  // namespace
+
+const char* LawName(LinkLaw law) {
+  return law == LinkLaw::kElastic ? "elastic" : "inextensible";
+}
+
+Run PrepareRun(const SceneDef& scene, Model model, std::string label, const CancelFlag* stop) {
+  Run run{std::move(label), std::move(model), {}, {}, {}, 0, {}, RunExtent(), MaxTensionLog(), {}};
+  const Model& m = run.model;
+  run.grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
+  run.inputs = SceneInputs(m);
+  run.inputs.stop = stop;
+  const auto t0 = std::chrono::steady_clock::now();
+  const State initial = MakeInitialState(scene, m, &run.equilibrium, stop);
+  run.equilibrium_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  run.initial = MakeData(m, run.inputs, run.grid.options, initial);
+  run.extent = RunExtent(initial);
+  run.summary.scheme = SchemeName(m, run.grid.options);
+  run.summary.tolerance = run.grid.automatic ? run.grid.options.tolerance : 0.0;
+  return run;
+}
+
+void ExecuteRun(Run& run, const std::vector<RowSink*>& sinks) {
+  RecordSink record(run);
+  std::vector<RowSink*> all{&record};
+  all.insert(all.end(), sinks.begin(), sinks.end());
+  Data d = run.initial;
+  const auto t0 = std::chrono::steady_clock::now();
+  const RunEnd end = Drive(run.model, d, run.inputs, run.grid, all);
+  RunSummary& s = run.summary;
+  s.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  s.duration = d.state.t;
+  s.stats = d.step_stats();
+  s.completed = end.completed;
+  if (!end.failure.empty())
+    s.failure = end.failure + " (" + s.scheme + ", time step " + std::to_string(run.grid.dt) +
+                " s)";
+  s.warnings = TrustWarnings(run.model, s.stats);
+}
+
+}  // namespace cablefilm

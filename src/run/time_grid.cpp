@@ -1,0 +1,38 @@
+#include "run/time_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cablefilm {
+
+TimeGrid ChooseTimeGrid(const Model& m, const SimulationDef& sim, double interval) {
+  TimeGrid g;
+  StepOptions& o = g.options;
+  o.scheme = sim.integrator == IntegratorChoice::kExplicit ? Scheme::kExplicit : Scheme::kImplicit;
+  if (m.line.law == LinkLaw::kInextensible) o.scheme = Scheme::kInextensible;
+  o.rho_inf = sim.rho_infinity;
+  g.interval = interval;
+  g.limit = ComputeStabilityLimit(m);
+  g.safety_factor = sim.safety_factor;
+  g.automatic = sim.time_step <= 0;
+  double wanted = sim.time_step;
+  if (g.automatic && o.scheme == Scheme::kExplicit) {
+    // Substeps of at most safety x the limit, refined where a link goes slack or snaps taut
+    // (see core/explicit_step.h).
+    wanted = sim.safety_factor * g.limit.time_step;
+    o.safety_factor = sim.safety_factor;
+  }
+  if (g.automatic && o.scheme != Scheme::kExplicit) {
+    // The largest step the output interval; the error control takes smaller ones as needed
+    // (the inextensible one also below its tension-dependent transverse-wave limit).
+    wanted = interval;
+    o.tolerance =
+        sim.tolerance > 0 ? sim.tolerance : kDefaultRelativeTolerance * m.line.total_length();
+  }
+  g.steps_per_output = std::max(1, static_cast<int>(std::ceil(interval / wanted - 1e-9)));
+  g.dt = interval / g.steps_per_output;
+  g.outputs = static_cast<long>(std::floor(sim.duration / interval + 1e-9));
+  return g;
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,37 @@
+#pragma once
+// The time grid of a run: its output rows (every `interval`, up to the scene's duration), the
+// step asked of the scheme between them, and the scheme's options (core/data.h).
+#include "core/data.h"
+#include "core/model.h"
+#include "core/stability.h"
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+// The implicit and the inextensible schemes' local position error per step when time_step =
+// "auto" and no tolerance is given, as a fraction of the cable's length: case P63's peak tension
+// is then within 0.1 % of the converged value at 60 to 6000 links (see bench_integrators); a
+// 5 m inextensible chain released from a horizontal line is within 0.1 mm of the exact N-link
+// pendulum over its first second (see tests/core/inextensible_test.cpp).
+constexpr double kDefaultRelativeTolerance = 1e-6;
+
+struct TimeGrid {
+  StepOptions options;       // the scheme and its settings
+  double interval = 0;       // between outputs [s]
+  double dt = 0;             // the step asked of the scheme [s], interval / steps_per_output
+  int steps_per_output = 1;
+  long outputs = 0;          // outputs after t = 0; the run ends at outputs * interval
+  bool automatic = true;     // dt chosen by the program (else the scene's time_step)
+  StabilityLimit limit;      // of the explicit scheme
+  double safety_factor = 0.8;
+  double end() const { return outputs * interval; }  // [s]
+};
+
+// The largest step not above the requested one that divides the interval. "auto" is, for the
+// explicit scheme, the safety factor times its stability limit (which its integrator refines
+// where links go slack or snap taut); for the implicit and the inextensible schemes an adaptive
+// step below the output interval, chosen by a local error estimate (independent of the
+// stations; the inextensible one also below its transverse-wave limit).
+TimeGrid ChooseTimeGrid(const Model& m, const SimulationDef& sim, double interval);
+
+}  // namespace cablefilm
