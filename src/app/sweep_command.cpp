@@ -10,9 +10,7 @@
 #include <memory>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <string>
-#include <toml++/toml.h>
 #include <vector>
 
 #include <fcntl.h>
@@ -22,26 +20,23 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "io/result_files.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/result_files.h"
+#include "io/run_report_file.h"
+#include "run/sweep.h"
 #include "scene/build_model.h"
+#include "scene/scene_edit.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
-
-const char* const kSweepResultColumns[] = {
-    "status",      "message",          "peak_tension",     "peak_time",
-    "peak_link",   "min_tension",      "min_tension_time", "min_tension_link",
-    "snaps",       "peak_converged",   nullptr};
-
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kMaxJobs = 1024;
+constexpr int kMaxJobs = kMaxSweepJobs;
 
 // The sweep's signals: the first stops the cases (each keeps what it has, as `run` does) and
 // leaves the finished ones; a second kills the running cases at once.
@@ -63,53 +58,8 @@ int CoreCount() {
   return std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
 }
 
-// "environment.current = 0.5, ends.end.period = 8"
-std::string DescribeValues(const SweepCases& cases, std::size_t i) {
-  std::string text;
-  for (std::size_t k = 0; k < cases.keys.size(); ++k)
-    text += (k ? ", " : "") + EscapeText(cases.keys[k]) + " = " + EscapeText(cases.rows[i][k]);
-  return text;
-}
-
-// A number as printed in sweep.csv: 10 significant digits, as run_report.toml has them.
-std::string Num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-// The columns from run_report.toml: kSweepResultColumns after status and message.
-constexpr std::size_t kReportColumns = 8;
-constexpr std::size_t kConvergedColumn = 7;  // peak_converged
-
-struct CaseRow {
-  std::string status = "not run";
-  std::string message;
-  std::vector<std::string> results;  // kReportColumns cells; empty: not finished
-};
-
-// The results of a finished run, from its run_report.toml; false when it has none.
-bool ReadRunReport(const fs::path& path, CaseRow* row) {
-  toml::table report;
-  try {
-    report = toml::parse_file(path.string());
-  } catch (const std::exception&) {
-    return false;
-  }
-  row->results.clear();
-  for (const char* key : {"peak_tension", "peak_time", "peak_link", "min_tension",
-                          "min_tension_time", "min_tension_link", "snaps", "peak_converged"}) {
-    const toml::node* n = report.get(key);
-    std::string cell;
-    if (n && n->is_boolean()) cell = n->as_boolean()->get() ? "true" : "false";
-    else if (n && n->is_integer() && std::string(key).find("link") != std::string::npos)
-      cell = std::to_string(n->as_integer()->get());
-    else if (n && n->is_integer() && std::string(key) == "snaps")
-      cell = std::to_string(n->as_integer()->get());
-    else if (n && n->is_number()) cell = Num(n->value<double>().value());
-    row->results.push_back(cell);
-  }
-  return true;
+const char* SignalName(int sig) {
+  return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "signal";
 }
 
 // The last line the run printed about what stopped it ("cablefilm: error: ..."), without the
@@ -147,18 +97,11 @@ std::vector<std::string> ChildRunOptions(const RunOptions& o) {
 }
 
 // What `check` refuses of a case, refused before anything runs: the loader (every key known,
-// every value in range), the built model's limits, and the film's frame count when on.
+// every value in range), the built model's limits, and the film's settings when on.
 void ValidateCase(const std::string& text, const std::string& path, const RunOptions& o) {
   const SceneDef scene = ParseScene(text, path);
   CheckModelLimits(scene, BuildModel(scene));
-  if (o.film != 1) return;
-  const double fps = o.fps > 0 ? o.fps : scene.film.fps;
-  const double speed = o.speed > 0 ? o.speed : scene.film.speed;
-  const std::string problem =
-      FilmFramesProblem(RunSpan(scene.simulation.duration, scene.output.interval), fps, speed);
-  if (!problem.empty())
-    throw Error(EscapeText(path) + ": " +
-                (o.speed > 0 ? "--speed" : o.fps > 0 ? "--fps" : "film.speed") + ": " + problem);
+  if (o.film == 1) ResolveFilm(scene, o, kCommandLineNames);
 }
 
 // Case folders of an earlier, larger sweep: emptied of what a sweep writes and removed, so that
@@ -180,101 +123,71 @@ void RemoveStaleCases(const fs::path& dir, const std::set<std::string>& keep) {
   }
 }
 
-class Sweep {
+// The cases as child processes: each `cablefilm run` of its folder's scene.toml, in a process
+// group of its own, its output in the folder's run.log; its row from its run_report.toml (or
+// from how it ended).
+class ProcessExecutor : public CaseExecutor {
  public:
-  Sweep(std::string scene_path, const SweepOptions& o)
-      : scene_path_(std::move(scene_path)), options_(o) {}
+  ProcessExecutor(const fs::path& dir, std::size_t cases, const RunOptions& options,
+                  const sigset_t& original_mask, const sigset_t& waiting_mask)
+      : dir_(dir), cases_(cases), options_(options), original_mask_(original_mask),
+        waiting_mask_(waiting_mask), children_(std::make_unique<std::atomic<pid_t>[]>(kMaxJobs)) {
+    for (int k = 0; k < kMaxJobs; ++k) children_[k] = 0;
+    g_children = children_.get();
+  }
+  ~ProcessExecutor() override { g_children = nullptr; }
 
-  int Run() {
-    const std::string text = ReadSceneFile(scene_path_);
-    SweepCases listed;
-    if (!options_.cases_csv.empty()) listed = ReadCasesCsv(options_.cases_csv);
-    cases_ = ExpandCases(listed, options_.sets);
-    const std::size_t n = cases_.rows.size();
-    dir_ = options_.run.out_dir.empty()
-               ? fs::path("output") / (fs::path(scene_path_).stem().string() + "_sweep")
-               : fs::path(options_.run.out_dir);
+  void Start(std::size_t index) override {
+    int slot = 0;
+    while (slot < kMaxJobs && children_[slot] != 0) ++slot;
+    if (slot == kMaxJobs) throw Error("the sweep runs too many cases at once");
+    const pid_t pid = Launch(index);
+    children_[slot] = pid;
+    running_.push_back({pid, index, slot, std::chrono::steady_clock::now()});
+  }
 
-    // Every case's scene, checked as `check` would before anything is written or run.
-    std::vector<std::string> scenes(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::string path = (dir_ / CaseFolderName(i, n) / "scene.toml").string();
-      const std::string comment =
-          "# cablefilm sweep, case " + std::to_string(i) + " of " + std::to_string(n) + ": " +
-          EscapeText(scene_path_) + " with " + DescribeValues(cases_, i) + "\n\n";
-      try {
-        scenes[i] = EditSceneText(text, scene_path_, cases_.keys, cases_.rows[i], comment);
-        ValidateCase(scenes[i], path, options_.run);
-      } catch (const Error& e) {
-        throw Error(EscapeText(scene_path_) + ": case " + std::to_string(i) + " (" +
-                    DescribeValues(cases_, i) + ") is refused, so no case was run: " + e.what());
+  bool WaitAny(std::chrono::milliseconds timeout, std::size_t* index,
+               CaseOutcome* outcome) override {
+    for (int pass = 0; pass < 2; ++pass) {
+      for (std::size_t k = 0; k < running_.size(); ++k) {
+        int status = 0;
+        const pid_t r = ::waitpid(running_[k].pid, &status, WNOHANG);
+        if (r == 0 || (r < 0 && errno == EINTR)) continue;
+        *index = running_[k].index;
+        *outcome = Finish(*index, r < 0 ? 0x7f00 : status);
+        outcome->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                         running_[k].start).count();
+        children_[running_[k].slot] = 0;
+        running_.erase(running_.begin() + static_cast<std::ptrdiff_t>(k));
+        return true;
+      }
+      if (pass == 0) {  // wakes on SIGCHLD, SIGINT, SIGTERM
+        const timespec t{static_cast<time_t>(timeout.count() / 1000),
+                         static_cast<long>(timeout.count() % 1000) * 1000000L};
+        ::ppoll(nullptr, 0, &t, &waiting_mask_);
       }
     }
+    return false;
+  }
 
-    std::error_code ec;
-    fs::create_directories(dir_, ec);
-    if (ec)
-      throw Error("cannot create the sweep folder " + EscapeText(dir_.string()) + ": " +
-                  ec.message());
-    std::set<std::string> names;
-    for (std::size_t i = 0; i < n; ++i) names.insert(CaseFolderName(i, n));
-    RemoveStaleCases(dir_, names);
-    for (std::size_t i = 0; i < n; ++i) {
-      const fs::path folder = dir_ / CaseFolderName(i, n);
-      fs::create_directories(folder, ec);
-      if (ec)
-        throw Error("cannot create the case folder " + EscapeText(folder.string()) + ": " +
-                    ec.message());
-      RemoveEarlierResults(folder.string());  // no result of an earlier sweep beside the scene
-      fs::remove(folder / "run.log", ec);
-      AtomicFile scene((folder / "scene.toml").string());
-      std::fputs(scenes[i].c_str(), scene.stream());
-      scene.Commit();
-    }
-    rows_.assign(n, CaseRow());
-    WriteSummary();
-    std::printf("sweep: %zu case%s of %s (%s) in %s\n", n, n == 1 ? "" : "s",
-                EscapeText(scene_path_).c_str(), KeysText().c_str(),
-                EscapeText(dir_.string()).c_str());
-    if (options_.prepare) {
-      std::printf("prepared: each case folder holds its scene.toml; nothing run\nwrote %s\n",
-                  EscapeText((dir_ / "sweep.csv").string()).c_str());
-      return 0;
-    }
-    return RunCases();
+  void StopAll() override {
+    stopping_ = true;
+    for (const Child& c : running_) ::kill(c.pid, g_signal != 0 ? g_signal.load() : SIGTERM);
   }
 
  private:
-  std::string KeysText() const {
-    std::string text;
-    for (const std::string& k : cases_.keys) text += (text.empty() ? "" : ", ") + EscapeText(k);
-    return text;
-  }
-
-  void WriteSummary() {
-    AtomicFile file((dir_ / "sweep.csv").string());
-    std::FILE* f = file.stream();
-    std::string header = "case,folder";
-    for (const std::string& k : cases_.keys) header += "," + CsvCell(k);
-    for (int c = 0; kSweepResultColumns[c]; ++c) header += std::string(",") + kSweepResultColumns[c];
-    std::fprintf(f, "%s\n", header.c_str());
-    const std::size_t n = rows_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      std::string line = std::to_string(i) + "," + CaseFolderName(i, n);
-      for (const std::string& v : cases_.rows[i]) line += "," + CsvCell(v);
-      line += "," + rows_[i].status + "," + CsvCell(rows_[i].message);
-      for (std::size_t c = 0; c < kReportColumns; ++c)
-        line += "," + (c < rows_[i].results.size() ? CsvCell(rows_[i].results[c]) : "");
-      std::fprintf(f, "%s\n", line.c_str());
-    }
-    file.Commit();
-  }
+  struct Child {
+    pid_t pid;
+    std::size_t index;
+    int slot;
+    std::chrono::steady_clock::time_point start;
+  };
 
   pid_t Launch(std::size_t i) {
-    const fs::path folder = dir_ / CaseFolderName(i, rows_.size());
+    const fs::path folder = dir_ / CaseFolderName(i, cases_);
     std::vector<std::string> args = {"cablefilm", "run", (folder / "scene.toml").string(),
                                      "--out", folder.string()};
-    for (const std::string& a : ChildRunOptions(options_.run)) args.push_back(a);
+    for (const std::string& a : ChildRunOptions(options_)) args.push_back(a);
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -305,187 +218,237 @@ class Sweep {
     ::close(out);
     if (in >= 0) ::close(in);
     if (pid < 0) throw Error(std::string("cannot start a case (fork): ") + std::strerror(fork_errno));
-    rows_[i].status = "running";
     return pid;
   }
 
-  // The row of case i from how its process ended.
-  void Finish(std::size_t i, int wait_status, bool stopped) {
-    const fs::path folder = dir_ / CaseFolderName(i, rows_.size());
-    CaseRow& row = rows_[i];
-    row.results.clear();
-    row.message.clear();
+  // The outcome of case i from how its process ended.
+  CaseOutcome Finish(std::size_t i, int wait_status) const {
+    const fs::path folder = dir_ / CaseFolderName(i, cases_);
     std::error_code ec;
     const int code = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
-    if (code == 0 && ReadRunReport(folder / "run_report.toml", &row)) {
-      row.status = "ok";
-      if (row.results.size() == kReportColumns && row.results[kConvergedColumn] == "false")
-        row.message = "the peak tension is not converged (see run_report.toml)";
-      return;
-    }
-    if (stopped) {
-      row.status = "interrupted";
-      row.message = std::string("stopped by the sweep's ") + sigabbrev(g_signal.load()) +
-                    "; its rows so far are in timeseries.partial.csv";
-      return;
+    RunSummary summary;
+    if (code == 0 && ReadRunReport((folder / "run_report.toml").string(), &summary))
+      return OutcomeOf(summary, false);
+    CaseOutcome o;
+    const bool partial = fs::exists(folder / "timeseries.partial.csv", ec);
+    if (stopping_) {
+      o.status = "interrupted";
+      o.message = std::string("stopped by the sweep's ") + SignalName(g_signal.load()) +
+                  (partial ? "; its rows so far are in timeseries.partial.csv"
+                           : " before its first row");
+      return o;
     }
     const std::string said = LastMessage(folder / "run.log");
-    if (code == 1 && fs::exists(folder / "timeseries.partial.csv", ec)) {
-      row.status = "blow-up";
-      row.message = said;
-      return;
+    if (code == 1 && partial) {
+      o.status = "blow-up";
+      o.message = said;
+      return o;
     }
-    row.status = "error";
-    if (!said.empty()) row.message = said;
-    else if (code == 0) row.message = "no run_report.toml";
-    else if (code > 0) row.message = "exit status " + std::to_string(code);
+    o.status = "error";
+    if (!said.empty()) o.message = said;
+    else if (code == 0) o.message = "no run_report.toml";
+    else if (code > 0) o.message = "exit status " + std::to_string(code);
     else
-      row.message = "killed by signal " + std::to_string(WTERMSIG(wait_status)) + " (" +
-                    strsignal(WTERMSIG(wait_status)) + ")";
+      o.message = "killed by signal " + std::to_string(WTERMSIG(wait_status)) + " (" +
+                  strsignal(WTERMSIG(wait_status)) + ")";
+    return o;
   }
 
-  static const char* sigabbrev(int sig) {
-    return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "signal";
+  fs::path dir_;
+  std::size_t cases_;
+  RunOptions options_;
+  sigset_t original_mask_, waiting_mask_;
+  std::unique_ptr<std::atomic<pid_t>[]> children_;
+  std::vector<Child> running_;
+  bool stopping_ = false;
+};
+
+class Sweep {
+ public:
+  Sweep(std::string scene_path, const SweepOptions& o)
+      : scene_path_(std::move(scene_path)), options_(o) {}
+
+  int Run() {
+    const std::string text = ReadSceneFile(scene_path_);
+    SweepCases listed;
+    if (!options_.cases_csv.empty()) listed = ReadCasesCsv(options_.cases_csv);
+    cases_ = ExpandCases(listed, options_.sets);
+    const std::size_t n = cases_.rows.size();
+    dir_ = options_.run.out_dir.empty()
+               ? fs::path("output") / (fs::path(scene_path_).stem().string() + "_sweep")
+               : fs::path(options_.run.out_dir);
+
+    // Every case's scene, checked as `check` would before anything is written or run.
+    std::vector<std::string> scenes(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string path = (dir_ / CaseFolderName(i, n) / "scene.toml").string();
+      const std::string comment =
+          "# cablefilm sweep, case " + std::to_string(i) + " of " + std::to_string(n) + ": " +
+          EscapeText(scene_path_) + " with " + DescribeCase(cases_, i) + "\n\n";
+      try {
+        scenes[i] = EditSceneText(text, scene_path_, cases_.keys, cases_.rows[i], comment);
+        ValidateCase(scenes[i], path, options_.run);
+      } catch (const Error& e) {
+        throw Error(EscapeText(scene_path_) + ": case " + std::to_string(i) + " (" +
+                    DescribeCase(cases_, i) + ") is refused, so no case was run: " + e.what());
+      }
+    }
+    std::error_code ec;
+    fs::create_directories(dir_, ec);
+    if (ec)
+      throw Error("cannot create the sweep folder " + EscapeText(dir_.string()) + ": " +
+                  ec.message());
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < n; ++i) names.insert(CaseFolderName(i, n));
+    RemoveStaleCases(dir_, names);
+    for (std::size_t i = 0; i < n; ++i) {
+      const fs::path folder = dir_ / CaseFolderName(i, n);
+      fs::create_directories(folder, ec);
+      if (ec)
+        throw Error("cannot create the case folder " + EscapeText(folder.string()) + ": " +
+                    ec.message());
+      RemoveEarlierResults(folder.string());  // no result of an earlier sweep beside the scene
+      fs::remove(folder / "run.log", ec);
+      AtomicFile scene((folder / "scene.toml").string());
+      std::fputs(scenes[i].c_str(), scene.stream());
+      scene.Commit();
+    }
+    outcomes_.assign(n, CaseOutcome());
+    WriteSummary();
+    std::printf("sweep: %zu case%s of %s (%s) in %s\n", n, n == 1 ? "" : "s",
+                EscapeText(scene_path_).c_str(), KeysText().c_str(),
+                EscapeText(dir_.string()).c_str());
+    if (options_.prepare) {
+      std::printf("prepared: each case folder holds its scene.toml; nothing run\nwrote %s\n",
+                  EscapeText((dir_ / "sweep.csv").string()).c_str());
+      return 0;
+    }
+    return RunAll();
   }
 
-  int RunCases() {
-    const std::size_t n = rows_.size();
+ private:
+  std::string KeysText() const {
+    std::string text;
+    for (const std::string& k : cases_.keys) text += (text.empty() ? "" : ", ") + EscapeText(k);
+    return text;
+  }
+
+  void WriteSummary() {
+    AtomicFile file((dir_ / "sweep.csv").string());
+    std::FILE* f = file.stream();
+    std::fprintf(f, "%s\n", SweepHeader(cases_).c_str());
+    const std::size_t n = outcomes_.size();
+    for (std::size_t i = 0; i < n; ++i)
+      std::fprintf(f, "%s\n", SweepRow(cases_, i, CaseFolderName(i, n), outcomes_[i]).c_str());
+    file.Commit();
+  }
+
+  int RunAll() {
+    const std::size_t n = outcomes_.size();
     const int jobs = static_cast<int>(std::min<std::size_t>(
         n, static_cast<std::size_t>(options_.jobs > 0 ? options_.jobs : CoreCount())));
     std::printf("running %d case%s at a time; each case's output in its folder's run.log\n",
                 jobs, jobs == 1 ? "" : "s");
     std::fflush(stdout);
 
-    auto children = std::make_unique<std::atomic<pid_t>[]>(kMaxJobs);
-    for (int k = 0; k < kMaxJobs; ++k) children[k] = 0;
-    g_children = children.get();
-    sigset_t blocked;
+    sigset_t blocked, original, waiting;
     sigemptyset(&blocked);
     for (int s : {SIGINT, SIGTERM, SIGCHLD}) sigaddset(&blocked, s);
-    ::sigprocmask(SIG_BLOCK, &blocked, &original_mask_);
+    ::sigprocmask(SIG_BLOCK, &blocked, &original);
     struct sigaction action {};
-    action.sa_handler = OnSweepSignal;  // no SA_RESTART: the wait below wakes
+    action.sa_handler = OnSweepSignal;  // no SA_RESTART: the wait wakes
     sigemptyset(&action.sa_mask);
     ::sigaction(SIGINT, &action, nullptr);
     ::sigaction(SIGTERM, &action, nullptr);
     action.sa_handler = OnChild;
     action.sa_flags = SA_NOCLDSTOP;
     ::sigaction(SIGCHLD, &action, nullptr);
-    sigset_t waiting = original_mask_;  // the mask while waiting: these signals come through
+    waiting = original;  // the mask while waiting: these signals come through
     for (int s : {SIGINT, SIGTERM, SIGCHLD}) sigdelset(&waiting, s);
 
-    struct Slot {
-      pid_t pid = 0;
-      std::size_t index = 0;
-      std::chrono::steady_clock::time_point start;
-    };
-    std::vector<Slot> slots(jobs);
     const bool tty = ::isatty(STDERR_FILENO) != 0;
     const auto t0 = std::chrono::steady_clock::now();
-    std::size_t next = 0, done = 0, failed = 0;
-    int running = 0;
-    bool stopping = false, status_shown = false, unsaved = false;
+    bool status_shown = false, unsaved = false, said_stop = false;
     auto saved = t0;
     auto clear_status = [&] {
       if (status_shown) std::fprintf(stderr, "\r\033[K");
       status_shown = false;
     };
-    auto show_status = [&] {
-      if (!tty) return;
-      const double elapsed =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::fprintf(stderr, "\rsweep: %zu/%zu done, %d running, %zu failed, %.0f s   ", done, n,
-                   running, failed, elapsed);
-      std::fflush(stderr);
-      status_shown = true;
-    };
-
-    while (true) {
-      if (g_signal != 0 && !stopping) {
-        stopping = true;
-        clear_status();
-        std::fprintf(stderr, "sweep: %s: stopping the %d running case%s; the finished ones stay\n",
-                     sigabbrev(g_signal.load()), running, running == 1 ? "" : "s");
-        for (const Slot& s : slots)
-          if (s.pid > 0) ::kill(s.pid, g_signal.load());
-      }
-      bool changed = false;
-      for (int k = 0; k < jobs && !stopping; ++k) {
-        if (slots[k].pid != 0 || next >= n) continue;
-        slots[k].index = next;
-        slots[k].start = std::chrono::steady_clock::now();
-        slots[k].pid = Launch(next++);
-        children[k] = slots[k].pid;
-        ++running;
-        changed = true;
-      }
-      for (int k = 0; k < jobs; ++k) {
-        if (slots[k].pid == 0) continue;
-        int status = 0;
-        const pid_t r = ::waitpid(slots[k].pid, &status, WNOHANG);
-        if (r == 0) continue;
-        if (r < 0 && errno == EINTR) continue;
-        children[k] = 0;
-        slots[k].pid = 0;
-        --running;
-        ++done;
-        const std::size_t i = slots[k].index;
-        Finish(i, r < 0 ? 0x7f00 : status, stopping);
-        const CaseRow& row = rows_[i];
-        if (row.status != "ok" && row.status != "interrupted") ++failed;
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                          slots[k].start).count();
-        clear_status();
-        if (row.status == "ok")
-          std::printf("case %zu (%s): ok in %.2f s, peak %s N at t = %s s in link %s "
-                      "[%zu/%zu done, %d running, %zu failed]\n",
-                      i, DescribeValues(cases_, i).c_str(), wall, row.results[0].c_str(),
-                      row.results[1].c_str(), row.results[2].c_str(), done, n, running, failed);
-        else
-          std::printf("case %zu (%s): %s%s%s [%zu/%zu done, %d running, %zu failed]\n", i,
-                      DescribeValues(cases_, i).c_str(), row.status.c_str(),
-                      row.message.empty() ? "" : ": ", row.message.c_str(), done, n, running,
-                      failed);
-        std::fflush(stdout);
-        changed = true;
-      }
-      // The summary as the cases end, at most once a second (a sweep of many short cases
-      // would otherwise rewrite it in full for each), and whole at the end.
-      unsaved = unsaved || changed;
+    // The summary as the cases end, at most once a second (a sweep of many short cases
+    // would otherwise rewrite it in full for each), and whole at the end.
+    auto save_when_due = [&] {
       if (unsaved && std::chrono::steady_clock::now() - saved >= std::chrono::seconds(1)) {
         WriteSummary();
         saved = std::chrono::steady_clock::now();
         unsaved = false;
       }
-      if (running == 0 && (stopping || next >= n)) break;
-      if (changed) continue;  // launch into the freed slots first
-      show_status();
-      const timespec timeout = tty ? timespec{0, 250000000L} : timespec{1, 0};
-      ::ppoll(nullptr, 0, &timeout, &waiting);  // wakes on SIGCHLD, SIGINT, SIGTERM
+    };
+    auto say_stop = [&](const SweepProgress& p) {
+      if (said_stop || !p.stopping) return;
+      said_stop = true;
+      clear_status();
+      std::fprintf(stderr, "sweep: %s: stopping the %d running case%s; the finished ones stay\n",
+                   SignalName(g_signal.load()), p.running, p.running == 1 ? "" : "s");
+    };
+    {
+      ProcessExecutor executor(dir_, n, options_.run, original, waiting);
+      RunCases(
+          executor, jobs, &g_signal, outcomes_,
+          [&](std::size_t i, const SweepProgress& p) {
+            say_stop(p);
+            const CaseOutcome& o = outcomes_[i];
+            clear_status();
+            if (o.status == "ok")
+              std::printf("case %zu (%s): ok in %.2f s, peak %.10g N at t = %.10g s in link %d "
+                          "[%zu/%zu done, %d running, %zu failed]\n",
+                          i, DescribeCase(cases_, i).c_str(), o.seconds, o.summary.peak,
+                          o.summary.peak_t, o.summary.peak_link, p.done, n, p.running, p.failed);
+            else
+              std::printf("case %zu (%s): %s%s%s [%zu/%zu done, %d running, %zu failed]\n", i,
+                          DescribeCase(cases_, i).c_str(), o.status.c_str(),
+                          o.message.empty() ? "" : ": ", o.message.c_str(), p.done, n,
+                          p.running, p.failed);
+            std::fflush(stdout);
+            unsaved = true;
+            save_when_due();
+          },
+          [&](const SweepProgress& p) {
+            say_stop(p);
+            save_when_due();
+            if (!tty || p.stopping) return;
+            const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            std::fprintf(stderr, "\rsweep: %zu/%zu done, %d running, %zu failed, %.0f s   ",
+                         p.done, n, p.running, p.failed, elapsed);
+            std::fflush(stderr);
+            status_shown = true;
+          },
+          tty ? std::chrono::milliseconds(250) : std::chrono::milliseconds(1000));
     }
     clear_status();
     WriteSummary();
-    g_children = nullptr;
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     std::signal(SIGCHLD, SIG_DFL);
-    ::sigprocmask(SIG_SETMASK, &original_mask_, nullptr);
+    ::sigprocmask(SIG_SETMASK, &original, nullptr);
 
-    std::size_t ok = 0, blowups = 0, errors = 0, interrupted = 0;
-    for (const CaseRow& r : rows_) {
-      ok += r.status == "ok";
-      blowups += r.status == "blow-up";
-      errors += r.status == "error";
-      interrupted += r.status == "interrupted";
+    std::size_t ok = 0, blowups = 0, errors = 0, interrupted = 0, not_run = 0;
+    for (const CaseOutcome& o : outcomes_) {
+      ok += o.status == "ok";
+      blowups += o.status == "blow-up";
+      errors += o.status == "error";
+      interrupted += o.status == "interrupted";
+      not_run += o.status == "not run";
     }
+    const bool stopped = g_signal != 0;
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("sweep: %zu case%s in %.3g s: %zu ok, %zu blow-up, %zu error", n,
                 n == 1 ? "" : "s", wall, ok, blowups, errors);
-    if (stopping) std::printf(", %zu interrupted, %zu not run", interrupted, n - done);
+    if (stopped) std::printf(", %zu interrupted, %zu not run", interrupted, not_run);
     std::printf("\nwrote %s\n", EscapeText((dir_ / "sweep.csv").string()).c_str());
     std::fflush(stdout);
-    if (stopping) return 128 + g_signal.load();
+    if (stopped) return 128 + g_signal.load();
     if (ok < n) {
       std::fprintf(stderr, "cablefilm: %zu of %zu cases did not finish: see the status and message "
                    "columns of %s and each case's run.log\n",
@@ -499,8 +462,7 @@ class Sweep {
   SweepOptions options_;
   SweepCases cases_;
   fs::path dir_;
-  std::vector<CaseRow> rows_;
-  sigset_t original_mask_{};
+  std::vector<CaseOutcome> outcomes_;
 };
 
 }  // namespace

@@ -7,7 +7,6 @@
 
 #include "app/commands.h"
 #include "run/sweep_plan.h"
-#include "scene/scene_edit.h"
 
 namespace cablefilm {
 
@@ -18,9 +17,6 @@ struct SweepOptions {
   bool prepare = false;        // write the case folders and sweep.csv ("not run"), run nothing
   RunOptions run;              // out_dir: the sweep's folder; the rest goes to every case's run
 };
-
-// The columns of sweep.csv after the case's values (from its run_report.toml).
-extern const char* const kSweepResultColumns[];
 
 int SweepCommand(const std::string& scene_path, const SweepOptions& options);
 

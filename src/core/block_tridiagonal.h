@@ -10,7 +10,8 @@ namespace cablefilm {
 
 class BlockTridiagonal {
  public:
-  explicit BlockTridiagonal(int n = 0) { Resize(n); }
+  BlockTridiagonal() = default;
+  explicit BlockTridiagonal(int n) { Resize(n); }
   void Resize(int n);
   int size() const { return static_cast<int>(diag.size()); }
   void SetZero();

@@ -34,7 +34,8 @@ struct ForceWorkspace {
   Eigen::VectorXd tension;   // T_{j+1/2} [N] (size s)
   Points force;    // right-hand side of eq. (1) per station (X + tension terms) [N]
 
-  explicit ForceWorkspace(int links = 0) { Resize(links); }
+  ForceWorkspace() = default;
+  explicit ForceWorkspace(int links) { Resize(links); }
   void Resize(int links);
 };
 

@@ -23,6 +23,7 @@
 #include "run/initial_state.h"
 #include "run/memory_run.h"
 #include "run/run_summary.h"
+#include "run/sweep.h"
 #include "run/sweep_plan.h"
 #include "scene/scene_edit.h"
 #include "core/version.h"
@@ -300,6 +301,21 @@ std::string RenderFilmTo(const py::object& obj, const std::string& path,
 }
 #endif
 
+// The columns of a sweep's row from a case's summary (kSummaryColumns), as Python numbers;
+// None for a case that did not finish.
+void AddSummaryColumns(const CaseOutcome& o, py::dict* d) {
+  for (const SummaryColumn& c : kSummaryColumns) {
+    py::object value = py::none();
+    if (o.has_summary) {
+      const double v = c.value(o.summary);
+      if (c.kind == SummaryColumn::Kind::kNumber) value = py::float_(v);
+      if (c.kind == SummaryColumn::Kind::kWhole) value = py::int_(static_cast<long long>(v));
+      if (c.kind == SummaryColumn::Kind::kFlag) value = py::bool_(v != 0);
+    }
+    (*d)[py::str(c.name)] = value;
+  }
+}
+
 // The sweep: every case's scene checked first (as `cablefilm sweep` does), then run on `jobs`
 // threads; one dict a case with the columns of sweep.csv.
 py::list Sweep(const py::object& source, const py::dict& values, std::optional<py::list> cases,
@@ -331,10 +347,17 @@ py::list Sweep(const py::object& source, const py::dict& values, std::optional<p
     SweepKey k;
     k.key = item.first.cast<std::string>();
     std::vector<py::object> objects;
+    // The values of a key are a list (a str is one value, not its characters).
+    if (py::isinstance<py::str>(item.second) || py::isinstance<py::bytes>(item.second) ||
+        py::isinstance<py::dict>(item.second) || !py::hasattr(item.second, "__iter__"))
+      throw py::type_error("values[\"" + k.key + "\"]: expected a list of values, got a " +
+                           std::string(py::str(py::type::of(item.second).attr("__name__"))));
     for (const py::handle v : item.second) {
       objects.push_back(py::reinterpret_borrow<py::object>(v));
       k.values.push_back(ValueToToml(v, k.key));
     }
+    if (k.values.empty())
+      throw py::value_error("values[\"" + k.key + "\"]: expected at least one value, got none");
     sets.push_back(k);
     set_objects.push_back(objects);
   }
@@ -367,30 +390,29 @@ py::list Sweep(const py::object& source, const py::dict& values, std::optional<p
                          ") is refused, so no case was run: " + e.what());
     }
   }
-  const int threads = std::max(1, jobs.value_or(static_cast<int>(
-                                      std::max(1u, std::thread::hardware_concurrency()))));
-  if (jobs && *jobs < 1) throw py::value_error("jobs: expected at least 1");
-  struct Outcome {
-    std::shared_ptr<const MemoryRun> run;
-    std::string error;
-  };
-  std::vector<Outcome> outcomes(n);
+  if (jobs && (*jobs < 1 || *jobs > kMaxSweepJobs))
+    throw py::value_error("jobs: expected 1 to " + std::to_string(kMaxSweepJobs) + ", got " +
+                          std::to_string(*jobs));
+  const int threads = jobs.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  // Each case's run, kept only with keep_results: a sweep of many cases holds their summaries.
+  std::vector<std::shared_ptr<const MemoryRun>> kept(n);
+  std::vector<CaseOutcome> outcomes(n);
   CancelFlag cancel{0};
   RunInterruptible(cancel, [&] {
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-      for (std::size_t i; (i = next++) < n && cancel == 0;) {
-        try {
-          outcomes[i].run = std::make_shared<const MemoryRun>(
-              RunInMemory(scenes[i].def(), scenes[i].model(), &cancel));
-        } catch (const std::exception& e) {
-          outcomes[i].error = SceneErrorMessage(scenes[i].path(), e.what());
-        }
+    ThreadExecutor executor(threads, [&](std::size_t i, const CancelFlag* stop) {
+      CaseOutcome o;
+      try {
+        auto run = std::make_shared<const MemoryRun>(
+            RunInMemory(scenes[i].def(), scenes[i].model(), stop));
+        o = OutcomeOf(run->run.summary, *stop != 0);
+        if (keep_results) kept[i] = std::move(run);
+      } catch (const std::exception& e) {
+        o.status = "error";
+        o.message = SceneErrorMessage(scenes[i].path(), e.what());
       }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 0; t < threads && static_cast<std::size_t>(t) < n; ++t) pool.emplace_back(worker);
-    for (std::thread& t : pool) t.join();
+      return o;
+    });
+    RunCases(executor, threads, &cancel, outcomes, {}, {});
     return 0;
   });
   py::list rows;
@@ -398,24 +420,11 @@ py::list Sweep(const py::object& source, const py::dict& values, std::optional<p
     py::dict d;
     d["case"] = i;
     for (std::size_t k = 0; k < all.keys.size(); ++k) d[py::str(all.keys[k])] = object_of(k, all.rows[i][k]);
-    const Outcome& o = outcomes[i];
-    const py::object none = py::none();
-    const RunSummary* s = o.run ? &o.run->run.summary : nullptr;
-    d["status"] = s ? (s->completed ? "ok" : "blow-up") : "error";
-    d["message"] = !o.error.empty()           ? o.error
-                   : s && !s->failure.empty() ? s->failure
-                   : s && !s->warnings.empty() ? s->warnings.front()
-                                               : std::string();
-    const bool ok = s && s->completed;
-    d["peak_tension"] = ok ? py::object(py::float_(s->peak)) : none;
-    d["peak_time"] = ok ? py::object(py::float_(s->peak_t)) : none;
-    d["peak_link"] = ok ? py::object(py::int_(s->peak_link)) : none;
-    d["min_tension"] = ok ? py::object(py::float_(s->min_tension)) : none;
-    d["min_tension_time"] = ok ? py::object(py::float_(s->min_tension_t)) : none;
-    d["min_tension_link"] = ok ? py::object(py::int_(s->min_tension_link)) : none;
-    d["snaps"] = ok ? py::object(py::int_(s->stats.record.snaps)) : none;
-    d["peak_converged"] = ok ? py::object(py::bool_(s->peak_converged())) : none;
-    if (keep_results) d["result"] = o.run ? MakeResult(o.run, scenes[i]) : none;
+    const CaseOutcome& o = outcomes[i];
+    d["status"] = o.status;
+    d["message"] = o.message;
+    AddSummaryColumns(o, &d);
+    if (keep_results) d["result"] = kept[i] ? MakeResult(kept[i], scenes[i]) : py::none();
     rows.append(d);
   }
   return rows;

@@ -20,7 +20,7 @@ void MemoryRows::Reserve(long rows, int stations, int links) {
 }
 
 MemoryRun RunInMemory(const SceneDef& scene, const Model& model, const CancelFlag* stop) {
-  MemoryRun out{scene, PrepareRun(scene, model, LawName(model.line.law), stop), {}};
+  MemoryRun out{scene, PrepareRun(scene, model, LawName(model.line.law), stop), MemoryRows()};
   out.rows.Reserve(out.run.grid.outputs + 1, model.stations(), model.line.links);
   ExecuteRun(out.run, {&out.rows});
   return out;

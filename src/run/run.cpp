@@ -30,7 +30,9 @@ const char* LawName(LinkLaw law) {
 }
 
 Run PrepareRun(const SceneDef& scene, Model model, std::string label, const CancelFlag* stop) {
-  Run run{std::move(label), std::move(model), {}, {}, {}, 0, {}, RunExtent(), MaxTensionLog(), {}};
+  Run run;
+  run.label = std::move(label);
+  run.model = std::move(model);
   const Model& m = run.model;
   run.grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
   run.inputs = SceneInputs(m);

@@ -27,24 +27,34 @@ void RunSummary::AddRow(double t, const Eigen::VectorXd& tension) {
   }
 }
 
-const char* const kSummaryColumns[] = {"peak_tension",     "peak_time",        "peak_link",
-                                       "min_tension",      "min_tension_time", "min_tension_link",
-                                       "snaps",            "peak_converged",   nullptr};
+const SummaryColumn kSummaryColumns[8] = {
+    {SummaryColumn::Kind::kNumber, "peak_tension", [](const RunSummary& s) { return s.peak; }},
+    {SummaryColumn::Kind::kNumber, "peak_time", [](const RunSummary& s) { return s.peak_t; }},
+    {SummaryColumn::Kind::kWhole, "peak_link",
+     [](const RunSummary& s) { return static_cast<double>(s.peak_link); }},
+    {SummaryColumn::Kind::kNumber, "min_tension",
+     [](const RunSummary& s) { return s.min_tension; }},
+    {SummaryColumn::Kind::kNumber, "min_tension_time",
+     [](const RunSummary& s) { return s.min_tension_t; }},
+    {SummaryColumn::Kind::kWhole, "min_tension_link",
+     [](const RunSummary& s) { return static_cast<double>(s.min_tension_link); }},
+    {SummaryColumn::Kind::kWhole, "snaps",
+     [](const RunSummary& s) { return static_cast<double>(s.stats.record.snaps); }},
+    {SummaryColumn::Kind::kFlag, "peak_converged",
+     [](const RunSummary& s) { return s.peak_converged() ? 1.0 : 0.0; }},
+};
 
 std::vector<std::string> SummaryCells(const RunSummary& s) {
-  auto number = [](double v) {
+  std::vector<std::string> cells;
+  for (const SummaryColumn& c : kSummaryColumns) {
+    const double v = c.value(s);
     char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return std::string(buf);
-  };
-  return {number(s.peak),
-          number(s.peak_t),
-          std::to_string(s.peak_link),
-          number(s.min_tension),
-          number(s.min_tension_t),
-          std::to_string(s.min_tension_link),
-          std::to_string(s.stats.record.snaps),
-          s.peak_converged() ? "true" : "false"};
+    if (c.kind == SummaryColumn::Kind::kNumber) std::snprintf(buf, sizeof buf, "%.10g", v);
+    if (c.kind == SummaryColumn::Kind::kWhole) std::snprintf(buf, sizeof buf, "%.0f", v);
+    if (c.kind == SummaryColumn::Kind::kFlag) std::snprintf(buf, sizeof buf, "%s", v != 0 ? "true" : "false");
+    cells.emplace_back(buf);
+  }
+  return cells;
 }
 
 std::vector<std::string> TrustWarnings(const Model& m, const StepStats& stats) {

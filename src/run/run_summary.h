@@ -43,9 +43,17 @@ std::vector<std::string> TrustWarnings(const Model& m, const StepStats& stats);
 // "N steps (M rejected) from a to b s[, k Newton iterations per step]".
 std::string DescribeSteps(const StepStats& stats);
 
-// The columns of a sweep's row from a run's summary (after the case's status and message),
-// null-terminated, and their cells (numbers with 10 significant digits, as run_report.toml).
-extern const char* const kSummaryColumns[];
+// The columns of a sweep's row from a run's summary (after the case's status and message): each
+// its name, its kind and its value; the one place they are spelled (sweep.csv, the Python
+// module's sweep rows).
+struct SummaryColumn {
+  enum class Kind { kNumber, kWhole, kFlag } kind;
+  const char* name;
+  double (*value)(const RunSummary&);
+};
+extern const SummaryColumn kSummaryColumns[8];
+// The cells of the columns: numbers with 10 significant digits (as run_report.toml has them),
+// whole numbers, true or false.
 std::vector<std::string> SummaryCells(const RunSummary& s);
 
 }  // namespace cablefilm
