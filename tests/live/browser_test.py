@@ -18,7 +18,9 @@ checks, waiting on the page's body dataset (frames, lastFrame, t, states) rather
   8. ends and colour range: the ends named by their kind; Reset range unlocks the range and
      brings it back to the tensions now
   9. errors: on a scene without a driven end, no amplitude or period; a recording that cannot
-     be written says why; on a scene that blows up, the blow-up is shown until a restart
+     be written says why; on a scene that blows up, the blow-up is shown until a restart;
+     bound beyond loopback (0.0.0.0, visited over 127.0.0.1), the printed address's token
+     opens the page, its WebSocket and its controls, and leaves the address bar
  10. serving: every route still answers, no console errors; SIGTERM exits 0 and the page says so
 Prints one line per check and `N passed, M failed`; exits 1 on any failure.
 """
@@ -44,7 +46,7 @@ from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
-READY = re.compile(r'live view at (https?://[^\s/]+)/?\s*$')
+READY = re.compile(r'live view at (https?://[^\s/]+)/?(\?token=[0-9a-f]+)?\s*$')
 CSV_HEADER = 't,x_end,y_end,tension_start,tension_end,tension_max,link_max'
 
 
@@ -113,12 +115,12 @@ def compare(png_a, png_b):
 
 # ---- the server ---------------------------------------------------------------------------
 class Server:
-    def __init__(self, args, scene=None, out_dir=None, log_name='server.log'):
+    def __init__(self, args, scene=None, out_dir=None, log_name='server.log', extra=()):
         os.makedirs(args.out_dir, exist_ok=True)
         self.log_path = os.path.join(args.out_dir, log_name)
         self.log = open(self.log_path, 'w')
         cmd = [args.cablefilm, 'live', scene or args.scene, '--port', '0', '--size', '640x360',
-               '--out', out_dir or args.out_dir]
+               '--out', out_dir or args.out_dir, *extra]
         print('starting:', ' '.join(cmd), flush=True)
         self.proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=self.log, text=True)
         self.lines = queue.Queue()
@@ -137,6 +139,7 @@ class Server:
             m = READY.search(line)
             if m:
                 self.origin = m.group(1)
+                self.query = m.group(2) or ''  # ?token=... when bound beyond loopback
                 print('server ready at', self.origin, flush=True)
                 return
 
@@ -501,6 +504,39 @@ class BrowserTest:
         self.wait(lambda: not self.driver.find_element(By.ID, 'alert').is_displayed(), 'the alert to go after a restart')
         return '"%s"' % alert.split('\n')[0][:80]
 
+    def check_token(self):
+        server = Server(self.args, out_dir=os.path.join(self.args.out_dir, 'token'),
+                        log_name='server-token.log', extra=('--bind', '0.0.0.0'))
+        try:
+            if not server.query.startswith('?token='):
+                raise Failure('bound to 0.0.0.0 the printed address has no token')
+            local = server.origin.replace('0.0.0.0', '127.0.0.1')
+            try:
+                http_get(local + '/state')
+                raise Failure('/state without the token was served')
+            except urllib.error.HTTPError as e:
+                if e.code != 401:
+                    raise Failure('/state without the token answered %d' % e.code)
+            self.driver.get(local + '/' + server.query)
+            self.wait(lambda: self.num('frames') >= 3 and self.ds('transport') == 'websocket',
+                      'frames over the WebSocket with the token')
+            if 'token' in self.driver.current_url:
+                raise Failure('the token stays in the address bar: %s' % self.driver.current_url)
+            if 'token' in self.driver.execute_script('return document.cookie'):
+                raise Failure('the page script can read the token cookie (not HttpOnly)')
+            self.driver.execute_script('window.cablefilm.control({pause: true})')
+            self.wait(lambda: self.ds('paused') == 'true', 'a control to be taken with the token')
+            self.driver.get(local + '/state')  # the cookie opens the rest of the server too
+            if '"paused":true' not in self.driver.page_source.replace(' ', ''):
+                raise Failure('/state with the cookie: %s' % self.driver.page_source[:200])
+            return 'token in the printed address; page, WebSocket and controls work; address bar clean'
+        finally:
+            self.driver.get('about:blank')
+            server.stop()
+            self.driver.get(self.origin + '/')
+            self.wait(lambda: self.num('frames') >= 1 and self.ds('transport') == 'websocket', 'the main page again')
+            self.driver.get_log('browser')  # the token server's page is gone: its errors with it
+
     # 10
     def check_serving_and_sigterm(self):
         o, notes = self.origin, []
@@ -561,6 +597,7 @@ def main():
                   ('pause', test.check_pause), ('amplitude', test.check_amplitude),
                   ('keyboard', test.check_keyboard), ('record', test.check_record), ('layout', test.check_layout),
                   ('ends and range', test.check_ends_and_range), ('errors', test.check_errors),
+                  ('token', test.check_token),
                   ('serving and SIGTERM', test.check_serving_and_sigterm)]
         for name, check in checks:
             start = time.monotonic()
