@@ -420,7 +420,9 @@ def run(args):
 
     def idle():
         # Nobody watching: t goes on, no frame is drawn.
-        s0 = srv.wait(lambda s: s['viewers'] == 0, 'no viewers')
+        srv.wait(lambda s: s['viewers'] == 0, 'no viewers')
+        time.sleep(0.5)  # a frame begun for the last viewer is done
+        s0 = srv.state()
         time.sleep(1.0)
         s1 = srv.state()
         check(s1['t'] > s0['t'] + 0.5, 'the simulation stopped with nobody watching')
@@ -526,8 +528,10 @@ def run(args):
             drawn = st1['frame'] - st0['frame']
             print(f'      film: {rec["frames"]} frames = {seconds:.2f} s for {covered:.2f} s simulated; '
                   f'{drawn} frames drawn meanwhile', flush=True)
-            # The film starts and ends at frames drawn after each request: a few frames off.
-            check(abs(seconds - covered) < 0.25,
+            # The film starts and ends at frames drawn after each request: a few frames off
+            # (more on a loaded machine, where each of those frames takes longer). Before the
+            # fix it was half as long.
+            check(abs(seconds - covered) < max(0.4, 0.1 * covered),
                   f'a film of {seconds:.2f} s for {covered:.2f} s of simulated time')
             check(abs(rec['seconds'] - (rec['t_end'] - rec['t_start'])) <= 2 / 120,
                   f'the state says {rec["seconds"]} s for {rec["t_start"]}..{rec["t_end"]}')
