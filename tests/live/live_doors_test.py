@@ -17,6 +17,7 @@ real program; each check failed against the server before these were fixed.
               untouched, and so is a message fragmented past 4 KB
   workers     80 idle connections that reopen as soon as they are dropped do not lock a new
               viewer out: the page, /state and the WebSocket are served
+  ws-idle     a WebSocket that answers no ping is closed (1001) instead of holding a worker
   viewers     the 33rd stream (WebSocket or MJPEG) is answered 503 with a message
   head        HEAD answers the headers without a body
   bind        a bad --bind is refused before the scene is loaded
@@ -39,8 +40,6 @@ import subprocess
 import sys
 import threading
 import time
-import urllib.error
-import urllib.request
 
 import websocket  # Debian's python3-websocket
 
@@ -223,6 +222,19 @@ def run(args):
 
     srv = Server(args.cablefilm, args.scene, out_dir)
     own = f'http://127.0.0.1:{srv.port}'
+
+    # A WebSocket viewer that reads everything but never answers the server's pings (nor sends
+    # anything): it must be dropped as idle (close 1001) rather than hold a worker for ever.
+    # Opened first and checked last, so the wait overlaps the other checks.
+    silent = {'opened': time.time()}
+    silent_sock, _, _ = ws_handshake(srv.port)
+
+    def silent_reader():
+        silent['code'] = read_close(silent_sock, timeout=120)
+        silent['closed'] = time.time()
+
+    silent_thread = threading.Thread(target=silent_reader, daemon=True)
+    silent_thread.start()
     evil = 'http://evil.example'
 
     def origin():
@@ -380,8 +392,9 @@ def run(args):
 
     def viewers():
         socks = []
+        have = srv.state()['viewers']  # the silent viewer of ws-idle, while it lasts
         try:
-            for i in range(32):
+            for i in range(have, 32):
                 sock, line, _ = ws_handshake(srv.port)
                 check(' 101 ' in line + ' ', f'WebSocket viewer {i + 1} answered {line!r}')
                 socks.append(sock)
@@ -405,7 +418,7 @@ def run(args):
         finally:
             for s in socks:
                 s.close()
-        srv.wait(lambda s: s['viewers'] == 0, 'the viewers to be counted out')
+        srv.wait(lambda s: s['viewers'] <= have, 'the viewers to be counted out')
         ws = websocket.create_connection(f'ws://127.0.0.1:{srv.port}/ws', timeout=20)
         ws.close()
 
@@ -447,6 +460,12 @@ def run(args):
         time.sleep(1.0)
         check(srv.state()['frame'] <= s3['frame'] + 1, 'frames drawn after the viewer left')
 
+    def silent_viewer():
+        silent_thread.join(timeout=max(0, silent['opened'] + 90 - time.time()))
+        check('closed' in silent, 'a WebSocket that answers no ping is still open after 90 s')
+        check(silent['code'] == 1001, f'a silent WebSocket got close code {silent["code"]}')
+        print(f'      closed after {silent["closed"] - silent["opened"]:.0f} s', flush=True)
+
     try:
         for name, fn in (('origin: foreign pages refused, own and scripts served', origin),
                          ('cors: no Access-Control-Allow-* anywhere', cors),
@@ -455,6 +474,7 @@ def run(args):
                          ('workers: idle connections do not lock a new viewer out', workers),
                          ('viewers: the 33rd stream gets 503 with a message', viewers),
                          ('head: HEAD without a body', head),
+                         ('ws-idle: a WebSocket that answers no ping is dropped', silent_viewer),
                          ('idle: frames drawn only for viewers and on demand', idle)):
             step(name, fn)
         check_code = srv.stop()
