@@ -19,6 +19,7 @@
 #include "app/sweep_command.h"
 #include "core/version.h"
 #ifdef CABLEFILM_LIVE
+#include "live/http_server.h"
 #include "live/live_command.h"
 #endif
 #include "core/cancel.h"
@@ -202,8 +203,13 @@ void AddSweepOptions(CLI::App* cmd, cablefilm::SweepOptions* o) {
 void AddLiveOptions(CLI::App* cmd, cablefilm::LiveCommandOptions* o) {
   Value(cmd, "--port", "N", "port to serve on (default 8080; 0: any free port)",
         [o](const std::string& v) { o->port = ParsePort(v); });
-  Value(cmd, "--bind", "ADDR", "address to listen on (default 127.0.0.1: this machine only)",
-        [o](const std::string& v) { o->bind = v; });
+  Value(cmd, "--bind", "ADDR",
+        "IPv4 address to listen on (default 127.0.0.1: this machine only; beyond loopback the "
+        "printed address carries an access token)",
+        [o](const std::string& v) {
+          if (const std::string why = cablefilm::BindAddressProblem(v); !why.empty()) Bad(why);
+          o->bind = v;
+        });
   Value(cmd, "--size", "WxH", "frame size in pixels, even, 16x16 to 7680x4320 (default 1280x720)",
         [o](const std::string& v) { ParseSize(v, &o->width, &o->height); });
   Value(cmd, "--fps", "N", "frames per second, 1 to 120 (default 30)",
@@ -290,7 +296,8 @@ int main(int argc, char** argv) {
   AddLiveOptions(live, &live_options);
   live->footer(
       "Serves the live view until Ctrl-C or SIGTERM (status 0), and prints its address.\n"
-      "--bind beyond 127.0.0.1 serves other machines: there is no authentication.");
+      "--bind beyond 127.0.0.1 serves other machines: only with the printed address's token\n"
+      "(kept by the page as a cookie); the connection is not encrypted.");
 #endif
   const std::string outputs =
       "The results go to the output folder: equilibrium.csv, timeseries.csv, max_tension.png\n"

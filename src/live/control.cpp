@@ -50,13 +50,15 @@ double ReadNumber(const Json& v, const char* field, double lo, double hi, const 
 const std::vector<std::string>& ControlFields() {
   static const std::vector<std::string> fields{
       "pause", "step", "restart", "speed", "amplitude_scale", "period",
-      "current", "wave_height", "wave_period", "colormap", "lock_range", "tension_range", "record"};
+      "current", "wave_height", "wave_period", "colormap", "lock_range", "reset_range",
+      "tension_range", "record"};
   return fields;
 }
 
 bool ControlRequest::empty() const {
   return !pause && !step && !restart && !speed && !amplitude_scale && !period && !current &&
-         !wave_height && !wave_period && !colormap && !lock_range && !tension_range && !record;
+         !wave_height && !wave_period && !colormap && !lock_range && !reset_range &&
+         !tension_range && !record;
 }
 
 ControlRequest ParseControl(const std::string& body, const ControlLimits& limits) {
@@ -115,6 +117,10 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
       r.colormap = name;
     } else if (key == "lock_range") {
       r.lock_range = ReadBool(v, "lock_range");
+    } else if (key == "reset_range") {
+      if (!v.is_boolean() || !v.get<bool>())
+        throw ControlError("reset_range: expected true, got " + Shown(v));
+      r.reset_range = true;
     } else if (key == "tension_range") {
       const std::string want = "tension_range: expected [min, max] in N with 0 <= min < max <= " +
                                Number(limits.tension_max);

@@ -34,6 +34,7 @@ struct ControlRequest {
   std::optional<double> wave_period;                 // T [s]
   std::optional<std::string> colormap;
   std::optional<bool> lock_range;                    // freeze the colour range (or let it grow)
+  bool reset_range = false;  // unlock the range and start it again from the tensions now
   std::optional<std::array<double, 2>> tension_range;  // [min, max] N: a locked range
   std::optional<bool> record;                        // start (true) or stop (false) a film
   bool empty() const;

@@ -1,13 +1,24 @@
 #include "live/http_server.h"
 
+#include <arpa/inet.h>
 #include <civetweb.h>
+#include <dirent.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
 
+#include <algorithm>
 #include <atomic>
-#include <condition_variable>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
 #include <cstring>
-#include <map>
+#include <fstream>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 #include "core/error.h"
 #include "live/page_assets.h"
@@ -15,51 +26,368 @@
 namespace cablefilm {
 namespace {
 
-constexpr char kBoundary[] = "cablefilmframe";
-constexpr auto kStateEvery = std::chrono::milliseconds(200);  // state messages on /ws
+using Clock = std::chrono::steady_clock;
 
+constexpr char kBoundary[] = "cablefilmframe";
+constexpr char kTokenCookie[] = "cablefilm_token";
+constexpr auto kStateEvery = std::chrono::milliseconds(200);  // state messages on /ws
+// A viewer's socket that takes no bytes for this long is dropped: a stalled viewer holds a
+// worker and a stream slot no longer.
+constexpr auto kWriteTimeout = std::chrono::seconds(10);
+constexpr auto kWsPingEvery = std::chrono::seconds(10);
+// A WebSocket from which nothing (not even the pong to our ping) came for this long is closed.
+constexpr auto kWsIdle = std::chrono::seconds(30);
+// Workers beyond the streams: plain requests (the page, /state, controls) always find one
+// free however many viewers stream, and idle connections need this many to block them, each
+// for at most the header timeout below.
+constexpr int kSpareWorkers = 64;
+// Request headers must arrive within this (browsers and scripts send them at once); an idle
+// or trickling connection gives its worker back after it. civetweb also bounds each write of
+// a plain response (and of an MJPEG part) by it.
+constexpr char kRequestTimeoutMs[] = "3000";
+
+bool Equal(const char* a, const char* b) { return a && b && mg_strcasecmp(a, b) == 0; }
+
+std::string Lower(std::string s) {
+  for (char& ch : s) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return s;
+}
+
+bool IsHead(const mg_connection* c) {
+  return std::strcmp(mg_get_request_info(c)->request_method, "HEAD") == 0;
+}
+
+const char* Reason(int status) {
+  switch (status) {
+    case 200: return "OK";
+    case 400: return "Bad Request";
+    case 401: return "Unauthorized";
+    case 403: return "Forbidden";
+    case 404: return "Not Found";
+    case 405: return "Method Not Allowed";
+    case 413: return "Payload Too Large";
+    case 421: return "Misdirected Request";
+    case 426: return "Upgrade Required";
+    case 500: return "Internal Server Error";
+    default: return "Service Unavailable";
+  }
+}
+
+// The whole response; a HEAD request gets the same headers without the body.
 void SendBody(mg_connection* c, int status, const char* type, const std::string& body,
-              const char* extra_headers = "") {
-  const char* reason = status == 200 ? "OK" : status == 400 ? "Bad Request"
-                     : status == 404 ? "Not Found" : status == 405 ? "Method Not Allowed"
-                     : status == 413 ? "Payload Too Large" : "Service Unavailable";
+              const std::string& extra_headers = "") {
   mg_printf(c,
             "HTTP/1.1 %d %s\r\nContent-Type: %s\r\nContent-Length: %zu\r\n"
             "Cache-Control: no-store\r\nX-Content-Type-Options: nosniff\r\n%s"
             "Connection: close\r\n\r\n",
-            status, reason, type, body.size(), extra_headers);
-  mg_write(c, body.data(), body.size());
+            status, Reason(status), type, body.size(), extra_headers.c_str());
+  if (!IsHead(c)) mg_write(c, body.data(), body.size());
 }
 
-void SendError(mg_connection* c, int status, const std::string& message) {
-  std::string json = "{\"error\": \"";
+std::string JsonString(const std::string& message) {
+  std::string json = "\"";
   for (char ch : message) {  // the messages are ours (ASCII); escape what JSON needs
     if (ch == '"' || ch == '\\') json += '\\';
     if (static_cast<unsigned char>(ch) >= 0x20) json += ch;
   }
-  json += "\"}";
-  SendBody(c, status, "application/json", json);
+  return json + "\"";
 }
 
-// A viewer of /ws: its own sender thread takes the newest frame and the state when due.
+int SendError(mg_connection* c, int status, const std::string& message,
+              const std::string& extra_headers = "") {
+  SendBody(c, status, "application/json", "{\"error\": " + JsonString(message) + "}",
+           extra_headers);
+  return status;
+}
+
+// ---- SHA-1 and base64, for the WebSocket handshake's Sec-WebSocket-Accept (RFC 6455) --------
+std::string Sha1(const std::string& text) {
+  std::uint32_t h[5] = {0x67452301, 0xEFCDAB89, 0x98BADCFE, 0x10325476, 0xC3D2E1F0};
+  std::string m = text;
+  const std::uint64_t bits = static_cast<std::uint64_t>(text.size()) * 8;
+  m += '\x80';
+  while (m.size() % 64 != 56) m += '\0';
+  for (int i = 7; i >= 0; --i) m += static_cast<char>((bits >> (8 * i)) & 0xff);
+  auto rol = [](std::uint32_t x, int n) { return (x << n) | (x >> (32 - n)); };
+  for (std::size_t off = 0; off < m.size(); off += 64) {
+    std::uint32_t w[80];
+    for (int i = 0; i < 16; ++i)
+      w[i] = static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i])) << 24 |
+             static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i + 1])) << 16 |
+             static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i + 2])) << 8 |
+             static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i + 3]));
+    for (int i = 16; i < 80; ++i) w[i] = rol(w[i - 3] ^ w[i - 8] ^ w[i - 14] ^ w[i - 16], 1);
+    std::uint32_t a = h[0], b = h[1], cc = h[2], d = h[3], e = h[4];
+    for (int i = 0; i < 80; ++i) {
+      std::uint32_t f, k;
+      if (i < 20) f = (b & cc) | (~b & d), k = 0x5A827999;
+      else if (i < 40) f = b ^ cc ^ d, k = 0x6ED9EBA1;
+      else if (i < 60) f = (b & cc) | (b & d) | (cc & d), k = 0x8F1BBCDC;
+      else f = b ^ cc ^ d, k = 0xCA62C1D6;
+      const std::uint32_t t = rol(a, 5) + f + e + k + w[i];
+      e = d, d = cc, cc = rol(b, 30), b = a, a = t;
+    }
+    h[0] += a, h[1] += b, h[2] += cc, h[3] += d, h[4] += e;
+  }
+  std::string out;
+  for (std::uint32_t v : h)
+    for (int i = 3; i >= 0; --i) out += static_cast<char>((v >> (8 * i)) & 0xff);
+  return out;
+}
+
+std::string Base64(const std::string& bytes) {
+  static const char kAlphabet[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    std::uint32_t v = static_cast<unsigned char>(bytes[i]) << 16;
+    if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    if (i + 2 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 2]);
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[(v >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? kAlphabet[v & 63] : '=';
+  }
+  return out;
+}
+
+// ---- Sockets ----------------------------------------------------------------------------------
+// Sends all of `data` before `deadline`; false if the peer is gone or takes nothing meanwhile.
+bool SendAll(int fd, const char* data, std::size_t size, Clock::time_point deadline) {
+  while (size > 0) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    if (left.count() <= 0) return false;
+    pollfd p{fd, POLLOUT, 0};
+    const int r = ::poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
+    if (r < 0 && errno != EINTR) return false;
+    if (r <= 0) continue;
+    const ssize_t n = ::send(fd, data, size, MSG_NOSIGNAL | MSG_DONTWAIT);
+    if (n < 0) {
+      if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) continue;
+      return false;
+    }
+    data += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// The socket of the connection civetweb is serving `ri` on: the one whose peer and local port
+// are the request's (a TCP connection is unique by its two ends). -1 if none.
+int FindSocket(const mg_request_info* ri) {
+  in_addr want{};
+  if (inet_pton(AF_INET, ri->remote_addr, &want) != 1) return -1;
+  DIR* dir = opendir("/proc/self/fd");
+  if (!dir) return -1;
+  int found = -1;
+  while (dirent* e = readdir(dir)) {
+    char* end = nullptr;
+    const long fd = std::strtol(e->d_name, &end, 10);
+    if (end == e->d_name || *end != '\0') continue;
+    sockaddr_in peer{}, local{};
+    socklen_t n = sizeof peer, m = sizeof local;
+    if (getpeername(static_cast<int>(fd), reinterpret_cast<sockaddr*>(&peer), &n) != 0 ||
+        peer.sin_family != AF_INET || peer.sin_addr.s_addr != want.s_addr ||
+        ntohs(peer.sin_port) != ri->remote_port)
+      continue;
+    if (getsockname(static_cast<int>(fd), reinterpret_cast<sockaddr*>(&local), &m) == 0 &&
+        ntohs(local.sin_port) == ri->server_port) {
+      found = static_cast<int>(fd);
+      break;
+    }
+  }
+  closedir(dir);
+  return found;
+}
+
+// ---- WebSocket framing (RFC 6455), server side -----------------------------------------------
+enum : int { kWsContinuation = 0, kWsText = 1, kWsBinary = 2, kWsClose = 8, kWsPing = 9, kWsPong = 10 };
+
 struct WsViewer {
-  mg_connection* conn = nullptr;
-  std::thread sender;
+  int fd = -1;
+  std::mutex write_mu;  // one frame at a time on the socket: the sender's and the reader's
   std::atomic<bool> closed{false};
+
+  bool Write(int opcode, const char* data, std::size_t size) {
+    if (closed) return false;
+    char head[10];
+    std::size_t n = 2;
+    head[0] = static_cast<char>(0x80 | opcode);
+    if (size < 126) {
+      head[1] = static_cast<char>(size);
+    } else if (size <= 0xffff) {
+      head[1] = 126;
+      head[2] = static_cast<char>(size >> 8);
+      head[3] = static_cast<char>(size & 0xff);
+      n = 4;
+    } else {
+      head[1] = 127;
+      for (int i = 0; i < 8; ++i) head[2 + i] = static_cast<char>((std::uint64_t{size} >> (56 - 8 * i)) & 0xff);
+      n = 10;
+    }
+    std::lock_guard<std::mutex> lock(write_mu);
+    const auto deadline = Clock::now() + kWriteTimeout;
+    if (!SendAll(fd, head, n, deadline) || !SendAll(fd, data, size, deadline)) {
+      closed = true;
+      return false;
+    }
+    return true;
+  }
+  bool Write(int opcode, const std::string& s) { return Write(opcode, s.data(), s.size()); }
+  void Close(int code, const std::string& reason) {
+    std::string payload{static_cast<char>(code >> 8), static_cast<char>(code & 0xff)};
+    payload += reason.substr(0, 120);
+    Write(kWsClose, payload);
+    closed = true;
+  }
 };
 
+// Reads frames from what arrived: each one whole (a control message, a ping) is handed to
+// `on_frame`. A frame or message announcing more than kMaxWsMessageBytes, an unmasked frame
+// and the like are protocol errors returned as a close code before their payload is read, so
+// the buffer never holds more than one header and one control message.
+class WsParser {
+ public:
+  struct Frame {
+    int opcode;
+    std::string payload;
+  };
+  // 0 and the frames taken out of `in`, or a close code (1002 protocol, 1009 too big).
+  int Take(std::string& in, std::vector<Frame>& out) {
+    while (in.size() >= 2) {
+      const auto b0 = static_cast<unsigned char>(in[0]), b1 = static_cast<unsigned char>(in[1]);
+      const bool fin = b0 & 0x80, masked = b1 & 0x80;
+      const int opcode = b0 & 0x0f;
+      if ((b0 & 0x70) || !masked) return 1002;  // no extensions; clients must mask
+      std::size_t head = 2;
+      std::uint64_t len = b1 & 0x7f;
+      if (len == 126) head += 2;
+      if (len == 127) head += 8;
+      if (in.size() < head) return 0;
+      if (len == 126) len = static_cast<unsigned char>(in[2]) << 8 | static_cast<unsigned char>(in[3]);
+      if (len == 127) {
+        len = 0;
+        for (int i = 0; i < 8; ++i) len = len << 8 | static_cast<unsigned char>(in[2 + i]);
+      }
+      if (opcode >= 8) {
+        if (opcode > kWsPong || !fin || len > 125) return 1002;
+      } else {
+        if (opcode > kWsBinary) return 1002;
+        if ((opcode == kWsContinuation) != (message_opcode_ != 0)) return 1002;
+        if (len > kMaxWsMessageBytes - message_.size()) return 1009;  // before reading it
+      }
+      head += 4;
+      if (in.size() < head + len) return 0;
+      std::string payload = in.substr(head, len);
+      for (std::size_t i = 0; i < payload.size(); ++i) payload[i] ^= in[head - 4 + i % 4];
+      in.erase(0, head + len);
+      if (opcode >= 8) {
+        out.push_back({opcode, std::move(payload)});
+        continue;
+      }
+      if (opcode != kWsContinuation) message_opcode_ = opcode;
+      message_ += payload;
+      if (fin) {
+        out.push_back({message_opcode_, std::move(message_)});
+        message_.clear();
+        message_opcode_ = 0;
+      }
+    }
+    return 0;
+  }
+
+ private:
+  int message_opcode_ = 0;  // of a fragmented message under way
+  std::string message_;
+};
+
+// ---- The doors ----------------------------------------------------------------------------------
+// The host of a Host header or an Origin's authority, lower case, without the port; empty if
+// malformed (a port that is not a number, an unclosed bracket).
+std::string HostName(const std::string& authority) {
+  std::string host = authority, port;
+  if (!host.empty() && host[0] == '[') {
+    const std::size_t close = host.find(']');
+    if (close == std::string::npos) return "";
+    port = host.substr(close + 1);
+    host = host.substr(0, close + 1);
+    if (!port.empty() && port[0] != ':') return "";
+    if (!port.empty()) port.erase(0, 1);
+  } else if (const std::size_t colon = host.rfind(':'); colon != std::string::npos) {
+    port = host.substr(colon + 1);
+    host = host.substr(0, colon);
+  }
+  if (port.size() > 5 ||
+      !std::all_of(port.begin(), port.end(), [](unsigned char ch) { return std::isdigit(ch); }))
+    return "";
+  return Lower(host);
+}
+
+bool IsIpv4(const std::string& s) {
+  in_addr a{};
+  return inet_pton(AF_INET, s.c_str(), &a) == 1;
+}
+
+bool IsIpv6(const std::string& s) {
+  in6_addr a{};
+  return inet_pton(AF_INET6, s.c_str(), &a) == 1;
+}
+
+bool ConstantTimeEqual(const std::string& a, const std::string& b) {
+  if (a.size() != b.size()) return false;
+  unsigned char diff = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) diff |= static_cast<unsigned char>(a[i] ^ b[i]);
+  return diff == 0;
+}
+
 }  // namespace
+
+std::string BindAddressProblem(const std::string& bind) {
+  if (bind == "localhost" || IsIpv4(bind)) return "";
+  std::string v6 = bind;
+  if (v6.size() > 2 && v6.front() == '[' && v6.back() == ']') v6 = v6.substr(1, v6.size() - 2);
+  if (IsIpv6(v6)) {
+    if (mg_check_feature(8)) return "";
+    return "--bind: this build's civetweb has no IPv6; expected an IPv4 address such as "
+           "127.0.0.1, got \"" + bind + "\"";
+  }
+  std::string shown = bind.substr(0, 80);
+  for (char& ch : shown)
+    if (static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) >= 0x7f) ch = '?';
+  return "--bind: expected an IPv4 address such as 127.0.0.1 (or localhost), got \"" + shown + "\"";
+}
+
+bool IsLoopbackAddress(const std::string& bind) {
+  if (bind == "localhost" || bind == "::1" || bind == "[::1]") return true;
+  in_addr a{};
+  return inet_pton(AF_INET, bind.c_str(), &a) == 1 && (ntohl(a.s_addr) >> 24) == 127;
+}
+
+std::string MakeToken() {
+  std::ifstream in("/dev/urandom", std::ios::binary);
+  unsigned char bytes[16];
+  if (!in.read(reinterpret_cast<char*>(bytes), sizeof bytes))
+    throw Error("live: cannot read /dev/urandom for the access token");
+  static const char kHex[] = "0123456789abcdef";
+  std::string token;
+  for (unsigned char b : bytes) {
+    token += kHex[b >> 4];
+    token += kHex[b & 15];
+  }
+  return token;
+}
 
 struct LiveServer::Impl {
   LiveSession& session;
   ServerOptions options;
+  std::string listen_address;  // what civetweb listens on ("localhost" is 127.0.0.1)
   mg_context* ctx = nullptr;
   int port = 0;
-  std::mutex mu;
-  std::map<const mg_connection*, std::unique_ptr<WsViewer>> ws_viewers;
   std::atomic<int> streams{0};  // WebSocket and MJPEG viewers
+  std::atomic<bool> stopping{false};
 
-  Impl(LiveSession& s, const ServerOptions& o) : session(s), options(o) {}
+  Impl(LiveSession& s, const ServerOptions& o)
+      : session(s), options(o), listen_address(o.bind == "localhost" ? "127.0.0.1" : o.bind) {}
 
   bool TakeStreamSlot() {
     if (streams.fetch_add(1) >= options.max_viewers) {
@@ -74,40 +402,107 @@ struct LiveServer::Impl {
     session.AddViewer(-1);
   }
 
+  // A Host this server answers to: a DNS name other than localhost is refused, so a page of a
+  // name rebound to this address cannot reach it.
+  bool HostAllowed(const char* header) const {
+    if (!header) return true;  // HTTP/1.0 without Host: nothing was resolved by name
+    const std::string host = HostName(header);
+    if (host.empty()) return false;
+    if (host == "localhost" || host == "127.0.0.1" || host == "[::1]") return true;
+    const std::string bound = Lower(listen_address);
+    if (host == bound || host == "[" + bound + "]") return true;
+    // Bound to every interface: any of the machine's addresses, so any address literal.
+    if (bound == "0.0.0.0" || bound == "::" || bound == "[::]")
+      return IsIpv4(host) || (host.size() > 2 && host.front() == '[' && IsIpv6(host.substr(1, host.size() - 2)));
+    return false;
+  }
+
+  // A request made by a page of another origin: its Origin is not this server as its Host
+  // names it, or the browser says it comes from another site.
+  static bool Foreign(const mg_connection* c) {
+    const char* origin = mg_get_header(c, "Origin");
+    if (origin) {
+      const char* host = mg_get_header(c, "Host");
+      if (!host || Lower(origin) != "http://" + Lower(host)) return true;
+    }
+    const char* site = mg_get_header(c, "Sec-Fetch-Site");
+    return Equal(site, "cross-site") || Equal(site, "same-site");
+  }
+
+  // The token from ?token= or the cookie; empty if none.
+  static std::string OfferedToken(const mg_connection* c, bool* from_query) {
+    const mg_request_info* ri = mg_get_request_info(c);
+    char value[128];
+    *from_query = false;
+    if (ri->query_string && mg_get_var(ri->query_string, std::strlen(ri->query_string), "token",
+                                       value, sizeof value) > 0) {
+      *from_query = true;
+      return value;
+    }
+    const char* cookie = mg_get_header(c, "Cookie");
+    if (cookie && mg_get_cookie(cookie, kTokenCookie, value, sizeof value) > 0) return value;
+    return "";
+  }
+
   // ---- HTTP ----------------------------------------------------------------------------------
   int Handle(mg_connection* c) {
     const mg_request_info* ri = mg_get_request_info(c);
     const std::string uri = ri->local_uri ? ri->local_uri : "";
     const std::string method = ri->request_method ? ri->request_method : "";
+    if (!HostAllowed(mg_get_header(c, "Host")))
+      return SendError(c, 421, "this server answers to " + listen_address +
+                                   ", 127.0.0.1 or localhost, not the Host this request names");
+    std::string cookie_header;
+    if (!options.token.empty()) {
+      bool from_query = false;
+      if (!ConstantTimeEqual(OfferedToken(c, &from_query), options.token))
+        return SendError(c, 401, "this live view needs the token of the address it printed "
+                                 "(http://...:PORT/?token=...)");
+      // Kept by the page for its own requests (its WebSocket cannot carry a header).
+      if (from_query)
+        cookie_header = std::string("Set-Cookie: ") + kTokenCookie + "=" + options.token +
+                        "; Path=/; HttpOnly; SameSite=Strict\r\n";
+    }
+    const PageAsset* asset = FindPageAsset(uri);
+    // The page itself may be opened from a link anywhere; everything else (state, frames,
+    // controls, streams, recordings) only from the page.
+    if (!asset && Foreign(c))
+      return SendError(c, 403, "requests from another site's page are refused");
     const bool get = method == "GET" || method == "HEAD";
     if (uri == "/control") {
-      if (method != "POST") {
-        SendError(c, 405, "/control takes POST with a JSON object");
-        return 405;
-      }
+      if (method != "POST")
+        return SendError(c, 405, "/control takes POST with a JSON object", "Allow: POST\r\n");
       return HandleControl(c, ri);
     }
-    if (!get) {
-      SendError(c, 405, uri + " takes GET");
-      return 405;
+    if (uri == "/ws") {
+      if (method != "GET") return SendError(c, 405, "/ws takes a WebSocket upgrade (GET)", "Allow: GET\r\n");
+      return HandleWebSocket(c, ri);
     }
+    if (!get) return SendError(c, 405, uri.substr(0, 100) + " takes GET", "Allow: GET, HEAD\r\n");
     if (uri == "/state") {
       SendBody(c, 200, "application/json", session.StateJson());
       return 200;
     }
     if (uri == "/frame.jpg") {
-      const auto frame = session.NewestFrame();
+      if (IsHead(c)) {
+        SendBody(c, 200, "image/jpeg", "");
+        return 200;
+      }
+      const auto frame = session.FreshFrame(std::chrono::milliseconds(2000));
       SendBody(c, 200, "image/jpeg", std::string(frame->jpeg(), frame->jpeg_size()));
       return 200;
     }
     if (uri == "/snapshot.png") {
       const std::string name = "Content-Disposition: attachment; filename=\"" +
                                session.scene_name() + "-t" + std::to_string(frame_t()) + ".png\"\r\n";
+      if (IsHead(c)) {
+        SendBody(c, 200, "image/png", "", name);
+        return 200;
+      }
       try {
-        SendBody(c, 200, "image/png", session.SnapshotPng(), name.c_str());
+        SendBody(c, 200, "image/png", session.SnapshotPng(), name);
       } catch (const std::exception& e) {
-        SendError(c, 503, e.what());
-        return 503;
+        return SendError(c, 503, e.what());
       }
       return 200;
     }
@@ -115,19 +510,16 @@ struct LiveServer::Impl {
     if (uri == "/stream.mjpg") return HandleMjpeg(c);
     if (uri.rfind("/recordings/", 0) == 0) {
       const std::string path = session.RecordingPath(uri.substr(std::strlen("/recordings/")));
-      if (path.empty()) {
-        SendError(c, 404, "no such recording of this session");
-        return 404;
-      }
-      mg_send_mime_file(c, path.c_str(), "video/mp4");
+      if (path.empty()) return SendError(c, 404, "no such recording of this session");
+      mg_send_mime_file(c, path.c_str(), "video/mp4");  // answers HEAD without the body
       return 200;
     }
-    if (const PageAsset* a = FindPageAsset(uri)) {
-      SendBody(c, 200, a->mime_type, std::string(reinterpret_cast<const char*>(a->data), a->size));
+    if (asset) {
+      SendBody(c, 200, asset->mime_type,
+               std::string(reinterpret_cast<const char*>(asset->data), asset->size), cookie_header);
       return 200;
     }
-    SendError(c, 404, "not found: " + uri.substr(0, 100));
-    return 404;
+    return SendError(c, 404, "not found: " + uri.substr(0, 100));
   }
 
   long frame_t() const {
@@ -136,11 +528,9 @@ struct LiveServer::Impl {
   }
 
   int HandleControl(mg_connection* c, const mg_request_info* ri) {
-    if (ri->content_length > static_cast<long long>(kMaxControlBytes)) {
-      SendError(c, 413, "control: expected a JSON object of at most " +
-                            std::to_string(kMaxControlBytes) + " bytes");
-      return 413;
-    }
+    if (ri->content_length > static_cast<long long>(kMaxControlBytes))
+      return SendError(c, 413, "control: expected a JSON object of at most " +
+                                   std::to_string(kMaxControlBytes) + " bytes");
     std::string body;
     char buf[1024];
     int n;
@@ -159,23 +549,34 @@ struct LiveServer::Impl {
               "HTTP/1.1 200 OK\r\nContent-Type: text/csv\r\nCache-Control: no-store\r\n"
               "Content-Disposition: attachment; filename=\"%s\"\r\nConnection: close\r\n\r\n",
               name.c_str());
+    if (IsHead(c)) return 200;
     session.ReadTimeseries([&](const char* data, std::size_t size) {
       return mg_write(c, data, size) > 0;
     });
     return 200;
   }
 
+  int TooMany(mg_connection* c) {
+    return SendError(c, 503, "too many viewers (at most " + std::to_string(options.max_viewers) +
+                                 " streams at once); try again later",
+                     "Retry-After: 5\r\n");
+  }
+
   int HandleMjpeg(mg_connection* c) {
-    if (!TakeStreamSlot()) {
-      SendError(c, 503, "too many viewers (at most " + std::to_string(options.max_viewers) + ")");
-      return 503;
+    if (IsHead(c)) {
+      mg_printf(c,
+                "HTTP/1.1 200 OK\r\nContent-Type: multipart/x-mixed-replace; boundary=%s\r\n"
+                "Cache-Control: no-store\r\nConnection: close\r\n\r\n",
+                kBoundary);
+      return 200;
     }
+    if (!TakeStreamSlot()) return TooMany(c);
     mg_printf(c,
               "HTTP/1.1 200 OK\r\nContent-Type: multipart/x-mixed-replace; boundary=%s\r\n"
               "Cache-Control: no-store\r\nConnection: close\r\n\r\n--%s\r\n",
               kBoundary, kBoundary);
     std::uint64_t last = 0;
-    while (!session.stopped()) {
+    while (!session.stopped() && !stopping) {
       const auto frame = session.WaitFrame(last, std::chrono::milliseconds(500));
       if (!frame) continue;
       last = frame->number;
@@ -197,92 +598,131 @@ struct LiveServer::Impl {
   }
 
   // ---- WebSocket -----------------------------------------------------------------------------
-  int WsConnect() { return streams >= options.max_viewers ? 1 : 0; }  // 1: refused
-
-  void WsReady(mg_connection* c) {
-    if (!TakeStreamSlot()) {  // raced past WsConnect's check: refuse politely
-      const char why[] = "\x03\xf5too many viewers";  // close code 1013: try again later
-      mg_websocket_write(c, MG_WEBSOCKET_OPCODE_CONNECTION_CLOSE, why, sizeof why - 1);
-      return;
+  // Served here rather than by civetweb's WebSocket support: civetweb (1.15) reads each frame
+  // whole into memory before a handler sees it, whatever its header announces (up to 2 GiB),
+  // with no option to limit it. After the handshake this worker reads the frames itself from
+  // the connection's socket, refusing an oversized one by its header, while a thread of the
+  // viewer's own writes the frames and the state.
+  int HandleWebSocket(mg_connection* c, const mg_request_info* ri) {
+    const char* upgrade = mg_get_header(c, "Upgrade");
+    const char* key = mg_get_header(c, "Sec-WebSocket-Key");
+    const char* version = mg_get_header(c, "Sec-WebSocket-Version");
+    const char* connection = mg_get_header(c, "Connection");
+    if (!Equal(upgrade, "websocket") || !connection ||
+        Lower(connection).find("upgrade") == std::string::npos)
+      return SendError(c, 426, "/ws is a WebSocket: expected Upgrade: websocket", "Upgrade: websocket\r\n");
+    if (!key || std::strlen(key) != 24 || !Equal(version, "13"))
+      return SendError(c, 400, "/ws: expected Sec-WebSocket-Key (24 characters) and Sec-WebSocket-Version: 13",
+                       "Sec-WebSocket-Version: 13\r\n");
+    if (IsHead(c)) return SendError(c, 405, "/ws takes GET");
+    const int fd = FindSocket(ri);
+    if (fd < 0) return SendError(c, 500, "/ws: the connection's socket was not found");
+    if (!TakeStreamSlot()) return TooMany(c);
+    const std::string accept = Base64(Sha1(std::string(key) + "258EAFA5-E914-47DA-95CA-C5AB0DC85B11"));
+    const std::string response =
+        "HTTP/1.1 101 Switching Protocols\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+        "Sec-WebSocket-Accept: " + accept + "\r\n\r\n";
+    WsViewer viewer;
+    viewer.fd = fd;
+    if (SendAll(fd, response.data(), response.size(), Clock::now() + kWriteTimeout)) {
+      std::thread sender([this, &viewer] { WsSend(&viewer); });
+      WsRead(&viewer);
+      viewer.closed = true;
+      sender.join();
     }
-    auto viewer = std::make_unique<WsViewer>();
-    viewer->conn = c;
-    WsViewer* v = viewer.get();
-    {
-      std::lock_guard<std::mutex> lock(mu);
-      ws_viewers[c] = std::move(viewer);
-    }
-    v->sender = std::thread([this, v] { WsSend(v); });
+    ReleaseStreamSlot();
+    return 101;
   }
 
   void WsSend(WsViewer* v) {
     std::uint64_t last = 0, state_sent = ~0ull;
-    auto next_state = std::chrono::steady_clock::now();
-    while (!v->closed && !session.stopped()) {
+    auto next_state = Clock::now();
+    while (!v->closed && !session.stopped() && !stopping) {
       const auto frame = session.WaitFrame(last, std::chrono::milliseconds(100));
       if (v->closed) break;
       if (frame) {
         last = frame->number;
-        if (mg_websocket_write(v->conn, MG_WEBSOCKET_OPCODE_BINARY, frame->message.data(),
-                               frame->message.size()) <= 0)
-          break;
+        if (!v->Write(kWsBinary, frame->message)) break;
       }
-      const auto now = std::chrono::steady_clock::now();
+      const auto now = Clock::now();
       const std::uint64_t version = session.state_version();
       if (now >= next_state || version != state_sent) {
         std::string msg = session.StateJson();
         msg.insert(1, "\"type\": \"state\", ");
-        if (mg_websocket_write(v->conn, MG_WEBSOCKET_OPCODE_TEXT, msg.data(), msg.size()) <= 0)
-          break;
+        if (!v->Write(kWsText, msg)) break;
         state_sent = version;
         next_state = now + kStateEvery;
       }
     }
+    v->closed = true;
   }
 
-  int WsData(mg_connection* c, int bits, char* data, std::size_t size) {
-    const int opcode = bits & 0x0f;
-    if (opcode == MG_WEBSOCKET_OPCODE_CONNECTION_CLOSE) return 0;
-    if (opcode != MG_WEBSOCKET_OPCODE_TEXT) return 1;  // pings are answered by civetweb
-    const LiveSession::Reply r = session.Control(std::string(data, size));
-    std::string msg = r.status == 200
-                          ? "{\"type\": \"reply\", \"ok\": true, \"state\": " + r.json + "}"
-                          : "{\"type\": \"reply\", \"ok\": false, " + r.json.substr(1);
-    mg_websocket_write(c, MG_WEBSOCKET_OPCODE_TEXT, msg.data(), msg.size());
-    return 1;
-  }
-
-  void WsClose(const mg_connection* c) {
-    std::unique_ptr<WsViewer> viewer;
-    {
-      std::lock_guard<std::mutex> lock(mu);
-      auto it = ws_viewers.find(c);
-      if (it != ws_viewers.end()) {
-        viewer = std::move(it->second);
-        ws_viewers.erase(it);
+  void WsRead(WsViewer* v) {
+    WsParser parser;
+    std::string in;
+    std::vector<WsParser::Frame> frames;
+    auto last_heard = Clock::now(), last_ping = last_heard;
+    while (!v->closed && !session.stopped() && !stopping) {
+      pollfd p{v->fd, POLLIN, 0};
+      const int r = ::poll(&p, 1, 200);
+      if (r < 0 && errno != EINTR) break;
+      const auto now = Clock::now();
+      if (r > 0) {
+        char buf[4096];
+        const ssize_t n = ::recv(v->fd, buf, sizeof buf, MSG_DONTWAIT);
+        if (n == 0) break;  // the viewer hung up
+        if (n < 0) {
+          if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) continue;
+          break;
+        }
+        in.append(buf, static_cast<std::size_t>(n));
+        last_heard = now;
+        frames.clear();
+        const int error = parser.Take(in, frames);
+        for (const WsParser::Frame& f : frames) {
+          if (f.opcode == kWsClose) {
+            v->Close(1000, "");
+            return;
+          }
+          if (f.opcode == kWsPing) v->Write(kWsPong, f.payload);
+          if (f.opcode == kWsText || f.opcode == kWsBinary) WsControl(v, f);
+        }
+        if (error) {
+          v->Close(error, error == 1009 ? "a message is at most " + std::to_string(kMaxWsMessageBytes) + " bytes"
+                                        : "protocol error");
+          return;
+        }
+      }
+      if (now - last_heard > kWsIdle) {
+        v->Close(1001, "idle");
+        return;
+      }
+      if (now - last_ping > kWsPingEvery) {
+        v->Write(kWsPing, "", 0);
+        last_ping = now;
       }
     }
-    if (!viewer) return;  // refused in WsReady: holds no slot
-    // The connection is still valid here (civetweb frees it after this returns): the sender
-    // must be done with it first. A blocked write ends with the socket's timeout.
-    viewer->closed = true;
-    if (viewer->sender.joinable()) viewer->sender.join();
-    ReleaseStreamSlot();
+    if (!v->closed) v->Close(1001, "the live view is stopping");
+  }
+
+  void WsControl(WsViewer* v, const WsParser::Frame& f) {
+    const LiveSession::Reply r = f.opcode == kWsText
+        ? session.Control(f.payload)
+        : LiveSession::Reply{400, "{\"error\": \"controls are JSON text messages, not binary\"}"};
+    const std::string msg = r.status == 200
+                                ? "{\"type\": \"reply\", \"ok\": true, \"state\": " + r.json + "}"
+                                : "{\"type\": \"reply\", \"ok\": false, " + r.json.substr(1);
+    v->Write(kWsText, msg);
   }
 };
 
 namespace {
 
-int OnRequest(mg_connection* c, void* impl) { return static_cast<LiveServer::Impl*>(impl)->Handle(c); }
-int OnWsConnect(const mg_connection*, void* impl) {
-  return static_cast<LiveServer::Impl*>(impl)->WsConnect();
-}
-void OnWsReady(mg_connection* c, void* impl) { static_cast<LiveServer::Impl*>(impl)->WsReady(c); }
-int OnWsData(mg_connection* c, int bits, char* data, std::size_t size, void* impl) {
-  return static_cast<LiveServer::Impl*>(impl)->WsData(c, bits, data, size);
-}
-void OnWsClose(const mg_connection* c, void* impl) {
-  static_cast<LiveServer::Impl*>(impl)->WsClose(c);
+// Every request, before civetweb's own handling (its CORS preflight answers, its WebSocket
+// upgrade): a status > 0 tells it the request was answered.
+int OnBeginRequest(mg_connection* c) {
+  const mg_request_info* ri = mg_get_request_info(c);
+  return static_cast<LiveServer::Impl*>(ri->user_data)->Handle(c);
 }
 int OnLog(const mg_connection*, const char*) { return 1; }  // quiet: errors reach the viewer
 
@@ -292,26 +732,27 @@ LiveServer::LiveServer(LiveSession& session, const ServerOptions& options)
     : impl_(std::make_unique<Impl>(session, options)) {
   if (options.port < 0 || options.port > 65535)
     throw Error("live: --port must be 0..65535, got " + std::to_string(options.port));
-  if (options.bind.empty() || options.bind.find_first_of(":/ ,") != std::string::npos)
-    throw Error("live: --bind expects an IPv4 address such as 127.0.0.1, got \"" + options.bind + "\"");
+  if (const std::string why = BindAddressProblem(options.bind); !why.empty())
+    throw Error("live: " + why);
   mg_init_library(0);
-  const std::string ports = options.bind + ":" + std::to_string(options.port);
-  const std::string threads = std::to_string(options.max_viewers + 16);
-  // Nagle's algorithm would hold each frame's tail for ~25 ms: off. Socket operations time
-  // out after 10 s, which bounds a write to a stalled viewer; WebSocket pings keep idle
-  // viewers and detect dead ones.
+  const std::string& address = impl_->listen_address;
+  const std::string ports = (IsIpv6(address) ? "[" + address + "]" : address) + ":" +
+                            std::to_string(options.port);
+  const std::string threads = std::to_string(options.max_viewers + kSpareWorkers);
+  // Nagle's algorithm would hold each frame's tail for ~25 ms: off. No CORS: civetweb's
+  // default answers preflights with Access-Control-Allow-Origin: *, which lets any page's
+  // script read and steer the view.
   const char* opts[] = {"listening_ports", ports.c_str(), "num_threads", threads.c_str(),
-                        "tcp_nodelay", "1", "request_timeout_ms", "10000",
-                        "websocket_timeout_ms", "10000", "enable_websocket_ping_pong", "yes",
-                        "enable_keep_alive", "no", nullptr};
+                        "tcp_nodelay", "1", "request_timeout_ms", kRequestTimeoutMs,
+                        "enable_keep_alive", "no", "access_control_allow_origin", "",
+                        "access_control_allow_methods", "", "access_control_allow_headers", "",
+                        nullptr};
   mg_callbacks callbacks{};
   callbacks.log_message = OnLog;
+  callbacks.begin_request = OnBeginRequest;
   impl_->ctx = mg_start(&callbacks, impl_.get(), opts);
   if (!impl_->ctx)
     throw Error("live: cannot listen on " + ports + " (in use, or not an address of this machine)");
-  mg_set_websocket_handler(impl_->ctx, "/ws$", OnWsConnect, OnWsReady, OnWsData, OnWsClose,
-                           impl_.get());
-  mg_set_request_handler(impl_->ctx, "/", OnRequest, impl_.get());
   mg_server_port p[4]{};
   if (mg_get_server_ports(impl_->ctx, 4, p) < 1) {
     mg_stop(impl_->ctx);
@@ -321,13 +762,17 @@ LiveServer::LiveServer(LiveSession& session, const ServerOptions& options)
 }
 
 LiveServer::~LiveServer() {
+  impl_->stopping = true;  // streams end within their poll interval
   if (impl_->ctx) mg_stop(impl_->ctx);
 }
 
 int LiveServer::port() const { return impl_->port; }
 
 std::string LiveServer::url() const {
-  return "http://" + impl_->options.bind + ":" + std::to_string(impl_->port) + "/";
+  const std::string& a = impl_->listen_address;
+  std::string u = "http://" + (IsIpv6(a) ? "[" + a + "]" : a) + ":" + std::to_string(impl_->port) + "/";
+  if (!impl_->options.token.empty()) u += "?token=" + impl_->options.token;
+  return u;
 }
 
 }  // namespace cablefilm

@@ -3,6 +3,12 @@
 // JPEG, PNG snapshot), the state and the controls, the time series and the recordings. Each
 // viewer's stream is written by a thread of its own that only ever takes the session's newest
 // frame, so a slow or stalled viewer loses frames and slows nobody else.
+//
+// Its doors: a request must name this server in its Host header (the bound address or a
+// loopback name: a DNS-rebound name is refused), a request from another site's page (Origin,
+// Sec-Fetch-Site) may load the page but not steer, stream or start work, and no CORS header is
+// ever sent. Bound beyond loopback, every request also needs the token of the printed URL
+// (kept by the page as an HttpOnly, SameSite=Strict cookie).
 #include <memory>
 #include <string>
 
@@ -14,7 +20,20 @@ struct ServerOptions {
   std::string bind = "127.0.0.1";  // the address to listen on
   int port = 8080;                 // 0: any free port
   int max_viewers = 32;            // streams (WebSocket + MJPEG) at once; more get 503
+  std::string token;               // empty: none asked (loopback); else every request needs it
 };
+
+// Why `bind` cannot be listened on ("" if it can): an IPv4 address or "localhost" (and an
+// IPv6 address where civetweb was built with IPv6). Checked before anything is loaded.
+std::string BindAddressProblem(const std::string& bind);
+// 127.0.0.0/8, ::1 and localhost: only this machine can connect.
+bool IsLoopbackAddress(const std::string& bind);
+// 128 bits from /dev/urandom as 32 hex digits; throws Error if it cannot be read.
+std::string MakeToken();
+
+// The largest WebSocket message (a control) taken; a frame announcing more closes the
+// connection (1009) before any of it is read.
+constexpr std::size_t kMaxWsMessageBytes = kMaxControlBytes;
 
 class LiveServer {
  public:
@@ -25,7 +44,7 @@ class LiveServer {
   LiveServer& operator=(const LiveServer&) = delete;
 
   int port() const;
-  std::string url() const;  // http://ADDRESS:PORT/
+  std::string url() const;  // http://ADDRESS:PORT/ (with ?token=... when one is needed)
 
   struct Impl;
 

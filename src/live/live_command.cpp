@@ -8,6 +8,7 @@
 
 #include "live/http_server.h"
 #include "live/live_session.h"
+#include "core/error.h"
 #include "scene/scene_loader.h"
 
 namespace cablefilm {
@@ -19,13 +20,12 @@ extern "C" void OnLiveSignal(int sig) {
   g_live_signal = sig;
 }
 
-bool IsLoopback(const std::string& address) {
-  return address.rfind("127.", 0) == 0 || address == "localhost";
-}
-
 }  // namespace
 
 int LiveCommand(const std::string& scene_path, const LiveCommandOptions& o) {
+  // A bad address is refused before the scene is loaded and simulated to equilibrium.
+  if (const std::string why = BindAddressProblem(o.bind); !why.empty()) throw Error("live: " + why);
+  const bool loopback = IsLoopbackAddress(o.bind);
   const SceneDef scene = LoadScene(scene_path);
   LiveOptions lo;
   lo.width = o.width;
@@ -42,11 +42,13 @@ int LiveCommand(const std::string& scene_path, const LiveCommandOptions& o) {
   ServerOptions so;
   so.bind = o.bind;
   so.port = o.port;
+  // Beyond loopback other machines can connect: each request needs the printed URL's token.
+  if (!loopback) so.token = MakeToken();
   LiveServer server(session, so);
-  if (!IsLoopback(o.bind))
+  if (!loopback)
     std::fprintf(stderr,
-                 "cablefilm: warning: serving on %s: anyone who can reach this address can watch "
-                 "and steer the simulation (there is no authentication)\n",
+                 "cablefilm: warning: serving on %s: anyone with the printed address (its "
+                 "token) can watch and steer the simulation; the connection is not encrypted\n",
                  o.bind.c_str());
   std::printf("live view at %s\n", server.url().c_str());
   std::fflush(stdout);

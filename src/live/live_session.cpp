@@ -93,6 +93,11 @@ double Seconds(Clock::time_point a, Clock::time_point b) {
 // A number JSON can carry: the state never says NaN.
 double Finite(double v) { return std::isfinite(v) ? v : 0; }
 
+// An end as the film's legend names it.
+const char* EndKindName(const EndMotion& m) {
+  return m.moves() ? "moving" : m.kind() == EndKind::kFree ? "free" : "fixed";
+}
+
 }  // namespace
 
 LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
@@ -113,6 +118,8 @@ LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
     throw Error("live: --speed must be in [0.1, 10], got " + std::to_string(speed_));
   Colormap check(colormap_);  // an unknown name fails here, naming the known ones
   targets_ = sim_.targets();
+  start_kind_ = EndKindName(sim_.model().end_motion(0));
+  end_kind_ = EndKindName(sim_.model().end_motion(sim_.model().line.links));
   {
     std::lock_guard<std::mutex> lock(mu_);
     history_.SetWave(sim_.wave());
@@ -324,6 +331,12 @@ void LiveSession::RenderLoop() {
   }
   std::unique_ptr<VideoEncoder> video;
   Recording current;
+  // The film's clock [s]: it advances by the simulated time between the frames drawn, divided
+  // by the speed it ran at, so the film plays at the pace it was watched (at 1x, the simulated
+  // time it covers). The render thread draws only the newest state and may skip some: the
+  // frames it missed are made up by repeating the one drawn, rather than the film running
+  // short (a timestamped film would need a variable frame rate the encoder does not write).
+  double film_clock = 0, film_last_t = 0;
   std::uint64_t drawn_input = 0, drawn_view = ~0ull, number = 0;
   // Drawn into, then published as the newest still (for /snapshot.png); the still it replaces
   // becomes the next canvas unless a reader still holds it: no copy of the image per frame.
@@ -334,6 +347,7 @@ void LiveSession::RenderLoop() {
       video->Finish();
       std::lock_guard<std::mutex> lock(mu_);
       current.frames = video->frames_added();
+      current.t_end = film_last_t;
       recordings_.push_back(current);
       std::printf("live: wrote %s (%ld frames)\n", current.path.c_str(), current.frames);
       std::fflush(stdout);
@@ -349,23 +363,30 @@ void LiveSession::RenderLoop() {
   while (true) {
     LiveFrameInput input;
     std::string colormap;
-    std::uint64_t seq = 0;
+    std::uint64_t seq = 0, fresh = 0;
+    double speed = 1;
     bool want_record = false;
     {
       std::unique_lock<std::mutex> lock(mu_);
-      render_cv_.wait(lock, [&] {
-        return stop_ || input_version_ != drawn_input || view_version_ != drawn_view ||
-               record_wanted_ != recording_;
-      });
+      // Nobody watching, nothing asked: no drawing, no encoding (the first frame is drawn
+      // regardless, for the constructor).
+      auto changed = [&] {
+        const bool watching = viewers_ > 0 || recording_ || record_wanted_ || !frame_;
+        return fresh_wanted_ != fresh_done_ ||
+               (watching && (input_version_ != drawn_input || view_version_ != drawn_view));
+      };
+      render_cv_.wait(lock, [&] { return stop_ || changed() || record_wanted_ != recording_; });
       if (stop_) break;
       want_record = record_wanted_;
-      const bool redraw = input_version_ != drawn_input || view_version_ != drawn_view;
+      const bool redraw = changed();
+      if (!redraw && want_record == recording_) continue;
       drawn_input = input_version_;
       drawn_view = view_version_;
-      if (!redraw && want_record == recording_) continue;
+      fresh = fresh_wanted_;
       input = history_.MakeInput(StatusLocked());
       colormap = colormap_;
       seq = seq_applied_;
+      speed = speed_;
     }
     if (want_record && !video) {
       char stamp[32];
@@ -373,7 +394,7 @@ void LiveSession::RenderLoop() {
       std::tm tm{};
       localtime_r(&now, &tm);
       std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
-      current = Recording{std::string("live-") + stamp + ".mp4", "", 0};
+      current = Recording{std::string("live-") + stamp + ".mp4", "", 0, input.snapshot.t, input.snapshot.t};
       current.path = options_.out_dir + "/" + current.name;
       try {
         std::filesystem::create_directories(options_.out_dir);
@@ -383,6 +404,8 @@ void LiveSession::RenderLoop() {
         vo.fps = options_.fps;
         vo.threads = 1;  // the machine's cores belong to the simulation and the viewers
         video = std::make_unique<VideoEncoder>(current.path, vo);
+        film_clock = 0;
+        film_last_t = input.snapshot.t;
         std::lock_guard<std::mutex> lock(mu_);
         recording_ = true;
         record_error_.clear();
@@ -416,12 +439,22 @@ void LiveSession::RenderLoop() {
         out->message[16 + i] = static_cast<char>((out->seq >> (8 * i)) & 0xff);
       }
       out->message += bytes;
-      if (video) video->AddFrame(*canvas);
+      if (video) {
+        const double dt = input.snapshot.t - film_last_t;  // < 0 after a restart
+        // At most a second per frame: a speed changed between two frames cannot flood it.
+        if (dt > 0) film_clock += std::min(dt / speed, 1.0);
+        film_last_t = input.snapshot.t;
+        const long due = 1 + std::lround(film_clock * options_.fps);
+        while (video->frames_added() < due) video->AddFrame(*canvas);
+      }
       std::shared_ptr<const Image> previous;
       const double now = Seconds(start_, Clock::now());
       {
         std::lock_guard<std::mutex> lock(mu_);
         frame_ = std::move(out);
+        frame_input_ = drawn_input;
+        frame_view_ = drawn_view;
+        if (fresh > fresh_done_) fresh_done_ = fresh;
         previous = std::move(image_);
         image_ = std::move(canvas);
         frame_times_.push_back(now);
@@ -435,6 +468,7 @@ void LiveSession::RenderLoop() {
     } catch (const std::exception& e) {
       std::lock_guard<std::mutex> lock(mu_);
       render_error_ = e.what();
+      if (fresh > fresh_done_) fresh_done_ = fresh;  // the asker gets the newest there is
       ++state_version_;
       frame_cv_.notify_all();
     }
@@ -483,10 +517,12 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     }
     if (r.speed) speed_ = *r.speed;
     if (r.colormap) colormap_ = *r.colormap;
+    if (r.reset_range) history_.ResetRange();  // first: a range or lock sent with it wins
     if (r.tension_range) history_.SetRange((*r.tension_range)[0], (*r.tension_range)[1]);
     if (r.lock_range) history_.LockRange(*r.lock_range);
     if (r.record) record_wanted_ = *r.record;
-    if (r.colormap || r.tension_range || r.lock_range || r.pause || r.speed) ++view_version_;
+    if (r.colormap || r.tension_range || r.lock_range || r.reset_range || r.pause || r.speed)
+      ++view_version_;
     ++state_version_;
   }
   sim_cv_.notify_all();
@@ -508,7 +544,9 @@ std::string LiveSession::StateJsonLocked() const {
   }
   Json recordings = Json::array();
   for (const Recording& r : recordings_)
-    recordings.push_back({{"name", r.name}, {"url", "/recordings/" + r.name}, {"frames", r.frames}});
+    recordings.push_back({{"name", r.name}, {"url", "/recordings/" + r.name}, {"frames", r.frames},
+                          {"seconds", r.frames / options_.fps},
+                          {"t_start", Finite(r.t_start)}, {"t_end", Finite(r.t_end)}});
   Json j{
       {"t", Finite(t_)},
       {"frame", frame_ ? frame_->number : 0},
@@ -519,6 +557,7 @@ std::string LiveSession::StateJsonLocked() const {
       {"amplitude_scale", targets_.amplitude_scale},
       {"period", sim_.has_driven_end() ? Json(targets_.period) : Json(nullptr)},
       {"has_period", sim_.has_driven_end()},
+      {"ends", {{"start", start_kind_}, {"end", end_kind_}}},
       {"current", targets_.current},
       {"current_now", Finite(current_now_)},
       {"wave_height", limits_.has_waves ? Json(targets_.wave_height) : Json(nullptr)},
@@ -568,7 +607,32 @@ std::shared_ptr<const LiveFrame> LiveSession::WaitFrame(std::uint64_t after,
   return frame_;
 }
 
-std::string LiveSession::SnapshotPng() const {
+void LiveSession::AddViewer(int delta) {
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    viewers_ += delta;
+  }
+  render_cv_.notify_all();  // a first viewer gets the state now, not the one last drawn
+}
+
+std::uint64_t LiveSession::frames_drawn() const {
+  std::lock_guard<std::mutex> lock(mu_);
+  return frame_ ? frame_->number : 0;
+}
+
+std::shared_ptr<const LiveFrame> LiveSession::FreshFrame(std::chrono::milliseconds timeout) {
+  std::unique_lock<std::mutex> lock(mu_);
+  const bool watching = viewers_ > 0 || recording_;
+  const bool current = frame_input_ == input_version_ && frame_view_ == view_version_;
+  if (watching || current || stop_) return frame_;  // being drawn anyway, or still true
+  const std::uint64_t want = ++fresh_wanted_;
+  render_cv_.notify_all();
+  frame_cv_.wait_for(lock, timeout, [&] { return stop_ || fresh_done_ >= want; });
+  return frame_;
+}
+
+std::string LiveSession::SnapshotPng() {
+  FreshFrame(std::chrono::milliseconds(2000));
   std::shared_ptr<const Image> image;
   {
     std::lock_guard<std::mutex> lock(mu_);

@@ -1,7 +1,8 @@
 #pragma once
 // A live view of a scene: the simulation paced to the wall clock on one thread, the picture
 // drawn (MakeLiveFrame, OSMesa) and encoded once as JPEG on another, whatever the number of
-// viewers, and a thread-safe face for the network: the newest frame, the state as JSON, the
+// viewers, but only while someone watches (a stream, a recording) or asks for a picture
+// (FreshFrame), and a thread-safe face for the network: the newest frame, the state as JSON, the
 // controls. Memory stays bounded however long it runs: viewers share the newest frame only,
 // the plots keep a rolling window, and the time series goes to a temporary file.
 #include <atomic>
@@ -74,14 +75,20 @@ class LiveSession {
   // The first frame numbered above `after`, waiting up to `timeout`; null on timeout or stop.
   std::shared_ptr<const LiveFrame> WaitFrame(std::uint64_t after,
                                              std::chrono::milliseconds timeout) const;
-  std::string SnapshotPng() const;  // the newest frame as PNG
+  // A frame of the state now: with nobody watching, one drawn on demand (waiting up to
+  // `timeout`, else the newest there is).
+  std::shared_ptr<const LiveFrame> FreshFrame(std::chrono::milliseconds timeout);
+  std::string SnapshotPng();  // a fresh frame as PNG
   // The time series so far (timeseries.csv's columns) in pieces.
   void ReadTimeseries(const std::function<bool(const char*, std::size_t)>& sink);
   // The path of a finished recording of this session by its file name; empty if none such.
   std::string RecordingPath(const std::string& name) const;
 
-  void AddViewer(int delta) { viewers_ += delta; }
+  // A stream opened (+1) or closed (-1): frames are drawn while there is one.
+  void AddViewer(int delta);
   int viewers() const { return viewers_; }
+  // Frames drawn so far (each one encoded once as JPEG).
+  std::uint64_t frames_drawn() const;
   bool stopped() const { return stop_; }
   const std::string& scene_name() const { return scene_.name; }
   int width() const { return options_.width; }
@@ -91,6 +98,7 @@ class LiveSession {
   struct Recording {
     std::string name, path;
     long frames = 0;
+    double t_start = 0, t_end = 0;  // the simulated time it covers [s]
   };
   void SimulationLoop();
   void RenderLoop();
@@ -102,6 +110,7 @@ class LiveSession {
 
   const SceneDef scene_;
   const LiveOptions options_;
+  std::string start_kind_, end_kind_;  // "fixed", "moving" or "free", as the film names them
   ControlLimits limits_;
   LiveSimulation sim_;  // owned by the simulation thread once it runs
 
@@ -142,6 +151,8 @@ class LiveSession {
   std::shared_ptr<const Image> image_;
   std::deque<double> frame_times_;  // wall [s] of the frames of the last second
   std::string render_error_;
+  std::uint64_t frame_input_ = 0, frame_view_ = 0;  // the versions frame_ was drawn from
+  std::uint64_t fresh_wanted_ = 0, fresh_done_ = 0;  // frames asked by FreshFrame, drawn
 
   // Recording (lock held).
   bool record_wanted_ = false, recording_ = false;

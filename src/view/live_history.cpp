@@ -135,6 +135,14 @@ void LiveHistory::LockRange(bool locked) {
   }
 }
 
+void LiveHistory::ResetRange() {
+  locked_ = false;
+  range_lo_ = 0;
+  range_hi_ = 1;
+  const std::vector<double>& T = has_frame_ ? now_.tension : scenery_.equilibrium.tension;
+  if (!T.empty()) GrowRange(*std::min_element(T.begin(), T.end()), *std::max_element(T.begin(), T.end()));
+}
+
 void LiveHistory::SetRange(double lo, double hi) {
   range_lo_ = lo;
   range_hi_ = hi;

@@ -42,6 +42,9 @@ class LiveHistory {
 
   void LockRange(bool locked);
   void SetRange(double lo, double hi);  // [N]; locks it
+  // Unlocks the range and starts it again from the tensions now (it grows from there): a
+  // snap's peak no longer squeezes the colours of everything after it.
+  void ResetRange();
   bool range_locked() const { return locked_; }
   double range_min() const { return range_lo_; }
   double range_max() const { return range_hi_; }

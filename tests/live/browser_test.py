@@ -13,8 +13,15 @@ checks, waiting on the page's body dataset (frames, lastFrame, t, states) rather
      resuming the picture changes
   5. keyboard: Space pauses and resumes, R restarts
   6. record: a film is recorded and its download link works
-  7. layout: at 1400x900 and 1000x700 nothing overlaps or overflows sideways
-  8. serving: every route still answers, no console errors; SIGTERM exits 0 and the page says so
+  7. layout: at 1400x900 and 1000x700 nothing overlaps or overflows sideways, and at 1000x700
+     every control is in view (the panel does not scroll) and no figure is cut
+  8. ends and colour range: the ends named by their kind; Reset range unlocks the range and
+     brings it back to the tensions now
+  9. errors: on a scene without a driven end, no amplitude or period; a recording that cannot
+     be written says why; on a scene that blows up, the blow-up is shown until a restart;
+     bound beyond loopback (0.0.0.0, visited over 127.0.0.1), the printed address's token
+     opens the page, its WebSocket and its controls, and leaves the address bar
+ 10. serving: every route still answers, no console errors; SIGTERM exits 0 and the page says so
 Prints one line per check and `N passed, M failed`; exits 1 on any failure.
 """
 import argparse
@@ -39,7 +46,7 @@ from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
-READY = re.compile(r'live view at (https?://[^\s/]+)/?\s*$')
+READY = re.compile(r'live view at (https?://[^\s/]+)/?(\?token=[0-9a-f]+)?\s*$')
 CSV_HEADER = 't,x_end,y_end,tension_start,tension_end,tension_max,link_max'
 
 
@@ -108,11 +115,12 @@ def compare(png_a, png_b):
 
 # ---- the server ---------------------------------------------------------------------------
 class Server:
-    def __init__(self, args):
+    def __init__(self, args, scene=None, out_dir=None, log_name='server.log', extra=()):
         os.makedirs(args.out_dir, exist_ok=True)
-        self.log_path = os.path.join(args.out_dir, 'server.log')
+        self.log_path = os.path.join(args.out_dir, log_name)
         self.log = open(self.log_path, 'w')
-        cmd = [args.cablefilm, 'live', args.scene, '--port', '0', '--size', '640x360', '--out', args.out_dir]
+        cmd = [args.cablefilm, 'live', scene or args.scene, '--port', '0', '--size', '640x360',
+               '--out', out_dir or args.out_dir, *extra]
         print('starting:', ' '.join(cmd), flush=True)
         self.proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=self.log, text=True)
         self.lines = queue.Queue()
@@ -131,6 +139,7 @@ class Server:
             m = READY.search(line)
             if m:
                 self.origin = m.group(1)
+                self.query = m.group(2) or ''  # ?token=... when bound beyond loopback
                 print('server ready at', self.origin, flush=True)
                 return
 
@@ -351,8 +360,8 @@ class BrowserTest:
                   '/state to list the new recording')
         rec = self.state()['recordings'][-1]
         link = self.wait(lambda: self.driver.execute_script(
-            'const a = [...document.querySelectorAll("#recordings a")].pop(); return a && a.href'),
-            'the download link')
+            'const a = document.querySelector("#recordings a"); return a && a.href'),
+            'the download link (the newest first)')
         if not link.endswith(rec['url']):
             raise Failure('the newest link is %s, /state says %s' % (link, rec['url']))
         status, ctype, body = http_get(link, timeout=60)
@@ -383,11 +392,152 @@ class BrowserTest:
             frame_h = r['frame'][3] - r['frame'][1]
             if frame_h < 0.4 * (r['vw'] * h / w):
                 raise Failure('at %dx%d the frame is only %d px high' % (w, h, frame_h))
+            # Every control in view (the panel does not scroll, with a recording listed) and
+            # no figure, label or link cut short.
+            fit = self.driver.execute_script('''
+                const p = document.querySelector('.panel');
+                const cut = [...document.querySelectorAll(
+                    '.stat .label, .stat .value, .stat .sub, .card h2, .control label, .control output, .links a, .top h1')]
+                  .filter((e) => e.offsetParent && e.scrollWidth > e.clientWidth + 1)
+                  .map((e) => (e.id || e.className || e.tagName) + ': ' + e.textContent.trim());
+                return {panel: [p.scrollHeight, p.clientHeight], page: [document.documentElement.scrollHeight, innerHeight],
+                        cut: cut, recordings: document.querySelectorAll('#recordings li').length};''')
+            if fit['panel'][0] > fit['panel'][1] + 1:
+                raise Failure('at %dx%d the panel needs %d px in %d (it scrolls)' % (w, h, *fit['panel']))
+            if fit['page'][0] > fit['page'][1] + 1:
+                raise Failure('at %dx%d the page is %d px high in a %d px window' % (w, h, *fit['page']))
+            if fit['cut']:
+                raise Failure('at %dx%d cut short: %s' % (w, h, fit['cut']))
             self.screenshot('07-layout-%dx%d' % (w, h))
             notes.append('%dx%d frame %dx%d' % (w, h, r['frame'][2] - r['frame'][0], frame_h))
         return ', '.join(notes)
 
     # 8
+    def check_ends_and_range(self):
+        self.driver.set_window_size(1400, 900)
+        start, end = self.text('start-label'), self.text('end-label')
+        if (start, end) != ('Fixed end', 'Moving end'):
+            raise Failure('the ends are called %r and %r (the scene: a fixed anchor, a moving fairlead)' % (start, end))
+        if not self.driver.find_element(By.ID, 'amplitude').is_displayed():
+            raise Failure('the amplitude is hidden on a scene with a driven end')
+        # A range stretched far past the tensions (as a snap leaves it), locked.
+        self.driver.execute_script('window.cablefilm.control({tension_range: [0, 900000]})')
+        self.wait(lambda: self.state()['range']['max'] == 900000 and self.state()['range']['locked'],
+                  'the stretched range')
+        self.wait(lambda: self.driver.find_element(By.ID, 'lock-range').is_selected(), 'the lock box ticked')
+        self.click('reset-range')
+        self.wait(lambda: not self.state()['range']['locked'], 'Reset range to unlock the range')
+        st = self.state()
+        if not st['range']['max'] < 4 * st['tension']['max']:
+            raise Failure('after Reset range the range is %s for tensions up to %.0f N' % (st['range'], st['tension']['max']))
+        self.wait(lambda: not self.driver.find_element(By.ID, 'lock-range').is_selected(), 'the lock box cleared')
+        self.wait(lambda: self.text('range-max') == '%.2f kN' % (st['range']['max'] / 1000), 'the colour bar label')
+        return 'ends "%s", "%s"; range reset to %.0f N' % (start, end, st['range']['max'])
+
+    # 9
+    def check_errors(self):
+        notes = []
+        with open(self.args.scene) as f:
+            text = f.read()
+        # The fairlead held still: no driven end. Its films go under a regular file: they fail.
+        still = re.sub(r'^\[ends\.end\].*?(?=^\[)', '[ends.end]\nposition = [80.0, 30.48]\nmotion = "fixed"\n\n',
+                       text, flags=re.DOTALL | re.MULTILINE)
+        # The fairlead swung 80 m every 2 s: the line is torn apart within seconds.
+        torn = text.replace('x_amplitudes = [1.8288, 0.0]', 'x_amplitudes = [80.0, 0.0]').replace(
+            'period = 10.0', 'period = 2.0')
+        if torn == text or still == text:
+            raise Failure('the scene is not the one these variants are made from')
+        paths = {}
+        for name, body in (('still_fairlead.toml', still), ('torn_line.toml', torn)):
+            paths[name] = os.path.join(self.args.out_dir, name)
+            with open(paths[name], 'w') as f:
+                f.write(body)
+        blocker = os.path.join(self.args.out_dir, 'not-a-folder')
+        with open(blocker, 'w') as f:
+            f.write('a file where the films would go\n')
+        for scene, check in ((paths['still_fairlead.toml'], self._errors_still),
+                             (paths['torn_line.toml'], self._errors_torn)):
+            server = Server(self.args, scene, os.path.join(blocker, 'films'), 'server-' + os.path.basename(scene) + '.log')
+            try:
+                origin = self.origin
+                self.origin = server.origin
+                self.driver.get(server.origin + '/')
+                self.wait(lambda: self.num('frames') >= 1 and self.ds('transport') == 'websocket', 'the page')
+                notes.append(check())
+            finally:
+                self.origin = origin
+                self.driver.get('about:blank')  # before the server goes: no page left to miss it
+                server.stop()
+        self.driver.get(self.origin + '/')
+        self.wait(lambda: self.num('frames') >= 1 and self.ds('transport') == 'websocket', 'the main page again')
+        # Drained here: the servers of these scenes are gone, the page of the main one is not.
+        severe = [e['message'] for e in self.driver.get_log('browser')
+                  if e['level'] == 'SEVERE' and self.origin in e['message']]
+        if severe:
+            raise Failure('console errors: %s' % severe)
+        return '; '.join(notes)
+
+    def _errors_still(self):
+        for id_ in ('amplitude', 'period'):
+            if self.driver.find_element(By.ID, id_).is_displayed():
+                raise Failure('the %s control is shown on a scene without a driven end' % id_)
+        ends = (self.text('start-label'), self.text('end-label'))
+        if ends != ('Fixed end', 'Fixed end'):
+            raise Failure('the ends are called %r' % (ends,))
+        self.click('record')
+        self.wait(lambda: 'record_error' in self.state(), '/state to report the failed recording')
+        alert = self.wait(lambda: self.driver.find_element(By.ID, 'alert').is_displayed()
+                          and self.text('alert'), 'the page to show the failed recording')
+        if 'Recording failed' not in alert or 'not-a-folder' not in alert:
+            raise Failure('the alert says %r' % alert)
+        self.screenshot('09-record-error')
+        return 'no amplitude/period; "%s"' % alert.split('\n')[0][:80]
+
+    def _errors_torn(self):
+        self.wait(lambda: 'error' in self.state(), 'the blow-up', timeout=max(self.timeout, 60))
+        alert = self.wait(lambda: self.driver.find_element(By.ID, 'alert').is_displayed()
+                          and self.text('alert'), 'the page to show the blow-up')
+        if 'Simulation stopped' not in alert or 'blow-up' not in alert:
+            raise Failure('the alert says %r' % alert)
+        self.screenshot('09-blow-up')
+        self.click('restart')
+        self.wait(lambda: not self.driver.find_element(By.ID, 'alert').is_displayed(), 'the alert to go after a restart')
+        return '"%s"' % alert.split('\n')[0][:80]
+
+    def check_token(self):
+        server = Server(self.args, out_dir=os.path.join(self.args.out_dir, 'token'),
+                        log_name='server-token.log', extra=('--bind', '0.0.0.0'))
+        try:
+            if not server.query.startswith('?token='):
+                raise Failure('bound to 0.0.0.0 the printed address has no token')
+            local = server.origin.replace('0.0.0.0', '127.0.0.1')
+            try:
+                http_get(local + '/state')
+                raise Failure('/state without the token was served')
+            except urllib.error.HTTPError as e:
+                if e.code != 401:
+                    raise Failure('/state without the token answered %d' % e.code)
+            self.driver.get(local + '/' + server.query)
+            self.wait(lambda: self.num('frames') >= 3 and self.ds('transport') == 'websocket',
+                      'frames over the WebSocket with the token')
+            if 'token' in self.driver.current_url:
+                raise Failure('the token stays in the address bar: %s' % self.driver.current_url)
+            if 'token' in self.driver.execute_script('return document.cookie'):
+                raise Failure('the page script can read the token cookie (not HttpOnly)')
+            self.driver.execute_script('window.cablefilm.control({pause: true})')
+            self.wait(lambda: self.ds('paused') == 'true', 'a control to be taken with the token')
+            self.driver.get(local + '/state')  # the cookie opens the rest of the server too
+            if '"paused":true' not in self.driver.page_source.replace(' ', ''):
+                raise Failure('/state with the cookie: %s' % self.driver.page_source[:200])
+            return 'token in the printed address; page, WebSocket and controls work; address bar clean'
+        finally:
+            self.driver.get('about:blank')
+            server.stop()
+            self.driver.get(self.origin + '/')
+            self.wait(lambda: self.num('frames') >= 1 and self.ds('transport') == 'websocket', 'the main page again')
+            self.driver.get_log('browser')  # the token server's page is gone: its errors with it
+
+    # 10
     def check_serving_and_sigterm(self):
         o, notes = self.origin, []
         for path, kind, magic in (('/', 'text/html', b'<!DOCTYPE html>'), ('/app.js', 'javascript', b''),
@@ -446,6 +596,8 @@ def main():
         checks = [('load', test.check_load), ('frames change', test.check_frames_change),
                   ('pause', test.check_pause), ('amplitude', test.check_amplitude),
                   ('keyboard', test.check_keyboard), ('record', test.check_record), ('layout', test.check_layout),
+                  ('ends and range', test.check_ends_and_range), ('errors', test.check_errors),
+                  ('token', test.check_token),
                   ('serving and SIGTERM', test.check_serving_and_sigterm)]
         for name, check in checks:
             start = time.monotonic()

@@ -75,10 +75,17 @@ TEST(ParseControl, DeepNestingIsDescribedNotDumped) {
 TEST(ParseControl, UnknownFieldIsNamedAndEscaped) {
   EXPECT_EQ(Refusal(R"({"speed": 1, "sped": 2})"),
             "unknown field \"sped\"; expected any of pause, step, restart, speed, amplitude_scale, "
-            "period, current, wave_height, wave_period, colormap, lock_range, tension_range, "
+            "period, current, wave_height, wave_period, colormap, lock_range, reset_range, tension_range, "
             "record");
   // A control character in a key comes back escaped, not raw to a terminal or page.
   EXPECT_EQ(Refusal("{\"a\\u001bb\": 1}").substr(0, 25), "unknown field \"a\\u001bb\";");
+}
+
+TEST(ParseControl, ResetRangeTakesTrueOnly) {
+  EXPECT_TRUE(ParseControl(R"({"reset_range": true})", Limits()).reset_range);
+  EXPECT_FALSE(ParseControl(R"({"reset_range": true})", Limits()).empty());
+  EXPECT_EQ(Refusal(R"({"reset_range": false})"), "reset_range: expected true, got false");
+  EXPECT_EQ(Refusal(R"({"reset_range": 1})"), "reset_range: expected true, got 1");
 }
 
 TEST(ParseControl, WrongTypes) {

@@ -80,6 +80,26 @@ TEST(LiveHistory, RangeGrowsToNiceNumbersUnlessLocked) {
   EXPECT_TRUE(in.range_locked);
 }
 
+// Issue 22 item 13: one snap used to leave the colour range stretched for good (it only
+// grows). A reset starts it again from the tensions now and unlocks it, so it grows anew.
+TEST(LiveHistory, ResetRangeFollowsTheTensionsNowAfterASnap) {
+  LiveHistory h(Scenery(60));
+  h.Add(0.1, StraightLine(0), Eigen::VectorXd::Constant(10, 1000));
+  h.Add(0.2, StraightLine(0), Eigen::VectorXd::Constant(10, 50000));  // the snap
+  h.Add(0.3, StraightLine(0), Eigen::VectorXd::Constant(10, 1200));
+  h.LockRange(true);
+  EXPECT_GE(h.range_max(), 1.05 * 50000);
+  h.ResetRange();
+  EXPECT_FALSE(h.range_locked());
+  EXPECT_EQ(h.range_min(), 0);
+  EXPECT_GE(h.range_max(), 1.05 * 1200);  // the tensions now, with the usual headroom
+  EXPECT_LE(h.range_max(), 2 * 1.05 * 1200);
+  EXPECT_LE(h.peak(), 50000);  // the peak is a record of the run: kept
+  EXPECT_GE(h.peak(), 50000);
+  h.Add(0.4, StraightLine(0), Eigen::VectorXd::Constant(10, 3000));
+  EXPECT_GE(h.range_max(), 1.05 * 3000);  // unlocked: it grows again
+}
+
 TEST(LiveHistory, BoxAlwaysHoldsTheCableAndShrinksSlowly) {
   LiveHistory h(Scenery(60));
   for (int k = 0; k < 100; ++k) {

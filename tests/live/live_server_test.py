@@ -206,7 +206,7 @@ def run(args):
         check(struct.unpack('>II', png[16:24]) == (WIDTH, HEIGHT), '/snapshot.png size')
         # MJPEG: two parts, each a JPEG of the size asked, numbered upwards.
         sock = socket.create_connection(('127.0.0.1', srv.port), timeout=20)
-        sock.sendall(b'GET /stream.mjpg HTTP/1.1\r\nHost: x\r\n\r\n')
+        sock.sendall(b'GET /stream.mjpg HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n')
         buf = b''
         while b'\r\n\r\n' not in buf:
             buf += sock.recv(65536)
@@ -328,7 +328,7 @@ def run(args):
         # A viewer that asks for the stream and never reads: the simulation keeps real time.
         sock = socket.create_connection(('127.0.0.1', srv.port))
         sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
-        sock.sendall(b'GET /stream.mjpg HTTP/1.1\r\nHost: x\r\n\r\n')
+        sock.sendall(b'GET /stream.mjpg HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n')
         s0, w0 = srv.state()['t'], time.time()
         time.sleep(3.0)
         st = srv.state()

@@ -110,6 +110,14 @@ function applyState(s) {
   if (s.width && s.height) img.parentElement.style.setProperty('--aspect', s.width + ' / ' + s.height);
   if (!wsOpen() && !onScreen) $('t').textContent = secs(s.t);  // polling: t comes with the state
   $('frame-note').textContent = (s.paused ? 'paused at frame ' : 'frame ') + s.frame;
+  // The ends by their kind, as the film's legend names them (fixed, moving, free).
+  const E = s.ends || {};
+  const endName = (kind, which) => (kind ? kind[0].toUpperCase() + kind.slice(1) + ' end' : which);
+  $('start-label').textContent = endName(E.start, 'Start');
+  $('end-label').textContent = endName(E.end, 'End');
+  $('start-label').title = 'tension in the first link, at the ' + (E.start || 'start') + ' end';
+  $('end-label').title = 'tension in the last link, at the ' + (E.end || 'other') + ' end';
+  showAlert(s);
   const T = s.tension || {};
   $('t-start').textContent = kN(T.start);
   $('t-end').textContent = kN(T.end);
@@ -131,8 +139,13 @@ function applyState(s) {
 
   const L = s.limits || {};
   setSlider('speed', s.speed, L.speed);
-  setSlider('amplitude', s.amplitude_scale, L.amplitude_scale);
+  // Amplitude and period belong to a driven end: a scene without one has neither.
+  $('amplitude-row').hidden = !s.has_period;
+  $('amplitude').disabled = !s.has_period;
+  if (s.has_period) setSlider('amplitude', s.amplitude_scale, L.amplitude_scale);
   setSlider('current', s.current, L.current);
+  $('sea-title').textContent = s.has_period ? 'Motion and current'
+    : s.has_waves ? 'Waves and current' : 'Current';
   $('period-row').hidden = !s.has_period;
   $('period').disabled = !s.has_period;
   if (s.has_period) setSlider('period', s.period, L.period);
@@ -166,13 +179,15 @@ function applyState(s) {
   const recs = s.recordings || [];
   if (list.dataset.key !== JSON.stringify(recs)) {
     list.dataset.key = JSON.stringify(recs);
-    list.replaceChildren(...recs.map((r) => {
+    list.replaceChildren(...recs.slice().reverse().map((r) => {  // the newest first
       const li = document.createElement('li');
       const a = document.createElement('a');
       a.href = r.url; a.download = r.name; a.textContent = r.name;
       const n = document.createElement('span');
       n.className = 'dim';
-      n.textContent = r.frames + ' frames';
+      n.textContent = r.seconds != null ? r.seconds.toFixed(1) + ' s' : r.frames + ' frames';
+      n.title = r.frames + ' frames' + (r.t_start != null
+        ? ', t = ' + r.t_start.toFixed(1) + ' to ' + r.t_end.toFixed(1) + ' s' : '');
       li.append(a, n);
       return li;
     }));
@@ -222,6 +237,27 @@ function control(obj, done = () => {}) {
       showMessage(e.message, true);
       if (state) applyState(state);  // put the controls back where the server has them
     });
+}
+
+// What stopped the run or failed (a blow-up, a recording, the drawing): shown until it is
+// gone from the state, not for a few seconds like a refused control.
+function showAlert(s) {
+  const parts = [];
+  if (s.error) parts.push(['Simulation stopped', s.error]);
+  if (s.record_error) parts.push(['Recording failed', s.record_error]);
+  if (s.render_error) parts.push(['Drawing failed', s.render_error]);
+  const box = $('alert');
+  const key = JSON.stringify(parts);
+  if (box.dataset.key === key) return;
+  box.dataset.key = key;
+  box.replaceChildren(...parts.map(([what, why]) => {
+    const p = document.createElement('p');
+    const b = document.createElement('b');
+    b.textContent = what + ': ';
+    p.append(b, why);
+    return p;
+  }));
+  box.hidden = parts.length === 0;
 }
 
 let messageTimer = null;
@@ -280,6 +316,7 @@ for (const [id, make] of [['colormap', (el) => ({ colormap: el.value })],
   });
 }
 $('record').addEventListener('click', () => control({ record: !(state && state.recording) }));
+$('reset-range').addEventListener('click', () => control({ reset_range: true }));
 
 document.addEventListener('keydown', (e) => {
   const tag = e.target.tagName;
@@ -360,4 +397,7 @@ function startPolling() {
 function stopPolling() { clearTimeout(pollTimer); pollTimer = null; }
 
 window.cablefilm = { sendControl, control, get state() { return state; } };  // for tests and the console
+// Opened with the access token in its address (a server bound beyond loopback): the server has
+// set it as a cookie; out of the address bar it is not shared with a screenshot or a link.
+if (new URLSearchParams(location.search).has('token')) history.replaceState(null, '', location.pathname);
 connect();
