@@ -89,16 +89,8 @@ Model BuildModel(const SceneDef& scene) {
   env.gravity = scene.environment.gravity;
   env.fluid_density = scene.environment.fluid_density;
   env.current = scene.environment.current;
-  for (const auto& point : scene.environment.current_profile) {
-    env.current_profile.y.push_back(point[0]);
-    env.current_profile.speed.push_back(point[1]);
-  }
-  env.seabed.present = scene.seabed.present;
-  env.seabed.y = scene.seabed.y;
-  env.seabed.stiffness = scene.seabed.stiffness;
-  env.seabed.damping = scene.seabed.damping;
-  env.seabed.friction = scene.seabed.friction;
-  env.seabed.friction_velocity = scene.seabed.friction_velocity;
+  env.current_profile = scene.environment.current_profile;
+  env.seabed = scene.seabed;
   env.waves = MakeWaveSpec(scene);
   const LinkLaw law =
       scene.model == CableModelKind::kElastic ? LinkLaw::kElastic : LinkLaw::kInextensible;

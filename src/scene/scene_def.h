@@ -5,25 +5,21 @@
 #include <string>
 #include <vector>
 
+#include "core/model.h"
+
 namespace cablefilm {
 
 struct EnvironmentDef {
   double gravity = 9.80665;       // g [m/s^2]
   double fluid_density = 1025.0;  // rho [kg/m^3]; 0 = vacuum
   double current = 0.0;           // c [m/s], uniform, along +x
-  // Or a profile: [y [m], c [m/s]] pairs, y strictly increasing, linearly interpolated, constant
-  // beyond the ends (current is then 0). Empty: uniform.
-  std::vector<std::array<double, 2>> current_profile;
+  // Or a profile: speeds [m/s] at elevations y [m], y strictly increasing, linearly
+  // interpolated, constant beyond the ends (current is then 0). Empty: uniform.
+  CurrentProfile current_profile;
 };
 
-struct SeabedDef {                 // [seabed]: a flat seabed (optional)
-  bool present = false;
-  double y = 0;                    // elevation [m]
-  double stiffness = 3e7;          // k [N/m per m of line = N/m^2]
-  double damping = -1;             // c [N s/m per m of line = N s/m^2]; < 0: critical
-  double friction = 0;             // mu, Coulomb coefficient
-  double friction_velocity = 0.01; // v_f [m/s]: friction mu N tanh(v_x / v_f)
-};
+// [seabed]: a flat seabed (optional), as the core takes it (core/model.h).
+using SeabedDef = SeabedSpec;
 
 struct WavesDef {                  // [waves]: regular linear (Airy) waves along +x (optional)
   bool present = false;

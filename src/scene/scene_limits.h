@@ -74,6 +74,8 @@ double RunSpan(double duration, double interval);
 // the first, else why not, with the speeds that would do (for a message after the key).
 std::string FilmFramesProblem(double span, double fps, double speed);
 
+
+
 // What needs the built model, as `check` and `run` see it: the ends at t = 0 within the
 // cable's reach (inextensible: less than its length apart; elastic: no link stretched beyond
 // kMaxStartStretch), and the explicit scheme's automatic step giving at most kMaxSteps.

@@ -5,13 +5,13 @@
 #include <string>
 
 #include "scene/scene_def.h"
+#include "scene/scene_parser.h"
 
 namespace cablefilm {
 
 SceneDef LoadScene(const std::string& path);
 // The text of a scene file, at most kMaxSceneBytes (checked while reading: /dev/zero is refused).
 std::string ReadSceneFile(const std::string& path);
-SceneDef ParseScene(const std::string& text, const std::string& path);  // path: for messages
 
 // An error about the scene `scene_path` as the program reports it after "cablefilm: error: ":
 // `what`, led by the scene's name unless it starts with it already (the loader's messages do).

@@ -686,7 +686,7 @@ TEST(SceneLoader, SeabedErrors) {
 TEST(SceneLoader, CurrentProfile) {
   const SceneDef s =
       ParseScene(With("current = 0.0", "current = [[-10, 0.2], [0.0, 1.0], [5, 1.5]]"), kFile);
-  ASSERT_EQ(s.environment.current_profile.size(), 3u);
+  ASSERT_EQ(s.environment.current_profile.y.size(), 3u);
   EXPECT_EQ(s.environment.current, 0.0);
   const Model m = BuildModel(s);
   EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -5.0), 0.6);

@@ -1,0 +1,121 @@
+#include "scene/scene_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.h"
+#include "scene/scene_limits.h"
+#include "scene/text_escape.h"
+
+namespace cablefilm {
+
+// A prescribed end's lowest elevation over its motion [m]: its rest position less the
+// trochoid's largest vertical excursion (the ramp R(t) <= 1), or plus the table's lowest
+// offset (at its rows).
+namespace {
+
+double LowestElevation(const EndDef& e) {
+  double y = e.position[1];
+  if (e.motion == EndMotionKind::kTrochoid) y -= std::hypot(e.y_amplitudes[0], e.y_amplitudes[1]);
+  if (e.motion == EndMotionKind::kTable && !e.table.empty()) {
+    double lowest = e.table.front()[2];
+    for (const auto& row : e.table) lowest = std::min(lowest, row[2]);
+    y += lowest;
+  }
+  return y;
+}
+
+}  // namespace
+
+// The seabed must not be above a prescribed end (an anchor in the bed, a fairlead dipping into
+// it): an error naming seabed.y.
+void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::string& file) {
+  if (!scene.seabed.present) return;
+  for (const auto& [name, end] : {std::pair<const char*, const EndDef*>{"start", &scene.start},
+                                  {"end", &scene.end}}) {
+    if (end->motion == EndMotionKind::kFree) continue;
+    const double lowest = LowestElevation(*end);
+    if (!(lowest < scene.seabed.y)) continue;
+    std::ostringstream os;
+    os << EscapeText(file) << ":";
+    if (const toml::node* n = root.at_path("seabed.y").node()) os << n->source().begin.line << ":";
+    os << " seabed.y: the seabed at y = " << FormatNumber(scene.seabed.y)
+       << " m is above the " << name << " end (ends." << name << ".position y = "
+       << FormatNumber(end->position[1]) << " m";
+    if (lowest != end->position[1]) os << ", down to " << FormatNumber(lowest) << " m as it moves";
+    os << "); expected a seabed at or below the cable's prescribed ends";
+    throw Error(os.str());
+  }
+}
+
+// The limits that involve several keys: output rows, fixed time steps and film frames, each
+// named by the key most likely at fault (the one given, when the other took its default).
+void CheckRunCounts(const toml::table& root, const SceneDef& scene, const std::string& file,
+                    bool interval_given) {
+  auto node = [&](const char* path) { return root.at_path(path).node(); };
+  auto fail = [&](const char* key, const std::string& message) {
+    std::ostringstream os;
+    os << EscapeText(file) << ":";
+    if (const toml::node* n = node(key)) os << n->source().begin.line << ":";
+    os << " " << key << ": " << message;
+    throw Error(os.str());
+  };
+  const SimulationDef& sim = scene.simulation;
+  const double interval = scene.output.interval;
+  const std::string interval_text =
+      FormatNumber(interval) + " s (" +
+      (interval_given ? "output.interval"
+                      : "output.interval not given: film.speed / film.fps, a row per film frame") +
+      ")";
+  const char* interval_key = interval_given      ? "output.interval"
+                             : node("film.speed") ? "film.speed"
+                             : node("film.fps")   ? "film.fps"
+                                                  : "simulation.duration";
+  const double rows = std::floor(sim.duration / interval + 1e-9);
+  if (!(rows >= 1))
+    fail(node("simulation.duration") ? "simulation.duration" : interval_key,
+         "the duration " + FormatNumber(sim.duration) + " s is shorter than one output interval, " +
+             interval_text +
+             ": the run would write no row after t = 0 and simulate nothing; expected a "
+             "duration of at least one output interval");
+  if (!(rows <= kMaxOutputRows))
+    fail(interval_key,
+         "the duration " + FormatNumber(sim.duration) + " s at one row every " + interval_text +
+             " makes " + FormatNumber(rows) + " rows of timeseries.csv; expected at most " +
+             FormatNumber(kMaxOutputRows) + " rows (about 1 GB): an interval of at least " +
+             FormatNumber(sim.duration / kMaxOutputRows) + " s or a shorter duration");
+  const double span = RunSpan(sim.duration, interval);
+  if (sim.time_step > 0 && !(span / sim.time_step <= kMaxSteps))
+    fail("simulation.time_step",
+         FormatNumber(sim.time_step) + " s makes " + FormatNumber(span / sim.time_step) +
+             " steps of the " + FormatNumber(span) + " s run; expected at most " +
+             FormatNumber(kMaxSteps) + " steps: a time step of at least " +
+             FormatNumber(span / kMaxSteps) + " s (or \"auto\")");
+  if (scene.output.film) {
+    const std::string problem = FilmFramesProblem(span, scene.film.fps, scene.film.speed);
+    if (!problem.empty())
+      fail(node("film.speed") || !node("film.fps") ? "film.speed" : "film.fps", problem);
+  }
+}
+
+// scene-format.md: ends further apart than the cable can reach are an error for an
+// inextensible line (an elastic one starts stretched: the run warns and solves, up to
+// kMaxStartStretch, which CheckModelLimits checks on the built model). The comparison is the
+// run's: ends exactly the cable's length apart are refused too.
+void CheckEndsReach(const toml::table* ends, const TableReader& r, const SceneDef& scene) {
+  if (scene.model != CableModelKind::kInextensible || scene.start.motion == EndMotionKind::kFree ||
+      scene.end.motion == EndMotionKind::kFree)
+    return;
+  double total = 0;
+  for (const SectionDef& sec : scene.sections) total += sec.length;
+  const double chord = std::hypot(scene.end.position[0] - scene.start.position[0],
+                                  scene.end.position[1] - scene.start.position[1]);
+  if (chord >= total)
+    r.Fail(ends->get("end")->as_table()->get("position"), "end.position",
+           "expected the ends less than the cable's length (" + TableReader::Fmt(total) +
+               " m) apart for an inextensible cable, they are " + TableReader::Fmt(chord) +
+               " m apart");
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,429 @@
+#include "scene/scene_parser.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "core/error.h"
+#include "core/waves.h"
+#include "scene/scene_checks.h"
+#include "scene/scene_limits.h"
+#include "scene/table_file.h"
+#include "scene/text_escape.h"
+#include "scene/toml_reader.h"
+
+namespace cablefilm {
+namespace {
+
+std::string Quote(const std::string& s) { return QuoteText(s); }
+
+// [[y, speed], ...]: elevations strictly increasing, each within the stated ranges.
+void ReadCurrentProfile(TableReader& r, const toml::array& a, CurrentProfile& profile) {
+  const std::string what = "a profile [[y, speed], ...]: from 1 to " +
+                           std::to_string(kMaxCurrentPoints) +
+                           " pairs of an elevation in m (" + TableReader::Fmt(-kMaxLength) +
+                           " to " + TableReader::Fmt(kMaxLength) + ", increasing) and a speed "
+                           "in m/s (" + TableReader::Fmt(-kMaxCurrent) + " to " +
+                           TableReader::Fmt(kMaxCurrent) + ")";
+  if (a.empty() || a.size() > static_cast<size_t>(kMaxCurrentPoints))
+    r.Fail(&a, "current", "expected " + what + ", got " + std::to_string(a.size()) + " pairs");
+  for (size_t i = 0; i < a.size(); ++i) {
+    const std::string key = "current[" + std::to_string(i) + "]";
+    const toml::node* n = a.get(i);
+    const toml::array* pair = n->as_array();
+    if (!pair || pair->size() != 2) r.Fail(n, key, "expected [y, speed] in " + what);
+    const double y = r.Number(key, pair->get(0), "an elevation in m");
+    const double c = r.Number(key, pair->get(1), "a speed in m/s");
+    if (!(std::abs(y) <= kMaxLength))
+      r.Fail(n, key, "expected an elevation in m from " + TableReader::Fmt(-kMaxLength) + " to " +
+                         TableReader::Fmt(kMaxLength) + ", got " + TableReader::Fmt(y));
+    if (!(std::abs(c) <= kMaxCurrent))
+      r.Fail(n, key, "expected a speed in m/s from " + TableReader::Fmt(-kMaxCurrent) + " to " +
+                         TableReader::Fmt(kMaxCurrent) + ", got " + TableReader::Fmt(c));
+    if (!profile.empty() && !(y > profile.y.back()))
+      r.Fail(n, key, "expected the elevations to increase strictly, got y = " +
+                         TableReader::Fmt(y) + " m after " + TableReader::Fmt(profile.y.back()) +
+                         " m");
+    profile.y.push_back(y);
+    profile.speed.push_back(c);
+  }
+}
+
+void ReadEnvironment(TableReader& top, SceneDef& scene) {
+  const toml::table* t = top.SubTable("environment", false);
+  if (!t) return;
+  TableReader r = top.Child(*t, "environment");
+  scene.environment.gravity =
+      r.OptionalNonNegative("gravity", 9.80665, " in m/s^2", kMaxGravity);
+  scene.environment.fluid_density =
+      r.OptionalNonNegative("fluid_density", 1025.0, " in kg/m^3", kMaxFluidDensity);
+  const toml::node* current = t->get("current");
+  if (current && current->is_array()) {
+    r.Get("current");
+    ReadCurrentProfile(r, *current->as_array(), scene.environment.current_profile);
+  } else if (current && !current->is_number()) {
+    r.Fail(current, "current",
+           "expected a speed in m/s from " + TableReader::Fmt(-kMaxCurrent) + " to " +
+               TableReader::Fmt(kMaxCurrent) +
+               ", or a profile [[y, speed], ...] (elevation in m, speed in m/s)");
+  } else {
+    scene.environment.current =
+        r.Ranged("current", 0.0, false, -kMaxCurrent, kMaxCurrent, " (a speed in m/s)");
+  }
+  r.Finish();
+}
+
+void ReadSeabed(TableReader& top, SceneDef& scene) {
+  const toml::table* t = top.SubTable("seabed", false);
+  if (!t) return;
+  TableReader r = top.Child(*t, "seabed");
+  SeabedDef& b = scene.seabed;
+  b.present = true;
+  b.y = r.Ranged("y", 0.0, true, -kMaxLength, kMaxLength, " (the seabed's elevation in m)");
+  b.stiffness = r.OptionalPositive("stiffness", b.stiffness, " in N/m per m of line (N/m^2)",
+                                   kMinSeabedStiffness, kMaxSeabedStiffness);
+  if (r.Has("damping"))
+    b.damping = r.OptionalNonNegative("damping", 0.0, " in N s/m per m of line (N s/m^2)",
+                                      kMaxSeabedDamping);
+  else
+    r.Get("damping");
+  b.friction = r.OptionalNonNegative("friction", 0.0, " (Coulomb coefficient)", kMaxFriction);
+  b.friction_velocity = r.OptionalPositive("friction_velocity", b.friction_velocity, " in m/s",
+                                           kMinFrictionVelocity, kMaxFrictionVelocity);
+  r.Finish();
+}
+
+// [waves]: read after [environment] and [seabed] (the default depth is the seabed's). The wave
+// is checked against breaking: H / L at most tanh(k h) / 7 (Miche 1944: 1/7 in deep water,
+// H <= 0.88 h in shallow water), an error naming waves.height.
+void ReadWaves(TableReader& top, SceneDef& scene) {
+  const toml::table* t = top.SubTable("waves", false);
+  if (!t) return;
+  TableReader r = top.Child(*t, "waves");
+  WavesDef& w = scene.waves;
+  w.present = true;
+  w.height = r.Ranged("height", 0.0, true, 0.0, kMaxWaveHeight,
+                      " (crest to trough, in m; 0: still water with a surface)");
+  w.period = r.Ranged("period", 0.0, true, kMinWavePeriod, kMaxWavePeriod, " in s");
+  w.surface_y = r.Ranged("surface_y", 0.0, false, -kMaxLength, kMaxLength,
+                         " (the still water level's elevation in m)");
+  if (r.Has("depth") || !scene.seabed.present) {
+    w.depth = r.Positive("depth", " in m (still water level to the bed)", 0, kMaxLength);
+  } else {
+    r.Get("depth");
+    w.depth = w.surface_y - scene.seabed.y;
+    if (!(w.depth > 0))
+      r.Fail(t->get("surface_y"), "surface_y",
+             "expected the still water level above the seabed (seabed.y = " +
+                 TableReader::Fmt(scene.seabed.y) + " m) for the default depth, got " +
+                 TableReader::Fmt(w.surface_y) + " m; or give waves.depth");
+  }
+  w.phase = r.Ranged("phase", 0.0, false, -kMaxPhase, kMaxPhase, " in degrees");
+  w.ramp_rate = r.OptionalPositive("ramp_rate", 4.0 / w.period, " in 1/s", 0, kMaxRampRate);
+  if (!(scene.environment.gravity > 0))
+    r.Fail(t, "period", "expected gravity > 0 for waves (environment.gravity = 0)");
+  WaveSpec spec;  // the wave number and the breaking height need the period and depth only
+  spec.period = w.period;
+  spec.depth = w.depth;
+  const Wave wave = MakeWave(spec, scene.environment.gravity);
+  const double k = wave.k, L = wave.length(), limit = wave.breaking_height();
+  if (!(w.height <= limit))
+    r.Fail(t->get("height"), "height",
+           "the wave breaks: H / L = " + TableReader::Fmt(w.height / L) + " (L = " +
+               TableReader::Fmt(L) + " m at T = " + TableReader::Fmt(w.period) + " s in " +
+               TableReader::Fmt(w.depth) + " m of water, k h = " + TableReader::Fmt(k * w.depth) +
+               "); expected a height of at most " + TableReader::Fmt(limit) +
+               " m (H / L <= tanh(k h) / 7, Miche's limit; 1/7 in deep water)");
+  r.Finish();
+}
+
+void ReadMaterials(TableReader& top, SceneDef& scene, bool elastic) {
+  const toml::array* arr = top.TableArray("material", true);
+  for (size_t i = 0; i < arr->size(); ++i) {
+    const std::string prefix = "material[" + std::to_string(i) + "]";
+    TableReader r = top.Child(*arr->get(i)->as_table(), prefix);
+    MaterialDef m;
+    m.name = r.String("name", "", true);
+    for (const MaterialDef& other : scene.materials)
+      if (other.name == m.name)
+        r.Fail(arr->get(i)->as_table()->get("name"), "name",
+               "expected a unique name, " + Quote(m.name) + " is defined twice");
+    m.diameter = r.Positive("diameter", " in m", kMinDiameter, kMaxDiameter);
+    m.area = r.Positive("area", " in m^2", kMinArea, kMaxArea);
+    m.mass_per_length =
+        r.Positive("mass_per_length", " in kg/m", kMinMassPerLength, kMaxMassPerLength);
+    if (elastic) {
+      m.youngs_modulus = r.Positive("youngs_modulus", " in Pa", kMinModulus, kMaxModulus);
+    } else {
+      m.youngs_modulus =
+          r.OptionalPositive("youngs_modulus", 0.0, " in Pa", kMinModulus, kMaxModulus);
+    }
+    m.drag_coefficient = r.OptionalNonNegative("drag_coefficient", 1.2, "", kMaxCoefficient);
+    m.added_mass_coefficient =
+        r.OptionalNonNegative("added_mass_coefficient", 1.0, "", kMaxCoefficient);
+    m.axial_damping = r.OptionalNonNegative("axial_damping", 0.0, " in Pa s", kMaxAxialDamping);
+    m.axial_damping_ratio =
+        r.OptionalNonNegative("axial_damping_ratio", 0.0, " (of critical)", kMaxDampingRatio);
+    if (m.axial_damping > 0 && m.axial_damping_ratio > 0)
+      r.Fail(arr->get(i)->as_table()->get("axial_damping_ratio"), "axial_damping_ratio",
+             "expected either axial_damping (Pa s) or axial_damping_ratio, not both");
+    r.Finish();
+    scene.materials.push_back(m);
+  }
+}
+
+void ReadCable(TableReader& top, SceneDef& scene) {
+  const toml::table* t = top.SubTable("cable", true);
+  TableReader r = top.Child(*t, "cable");
+  // The model is read first by the caller (materials depend on it); mark it used here.
+  r.Get("model");
+  const toml::array* sections = r.TableArray("section", true);
+  if (sections->empty()) r.Fail(nullptr, "section", "expected at least one [[cable.section]]");
+  for (size_t i = 0; i < sections->size(); ++i) {
+    const std::string prefix = "cable.section[" + std::to_string(i) + "]";
+    TableReader s = r.Child(*sections->get(i)->as_table(), prefix);
+    SectionDef sec;
+    const std::string material = s.String("material", "", true);
+    sec.material = -1;
+    for (size_t k = 0; k < scene.materials.size(); ++k)
+      if (scene.materials[k].name == material) sec.material = static_cast<int>(k);
+    if (sec.material < 0)
+      s.Fail(sections->get(i)->as_table()->get("material"), "material",
+             "expected the name of a [[material]], no material is named " + Quote(material));
+    sec.length = s.Positive("length", " in m", kMinSectionLength, kMaxLength);
+    sec.segments = s.Integer("segments", 0, 1, static_cast<int>(kMaxLinks), true);
+    s.Finish();
+    scene.sections.push_back(sec);
+  }
+  double total = 0, segment_length_min = 1e300, links = 0;
+  for (size_t i = 0; i < scene.sections.size(); ++i) {
+    const SectionDef& sec = scene.sections[i];
+    total += sec.length;
+    links += sec.segments;
+    segment_length_min = std::min(segment_length_min, sec.length / sec.segments);
+    // The whole cable's limits, named by the section that goes beyond them.
+    const toml::table* section = sections->get(i)->as_table();
+    const std::string prefix = "section[" + std::to_string(i) + "].";
+    if (links > kMaxLinks)
+      r.Fail(section->get("segments"), prefix + "segments",
+             "the cable has " + TableReader::Fmt(links) + " links up to here; expected at most " +
+                 TableReader::Fmt(kMaxLinks) + " in all");
+    if (total > kMaxLength)
+      r.Fail(section->get("length"), prefix + "length",
+             "the cable is " + TableReader::Fmt(total) + " m long up to here; expected at most " +
+                 TableReader::Fmt(kMaxLength) + " m in all");
+  }
+  const toml::array* weights = r.TableArray("weight", false);
+  for (size_t i = 0; weights && i < weights->size(); ++i) {
+    const std::string prefix = "cable.weight[" + std::to_string(i) + "]";
+    const toml::table* wt = weights->get(i)->as_table();
+    TableReader w = r.Child(*wt, prefix);
+    WeightDef def;
+    def.at = w.Required("at", "an arc length in m from station 0");
+    // The station arc lengths, section by section.
+    bool on_station = false;
+    double start = 0;
+    for (const SectionDef& sec : scene.sections) {
+      const double l = sec.length / sec.segments;
+      const double k = std::round((def.at - start) / l);
+      if (k >= 0 && k <= sec.segments && std::abs(def.at - start - k * l) <= 1e-6 * l)
+        on_station = true;
+      start += sec.length;
+    }
+    if (def.at < -1e-6 * segment_length_min || def.at > total * (1 + 1e-9) || !on_station)
+      w.Fail(wt->get("at"), "at",
+             "expected the arc length of a station (0 to " + TableReader::Fmt(total) +
+                 " m, on a segment boundary), got " + TableReader::Fmt(def.at));
+    def.mass = w.Positive("mass", " in kg", 0, kMaxWeightMass);
+    def.volume = w.OptionalNonNegative("volume", 0.0, " in m^3", kMaxVolume);
+    def.added_volume = w.Pair("added_volume", {0, 0}, false, true, " in m^3", kMaxVolume);
+    def.drag_coefficient = w.Pair("drag_coefficient", {0, 0}, false, true, "", kMaxCoefficient);
+    def.drag_area = w.Pair("drag_area", {0, 0}, false, true, " in m^2", kMaxDragArea);
+    w.Finish();
+    scene.weights.push_back(def);
+  }
+  r.Finish();
+}
+
+// motion = "wave": [ratio, phase in degrees], the ratio at most kMaxRao.
+std::array<double, 2> ReadRao(TableReader& r, const std::string& key) {
+  const std::array<double, 2> rao =
+      r.Pair(key, {0, 0}, false, false, " ([amplitude ratio in m/m, phase in degrees])", kMaxRao);
+  if (!(rao[0] >= 0) || !(std::abs(rao[1]) <= kMaxPhase))
+    r.Fail(r.Get(key), key,
+           "expected [amplitude ratio from 0 to " + TableReader::Fmt(kMaxRao) +
+               ", phase in degrees from " + TableReader::Fmt(-kMaxPhase) + " to " +
+               TableReader::Fmt(kMaxPhase) + "], got [" + TableReader::Fmt(rao[0]) + ", " +
+               TableReader::Fmt(rao[1]) + "]");
+  return rao;
+}
+
+// The end's motion following the wave at its rest x, as eq. (3)'s trochoid: a response
+// r A cos(theta(x0, t) + p) with theta = k x0 - omega t + phase is
+// r A (cos(beta) cos(omega t) + sin(beta) sin(omega t)), beta = k x0 + phase + p.
+void FollowWave(const WavesDef& w, double gravity, EndDef& end) {
+  const double omega = 2.0 * M_PI / w.period;
+  const double k = WaveNumber(omega, gravity, w.depth);
+  const double A = 0.5 * w.height, deg = M_PI / 180.0;
+  for (int axis = 0; axis < 2; ++axis) {
+    const std::array<double, 2>& rao = axis == 0 ? end.x_rao : end.y_rao;
+    const double beta = k * end.position[0] + (w.phase + rao[1]) * deg;
+    std::array<double, 2>& amp = axis == 0 ? end.x_amplitudes : end.y_amplitudes;
+    amp = {rao[0] * A * std::cos(beta), rao[0] * A * std::sin(beta)};
+  }
+  end.period = w.period;
+  end.ramp_rate = w.ramp_rate;
+}
+
+void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std::string& file,
+             const SceneDef& scene) {
+  const toml::table* t = ends.SubTable(which, true);
+  TableReader r = ends.Child(*t, "ends." + which);
+  end.position = r.Pair("position", {0, 0}, true, false, " in m", kMaxLength);
+  const std::string motion =
+      r.Choice("motion", "fixed", {"fixed", "free", "trochoid", "table", "wave"});
+  if (motion == "wave") {
+    if (!scene.waves.present)
+      r.Fail(t->get("motion"), "motion",
+             "motion = \"wave\" follows the waves: expected a [waves] table");
+    end.motion = EndMotionKind::kTrochoid;
+    end.follows_wave = true;
+    end.x_rao = ReadRao(r, "x_rao");
+    end.y_rao = ReadRao(r, "y_rao");
+    FollowWave(scene.waves, scene.environment.gravity, end);
+  }
+  if (motion == "fixed") end.motion = EndMotionKind::kFixed;
+  if (motion == "free") end.motion = EndMotionKind::kFree;
+  if (motion == "trochoid") {
+    end.motion = EndMotionKind::kTrochoid;
+    end.x_amplitudes = r.Pair("x_amplitudes", {0, 0}, false, false, " in m", kMaxLength);
+    end.y_amplitudes = r.Pair("y_amplitudes", {0, 0}, false, false, " in m", kMaxLength);
+    end.period = r.Positive("period", " in s", kMinPeriod, kMaxPeriod);
+    end.ramp_rate = r.Positive("ramp_rate", " in 1/s", 0, kMaxRampRate);
+  }
+  if (motion == "table") {
+    end.motion = EndMotionKind::kTable;
+    const std::string name = r.String("file", "", true);
+    if (name.empty() || name.find('\0') != std::string::npos)
+      r.Fail(t->get("file"), "file", "expected the name of a CSV file t,x,y, got " + Quote(name));
+    const std::filesystem::path base = std::filesystem::path(file).parent_path();
+    end.table_file = (base / name).string();
+    try {
+      end.table = ReadMotionTable(end.table_file);
+    } catch (const Error& e) {
+      r.Fail(t->get("file"), "file", e.what());
+    }
+  }
+  r.Finish(" (motion = " + Quote(motion) + " uses only the keys it needs)");
+}
+
+}  // namespace
+
+SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* keys) {
+  const toml::table root = ParseToml(text, file);
+  SceneDef scene;
+  scene.path = file;
+  scene.name = std::filesystem::path(file).stem().string();
+  TableReader top(root, file, keys);
+  scene.title = top.String("title", scene.name, false);
+  ReadEnvironment(top, scene);
+  ReadSeabed(top, scene);
+  ReadWaves(top, scene);
+
+  bool elastic = true;
+  if (const toml::table* cable = root.get_as<toml::table>("cable")) {
+    TableReader r = top.Child(*cable, "cable");
+    const std::string model = r.Choice("model", "elastic", {"elastic", "inextensible"});
+    elastic = model == "elastic";
+    scene.model = elastic ? CableModelKind::kElastic : CableModelKind::kInextensible;
+  }
+  ReadMaterials(top, scene, elastic);
+  ReadCable(top, scene);
+
+  {
+    const toml::table* ends = top.SubTable("ends", true);
+    TableReader r = top.Child(*ends, "ends");
+    ReadEnd(r, "start", scene.start, file, scene);
+    ReadEnd(r, "end", scene.end, file, scene);
+    if (scene.start.motion == EndMotionKind::kFree && scene.end.motion == EndMotionKind::kFree)
+      r.Fail(ends, "end.motion",
+             "expected at least one end that is not \"free\" (a cable with two free ends has no "
+             "equilibrium)");
+    CheckEndsReach(ends, r, scene);
+    r.Finish();
+  }
+  if (const toml::table* t = top.SubTable("initial", false)) {
+    TableReader r = top.Child(*t, "initial");
+    scene.initial = r.Choice("state", "equilibrium", {"equilibrium", "straight"}) == "straight"
+                        ? InitialStateKind::kStraight
+                        : InitialStateKind::kEquilibrium;
+    r.Finish();
+  }
+  if (const toml::table* t = top.SubTable("simulation", false)) {
+    TableReader r = top.Child(*t, "simulation");
+    scene.simulation.duration =
+        r.OptionalPositive("duration", 60.0, " of seconds", 0, kMaxTime);
+    if (const toml::node* n = r.Get("time_step")) {
+      if (n->is_string()) {
+        if (n->value<std::string>().value() != "auto")
+          r.Fail(n, "time_step", "expected \"auto\" or a positive number of seconds");
+      } else {
+        scene.simulation.time_step = r.Number("time_step", n, "\"auto\" or a positive number of seconds");
+        if (!(scene.simulation.time_step > 0))
+          r.Fail(n, "time_step", "expected \"auto\" or a positive number of seconds");
+      }
+    }
+    scene.simulation.tolerance =
+        r.OptionalPositive("tolerance", 0.0, " in m (local error per step)", 0, kMaxLength);
+    scene.simulation.safety_factor = r.OptionalPositive(
+        "safety_factor", 0.8, " (fraction of the stability limit)", 0, 1.0);
+    scene.simulation.integrator =
+        r.Choice("integrator", "implicit", {"explicit", "implicit"}) == "explicit"
+            ? IntegratorChoice::kExplicit
+            : IntegratorChoice::kImplicit;
+    scene.simulation.rho_infinity = r.Ranged("rho_infinity", 0.5, false, 0.0, 1.0, "");
+    r.Finish();
+  }
+  if (const toml::table* t = top.SubTable("film", false)) {
+    TableReader r = top.Child(*t, "film");
+    FilmDef& f = scene.film;
+    f.width = r.Integer("width", f.width, kMinFilmSize, kMaxFilmWidth, false);
+    f.height = r.Integer("height", f.height, kMinFilmSize, kMaxFilmHeight, false);
+    if (f.width % 2) r.Fail(t->get("width"), "width", "expected an even number of pixels");
+    if (f.height % 2) r.Fail(t->get("height"), "height", "expected an even number of pixels");
+    f.fps = r.Ranged("fps", f.fps, false, kMinFps, kMaxFps, " of frames per second");
+    f.speed = r.OptionalPositive("speed", f.speed, " (simulated seconds per second of film)", 0,
+                                 kMaxTime);
+    f.crf = r.Integer("crf", f.crf, 0, 51, false);
+    f.colormap = r.Choice("colormap", f.colormap, ColormapNames());
+    if (r.Has("tension_range")) {
+      const auto range = r.Pair("tension_range", {0, 0}, true, true, " in N", kMaxTension);
+      if (!(range[1] > range[0]))
+        r.Fail(t->get("tension_range"), "tension_range", "expected [min, max] with max > min");
+      f.tension_min = range[0];
+      f.tension_max = range[1];
+    }
+    r.Finish();
+  }
+  if (const toml::table* t = top.SubTable("output", false)) {
+    TableReader r = top.Child(*t, "output");
+    scene.output.interval = r.OptionalPositive("interval", 0.0, " of seconds", 0, kMaxTime);
+    scene.output.film = r.Bool("film", true);
+    scene.output.frames = r.Bool("frames", false);
+    r.Finish();
+  }
+  const bool interval_given = scene.output.interval > 0;
+  if (!interval_given) scene.output.interval = scene.film.speed / scene.film.fps;
+  top.Finish();
+  CheckSeabed(root, scene, file);
+  CheckRunCounts(root, scene, file, interval_given);
+  return scene;
+}
+
+}  // namespace cablefilm
