@@ -91,6 +91,28 @@ TEST(ThinnedTrace, TwoChannelsStayAlignedAndSpanZeroKeepsAll) {
   for (int i = 0; i < 100; ++i) EXPECT_EQ(all.values()[i], Signal(i));
 }
 
+// A channel a line: three lines thinned together keep each one's extremes at their times.
+TEST(ThinnedTrace, AnyNumberOfChannels) {
+  ThinnedTrace trace(3, 1.0);
+  double max[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (int i = 0; i < 1000; ++i) {
+    const double values[3] = {Signal(i), 2 * Signal(i + 7), 3 * Signal(i + 13)};
+    trace.Add(i * 0.01, values);
+    for (int c = 0; c < 3; ++c) max[c] = std::max(max[c], values[c]);
+  }
+  ASSERT_EQ(trace.all_values().size(), 3u);
+  EXPECT_LE(trace.size(), 10u * 7);  // smallest and largest of each channel, and the last
+  for (int c = 0; c < 3; ++c) {
+    ASSERT_EQ(trace.values(c).size(), trace.size());
+    EXPECT_EQ(*std::max_element(trace.values(c).begin(), trace.values(c).end()), max[c]) << c;
+    for (std::size_t k = 0; k < trace.size(); ++k) {  // each point a sample as added
+      const long i = std::lround(trace.times()[k] / 0.01);
+      ASSERT_EQ(trace.values(c)[k], (c + 1) * Signal(i + (c == 0 ? 0 : c == 1 ? 7 : 13)));
+    }
+  }
+  EXPECT_THROW(ThinnedTrace(0, 1.0), Error);
+}
+
 // Two film frames (t = 0 and 1 s) of the straight test cable, the second carrying the rows of
 // every 0.1 s since the first, one of them (t = 0.4 s) at 55 kN, above either frame's 39 kN.
 TEST(FilmHistory, RowsBetweenFramesReachTheTimePlotAndTheEnvelope) {
