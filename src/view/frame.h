@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "view/scene_view.h"  // kStraightStateLabel
+
 namespace cablefilm {
 
 struct CableSnapshot {            // one output time of the simulation
@@ -30,10 +32,6 @@ struct CableSnapshot {            // one output time of the simulation
   // waves).
   std::vector<double> surface_x, surface_y;
 };
-
-// The name of the dashed initial state when a run starts from the straight chord at rest (not
-// an equilibrium: its tensions are those of the evenly stretched chord, zero when slack).
-inline constexpr char kStraightStateLabel[] = "initial state (straight)";
 
 struct FilmSpec {                          // fixed for the whole film
   std::string title;
