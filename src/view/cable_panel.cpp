@@ -23,7 +23,7 @@ PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::str
   head.title = "Cable shape (to scale)";
   if (companion)  // the cables' names first, on a row of their own when space is short
     head.groups.push_back({{LegendEntry::kCable, swatch, main_label},
-                           {LegendEntry::kCompanion, swatch, companion_label}});
+                           {LegendEntry::kOverlay, swatch, companion_label}});
   LegendGroup marks_row;
   if (!marks.weights.empty()) marks_row.push_back({LegendEntry::kDiamond, th.marker_fill, "weight"});
   if (!marks.fixed_ends.empty())
@@ -110,9 +110,9 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
   if (comp) {  // beneath the main cable; its dotted rim shows where the two coincide
     std::vector<Vec2f> c;
     for (std::size_t j = 0; j < snap.cx.size(); ++j) c.push_back(world(snap.cx[j], snap.cy[j]));
-    DrawCompanionRim(p, c, cw + 7 * k, th);
+    DrawOverlayRim(p, c, cw + 7 * k, th);
     for (std::size_t j = 0; j < links && j + 1 < c.size(); ++j)
-      p.Line(c[j], c[j + 1], in.companion_width, colormap.Map(snap.ctension[j], lo, hi));
+      p.Line(c[j], c[j + 1], in.overlay_width, colormap.Map(snap.ctension[j], lo, hi));
   }
   for (std::size_t j = 0; j < links; ++j)  // a thin rim keeps the dark end of the map visible
     p.Line(world(snap.x[j], snap.y[j]), world(snap.x[j + 1], snap.y[j + 1]), cw + 2.5f * k,
@@ -124,7 +124,7 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
     for (int w : in.marks.weights) {
       if (!Inside(w, snap.cx.size())) continue;
       const Vec2f c = world(snap.cx[w], snap.cy[w]);
-      p.Diamond(c, 8.5f * k, th.companion_rim);
+      p.Diamond(c, 8.5f * k, th.overlay_rim);
       p.Diamond(c, 6 * k, th.marker_fill);
     }
   for (int w : in.marks.weights) {

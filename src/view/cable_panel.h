@@ -38,7 +38,7 @@ struct CablePanelInput {
   PixelRect panel;                  // the whole panel [px]
   PlotMapping world;                // its axes: world [m] -> pixels, equal scale in x and y
   float cable_width = 6;            // [px]
-  float companion_width = 3.6f;     // the companion's coloured line [px]
+  float overlay_width = 3.6f;       // the companion's coloured line [px]
   PanelHead head;                   // CablePanelHead(...)
   double tension_min = 0, tension_max = 1;     // the colour range [N]
   const CableSnapshot* now = nullptr;          // required; with its companion when it has one

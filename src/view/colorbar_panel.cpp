@@ -40,7 +40,7 @@ void DrawColorBar(Painter& p, const ColorBarInput& in, const Colormap& colormap,
   if (std::isfinite(in.companion_now)) {
     const float y = bar_y(in.companion_now / kNewtonsPerKilonewton);
     p.Triangle({cb.x0 - 20 * k, y - 6 * k}, {cb.x0 - 20 * k, y + 6 * k}, {cb.x0 - 11 * k, y},
-               th.companion);
+               th.overlay);
   }
 }
 

@@ -279,7 +279,7 @@ Frame MakeFrame(const FilmSpec& spec, const FilmHistory& history, const CableSna
   cable.panel = L.cable_panel;
   cable.world = L.cable;
   cable.cable_width = L.cable_width;
-  cable.companion_width = L.companion_width;
+  cable.overlay_width = L.overlay_width;
   cable.head = heads.cable;
   cable.tension_min = lo;
   cable.tension_max = hi;

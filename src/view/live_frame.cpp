@@ -149,7 +149,7 @@ Frame MakeLiveFrame(const LiveFrameInput& in, int width, int height, const Color
   cable.panel = L.cable_panel;
   cable.world = L.cable;
   cable.cable_width = L.cable_width;
-  cable.companion_width = L.companion_width;
+  cable.overlay_width = L.overlay_width;
   cable.head = heads.cable;
   cable.tension_min = in.tension_min;
   cable.tension_max = in.tension_max;

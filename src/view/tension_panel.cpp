@@ -8,7 +8,7 @@
 namespace cablefilm {
 namespace {
 
-Rgba CompanionEquilibriumColor(const Theme& th) { return Mix(th.companion, th.panel, 0.7f); }
+Rgba CompanionEquilibriumColor(const Theme& th) { return Mix(th.overlay, th.panel, 0.7f); }
 
 bool PerLink(const std::vector<double>* v, std::size_t links) {
   return v != nullptr && v->size() == links;
@@ -25,7 +25,7 @@ PanelHead TensionPanelHead(bool companion, bool two_rows, bool companion_equilib
   const bool band = !envelope_label.empty();
   if (companion && two_rows) {  // the curves now, then the references
     head.groups.push_back({{LegendEntry::kLine, th.current, main_label + " now"},
-                           {LegendEntry::kLine, th.companion, companion_label + " now"}});
+                           {LegendEntry::kLine, th.overlay, companion_label + " now"}});
     LegendGroup refs{{LegendEntry::kDash, th.equilibrium, reference_label}};
     if (companion_equilibrium)
       refs.push_back({LegendEntry::kDot, CompanionEquilibriumColor(th),
@@ -34,7 +34,7 @@ PanelHead TensionPanelHead(bool companion, bool two_rows, bool companion_equilib
     head.groups.push_back(refs);
   } else if (companion) {  // one row, short labels
     LegendGroup row{{LegendEntry::kLine, th.current, main_label},
-                    {LegendEntry::kLine, th.companion, companion_label},
+                    {LegendEntry::kLine, th.overlay, companion_label},
                     {LegendEntry::kDash, th.equilibrium, reference_label}};
     if (band) row.push_back({LegendEntry::kBand, th.envelope, "min\u2013max"});
     head.groups.push_back(row);
@@ -104,7 +104,7 @@ void DrawTensionPanel(Painter& p, const TensionPanelInput& in, const Theme& th) 
     p.Dashed(curve(*in.companion_equilibrium), 2 * k, CompanionEquilibriumColor(th), 2 * k, 4 * k);
   p.Polyline(curve(*in.tension), 2.6f * k, th.current);
   if (PerLink(in.companion_tension, links))  // thinner, on top: where the two agree the main
-    p.Polyline(curve(*in.companion_tension), 1.8f * k, th.companion);  // shows as its edges
+    p.Polyline(curve(*in.companion_tension), 1.8f * k, th.overlay);  // shows as its edges
 }
 
 }  // namespace cablefilm

@@ -28,7 +28,7 @@ PanelHead TimePanelHead(bool companion, bool note_row, const std::string& main_l
   head.title = "Maximum tension along the cable";
   if (companion) {
     head.groups.push_back({{LegendEntry::kLine, th.accent, main_label},
-                           {LegendEntry::kLine, th.companion, companion_label}});
+                           {LegendEntry::kLine, th.overlay, companion_label}});
     head.note_row = note_row;
   }
   return head;
@@ -117,9 +117,9 @@ void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
     p.Disc(PlotPoint(mm, ts.back(), vs.back() / kN), 5 * k, th.accent);
   if (companion) {  // thinner, on top, like the tension curves
     const std::vector<double>& cs = *in.companion_max;
-    p.Polyline(companion_trace, 1.8f * k, th.companion);
+    p.Polyline(companion_trace, 1.8f * k, th.overlay);
     if (!ts.empty() && std::isfinite(cs.back()))
-      p.Disc(PlotPoint(mm, ts.back(), cs.back() / kN), 4 * k, th.companion);
+      p.Disc(PlotPoint(mm, ts.back(), cs.back() / kN), 4 * k, th.overlay);
   }
   const Rgba veil{th.panel.r, th.panel.g, th.panel.b, 0.8f};
   if (veil_y1 > veil_y0) p.Rect({eq_box.x0 - 2 * k, veil_y0, eq_box.x1 + 2 * k, veil_y1}, veil);

@@ -252,7 +252,7 @@ TEST(MakeFrame, CompanionSegmentsCarryTheirTensionColourBeneathTheMainCable) {
   FilmHistory history(spec);
   history.Add(snap);
   const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
-  EXPECT_LT(L.companion_width, L.cable_width);
+  EXPECT_LT(L.overlay_width, L.cable_width);
   const Colormap map("viridis");
   const Frame frame = MakeFrame(spec, history, snap, L, map);
   // Index of the first main cable segment (the main cable's colour at link 0).
@@ -276,7 +276,7 @@ TEST(MakeFrame, CompanionSegmentsCarryTheirTensionColourBeneathTheMainCable) {
       const Shape& s = frame.shapes[i];
       // Exact geometry; the colour within float rounding of the map's (the same table entry).
       if (s.kind == ShapeKind::kSegment && s.a.x == a.x && s.a.y == a.y && s.b.x == b.x &&
-          s.b.y == b.y && s.size == L.companion_width && ColorGap(s.color, want) < 1e-6f) {
+          s.b.y == b.y && s.size == L.overlay_width && ColorGap(s.color, want) < 1e-6f) {
         EXPECT_LT(i, first_main) << "companion link " << j << " is drawn over the main cable";
         ++found;
         break;
@@ -454,7 +454,7 @@ TEST(MakeFrame, CompanionTensionCurveAndMaxTrace) {
   for (int j = 0; j < kLinks; ++j) {
     const Vec2f want = L.tension.ToPixel(j + 0.5, snap.ctension[j] / 1000);
     for (const Shape& s : frame.shapes)
-      if (s.kind == ShapeKind::kSegment && SameColor(s.color, th.companion) &&
+      if (s.kind == ShapeKind::kSegment && SameColor(s.color, th.overlay) &&
           std::fabs(s.a.x - want.x) < 1e-3f && std::fabs(s.a.y - want.y) < 1e-3f) {
         ++vertices;
         break;
@@ -462,7 +462,7 @@ TEST(MakeFrame, CompanionTensionCurveAndMaxTrace) {
   }
   EXPECT_EQ(vertices, kLinks - 1);  // the last midpoint only ends a segment
   for (const Shape& s : frame.shapes)
-    trace += s.kind == ShapeKind::kSegment && SameColor(s.color, th.companion) &&
+    trace += s.kind == ShapeKind::kSegment && SameColor(s.color, th.overlay) &&
              L.max_tension.rect.Contains(s.a) && L.max_tension.rect.Contains(s.b);
   EXPECT_EQ(trace, 20);  // 21 snapshots, each in its own pixel column
   // The companion's max tension per snapshot, one per snapshot.

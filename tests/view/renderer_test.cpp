@@ -186,7 +186,7 @@ TEST(RendererCompanion, CompanionColourIsTheMapAtItsLinkTension) {
   FilmHistory history(spec);
   history.Add(snap);
   const FrameLayout layout = MakeFrameLayout(spec, kW, kH);
-  ASSERT_GE(layout.companion_width, 2.0f);
+  ASSERT_GE(layout.overlay_width, 2.0f);
   const Colormap map("viridis");
   RenderOptions options;
   options.width = kW;
