@@ -31,7 +31,8 @@ struct Size {
 
 double EndToEnd(Size size, int frames, const std::string& preset, int crf, const std::string& dir) {
   const double fps = 30;
-  const FilmSpec spec = MakeDemoSpec(frames / fps);
+  const SceneView scene = MakeDemoScene();
+  const FixedPolicy policy = MakeDemoPolicy(frames / fps);
   FilmOptions o;
   o.width = size.w;
   o.height = size.h;
@@ -42,8 +43,8 @@ double EndToEnd(Size size, int frames, const std::string& preset, int crf, const
   o.write_max_tension = false;
   const auto t0 = Clock::now();
   {
-    FilmWriter writer(o, spec, dir, frames);
-    for (int i = 0; i < frames; ++i) writer.Push(MakeDemoSnapshot(spec, i / fps));
+    FilmWriter writer(o, scene, policy, dir, frames);
+    for (int i = 0; i < frames; ++i) writer.Push(MakeDemoSnapshot(scene, i / fps));
     writer.Finish();
   }
   return frames / Seconds(t0, Clock::now());
@@ -53,9 +54,9 @@ void RenderAndEncode(Size size, int frames, const std::string& preset, int crf,
                      const std::string& dir, double* render_fps, double* make_ms,
                      double* encode_fps) {
   const double fps = 30;
-  const FilmSpec spec = MakeDemoSpec(frames / fps);
-  FilmHistory history(spec);
-  const FrameLayout layout = MakeFrameLayout(spec, size.w, size.h);
+  const SceneView scene = MakeDemoScene();
+  History history(scene, MakeDemoPolicy(frames / fps));
+  const FrameLayout layout = MakeFrameLayout(scene, history, size.w, size.h);
   const Colormap colormap("viridis");
   RenderOptions ro;
   ro.width = size.w;
@@ -64,13 +65,14 @@ void RenderAndEncode(Size size, int frames, const std::string& preset, int crf,
   // A cycle of distinct rendered frames to feed the encoder afterwards.
   std::vector<Image> images(30);
   double make = 0;
-  renderer.Draw(MakeFrame(spec, history, MakeDemoSnapshot(spec, 0), layout, colormap), &images[0]);
+  renderer.Draw(MakeFrame(scene, history, MakeDemoSnapshot(scene, 0), layout, colormap),
+                &images[0]);
   const auto t0 = Clock::now();
   for (int i = 0; i < frames; ++i) {
-    const CableSnapshot s = MakeDemoSnapshot(spec, i / fps);
+    const Snapshot s = MakeDemoSnapshot(scene, i / fps);
     history.Add(s);
     const auto m0 = Clock::now();
-    const Frame frame = MakeFrame(spec, history, s, layout, colormap);
+    const Frame frame = MakeFrame(scene, history, s, layout, colormap);
     make += Seconds(m0, Clock::now());
     renderer.Draw(frame, &images[i % images.size()]);
   }

@@ -15,7 +15,9 @@
 #include "encode/video_encoder.h"
 #include "encode/jpeg_encoder.h"
 #include "view/colormap.h"
+#include "view/frame_builder.h"
 #include "view/renderer.h"
+#include "view/scene_view_builder.h"
 
 namespace cablefilm {
 namespace {
@@ -23,39 +25,11 @@ namespace {
 using Json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-CableSnapshot ToSnapshot(double t, const Points& x, const Eigen::VectorXd& tension) {
-  CableSnapshot s;
-  s.t = t;
-  for (Eigen::Index j = 0; j < x.cols(); ++j) {
-    s.x.push_back(x(0, j));
-    s.y.push_back(x(1, j));
-  }
-  s.tension.assign(tension.data(), tension.data() + tension.size());
-  return s;
-}
-
-LiveScenery MakeScenery(const SceneDef& scene, const LiveSimulation& sim) {
-  const Model& m = sim.model();
-  LiveScenery s;
-  s.title = scene.title;
-  s.arc_length.assign(m.line.arc_length.data(), m.line.arc_length.data() + m.line.arc_length.size());
-  s.section_boundaries = m.line.section_boundaries;
-  for (const SectionDef& sec : scene.sections)
-    s.section_names.push_back(scene.materials.at(sec.material).name);
-  s.weight_stations = m.line.weight_stations;
-  for (int j : {0, m.line.links}) {
-    if (m.end_motion(j).moves()) s.moving_ends.push_back(j);
-    if (m.end_motion(j).kind() == EndKind::kFixed) s.fixed_ends.push_back(j);
-    if (m.end_motion(j).kind() == EndKind::kFree) s.free_ends.push_back(j);
-  }
-  s.equilibrium = ToSnapshot(0, sim.initial_state().x, sim.initial_tensions());
-  if (scene.initial == InitialStateKind::kStraight) s.reference_label = kStraightStateLabel;
-  s.window = scene.simulation.duration;
-  s.seabed = m.env.seabed.present;
-  s.seabed_y = m.env.seabed.y;
-  s.waves = m.has_waves();
-  s.wave = sim.wave();
-  return s;
+// The live view's one line, as the film would draw it, with no name (a line alone needs none).
+SceneView MakeLiveScene(const SceneDef& scene, const LiveSimulation& sim) {
+  return MakeSceneView(scene, sim.model(),
+                       {MakeLineView(scene, sim.model(), sim.initial_state().x,
+                                     sim.initial_tensions(), "")});
 }
 
 ControlLimits MakeLimits(const LiveSimulation& sim) {
@@ -104,9 +78,10 @@ LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
     : scene_(scene),
       options_(options),
       sim_(scene),
+      view_(MakeLiveScene(scene, sim_)),
       speed_(options.speed),
       colormap_(options.colormap.empty() ? scene.film.colormap : options.colormap),
-      history_(MakeScenery(scene, sim_)),
+      history_(view_, FollowingPolicy{scene.simulation.duration, sim_.wave()}),
       start_(Clock::now()) {
   if (options_.width < 16 || options_.height < 16 || options_.width % 2 || options_.height % 2)
     throw Error("live: frame size must be even and at least 16x16, got " +
@@ -122,9 +97,7 @@ LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
   end_kind_ = EndKindName(sim_.model().end_motion(sim_.model().line.links));
   {
     std::lock_guard<std::mutex> lock(mu_);
-    history_.SetWave(sim_.wave());
-    history_.Add(0, sim_.state().x, sim_.tensions());
-    rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
+    RecordLocked();
     PublishLocked();
   }
   // The renderer's context lives on its thread: start it and wait for the first frame (or the
@@ -181,7 +154,7 @@ void LiveSession::ApplyPending() {
       if (todo[k].wave_height) todo[i].wave_height.reset();
       if (todo[k].wave_period) todo[i].wave_period.reset();
     }
-  std::vector<LiveMarker> markers;
+  std::vector<TimeMarker> markers;
   std::uint64_t applied = 0;
   bool restarted = false;
   for (const Pending& p : todo) {
@@ -224,11 +197,9 @@ void LiveSession::ApplyPending() {
     rows_.Clear();
     error_.clear();
     progress_.clear();
-    history_.SetWave(sim_.wave());
-    history_.Add(sim_.t(), sim_.state().x, sim_.tensions());
-    rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
+    RecordLocked();
   }
-  for (LiveMarker& m : markers) history_.AddMarker(m.t, std::move(m.label));
+  for (TimeMarker& m : markers) history_.AddMarker(m.t, std::move(m.label));
   if (applied > seq_applied_) seq_applied_ = applied;
   ++state_version_;  // viewers hear of an applied control at once
   PublishLocked();
@@ -281,14 +252,21 @@ void LiveSession::SimulationLoop() {
       ++state_version_;
       continue;
     }
-    history_.SetWave(sim_.wave());
-    history_.Add(sim_.t(), sim_.state().x, sim_.tensions());
-    rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
+    RecordLocked();
     progress_.emplace_back(Seconds(start_, Clock::now()), sim_.t());
     while (progress_.size() > 2 && progress_.back().first - progress_.front().first > 2.0)
       progress_.pop_front();
     PublishLocked();
   }
+}
+
+void LiveSession::RecordLocked() {
+  history_.SetWave(sim_.wave());
+  state_.t = sim_.t();
+  state_.lines.resize(1);
+  SetLineState(sim_.state().x, sim_.tensions(), &state_.lines[0]);
+  history_.Add(state_);
+  rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
 }
 
 void LiveSession::PublishLocked() {
@@ -360,9 +338,12 @@ void LiveSession::RenderLoop() {
     recording_ = false;
     ++state_version_;
   };
+  History picture = [&] {  // the history as a frame shows it (its storage reused)
+    std::lock_guard<std::mutex> lock(mu_);
+    return history_;
+  }();
   while (true) {
-    LiveFrameInput input;
-    std::string colormap;
+    std::string status, colormap;
     std::uint64_t seq = 0, fresh = 0;
     double speed = 1;
     bool want_record = false;
@@ -383,7 +364,8 @@ void LiveSession::RenderLoop() {
       drawn_input = input_version_;
       drawn_view = view_version_;
       fresh = fresh_wanted_;
-      input = history_.MakeInput(StatusLocked());
+      picture = history_;
+      status = StatusLocked();
       colormap = colormap_;
       seq = seq_applied_;
       speed = speed_;
@@ -394,7 +376,8 @@ void LiveSession::RenderLoop() {
       std::tm tm{};
       localtime_r(&now, &tm);
       std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
-      current = Recording{std::string("live-") + stamp + ".mp4", "", 0, input.snapshot.t, input.snapshot.t};
+      const double t = picture.now().t;
+      current = Recording{std::string("live-") + stamp + ".mp4", "", 0, t, t};
       current.path = options_.out_dir + "/" + current.name;
       try {
         std::filesystem::create_directories(options_.out_dir);
@@ -405,7 +388,7 @@ void LiveSession::RenderLoop() {
         vo.threads = 1;  // the machine's cores belong to the simulation and the viewers
         video = std::make_unique<VideoEncoder>(current.path, vo);
         film_clock = 0;
-        film_last_t = input.snapshot.t;
+        film_last_t = t;
         std::lock_guard<std::mutex> lock(mu_);
         recording_ = true;
         record_error_.clear();
@@ -422,12 +405,14 @@ void LiveSession::RenderLoop() {
     }
     if (!canvas) canvas = std::make_shared<Image>();
     try {
-      const Frame frame = MakeLiveFrame(input, options_.width, options_.height,
-                                        Colormap(colormap), Theme::Dark());
+      const Snapshot& shown = picture.now();
+      const FrameLayout layout = MakeFrameLayout(view_, picture, options_.width, options_.height);
+      const Frame frame =
+          MakeFrame(view_, picture, shown, layout, Colormap(colormap), Theme::Dark(), status);
       renderer->Draw(frame, canvas.get());
       auto out = std::make_shared<LiveFrame>();
       out->number = ++number;
-      out->t = input.snapshot.t;
+      out->t = shown.t;
       out->seq = seq;
       const std::string bytes = jpeg->Encode(*canvas);
       out->message.resize(LiveFrame::kHeaderBytes);
@@ -440,10 +425,10 @@ void LiveSession::RenderLoop() {
       }
       out->message += bytes;
       if (video) {
-        const double dt = input.snapshot.t - film_last_t;  // < 0 after a restart
+        const double dt = shown.t - film_last_t;  // < 0 after a restart
         // At most a second per frame: a speed changed between two frames cannot flood it.
         if (dt > 0) film_clock += std::min(dt / speed, 1.0);
-        film_last_t = input.snapshot.t;
+        film_last_t = shown.t;
         const long due = 1 + std::lround(film_clock * options_.fps);
         while (video->frames_added() < due) video->AddFrame(*canvas);
       }

@@ -1,10 +1,11 @@
 #pragma once
 // A live view of a scene: the simulation paced to the wall clock on one thread, the picture
-// drawn (MakeLiveFrame, OSMesa) and encoded once as JPEG on another, whatever the number of
-// viewers, but only while someone watches (a stream, a recording) or asks for a picture
-// (FreshFrame), and a thread-safe face for the network: the newest frame, the state as JSON, the
-// controls. Memory stays bounded however long it runs: viewers share the newest frame only,
-// the plots keep a rolling window, and the time series goes to a temporary file.
+// drawn (MakeFrame of a following History, OSMesa) and encoded once as JPEG on another,
+// whatever the number of viewers, but only while someone watches (a stream, a recording) or
+// asks for a picture (FreshFrame), and a thread-safe face for the network: the newest frame,
+// the state as JSON, the controls. Memory stays bounded however long it runs: viewers share the
+// newest frame only, the plots keep a rolling window, and the time series goes to a temporary
+// file.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -20,10 +21,12 @@
 
 #include "encode/image.h"
 #include "live/control.h"
-#include "view/live_history.h"
 #include "live/live_simulation.h"
 #include "live/row_log.h"
 #include "scene/scene_def.h"
+#include "view/history.h"
+#include "view/scene_view.h"
+#include "view/snapshot.h"
 
 namespace cablefilm {
 
@@ -104,7 +107,10 @@ class LiveSession {
   void RenderLoop();
   // Applies what the controls asked of the simulation; called on its thread, without the lock.
   void ApplyPending();
-  void PublishLocked();  // the frame input and the numbers, after a step (lock held)
+  // The simulation's state now into the history (and the time series), after a step or a
+  // restart (lock held).
+  void RecordLocked();
+  void PublishLocked();  // the numbers, after a step (lock held)
   std::string StateJsonLocked() const;
   std::string StatusLocked() const;
 
@@ -113,6 +119,7 @@ class LiveSession {
   std::string start_kind_, end_kind_;  // "fixed", "moving" or "free", as the film names them
   ControlLimits limits_;
   LiveSimulation sim_;  // owned by the simulation thread once it runs
+  const SceneView view_;  // what the picture shows of the scene: read by both threads
 
   mutable std::mutex mu_;
   mutable std::condition_variable sim_cv_, render_cv_, frame_cv_;
@@ -138,7 +145,8 @@ class LiveSession {
   std::string error_;           // a blow-up (paused until a restart)
 
   // What the simulation published (lock held).
-  LiveHistory history_;
+  History history_;
+  Snapshot state_;  // the state now as RecordLocked hands it to the history (storage reused)
   RowLog rows_;
   std::uint64_t input_version_ = 0, view_version_ = 0;
   double t_ = 0, current_now_ = 0;

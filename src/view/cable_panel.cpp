@@ -15,28 +15,32 @@ bool Inside(int j, std::size_t n) { return j >= 0 && static_cast<std::size_t>(j)
 
 }  // namespace
 
-PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::string& main_label,
-                         const std::string& companion_label, const std::string& path_label,
-                         Rgba swatch, const Theme& th, const std::string& reference_label,
-                         bool seabed, bool surface) {
+PanelHead CablePanelHead(const SceneView& scene, const std::string& path_label, Rgba swatch,
+                         const Theme& th) {
   PanelHead head;
   head.title = "Cable shape (to scale)";
-  if (companion)  // the cables' names first, on a row of their own when space is short
-    head.groups.push_back({{LegendEntry::kCable, swatch, main_label},
-                           {LegendEntry::kCompanion, swatch, companion_label}});
+  if (scene.lines.size() > 1) {  // the names first, on a row of their own when space is short
+    LegendGroup names{{LegendEntry::kCable, swatch, LineName(scene, 0)}};
+    for (std::size_t i = 1; i < scene.lines.size(); ++i)
+      names.push_back({LegendEntry::kOverlay, swatch, LineName(scene, i)});
+    head.groups.push_back(names);
+  }
+  bool weights = false;
+  for (const LineView& line : scene.lines) weights = weights || !line.marks.weights.empty();
+  const StationMarks& first = scene.lines.front().marks;
   LegendGroup marks_row;
-  if (!marks.weights.empty()) marks_row.push_back({LegendEntry::kDiamond, th.marker_fill, "weight"});
-  if (!marks.fixed_ends.empty())
+  if (weights) marks_row.push_back({LegendEntry::kDiamond, th.marker_fill, "weight"});
+  if (!first.fixed_ends.empty())
     marks_row.push_back({LegendEntry::kSquare, th.marker_fill, "fixed end"});
-  if (!marks.moving_ends.empty()) {
+  if (!first.moving_ends.empty()) {
     marks_row.push_back({LegendEntry::kRing, th.accent, "moving end"});
     marks_row.push_back({LegendEntry::kLine, PathColor(th), path_label});
   }
-  if (!marks.free_ends.empty())
+  if (!first.free_ends.empty())
     marks_row.push_back({LegendEntry::kRing, th.marker_fill, "free end"});
-  marks_row.push_back({LegendEntry::kDash, th.equilibrium, reference_label});
-  if (surface) marks_row.push_back({LegendEntry::kLine, th.water, "water surface"});
-  if (seabed) marks_row.push_back({LegendEntry::kLine, th.seabed, "seabed"});
+  marks_row.push_back({LegendEntry::kDash, th.equilibrium, ReferenceName(scene)});
+  if (scene.sea.surface) marks_row.push_back({LegendEntry::kLine, th.water, "water surface"});
+  if (scene.sea.seabed) marks_row.push_back({LegendEntry::kLine, th.seabed, "seabed"});
   head.groups.push_back(marks_row);
   return head;
 }
@@ -44,10 +48,13 @@ PanelHead CablePanelHead(const CableMarks& marks, bool companion, const std::str
 void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& colormap,
                     const Theme& th) {
   const float k = p.k();
-  const CableSnapshot& snap = *in.now;
+  const std::vector<LineView>& lines = *in.lines;
+  const std::vector<LineSnapshot>& now = *in.now;
+  const LineSnapshot& snap = now.front();  // the first line, drawn in full
+  const StationMarks& marks = lines.front().marks;
+  const LineState& reference = lines.front().reference;
   const double lo = in.tension_min, hi = in.tension_max;
   const std::size_t links = snap.tension.size();
-  const bool comp = snap.has_companion();
   DrawPanelHead(p, in.panel, in.head, in.world.rect.y0, th);
   DrawAxes(p, in.world, "x [m]", "y [m]", th, 10, 5);
 
@@ -92,27 +99,30 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
     }
     p.Polyline(line, 2 * k, th.water);
   }
-  if (in.equilibrium && in.equilibrium->x.size() == snap.x.size() &&
-      in.equilibrium->y.size() == snap.x.size()) {
+  if (reference.x.size() == snap.x.size() && reference.y.size() == snap.x.size()) {
     std::vector<Vec2f> eq;
-    for (std::size_t j = 0; j < in.equilibrium->x.size(); ++j)
-      eq.push_back(world(in.equilibrium->x[j], in.equilibrium->y[j]));
+    for (std::size_t j = 0; j < reference.x.size(); ++j)
+      eq.push_back(world(reference.x[j], reference.y[j]));
     p.Dashed(eq, 1.6f * k, th.equilibrium, 8 * k, 6 * k);
   }
   if (in.end_paths)
-    for (const auto& path : *in.end_paths) {
-      std::vector<Vec2f> px;
-      px.reserve(path.size());
-      for (const Vec2f& q : path) px.push_back(world(q.x, q.y));
-      for (std::size_t i = 1; i < px.size(); ++i) p.Line(px[i - 1], px[i], 2 * k, PathColor(th));
+    for (const EndPath& path : *in.end_paths) {
+      if (path.line != 0) continue;  // an overlay's end goes where the first line's does
+      for (const auto& piece : path.pieces) {
+        std::vector<Vec2f> px;
+        px.reserve(piece.size());
+        for (const Vec2f& q : piece) px.push_back(world(q.x, q.y));
+        for (std::size_t i = 1; i < px.size(); ++i) p.Line(px[i - 1], px[i], 2 * k, PathColor(th));
+      }
     }
   const float cw = in.cable_width;
-  if (comp) {  // beneath the main cable; its dotted rim shows where the two coincide
+  for (std::size_t i = 1; i < now.size(); ++i) {  // beneath the first line; each dotted rim
+    const LineSnapshot& o = now[i];                // shows where the lines coincide
     std::vector<Vec2f> c;
-    for (std::size_t j = 0; j < snap.cx.size(); ++j) c.push_back(world(snap.cx[j], snap.cy[j]));
-    DrawCompanionRim(p, c, cw + 7 * k, th);
-    for (std::size_t j = 0; j < links && j + 1 < c.size(); ++j)
-      p.Line(c[j], c[j + 1], in.companion_width, colormap.Map(snap.ctension[j], lo, hi));
+    for (std::size_t j = 0; j < o.x.size(); ++j) c.push_back(world(o.x[j], o.y[j]));
+    DrawOverlayRim(p, c, cw + 7 * k, th);
+    for (std::size_t j = 0; j < o.tension.size() && j + 1 < c.size(); ++j)
+      p.Line(c[j], c[j + 1], in.overlay_width, colormap.Map(o.tension[j], lo, hi));
   }
   for (std::size_t j = 0; j < links; ++j)  // a thin rim keeps the dark end of the map visible
     p.Line(world(snap.x[j], snap.y[j]), world(snap.x[j + 1], snap.y[j + 1]), cw + 2.5f * k,
@@ -120,32 +130,32 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
   for (std::size_t j = 0; j < links; ++j)
     p.Line(world(snap.x[j], snap.y[j]), world(snap.x[j + 1], snap.y[j + 1]), cw,
            colormap.Map(snap.tension[j], lo, hi));
-  if (comp)  // the companion's weights, smaller: hidden by the main's where the two coincide
-    for (int w : in.marks.weights) {
-      if (!Inside(w, snap.cx.size())) continue;
-      const Vec2f c = world(snap.cx[w], snap.cy[w]);
-      p.Diamond(c, 8.5f * k, th.companion_rim);
+  for (std::size_t i = 1; i < now.size() && i < lines.size(); ++i)  // the overlays' weights,
+    for (int w : lines[i].marks.weights) {  // smaller: hidden by the first's where they coincide
+      if (!Inside(w, now[i].x.size())) continue;
+      const Vec2f c = world(now[i].x[w], now[i].y[w]);
+      p.Diamond(c, 8.5f * k, th.overlay_rim);
       p.Diamond(c, 6 * k, th.marker_fill);
     }
-  for (int w : in.marks.weights) {
+  for (int w : marks.weights) {
     if (!Inside(w, snap.x.size())) continue;
     const Vec2f c = world(snap.x[w], snap.y[w]);
     p.Diamond(c, 11 * k, th.marker_edge);
     p.Diamond(c, 8 * k, th.marker_fill);
   }
-  for (int e : in.marks.fixed_ends) {
+  for (int e : marks.fixed_ends) {
     if (!Inside(e, snap.x.size())) continue;
     const Vec2f c = world(snap.x[e], snap.y[e]);
     p.Square(c, 8 * k, th.marker_edge);
     p.Square(c, 5.5f * k, th.marker_fill);
   }
-  for (int e : in.marks.moving_ends) {
+  for (int e : marks.moving_ends) {
     if (!Inside(e, snap.x.size())) continue;
     const Vec2f c = world(snap.x[e], snap.y[e]);
     p.Disc(c, 9 * k, th.accent);
     p.Disc(c, 4.5f * k, th.panel);
   }
-  for (int e : in.marks.free_ends) {
+  for (int e : marks.free_ends) {
     if (!Inside(e, snap.x.size())) continue;
     const Vec2f c = world(snap.x[e], snap.y[e]);
     p.Disc(c, 8.5f * k, th.marker_edge);

@@ -26,17 +26,17 @@ std::vector<Vec2f> OffsetPolyline(const std::vector<Vec2f>& p, float d) {
   return out;
 }
 
-void DrawCompanionRim(Painter& p, const std::vector<Vec2f>& pts, float rim_width,
-                      const Theme& th) {
+void DrawOverlayRim(Painter& p, const std::vector<Vec2f>& pts, float rim_width,
+                    const Theme& th) {
   const float k = p.k(), dot = std::max(1.0f, 1.6f * k);
   for (float side : {-1.0f, 1.0f})  // round caps lengthen each dash by the dot width
-    p.Dashed(OffsetPolyline(pts, side * (rim_width - dot) / 2), dot, th.companion_rim, 2.5f * k,
+    p.Dashed(OffsetPolyline(pts, side * (rim_width - dot) / 2), dot, th.overlay_rim, 2.5f * k,
              6.5f * k);
 }
 
-void DrawCompanionLine(Painter& p, const std::vector<Vec2f>& pts, float width, float rim_width,
-                       Rgba color, const Theme& th) {
-  DrawCompanionRim(p, pts, rim_width, th);
+void DrawOverlayLine(Painter& p, const std::vector<Vec2f>& pts, float width, float rim_width,
+                     Rgba color, const Theme& th) {
+  DrawOverlayRim(p, pts, rim_width, th);
   p.Polyline(pts, width, color);
 }
 

@@ -32,15 +32,15 @@ void DrawColorBar(Painter& p, const ColorBarInput& in, const Colormap& colormap,
   }
   p.Text(in.caption, {in.caption_x, (cb.y0 + cb.y1) / 2}, 16 * k, th.text_dim, HAlign::kCenter,
          VAlign::kBottom, true);
-  if (std::isfinite(in.now)) {
-    const float y = bar_y(in.now / kNewtonsPerKilonewton);
-    p.Triangle({cb.x0 - 10 * k, y - 6 * k}, {cb.x0 - 10 * k, y + 6 * k}, {cb.x0 - 1 * k, y},
-               th.text);
-  }
-  if (std::isfinite(in.companion_now)) {
-    const float y = bar_y(in.companion_now / kNewtonsPerKilonewton);
-    p.Triangle({cb.x0 - 20 * k, y - 6 * k}, {cb.x0 - 20 * k, y + 6 * k}, {cb.x0 - 11 * k, y},
-               th.companion);
+  for (std::size_t i = 0; in.now && i < in.now->size(); ++i) {
+    const std::vector<double>& T = (*in.now)[i].tension;
+    if (T.empty()) continue;
+    const double now = *std::max_element(T.begin(), T.end());
+    if (!std::isfinite(now)) continue;
+    const float y = bar_y(now / kNewtonsPerKilonewton);
+    const float step = static_cast<float>(10 * i);  // [design px]: each line's further left
+    const float x0 = cb.x0 - (step + 10) * k, x1 = cb.x0 - (step + 1) * k;
+    p.Triangle({x0, y - 6 * k}, {x0, y + 6 * k}, {x1, y}, i == 0 ? th.text : th.overlay);
   }
 }
 

@@ -1,12 +1,12 @@
 #pragma once
 // The colour bar of the cable's tension: the colour map from bottom (tension_min) to top
-// (tension_max) with kN ticks on its right, a vertical caption, and marks at the current
-// largest tension of the cable (and of its companion).
-#include <limits>
+// (tension_max) with kN ticks on its right, a vertical caption, and marks at each line's
+// largest tension now.
 #include <string>
 
 #include "view/colormap.h"
 #include "view/painter.h"
+#include "view/snapshot.h"
 #include "view/theme.h"
 
 namespace cablefilm {
@@ -16,10 +16,9 @@ struct ColorBarInput {
   float caption_x = 0;    // where the vertical caption's bottom edge goes [px]
   double tension_min = 0, tension_max = 1;  // the colour range [N], increasing
   std::string caption = "tension [kN]";
-  // The largest tension now [N]: a mark left of the bar (NaN = none); the companion's, in its
-  // curve colour, just left of it.
-  double now = std::numeric_limits<double>::quiet_NaN();
-  double companion_now = std::numeric_limits<double>::quiet_NaN();
+  // The lines now: a mark left of the bar at each one's largest tension (the first's in the
+  // text colour, each after it in the overlay colour, further left); null = none.
+  const std::vector<LineSnapshot>* now = nullptr;
 };
 
 void DrawColorBar(Painter& p, const ColorBarInput& in, const Colormap& colormap, const Theme& th);

@@ -10,11 +10,13 @@ constexpr double kEndX = 80.0, kEndY = 30.48, kAmplitude = 1.8288, kPeriod = 10.
 constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
-CableSnapshot MakeDemoSnapshot(const FilmSpec& spec, double t) {
-  const int n = static_cast<int>(spec.arc_length.size());
+Snapshot MakeDemoSnapshot(const SceneView& scene, double t) {
+  const int n = static_cast<int>(scene.lines.front().arc_length.size());
   const int s = n - 1;
-  CableSnapshot snap;
-  snap.t = t;
+  Snapshot out;
+  out.t = t;
+  out.lines.resize(1);
+  LineSnapshot& snap = out.lines[0];
   const double w = 2 * kPi / kPeriod;
   const double ramp = 1 - std::exp(-0.5 * t);
   const double ex = kEndX + ramp * kAmplitude * std::sin(w * t);
@@ -35,28 +37,32 @@ CableSnapshot MakeDemoSnapshot(const FilmSpec& spec, double t) {
     const double wave = std::sin(w * t - 2.5 * u) * (0.4 + 0.6 * u);
     snap.tension[j] = std::max(0.0, 9000 + 260 * height + 9000 * ramp * wave - 15 * sag * sag);
   }
-  return snap;
+  return out;
 }
 
-FilmSpec MakeDemoSpec(double duration, int segments) {
-  FilmSpec spec;
-  spec.title = "Sample mooring line, Polachek et al. 1963 (synthetic)";
+SceneView MakeDemoScene(int segments) {
+  SceneView scene;
+  scene.title = "Sample mooring line, Polachek et al. 1963 (synthetic)";
+  scene.lines.resize(1);
+  LineView& line = scene.lines[0];
   const int n = segments + 1;
-  for (int j = 0; j < n; ++j) spec.arc_length.push_back(kLength * j / segments);
-  spec.section_boundaries = {45.72};
-  spec.section_names = {"wire", "nylon"};
-  spec.weight_stations = {static_cast<int>(std::lround(27.432 / kLength * segments))};
-  spec.fixed_ends = {0};
-  spec.moving_ends = {segments};
-  spec.duration = duration;
-  spec.equilibrium = MakeDemoSnapshot(spec, 0);
-  spec.tension_min = 0;
-  spec.tension_max = 30000;
-  spec.x_min = -1;
-  spec.x_max = kEndX + kAmplitude + 1;
-  spec.y_min = -12;
-  spec.y_max = kEndY + 2 * kAmplitude + 1;
-  return spec;
+  for (int j = 0; j < n; ++j) line.arc_length.push_back(kLength * j / segments);
+  line.section_boundaries = {45.72};
+  line.section_names = {"wire", "nylon"};
+  line.marks.weights = {static_cast<int>(std::lround(27.432 / kLength * segments))};
+  line.marks.fixed_ends = {0};
+  line.marks.moving_ends = {segments};
+  line.reference = MakeDemoSnapshot(scene, 0).lines[0];
+  return scene;
+}
+
+FixedPolicy MakeDemoPolicy(double duration) {
+  FixedPolicy policy;
+  policy.duration = duration;
+  policy.tension_min = 0;
+  policy.tension_max = 30000;
+  policy.box = {-1, kEndX + kAmplitude + 1, -12, kEndY + 2 * kAmplitude + 1};
+  return policy;
 }
 
 }  // namespace cablefilm

@@ -8,28 +8,13 @@
 #include "core/cancel.h"
 #include "core/step.h"
 #include "core/error.h"
-#include "view/cable_panel.h"
 #include "view/film_writer.h"
+#include "view/scene_view_builder.h"
 #include "view/time_trace.h"
+#include "view/world_box.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
-namespace {
-
-CableSnapshot ToSnapshot(const State& s, const Eigen::VectorXd& tension) {
-  CableSnapshot snap;
-  snap.t = s.t;
-  snap.x.resize(s.x.cols());
-  snap.y.resize(s.x.cols());
-  for (Eigen::Index j = 0; j < s.x.cols(); ++j) {
-    snap.x[j] = s.x(0, j);
-    snap.y[j] = s.x(1, j);
-  }
-  snap.tension.assign(tension.data(), tension.data() + tension.size());
-  return snap;
-}
-
-}  // namespace
 
 FilmRequest MakeFilmRequest(const FilmSettings& s, const std::string& out_dir,
                             const std::string& shader_dir) {
@@ -48,43 +33,19 @@ FilmRequest MakeFilmRequest(const FilmSettings& s, const std::string& out_dir,
   return r;
 }
 
-void AddWaterSurface(const FilmSpec& spec, const Model& model, CableSnapshot* snap) {
-  if (spec.surface)  // a box's width beyond it on either side: the plot may be wider
-    SurfaceProfile(model.env.wave, snap->t, 2 * spec.x_min - spec.x_max,
-                   2 * spec.x_max - spec.x_min, snap->surface_x, snap->surface_y);
+SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& runs) {
+  std::vector<LineView> lines;
+  for (const Run* run : runs)
+    lines.push_back(MakeLineView(scene, run->model, run->initial.state.x, run->initial.tension(),
+                                 run->label));
+  return MakeSceneView(scene, runs.front()->model, std::move(lines));
 }
 
-FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<const Run*>& runs,
-                      const FilmRequest& request, double duration) {
+FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>& runs,
+                           const FilmRequest& request, double duration) {
   const Run& run = *runs.front();
-  const Model& m = run.model;
-  FilmSpec spec;
-  spec.title = scene.title;
-  spec.arc_length.assign(m.line.arc_length.data(), m.line.arc_length.data() + m.line.arc_length.size());
-  spec.section_boundaries = m.line.section_boundaries;
-  // Each section by its material's name, when every section has one (the model keeps one
-  // boundary between each two sections, so the counts agree).
-  for (const SectionDef& section : scene.sections) {
-    const bool named = section.material >= 0 &&
-                       static_cast<std::size_t>(section.material) < scene.materials.size() &&
-                       !scene.materials[section.material].name.empty();
-    if (!named) {
-      spec.section_names.clear();
-      break;
-    }
-    spec.section_names.push_back(scene.materials[section.material].name);
-  }
-  if (spec.section_names.size() != spec.section_boundaries.size() + 1) spec.section_names.clear();
-  spec.weight_stations = m.line.weight_stations;
-  // Each end by its role in the scene: fixed, moving (driven) or free.
-  for (int j : {0, m.line.links}) {
-    if (m.end_motion(j).moves()) spec.moving_ends.push_back(j);
-    if (m.end_motion(j).kind() == EndKind::kFixed) spec.fixed_ends.push_back(j);
-    if (m.end_motion(j).kind() == EndKind::kFree) spec.free_ends.push_back(j);
-  }
-  spec.equilibrium = ToSnapshot(run.initial.state, run.initial.tension());
-  if (scene.initial == InitialStateKind::kStraight) spec.reference_label = kStraightStateLabel;
-  spec.duration = duration;
+  FixedPolicy policy;
+  policy.duration = duration;
   double t_lo = run.extent.tension_min, t_hi = run.extent.tension_max;
   Vec lo = run.extent.box_min, hi = run.extent.box_max;
   for (const Run* r : runs) {
@@ -94,23 +55,11 @@ FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<const Run*>& runs
     hi = hi.cwiseMax(r->extent.box_max);
   }
   // Colour range from zero (slack) to a little above the largest tension of every run.
-  spec.tension_min = request.tension_min >= 0 ? request.tension_min : std::min(0.0, t_lo);
-  spec.tension_max = request.tension_max >= 0 ? request.tension_max : 1.05 * std::max(t_hi, 1.0);
-  spec.x_min = lo.x();
-  spec.x_max = hi.x();
-  spec.y_min = lo.y();
-  spec.y_max = hi.y();
-  if (m.env.seabed.present) {  // the bed in view, with a strip of ground below it
-    spec.seabed = true;
-    spec.seabed_y = m.env.seabed.y;
-    spec.y_min = std::min(spec.y_min, m.env.seabed.y - SeabedMargin(spec.y_max - spec.y_min));
-  }
-  if (m.has_waves()) {  // the surface in view: up to its crests, with a strip of sky
-    spec.surface = true;
-    const double crest = m.env.wave.spec.surface_y + m.env.wave.amplitude;
-    spec.y_max = std::max(spec.y_max, crest + SeabedMargin(crest - spec.y_min));
-  }
-  return spec;
+  policy.tension_min = request.tension_min >= 0 ? request.tension_min : std::min(0.0, t_lo);
+  policy.tension_max =
+      request.tension_max >= 0 ? request.tension_max : 1.05 * std::max(t_hi, 1.0);
+  policy.box = ShownBox({lo.x(), hi.x(), lo.y(), hi.y()}, view.sea, run.model.env.wave);
+  return policy;
 }
 
 namespace {
@@ -174,7 +123,7 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
   const long last = whole + (run_end - whole * frame_interval > 1e-9 * frame_interval ? 1 : 0);
   auto frame_time = [&](long k) { return k <= whole ? k * frame_interval : run_end; };
   // Every run steps again from its initial Data, on the frames' grid (in lockstep, so that a
-  // second run can be drawn over the first). When a frame is a whole number of output
+  // run can be drawn over another). When a frame is a whole number of output
   // intervals (the default: a row a frame), that grid is the rows' and the run repeats its
   // first pass step for step (deterministic), so a frame's cable is exactly the state of its
   // row; otherwise the grid is the frames' own with the scheme's step rule.
@@ -249,13 +198,9 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
   o.shader_dir = request.shader_dir;
   o.write_max_tension = false;  // max_tension.png comes from the rows (WriteMaxTensionFigure)
   o.series_label = main.label;
-  FilmSpec spec = MakeFilmSpec(scene, runs, request, frame_time(last));
-  spec.label = main.label;
-  if (runs.size() > 1) {
-    spec.companion_label = runs[1]->label;
-    spec.companion_equilibrium = ToSnapshot(runs[1]->initial.state, runs[1]->initial.tension());
-  }
-  FilmWriter writer(o, spec, request.out_dir, static_cast<int>(last + 1));
+  const SceneView view = MakeFilmScene(scene, runs);
+  const FixedPolicy policy = MakeFilmPolicy(view, runs, request, frame_time(last));
+  FilmWriter writer(o, view, policy, request.out_dir, static_cast<int>(last + 1));
   bool finished = true;
   std::string failure;  // a blow-up in this pass: the film is then partial too
   for (long k = 0; k <= last && failure.empty(); ++k) {
@@ -275,35 +220,36 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
       }
     }
     if (!finished || !failure.empty()) break;
-    CableSnapshot snap = ToSnapshot(steppers[0].data.state, steppers[0].data.tension());
-    AddWaterSurface(spec, main.model, &snap);
-    // The output rows up to this frame (all that are left at the last frame).
+    Snapshot snap;  // a line a run, each with its output rows since the last frame
+    snap.t = steppers[0].data.state.t;
+    snap.lines.resize(steppers.size());
+    for (std::size_t r = 0; r < steppers.size(); ++r)
+      SetLineState(steppers[r].data.state.x, steppers[r].data.tension(), &snap.lines[r]);
+    if (view.sea.surface) AddWaterSurface(main.model.env.wave, policy.box, &snap);
+    // The output rows up to this frame (all that are left at the last frame): the first run's
+    // times, every run's largest tension at each.
     const double until = k == last ? std::numeric_limits<double>::infinity()
                                    : steppers[0].data.state.t + 1e-9 * frame_interval;
     double t, v;
     while (steppers[0].rows.Next(until, &t, &v)) {
       snap.row_t.push_back(t);
-      snap.row_max.push_back(v);
+      snap.lines[0].row_max.push_back(v);
     }
-    if (steppers[0].row_min.size() == static_cast<Eigen::Index>(snap.tension.size())) {
-      const Eigen::VectorXd& lo = steppers[0].row_min;
-      const Eigen::VectorXd& hi = steppers[0].row_max;
-      snap.row_link_min.assign(lo.data(), lo.data() + lo.size());
-      snap.row_link_max.assign(hi.data(), hi.data() + hi.size());
-      steppers[0].row_min.resize(0);
-      steppers[0].row_max.resize(0);
-    }
-    if (steppers.size() > 1) {
-      const CableSnapshot other = ToSnapshot(steppers[1].data.state, steppers[1].data.tension());
-      snap.cx = other.x;
-      snap.cy = other.y;
-      snap.ctension = other.tension;
+    for (std::size_t r = 1; r < steppers.size(); ++r)
       for (std::size_t i = 0; i < snap.row_t.size(); ++i) {
-        if (!steppers[1].rows.Next(until, &t, &v) || t != snap.row_t[i])
-          throw Error("film: the " + runs[1]->label + " run's output rows do not line up with the " +
-                      main.label + " run's at t = " + std::to_string(snap.row_t[i]) + " s");
-        snap.row_cmax.push_back(v);
+        if (!steppers[r].rows.Next(until, &t, &v) || t != snap.row_t[i])
+          throw Error("film: the " + runs[r]->label +
+                      " run's output rows do not line up with the " + main.label +
+                      " run's at t = " + std::to_string(snap.row_t[i]) + " s");
+        snap.lines[r].row_max.push_back(v);
       }
+    for (std::size_t r = 0; r < steppers.size(); ++r) {  // each link's envelope over those rows
+      Stepper& st = steppers[r];
+      if (st.row_min.size() != static_cast<Eigen::Index>(snap.lines[r].tension.size())) continue;
+      snap.lines[r].row_link_min.assign(st.row_min.data(), st.row_min.data() + st.row_min.size());
+      snap.lines[r].row_link_max.assign(st.row_max.data(), st.row_max.data() + st.row_max.size());
+      st.row_min.resize(0);
+      st.row_max.resize(0);
     }
     writer.Push(std::move(snap));
   }

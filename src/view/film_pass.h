@@ -46,19 +46,19 @@ struct PictureReport {
                                 // point: the last row's tension_max [N]
 };
 
-struct FilmSpec;       // view/frame.h
-struct CableSnapshot;  // view/frame.h
+struct SceneView;    // view/scene_view.h
+struct FixedPolicy;  // view/history.h
 
-// What stays fixed over the film of `runs` lasting `duration` simulated seconds (the first
-// run's cable, ends, sections, initial state; the colour range and the world box of every run,
-// or the request's range). Each run has been run once (run/run.h: ExecuteRun). Used by
-// RenderFilm, and to draw a frame on its own.
-FilmSpec MakeFilmSpec(const SceneDef& scene, const std::vector<const Run*>& runs,
-                      const FilmRequest& request, double duration);
+// The film's scene view: a line a run (each run's cable, ends, sections, initial state, named by
+// the run's label), the first drawn in full and the others over it. Each run has been run once
+// (run/run.h: ExecuteRun). Used by RenderFilm, and to draw a frame on its own.
+SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& runs);
 
-// The water surface at the snapshot's time across the film's width, when the spec has waves:
-// what every frame of the film carries.
-void AddWaterSurface(const FilmSpec& spec, const Model& model, CableSnapshot* snap);
+// What stays fixed over the film of `runs` lasting `duration` simulated seconds: the colour
+// range and the world box of every run (or the request's range), the box reaching to the
+// seabed and the crests of `view` (MakeFilmScene's).
+FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>& runs,
+                           const FilmRequest& request, double duration);
 
 // <out_dir>/max_tension.png, or max_tension.partial.png when the rows are those of a run cut
 // short (`complete` false): every run's rows on one pair of axes, thinned to the extremes of
@@ -69,8 +69,8 @@ PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<con
                                     const std::string& out_dir, const std::string& shader_dir,
                                     bool complete);
 
-// Renders film.mp4 of the first run, with the second (if any) drawn over it on the same colour
-// range. Frames are at k x speed / fps and, when the run's end is not on one, at its end.
+// Renders film.mp4 of the runs, a line each (MakeFilmScene): every run after the first drawn
+// over it on the same colour range. Frames are at k x speed / fps and, when the run's end is not on one, at its end.
 // Returns false if `stop` was raised (the film is then closed at the last frame drawn, as
 // film.partial.mp4). `report` (optional): the film's time plot at its last frame. Throws Error.
 bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,

@@ -9,7 +9,6 @@
 #include <exception>
 #include <filesystem>
 #include <future>
-#include <limits>
 #include <mutex>
 #include <thread>
 
@@ -35,13 +34,14 @@ void WriteMaxTensionPng(const std::string& path, const std::vector<MaxTensionSer
 
 struct FilmWriter::Impl {
   FilmOptions options;
-  FilmSpec spec;
+  SceneView scene;
+  FixedPolicy policy;
   std::string out_dir;
   int total_frames = 0;
 
   std::mutex mutex;
   std::condition_variable not_full, not_empty;
-  std::deque<CableSnapshot> queue;
+  std::deque<Snapshot> queue;
   bool closing = false;
   bool complete = true;    // false: FinishPartial (the film stays under its partial name)
   bool failed = false;
@@ -49,14 +49,7 @@ struct FilmWriter::Impl {
   bool error_thrown = false;  // the error has reached the caller (it is reported there, once)
   bool finished = false;
   long done = 0;
-  MaxTensionSeries series;  // copied out under the mutex
-  MaxTensionSeries companion_series;  // the companion cable's, when the spec names one
-  std::vector<MaxTensionSeries> AllSeries() const {  // call under the mutex
-    std::vector<MaxTensionSeries> all{series};
-    if (!spec.label.empty()) all[0].label = spec.label;
-    if (!spec.companion_label.empty()) all.push_back(companion_series);
-    return all;
-  }
+  std::vector<MaxTensionSeries> series;  // a line each; copied out under the mutex
   std::promise<void> ready;  // set by the worker once set up (or with its set-up error)
   std::thread worker;
 
@@ -110,10 +103,10 @@ class Progress {
 void FilmWriter::Impl::Run(std::promise<void>* ready) {
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<VideoEncoder> encoder;
-  std::unique_ptr<FilmHistory> history;
+  std::unique_ptr<History> history;
   const bool draw = options.write_film || options.write_frames;
   try {
-    history = std::make_unique<FilmHistory>(spec);
+    history = std::make_unique<History>(scene, policy);
     if (draw) {
       RenderOptions ro;
       ro.width = options.width;
@@ -139,13 +132,13 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
 
   try {
     const Colormap colormap(options.colormap);
-    const FrameLayout layout = MakeFrameLayout(spec, options.width, options.height);
+    const FrameLayout layout = MakeFrameLayout(scene, *history, options.width, options.height);
     Progress progress(options.progress, total_frames);
     Image image;
     PngOptions png;
     png.compression_level = options.png_compression;
     for (;;) {
-      CableSnapshot snapshot;
+      Snapshot snapshot;
       {
         std::unique_lock<std::mutex> lock(mutex);
         not_empty.wait(lock, [&] { return !queue.empty() || closing; });
@@ -156,7 +149,7 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
       }
       history->Add(snapshot);
       if (draw) {
-        const Frame frame = MakeFrame(spec, *history, snapshot, layout, colormap);
+        const Frame frame = MakeFrame(scene, *history, snapshot, layout, colormap);
         renderer->Draw(frame, &image);
         if (encoder) encoder->AddFrame(image);
         if (options.write_frames) {
@@ -173,13 +166,9 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
     }
     {  // the time plot's data as the last frame shows it (every row the snapshots carried)
       std::lock_guard<std::mutex> lock(mutex);
-      series.t = history->times();
-      series.tension = history->max_tension();
-      if (!spec.companion_label.empty()) {
-        companion_series.t = history->times();
-        companion_series.tension = history->companion_max_tension();
-        companion_series.tension.resize(companion_series.t.size(),
-                                        std::numeric_limits<double>::quiet_NaN());
+      for (std::size_t i = 0; i < series.size(); ++i) {
+        series[i].t = history->times();
+        series[i].tension = history->max_tension()[i];
       }
     }
     if (progress.printed()) progress.Update(done, true);
@@ -195,13 +184,14 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
       std::vector<MaxTensionSeries> all;
       {
         std::lock_guard<std::mutex> lock(mutex);
-        all = AllSeries();
+        all = series;
       }
       WriteMaxTensionPng(out_dir + (complete ? "/max_tension.png" : "/max_tension.partial.png"),
                          all, options.still_width,
                          options.still_height,
-                         spec.title.empty() ? "Maximum tension along the cable"
-                                            : "Maximum tension along the cable \u2014 " + spec.title,
+                         scene.title.empty()
+                             ? "Maximum tension along the cable"
+                             : "Maximum tension along the cable \u2014 " + scene.title,
                          options.shader_dir, options.font_path);
     }
   } catch (...) {
@@ -209,16 +199,15 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
   }
 }
 
-FilmWriter::FilmWriter(const FilmOptions& options, const FilmSpec& spec,
-                       const std::string& out_dir, int total_frames)
+FilmWriter::FilmWriter(const FilmOptions& options, const SceneView& scene,
+                       const FixedPolicy& policy, const std::string& out_dir, int total_frames)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.options = options;
-  m.spec = spec;
+  m.scene = scene;
+  m.policy = policy;
   m.out_dir = out_dir.empty() ? "." : out_dir;
   m.total_frames = total_frames;
-  m.series.label = options.series_label;
-  m.companion_series.label = spec.companion_label;
   if (options.width <= 0 || options.height <= 0 || options.width % 2 || options.height % 2)
     throw Error("film: width and height must be positive and even, got " +
                 std::to_string(options.width) + "x" + std::to_string(options.height));
@@ -226,7 +215,12 @@ FilmWriter::FilmWriter(const FilmOptions& options, const FilmSpec& spec,
   if (options.queue_capacity < 1)
     throw Error("film: queue capacity must be at least 1, got " + std::to_string(options.queue_capacity));
   Colormap check(options.colormap);  // unknown names fail here, with the known ones
-  MakeFrameLayout(spec, options.width, options.height);  // checks the spec
+  MakeFrameLayout(scene, History(scene, policy), options.width, options.height);  // checks both
+  for (std::size_t i = 0; i < scene.lines.size(); ++i) {
+    const std::string& label = scene.lines[i].label;
+    const bool first_unnamed = i == 0 && label.empty();
+    m.series.push_back({first_unnamed ? options.series_label : LineName(scene, i), {}, {}});
+  }
   std::error_code ec;
   std::filesystem::create_directories(m.out_dir, ec);
   if (ec) throw Error("film: cannot create " + m.out_dir + ": " + ec.message());
@@ -254,7 +248,7 @@ FilmWriter::~FilmWriter() {
   }
 }
 
-void FilmWriter::Push(CableSnapshot snapshot) {
+void FilmWriter::Push(Snapshot snapshot) {
   Impl& m = *impl_;
   std::unique_lock<std::mutex> lock(m.mutex);
   if (m.finished || m.closing) throw Error("film: snapshot pushed after Finish()");
@@ -297,12 +291,14 @@ long FilmWriter::frames_done() const {
 
 MaxTensionSeries FilmWriter::max_tension_series() const {
   std::lock_guard<std::mutex> lock(impl_->mutex);
-  return impl_->series;
+  MaxTensionSeries first = impl_->series.front();
+  first.label = impl_->options.series_label;
+  return first;
 }
 
 std::vector<MaxTensionSeries> FilmWriter::all_max_tension_series() const {
   std::lock_guard<std::mutex> lock(impl_->mutex);
-  return impl_->AllSeries();
+  return impl_->series;
 }
 
 }  // namespace cablefilm

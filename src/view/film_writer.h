@@ -8,8 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "view/frame.h"
 #include "view/frame_builder.h"
+#include "view/history.h"
+#include "view/scene_view.h"
+#include "view/snapshot.h"
 
 namespace cablefilm {
 
@@ -34,18 +36,19 @@ struct FilmOptions {
 
 class FilmWriter {
  public:
-  // Checks the options and the spec, creates out_dir (and frames/), starts the drawing thread
-  // and waits until its context, shaders, font and encoder are ready: a bad option fails here.
-  // `total_frames` is only for the progress line (0 = unknown).
-  FilmWriter(const FilmOptions& options, const FilmSpec& spec, const std::string& out_dir,
-             int total_frames);
+  // Checks the options, the scene and the policy (the film's history: History), creates out_dir
+  // (and frames/), starts the drawing thread and waits until its context, shaders, font and
+  // encoder are ready: a bad option fails here. `total_frames` is only for the progress line
+  // (0 = unknown).
+  FilmWriter(const FilmOptions& options, const SceneView& scene, const FixedPolicy& policy,
+             const std::string& out_dir, int total_frames);
   ~FilmWriter();  // if not finished: FinishPartial(), an error then printed on stderr
   FilmWriter(const FilmWriter&) = delete;
   FilmWriter& operator=(const FilmWriter&) = delete;
 
   // Queues a snapshot (times increasing); blocks while the queue is full. Rethrows an error of
   // the drawing thread (then nothing more is drawn).
-  void Push(CableSnapshot snapshot);
+  void Push(Snapshot snapshot);
   // Draws what is queued, flushes and closes film.mp4, writes max_tension.png. Idempotent;
   // rethrows an error of the drawing thread (the film is then not written).
   void Finish();
@@ -54,12 +57,13 @@ class FilmWriter {
   void FinishPartial();
 
   long frames_done() const;  // frames drawn so far
-  // After Finish(): the film's time plot as its last frame shows it (FilmHistory: every output
-  // row the snapshots carried, else one sample a frame), labelled options.series_label.
+  // After Finish(): the film's time plot of the first line as its last frame shows it
+  // (History: every output row the snapshots carried, else one sample a frame), labelled
+  // options.series_label.
   MaxTensionSeries max_tension_series() const;
-  // After Finish(): the main cable's series (labelled spec.label, else options.series_label)
-  // followed, when the spec names a companion cable, by the companion's (labelled
-  // spec.companion_label). These are also the curves of the max_tension.png it writes.
+  // After Finish(): every line's series, each named by its label (the first's, when it has
+  // none, by options.series_label; another's by LineName). These are also the curves of the
+  // max_tension.png it writes.
   std::vector<MaxTensionSeries> all_max_tension_series() const;
 
  private:

@@ -103,7 +103,7 @@ FrameLayout LayoutFrame(const LayoutRequest& r, int width, int height) {
   const float k = std::min(width / 1920.0f, height / 1080.0f);
   L.scale = k;
   L.cable_width = std::max(1.5f, 6 * k);
-  L.companion_width = std::max(2.0f, 0.6f * L.cable_width);
+  L.overlay_width = std::max(2.0f, 0.6f * L.cable_width);
   const float W = static_cast<float>(width), H = static_cast<float>(height);
   const float m = kMargin * k, gap = kGap * k, header = HeaderHeight(k);
   const float avail = H - header - m, content = W - 2 * m;

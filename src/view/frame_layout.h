@@ -24,7 +24,7 @@ struct FrameLayout {
   PixelRect colorbar;      // the colour bar: bottom = tension_min, top = tension_max
   float colorbar_caption_x = 0;  // where the colour bar's vertical caption goes [px]
   float cable_width = 6;   // [px]
-  float companion_width = 3.6f;  // the companion cable's coloured line (drawn under the main) [px]
+  float overlay_width = 3.6f;  // each line's after the first (drawn under the first's) [px]
   // A plot's head (title and legend) takes a second row: its plot starts lower.
   bool legend_rows = false;
 };

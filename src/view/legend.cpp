@@ -52,9 +52,9 @@ void DrawLegend(Painter& p, float right, float baseline, const LegendGroup& entr
         p.Line({x + 3 * k, c.y}, {x + swatch - 3 * k, c.y}, 8.5f * k, th.halo);
         p.Line({x + 3 * k, c.y}, {x + swatch - 3 * k, c.y}, 6 * k, e.color);
         break;
-      case LegendEntry::kCompanion:
-        DrawCompanionLine(p, {{x + 1 * k, c.y}, {x + swatch - 1 * k, c.y}}, 3.6f * k, 12 * k,
-                          e.color, th);
+      case LegendEntry::kOverlay:
+        DrawOverlayLine(p, {{x + 1 * k, c.y}, {x + swatch - 1 * k, c.y}}, 3.6f * k, 12 * k,
+                        e.color, th);
         break;
       case LegendEntry::kBand:
         p.Rect({x, c.y - 6 * k, x + swatch, c.y + 6 * k}, e.color);

@@ -14,7 +14,7 @@ struct LegendEntry {
   enum Kind {
     kLine, kDash, kDot, kBand, kDiamond, kSquare, kRing,
     kCable,      // as the cable is drawn: the tension colour in its thin rim
-    kCompanion,  // as the companion cable is drawn (cable_style.h)
+    kOverlay,    // as a line after the first is drawn (cable_style.h)
     kText,       // no swatch: the label alone (a readout)
   } kind;
   Rgba color;

@@ -7,7 +7,11 @@
 #include "core/error.h"
 #include "view/colormap.h"
 #include "view/frame_builder.h"
+#include "view/history.h"
 #include "view/renderer.h"
+#include "view/scene_view.h"
+#include "view/snapshot.h"
+#include "view/world_box.h"
 
 namespace cablefilm {
 
@@ -27,35 +31,37 @@ Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& requ
     throw Error("row " + std::to_string(row) + ": expected a row from 0 to " +
                 std::to_string(rows.rows - 1));
   const Model& model = run.run.model;
-  const FilmSpec spec = MakeFilmSpec(run.scene, {&run.run}, request, run.run.grid.end());
+  const SceneView scene = MakeFilmScene(run.scene, {&run.run});
+  const FixedPolicy policy = MakeFilmPolicy(scene, {&run.run}, request, run.run.grid.end());
   const Colormap colormap(request.colormap);
-  const FrameLayout layout = MakeFrameLayout(spec, request.width, request.height);
-  FilmHistory history(spec);
-  const std::size_t stations = static_cast<std::size_t>(model.stations());
-  const std::size_t links = static_cast<std::size_t>(model.line.links);
-  CableSnapshot snap;
+  History history(scene, policy);
+  const Eigen::Index stations = model.stations();
+  const Eigen::Index links = model.line.links;
+  Points x(kDim, stations);
+  Snapshot snap;
+  snap.lines.resize(1);
+  LineSnapshot& line = snap.lines[0];
   for (long r = 0; r <= row; ++r) {
     // Each row a snapshot carrying itself: the time plot and the envelope cover every row.
-    const double* x = rows.x[0].data() + r * stations;
-    const double* y = rows.x[1].data() + r * stations;
-    const double* T = rows.tension.data() + r * links;
+    for (int d = 0; d < kDim; ++d)
+      x.row(d) = Eigen::Map<const Eigen::RowVectorXd>(rows.x[d].data() + r * stations, stations);
+    const Eigen::Map<const Eigen::VectorXd> T(rows.tension.data() + r * links, links);
     snap.t = rows.time[r];
-    snap.x.assign(x, x + stations);
-    snap.y.assign(y, y + stations);
-    snap.tension.assign(T, T + links);
+    SetLineState(x, T, &line);
     snap.row_t.assign(1, snap.t);
-    snap.row_max.assign(1, *std::max_element(T, T + links));
-    snap.row_link_min = snap.tension;
-    snap.row_link_max = snap.tension;
-    AddWaterSurface(spec, model, &snap);
+    line.row_max.assign(1, T.maxCoeff());
+    line.row_link_min = line.tension;
+    line.row_link_max = line.tension;
+    if (scene.sea.surface) AddWaterSurface(model.env.wave, policy.box, &snap);
     history.Add(snap);
   }
+  const FrameLayout layout = MakeFrameLayout(scene, history, request.width, request.height);
   RenderOptions options;
   options.width = request.width;
   options.height = request.height;
   options.shader_dir = request.shader_dir;
   Renderer renderer(options);
-  return renderer.Draw(MakeFrame(spec, history, snap, layout, colormap));
+  return renderer.Draw(MakeFrame(scene, history, snap, layout, colormap));
 }
 
 }  // namespace cablefilm

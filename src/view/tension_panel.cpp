@@ -8,7 +8,7 @@
 namespace cablefilm {
 namespace {
 
-Rgba CompanionEquilibriumColor(const Theme& th) { return Mix(th.companion, th.panel, 0.7f); }
+Rgba OverlayReferenceColor(const Theme& th) { return Mix(th.overlay, th.panel, 0.7f); }
 
 bool PerLink(const std::vector<double>* v, std::size_t links) {
   return v != nullptr && v->size() == links;
@@ -16,31 +16,36 @@ bool PerLink(const std::vector<double>* v, std::size_t links) {
 
 }  // namespace
 
-PanelHead TensionPanelHead(bool companion, bool two_rows, bool companion_equilibrium,
-                           const std::string& main_label, const std::string& companion_label,
-                           const std::string& envelope_label, const Theme& th,
-                           const std::string& reference_label) {
+PanelHead TensionPanelHead(const SceneView& scene, bool named, const std::string& envelope_label,
+                           const Theme& th) {
   PanelHead head;
   head.title = "Tension along the cable";
+  const std::string reference = ReferenceName(scene);
+  const std::string first = LineName(scene, 0);
+  const std::size_t lines = scene.lines.size();
   const bool band = !envelope_label.empty();
-  if (companion && two_rows) {  // the curves now, then the references
-    head.groups.push_back({{LegendEntry::kLine, th.current, main_label + " now"},
-                           {LegendEntry::kLine, th.companion, companion_label + " now"}});
-    LegendGroup refs{{LegendEntry::kDash, th.equilibrium, reference_label}};
-    if (companion_equilibrium)
-      refs.push_back({LegendEntry::kDot, CompanionEquilibriumColor(th),
-                      companion_label + " " + reference_label});
-    if (band) refs.push_back({LegendEntry::kBand, th.envelope, main_label + " " + envelope_label});
+  if (lines > 1 && named) {  // the curves now, then the references
+    LegendGroup now{{LegendEntry::kLine, th.current, first + " now"}};
+    for (std::size_t i = 1; i < lines; ++i)
+      now.push_back({LegendEntry::kLine, th.overlay, LineName(scene, i) + " now"});
+    head.groups.push_back(now);
+    LegendGroup refs{{LegendEntry::kDash, th.equilibrium, reference}};
+    for (std::size_t i = 1; i < lines; ++i)
+      if (!scene.lines[i].reference.tension.empty())
+        refs.push_back({LegendEntry::kDot, OverlayReferenceColor(th),
+                        LineName(scene, i) + " " + reference});
+    if (band) refs.push_back({LegendEntry::kBand, th.envelope, first + " " + envelope_label});
     head.groups.push_back(refs);
-  } else if (companion) {  // one row, short labels
-    LegendGroup row{{LegendEntry::kLine, th.current, main_label},
-                    {LegendEntry::kLine, th.companion, companion_label},
-                    {LegendEntry::kDash, th.equilibrium, reference_label}};
+  } else if (lines > 1) {  // one row, short labels
+    LegendGroup row{{LegendEntry::kLine, th.current, first}};
+    for (std::size_t i = 1; i < lines; ++i)
+      row.push_back({LegendEntry::kLine, th.overlay, LineName(scene, i)});
+    row.push_back({LegendEntry::kDash, th.equilibrium, reference});
     if (band) row.push_back({LegendEntry::kBand, th.envelope, "min\u2013max"});
     head.groups.push_back(row);
   } else {
     LegendGroup row{{LegendEntry::kLine, th.current, "now"},
-                    {LegendEntry::kDash, th.equilibrium, reference_label}};
+                    {LegendEntry::kDash, th.equilibrium, reference}};
     if (band) row.push_back({LegendEntry::kBand, th.envelope, envelope_label});
     head.groups.push_back(row);
   }
@@ -50,8 +55,11 @@ PanelHead TensionPanelHead(bool companion, bool two_rows, bool companion_equilib
 void DrawTensionPanel(Painter& p, const TensionPanelInput& in, const Theme& th) {
   const float k = p.k();
   const PlotMapping& tm = in.plot;
-  const std::vector<double>& arc = *in.arc_length;
-  const std::size_t links = in.tension->size();
+  const std::vector<LineView>& lines = *in.lines;
+  const std::vector<LineSnapshot>& now = *in.now;
+  const LineView& first = lines.front();
+  const std::vector<double>& arc = first.arc_length;
+  const std::size_t links = now.front().tension.size();
   constexpr double kN = kNewtonsPerKilonewton;
   if (arc.size() != links + 1)
     throw Error("tension panel: " + std::to_string(arc.size()) + " stations for " +
@@ -59,32 +67,31 @@ void DrawTensionPanel(Painter& p, const TensionPanelInput& in, const Theme& th) 
   DrawPanelHead(p, in.panel, in.head, tm.rect.y0, th);
   DrawAxes(p, tm, "unstretched arc length from station 0 [m]", "tension [kN]", th, 8, 6);
 
-  if (in.section_boundaries) {
-    for (double b : *in.section_boundaries) {
-      const float x = tm.PixelX(b);
-      p.Dashed({{x, tm.rect.y0}, {x, tm.rect.y1}}, 1.2f * k, th.axis, 4 * k, 4 * k);
-    }
-    // Names where they fit in their span, clear of the boundary lines.
-    const std::vector<std::string>* names = in.section_names;
-    if (names && names->size() == in.section_boundaries->size() + 1 && !arc.empty()) {
-      const float font = 14 * k;
-      for (std::size_t i = 0; i < names->size(); ++i) {
-        const double a = i == 0 ? arc.front() : (*in.section_boundaries)[i - 1];
-        const double b = i < in.section_boundaries->size() ? (*in.section_boundaries)[i] : arc.back();
-        const float x0 = std::max(tm.PixelX(a), tm.rect.x0), x1 = std::min(tm.PixelX(b), tm.rect.x1);
-        if (EstimateTextWidth((*names)[i], font) + 12 * k > x1 - x0) continue;
-        p.Text((*names)[i], {(x0 + x1) / 2, tm.rect.y0 + 7 * k}, font, th.text_dim, HAlign::kCenter,
-               VAlign::kTop);
-      }
+  const std::vector<double>& boundaries = first.section_boundaries;
+  const std::vector<std::string>& names = first.section_names;
+  for (double b : boundaries) {
+    const float x = tm.PixelX(b);
+    p.Dashed({{x, tm.rect.y0}, {x, tm.rect.y1}}, 1.2f * k, th.axis, 4 * k, 4 * k);
+  }
+  if (names.size() == boundaries.size() + 1) {  // where they fit in their span, clear of the lines
+    const float font = 14 * k;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const double a = i == 0 ? arc.front() : boundaries[i - 1];
+      const double b = i < boundaries.size() ? boundaries[i] : arc.back();
+      const float x0 = std::max(tm.PixelX(a), tm.rect.x0), x1 = std::min(tm.PixelX(b), tm.rect.x1);
+      if (EstimateTextWidth(names[i], font) + 12 * k > x1 - x0) continue;
+      p.Text(names[i], {(x0 + x1) / 2, tm.rect.y0 + 7 * k}, font, th.text_dim, HAlign::kCenter,
+             VAlign::kTop);
     }
   }
-  auto mid = [&](std::size_t j) { return 0.5 * (arc[j] + arc[j + 1]); };
+  // At each link's midpoint of the line's own arc lengths.
+  auto mid = [](const std::vector<double>& at, std::size_t j) { return 0.5 * (at[j] + at[j + 1]); };
   if (PerLink(in.envelope_min, links) && PerLink(in.envelope_max, links)) {
     const Rgba edge = Mix(Rgba{th.envelope.r, th.envelope.g, th.envelope.b, 1}, th.panel, 0.7f);
     std::vector<Vec2f> top, bottom;
     for (std::size_t j = 0; j < links; ++j) {
-      top.push_back(PlotPoint(tm, mid(j), (*in.envelope_max)[j] / kN));
-      bottom.push_back(PlotPoint(tm, mid(j), (*in.envelope_min)[j] / kN));
+      top.push_back(PlotPoint(tm, mid(arc, j), (*in.envelope_max)[j] / kN));
+      bottom.push_back(PlotPoint(tm, mid(arc, j), (*in.envelope_min)[j] / kN));
     }
     for (std::size_t j = 1; j < links; ++j) {
       p.Triangle(top[j - 1], top[j], bottom[j], th.envelope);
@@ -93,18 +100,27 @@ void DrawTensionPanel(Painter& p, const TensionPanelInput& in, const Theme& th) 
     p.Polyline(top, 1.2f * k, edge);
     p.Polyline(bottom, 1.2f * k, edge);
   }
-  auto curve = [&](const std::vector<double>& v) {
+  // Line i's curve of v, when v has a value per link of it and the line an arc length per station.
+  auto drawable = [&](std::size_t i, const std::vector<double>& v) {
+    return i < lines.size() && !v.empty() && lines[i].arc_length.size() == v.size() + 1;
+  };
+  auto curve = [&](std::size_t i, const std::vector<double>& v) {
     std::vector<Vec2f> pts;
-    pts.reserve(links);
-    for (std::size_t j = 0; j < links; ++j) pts.push_back(PlotPoint(tm, mid(j), v[j] / kN));
+    pts.reserve(v.size());
+    for (std::size_t j = 0; j < v.size(); ++j)
+      pts.push_back(PlotPoint(tm, mid(lines[i].arc_length, j), v[j] / kN));
     return pts;
   };
-  if (PerLink(in.equilibrium, links)) p.Dashed(curve(*in.equilibrium), 2 * k, th.equilibrium, 8 * k, 6 * k);
-  if (PerLink(in.companion_equilibrium, links))
-    p.Dashed(curve(*in.companion_equilibrium), 2 * k, CompanionEquilibriumColor(th), 2 * k, 4 * k);
-  p.Polyline(curve(*in.tension), 2.6f * k, th.current);
-  if (PerLink(in.companion_tension, links))  // thinner, on top: where the two agree the main
-    p.Polyline(curve(*in.companion_tension), 1.8f * k, th.companion);  // shows as its edges
+  if (PerLink(&first.reference.tension, links))
+    p.Dashed(curve(0, first.reference.tension), 2 * k, th.equilibrium, 8 * k, 6 * k);
+  for (std::size_t i = 1; in.overlay_references && i < lines.size(); ++i)
+    if (drawable(i, lines[i].reference.tension))
+      p.Dashed(curve(i, lines[i].reference.tension), 2 * k, OverlayReferenceColor(th), 2 * k,
+               4 * k);
+  p.Polyline(curve(0, now.front().tension), 2.6f * k, th.current);
+  for (std::size_t i = 1; i < now.size(); ++i)  // thinner, on top: where a line agrees with the
+    if (drawable(i, now[i].tension))            // first, the first shows as its edges
+      p.Polyline(curve(i, now[i].tension), 1.8f * k, th.overlay);
 }
 
 }  // namespace cablefilm

@@ -25,8 +25,8 @@ Theme Theme::Dark() {
   t.halo = Hex(0x9aa4b2);
   t.marker_fill = Hex(0x161b22);
   t.marker_edge = Hex(0xe8ecf1);
-  t.companion = Hex(0xf783ac);
-  t.companion_rim = Hex(0xd0d7e1);
+  t.overlay = Hex(0xf783ac);
+  t.overlay_rim = Hex(0xd0d7e1);
   t.event = Hex(0x3bc9db);
   t.water = Hex(0x5aa9e6);   // sea blue: apart from the map's colours and the bed's olive
   t.seabed = Hex(0x8f9d5e);  // olive mud: apart from the orange of the end's path
@@ -48,8 +48,8 @@ Theme Theme::Light() {
   t.halo = Hex(0x1b2129);
   t.marker_fill = Hex(0xffffff);
   t.marker_edge = Hex(0x1b2129);
-  t.companion = Hex(0xc2255c);
-  t.companion_rim = Hex(0x56616f);
+  t.overlay = Hex(0xc2255c);
+  t.overlay_rim = Hex(0x56616f);
   t.event = Hex(0x1098ad);
   t.water = Hex(0x2f7fc1);
   t.seabed = Hex(0x6b7a34);

@@ -10,7 +10,7 @@ namespace cablefilm {
 struct Theme {
   Rgba background, panel, grid, axis, text, text_dim, current, equilibrium, envelope, accent,
       halo, marker_fill, marker_edge;
-  Rgba companion, companion_rim;  // companion cable: its curves; the dotted rim of its shape
+  Rgba overlay, overlay_rim;  // lines after the first: their curves; their shape's dotted rim
   Rgba event;  // control changes marked on the live view's time plot (apart from the accent)
   Rgba water;   // the water surface's line (the water below it a faint wash)
   Rgba seabed;  // the seabed's line in the cable panel (the ground below it a faint mix)

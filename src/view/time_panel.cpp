@@ -22,13 +22,14 @@ std::string Shorten(const std::string& s, std::size_t n) {
 
 }  // namespace
 
-PanelHead TimePanelHead(bool companion, bool note_row, const std::string& main_label,
-                        const std::string& companion_label, const Theme& th) {
+PanelHead TimePanelHead(const SceneView& scene, bool note_row, const Theme& th) {
   PanelHead head;
   head.title = "Maximum tension along the cable";
-  if (companion) {
-    head.groups.push_back({{LegendEntry::kLine, th.accent, main_label},
-                           {LegendEntry::kLine, th.companion, companion_label}});
+  if (scene.lines.size() > 1) {
+    LegendGroup names{{LegendEntry::kLine, th.accent, LineName(scene, 0)}};
+    for (std::size_t i = 1; i < scene.lines.size(); ++i)
+      names.push_back({LegendEntry::kLine, th.overlay, LineName(scene, i)});
+    head.groups.push_back(names);
     head.note_row = note_row;
   }
   return head;
@@ -39,7 +40,9 @@ void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
   const PlotMapping& mm = in.plot;
   constexpr double kN = kNewtonsPerKilonewton;
   const std::vector<double>& ts = *in.times;
-  const std::vector<double>& vs = *in.max_tension;
+  const std::vector<std::vector<double>>& lines = *in.max_tension;
+  if (lines.empty()) throw Error("time panel: no line's maximum tensions");
+  const std::vector<double>& vs = lines.front();
   if (ts.size() != vs.size())
     throw Error("time panel: " + std::to_string(ts.size()) + " times and " +
                 std::to_string(vs.size()) + " maximum tensions");
@@ -79,10 +82,13 @@ void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
                         {left ? x - 4 * k : x + 4 * k, mm.rect.y0 + 6 * k}, left});
     }
   }
+  // The first line's trace, then the others' (one of another size: none).
   const std::vector<Vec2f> trace = DecimatedTrace(mm, ts, vs, kN);
-  const bool companion = in.companion_max && in.companion_max->size() == ts.size();
-  const std::vector<Vec2f> companion_trace =
-      companion ? DecimatedTrace(mm, ts, *in.companion_max, kN) : std::vector<Vec2f>{};
+  std::vector<std::vector<Vec2f>> overlays;
+  overlays.reserve(lines.size() - 1);
+  for (std::size_t i = 1; i < lines.size(); ++i)
+    overlays.push_back(lines[i].size() == ts.size() ? DecimatedTrace(mm, ts, lines[i], kN)
+                                                    : std::vector<Vec2f>{});
   float veil_y0 = 0, veil_y1 = 0;  // the equilibrium label's veil, if it needs one [px]
   PixelRect eq_box{};
   if (std::isfinite(in.equilibrium_max)) {
@@ -94,14 +100,18 @@ void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
     const float x0 = in.equilibrium_label_left ? mm.rect.x0 + 6 * k : mm.rect.x1 - 6 * k - w;
     const PixelRect above{x0, y - 6 * k - std::max(kMinFontSize, font), x0 + w, y - 3 * k};
     const PixelRect below{x0, y + 3 * k, x0 + w, y + 6 * k + std::max(kMinFontSize, font)};
-    auto crossed = [&](const PixelRect& box) {
-      for (const auto* t : {&trace, &companion_trace})
-        for (std::size_t i = 1; i < t->size(); ++i) {
-          const Vec2f a = (*t)[i - 1], b = (*t)[i];
-          if (std::max(a.x, b.x) < box.x0 || std::min(a.x, b.x) > box.x1) continue;
-          if (std::max(a.y, b.y) >= box.y0 && std::min(a.y, b.y) <= box.y1) return true;
-        }
+    auto crosses = [&](const std::vector<Vec2f>& t, const PixelRect& box) {
+      for (std::size_t i = 1; i < t.size(); ++i) {
+        const Vec2f a = t[i - 1], b = t[i];
+        if (std::max(a.x, b.x) < box.x0 || std::min(a.x, b.x) > box.x1) continue;
+        if (std::max(a.y, b.y) >= box.y0 && std::min(a.y, b.y) <= box.y1) return true;
+      }
       return false;
+    };
+    auto crossed = [&](const PixelRect& box) {
+      return crosses(trace, box) ||
+             std::any_of(overlays.begin(), overlays.end(),
+                         [&](const std::vector<Vec2f>& t) { return crosses(t, box); });
     };
     const bool under = crossed(above) && !crossed(below);
     eq_box = under ? below : above;
@@ -115,11 +125,11 @@ void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
   p.Polyline(trace, 2.4f * k, th.accent);
   if (!ts.empty() && std::isfinite(vs.back()))
     p.Disc(PlotPoint(mm, ts.back(), vs.back() / kN), 5 * k, th.accent);
-  if (companion) {  // thinner, on top, like the tension curves
-    const std::vector<double>& cs = *in.companion_max;
-    p.Polyline(companion_trace, 1.8f * k, th.companion);
-    if (!ts.empty() && std::isfinite(cs.back()))
-      p.Disc(PlotPoint(mm, ts.back(), cs.back() / kN), 4 * k, th.companion);
+  for (std::size_t i = 1; i < lines.size(); ++i) {  // thinner, on top, like the tension curves
+    if (lines[i].size() != ts.size()) continue;
+    p.Polyline(overlays[i - 1], 1.8f * k, th.overlay);
+    if (!ts.empty() && std::isfinite(lines[i].back()))
+      p.Disc(PlotPoint(mm, ts.back(), lines[i].back() / kN), 4 * k, th.overlay);
   }
   const Rgba veil{th.panel.r, th.panel.g, th.panel.b, 0.8f};
   if (veil_y1 > veil_y0) p.Rect({eq_box.x0 - 2 * k, veil_y0, eq_box.x1 + 2 * k, veil_y1}, veil);

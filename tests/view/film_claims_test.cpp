@@ -91,42 +91,66 @@ TEST(ThinnedTrace, TwoChannelsStayAlignedAndSpanZeroKeepsAll) {
   for (int i = 0; i < 100; ++i) EXPECT_EQ(all.values()[i], Signal(i));
 }
 
+// A channel a line: three lines thinned together keep each one's extremes at their times.
+TEST(ThinnedTrace, AnyNumberOfChannels) {
+  ThinnedTrace trace(3, 1.0);
+  double max[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (int i = 0; i < 1000; ++i) {
+    const double values[3] = {Signal(i), 2 * Signal(i + 7), 3 * Signal(i + 13)};
+    trace.Add(i * 0.01, values);
+    for (int c = 0; c < 3; ++c) max[c] = std::max(max[c], values[c]);
+  }
+  ASSERT_EQ(trace.all_values().size(), 3u);
+  EXPECT_LE(trace.size(), 10u * 7);  // smallest and largest of each channel, and the last
+  for (int c = 0; c < 3; ++c) {
+    ASSERT_EQ(trace.values(c).size(), trace.size());
+    EXPECT_EQ(*std::max_element(trace.values(c).begin(), trace.values(c).end()), max[c]) << c;
+    for (std::size_t k = 0; k < trace.size(); ++k) {  // each point a sample as added
+      const long i = std::lround(trace.times()[k] / 0.01);
+      ASSERT_EQ(trace.values(c)[k], (c + 1) * Signal(i + (c == 0 ? 0 : c == 1 ? 7 : 13)));
+    }
+  }
+  EXPECT_THROW(ThinnedTrace(0, 1.0), Error);
+}
+
 // Two film frames (t = 0 and 1 s) of the straight test cable, the second carrying the rows of
 // every 0.1 s since the first, one of them (t = 0.4 s) at 55 kN, above either frame's 39 kN.
 TEST(FilmHistory, RowsBetweenFramesReachTheTimePlotAndTheEnvelope) {
-  const FilmSpec spec = testing::StraightSpec();
+  const SceneView scene = testing::StraightScene();
   const double frame_peak = (kLinks - 0.5) / kLinks * kTensionMax;  // 39 kN
-  FilmHistory history(spec);
-  CableSnapshot first = testing::StraightSnapshot(0);
+  History history(scene, testing::StraightPolicy());
+  Snapshot first = testing::StraightSnapshot(0);
   first.row_t = {0};
-  first.row_max = {frame_peak};
+  first.lines[0].row_max = {frame_peak};
   history.Add(first);
-  CableSnapshot second = testing::StraightSnapshot(1);
+  Snapshot second = testing::StraightSnapshot(1);
+  LineSnapshot& line = second.lines[0];
   for (int i = 1; i <= 10; ++i) {
     second.row_t.push_back(i * 0.1);
-    second.row_max.push_back(i == 4 ? 55000 : 30000 + 100 * i);
+    line.row_max.push_back(i == 4 ? 55000 : 30000 + 100 * i);
   }
-  second.row_link_min.assign(kLinks, 0);
-  second.row_link_max = second.tension;
-  second.row_link_max[3] = 55000;  // link 3 carried the peak at t = 0.4 s
+  line.row_link_min.assign(kLinks, 0);
+  line.row_link_max = line.tension;
+  line.row_link_max[3] = 55000;  // link 3 carried the peak at t = 0.4 s
   history.Add(second);
   EXPECT_EQ(history.count(), 2);
   EXPECT_EQ(history.peak(), 55000);
   EXPECT_DOUBLE_EQ(history.peak_t(), 0.4);
+  EXPECT_EQ(history.peak_link(), 3);  // the link of the rows' envelope
   ASSERT_EQ(history.times().size(), 11u);  // every row (the spans of 10 s / 8192 hold one each)
-  EXPECT_EQ(history.max_tension()[4], 55000);
+  EXPECT_EQ(history.max_tension()[0][4], 55000);
   EXPECT_EQ(history.link_max()[3], 55000);
   EXPECT_EQ(history.link_min()[3], 0);
   // The plot's readout says so: before, it read the frames' 39.00 kN.
-  const Frame frame = MakeFrame(spec, history, second, MakeFrameLayout(spec, 1280, 720),
+  const Frame frame = MakeFrame(scene, history, second, MakeFrameLayout(scene, history, 1280, 720),
                                 Colormap("viridis"));
   bool note = false;
   for (const TextItem& t : frame.texts) note |= t.text.find("peak 55.00 kN") != std::string::npos;
   EXPECT_TRUE(note);
   // Rows and their maxima must pair up.
-  CableSnapshot bad = testing::StraightSnapshot(2);
+  Snapshot bad = testing::StraightSnapshot(2);
   bad.row_t = {1.5, 2};
-  bad.row_max = {1};
+  bad.lines[0].row_max = {1};
   EXPECT_THROW(history.Add(bad), Error);
 }
 
@@ -142,15 +166,15 @@ long CountText(const std::vector<std::string>& texts, const std::string& s) {
 TEST(MakeFrame, StraightStartAndEndsAreNamedForWhatTheyAre) {
   // A straight start: the dashed reference is the initial state, not an equilibrium; the start
   // is fixed, the end free (a towed or dangling end): no "anchor", no "moving end".
-  FilmSpec spec = testing::StraightSpec();
-  spec.reference_label = kStraightStateLabel;
-  spec.moving_ends.clear();
-  spec.free_ends = {kLinks};
-  FilmHistory history(spec);
-  const CableSnapshot snap = testing::StraightSnapshot(1);
+  SceneView scene = testing::StraightScene();
+  scene.reference_label = kStraightStateLabel;
+  scene.lines[0].marks.moving_ends.clear();
+  scene.lines[0].marks.free_ends = {kLinks};
+  History history(scene, testing::StraightPolicy());
+  const Snapshot snap = testing::StraightSnapshot(1);
   history.Add(snap);
-  const std::vector<std::string> texts =
-      Texts(MakeFrame(spec, history, snap, MakeFrameLayout(spec, 1920, 1080), Colormap("viridis")));
+  const std::vector<std::string> texts = Texts(MakeFrame(
+      scene, history, snap, MakeFrameLayout(scene, history, 1920, 1080), Colormap("viridis")));
   // The cable's legend, the tension plot's legend and the time plot's dashed line.
   EXPECT_EQ(CountText(texts, "initial state (straight)"), 3);
   EXPECT_EQ(CountText(texts, "equilibrium"), 0);
@@ -160,11 +184,12 @@ TEST(MakeFrame, StraightStartAndEndsAreNamedForWhatTheyAre) {
   EXPECT_EQ(CountText(texts, "moving end"), 0);
 
   // The usual case: an equilibrium start, a fixed start and a driven end.
-  const FilmSpec usual = testing::StraightSpec();
-  FilmHistory h2(usual);
+  const SceneView usual = testing::StraightScene();
+  History h2(usual, testing::StraightPolicy());
   h2.Add(snap);
   const std::vector<std::string> t2 =
-      Texts(MakeFrame(usual, h2, snap, MakeFrameLayout(usual, 1920, 1080), Colormap("viridis")));
+      Texts(MakeFrame(usual, h2, snap, MakeFrameLayout(usual, h2, 1920, 1080),
+                      Colormap("viridis")));
   EXPECT_EQ(CountText(t2, "equilibrium"), 3);
   EXPECT_EQ(CountText(t2, "fixed end"), 1);
   EXPECT_EQ(CountText(t2, "moving end"), 1);

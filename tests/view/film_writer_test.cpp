@@ -33,17 +33,17 @@ std::string FreshDir(const std::string& name) {
 
 TEST(FilmWriter, WritesFilmFramesAndStill) {
   const std::string dir = FreshDir("full");
-  const FilmSpec spec = MakeDemoSpec(2.0);
+  const SceneView scene = MakeDemoScene();
   FilmOptions o = SmallOptions();
   o.write_frames = true;
   {
-    FilmWriter writer(o, spec, dir, 20);
-    for (int i = 0; i < 20; ++i) writer.Push(MakeDemoSnapshot(spec, i / 10.0));
+    FilmWriter writer(o, scene, MakeDemoPolicy(2.0), dir, 20);
+    for (int i = 0; i < 20; ++i) writer.Push(MakeDemoSnapshot(scene, i / 10.0));
     writer.Finish();
     writer.Finish();  // idempotent
     EXPECT_EQ(writer.frames_done(), 20);
     EXPECT_EQ(writer.max_tension_series().t.size(), 20u);
-    EXPECT_THROW(writer.Push(MakeDemoSnapshot(spec, 3)), Error);
+    EXPECT_THROW(writer.Push(MakeDemoSnapshot(scene, 3)), Error);
   }
   const VideoInfo info = ProbeVideo(dir + "/film.mp4");
   EXPECT_EQ(info.codec, "h264");
@@ -65,10 +65,10 @@ TEST(FilmWriter, WritesFilmFramesAndStill) {
 // pushed is in a film that plays.
 TEST(FilmWriter, InterruptedRunStillClosesTheFilm) {
   const std::string dir = FreshDir("interrupted");
-  const FilmSpec spec = MakeDemoSpec(60.0);
+  const SceneView scene = MakeDemoScene();
   {
-    FilmWriter writer(SmallOptions(), spec, dir, 600);
-    for (int i = 0; i < 7; ++i) writer.Push(MakeDemoSnapshot(spec, i / 10.0));
+    FilmWriter writer(SmallOptions(), scene, MakeDemoPolicy(60.0), dir, 600);
+    for (int i = 0; i < 7; ++i) writer.Push(MakeDemoSnapshot(scene, i / 10.0));
   }  // no Finish(): cut short
   // An incomplete film never takes the final name (issue 11, defect 4: it used to); it plays
   // under its partial name with every frame drawn, and so does its still.
@@ -81,15 +81,15 @@ TEST(FilmWriter, InterruptedRunStillClosesTheFilm) {
 
 TEST(FilmWriter, DrawingErrorReachesTheCallerAndNoFilmIsLeft) {
   const std::string dir = FreshDir("error");
-  const FilmSpec spec = MakeDemoSpec(2.0);
-  FilmWriter writer(SmallOptions(), spec, dir, 10);
-  CableSnapshot bad = MakeDemoSnapshot(spec, 0);
-  bad.tension.pop_back();
+  const SceneView scene = MakeDemoScene();
+  FilmWriter writer(SmallOptions(), scene, MakeDemoPolicy(2.0), dir, 10);
+  Snapshot bad = MakeDemoSnapshot(scene, 0);
+  bad.lines[0].tension.pop_back();
   writer.Push(bad);
   // The error is rethrown by a later Push or by Finish.
   bool thrown = false;
   try {
-    for (int i = 0; i < 10; ++i) writer.Push(MakeDemoSnapshot(spec, i / 10.0));
+    for (int i = 0; i < 10; ++i) writer.Push(MakeDemoSnapshot(scene, i / 10.0));
     writer.Finish();
   } catch (const Error& e) {
     thrown = true;
@@ -100,31 +100,32 @@ TEST(FilmWriter, DrawingErrorReachesTheCallerAndNoFilmIsLeft) {
 }
 
 TEST(FilmWriter, BadOptionsFailInTheConstructor) {
-  const FilmSpec spec = MakeDemoSpec(2.0);
+  const SceneView scene = MakeDemoScene();
+  const FixedPolicy policy = MakeDemoPolicy(2.0);
   FilmOptions o = SmallOptions();
   o.colormap = "rainbow";
-  EXPECT_THROW(FilmWriter(o, spec, FreshDir("bad"), 1), Error);
+  EXPECT_THROW(FilmWriter(o, scene, policy, FreshDir("bad"), 1), Error);
   o = SmallOptions();
   o.width = 321;
-  EXPECT_THROW(FilmWriter(o, spec, FreshDir("bad"), 1), Error);
+  EXPECT_THROW(FilmWriter(o, scene, policy, FreshDir("bad"), 1), Error);
   o = SmallOptions();
   o.shader_dir = "/nonexistent_cablefilm_shaders";
-  EXPECT_THROW(FilmWriter(o, spec, FreshDir("bad"), 1), Error);
+  EXPECT_THROW(FilmWriter(o, scene, policy, FreshDir("bad"), 1), Error);
 }
 
-// A spec naming a companion cable: its max-tension series comes out beside the main one (labels
-// from the spec), max_tension_series() stays the main cable's, and the still holds both.
-TEST(FilmWriter, CompanionSeries) {
-  const std::string dir = FreshDir("companion");
-  FilmSpec spec = testing::StraightCompanionSpec();
+// A scene of two lines: the second's max-tension series comes out beside the first's (named
+// by their labels), max_tension_series() stays the first line's, and the still holds both.
+TEST(FilmWriter, SeriesOfEveryLine) {
+  const std::string dir = FreshDir("two_lines");
+  const SceneView scene = testing::StraightPairScene();
   FilmOptions o = SmallOptions();
   o.write_film = false;
   o.write_frames = true;
   {
-    FilmWriter writer(o, spec, dir, 5);
+    FilmWriter writer(o, scene, testing::StraightPolicy(), dir, 5);
     for (int i = 0; i < 5; ++i) {
-      CableSnapshot s = testing::StraightCompanionSnapshot(i);
-      for (double& T : s.ctension) T *= 1 + 0.1 * i;
+      Snapshot s = testing::StraightPairSnapshot(i);
+      for (double& T : s.lines[1].tension) T *= 1 + 0.1 * i;
       writer.Push(s);
     }
     writer.Finish();
@@ -145,11 +146,12 @@ TEST(FilmWriter, CompanionSeries) {
   }
   EXPECT_TRUE(std::filesystem::exists(dir + "/frames/frame_000004.png"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/max_tension.png"));
-  // Without a companion, all_max_tension_series() is just the main series.
+  // With one line, all_max_tension_series() is just its series.
   FilmOptions plain = SmallOptions();
   plain.write_film = false;
   plain.write_max_tension = false;
-  FilmWriter writer(plain, testing::StraightSpec(), FreshDir("plain"), 1);
+  FilmWriter writer(plain, testing::StraightScene(), testing::StraightPolicy(), FreshDir("plain"),
+                    1);
   writer.Push(testing::StraightSnapshot(0));
   writer.Finish();
   ASSERT_EQ(writer.all_max_tension_series().size(), 1u);

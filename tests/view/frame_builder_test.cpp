@@ -20,18 +20,21 @@ bool SameColor(const Rgba& a, const Rgba& b) {
 }
 
 TEST(FrameLayout, CableIsToScaleAndPanelsInsideTheFrame) {
-  const FilmSpec spec = testing::StraightSpec();
+  const SceneView scene = testing::StraightScene();
+  const FixedPolicy policy = testing::StraightPolicy();
+  const WorldBox& box = policy.box;
+  const History history(scene, policy);
   for (auto [w, h] : {std::pair{1920, 1080}, std::pair{1280, 720}, std::pair{320, 180}}) {
-    const FrameLayout L = MakeFrameLayout(spec, w, h);
+    const FrameLayout L = MakeFrameLayout(scene, history, w, h);
     const PlotMapping& c = L.cable;
     const double ppm_x = c.rect.width() / (c.x_hi - c.x_lo);
     const double ppm_y = c.rect.height() / (c.y_hi - c.y_lo);
     EXPECT_NEAR(ppm_x, ppm_y, 1e-6 * ppm_x) << "equal x and y scale at " << w << "x" << h;
     // The whole world box is visible.
-    EXPECT_LE(c.x_lo, spec.x_min);
-    EXPECT_GE(c.x_hi, spec.x_max);
-    EXPECT_LE(c.y_lo, spec.y_min);
-    EXPECT_GE(c.y_hi, spec.y_max);
+    EXPECT_LE(c.x_lo, box.x_min);
+    EXPECT_GE(c.x_hi, box.x_max);
+    EXPECT_LE(c.y_lo, box.y_min);
+    EXPECT_GE(c.y_hi, box.y_max);
     for (const PixelRect& r : {L.cable_panel, L.tension_panel, L.max_panel}) {
       EXPECT_GE(r.x0, 0);
       EXPECT_GE(r.y0, 0);
@@ -41,24 +44,24 @@ TEST(FrameLayout, CableIsToScaleAndPanelsInsideTheFrame) {
     // The tension axis is the fixed range widened to nice ticks: [0, 40] kN stays [0, 40].
     EXPECT_DOUBLE_EQ(L.tension.y_lo, 0);
     EXPECT_DOUBLE_EQ(L.tension.y_hi, 40);
-    EXPECT_DOUBLE_EQ(L.max_tension.x_hi, spec.duration);
+    EXPECT_DOUBLE_EQ(L.max_tension.x_hi, policy.duration);
   }
 }
 
 TEST(MakeFrame, CableSegmentsCarryTheirLinkTensionColour) {
-  const FilmSpec spec = testing::StraightSpec();
-  const CableSnapshot snap = testing::StraightSnapshot(1.0);
-  FilmHistory history(spec);
+  const SceneView scene = testing::StraightScene();
+  const Snapshot snap = testing::StraightSnapshot(1.0);
+  History history(scene, testing::StraightPolicy());
   history.Add(snap);
-  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  const FrameLayout L = MakeFrameLayout(scene, history, 1280, 720);
   const Colormap map("viridis");
-  const Frame frame = MakeFrame(spec, history, snap, L, map);
+  const Frame frame = MakeFrame(scene, history, snap, L, map);
   EXPECT_EQ(frame.width, 1280);
   EXPECT_EQ(frame.height, 720);
   int found = 0;
   for (int j = 0; j < kLinks; ++j) {
     const Vec2f a = L.cable.ToPixel(j, 0), b = L.cable.ToPixel(j + 1, 0);
-    const Rgba want = map.Map(snap.tension[j], 0, kTensionMax);
+    const Rgba want = map.Map(snap.lines[0].tension[j], 0, kTensionMax);
     for (const Shape& s : frame.shapes)
       if (s.kind == ShapeKind::kSegment && s.a.x == a.x && s.a.y == a.y && s.b.x == b.x &&
           s.b.y == b.y && SameColor(s.color, want) && s.size == L.cable_width) {
@@ -70,11 +73,11 @@ TEST(MakeFrame, CableSegmentsCarryTheirLinkTensionColour) {
 }
 
 TEST(MakeFrame, ColourBarSpansTheMapBottomToTop) {
-  const FilmSpec spec = testing::StraightSpec();
-  FilmHistory history(spec);
-  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  const SceneView scene = testing::StraightScene();
+  History history(scene, testing::StraightPolicy());
+  const FrameLayout L = MakeFrameLayout(scene, history, 1280, 720);
   const Colormap map("cividis");
-  const Frame frame = MakeFrame(spec, history, testing::StraightSnapshot(0), L, map);
+  const Frame frame = MakeFrame(scene, history, testing::StraightSnapshot(0), L, map);
   // The bands inside the colour bar: the lowest is the map's low end, the highest its top.
   const Shape* lowest = nullptr;
   const Shape* highest = nullptr;
@@ -92,10 +95,11 @@ TEST(MakeFrame, ColourBarSpansTheMapBottomToTop) {
 }
 
 TEST(MakeFrame, TensionLabelsAreNiceKilonewtons) {
-  const FilmSpec spec = testing::StraightSpec();
-  FilmHistory history(spec);
-  const FrameLayout L = MakeFrameLayout(spec, 1920, 1080);
-  const Frame frame = MakeFrame(spec, history, testing::StraightSnapshot(2.5), L, Colormap("viridis"));
+  const SceneView scene = testing::StraightScene();
+  History history(scene, testing::StraightPolicy());
+  const FrameLayout L = MakeFrameLayout(scene, history, 1920, 1080);
+  const Frame frame =
+      MakeFrame(scene, history, testing::StraightSnapshot(2.5), L, Colormap("viridis"));
   std::vector<std::string> texts;
   for (const TextItem& t : frame.texts) texts.push_back(t.text);
   auto has = [&](const std::string& s) { return std::find(texts.begin(), texts.end(), s) != texts.end(); };
@@ -107,56 +111,70 @@ TEST(MakeFrame, TensionLabelsAreNiceKilonewtons) {
   EXPECT_TRUE(has("time [s]"));
 }
 
+// Segments of the end paths: a point fewer than the points of each piece.
+std::size_t Segments(const EndPath& path) {
+  std::size_t n = 0;
+  for (const auto& piece : path.pieces) n += piece.size() - 1;
+  return n;
+}
+
 TEST(FilmHistory, EnvelopeTraceAndEndPath) {
-  const FilmSpec spec = testing::StraightSpec();
-  FilmHistory history(spec);
-  CableSnapshot a = testing::StraightSnapshot(0), b = testing::StraightSnapshot(0.1);
-  for (double& T : b.tension) T *= 0.5;
-  b.tension[3] = 1e6;
-  b.x[kLinks] += 1;  // the moving end moved 1 m
+  const SceneView scene = testing::StraightScene();
+  History history(scene, testing::StraightPolicy());
+  Snapshot a = testing::StraightSnapshot(0), b = testing::StraightSnapshot(0.1);
+  LineSnapshot& lb = b.lines[0];
+  for (double& T : lb.tension) T *= 0.5;
+  lb.tension[3] = 1e6;
+  lb.x[kLinks] += 1;  // the moving end moved 1 m
   history.Add(a);
   history.Add(b);
+  const LineSnapshot& la = a.lines[0];
   EXPECT_EQ(history.count(), 2);
-  EXPECT_DOUBLE_EQ(history.link_min()[0], 0.5 * a.tension[0]);
-  EXPECT_DOUBLE_EQ(history.link_max()[0], a.tension[0]);
+  EXPECT_DOUBLE_EQ(history.link_min()[0], 0.5 * la.tension[0]);
+  EXPECT_DOUBLE_EQ(history.link_max()[0], la.tension[0]);
   EXPECT_DOUBLE_EQ(history.link_max()[3], 1e6);
-  EXPECT_EQ(history.max_tension(), (std::vector<double>{a.tension.back(), 1e6}));
+  ASSERT_EQ(history.max_tension().size(), 1u);  // one line
+  EXPECT_EQ(history.max_tension()[0], (std::vector<double>{la.tension.back(), 1e6}));
   EXPECT_EQ(history.times(), (std::vector<double>{0, 0.1}));
   ASSERT_EQ(history.end_paths().size(), 1u);
-  ASSERT_EQ(history.end_paths()[0].size(), 1u);  // one segment from the first to the second
-  EXPECT_FLOAT_EQ(history.end_paths()[0][0].a.x, kLinks);
-  EXPECT_FLOAT_EQ(history.end_paths()[0][0].b.x, kLinks + 1);
+  const EndPath& path = history.end_paths()[0];
+  EXPECT_EQ(path.line, 0);
+  EXPECT_EQ(path.station, kLinks);
+  ASSERT_EQ(path.pieces.size(), 1u);  // one segment from the first to the second
+  ASSERT_EQ(path.pieces[0].size(), 2u);
+  EXPECT_FLOAT_EQ(path.pieces[0][0].x, kLinks);
+  EXPECT_FLOAT_EQ(path.pieces[0][1].x, kLinks + 1);
   // A snapshot of the wrong size is an error naming the sizes.
-  CableSnapshot bad = a;
-  bad.tension.pop_back();
+  Snapshot bad = a;
+  bad.lines[0].tension.pop_back();
   EXPECT_THROW(history.Add(bad), Error);
 }
 
 TEST(MakeFrame, LongFilmsStayBoundedPerFrame) {
   // A ten-minute film at 30 fps: the max-tension trace is decimated to pixel columns.
-  const FilmSpec spec = MakeDemoSpec(600);
-  FilmHistory history(spec);
-  CableSnapshot s;
+  const SceneView scene = MakeDemoScene();
+  History history(scene, MakeDemoPolicy(600));
+  Snapshot s;
   for (int i = 0; i < 600 * 30; ++i) {
-    s = MakeDemoSnapshot(spec, i / 30.0);
+    s = MakeDemoSnapshot(scene, i / 30.0);
     history.Add(s);
   }
-  const FrameLayout L = MakeFrameLayout(spec, 1920, 1080);
-  const Frame frame = MakeFrame(spec, history, s, L, Colormap("viridis"));
+  const FrameLayout L = MakeFrameLayout(scene, history, 1920, 1080);
+  const Frame frame = MakeFrame(scene, history, s, L, Colormap("viridis"));
   EXPECT_LT(frame.shapes.size(), 6000u);
   // The end circles with a 10 s period: after the ramp its path retraces the same grid cells,
   // so it stops growing (one lap is ~400 cells of 1/1000 of the box).
-  EXPECT_LT(history.end_paths()[0].size(), 3000u);
+  EXPECT_LT(Segments(history.end_paths()[0]), 3000u);
 }
 
 TEST(MakeFrame, ValuesOutsideTheRangeStayOnTheirPlot) {
-  const FilmSpec spec = testing::StraightSpec();
-  FilmHistory history(spec);
-  CableSnapshot s = testing::StraightSnapshot(1);
-  s.tension[0] = 10 * kTensionMax;
+  const SceneView scene = testing::StraightScene();
+  History history(scene, testing::StraightPolicy());
+  Snapshot s = testing::StraightSnapshot(1);
+  s.lines[0].tension[0] = 10 * kTensionMax;
   history.Add(s);
-  const FrameLayout L = MakeFrameLayout(spec, 960, 540);
-  const Frame frame = MakeFrame(spec, history, s, L, Colormap("viridis"));
+  const FrameLayout L = MakeFrameLayout(scene, history, 960, 540);
+  const Frame frame = MakeFrame(scene, history, s, L, Colormap("viridis"));
   const Theme th = Theme::Dark();
   for (const Shape& sh : frame.shapes) {
     // The data curves: the current tension and the max-tension trace.
@@ -170,11 +188,12 @@ TEST(MakeFrame, ValuesOutsideTheRangeStayOnTheirPlot) {
 }
 
 TEST(MakeFrame, SectionNamesCentredInTheirSpans) {
-  FilmSpec spec = testing::StraightSpec();
-  spec.section_names = {"chain", "rope"};
-  FilmHistory history(spec);
-  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
-  const Frame frame = MakeFrame(spec, history, testing::StraightSnapshot(1), L, Colormap("viridis"));
+  SceneView scene = testing::StraightScene();
+  scene.lines[0].section_names = {"chain", "rope"};
+  History history(scene, testing::StraightPolicy());
+  const FrameLayout L = MakeFrameLayout(scene, history, 1280, 720);
+  const Frame frame =
+      MakeFrame(scene, history, testing::StraightSnapshot(1), L, Colormap("viridis"));
   const PlotMapping& tm = L.tension;
   int found = 0;
   for (const TextItem& t : frame.texts) {
@@ -187,17 +206,17 @@ TEST(MakeFrame, SectionNamesCentredInTheirSpans) {
   }
   EXPECT_EQ(found, 2);
   // One name per section or none: another count is an error naming both.
-  spec.section_names = {"chain"};
+  scene.lines[0].section_names = {"chain"};
   try {
-    MakeFrameLayout(spec, 1280, 720);
+    MakeFrameLayout(scene, history, 1280, 720);
     ADD_FAILURE() << "no error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("1 section names for 2 sections"), std::string::npos)
         << e.what();
   }
-  EXPECT_THROW(FilmHistory{spec}, Error);
+  EXPECT_THROW(History(scene, testing::StraightPolicy()), Error);
   // The demo cable names its two sections.
-  EXPECT_EQ(MakeDemoSpec(10).section_names, (std::vector<std::string>{"wire", "nylon"}));
+  EXPECT_EQ(MakeDemoScene().lines[0].section_names, (std::vector<std::string>{"wire", "nylon"}));
 }
 
 // The demo (P63-like) cable's box is about 1.7 times as wide as high: its panel takes the width
@@ -205,9 +224,12 @@ TEST(MakeFrame, SectionNamesCentredInTheirSpans) {
 // the time plot the whole bottom row. The cable is then as large as in the stacked layout
 // (the top row's height limits both) and no width is left empty around it.
 TEST(FrameLayout, CablePanelFitsTheCable) {
-  const FilmSpec spec = MakeDemoSpec(60);
+  const SceneView scene = MakeDemoScene();
+  const FixedPolicy policy = MakeDemoPolicy(60);
+  const WorldBox& box = policy.box;
+  const History history(scene, policy);
   for (auto [w, h] : {std::pair{1920, 1080}, std::pair{1280, 720}, std::pair{640, 360}}) {
-    const FrameLayout L = MakeFrameLayout(spec, w, h);
+    const FrameLayout L = MakeFrameLayout(scene, history, w, h);
     EXPECT_TRUE(L.side_by_side) << w << "x" << h;
     EXPECT_LT(L.cable_panel.x1, L.tension_panel.x0);
     EXPECT_LT(L.cable_panel.y1, L.max_panel.y0);
@@ -217,12 +239,14 @@ TEST(FrameLayout, CablePanelFitsTheCable) {
     const PlotMapping& c = L.cable;
     const double ppm = c.rect.height() / (c.y_hi - c.y_lo);
     EXPECT_NEAR(c.rect.width() / (c.x_hi - c.x_lo), ppm, 1e-4 * ppm);
-    const double pad = 0.04 * (spec.x_max - spec.x_min);
-    EXPECT_NEAR(c.y_hi - c.y_lo, spec.y_max - spec.y_min + 2 * pad, 1e-3);
-    EXPECT_GT((spec.x_max - spec.x_min + 2 * pad) * ppm, 0.9 * c.rect.width());
+    const double pad = 0.04 * (box.x_max - box.x_min);
+    EXPECT_NEAR(c.y_hi - c.y_lo, box.y_max - box.y_min + 2 * pad, 1e-3);
+    EXPECT_GT((box.x_max - box.x_min + 2 * pad) * ppm, 0.9 * c.rect.width());
   }
   // The straight test cable (20 m x 4 m) is too flat for that: it spans the top row.
-  const FrameLayout flat = MakeFrameLayout(testing::StraightSpec(), 1280, 720);
+  const SceneView straight = testing::StraightScene();
+  const FrameLayout flat =
+      MakeFrameLayout(straight, History(straight, testing::StraightPolicy()), 1280, 720);
   EXPECT_FALSE(flat.side_by_side);
   EXPECT_FLOAT_EQ(flat.cable_panel.x1, flat.max_panel.x1);
 }
@@ -239,23 +263,23 @@ TEST(MakeMaxTensionFigure, SeriesAndLegend) {
 }
 
 
-// ---- Companion cable ------------------------------------------------------------------------
+// ---- A second line (the compare film's inextensible run) ------------------------------------
 
 // Largest channel difference between two colours.
 float ColorGap(const Rgba& a, const Rgba& b) {
   return std::max({std::fabs(a.r - b.r), std::fabs(a.g - b.g), std::fabs(a.b - b.b)});
 }
 
-TEST(MakeFrame, CompanionSegmentsCarryTheirTensionColourBeneathTheMainCable) {
-  const FilmSpec spec = testing::StraightCompanionSpec();
-  const CableSnapshot snap = testing::StraightCompanionSnapshot(1.0);
-  FilmHistory history(spec);
+TEST(MakeFrame, SecondLineSegmentsCarryTheirTensionColourBeneathTheFirst) {
+  const SceneView scene = testing::StraightPairScene();
+  const Snapshot snap = testing::StraightPairSnapshot(1.0);
+  History history(scene, testing::StraightPolicy());
   history.Add(snap);
-  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
-  EXPECT_LT(L.companion_width, L.cable_width);
+  const FrameLayout L = MakeFrameLayout(scene, history, 1280, 720);
+  EXPECT_LT(L.overlay_width, L.cable_width);
   const Colormap map("viridis");
-  const Frame frame = MakeFrame(spec, history, snap, L, map);
-  // Index of the first main cable segment (the main cable's colour at link 0).
+  const Frame frame = MakeFrame(scene, history, snap, L, map);
+  // Index of the first segment of the first line (its colour at link 0).
   const Vec2f m0 = L.cable.ToPixel(0, 0), m1 = L.cable.ToPixel(1, 0);
   std::size_t first_main = frame.shapes.size();
   for (std::size_t i = 0; i < frame.shapes.size(); ++i) {
@@ -267,42 +291,43 @@ TEST(MakeFrame, CompanionSegmentsCarryTheirTensionColourBeneathTheMainCable) {
     }
   }
   ASSERT_LT(first_main, frame.shapes.size());
+  const std::vector<double>& second = snap.lines[1].tension;
   int found = 0;
   for (int j = 0; j < kLinks; ++j) {
-    const Vec2f a = L.cable.ToPixel(j, testing::kCompanionY);
-    const Vec2f b = L.cable.ToPixel(j + 1, testing::kCompanionY);
-    const Rgba want = map.Map(snap.ctension[j], 0, kTensionMax);
+    const Vec2f a = L.cable.ToPixel(j, testing::kSecondY);
+    const Vec2f b = L.cable.ToPixel(j + 1, testing::kSecondY);
+    const Rgba want = map.Map(second[j], 0, kTensionMax);
     for (std::size_t i = 0; i < frame.shapes.size(); ++i) {
       const Shape& s = frame.shapes[i];
       // Exact geometry; the colour within float rounding of the map's (the same table entry).
       if (s.kind == ShapeKind::kSegment && s.a.x == a.x && s.a.y == a.y && s.b.x == b.x &&
-          s.b.y == b.y && s.size == L.companion_width && ColorGap(s.color, want) < 1e-6f) {
-        EXPECT_LT(i, first_main) << "companion link " << j << " is drawn over the main cable";
+          s.b.y == b.y && s.size == L.overlay_width && ColorGap(s.color, want) < 1e-6f) {
+        EXPECT_LT(i, first_main) << "second line's link " << j << " is drawn over the first line";
         ++found;
         break;
       }
     }
   }
   EXPECT_EQ(found, kLinks);
-  // The reversed tensions really give other colours than the main cable's at the ends.
-  EXPECT_GT(ColorGap(map.Map(snap.ctension[0], 0, kTensionMax),
-                     map.Map(snap.tension[0], 0, kTensionMax)),
+  // The reversed tensions really give other colours than the first line's at the ends.
+  EXPECT_GT(ColorGap(map.Map(second[0], 0, kTensionMax),
+                     map.Map(snap.lines[0].tension[0], 0, kTensionMax)),
             0.3f);
 }
 
-TEST(MakeFrame, CompanionLegendsNameBothCables) {
-  const FilmSpec spec = testing::StraightCompanionSpec();
-  const CableSnapshot snap = testing::StraightCompanionSnapshot(2.0);
-  FilmHistory history(spec);
+TEST(MakeFrame, LegendsNameBothLines) {
+  const SceneView scene = testing::StraightPairScene();
+  const Snapshot snap = testing::StraightPairSnapshot(2.0);
+  History history(scene, testing::StraightPolicy());
   history.Add(snap);
-  const FrameLayout L = MakeFrameLayout(spec, 1920, 1080);
-  const Frame frame = MakeFrame(spec, history, snap, L, Colormap("viridis"));
+  const FrameLayout L = MakeFrameLayout(scene, history, 1920, 1080);
+  const Frame frame = MakeFrame(scene, history, snap, L, Colormap("viridis"));
   auto count_in = [&](const std::string& text, const PixelRect& r) {
     int n = 0;
     for (const TextItem& t : frame.texts) n += t.text == text && r.Contains(t.pos);
     return n;
   };
-  // Cable panel: one entry per cable; tension panel: each cable's curve now; max panel: both.
+  // Cable panel: one entry per line; tension panel: each line's curve now; max panel: both.
   EXPECT_EQ(count_in("elastic", L.cable_panel), 1);
   EXPECT_EQ(count_in("inextensible", L.cable_panel), 1);
   EXPECT_EQ(count_in("elastic now", L.tension_panel), 1);
@@ -310,11 +335,11 @@ TEST(MakeFrame, CompanionLegendsNameBothCables) {
   EXPECT_EQ(count_in("inextensible equilibrium", L.tension_panel), 1);
   EXPECT_EQ(count_in("elastic", L.max_panel), 1);
   EXPECT_EQ(count_in("inextensible", L.max_panel), 1);
-  // Without a companion none of these appear.
-  const FilmSpec plain = testing::StraightSpec();
-  FilmHistory h2(plain);
+  // With one line none of these appear.
+  const SceneView plain = testing::StraightScene();
+  History h2(plain, testing::StraightPolicy());
   const Frame f2 = MakeFrame(plain, h2, testing::StraightSnapshot(2.0),
-                             MakeFrameLayout(plain, 1920, 1080), Colormap("viridis"));
+                             MakeFrameLayout(plain, h2, 1920, 1080), Colormap("viridis"));
   for (const TextItem& t : f2.texts) {
     EXPECT_EQ(t.text.find("inextensible"), std::string::npos) << t.text;
     EXPECT_EQ(t.text.find("elastic"), std::string::npos) << t.text;
@@ -324,16 +349,17 @@ TEST(MakeFrame, CompanionLegendsNameBothCables) {
 // A seabed: its line across the cable plot at its elevation, the ground below it shaded (drawn
 // before the cable, so the line resting on it lies over it), and a legend entry; none without.
 TEST(MakeFrame, SeabedLineGroundAndLegend) {
-  FilmSpec spec = testing::StraightSpec();
-  spec.seabed = true;
-  spec.seabed_y = spec.y_min + 0.25 * (spec.y_max - spec.y_min);
-  const CableSnapshot snap = testing::StraightSnapshot(1.0);
-  FilmHistory history(spec);
+  SceneView scene = testing::StraightScene();
+  const FixedPolicy policy = testing::StraightPolicy();
+  scene.sea.seabed = true;
+  scene.sea.seabed_y = policy.box.y_min + 0.25 * (policy.box.y_max - policy.box.y_min);
+  const Snapshot snap = testing::StraightSnapshot(1.0);
+  History history(scene, policy);
   history.Add(snap);
-  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  const FrameLayout L = MakeFrameLayout(scene, history, 1280, 720);
   const Theme th = Theme::Dark();
-  const Frame frame = MakeFrame(spec, history, snap, L, Colormap("viridis"), th);
-  const float y = L.cable.PixelY(spec.seabed_y);
+  const Frame frame = MakeFrame(scene, history, snap, L, Colormap("viridis"), th);
+  const float y = L.cable.PixelY(scene.sea.seabed_y);
   int line = -1, ground = -1, first_cable = -1;
   for (std::size_t i = 0; i < frame.shapes.size(); ++i) {
     const Shape& s = frame.shapes[i];
@@ -353,9 +379,9 @@ TEST(MakeFrame, SeabedLineGroundAndLegend) {
   int legend = 0;
   for (const TextItem& t : frame.texts) legend += t.text == "seabed" && L.cable_panel.Contains(t.pos);
   EXPECT_EQ(legend, 1);
-  const FilmSpec plain = testing::StraightSpec();
-  FilmHistory h2(plain);
-  const Frame f2 = MakeFrame(plain, h2, snap, MakeFrameLayout(plain, 1280, 720),
+  const SceneView plain = testing::StraightScene();
+  History h2(plain, policy);
+  const Frame f2 = MakeFrame(plain, h2, snap, MakeFrameLayout(plain, h2, 1280, 720),
                              Colormap("viridis"), th);
   for (const TextItem& t : f2.texts) EXPECT_NE(t.text, "seabed");
   for (const Shape& s : f2.shapes) EXPECT_FALSE(SameColor(s.color, th.seabed));
@@ -365,23 +391,25 @@ TEST(MakeFrame, SeabedLineGroundAndLegend) {
 // (down to the seabed) washed with triangles, both before the cable; a legend entry; none
 // without.
 TEST(MakeFrame, WaterSurfaceLineWashAndLegend) {
-  FilmSpec spec = testing::StraightSpec();
-  spec.seabed = true;
-  spec.seabed_y = spec.y_min + 0.1 * (spec.y_max - spec.y_min);
-  spec.surface = true;
-  CableSnapshot snap = testing::StraightSnapshot(1.0);
-  const double level = spec.y_min + 0.8 * (spec.y_max - spec.y_min);
+  SceneView scene = testing::StraightScene();
+  const FixedPolicy policy = testing::StraightPolicy();
+  const WorldBox& box = policy.box;
+  scene.sea.seabed = true;
+  scene.sea.seabed_y = box.y_min + 0.1 * (box.y_max - box.y_min);
+  scene.sea.surface = true;
+  Snapshot snap = testing::StraightSnapshot(1.0);
+  const double level = box.y_min + 0.8 * (box.y_max - box.y_min);
   const int n = 33;
   for (int i = 0; i < n; ++i) {
-    const double x = spec.x_min + (spec.x_max - spec.x_min) * i / (n - 1);
+    const double x = box.x_min + (box.x_max - box.x_min) * i / (n - 1);
     snap.surface_x.push_back(x);
-    snap.surface_y.push_back(level + 0.05 * (spec.y_max - spec.y_min) * std::cos(0.3 * i));
+    snap.surface_y.push_back(level + 0.05 * (box.y_max - box.y_min) * std::cos(0.3 * i));
   }
-  FilmHistory history(spec);
+  History history(scene, policy);
   history.Add(snap);
-  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  const FrameLayout L = MakeFrameLayout(scene, history, 1280, 720);
   const Theme th = Theme::Dark();
-  const Frame frame = MakeFrame(spec, history, snap, L, Colormap("viridis"), th);
+  const Frame frame = MakeFrame(scene, history, snap, L, Colormap("viridis"), th);
   int segments = 0, wash = 0, last_water = -1, first_cable = -1, matched = 0;
   for (std::size_t i = 0; i < frame.shapes.size(); ++i) {
     const Shape& s = frame.shapes[i];
@@ -399,7 +427,7 @@ TEST(MakeFrame, WaterSurfaceLineWashAndLegend) {
     if (s.kind == ShapeKind::kTriangle && s.color.r == th.water.r && s.color.a < 0.5f) {
       ++wash;
       // Down to the seabed's line, never below it.
-      EXPECT_LE(std::max({s.a.y, s.b.y, s.c.y}), L.cable.PixelY(spec.seabed_y) + 1e-3f);
+      EXPECT_LE(std::max({s.a.y, s.b.y, s.c.y}), L.cable.PixelY(scene.sea.seabed_y) + 1e-3f);
       last_water = std::max(last_water, static_cast<int>(i));
     }
   }
@@ -413,13 +441,13 @@ TEST(MakeFrame, WaterSurfaceLineWashAndLegend) {
   EXPECT_EQ(legend, 1);
   // A surface reaching a box's width beyond the box on either side (as the film samples it) is
   // clipped to the plot's x range: its line runs from the plot's left edge to its right edge.
-  CableSnapshot wide = testing::StraightSnapshot(1.0);
-  const double width = spec.x_max - spec.x_min;
+  Snapshot wide = testing::StraightSnapshot(1.0);
+  const double width = box.x_max - box.x_min;
   for (int i = 0; i <= 300; ++i) {
-    wide.surface_x.push_back(spec.x_min - width + 3 * width * i / 300);
+    wide.surface_x.push_back(box.x_min - width + 3 * width * i / 300);
     wide.surface_y.push_back(level);
   }
-  const Frame f3 = MakeFrame(spec, history, wide, L, Colormap("viridis"), th);
+  const Frame f3 = MakeFrame(scene, history, wide, L, Colormap("viridis"), th);
   float left = 1e9f, right = -1e9f;
   for (const Shape& s : f3.shapes)
     if (s.kind == ShapeKind::kSegment && SameColor(s.color, th.water) &&
@@ -429,32 +457,33 @@ TEST(MakeFrame, WaterSurfaceLineWashAndLegend) {
     }
   EXPECT_FLOAT_EQ(left, L.cable.rect.x0);
   EXPECT_FLOAT_EQ(right, L.cable.rect.x1);
-  const FilmSpec plain = testing::StraightSpec();
-  FilmHistory h2(plain);
+  const SceneView plain = testing::StraightScene();
+  History h2(plain, policy);
   const Frame f2 = MakeFrame(plain, h2, testing::StraightSnapshot(1.0),
-                             MakeFrameLayout(plain, 1280, 720), Colormap("viridis"), th);
+                             MakeFrameLayout(plain, h2, 1280, 720), Colormap("viridis"), th);
   for (const TextItem& t : f2.texts) EXPECT_NE(t.text, "water surface");
   for (const Shape& s : f2.shapes) EXPECT_FALSE(SameColor(s.color, th.water));
 }
 
-TEST(MakeFrame, CompanionTensionCurveAndMaxTrace) {
-  const FilmSpec spec = testing::StraightCompanionSpec();
-  FilmHistory history(spec);
-  CableSnapshot snap;
+TEST(MakeFrame, SecondLineTensionCurveAndMaxTrace) {
+  const SceneView scene = testing::StraightPairScene();
+  History history(scene, testing::StraightPolicy());
+  Snapshot snap;
   for (int i = 0; i <= 20; ++i) {
-    snap = testing::StraightCompanionSnapshot(i * 0.5);
-    for (double& T : snap.ctension) T *= 0.5 + 0.02 * i;
+    snap = testing::StraightPairSnapshot(i * 0.5);
+    for (double& T : snap.lines[1].tension) T *= 0.5 + 0.02 * i;
     history.Add(snap);
   }
-  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
-  const Frame frame = MakeFrame(spec, history, snap, L, Colormap("viridis"));
+  const FrameLayout L = MakeFrameLayout(scene, history, 1280, 720);
+  const Frame frame = MakeFrame(scene, history, snap, L, Colormap("viridis"));
   const Theme th = Theme::Dark();
-  // The companion's current tension: a vertex at each link midpoint, in the companion colour.
+  const std::vector<double>& second = snap.lines[1].tension;
+  // The second line's current tension: a vertex at each link midpoint, in the overlay colour.
   int vertices = 0, trace = 0;
   for (int j = 0; j < kLinks; ++j) {
-    const Vec2f want = L.tension.ToPixel(j + 0.5, snap.ctension[j] / 1000);
+    const Vec2f want = L.tension.ToPixel(j + 0.5, second[j] / 1000);
     for (const Shape& s : frame.shapes)
-      if (s.kind == ShapeKind::kSegment && SameColor(s.color, th.companion) &&
+      if (s.kind == ShapeKind::kSegment && SameColor(s.color, th.overlay) &&
           std::fabs(s.a.x - want.x) < 1e-3f && std::fabs(s.a.y - want.y) < 1e-3f) {
         ++vertices;
         break;
@@ -462,78 +491,91 @@ TEST(MakeFrame, CompanionTensionCurveAndMaxTrace) {
   }
   EXPECT_EQ(vertices, kLinks - 1);  // the last midpoint only ends a segment
   for (const Shape& s : frame.shapes)
-    trace += s.kind == ShapeKind::kSegment && SameColor(s.color, th.companion) &&
+    trace += s.kind == ShapeKind::kSegment && SameColor(s.color, th.overlay) &&
              L.max_tension.rect.Contains(s.a) && L.max_tension.rect.Contains(s.b);
   EXPECT_EQ(trace, 20);  // 21 snapshots, each in its own pixel column
-  // The companion's max tension per snapshot, one per snapshot.
-  ASSERT_EQ(history.companion_max_tension().size(), 21u);
-  EXPECT_DOUBLE_EQ(history.companion_max_tension()[0], 0.5 * snap.ctension[0] / (0.5 + 0.02 * 20));
-  EXPECT_DOUBLE_EQ(history.companion_max_tension()[20], snap.ctension[0]);
+  // The second line's max tension, one per snapshot.
+  ASSERT_EQ(history.max_tension().size(), 2u);
+  ASSERT_EQ(history.max_tension()[1].size(), 21u);
+  EXPECT_DOUBLE_EQ(history.max_tension()[1][0], 0.5 * second[0] / (0.5 + 0.02 * 20));
+  EXPECT_DOUBLE_EQ(history.max_tension()[1][20], second[0]);
 }
 
-TEST(CheckSnapshot, RejectsACompanionOfTheWrongSize) {
-  const FilmSpec spec = testing::StraightCompanionSpec();
-  const CableSnapshot good = testing::StraightCompanionSnapshot(1.5);
-  EXPECT_NO_THROW(CheckSnapshot(spec, good));
-  auto message = [&](const CableSnapshot& s) -> std::string {
+TEST(CheckSnapshot, RejectsASecondLineOfTheWrongSize) {
+  const SceneView scene = testing::StraightPairScene();
+  const Snapshot good = testing::StraightPairSnapshot(1.5);
+  EXPECT_NO_THROW(CheckSnapshot(scene, good));
+  auto message = [&](const Snapshot& s) -> std::string {
     try {
-      CheckSnapshot(spec, s);
+      CheckSnapshot(scene, s);
     } catch (const Error& e) {
       return e.what();
     }
     return "";
   };
-  CableSnapshot short_x = good;
-  short_x.cx.pop_back();
+  Snapshot short_x = good;
+  short_x.lines[1].x.pop_back();
   const std::string m1 = message(short_x);
-  EXPECT_NE(m1.find("companion cable at t = 1.5"), std::string::npos) << m1;
+  EXPECT_NE(m1.find("line 2 at t = 1.5"), std::string::npos) << m1;
   EXPECT_NE(m1.find("20 x, 21 y and 20 tensions"), std::string::npos) << m1;
   EXPECT_NE(m1.find("21 stations and 20 links"), std::string::npos) << m1;
-  CableSnapshot long_t = good;
-  long_t.ctension.push_back(1);
+  Snapshot long_t = good;
+  long_t.lines[1].tension.push_back(1);
   EXPECT_NE(message(long_t).find("21 tensions"), std::string::npos) << message(long_t);
-  // The spec names a companion: a snapshot without one is an error too.
+  // The scene has two lines: a snapshot of one is an error too.
   const std::string m3 = message(testing::StraightSnapshot(1.5));
-  EXPECT_NE(m3.find("0 x, 0 y and 0 tensions"), std::string::npos) << m3;
-  CableSnapshot nan = good;
-  nan.ctension[7] = NAN;
-  EXPECT_NE(message(nan).find("companion tension of link 7"), std::string::npos) << message(nan);
-  // Without a companion label, a companion is optional, but checked when present.
-  const FilmSpec plain = testing::StraightSpec();
+  EXPECT_NE(m3.find("has 1 line; the scene has 2"), std::string::npos) << m3;
+  Snapshot nan = good;
+  nan.lines[1].tension[7] = NAN;
+  EXPECT_NE(message(nan).find("tension of link 7 of line 2"), std::string::npos) << message(nan);
+  // A scene of one line takes a snapshot of one line, and no other.
+  const SceneView plain = testing::StraightScene();
   EXPECT_NO_THROW(CheckSnapshot(plain, testing::StraightSnapshot(1)));
-  EXPECT_NO_THROW(CheckSnapshot(plain, good));
+  EXPECT_THROW(CheckSnapshot(plain, good), Error);
   EXPECT_THROW(CheckSnapshot(plain, short_x), Error);
-  // FilmHistory::Add checks the sizes the same way, before changing anything.
-  FilmHistory history(spec);
+  // History::Add checks the sizes the same way, before changing anything.
+  History history(scene, testing::StraightPolicy());
   EXPECT_THROW(history.Add(short_x), Error);
   EXPECT_THROW(history.Add(testing::StraightSnapshot(1)), Error);
   EXPECT_EQ(history.count(), 0);
-  EXPECT_TRUE(history.companion_max_tension().empty());
+  EXPECT_TRUE(history.times().empty());
+  EXPECT_TRUE(history.max_tension()[1].empty());
   // And MakeFrame rejects it.
-  EXPECT_THROW(MakeFrame(spec, history, short_x, MakeFrameLayout(spec, 320, 180),
+  EXPECT_THROW(MakeFrame(scene, history, short_x, MakeFrameLayout(scene, history, 320, 180),
                          Colormap("viridis")),
                Error);
 }
 
-TEST(FilmHistory, CompanionMaxIsNaNWhereASnapshotHasNone) {
-  const FilmSpec spec = testing::StraightSpec();  // no companion named: optional per snapshot
-  FilmHistory history(spec);
-  history.Add(testing::StraightSnapshot(0));
-  EXPECT_TRUE(history.companion_max_tension().empty());
-  history.Add(testing::StraightCompanionSnapshot(0.1));
-  history.Add(testing::StraightSnapshot(0.2));
-  ASSERT_EQ(history.companion_max_tension().size(), 3u);
-  EXPECT_TRUE(std::isnan(history.companion_max_tension()[0]));
-  EXPECT_DOUBLE_EQ(history.companion_max_tension()[1], (kLinks - 0.5) / kLinks * kTensionMax);
-  EXPECT_TRUE(std::isnan(history.companion_max_tension()[2]));
+// Lines after the first without labels: the legends give them default names on one row (the
+// layout makes no second row), and the time plot has no readout. A row a line has no value for
+// is a gap (NaN) in its trace.
+TEST(FilmHistory, UnnamedLinesHaveDefaultNamesAndRowsMayHaveGaps) {
+  SceneView scene = testing::StraightPairScene();
+  for (LineView& line : scene.lines) line.label.clear();
+  History history(scene, testing::StraightPolicy());
+  const double kNaN = std::nan("");
+  for (int i = 0; i < 3; ++i) {
+    Snapshot s = testing::StraightPairSnapshot(0.1 * i);
+    s.row_t = {0.1 * i};
+    s.lines[0].row_max = {1000.0 * (i + 1)};
+    s.lines[1].row_max = {i == 1 ? 2000.0 : kNaN};
+    history.Add(s);
+  }
+  ASSERT_EQ(history.max_tension()[1].size(), 3u);
+  EXPECT_TRUE(std::isnan(history.max_tension()[1][0]));
+  EXPECT_DOUBLE_EQ(history.max_tension()[1][1], 2000);
+  EXPECT_TRUE(std::isnan(history.max_tension()[1][2]));
+  EXPECT_DOUBLE_EQ(history.peak(1), 2000);  // the gaps are not values
+  EXPECT_DOUBLE_EQ(history.peak_t(1), 0.1);
   // Drawn with default names and one legend row (the layout has no second row).
-  const FrameLayout L = MakeFrameLayout(spec, 1280, 720);
+  const FrameLayout L = MakeFrameLayout(scene, history, 1280, 720);
   EXPECT_FALSE(L.legend_rows);
-  const Frame frame = MakeFrame(spec, history, testing::StraightCompanionSnapshot(0.3), L,
+  const Frame frame = MakeFrame(scene, history, testing::StraightPairSnapshot(0.3), L,
                                 Colormap("viridis"));
   int named = 0;
   for (const TextItem& t : frame.texts) {
-    named += t.text == "companion";
+    named += t.text == "line 2";
+    EXPECT_EQ(t.text.find("now"), std::string::npos) << "no readout: " << t.text;
     // Above the plots, only the row of the title and legend (no second row over the plots).
     if ((L.tension_panel.Contains(t.pos) || L.max_panel.Contains(t.pos)) &&
         t.pos.y < L.tension.rect.y0) {

@@ -1,5 +1,3 @@
-#include "view/live_frame.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +7,7 @@
 #include "core/error.h"
 #include "view/demo_cable.h"
 #include "view/frame_builder.h"
+#include "view/history.h"
 #include "view/painter.h"
 #include "test_scene.h"
 
@@ -22,41 +21,62 @@ bool SameColor(const Rgba& a, const Rgba& b) {
   return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a;
 }
 
-// The straight test cable as the live view sees it at t = 40 s, with a 60 s window [10, 70],
-// a trace of one sample per 0.1 s and markers at 12, 30 and 55 s (inside) and 5 s (outside).
-LiveFrameInput StraightLive() {
-  const FilmSpec spec = testing::StraightSpec();
-  LiveFrameInput in;
-  in.title = "Straight test cable";
-  in.status = "live \u00b7 2.0x";
-  in.snapshot = testing::StraightSnapshot(40);
-  in.arc_length = spec.arc_length;
-  in.section_boundaries = spec.section_boundaries;
-  in.section_names = {"chain", "rope"};
-  in.weight_stations = spec.weight_stations;
-  in.moving_ends = spec.moving_ends;
-  in.fixed_ends = spec.fixed_ends;
-  in.equilibrium = spec.equilibrium;
-  in.tension_min = 0;
-  in.tension_max = kTensionMax;
-  in.x_min = spec.x_min;
-  in.x_max = spec.x_max;
-  in.y_min = spec.y_min;
-  in.y_max = spec.y_max;
-  in.window_start = 10;
-  in.window_end = 70;
-  for (int i = 100; i <= 400; ++i) {
-    in.times.push_back(i * 0.1);
-    in.max_tension.push_back(kTensionMax * (0.5 + 0.4 * std::sin(i * 0.05)));
+// A live view: its scene, its (following) history, and the snapshot a frame draws.
+struct Live {
+  SceneView scene;
+  History history;
+  Snapshot now;
+};
+
+// The straight cable with its largest tension `max` [N] (at link 19, as every link's
+// tension is scaled alike) and its moving end at `end` [m].
+Snapshot Straight(double t, double max, Vec2f end = {kLinks, 0}) {
+  Snapshot s = testing::StraightSnapshot(t);
+  for (double& T : s.lines[0].tension) T *= max / ((kLinks - 0.5) / kLinks * kTensionMax);
+  s.lines[0].x[kLinks] = end.x;
+  s.lines[0].y[kLinks] = end.y;
+  return s;
+}
+
+// The straight test cable as the live view sees it at t = 70 s, with a 60 s window [10, 70]:
+// a sample every 0.1 s from t = 0 (its largest tension 0.5 to 0.9 of kTensionMax), the peak
+// (39 kN at link 19) at t = 3.25 s, the moving end on a circle of 0.5 m (back at (20, 0) at
+// t = 70 s), and `markers` added as their time came (by default at 12, 30 and 55 s, inside the
+// window, and at 5 s, scrolled out of it). Its sections are named "chain" and "rope".
+using Markers = std::vector<TimeMarker>;
+Live StraightLive(SceneView scene = {},
+                  Markers markers = {{5, "old"}, {12, "speed 2x"}, {30, "amplitude 3 m"},
+                                     {55, "current 0.5 m/s"}},
+                  const Wave& wave = {}) {
+  if (scene.lines.empty()) {
+    scene = testing::StraightScene();
+    scene.lines[0].section_names = {"chain", "rope"};
   }
-  in.link_min.assign(kLinks, 0.1 * kTensionMax);
-  in.link_max.assign(kLinks, 0.9 * kTensionMax);
-  in.end_paths = {{{20, 0}, {20.5f, 0.5f}, {20, 1}}};
-  in.markers = {{12, "speed 2x"}, {30, "amplitude 3 m"}, {55, "current 0.5 m/s"}, {5, "old"}};
-  in.peak = 39000;
-  in.peak_t = 3.25;
-  in.peak_link = 19;
-  return in;
+  History history(scene, FollowingPolicy{60, wave});
+  std::size_t next = 0;
+  for (int i = 0; i <= 700; ++i) {
+    const double t = i * 0.1;
+    while (next < markers.size() && markers[next].t <= t) {
+      history.AddMarker(markers[next].t, markers[next].label);
+      ++next;
+    }
+    if (i == 33) history.Add(Straight(3.25, 0.975 * kTensionMax));  // the peak
+    const double phase = 2 * M_PI * t / 10;
+    const Vec2f end{static_cast<float>(kLinks + 0.5 * std::sin(phase)),
+                    static_cast<float>(0.5 * (1 - std::cos(phase)))};
+    const double max = kTensionMax * (0.5 + 0.4 * std::sin(i * 0.05));
+    history.Add(Straight(t, max, i < 700 ? end : Vec2f{kLinks, 0}));
+  }
+  Snapshot now = history.now();
+  return {std::move(scene), std::move(history), std::move(now)};
+}
+
+FrameLayout Layout(const Live& l, int width, int height) {
+  return MakeFrameLayout(l.scene, l.history, width, height);
+}
+Frame Draw(const Live& l, int width, int height, const Colormap& colormap,
+           const Theme& th = Theme::Dark(), const std::string& status = "live \u00b7 2.0x") {
+  return MakeFrame(l.scene, l.history, l.now, Layout(l, width, height), colormap, th, status);
 }
 
 const TextItem* FindText(const Frame& f, const std::string& text) {
@@ -66,9 +86,9 @@ const TextItem* FindText(const Frame& f, const std::string& text) {
 }
 
 TEST(LiveFrame, MarkersAreDashedLinesAtTheirTimeWithTheirLabel) {
-  const LiveFrameInput in = StraightLive();
-  const FrameLayout L = MakeLiveFrameLayout(in, 1280, 720);
-  const Frame frame = MakeLiveFrame(in, 1280, 720, Colormap("viridis"));
+  const Live in = StraightLive();
+  const FrameLayout L = Layout(in, 1280, 720);
+  const Frame frame = Draw(in, 1280, 720, Colormap("viridis"));
   const Theme th = Theme::Dark();
   const PlotMapping& m = L.max_tension;
   EXPECT_DOUBLE_EQ(m.x_lo, 10);
@@ -108,63 +128,73 @@ TEST(LiveFrame, MarkersAreDashedLinesAtTheirTimeWithTheirLabel) {
 
 // A seabed: the cable panel draws its line across the plot at its elevation and names it.
 TEST(LiveFrame, SeabedLineAndLegend) {
-  LiveFrameInput in = StraightLive();
-  in.seabed = true;
-  in.seabed_y = in.y_min + 0.25 * (in.y_max - in.y_min);
+  SceneView scene = testing::StraightScene();
+  scene.sea.seabed = true;
+  scene.sea.seabed_y = -0.25;
+  const Live in = StraightLive(scene);
   const Theme th = Theme::Dark();
-  const FrameLayout L = MakeLiveFrameLayout(in, 1280, 720);
-  const Frame f = MakeLiveFrame(in, 1280, 720, Colormap("viridis"), th);
-  const float y = L.cable.PixelY(in.seabed_y);
+  const FrameLayout L = Layout(in, 1280, 720);
+  const Frame f = Draw(in, 1280, 720, Colormap("viridis"), th);
+  const float y = L.cable.PixelY(scene.sea.seabed_y);
   int line = 0;
   for (const Shape& s : f.shapes)
     line += s.kind == ShapeKind::kSegment && SameColor(s.color, th.seabed) && s.a.y == y &&
             s.b.y == y;
   EXPECT_EQ(line, 1);
   EXPECT_NE(FindText(f, "seabed"), nullptr);
-  EXPECT_EQ(FindText(MakeLiveFrame(StraightLive(), 1280, 720, Colormap("viridis"), th), "seabed"),
-            nullptr);
+  EXPECT_EQ(FindText(Draw(StraightLive(), 1280, 720, Colormap("viridis"), th), "seabed"), nullptr);
 }
 
 // Waves: the snapshot's water surface is drawn (a segment between each pair of samples) and named.
 TEST(LiveFrame, WaterSurfaceLineAndLegend) {
-  LiveFrameInput in = StraightLive();
-  in.surface = true;
+  SceneView scene = testing::StraightScene();
+  scene.sea.surface = true;
+  WaveSpec w;
+  w.present = true;
+  w.height = 0.5;
+  w.period = 4;
+  w.depth = 30;
+  w.surface_y = 1.5;  // above the line
+  Live in = StraightLive(scene, {}, MakeWave(w, 9.80665));
+  const WorldBox box = in.history.box();
+  in.now.surface_x.clear();
+  in.now.surface_y.clear();
   for (int i = 0; i < 9; ++i) {
-    in.snapshot.surface_x.push_back(in.x_min + (in.x_max - in.x_min) * i / 8);
-    in.snapshot.surface_y.push_back(in.y_min + 0.9 * (in.y_max - in.y_min));
+    in.now.surface_x.push_back(box.x_min + (box.x_max - box.x_min) * i / 8);
+    in.now.surface_y.push_back(box.y_min + 0.9 * (box.y_max - box.y_min));
   }
   const Theme th = Theme::Dark();
-  const Frame f = MakeLiveFrame(in, 1280, 720, Colormap("viridis"), th);
-  const FrameLayout L = MakeLiveFrameLayout(in, 1280, 720);
+  const Frame f = Draw(in, 1280, 720, Colormap("viridis"), th);
+  const FrameLayout L = Layout(in, 1280, 720);
   int line = 0;  // in the plot (the legend's swatch is in the panel's head, above it)
   for (const Shape& s : f.shapes)
     line += s.kind == ShapeKind::kSegment && SameColor(s.color, th.water) &&
             s.a.y >= L.cable.rect.y0;
   EXPECT_EQ(line, 8);
   EXPECT_NE(FindText(f, "water surface"), nullptr);
-  EXPECT_EQ(FindText(MakeLiveFrame(StraightLive(), 1280, 720, Colormap("viridis"), th),
-                     "water surface"),
+  EXPECT_EQ(FindText(Draw(StraightLive(), 1280, 720, Colormap("viridis"), th), "water surface"),
             nullptr);
 }
 
 TEST(LiveFrame, CloseMarkersKeepTheNewestLabelAndLongLabelsAreCut) {
-  LiveFrameInput in = StraightLive();
-  in.markers = {{30, "first"}, {30.05, "second"}, {40, std::string(60, 'x')}};
-  const Frame frame = MakeLiveFrame(in, 1280, 720, Colormap("viridis"));
+  const Live in =
+      StraightLive({}, {{30, "first"}, {30.05, "second"}, {40, std::string(60, 'x')}});
+  const Frame frame = Draw(in, 1280, 720, Colormap("viridis"));
   EXPECT_EQ(FindText(frame, "first"), nullptr);  // 0.05 s apart: under a pixel
   EXPECT_NE(FindText(frame, "second"), nullptr);
   EXPECT_NE(FindText(frame, std::string(28, 'x') + "\u2026"), nullptr);
 }
 
 TEST(LiveFrame, CableSegmentsCarryTheColourOfTheirTension) {
-  const LiveFrameInput in = StraightLive();
-  const FrameLayout L = MakeLiveFrameLayout(in, 1280, 720);
+  const Live in = StraightLive();
+  const FrameLayout L = Layout(in, 1280, 720);
   const Colormap map("magma");
-  const Frame frame = MakeLiveFrame(in, 1280, 720, map);
+  const Frame frame = Draw(in, 1280, 720, map);
+  const double lo = in.history.range_min(), hi = in.history.range_max();
   int found = 0;
   for (int j = 0; j < kLinks; ++j) {
     const Vec2f a = L.cable.ToPixel(j, 0), b = L.cable.ToPixel(j + 1, 0);
-    const Rgba want = map.Map(in.snapshot.tension[j], 0, kTensionMax);
+    const Rgba want = map.Map(in.now.lines[0].tension[j], lo, hi);
     for (const Shape& s : frame.shapes)
       if (s.kind == ShapeKind::kSegment && s.a.x == a.x && s.a.y == a.y && s.b.x == b.x &&
           s.b.y == b.y && SameColor(s.color, want) && s.size == L.cable_width) {
@@ -175,15 +205,16 @@ TEST(LiveFrame, CableSegmentsCarryTheColourOfTheirTension) {
   EXPECT_EQ(found, kLinks);
   // Equal scale in x and y, and the whole box visible.
   const PlotMapping& c = L.cable;
+  const WorldBox box = in.history.box();
   EXPECT_NEAR(c.rect.width() / (c.x_hi - c.x_lo), c.rect.height() / (c.y_hi - c.y_lo), 1e-4);
-  EXPECT_LE(c.x_lo, in.x_min);
-  EXPECT_GE(c.x_hi, in.x_max);
+  EXPECT_LE(c.x_lo, box.x_min);
+  EXPECT_GE(c.x_hi, box.x_max);
 }
 
 TEST(LiveFrame, SectionNamesAreCentredInTheirSpans) {
-  LiveFrameInput in = StraightLive();
-  const FrameLayout L = MakeLiveFrameLayout(in, 1280, 720);
-  const Frame frame = MakeLiveFrame(in, 1280, 720, Colormap("viridis"));
+  Live in = StraightLive();
+  const FrameLayout L = Layout(in, 1280, 720);
+  const Frame frame = Draw(in, 1280, 720, Colormap("viridis"));
   const PlotMapping& tm = L.tension;
   const TextItem* chain = FindText(frame, "chain");
   const TextItem* rope = FindText(frame, "rope");
@@ -194,71 +225,103 @@ TEST(LiveFrame, SectionNamesAreCentredInTheirSpans) {
     EXPECT_TRUE(tm.rect.Contains(t->pos)) << t->text;
     EXPECT_LT(t->pos.y, tm.rect.y0 + 0.1f * tm.rect.height()) << "near the top";
   }
-  in.section_names.clear();  // unnamed: no names, still valid
-  const Frame plain = MakeLiveFrame(in, 1280, 720, Colormap("viridis"));
+  in.scene.lines[0].section_names.clear();  // unnamed: no names, still valid
+  const Frame plain = Draw(in, 1280, 720, Colormap("viridis"));
   EXPECT_EQ(FindText(plain, "chain"), nullptr);
 }
 
 TEST(LiveFrame, HeaderShowsStatusTimeAndPeak) {
-  LiveFrameInput in = StraightLive();
-  in.range_locked = true;
-  const Frame frame = MakeLiveFrame(in, 1920, 1080, Colormap("viridis"));
+  Live in = StraightLive();
+  in.history.LockRange(true);
+  const Frame frame = Draw(in, 1920, 1080, Colormap("viridis"));
   EXPECT_NE(FindText(frame, "Straight test cable"), nullptr);
   EXPECT_NE(FindText(frame, "live \u00b7 2.0x"), nullptr);
-  EXPECT_NE(FindText(frame, "t = 40.00 s"), nullptr);
+  EXPECT_NE(FindText(frame, "t = 70.00 s"), nullptr);
   EXPECT_NE(FindText(frame, "peak 39.00 kN at t = 3.25 s, link 19"), nullptr);
   EXPECT_NE(FindText(frame, "tension [kN], locked"), nullptr);
-  in.range_locked = false;
-  const Frame free = MakeLiveFrame(in, 1920, 1080, Colormap("viridis"));
+  in.history.LockRange(false);
+  const Frame free = Draw(in, 1920, 1080, Colormap("viridis"));
   EXPECT_NE(FindText(free, "tension [kN]"), nullptr);
   EXPECT_EQ(FindText(free, "tension [kN], locked"), nullptr);
 }
 
+// Each piece of the picture's input, spoiled, is an error (at the history's construction, at
+// Add, at the layout or at the frame), never a wrong picture.
 TEST(LiveFrame, InconsistentInputThrows) {
-  const std::vector<std::pair<const char*, std::function<void(LiveFrameInput&)>>> bad = {
-      {"short tension", [](LiveFrameInput& in) { in.snapshot.tension.pop_back(); }},
-      {"short x", [](LiveFrameInput& in) { in.snapshot.x.pop_back(); }},
-      {"NaN station", [](LiveFrameInput& in) { in.snapshot.y[3] = NAN; }},
-      {"companion", [](LiveFrameInput& in) { in.snapshot.cx = in.snapshot.x; }},
-      {"names", [](LiveFrameInput& in) { in.section_names.push_back("extra"); }},
-      {"envelope", [](LiveFrameInput& in) { in.link_max.pop_back(); }},
-      {"trace", [](LiveFrameInput& in) { in.max_tension.pop_back(); }},
-      {"equilibrium", [](LiveFrameInput& in) { in.equilibrium.x.pop_back(); }},
-      {"moving end", [](LiveFrameInput& in) { in.moving_ends = {kLinks + 1}; }},
-      {"peak link", [](LiveFrameInput& in) { in.peak_link = kLinks; }},
-      {"window", [](LiveFrameInput& in) { in.window_end = in.window_start; }},
-      {"range", [](LiveFrameInput& in) { in.tension_max = in.tension_min; }},
-      {"box", [](LiveFrameInput& in) { in.x_max = INFINITY; }},
-      {"stations", [](LiveFrameInput& in) { in.arc_length.resize(1); }},
+  auto draw = [](const Live& l) { Draw(l, 640, 360, Colormap("viridis")); };
+  // The snapshot now at 70.1 s carrying two rows, their `maxima` and an envelope of `links`.
+  auto with_rows = [](const Live& l, std::size_t maxima, std::size_t links) {
+    Snapshot s = l.now;
+    s.t = 70.1;
+    s.row_t = {70.05, 70.1};
+    s.lines[0].row_max.assign(maxima, 1000);
+    s.lines[0].row_link_min.assign(links, 0);
+    s.lines[0].row_link_max.assign(links, 1000);
+    return s;
   };
-  for (const auto& [what, spoil] : bad) {
-    LiveFrameInput in = StraightLive();
-    spoil(in);
-    EXPECT_THROW(MakeLiveFrame(in, 640, 360, Colormap("viridis")), Error) << what;
-  }
-  // Optional series may be empty.
-  LiveFrameInput in = StraightLive();
-  in.link_min.clear();
-  in.link_max.clear();
-  in.times.clear();
-  in.max_tension.clear();
-  in.equilibrium = CableSnapshot{};
-  in.end_paths.clear();
-  in.markers.clear();
-  EXPECT_NO_THROW(MakeLiveFrame(in, 640, 360, Colormap("viridis")));
+  // The live view of a scene spoiled, or of the usual one with its snapshot now spoiled.
+  auto spoiled_line = [&](const std::function<void(LineView&)>& spoil) {
+    SceneView scene = testing::StraightScene();
+    spoil(scene.lines[0]);
+    draw(StraightLive(scene));
+  };
+  auto spoiled_now = [&](const std::function<void(Snapshot&)>& spoil) {
+    Live l = StraightLive();
+    spoil(l.now);
+    draw(l);
+  };
+  const std::vector<std::pair<const char*, std::function<void()>>> bad = {
+      {"short tension", [&] { spoiled_now([](Snapshot& s) { s.lines[0].tension.pop_back(); }); }},
+      {"short x", [&] { spoiled_now([](Snapshot& s) { s.lines[0].x.pop_back(); }); }},
+      {"NaN station", [&] { spoiled_now([](Snapshot& s) { s.lines[0].y[3] = NAN; }); }},
+      {"second line", [&] { spoiled_now([](Snapshot& s) { s.lines.push_back(s.lines[0]); }); }},
+      {"names", [&] { spoiled_line([](LineView& l) { l.section_names = {"a", "b", "c"}; }); }},
+      {"envelope", [&] { Live l = StraightLive(); l.history.Add(with_rows(l, 2, kLinks - 1)); }},
+      {"trace", [&] { Live l = StraightLive(); l.history.Add(with_rows(l, 1, kLinks)); }},
+      {"equilibrium", [&] { spoiled_line([](LineView& l) { l.reference.x.pop_back(); }); }},
+      {"moving end",
+       [&] { spoiled_line([](LineView& l) { l.marks.moving_ends = {kLinks + 1}; }); }},
+      {"weight", [&] { spoiled_line([](LineView& l) { l.marks.weights = {-1}; }); }},
+      {"window", [&] { History h(testing::StraightScene(), FollowingPolicy{0, {}}); }},
+      {"range", [&] { Live l = StraightLive(); l.history.SetRange(1000, 1000); draw(l); }},
+      {"box", [&] {
+         Live l = StraightLive();
+         Snapshot s = l.now;
+         s.lines[0].x[3] = INFINITY;  // the box follows it out of bounds
+         l.history.Add(s);
+         l.now = testing::StraightSnapshot(70);
+         draw(l);
+       }},
+      {"stations", [&] { spoiled_line([](LineView& l) { l.arc_length.resize(1); }); }},
+  };
+  for (const auto& [what, spoil] : bad) EXPECT_THROW(spoil(), Error) << what;
+  // Optional series may be empty: no reference, and (a history of nothing yet) no trace, no
+  // envelope, no end path, no markers.
+  SceneView scene = testing::StraightScene();
+  scene.lines[0].reference = LineState{};
+  History empty(scene, testing::StraightPolicy());
+  EXPECT_NO_THROW(MakeFrame(scene, empty, testing::StraightSnapshot(40),
+                            MakeFrameLayout(scene, empty, 640, 360), Colormap("viridis")));
+  History following(scene, FollowingPolicy{60, {}});
+  following.Add(testing::StraightSnapshot(40));
+  EXPECT_NO_THROW(MakeFrame(scene, following, following.now(),
+                            MakeFrameLayout(scene, following, 640, 360), Colormap("viridis")));
 }
 
 TEST(LiveFrame, CostPerFrameIsBoundedByThePixels) {
-  // A day of samples at 1 kHz squeezed into the window: the trace keeps two points per column.
-  LiveFrameInput in = StraightLive();
-  in.times.clear();
-  in.max_tension.clear();
+  // A day of samples at 1 kHz squeezed into the window: the history keeps the newest
+  // kMaxTracePoints and the trace two points per pixel column.
+  Live in = StraightLive();
+  Snapshot rows = Straight(70.1, 0.5 * kTensionMax);
   for (int i = 0; i < 600000; ++i) {
-    in.times.push_back(10 + i * 1e-4);
-    in.max_tension.push_back(kTensionMax * (0.5 + 0.4 * std::sin(i * 0.01)));
+    rows.row_t.push_back(10.1 + i * 1e-4);
+    rows.lines[0].row_max.push_back(kTensionMax * (0.5 + 0.4 * std::sin(i * 0.01)));
   }
-  const FrameLayout L = MakeLiveFrameLayout(in, 1280, 720);
-  const Frame frame = MakeLiveFrame(in, 1280, 720, Colormap("viridis"));
+  in.history.Add(rows);
+  in.now = rows;
+  ASSERT_EQ(in.history.times().size(), History::kMaxTracePoints);
+  const FrameLayout L = Layout(in, 1280, 720);
+  const Frame frame = Draw(in, 1280, 720, Colormap("viridis"));
   const Rgba accent = Theme::Dark().accent;
   int trace = 0;
   for (const Shape& s : frame.shapes)
@@ -278,14 +341,17 @@ bool Overlap(const PixelRect& a, const PixelRect& b) {
 // The P63-like demo box (84 m x 47 m) gets a cable panel as wide as its shape needs, the
 // tension along the cable beside it and a full-width time plot; a long flat box keeps the
 // cable across the whole top row. Panels never overlap and stay inside the frame.
+// The straight scene's layout for a film whose box is `box`.
+FrameLayout BoxLayout(const WorldBox& box, int w, int h) {
+  const SceneView scene = testing::StraightScene();
+  FixedPolicy policy = testing::StraightPolicy();
+  policy.box = box;
+  return MakeFrameLayout(scene, History(scene, policy), w, h);
+}
+
 TEST(FrameLayoutFit, CablePanelWidthFollowsTheBoxShape) {
   for (auto [w, h] : {std::pair{1920, 1080}, std::pair{1280, 720}, std::pair{640, 360}}) {
-    LiveFrameInput in = StraightLive();
-    in.x_min = -1;
-    in.x_max = 83;
-    in.y_min = -12;
-    in.y_max = 35;
-    const FrameLayout L = MakeLiveFrameLayout(in, w, h);
+    const FrameLayout L = BoxLayout({-1, 83, -12, 35}, w, h);
     EXPECT_TRUE(L.side_by_side) << w << "x" << h;
     EXPECT_LT(L.cable_panel.width(), 0.62f * w);
     EXPECT_FLOAT_EQ(L.cable_panel.y0, L.tension_panel.y0);
@@ -298,11 +364,7 @@ TEST(FrameLayoutFit, CablePanelWidthFollowsTheBoxShape) {
     EXPECT_NEAR(ppm, c.rect.height() / (47 * 1.0 + 2 * 0.04 * 84), 1e-3 * ppm);
     EXPECT_GT(84 * 1.08 * ppm, 0.9 * c.rect.width());
 
-    in.x_min = 0;
-    in.x_max = 400;
-    in.y_min = -5;
-    in.y_max = 5;
-    const FrameLayout flat = MakeLiveFrameLayout(in, w, h);
+    const FrameLayout flat = BoxLayout({0, 400, -5, 5}, w, h);
     EXPECT_FALSE(flat.side_by_side) << w << "x" << h;
 
     for (const FrameLayout* l : {&L, &flat}) {
@@ -320,17 +382,30 @@ TEST(FrameLayoutFit, CablePanelWidthFollowsTheBoxShape) {
   }
 }
 
-// A steady layout_aspect fixes the panels while the box changes.
+// The straight line's stations evenly from (x0, y0) to (x1, y1) [m] at t [s].
+Snapshot Chord(double t, double x0, double y0, double x1, double y1) {
+  Snapshot s = testing::StraightSnapshot(t);
+  for (int j = 0; j <= kLinks; ++j) {
+    s.lines[0].x[j] = x0 + (x1 - x0) * j / kLinks;
+    s.lines[0].y[j] = y0 + (y1 - y0) * j / kLinks;
+  }
+  return s;
+}
+
+// The live view fits its panels to the box over the run so far (layout_aspect): they stay
+// still while the box follows the lines.
 TEST(FrameLayoutFit, LayoutAspectKeepsPanelsStill) {
-  LiveFrameInput in = StraightLive();
-  in.layout_aspect = 1.8;
-  in.x_min = -1;
-  in.x_max = 83;
-  in.y_min = -12;
-  in.y_max = 35;
-  const FrameLayout a = MakeLiveFrameLayout(in, 1280, 720);
-  in.y_max = 25;
-  const FrameLayout b = MakeLiveFrameLayout(in, 1280, 720);
+  SceneView scene = testing::StraightScene();
+  scene.lines[0].marks.moving_ends.clear();  // no end path holding the box
+  History history(scene, FollowingPolicy{60, {}});
+  history.Add(Chord(1, -1, -12, 83, 35));
+  const double aspect = history.layout_aspect();
+  const WorldBox before = history.box();
+  const FrameLayout a = MakeFrameLayout(scene, history, 1280, 720);
+  for (int i = 0; i < 30; ++i) history.Add(Chord(1.1 + 0.1 * i, -1, -12, 83, 25));
+  EXPECT_LT(history.box().y_max, before.y_max - 1);  // the box shrank
+  EXPECT_EQ(history.layout_aspect(), aspect);
+  const FrameLayout b = MakeFrameLayout(scene, history, 1280, 720);
   EXPECT_FLOAT_EQ(a.cable_panel.x1, b.cable_panel.x1);
   EXPECT_FLOAT_EQ(a.tension.rect.x0, b.tension.rect.x0);
 }
@@ -365,43 +440,46 @@ void ExpectNoTextOverlaps(const Frame& f, const std::string& what) {
 }
 
 TEST(FrameLayoutFit, NoTextOverlapsAtTheUsualSizes) {
-  const FilmSpec spec = MakeDemoSpec(60);
-  FilmHistory history(spec);
-  CableSnapshot s;
+  const SceneView scene = MakeDemoScene();
+  const FixedPolicy policy = MakeDemoPolicy(60);
+  History history(scene, policy);
+  Snapshot s;
   for (int i = 0; i <= 300; ++i) {
-    s = MakeDemoSnapshot(spec, i / 10.0);
+    s = MakeDemoSnapshot(scene, i / 10.0);
     history.Add(s);
   }
-  // The demo with a companion cable (a copy 1 m lower, 10 % more tension) names both cables:
-  // its legends take second rows.
-  FilmSpec both = spec;
-  both.label = "elastic";
-  both.companion_label = "inextensible";
-  both.companion_equilibrium = spec.equilibrium;
-  both.y_min -= 1;
-  CableSnapshot sc = s;
-  sc.cx = s.x;
-  sc.cy = s.y;
-  for (double& y : sc.cy) y -= 1;
-  sc.ctension = s.tension;
-  for (double& T : sc.ctension) T *= 1.1;
-  FilmHistory both_history(both);
+  // The demo with a second line (a copy 1 m lower, 10 % more tension) names both lines: its
+  // legends take second rows.
+  SceneView both = scene;
+  both.lines[0].label = "elastic";
+  both.lines.push_back(both.lines[0]);
+  both.lines[1].label = "inextensible";
+  FixedPolicy both_policy = policy;
+  both_policy.box.y_min -= 1;
+  Snapshot sc = s;
+  sc.lines.push_back(s.lines[0]);
+  for (double& y : sc.lines[1].y) y -= 1;
+  for (double& T : sc.lines[1].tension) T *= 1.1;
+  History both_history(both, both_policy);
   both_history.Add(sc);
-  const FilmSpec straight = testing::StraightCompanionSpec();  // flat: the stacked layout
-  FilmHistory straight_history(straight);
-  const CableSnapshot ss = testing::StraightCompanionSnapshot(1);
+  const SceneView straight = testing::StraightPairScene();  // flat: the stacked layout
+  History straight_history(straight, testing::StraightPolicy());
+  const Snapshot ss = testing::StraightPairSnapshot(1);
   straight_history.Add(ss);
+  const Live live = StraightLive();
   for (auto [w, h] : {std::pair{1920, 1080}, std::pair{1280, 720}, std::pair{640, 360}}) {
     const std::string size = std::to_string(w) + "x" + std::to_string(h);
-    ExpectNoTextOverlaps(MakeFrame(spec, history, s, MakeFrameLayout(spec, w, h), Colormap("viridis")),
-                         "film " + size);
-    ExpectNoTextOverlaps(MakeFrame(both, both_history, sc, MakeFrameLayout(both, w, h),
+    ExpectNoTextOverlaps(MakeFrame(scene, history, s, MakeFrameLayout(scene, history, w, h),
                                    Colormap("viridis")),
-                         "film with companion " + size);
+                         "film " + size);
+    ExpectNoTextOverlaps(MakeFrame(both, both_history, sc,
+                                   MakeFrameLayout(both, both_history, w, h), Colormap("viridis")),
+                         "film of two lines " + size);
     ExpectNoTextOverlaps(MakeFrame(straight, straight_history, ss,
-                                   MakeFrameLayout(straight, w, h), Colormap("viridis")),
-                         "flat film with companion " + size);
-    ExpectNoTextOverlaps(MakeLiveFrame(StraightLive(), w, h, Colormap("viridis")), "live " + size);
+                                   MakeFrameLayout(straight, straight_history, w, h),
+                                   Colormap("viridis")),
+                         "flat film of two lines " + size);
+    ExpectNoTextOverlaps(Draw(live, w, h, Colormap("viridis")), "live " + size);
   }
 }
 

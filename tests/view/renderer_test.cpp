@@ -12,7 +12,7 @@
 #include "encode/png_writer.h"
 #include "view/demo_cable.h"
 #include "view/frame_builder.h"
-#include "view/live_frame.h"
+#include "view/history.h"
 #include "view/shader_program.h"
 #include "test_scene.h"
 
@@ -32,12 +32,12 @@ class RendererTest : public ::testing::Test {
  protected:
   static constexpr int kW = 960, kH = 540;
   void SetUp() override {
-    spec_ = testing::StraightSpec();
+    scene_ = testing::StraightScene();
     snap_ = testing::StraightSnapshot(2.0);
-    FilmHistory history(spec_);
+    History history(scene_, testing::StraightPolicy());
     history.Add(snap_);
-    layout_ = MakeFrameLayout(spec_, kW, kH);
-    frame_ = MakeFrame(spec_, history, snap_, layout_, map_);
+    layout_ = MakeFrameLayout(scene_, history, kW, kH);
+    frame_ = MakeFrame(scene_, history, snap_, layout_, map_);
     RenderOptions options;
     options.width = kW;
     options.height = kH;
@@ -48,8 +48,8 @@ class RendererTest : public ::testing::Test {
   const std::uint8_t* Pixel(float x, float y) const {
     return image_.at(static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
   }
-  FilmSpec spec_;
-  CableSnapshot snap_;
+  SceneView scene_;
+  Snapshot snap_;
   FrameLayout layout_;
   Colormap map_{"viridis"};
   Frame frame_;
@@ -74,7 +74,7 @@ TEST_F(RendererTest, CableColourIsTheMapAtTheLinkTension) {
   for (int j = 0; j < kLinks; ++j) {
     if (j == 4 || j == 5 || j == 0 || j == kLinks - 1) continue;  // weight, anchor, moving end
     const Vec2f p = layout_.cable.ToPixel(j + 0.5, 0);
-    const Rgba want = map_.Map(snap_.tension[j], 0, kTensionMax);
+    const Rgba want = map_.Map(snap_.lines[0].tension[j], 0, kTensionMax);
     EXPECT_LE(ColorDistance(Pixel(p.x, p.y), want), 2) << "link " << j;
   }
 }
@@ -104,7 +104,7 @@ TEST_F(RendererTest, TensionCurveAtTheRightHeight) {
   const Rgba current = Theme::Dark().current;
   for (int j : {2, 7, 13, 17}) {
     const double mid = j + 0.5;
-    const Vec2f want = layout_.tension.ToPixel(mid, snap_.tension[j] / 1000);
+    const Vec2f want = layout_.tension.ToPixel(mid, snap_.lines[0].tension[j] / 1000);
     const int x = static_cast<int>(std::floor(want.x));
     double sum = 0, weight = 0;
     for (int y = static_cast<int>(layout_.tension.rect.y0); y < layout_.tension.rect.y1; ++y) {
@@ -133,15 +133,15 @@ TEST_F(RendererTest, TextIsDrawn) {
 // may differ by more; a real change (a moved curve, a missing label, another colour) changes
 // far more. Set CABLEFILM_UPDATE_GOLDEN=1 to rewrite the golden file.
 TEST(RendererGolden, TinyDemoFrame) {
-  const FilmSpec spec = MakeDemoSpec(20);
-  FilmHistory history(spec);
-  CableSnapshot snap;
+  const SceneView scene = MakeDemoScene();
+  History history(scene, MakeDemoPolicy(20));
+  Snapshot snap;
   for (int i = 0; i <= 150; ++i) {
-    snap = MakeDemoSnapshot(spec, i / 10.0);
+    snap = MakeDemoSnapshot(scene, i / 10.0);
     history.Add(snap);
   }
-  const FrameLayout layout = MakeFrameLayout(spec, 320, 180);
-  const Frame frame = MakeFrame(spec, history, snap, layout, Colormap("viridis"));
+  const FrameLayout layout = MakeFrameLayout(scene, history, 320, 180);
+  const Frame frame = MakeFrame(scene, history, snap, layout, Colormap("viridis"));
   RenderOptions options;
   options.width = 320;
   options.height = 180;
@@ -171,81 +171,81 @@ TEST(RendererGolden, TinyDemoFrame) {
   }
 }
 
-// ---- Companion cable ------------------------------------------------------------------------
+// ---- A second line (the compare film's inextensible run) ------------------------------------
 
-// The straight scene with its companion 1.5 m above the main cable (about 50 px at 960x540,
-// far beyond both cables' rims). At the middle of each companion link, away from the weight
-// marker and the ends, the companion's coloured line is 2 px wide: the pixel holding the line's
-// centre is within 0.5 px of it, so fully covered (coverage = clamp(w/2 + 0.5 - d) = 1) and
-// shows the map at the companion's tension, up to the 8-bit rounding of the vertex colour and
-// of the framebuffer (sRGB values written as is): 2/255, as for the main cable.
-TEST(RendererCompanion, CompanionColourIsTheMapAtItsLinkTension) {
+// The straight scene with its second line 1.5 m above the first (about 50 px at 960x540, far
+// beyond both lines' rims). At the middle of each of its links, away from the weight marker
+// and the ends, its coloured line is 2 px wide: the pixel holding the line's centre is within
+// 0.5 px of it, so fully covered (coverage = clamp(w/2 + 0.5 - d) = 1) and shows the map at
+// its tension, up to the 8-bit rounding of the vertex colour and of the framebuffer (sRGB
+// values written as is): 2/255, as for the first line.
+TEST(RendererSecondLine, ItsColourIsTheMapAtItsLinkTension) {
   constexpr int kW = 960, kH = 540;
-  const FilmSpec spec = testing::StraightCompanionSpec();
-  const CableSnapshot snap = testing::StraightCompanionSnapshot(2.0);
-  FilmHistory history(spec);
+  const SceneView scene = testing::StraightPairScene();
+  const Snapshot snap = testing::StraightPairSnapshot(2.0);
+  History history(scene, testing::StraightPolicy());
   history.Add(snap);
-  const FrameLayout layout = MakeFrameLayout(spec, kW, kH);
-  ASSERT_GE(layout.companion_width, 2.0f);
+  const FrameLayout layout = MakeFrameLayout(scene, history, kW, kH);
+  ASSERT_GE(layout.overlay_width, 2.0f);
   const Colormap map("viridis");
   RenderOptions options;
   options.width = kW;
   options.height = kH;
-  const Image image = Renderer(options).Draw(MakeFrame(spec, history, snap, layout, map));
-  WritePng(testing::OutputDir("renderer") + "/straight_companion_960x540.png", image);
-  const float apart = layout.cable.ToPixel(0, 0).y - layout.cable.ToPixel(0, testing::kCompanionY).y;
+  const Image image = Renderer(options).Draw(MakeFrame(scene, history, snap, layout, map));
+  WritePng(testing::OutputDir("renderer") + "/straight_two_lines_960x540.png", image);
+  const float apart =
+      layout.cable.ToPixel(0, 0).y - layout.cable.ToPixel(0, testing::kSecondY).y;
   ASSERT_GT(apart, 10 * layout.cable_width);
   int checked = 0;
   for (int j = 1; j < kLinks - 1; ++j) {
-    if (j == 4 || j == 5) continue;  // the companion's weight marker at station 5
-    const Vec2f p = layout.cable.ToPixel(j + 0.5, testing::kCompanionY);
+    if (j == 4 || j == 5) continue;  // the second line's weight marker at station 5
+    const Vec2f p = layout.cable.ToPixel(j + 0.5, testing::kSecondY);
     const std::uint8_t* px =
         image.at(static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)));
-    const Rgba want = map.Map(snap.ctension[j], 0, kTensionMax);
-    EXPECT_LE(ColorDistance(px, want), 2) << "companion link " << j;
-    // Not the main cable's colour of that link (the tensions run the other way).
+    const Rgba want = map.Map(snap.lines[1].tension[j], 0, kTensionMax);
+    EXPECT_LE(ColorDistance(px, want), 2) << "second line's link " << j;
+    // Not the first line's colour of that link (the tensions run the other way).
     if (std::abs(j - kLinks / 2) > 2) {
-      EXPECT_GT(ColorDistance(px, map.Map(snap.tension[j], 0, kTensionMax)), 20) << j;
+      EXPECT_GT(ColorDistance(px, map.Map(snap.lines[0].tension[j], 0, kTensionMax)), 20) << j;
     }
     ++checked;
   }
   EXPECT_EQ(checked, kLinks - 4);
 }
 
-// The demo cable with a companion (a lagged, lowered copy with larger tensions: a stand-in for
-// the inextensible model) at full size, for looking at: test_output/render/renderer/.
-TEST(RendererCompanion, DemoFrameWithCompanionAt1080p) {
-  FilmSpec spec = MakeDemoSpec(20);
-  spec.label = "elastic";
-  spec.companion_label = "inextensible";
-  spec.y_min -= 2;
-  auto companion = [&](double t) {
-    CableSnapshot s = MakeDemoSnapshot(spec, t);
-    const CableSnapshot c = MakeDemoSnapshot(spec, std::max(0.0, t - 0.35));
-    s.cx = c.x;
-    s.cy = c.y;
-    s.ctension = c.tension;
-    for (std::size_t j = 0; j < s.cy.size(); ++j) {
-      const double u = static_cast<double>(j) / (s.cy.size() - 1);
-      s.cy[j] -= 1.6 * 4 * u * (1 - u);  // sags a little more in the middle, same ends
+// The demo cable with a second line (a lagged, lowered copy with larger tensions: a stand-in
+// for the inextensible model) at full size, for looking at: test_output/render/renderer/.
+TEST(RendererSecondLine, DemoFrameWithTwoLinesAt1080p) {
+  SceneView scene = MakeDemoScene();
+  scene.lines[0].label = "elastic";
+  scene.lines.push_back(scene.lines[0]);
+  scene.lines[1].label = "inextensible";
+  for (double& T : scene.lines[1].reference.tension) T *= 1.12;
+  FixedPolicy policy = MakeDemoPolicy(20);
+  policy.box.y_min -= 2;
+  auto both = [&](double t) {
+    Snapshot s = MakeDemoSnapshot(scene, t);
+    LineSnapshot second = MakeDemoSnapshot(scene, std::max(0.0, t - 0.35)).lines[0];
+    for (std::size_t j = 0; j < second.y.size(); ++j) {
+      const double u = static_cast<double>(j) / (second.y.size() - 1);
+      second.y[j] -= 1.6 * 4 * u * (1 - u);  // sags a little more in the middle, same ends
     }
-    for (double& T : s.ctension) T *= 1.12;
+    for (double& T : second.tension) T *= 1.12;
+    s.lines.push_back(second);
     return s;
   };
-  spec.companion_equilibrium = MakeDemoSnapshot(spec, 0);
-  for (double& T : spec.companion_equilibrium.tension) T *= 1.12;
-  FilmHistory history(spec);
-  CableSnapshot snap;
+  History history(scene, policy);
+  Snapshot snap;
   for (int i = 0; i <= 126; ++i) {
-    snap = companion(i / 10.0);
+    snap = both(i / 10.0);
     history.Add(snap);
   }
-  const FrameLayout layout = MakeFrameLayout(spec, 1920, 1080);
+  const FrameLayout layout = MakeFrameLayout(scene, history, 1920, 1080);
   RenderOptions options;
   const Image image =
-      Renderer(options).Draw(MakeFrame(spec, history, snap, layout, Colormap("viridis")));
+      Renderer(options).Draw(MakeFrame(scene, history, snap, layout, Colormap("viridis")));
   ASSERT_EQ(image.width, 1920);
-  WritePng(testing::OutputDir("renderer") + "/demo_companion_1920x1080.png", image);
+  WritePng(testing::OutputDir("renderer") + "/demo_two_lines_1920x1080.png", image);
 }
 
 // ---- Live view -----------------------------------------------------------------------------
@@ -254,69 +254,45 @@ TEST(RendererCompanion, DemoFrameWithCompanionAt1080p) {
 // at 1280x720 for looking at: test_output/render/renderer/live_1280x720.png. The markers show
 // in their colour in their pixel column, and the cable in the map's colour of its tension.
 TEST(RendererLive, LiveFrameAt720p) {
-  const FilmSpec spec = MakeDemoSpec(600);
-  LiveFrameInput in;
-  in.title = spec.title;
-  in.status = "live \u00b7 1.0x";
-  in.arc_length = spec.arc_length;
-  in.section_boundaries = spec.section_boundaries;
-  in.section_names = spec.section_names;
-  in.weight_stations = spec.weight_stations;
-  in.moving_ends = spec.moving_ends;
-  in.fixed_ends = spec.fixed_ends;
-  in.equilibrium = spec.equilibrium;
-  in.tension_max = spec.tension_max;
-  in.x_min = spec.x_min;
-  in.x_max = spec.x_max;
-  in.y_min = spec.y_min;
-  in.y_max = spec.y_max;
-  in.window_start = 35;
-  in.window_end = 95;
-  in.link_min.assign(spec.arc_length.size() - 1, INFINITY);
-  in.link_max.assign(spec.arc_length.size() - 1, -INFINITY);
-  std::vector<Vec2f> path;
+  const SceneView scene = MakeDemoScene();
+  History history(scene, FollowingPolicy{60, {}});
+  const double markers[] = {52.5, 80};
+  const char* labels[] = {"speed 2.0x", "current 0.5 m/s"};
+  int marked = 0;
   for (int i = 0; i <= 95 * 30; ++i) {
-    in.snapshot = MakeDemoSnapshot(spec, i / 30.0);
-    const auto& T = in.snapshot.tension;
-    const auto peak = std::max_element(T.begin(), T.end());
-    for (std::size_t j = 0; j < T.size(); ++j) {
-      in.link_min[j] = std::min(in.link_min[j], T[j]);
-      in.link_max[j] = std::max(in.link_max[j], T[j]);
+    const double t = i / 30.0;
+    if (marked < 2 && t >= markers[marked]) {
+      history.AddMarker(markers[marked], labels[marked]);
+      ++marked;
     }
-    if (*peak > in.peak) {
-      in.peak = *peak;
-      in.peak_t = in.snapshot.t;
-      in.peak_link = static_cast<int>(peak - T.begin());
-    }
-    if (in.snapshot.t >= in.window_start) {
-      in.times.push_back(in.snapshot.t);
-      in.max_tension.push_back(*peak);
-    }
-    if (in.snapshot.t >= 85)
-      path.push_back({static_cast<float>(in.snapshot.x.back()), static_cast<float>(in.snapshot.y.back())});
+    history.Add(MakeDemoSnapshot(scene, t));
   }
-  in.end_paths = {path};
-  in.markers = {{52.5, "speed 2.0x"}, {80, "current 0.5 m/s"}};
+  const Snapshot& now = history.now();
   const Colormap map("viridis");
-  const FrameLayout layout = MakeLiveFrameLayout(in, 1280, 720);
+  const FrameLayout layout = MakeFrameLayout(scene, history, 1280, 720);
+  EXPECT_DOUBLE_EQ(layout.max_tension.x_lo, 35);
+  EXPECT_DOUBLE_EQ(layout.max_tension.x_hi, 95);
   RenderOptions options;
   options.width = 1280;
   options.height = 720;
-  const Image image = Renderer(options).Draw(MakeLiveFrame(in, 1280, 720, map));
+  const Image image = Renderer(options).Draw(
+      MakeFrame(scene, history, now, layout, map, Theme::Dark(), "live \u00b7 1.0x"));
   WritePng(testing::OutputDir("renderer") + "/live_1280x720.png", image);
   const Rgba event = Theme::Dark().event;
   const PixelRect& plot = layout.max_tension.rect;
-  for (double t : {52.5, 80.0}) {  // marker pixels (within anti-aliasing) in the line's column
+  for (double t : markers) {  // marker pixels (within anti-aliasing) in the line's column
     const int x = static_cast<int>(std::floor(layout.max_tension.PixelX(t)));
     int near = 0;
-    for (int y = static_cast<int>(plot.y0); y < plot.y1; ++y) near += ColorDistance(image.at(x, y), event) < 60;
+    for (int y = static_cast<int>(plot.y0); y < plot.y1; ++y)
+      near += ColorDistance(image.at(x, y), event) < 60;
     EXPECT_GT(near, 0.3 * plot.height()) << "marker at " << t << " s";
   }
+  const LineSnapshot& line = now.lines[0];
   for (int j : {10, 40, 50}) {  // the cable's centre pixels, away from its markers
-    const double xm = 0.5 * (in.snapshot.x[j] + in.snapshot.x[j + 1]);
-    const double ym = 0.5 * (in.snapshot.y[j] + in.snapshot.y[j + 1]);
+    const double xm = 0.5 * (line.x[j] + line.x[j + 1]);
+    const double ym = 0.5 * (line.y[j] + line.y[j + 1]);
     const Vec2f p = layout.cable.ToPixel(xm, ym);  // the line is 4 px wide: fully covered
-    const Rgba want = map.Map(in.snapshot.tension[j], in.tension_min, in.tension_max);
+    const Rgba want = map.Map(line.tension[j], history.range_min(), history.range_max());
     EXPECT_LE(ColorDistance(image.at(static_cast<int>(p.x), static_cast<int>(p.y)), want), 2)
         << "link " << j;
   }

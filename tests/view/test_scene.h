@@ -5,41 +5,47 @@
 #include <filesystem>
 #include <string>
 
-#include "view/frame.h"
+#include "view/history.h"
+#include "view/scene_view.h"
+#include "view/snapshot.h"
 
 namespace cablefilm::testing {
 
 constexpr int kLinks = 20;
 constexpr double kTensionMax = 40000;  // [N]
 
-inline FilmSpec StraightSpec() {
-  FilmSpec spec;
-  spec.title = "Straight test cable";
-  for (int j = 0; j <= kLinks; ++j) spec.arc_length.push_back(j);
-  spec.section_boundaries = {10};
-  spec.weight_stations = {5};
-  spec.fixed_ends = {0};
-  spec.moving_ends = {kLinks};
-  spec.duration = 10;
-  spec.tension_min = 0;
-  spec.tension_max = kTensionMax;
-  spec.x_min = 0;
-  spec.x_max = kLinks;
-  spec.y_min = -2;
-  spec.y_max = 2;
-  spec.equilibrium.t = 0;
+// One line; its reference 1 m below the cable (y = -1) at a quarter of the maximum.
+inline SceneView StraightScene() {
+  SceneView scene;
+  scene.title = "Straight test cable";
+  scene.lines.resize(1);
+  LineView& line = scene.lines[0];
+  for (int j = 0; j <= kLinks; ++j) line.arc_length.push_back(j);
+  line.section_boundaries = {10};
+  line.marks.weights = {5};
+  line.marks.fixed_ends = {0};
+  line.marks.moving_ends = {kLinks};
   for (int j = 0; j <= kLinks; ++j) {
-    spec.equilibrium.x.push_back(j);
-    spec.equilibrium.y.push_back(-1);
+    line.reference.x.push_back(j);
+    line.reference.y.push_back(-1);
   }
-  spec.equilibrium.tension.assign(kLinks, 0.25 * kTensionMax);
-  return spec;
+  line.reference.tension.assign(kLinks, 0.25 * kTensionMax);
+  return scene;
+}
+
+// The film's: 10 s, the colour range 0 to kTensionMax, the box x 0..20 m, y -2..2 m.
+inline FixedPolicy StraightPolicy() {
+  FixedPolicy policy;
+  policy.duration = 10;
+  policy.tension_min = 0;
+  policy.tension_max = kTensionMax;
+  policy.box = {0, kLinks, -2, 2};
+  return policy;
 }
 
 // Link j carries (j + 0.5) / kLinks of the maximum: colours sweep the whole map.
-inline CableSnapshot StraightSnapshot(double t) {
-  CableSnapshot s;
-  s.t = t;
+inline LineSnapshot StraightLine() {
+  LineSnapshot s;
   for (int j = 0; j <= kLinks; ++j) {
     s.x.push_back(j);
     s.y.push_back(0);
@@ -47,25 +53,35 @@ inline CableSnapshot StraightSnapshot(double t) {
   for (int j = 0; j < kLinks; ++j) s.tension.push_back((j + 0.5) / kLinks * kTensionMax);
   return s;
 }
-
-// The straight scene with a companion cable 1.5 m above the main one (y = 1.5), its tensions
-// running the other way: link j carries (kLinks - j - 0.5) / kLinks of the maximum.
-constexpr double kCompanionY = 1.5;  // [m]
-inline FilmSpec StraightCompanionSpec() {
-  FilmSpec spec = StraightSpec();
-  spec.label = "elastic";
-  spec.companion_label = "inextensible";
-  spec.companion_equilibrium = spec.equilibrium;
-  spec.companion_equilibrium.tension.assign(kLinks, 0.3 * kTensionMax);
-  return spec;
+inline Snapshot StraightSnapshot(double t) {
+  Snapshot s;
+  s.t = t;
+  s.lines = {StraightLine()};
+  return s;
 }
-inline CableSnapshot StraightCompanionSnapshot(double t) {
-  CableSnapshot s = StraightSnapshot(t);
+
+// The straight scene with a second line 1.5 m above the first (y = 1.5), its tensions running
+// the other way: link j carries (kLinks - j - 0.5) / kLinks of the maximum. The lines are
+// named "elastic" and "inextensible"; the second's reference tension is 0.3 of the maximum.
+constexpr double kSecondY = 1.5;  // [m]
+inline SceneView StraightPairScene() {
+  SceneView scene = StraightScene();
+  scene.lines[0].label = "elastic";
+  scene.lines.push_back(scene.lines[0]);
+  scene.lines[1].label = "inextensible";
+  scene.lines[1].reference.tension.assign(kLinks, 0.3 * kTensionMax);
+  return scene;
+}
+inline Snapshot StraightPairSnapshot(double t) {
+  Snapshot s = StraightSnapshot(t);
+  LineSnapshot second;
   for (int j = 0; j <= kLinks; ++j) {
-    s.cx.push_back(j);
-    s.cy.push_back(kCompanionY);
+    second.x.push_back(j);
+    second.y.push_back(kSecondY);
   }
-  for (int j = 0; j < kLinks; ++j) s.ctension.push_back((kLinks - j - 0.5) / kLinks * kTensionMax);
+  for (int j = 0; j < kLinks; ++j)
+    second.tension.push_back((kLinks - j - 0.5) / kLinks * kTensionMax);
+  s.lines.push_back(second);
   return s;
 }
 

@@ -1,0 +1,74 @@
+#pragma once
+// What a picture of a scene shows that stays fixed while it runs (a film, a live session): the
+// title, its lines (each with its stations' arc lengths, its sections, its marked stations and
+// its reference state), the reference's name, the seabed and whether waves draw a surface.
+// Plain data: the film pass and the live session build it (scene_view_builder.h), the history
+// and the frame builder read it. A scene of several lines is just `lines` of several (e.g. the
+// compare command's elastic and inextensible runs of one cable): the first is drawn in full,
+// every line after it as an overlay (thinner, on the same colour range, with its own curves in
+// the plots, named by its label).
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace cablefilm {
+
+// One line at one time. Positions by axis, so a line in space adds z without another case.
+struct LineState {
+  std::vector<double> x, y;     // station positions [m], s+1 (station 0 = start, s = end)
+  std::vector<double> z;        // [m], s+1; empty for a line in the x-y plane (the paper's)
+  std::vector<double> tension;  // link tensions [N], s (link j joins stations j and j+1)
+};
+
+struct StationMarks {            // stations drawn with a marker (indices into the line's)
+  std::vector<int> weights;      // suspended weights
+  std::vector<int> fixed_ends;   // prescribed ends that stay put
+  std::vector<int> moving_ends;  // driven ends: their path is drawn
+  std::vector<int> free_ends;    // free ends (a dangling or towed end)
+};
+
+struct LineView {
+  std::string label;                       // e.g. "elastic": names the line among several
+  std::vector<double> arc_length;          // unstretched arc length of each station [m], s+1
+  std::vector<double> section_boundaries;  // arc lengths where a section ends, interior [m]
+  // Name of each section (e.g. its material), section_boundaries.size() + 1, shown in the
+  // tension-along-the-cable plot; empty = unnamed.
+  std::vector<std::string> section_names;
+  StationMarks marks;
+  // The initial state (t = 0), drawn dashed: empty = none; its tensions may be empty alone.
+  LineState reference;
+};
+
+// The name of the reference when a run starts from the straight chord at rest (not an
+// equilibrium: its tensions are those of the evenly stretched chord, zero when slack).
+inline constexpr char kStraightStateLabel[] = "initial state (straight)";
+
+struct SeaView {
+  bool seabed = false;   // a flat seabed, drawn in the cable panel
+  double seabed_y = 0;   // its elevation [m]
+  bool surface = false;  // waves: each snapshot carries the water surface
+};
+
+struct SceneView {
+  std::string title;
+  std::vector<LineView> lines;  // at least one
+  // What every line's `reference` is, as the legends name it: "equilibrium" (the static
+  // equilibrium) or, for a run started from the straight chord, kStraightStateLabel.
+  std::string reference_label = "equilibrium";
+  SeaView sea;
+};
+
+// Throws Error (naming the line and the sizes or the value) unless the scene has a line and
+// every line at least 2 stations, a name per section or none, marked stations among its
+// stations, and a reference that is empty or of its sizes (tensions alone may be empty).
+void CheckSceneView(const SceneView& scene);
+
+// How legends and messages name line i: its label, else "line <i + 1>".
+std::string LineName(const SceneView& scene, std::size_t line);
+// The reference's name: reference_label, else "equilibrium".
+std::string ReferenceName(const SceneView& scene);
+// Every line after the first has a label: the legends then name each curve after its line
+// (with a row of their own), else they use short names on one row.
+bool OverlaysNamed(const SceneView& scene);
+
+}  // namespace cablefilm

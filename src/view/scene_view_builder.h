@@ -1,0 +1,26 @@
+#pragma once
+// The scene view (scene_view.h) of a scene and its model, for the film (a line a run) and for
+// the live view (its one line) alike.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "core/model.h"
+#include "core/vec.h"
+#include "scene/scene_def.h"
+#include "view/scene_view.h"
+
+namespace cablefilm {
+
+// The line of `model` (of `scene`) named `label`: its stations' arc lengths, its sections (each
+// named by its material when every one has a name), its weights, its ends by role (fixed,
+// moving, free), and its initial state: positions `initial_x` [m], tensions `initial_tension`
+// [N].
+LineView MakeLineView(const SceneDef& scene, const Model& model, const Points& initial_x,
+                      const Eigen::VectorXd& initial_tension, std::string label);
+
+// The scene's title, `lines`, the reference's name (the scene's initial state: an equilibrium
+// or the straight chord), and from `model` the seabed and whether waves draw a surface.
+SceneView MakeSceneView(const SceneDef& scene, const Model& model, std::vector<LineView> lines);
+
+}  // namespace cablefilm
