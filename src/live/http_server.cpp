@@ -152,15 +152,32 @@ std::string Base64(const std::string& bytes) {
 }
 
 // ---- Sockets ----------------------------------------------------------------------------------
+// Reads and drops what the peer has sent so far (a megabyte at most a call); false once it has
+// hung up or the socket failed.
+bool DropInput(int fd) {
+  char buf[16384];
+  for (int i = 0; i < 64; ++i) {
+    const ssize_t n = ::recv(fd, buf, sizeof buf, MSG_DONTWAIT);
+    if (n > 0) continue;
+    return n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR);
+  }
+  return true;
+}
+
 // Sends all of `data` before `deadline`; false if the peer is gone or takes nothing meanwhile.
-bool SendAll(int fd, const char* data, std::size_t size, Clock::time_point deadline) {
+// With `drain`, what the peer sends meanwhile is read and dropped: a peer blocked sending reads
+// nothing, so it could otherwise never take what is sent to it.
+bool SendAll(int fd, const char* data, std::size_t size, Clock::time_point deadline,
+             bool drain = false) {
   while (size > 0) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
     if (left.count() <= 0) return false;
-    pollfd p{fd, POLLOUT, 0};
+    pollfd p{fd, static_cast<short>(POLLOUT | (drain ? POLLIN : 0)), 0};
     const int r = ::poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
     if (r < 0 && errno != EINTR) return false;
     if (r <= 0) continue;
+    if (drain && (p.revents & POLLIN) && !DropInput(fd)) drain = false;  // hung up: send only
+    if (!(p.revents & (POLLOUT | POLLERR | POLLHUP))) continue;
     const ssize_t n = ::send(fd, data, size, MSG_NOSIGNAL | MSG_DONTWAIT);
     if (n < 0) {
       if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) continue;
@@ -205,11 +222,45 @@ enum : int { kWsContinuation = 0, kWsText = 1, kWsBinary = 2, kWsClose = 8, kWsP
 
 struct WsViewer {
   int fd = -1;
-  std::mutex write_mu;  // one frame at a time on the socket: the sender's and the reader's
-  std::atomic<bool> closed{false};
+  std::timed_mutex write_mu;  // one frame at a time on the socket: the sender's and the reader's
+  // No frame begins once a close is under way (`closing`), and none at all once the close is
+  // sent, a write failed (a frame cut short leaves nothing after it readable) or the reader is
+  // done (`closed`, which also stops the sender).
+  std::atomic<bool> closing{false}, closed{false};
 
   bool Write(int opcode, const char* data, std::size_t size) {
-    if (closed) return false;
+    std::lock_guard<std::timed_mutex> lock(write_mu);
+    if (closing || closed) return false;
+    return WriteLocked(opcode, data, size, false);
+  }
+  bool Write(int opcode, const std::string& s) { return Write(opcode, s.data(), s.size()); }
+
+  // The close frame, whole and last (RFC 6455 5.5.1): after the frame the sender may be
+  // writing, never within it, and with no frame after it. What the peer sends meanwhile is read
+  // and dropped: a peer still sending (a refused 1 GiB message) may read nothing until its send
+  // is taken, and the frame being written to it could not end.
+  void Close(int code, const std::string& reason) {
+    closing = true;
+    std::unique_lock<std::timed_mutex> lock(write_mu, std::defer_lock);
+    const auto deadline = Clock::now() + kWriteTimeout + std::chrono::seconds(1);
+    bool peer_sends = true;
+    while (!lock.try_lock_for(std::chrono::milliseconds(10))) {
+      if (Clock::now() >= deadline) {  // not reached: the sender's writes have a deadline
+        closed = true;
+        return;
+      }
+      if (peer_sends) peer_sends = DropInput(fd);
+    }
+    if (!closed) {
+      std::string payload{static_cast<char>(code >> 8), static_cast<char>(code & 0xff)};
+      payload += reason.substr(0, 120);
+      WriteLocked(kWsClose, payload.data(), payload.size(), true);
+    }
+    closed = true;
+  }
+
+ private:
+  bool WriteLocked(int opcode, const char* data, std::size_t size, bool drain) {
     char head[10];
     std::size_t n = 2;
     head[0] = static_cast<char>(0x80 | opcode);
@@ -225,20 +276,12 @@ struct WsViewer {
       for (int i = 0; i < 8; ++i) head[2 + i] = static_cast<char>((std::uint64_t{size} >> (56 - 8 * i)) & 0xff);
       n = 10;
     }
-    std::lock_guard<std::mutex> lock(write_mu);
     const auto deadline = Clock::now() + kWriteTimeout;
-    if (!SendAll(fd, head, n, deadline) || !SendAll(fd, data, size, deadline)) {
+    if (!SendAll(fd, head, n, deadline, drain) || !SendAll(fd, data, size, deadline, drain)) {
       closed = true;
       return false;
     }
     return true;
-  }
-  bool Write(int opcode, const std::string& s) { return Write(opcode, s.data(), s.size()); }
-  void Close(int code, const std::string& reason) {
-    std::string payload{static_cast<char>(code >> 8), static_cast<char>(code & 0xff)};
-    payload += reason.substr(0, 120);
-    Write(kWsClose, payload);
-    closed = true;
   }
 };
 
@@ -637,9 +680,9 @@ struct LiveServer::Impl {
   void WsSend(WsViewer* v) {
     std::uint64_t last = 0, state_sent = ~0ull;
     auto next_state = Clock::now();
-    while (!v->closed && !session.stopped() && !stopping) {
+    while (!v->closed && !v->closing && !session.stopped() && !stopping) {
       const auto frame = session.WaitFrame(last, std::chrono::milliseconds(100));
-      if (v->closed) break;
+      if (v->closed || v->closing) break;
       if (frame) {
         last = frame->number;
         if (!v->Write(kWsBinary, frame->message)) break;
@@ -654,7 +697,6 @@ struct LiveServer::Impl {
         next_state = now + kStateEvery;
       }
     }
-    v->closed = true;
   }
 
   void WsRead(WsViewer* v) {
@@ -665,15 +707,15 @@ struct LiveServer::Impl {
     while (!v->closed && !session.stopped() && !stopping) {
       pollfd p{v->fd, POLLIN, 0};
       const int r = ::poll(&p, 1, 200);
-      if (r < 0 && errno != EINTR) break;
+      if (r < 0 && errno != EINTR) return;
       const auto now = Clock::now();
       if (r > 0) {
         char buf[4096];
         const ssize_t n = ::recv(v->fd, buf, sizeof buf, MSG_DONTWAIT);
-        if (n == 0) break;  // the viewer hung up
+        if (n == 0) return;  // the viewer hung up: nobody to say goodbye to
         if (n < 0) {
           if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) continue;
-          break;
+          return;
         }
         in.append(buf, static_cast<std::size_t>(n));
         last_heard = now;

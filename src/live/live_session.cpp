@@ -125,6 +125,10 @@ void LiveSession::Stop() {
     std::lock_guard<std::mutex> lock(mu_);
     if (stop_ && !sim_thread_.joinable() && !render_thread_.joinable()) return;
     stop_ = true;
+    if (record_wanted_) {  // a film under way ends at the state of now
+      record_end_step_ = steps_;
+      record_end_t_ = t_;
+    }
   }
   sim_cv_.notify_all();
   render_cv_.notify_all();
@@ -252,6 +256,7 @@ void LiveSession::SimulationLoop() {
       ++state_version_;
       continue;
     }
+    ++steps_;  // one more frame of a film (live_session.h)
     RecordLocked();
     progress_.emplace_back(Seconds(start_, Clock::now()), sim_.t());
     while (progress_.size() > 2 && progress_.back().first - progress_.front().first > 2.0)
@@ -309,12 +314,14 @@ void LiveSession::RenderLoop() {
   }
   std::unique_ptr<VideoEncoder> video;
   Recording current;
-  // The film's clock [s]: it advances by the simulated time between the frames drawn, divided
-  // by the speed it ran at, so the film plays at the pace it was watched (at 1x, the simulated
-  // time it covers). The render thread draws only the newest state and may skip some: the
-  // frames it missed are made up by repeating the one drawn, rather than the film running
-  // short (a timestamped film would need a variable frame rate the encoder does not write).
-  double film_clock = 0, film_last_t = 0;
+  // A film has one frame per simulation step it covers (speed/fps of simulated time each, so it
+  // plays at the pace it was watched: at 1x, the simulated time), from the step of its first
+  // picture to the one at which it was stopped; each frame shows the newest picture drawn at
+  // or before its step. Its length thus follows the steps, not the render thread: however many
+  // states this thread skips (it draws only the newest) or however late it draws the last, no
+  // frame is missing, only pictures are repeated.
+  std::uint64_t film_first_step = 0;
+  std::shared_ptr<const Image> film_picture;  // the newest picture drawn for the film
   std::uint64_t drawn_input = 0, drawn_view = ~0ull, number = 0;
   // Drawn into, then published as the newest still (for /snapshot.png); the still it replaces
   // becomes the next canvas unless a reader still holds it: no copy of the image per frame.
@@ -322,10 +329,19 @@ void LiveSession::RenderLoop() {
   auto finish_recording = [&]() {
     if (!video) return;
     try {
+      std::uint64_t end_step;
+      {
+        std::lock_guard<std::mutex> lock(mu_);
+        end_step = record_end_step_;
+        current.t_end = record_end_t_;
+      }
+      // The steps after the last picture, up to the stop, show it.
+      if (film_picture)
+        while (video->frames_added() <= static_cast<long>(end_step) - static_cast<long>(film_first_step))
+          video->AddFrame(*film_picture);
       video->Finish();
       std::lock_guard<std::mutex> lock(mu_);
       current.frames = video->frames_added();
-      current.t_end = film_last_t;
       recordings_.push_back(current);
       std::printf("live: wrote %s (%ld frames)\n", current.path.c_str(), current.frames);
       std::fflush(stdout);
@@ -334,6 +350,7 @@ void LiveSession::RenderLoop() {
       record_error_ = e.what();
     }
     video.reset();
+    film_picture.reset();
     std::lock_guard<std::mutex> lock(mu_);
     recording_ = false;
     ++state_version_;
@@ -344,8 +361,7 @@ void LiveSession::RenderLoop() {
   }();
   while (true) {
     std::string status, colormap;
-    std::uint64_t seq = 0, fresh = 0;
-    double speed = 1;
+    std::uint64_t seq = 0, fresh = 0, step = 0;
     bool want_record = false;
     {
       std::unique_lock<std::mutex> lock(mu_);
@@ -368,7 +384,7 @@ void LiveSession::RenderLoop() {
       status = StatusLocked();
       colormap = colormap_;
       seq = seq_applied_;
-      speed = speed_;
+      step = steps_;
     }
     if (want_record && !video) {
       char stamp[32];
@@ -387,8 +403,7 @@ void LiveSession::RenderLoop() {
         vo.fps = options_.fps;
         vo.threads = 1;  // the machine's cores belong to the simulation and the viewers
         video = std::make_unique<VideoEncoder>(current.path, vo);
-        film_clock = 0;
-        film_last_t = t;
+        film_first_step = step;
         std::lock_guard<std::mutex> lock(mu_);
         recording_ = true;
         record_error_.clear();
@@ -425,12 +440,12 @@ void LiveSession::RenderLoop() {
       }
       out->message += bytes;
       if (video) {
-        const double dt = shown.t - film_last_t;  // < 0 after a restart
-        // At most a second per frame: a speed changed between two frames cannot flood it.
-        if (dt > 0) film_clock += std::min(dt / speed, 1.0);
-        film_last_t = shown.t;
-        const long due = 1 + std::lround(film_clock * options_.fps);
-        while (video->frames_added() < due) video->AddFrame(*canvas);
+        // The steps since the last picture show it (the first picture starts the film); this
+        // one shows from its own step on. A redraw with no step between (a view control) has
+        // its frame written already.
+        const long at = static_cast<long>(step) - static_cast<long>(film_first_step);
+        while (video->frames_added() < at) video->AddFrame(film_picture ? *film_picture : *canvas);
+        if (video->frames_added() == at) video->AddFrame(*canvas);
       }
       std::shared_ptr<const Image> previous;
       const double now = Seconds(start_, Clock::now());
@@ -442,6 +457,7 @@ void LiveSession::RenderLoop() {
         if (fresh > fresh_done_) fresh_done_ = fresh;
         previous = std::move(image_);
         image_ = std::move(canvas);
+        if (video) film_picture = image_;
         frame_times_.push_back(now);
         while (!frame_times_.empty() && frame_times_.front() < now - 1.0) frame_times_.pop_front();
         render_error_.clear();
@@ -470,6 +486,7 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
   } catch (const ControlError& e) {
     return {400, Json{{"error", e.what()}}.dump(-1, ' ', true, Json::error_handler_t::replace)};
   }
+  std::string reply;
   {
     std::lock_guard<std::mutex> lock(mu_);
     if (stop_) return {503, Json{{"error", "the live view is stopping"}}.dump()};
@@ -505,15 +522,22 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     if (r.reset_range) history_.ResetRange();  // first: a range or lock sent with it wins
     if (r.tension_range) history_.SetRange((*r.tension_range)[0], (*r.tension_range)[1]);
     if (r.lock_range) history_.LockRange(*r.lock_range);
-    if (r.record) record_wanted_ = *r.record;
+    if (r.record) {
+      if (record_wanted_ && !*r.record) {  // the film ends at the state this stop sees
+        record_end_step_ = steps_;
+        record_end_t_ = t_;
+      }
+      record_wanted_ = *r.record;
+    }
     if (r.colormap || r.tension_range || r.lock_range || r.reset_range || r.pause || r.speed)
       ++view_version_;
     ++state_version_;
+    // The state this control made, not a later one: a film stopped here ends at its t.
+    reply = StateJsonLocked();
   }
   sim_cv_.notify_all();
   render_cv_.notify_all();
-  std::lock_guard<std::mutex> lock(mu_);
-  return {200, StateJsonLocked()};
+  return {200, reply};
 }
 
 std::string LiveSession::StateJson() const {

@@ -164,6 +164,10 @@ class LiveSession {
 
   // Recording (lock held).
   bool record_wanted_ = false, recording_ = false;
+  // Simulation steps taken: each is speed/fps of simulated time and one frame of a film. A film
+  // ends at the step (and time) at which it was asked to stop, whatever the render thread drew.
+  std::uint64_t steps_ = 0, record_end_step_ = 0;
+  double record_end_t_ = 0;
   std::vector<Recording> recordings_;
   std::string record_error_;
 

@@ -94,7 +94,7 @@ class Server:
         return self.proc.returncode
 
 
-def connect(port, timeout=5):
+def connect(port, timeout=20):  # generous: a loaded machine may be slow to answer
     s = socket.create_connection(('127.0.0.1', port), timeout=timeout)
     s.setsockopt(socket.SOL_SOCKET, socket.SO_LINGER, struct.pack('ii', 1, 0))  # no TIME_WAIT pile
     return s
@@ -129,13 +129,15 @@ def send_http(port, raw):
 
 
 def handshake(port, key=None):
+    """A WebSocket upgraded: (socket, the bytes after the answer's headers, which may already
+    hold the server's first frame or part of it)."""
     sock = connect(port)
     key = key or base64.b64encode(b'cablefilm-fuzzer').decode()
     sock.sendall((f'GET /ws HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nUpgrade: websocket\r\n'
                   f'Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\n'
                   f'Sec-WebSocket-Version: 13\r\nOrigin: http://127.0.0.1:{port}\r\n\r\n').encode())
     data = b''
-    sock.settimeout(10)
+    sock.settimeout(30)
     while b'\r\n\r\n' not in data:
         chunk = sock.recv(65536)
         if not chunk:
@@ -144,7 +146,7 @@ def handshake(port, key=None):
     status = data.split(b'\r\n', 1)[0]
     if b' 101 ' not in status + b' ':
         raise Broke('the WebSocket handshake answered %r' % status)
-    return sock
+    return sock, data.partition(b'\r\n\r\n')[2]
 
 
 def announces_more(raw):
@@ -171,7 +173,7 @@ def send_ws(port, raw, srv=None, flood_limit=0):
     """Sends `raw` after a handshake. A frame announcing more than is sent is then fed filler,
     up to `flood_limit` bytes, while the server takes it: the server must refuse it by its
     header, so its memory must not grow with what is sent (checked before hanging up)."""
-    sock = handshake(port)
+    sock, _ = handshake(port)
     try:
         sock.sendall(raw)
         if flood_limit and announces_more(raw):
@@ -330,26 +332,44 @@ def healthy(srv, rss_limit_kib):
         json.loads(body)
     except ValueError:
         raise Broke('GET /state gave no JSON: %r' % body[:80])
-    sock = handshake(srv.port)
-    sock.settimeout(10)
-    got, deadline = b'', time.time() + 10
-    while time.time() < deadline and not (len(got) >= 2 and got[0] == 0x82):
-        chunk = sock.recv(65536)
-        if not chunk:
-            break
-        got += chunk
-        while len(got) >= 2 and got[0] != 0x82:  # skip state messages to the first binary frame
+    # The server's frames in order from the first byte after the handshake (which may have come
+    # with it), state messages skipped whole, to its first binary frame. 30 s: a loaded machine.
+    sock, got = handshake(srv.port)
+    deadline = time.time() + 30
+    binary = False
+    while not binary:
+        while len(got) >= 2:
+            if got[0] & 0xf0 != 0x80 or got[0] & 0x0f not in (1, 2, 8, 9, 10) or got[1] & 0x80:
+                sock.close()
+                raise Broke('the WebSocket sent a frame header it should not: %r' % got[:12])
             n, off = got[1] & 0x7f, 2
             if n == 126:
+                if len(got) < 4:
+                    break
                 n, off = struct.unpack('>H', got[2:4])[0], 4
             elif n == 127:
+                if len(got) < 10:
+                    break
                 n, off = struct.unpack('>Q', got[2:10])[0], 10
+            if got[0] == 0x82:
+                binary = True
+                break
             if len(got) < off + n:
                 break
             got = got[off + n:]
+        if binary or time.time() >= deadline:
+            break
+        sock.settimeout(max(0.1, deadline - time.time()))
+        try:
+            chunk = sock.recv(65536)
+        except socket.timeout:
+            break
+        if not chunk:
+            break
+        got += chunk
     sock.close()
-    if not (len(got) >= 2 and got[0] == 0x82):
-        raise Broke('a WebSocket viewer got no frame within 10 s')
+    if not binary:
+        raise Broke('a WebSocket viewer got no frame within 30 s')
     rss = srv.rss_kib()
     if rss > rss_limit_kib:
         raise Broke(f'the server holds {rss} KiB (limit {rss_limit_kib} KiB)')
