@@ -21,32 +21,32 @@ EndMotion EndMotion::Free(Vec start) {
   return m;
 }
 
-EndMotion EndMotion::Trochoid(Vec rest, double a, double b, double c, double d,
-                              double omega, double nu) {
+EndMotion EndMotion::Trochoid(Vec rest, Vec cos_amplitudes, Vec sin_amplitudes, double omega,
+                              double nu) {
   EndMotion m;
   m.kind_ = EndKind::kTrochoid;
   m.rest_ = rest;
-  m.a_ = a;
-  m.b_ = b;
-  m.c_ = c;
-  m.d_ = d;
+  m.cos_ = cos_amplitudes;
+  m.sin_ = sin_amplitudes;
   m.omega_ = omega;
   m.nu_ = nu;
   return m;
 }
 
-EndMotion EndMotion::Table(Vec rest, const std::vector<Eigen::Vector3d>& rows) {
-  if (rows.size() < 2) throw Error("end motion table needs at least two rows");
+EndMotion EndMotion::Table(Vec rest, const std::vector<double>& times,
+                           const std::vector<Vec>& offsets) {
+  if (times.size() < 2 || offsets.size() != times.size())
+    throw Error("end motion table needs at least two rows, each a time and an offset");
   EndMotion m;
   m.kind_ = EndKind::kTable;
   m.rest_ = rest;
-  const size_t n = rows.size();
+  const size_t n = times.size();
   m.knot_t_.resize(n);
   m.knot_p_.resize(n);
   m.knot_m_.assign(n, Vec::Zero());
   for (size_t i = 0; i < n; ++i) {
-    m.knot_t_[i] = rows[i][0];
-    m.knot_p_[i] = rows[i].tail<2>();
+    m.knot_t_[i] = times[i];
+    m.knot_p_[i] = offsets[i];
     if (i > 0 && !(m.knot_t_[i] > m.knot_t_[i - 1]))
       throw Error("end motion table: times must increase strictly (row " + std::to_string(i + 1) +
                   ")");
@@ -99,8 +99,8 @@ Vec EndMotion::EvaluateTrochoid(double t, int order) const {
                           nu_ * nu_ * (1.0 - nu_ * t) * e};
   // Orbit P(t) = (a cos wt + b sin wt, c cos wt + d sin wt) and its derivatives.
   const double co = std::cos(omega_ * t), si = std::sin(omega_ * t);
-  const Vec p0(a_ * co + b_ * si, c_ * co + d_ * si);
-  const Vec p1 = omega_ * Vec(-a_ * si + b_ * co, -c_ * si + d_ * co);
+  const Vec p0 = cos_ * co + sin_ * si;
+  const Vec p1 = omega_ * (sin_ * co - cos_ * si);
   const Vec p2 = -omega_ * omega_ * p0;
   if (order == 0) return rest_ + ramp[0] * p0;
   if (order == 1) return ramp[1] * p0 + ramp[0] * p1;
@@ -127,8 +127,8 @@ Vec EndMotion::Evaluate(double t, int order, const SmoothSchedule& scale,
     g[1] = s.rate * ramp[0] + s.value * ramp[1];
     g[0] = s.value * ramp[0];
     const double co = std::cos(omega_ * tau), si = std::sin(omega_ * tau);
-    p[0] = Vec(a_ * co + b_ * si, c_ * co + d_ * si);
-    p[1] = omega_ * Vec(-a_ * si + b_ * co, -c_ * si + d_ * co);
+    p[0] = cos_ * co + sin_ * si;
+    p[1] = omega_ * (sin_ * co - cos_ * si);
     p[2] = -omega_ * omega_ * p[0];
   } else {
     p[0] = EvaluateTable(tau, 0) - rest_;

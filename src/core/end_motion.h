@@ -20,13 +20,15 @@ class EndMotion {
  public:
   static EndMotion Fixed(Vec rest);
   static EndMotion Free(Vec start);
-  // Eq. (3): x = x0 + R(t)(a cos wt + b sin wt), y = y0 + R(t)(c cos wt + d sin wt),
-  // R(t) = 1 - (1 + nu t) exp(-nu t).
-  static EndMotion Trochoid(Vec rest, double a, double b, double c, double d, double omega,
+  // Eq. (3): x = x0 + R(t)(a cos wt + b sin wt), y = y0 + R(t)(c cos wt + d sin wt), and in 3D
+  // z = z0 + R(t)(e cos wt + f sin wt), R(t) = 1 - (1 + nu t) exp(-nu t): `cos_amplitudes` =
+  // (a, c, e), `sin_amplitudes` = (b, d, f) [m].
+  static EndMotion Trochoid(Vec rest, Vec cos_amplitudes, Vec sin_amplitudes, double omega,
                             double nu);
-  // Rows (t [s], dx [m], dy [m]), t strictly increasing, at least two rows. Offsets are added
-  // to `rest`; before the first row and after the last the end holds still at that row.
-  static EndMotion Table(Vec rest, const std::vector<Eigen::Vector3d>& rows);
+  // Rows: times t [s], strictly increasing, at least two, and offsets [m] added to `rest`;
+  // before the first row and after the last the end holds still at that row.
+  static EndMotion Table(Vec rest, const std::vector<double>& times,
+                         const std::vector<Vec>& offsets);
 
   EndKind kind() const { return kind_; }
   bool prescribed() const { return kind_ != EndKind::kFree; }
@@ -56,7 +58,7 @@ class EndMotion {
   EndKind kind_ = EndKind::kFixed;
   Vec rest_ = Vec::Zero();  // x_s^0, y_s^0 [m]
   // Trochoid, eq. (3).
-  double a_ = 0, b_ = 0, c_ = 0, d_ = 0;  // [m]
+  Vec cos_ = Vec::Zero(), sin_ = Vec::Zero();  // (a, c, e), (b, d, f) [m]
   double omega_ = 0;                      // omega_s [rad/s]
   double nu_ = 0;                         // nu_s [1/s]
   // Table: knots and the spline's second derivatives at the knots.

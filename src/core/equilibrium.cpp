@@ -23,7 +23,8 @@ Points HangingGuess(const Model& m) {
   const bool from_start = m.ends.start.prescribed();
   const Vec top = from_start ? m.ends.start.Position(0) : m.ends.end.Position(0);
   const double total = m.line.net_weight.sum();
-  const Vec dir(0.0, total >= 0 ? -1.0 : 1.0);
+  Vec dir = Vec::Zero();  // down, or up for a buoyant line
+  dir[kVertical] = total >= 0 ? -1.0 : 1.0;
   Points x(kDim, m.stations());
   const int s = m.line.links;
   double carried = 0, along = 0;  // weight below the link [N], stretched length so far [m]
@@ -43,13 +44,29 @@ Points HangingGuess(const Model& m) {
   return x;
 }
 
-// Stations on the catenary of length `length` through a and b, at arc length proportional to
-// the unstretched arc length; `sag_up` flips it for a buoyant cable.
-Points CatenaryGuess(const Model& m, const Vec& a,
-                               const Vec& b, double length, bool sag_up) {
-  const double sx = b.x() >= a.x() ? 1.0 : -1.0, sy = sag_up ? -1.0 : 1.0;
-  const double h = std::abs(b.x() - a.x());
-  const double v = sy * (b.y() - a.y());
+// The horizontal distance from a to b [m] and the horizontal unit vector from a towards b (along
+// x when b is straight above or below a).
+double HorizontalSpan(const Vec& a, const Vec& b, Vec* direction) {
+  const Vec d = HorizontalPart(b - a);
+  const double span = d.norm();
+  *direction = span > 0 ? Vec(d / span) : Vec(1.0, 0.0, 0.0);
+  return span;
+}
+
+Vec Up() {
+  Vec up = Vec::Zero();
+  up[kVertical] = 1.0;
+  return up;
+}
+
+// Stations on the catenary of length `length` through a and b, in the vertical plane through
+// them, at arc length proportional to the unstretched arc length; `sag_up` flips it for a
+// buoyant cable.
+Points CatenaryGuess(const Model& m, const Vec& a, const Vec& b, double length, bool sag_up) {
+  Vec e;  // horizontal, from a towards b
+  const double h = HorizontalSpan(a, b, &e);
+  const double sy = sag_up ? -1.0 : 1.0;
+  const double v = sy * (b[kVertical] - a[kVertical]);
   const double S = std::sqrt(length * length - v * v);
   // Solve sinh(z)/z = S/h for z = h/(2a) by bisection (the left side increases with z).
   double lo = 1e-9, hi = 700.0;
@@ -66,7 +83,7 @@ Points CatenaryGuess(const Model& m, const Vec& a,
     const double arc = m.line.arc_length[j] / m.line.total_length() * length;
     const double xl = xm + c * std::asinh(arc / c + s0);
     const double yl = c * (std::cosh((xl - xm) / c) - c0);
-    x.col(j) = a + Vec(sx * xl, sy * yl);
+    x.col(j) = a + xl * e + (sy * yl) * Up();
   }
   x.col(0) = a;
   x.col(m.line.links) = b;
@@ -141,8 +158,8 @@ class StaticProblem {
           if (landed_[j] == (p > 0)) continue;
           const double k = m_.line.seabed_stiffness[j];
           const double sign = landed_[j] ? 1.0 : -1.0;  // add the spring, or take it away
-          system_.diag[j - j0](1, 1) += sign * k;
-          system_.rhs[j - j0].y() += sign * k * p;
+          system_.diag[j - j0](kVertical, kVertical) += sign * k;
+          system_.rhs[j - j0][kVertical] += sign * k * p;
         }
       }
       if (!system_.Solve()) return false;
@@ -152,7 +169,7 @@ class StaticProblem {
       if (!m_.env.seabed.present) break;
       bool changed = false;
       for (int j = j0; j <= j1; ++j) {
-        const bool lands = ws_.geometry.elevation[j] + dx(1, j) < m_.env.seabed.y;
+        const bool lands = ws_.geometry.elevation[j] + dx(kVertical, j) < m_.env.seabed.y;
         changed |= lands != landed_[j];
         landed_[j] = lands;
       }
@@ -215,12 +232,15 @@ void CurvilinearUpdate(const Model& m, const Points& x, const Points& dx,
       y.col(j + 1) = y.col(j) + d + delta;
       continue;
     }
-    const Vec t = d / L, n(-t.y(), t.x());
+    const Vec t = d / L;
     const double stretched = std::max(L + t.dot(delta), 1e-3 * L);  // new length [m]
-    const double turn = n.dot(delta) / L;                          // rotation [rad]
-    const double c = std::cos(turn), s = std::sin(turn);
-    y.col(j + 1) = y.col(j) + stretched * Vec(c * t.x() - s * t.y(),
-                                                          s * t.x() + c * t.y());
+    // Turned towards the part of delta across it, by that part over L (a rotation about
+    // t x delta, Rodrigues' formula for a vector at right angles to the axis).
+    const Vec across = delta - t * t.dot(delta);
+    const double size = across.norm();
+    const double turn = size / L;  // rotation [rad]
+    const Vec turned = size > 0 ? Vec(std::cos(turn) * t + std::sin(turn) * (across / size)) : t;
+    y.col(j + 1) = y.col(j) + stretched * turned;
   }
   const Vec closure = y.col(m.line.links) - (x.col(m.line.links) + dx.col(m.line.links));
   if (m.ends.end.prescribed()) {
@@ -376,7 +396,7 @@ namespace {
 Points OntoSeabed(const Model& m, Points x) {
   if (!m.env.seabed.present) return x;
   for (int j = m.first_free(); j <= m.last_free(); ++j)
-    x(1, j) = std::max(x(1, j), m.env.seabed.y);
+    x(kVertical, j) = std::max(x(kVertical, j), m.env.seabed.y);
   return x;
 }
 
@@ -389,11 +409,13 @@ Points OntoSeabed(const Model& m, Points x) {
 // would pile up on it).
 bool GroundedGuess(const Model& m, double length, Points& x) {
   const double bed = m.env.seabed.y;
-  const bool start_low = m.ends.start.Position(0).y() <= m.ends.end.Position(0).y();
+  const bool start_low =
+      m.ends.start.Position(0)[kVertical] <= m.ends.end.Position(0)[kVertical];
   const Vec A = start_low ? m.ends.start.Position(0) : m.ends.end.Position(0);
   const Vec B = start_low ? m.ends.end.Position(0) : m.ends.start.Position(0);
-  const double drop = A.y() - bed, rise = B.y() - bed;  // [m], both >= 0
-  const double span = std::abs(B.x() - A.x()), sx = B.x() >= A.x() ? 1.0 : -1.0;
+  const double drop = A[kVertical] - bed, rise = B[kVertical] - bed;  // [m], both >= 0
+  Vec e;  // horizontal, from A towards B: the plane of the guess
+  const double span = HorizontalSpan(A, B, &e);
   if (!(rise > 0) || !(span > 0) || drop < 0) return false;
   // The catenary from a touchdown `run` before B (horizontally) up to B: its parameter c
   // (rise = c (cosh(run / c) - 1), bisection: the rise falls as c grows) and arc length.
@@ -423,16 +445,19 @@ bool GroundedGuess(const Model& m, double length, Points& x) {
   for (int j = 0; j <= m.line.links; ++j) {
     const double f = m.line.arc_length[j] / m.line.total_length();
     double sigma = (start_low ? f : 1.0 - f) * length;  // path length from A
-    Vec p;
+    Vec p = A;  // along e at the height `up` [m] above the bed
+    double up = 0;
     if (sigma <= drop) {
-      p = Vec(A.x(), A.y() - sigma);
+      up = drop - sigma;
     } else if ((sigma -= drop) <= grounded) {
-      p = Vec(A.x() + sx * sigma, bed);
+      p += sigma * e;
     } else {
       sigma -= grounded;  // arc length along the catenary from the touchdown
       const double u = std::asinh(sigma / c);
-      p = Vec(A.x() + sx * (grounded + c * u), bed + c * (std::cosh(u) - 1.0));
+      p += (grounded + c * u) * e;
+      up = c * (std::cosh(u) - 1.0);
     }
+    p[kVertical] = bed + up;
     x.col(j) = p;
   }
   x.col(0) = m.ends.start.Position(0);
@@ -452,7 +477,8 @@ Points FreeGuess(const Model& m) {
   // links are taut (a guess at exactly the rest length sits on the slack switch).
   const double tension_guess = std::abs(w) * length;
   const double stretched = length * (1.0 + std::max(1e-6, tension_guess / MinAxialStiffness(m)));
-  const double h = std::abs(b.x() - a.x());
+  Vec e;
+  const double h = HorizontalSpan(a, b, &e);
   if (chord >= stretched || h < 1e-6 * length) return StraightChord(m);
   Points x = CatenaryGuess(m, a, b, stretched, w < 0);
   if (m.env.seabed.present && w > 0 && x.row(1).minCoeff() < m.env.seabed.y) GroundedGuess(m, stretched, x);

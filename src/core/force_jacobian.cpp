@@ -35,7 +35,7 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
   const bool waves = m.has_waves();  // then the drag is in AddWaveForceJacobian
   const int j0 = m.first_free(), j1 = m.last_free();
   auto free = [&](int j) { return j >= j0 && j <= j1; };
-  Vec current(CurrentAt(m, water, 0.0), 0.0);
+  Vec current = CurrentAt(m, water, 0.0);
   for (int k = 0; k < m.line.links; ++k) {
     const double L = g.length[k];
     if (!(L > 0)) continue;
@@ -59,27 +59,27 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
       b.fa_dd += c * (kv * tt + t * ((Mat::Identity() - tt) * dv / L).transpose());
     }
     b.fb_dd = -b.fa_dd;
-    // Normal drag D n / 2 on both stations, D = -f^D q |q|, q = n . (mean velocity - c).
+    // Normal drag on both stations, -(f^D / 2) |q| q, q = P w the part across the link of the
+    // relative velocity w = mean velocity - c: through the orientation (P) and the velocity.
     if (m.line.drag_factor[k] != 0 && !waves) {
-      const Vec n(-t.y(), t.x());
-      const Mat dn = NormalDerivative(t, L);
       const double ymid = profile ? 0.5 * (g.elevation[k] + g.elevation[k + 1]) : 0.0;
-      if (profile) current.x() = CurrentAt(m, water, ymid);
+      if (profile) current = CurrentAt(m, water, ymid);
       const Vec w = 0.5 * (v.col(k) + v.col(k + 1)) - current;
-      const double q = w.dot(n);
+      const Vec q = w - t * t.dot(w);
       const double f = m.line.drag_factor[k];
-      const Mat H =
-          -0.5 * f * (2.0 * std::abs(q) * n * (w.transpose() * dn) + q * std::abs(q) * dn);
+      const Mat G = NormalDragDerivative(q);  // d(|q| q) / dq
+      const Mat H = (-0.5 * f) * G * NormalPartDerivative(t, L, w, q);
       b.fa_dd += H;
       b.fb_dd += H;
-      b.f_dv = -0.5 * f * std::abs(q) * n * n.transpose();  // d(Dn/2)/dv_k, = d/dv_{k+1}
-      // A current profile: w = mean velocity - c((y_k + y_{k+1})/2) e_x, so the force on
-      // either station depends on y_k and y_{k+1} alike through dw/dy = -c'/2 e_x:
-      // d(Dn/2)/dy_i = 2 f_dv (-c'/2 e_x) = -c' f_dv e_x. Stored negated, in the y column.
-      const double slope = profile ? CurrentSlope(m, water, ymid) : 0.0;
-      if (slope != 0) {
+      // d/dv_k (= d/dv_{k+1}): through w = mean velocity, dq/dv = P / 2.
+      b.f_dv = (-0.25 * f) * G * (Mat::Identity() - tt);
+      // A current profile: w = mean velocity - c((y_k + y_{k+1})/2), so the force on either
+      // station depends on y_k and y_{k+1} alike through dw/dy = -c'/2: dF/dy_i = 2 f_dv
+      // (-c'/2) = -f_dv c'. Stored negated, in the y column.
+      const Vec slope = profile ? CurrentSlope(m, water, ymid) : Vec::Zero();
+      if (!slope.isZero()) {
         Mat C = Mat::Zero();
-        C.col(1) = slope * b.f_dv.col(0);
+        C.col(kVertical) = b.f_dv * slope;
         const int a = k, c = k + 1;
         if (free(a)) system.diag[a - j0] += C;
         if (free(a) && free(c)) system.upper[a - j0] += C;
@@ -95,38 +95,49 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
   if ((kv != 0 || profile) && !waves) {
     for (int j : m.line.weight_stations) {
       if (!free(j)) continue;
-      if (profile) current.x() = CurrentAt(m, water, g.elevation[j]);
+      if (profile) current = CurrentAt(m, water, g.elevation[j]);
       const Vec rel = v.col(j) - current;
       const double u = rel.norm();
       if (u == 0) continue;
       const Vec f = m.line.prism_drag.col(j);
-      const Mat dfdv =
-          -(f.asDiagonal() * (u * Mat::Identity() + rel * rel.transpose() / u));
+      const Mat dfdv = -(f.asDiagonal() * (u * Mat::Identity() + rel * rel.transpose() / u));
       system.diag[j - j0] -= kv * dfdv;
-      // dF/dy_j = dfdv (-c' e_x); stored negated in the y column.
-      const double slope = profile ? CurrentSlope(m, water, g.elevation[j]) : 0.0;
-      if (slope != 0) system.diag[j - j0].col(1) += slope * dfdv.col(0);
+      // dF/dy_j = dfdv (-c'); stored negated in the y column.
+      const Vec slope = profile ? CurrentSlope(m, water, g.elevation[j]) : Vec::Zero();
+      if (!slope.isZero()) system.diag[j - j0].col(kVertical) += dfdv * slope;
     }
   }
   if (m.env.seabed.present) {
     // The seabed on station j below it (forces.cpp): N(p, v_y) with p = y_b - y_j, so
-    // dN/dy = -dN/dp; friction F_x = -mu N tanh(u), u = v_x / v_f. Negated derivatives:
+    // dN/dy = -dN/dp; friction F_h = -mu N g(v_h), g = tanh(|v_h| / v_f) v_h / |v_h|. Negated
+    // derivatives:
     //   -dF_y/dy = dN/dp,  -dF_y/dv_y = -dN/dv_y,
-    //   -dF_x/dy = -mu tanh(u) dN/dp,  -dF_x/dv_y = mu tanh(u) dN/dv_y,
-    //   -dF_x/dv_x = mu N sech^2(u) / v_f.
+    //   -dF_h/dy = -mu g dN/dp,  -dF_h/dv_y = mu g dN/dv_y,
+    //   -dF_h/dv_h = mu N dg/dv_h,
+    //   dg/dv_h = sech^2(s) / v_f e e^T + tanh(s) / |v_h| (I_h - e e^T),  e = v_h / |v_h|,
+    //   s = |v_h| / v_f (1 / v_f I_h at rest), I_h the identity on the horizontal axes.
     const SeabedSpec& bed = m.env.seabed;
     for (int j = j0; j <= j1; ++j) {
       const double p = bed.y - g.elevation[j];
       if (!(p > 0)) continue;
-      const SeabedReaction r = SeabedNormal(m, j, p, v(1, j));
+      const SeabedReaction r = SeabedNormal(m, j, p, v(kVertical, j));
       if (!(r.N > 0)) continue;
       Mat B = Mat::Zero();
-      B(1, 1) = r.dN_dp - kv * r.dN_dvy;
+      B(kVertical, kVertical) = r.dN_dp - kv * r.dN_dvy;
       if (bed.friction > 0) {
-        const double u = v(0, j) / bed.friction_velocity;
-        const double th = FrictionShape(u), sech2 = 1.0 - th * th;
-        B(0, 1) = -bed.friction * th * B(1, 1);
-        B(0, 0) = kv * bed.friction * r.N * sech2 / bed.friction_velocity;
+        const Vec gj = SlidingDirection(v.col(j), bed);
+        B.col(kVertical) -= bed.friction * B(kVertical, kVertical) * gj;
+        Mat I_h = Mat::Identity();
+        I_h(kVertical, kVertical) = 0;
+        const Vec vh = HorizontalPart(v.col(j));
+        const double speed = vh.norm(), vf = bed.friction_velocity;
+        Mat dg = I_h / vf;
+        if (speed > 0) {
+          const Vec e = vh / speed;
+          const double th = FrictionShape(speed / vf), sech2 = 1.0 - th * th;
+          dg = (sech2 / vf) * e * e.transpose() + (th / speed) * (I_h - e * e.transpose());
+        }
+        B += (kv * bed.friction * r.N) * dg;
       }
       system.diag[j - j0] += B;
     }
@@ -137,19 +148,17 @@ void AddInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
                         double ka, BlockTridiagonal& system) {
   const int j0 = m.first_free(), j1 = m.last_free();
   for (int j = j0; j <= j1; ++j) system.diag[j - j0] += ka * StationInertia(m, g, j);
-  // d/dd of (e/2) n n^T a_j for each station j of link k: (e/2)[(n.a) dn + n (a^T dn)].
+  // d/dd of (e/2) (I - t t^T) a_j for each station j of link k: (e/2) d(P a)/dd.
   for (int k = 0; k < m.line.links; ++k) {
     if (m.line.virtual_mass[k] == 0 || !(g.length[k] > 0)) continue;
     const Vec t = g.tangent.col(k);
-    const Vec n(-t.y(), t.x());
-    const Mat dn = NormalDerivative(t, g.length[k]);
     // With waves the added mass is that of the link's wet fraction (wave_forces.h).
     const double e = 0.5 * m.line.virtual_mass[k] *
                      (m.has_waves() ? 0.5 * (g.sea.wet[k] + g.sea.wet[k + 1]) : 1.0);
     for (int j : {k, k + 1}) {
       if (j < j0 || j > j1) continue;
       const Vec aj = a.col(j);
-      const Mat D = e * (n.dot(aj) * dn + n * (aj.transpose() * dn));
+      const Mat D = e * NormalPartDerivative(t, g.length[k], aj, aj - t * t.dot(aj));
       // d = x_{k+1} - x_k: +D with respect to x_{k+1}, -D with respect to x_k.
       if (k >= j0) (j == k ? system.diag[j - j0] : system.lower[j - j0]) -= D;
       if (k + 1 <= j1) (j == k ? system.upper[j - j0] : system.diag[j - j0]) += D;

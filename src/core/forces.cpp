@@ -33,11 +33,15 @@ void ComputeGeometry(const Model& m, const Water& water, double t, const Points&
   if (m.has_waves()) ComputeSea(m, water, t, x, g.sea);
 }
 
-Mat NormalDerivative(const Vec& t, double L) {
+Mat NormalPartDerivative(const Vec& t, double L, const Vec& w, const Vec& w_n) {
   const Mat P = Mat::Identity() - t * t.transpose();
-  Mat dn;
-  dn << -P(1, 0), -P(1, 1), P(0, 0), P(0, 1);
-  return dn / L;
+  return -(t.dot(w) * P + t * w_n.transpose()) / L;
+}
+
+Mat NormalDragDerivative(const Vec& w_n) {
+  const double speed = w_n.norm();
+  if (!(speed > 0)) return Mat::Zero();
+  return speed * Mat::Identity() + w_n * (w_n.transpose() / speed);
 }
 
 void ComputeHookeTensions(const Model& m, const LinkGeometry& g, Eigen::VectorXd& tension) {
@@ -81,18 +85,16 @@ SeabedReaction SeabedNormal(const Model& m, int j, double p, double vy) {
 
 namespace {
 
-// The seabed on the stations below it: N up, -mu N tanh(v_x / v_f) along x (force_jacobian.cpp
-// differentiates the same expressions).
-void AddSeabedForces(const Model& m, const LinkGeometry& g, const Points& v,
-                     Points& force) {
+// The seabed on the stations below it: N up, -mu N tanh(|v_h| / v_f) v_h / |v_h| against the
+// sliding velocity v_h (force_jacobian.cpp differentiates the same expressions).
+void AddSeabedForces(const Model& m, const LinkGeometry& g, const Points& v, Points& force) {
   const SeabedSpec& bed = m.env.seabed;
   for (int j = 0; j <= m.line.links; ++j) {
     const double p = bed.y - g.elevation[j];  // penetration [m]
     if (!(p > 0)) continue;
-    const double N = SeabedNormal(m, j, p, v(1, j)).N;
-    force(1, j) += N;
-    if (bed.friction > 0)
-      force(0, j) -= bed.friction * N * FrictionShape(v(0, j) / bed.friction_velocity);
+    const double N = SeabedNormal(m, j, p, v(kVertical, j)).N;
+    force(kVertical, j) += N;
+    if (bed.friction > 0) force.col(j) -= bed.friction * N * SlidingDirection(v.col(j), bed);
   }
 }
 
@@ -106,24 +108,25 @@ void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g
     return;
   }
   const bool profile = !m.env.current_profile.empty();
-  Vec current(CurrentAt(m, water, 0.0), 0.0);  // c, or c(y) at the link's midpoint
-  // Normal drag on each link, half to each of its stations: D n / 2 with n = (-sin, cos).
+  Vec current = CurrentAt(m, water, 0.0);  // c, or c(y) at the link's midpoint
+  // Normal drag on each link, half to each of its stations: D = -f^D |q| q with q the normal
+  // part of the relative velocity (eq. (1)'s D n, n the normal in the plane of the motion).
   for (int j = 0; j < m.line.links; ++j) {
     if (m.line.drag_factor[j] == 0) continue;
-    if (profile) current.x() = CurrentAt(m, water, 0.5 * (g.elevation[j] + g.elevation[j + 1]));
-    const Vec n(-g.tangent(1, j), g.tangent(0, j));
+    if (profile) current = CurrentAt(m, water, 0.5 * (g.elevation[j] + g.elevation[j + 1]));
+    const Vec t = g.tangent.col(j);
     const Vec rel = 0.5 * (v.col(j) + v.col(j + 1)) - current;  // relative velocity
-    const double q = rel.dot(n);                        // q_{j+1/2} [m/s]
-    const double D = -m.line.drag_factor[j] * q * std::abs(q);  // D_{j+1/2} [N]
-    force.col(j) += 0.5 * D * n;
-    force.col(j + 1) += 0.5 * D * n;
+    const Vec q = rel - t * t.dot(rel);                          // q_{j+1/2} [m/s]
+    const Vec D = (-0.5 * m.line.drag_factor[j] * q.norm()) * q;  // D_{j+1/2} / 2 [N]
+    force.col(j) += D;
+    force.col(j + 1) += D;
   }
   for (int j = 0; j <= m.line.links; ++j) {
-    force(1, j) -= m.line.net_weight[j];  // W_j + W*_j
+    force(kVertical, j) -= m.line.net_weight[j];  // W_j + W*_j
   }
-  // Prism drag X*, Y*: quadratic in the relative speed u_j, each axis with its own factor.
+  // Prism drag X*, Y*, Z*: quadratic in the relative speed u_j, each axis with its own factor.
   for (int j : m.line.weight_stations) {
-    if (profile) current.x() = CurrentAt(m, water, g.elevation[j]);
+    if (profile) current = CurrentAt(m, water, g.elevation[j]);
     const Vec rel = v.col(j) - current;
     const double u = rel.norm();
     force.col(j) -= u * m.line.prism_drag.col(j).cwiseProduct(rel);
@@ -145,14 +148,17 @@ void ComputeStationForces(const Model& m, const Water& water, const LinkGeometry
 Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
   if (m.has_waves()) return WaveStationInertia(m, g, j);
   // m_j + m^x_j on the diagonal, plus half the entrained-fluid mass e of each adjoining link
-  // acting along that link's normal n: e n n^T / 2 gives the I, J and -K terms of eq. (1).
-  Mat M = Vec(m.line.cable_mass[j] + m.line.prism_mass(0, j),
-                                      m.line.cable_mass[j] + m.line.prism_mass(1, j))
-                          .asDiagonal();
+  // across it, e (I - t t^T) / 2: the I, J and -K terms of eq. (1) (I - t t^T = n n^T in the
+  // plane).
+  Vec diagonal = m.line.prism_mass.col(j);
+  diagonal.array() += m.line.cable_mass[j];
+  Mat M = diagonal.asDiagonal();
   for (int k = j - 1; k <= j; ++k) {
     if (k < 0 || k >= m.line.links) continue;
-    const Vec n(-g.tangent(1, k), g.tangent(0, k));
-    M.noalias() += (0.5 * m.line.virtual_mass[k]) * n * n.transpose();
+    const Vec t = g.tangent.col(k);
+    const double e = 0.5 * m.line.virtual_mass[k];
+    M -= (e * t) * t.transpose();
+    M.diagonal().array() += e;
   }
   return M;
 }
@@ -164,7 +170,7 @@ void ComputeAccelerations(const Model& m, const Inputs& in, const Water& water, 
   ComputeStationForces(m, water, ws.geometry, ws.tension, v, ws.force);
   for (int j = m.first_free(); j <= m.last_free(); ++j) {
     const Mat M = StationInertia(m, ws.geometry, j);
-    a.col(j) = M.inverse() * ws.force.col(j);  // closed-form 2x2 inverse
+    a.col(j) = M.inverse() * ws.force.col(j);  // closed-form inverse of a fixed-size matrix
   }
   if (m.ends.start.prescribed()) a.col(0) = EndAcceleration(m, in, 0, t);
   if (m.ends.end.prescribed()) a.col(m.line.links) = EndAcceleration(m, in, m.line.links, t);
@@ -190,7 +196,7 @@ double ElasticEnergy(const Model& m, const LinkGeometry& g) {
 
 double PotentialEnergy(const Model& m, const Points& x) {
   double e = 0;
-  for (int j = 0; j <= m.line.links; ++j) e += m.line.net_weight[j] * x(1, j);
+  for (int j = 0; j <= m.line.links; ++j) e += m.line.net_weight[j] * x(kVertical, j);
   if (m.env.seabed.present) e += SeabedEnergy(m, x);
   if (m.has_waves()) e += SurfaceBuoyancyEnergy(m, x);
   return e;
@@ -200,7 +206,7 @@ double SeabedEnergy(const Model& m, const Points& x) {
   if (!m.env.seabed.present) return 0.0;
   double e = 0;
   for (int j = 0; j <= m.line.links; ++j) {
-    const double p = m.env.seabed.y - x(1, j);
+    const double p = m.env.seabed.y - x(kVertical, j);
     if (p > 0) e += 0.5 * m.line.seabed_stiffness[j] * p * p;
   }
   return e;

@@ -45,11 +45,14 @@ void ComputeGeometry(const Points& x, LinkGeometry& g);
 void ComputeGeometry(const Model& m, const Water& water, double t, const Points& x,
                      LinkGeometry& g);
 
-// Eq. (2), with a compressed link slack: T = max(0, sigma E (L/l - 1)).
-// d n / d d [1/m] for the unit normal n = R d / |d| of a link d = x_{k+1} - x_k (R: a quarter
-// turn), t = d / |d| its tangent and L = |d| its length [m]: the Jacobians' normal drag terms.
-Mat NormalDerivative(const Vec& t, double L);
+// d w_n / d d for w_n = (I - t t^T) w, the part of a vector w across a link d = x_{k+1} - x_k
+// of direction t = d / |d| and length L = |d| [m] (w held fixed): -((t . w) P + t w_n^T) / L,
+// P = I - t t^T. The Jacobians' normal drag and added mass terms.
+Mat NormalPartDerivative(const Vec& t, double L, const Vec& w, const Vec& w_n);
+// d(|u| u) / du at u = w_n: |u| I + u u^T / |u| (0 at u = 0): the quadratic drag's.
+Mat NormalDragDerivative(const Vec& w_n);
 
+// Eq. (2), with a compressed link slack: T = max(0, sigma E (L/l - 1)).
 void ComputeHookeTensions(const Model& m, const LinkGeometry& g, Eigen::VectorXd& tension);
 
 // Internal axial damping (Kelvin-Voigt, not in the paper): a taut link's tension gains
@@ -71,12 +74,23 @@ inline double FrictionShape(double u) {
   return std::copysign((1.0 - e) / (1.0 + e), u);
 }
 
+// The seabed's normal reaction N on station j at penetration p > 0 with vertical velocity vy
+// (model.h, SeabedSpec), and its derivatives; N = 0 with no derivative where it would pull.
 struct SeabedReaction {
   double N = 0;       // [N]
   double dN_dp = 0;   // [N/m]
   double dN_dvy = 0;  // [N s/m]
 };
 SeabedReaction SeabedNormal(const Model& m, int j, double p, double vy);
+
+// The friction's direction and size without mu N: tanh(|v_h| / v_f) v_h / |v_h| for the
+// sliding velocity v_h = (v_x, 0, v_z) of a station on the bed (0 when it is at rest).
+inline Vec SlidingDirection(const Vec& v, const SeabedSpec& bed) {
+  const Vec vh = HorizontalPart(v);
+  const double speed = vh.norm();  // [m/s]
+  if (!(speed > 0)) return Vec::Zero();
+  return (FrictionShape(speed / bed.friction_velocity) / speed) * vh;
+}
 
 // force_j = T_{j+1/2} t_{j+1/2} - T_{j-1/2} t_{j-1/2} + (X_j, Y_j), for every station.
 // v: station velocities; the current (of `water`) enters through the relative velocity.
@@ -90,7 +104,7 @@ void ComputeStationForces(const Model& m, const Water& water, const LinkGeometry
 void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g,
                        const Points& v, Points& force);
 
-// The inertia tensor of eq. (1) at station j: [[I_j, -K_j], [-K_j, J_j]] [kg]. With waves the
+// The inertia tensor of eq. (1) at station j ([[I_j, -K_j], [-K_j, J_j]] in the plane) [kg]. With waves the
 // added masses are those of the wet part (g.sea.wet; all wet if g.sea is empty).
 Mat StationInertia(const Model& m, const LinkGeometry& g, int j);
 

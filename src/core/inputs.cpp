@@ -5,11 +5,15 @@
 
 namespace cablefilm {
 
+double HeadingOf(const Vec& direction) { return std::atan2(direction[2], direction[0]); }
+
 Inputs SceneInputs(const Model& m) {
   Inputs in;
   in.current = SmoothSchedule(m.env.current);
+  in.current_heading = SmoothSchedule(HeadingOf(m.env.current_direction));
   in.wave_height = SmoothSchedule(m.env.wave.spec.height);
   in.wave_period = SmoothSchedule(m.has_waves() ? m.env.wave.spec.period : 0.0);
+  in.wave_heading = SmoothSchedule(m.env.wave.spec.heading);
   return in;
 }
 
@@ -17,6 +21,7 @@ Water SceneWater(const Model& m, double current_scale) {
   Water w;
   w.current = m.env.current;
   w.current_scale = current_scale;
+  w.current_direction = m.env.current_direction;
   w.wave = m.env.wave;
   return w;
 }
@@ -24,38 +29,50 @@ Water SceneWater(const Model& m, double current_scale) {
 void UpdateWater(const Model& m, const Inputs& in, double t, Water* water) {
   water->current = in.current.ValueAt(t);
   water->current_scale = in.current_scale;
+  // The scene's direction exactly while the heading is the scene's (no round trip through an
+  // angle), else the heading's.
+  const double heading = in.current_heading.ValueAt(t);
+  water->current_direction = in.current_heading.constant() &&
+                                     heading == HeadingOf(m.env.current_direction)
+                                 ? m.env.current_direction
+                                 : Horizontal(heading);
   if (!m.has_waves()) return;
   Wave& wave = water->wave;
+  const WaveSpec& scene = m.env.wave.spec;
   const bool as_scene = in.wave_height.constant() && in.wave_period.constant() &&
-                        in.wave_height.target() == m.env.wave.spec.height &&
-                        in.wave_period.target() == m.env.wave.spec.period;
-  if (as_scene && wave.spec.height == m.env.wave.spec.height &&
-      wave.spec.period == m.env.wave.spec.period)
+                        in.wave_heading.constant() && in.wave_height.target() == scene.height &&
+                        in.wave_period.target() == scene.period &&
+                        in.wave_heading.target() == scene.heading;
+  if (as_scene && wave.spec.height == scene.height && wave.spec.period == scene.period &&
+      wave.spec.heading == scene.heading)
     return;  // the scene's wave, as it was (its phase too)
-  const double period = in.wave_period.ValueAt(t);
-  if (period != wave.spec.period) {
-    // theta = k x - omega t + phase kept at wave_phase_x: the new phase takes up the old theta.
-    const double x = in.wave_phase_x;
-    const double theta = wave.k * x - wave.omega * t + wave.spec.phase;
+  const double period = in.wave_period.ValueAt(t), heading_now = in.wave_heading.ValueAt(t);
+  if (period != wave.spec.period || heading_now != wave.spec.heading) {
+    // theta = k e . x - omega t + phase kept at the phase point: the new phase takes up the old
+    // theta there.
+    const Vec& p = in.wave_phase_point;
+    const double theta = wave.k * wave.direction.dot(p) - wave.omega * t + wave.spec.phase;
     WaveSpec spec = wave.spec;
     spec.period = period;
+    spec.heading = heading_now;
     wave = MakeWave(spec, m.env.gravity);
-    wave.spec.phase = std::remainder(theta - wave.k * x + wave.omega * t, 2.0 * M_PI);
+    wave.spec.phase =
+        std::remainder(theta - wave.k * wave.direction.dot(p) + wave.omega * t, 2.0 * M_PI);
   }
   // At most Miche's breaking height at this period: a higher wave would break.
   wave.spec.height = std::min(in.wave_height.ValueAt(t), wave.breaking_height());
   wave.amplitude = 0.5 * wave.spec.height;
 }
 
-double CurrentAt(const Model& m, const Water& w, double y) {
+Vec CurrentAt(const Model& m, const Water& w, double y) {
   const CurrentProfile& p = m.env.current_profile;
   const double c = w.current * w.current_scale;
-  return p.empty() ? c : c + p.At(y, w.current_scale);
+  return (p.empty() ? c : c + p.At(y, w.current_scale)) * w.current_direction;
 }
 
-double CurrentSlope(const Model& m, const Water& w, double y) {
+Vec CurrentSlope(const Model& m, const Water& w, double y) {
   const CurrentProfile& p = m.env.current_profile;
-  return p.empty() ? 0.0 : p.Slope(y, w.current_scale);
+  return (p.empty() ? 0.0 : p.Slope(y, w.current_scale)) * w.current_direction;
 }
 
 bool HasCurrent(const Model& m, const Water& w) {

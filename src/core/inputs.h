@@ -12,11 +12,14 @@
 namespace cablefilm {
 
 struct Inputs {
-  SmoothSchedule current{0};       // c [m/s], the uniform part along +x (a profile adds to it)
+  SmoothSchedule current{0};       // c [m/s], the uniform part (a profile adds to it)
+  SmoothSchedule current_heading{0};  // the current's direction [rad] from +x towards +z
   double current_scale = 1;        // times the whole current, uniform and profile
   SmoothSchedule wave_height{0};   // H [m] (with waves)
   SmoothSchedule wave_period{0};   // T [s] (with waves)
-  double wave_phase_x = 0;         // x [m] where a change of period keeps the wave's phase
+  SmoothSchedule wave_heading{0};  // the direction the waves travel [rad] from +x towards +z
+  Vec wave_phase_point = Vec::Zero();  // where a change of period or heading keeps the wave's
+                                       // phase [m]
   SmoothSchedule end_scale{1};     // the driven ends' orbit (or table) amplitude, times the scene's
   SmoothSchedule end_clock{1};     // the rate of their motion's clock, times real time
   const CancelFlag* stop = nullptr;  // polled within a step (each substep, each Newton step):
@@ -26,24 +29,29 @@ struct Inputs {
 // The model's own inputs: its current and waves, its ends as the scene moves them.
 Inputs SceneInputs(const Model& m);
 
+// The heading [rad] from +x towards +z of a horizontal direction.
+double HeadingOf(const Vec& direction);
+
 // The water over a step: the current and the waves it holds.
 struct Water {
   double current = 0;        // c [m/s], uniform part
   double current_scale = 1;  // times the whole current (Inputs::current_scale)
+  Vec current_direction = Vec(1.0, 0.0, 0.0);  // horizontal unit vector
   Wave wave;                 // the waves (wave.spec.present as the model's)
 };
 
 // The model's water, as the scene gives it (scaled by `current_scale`).
 Water SceneWater(const Model& m, double current_scale = 1.0);
 // The water of the inputs at time t [s], from the water of the step before (`water`): the
-// current and the waves' height at t; a new period with the phase kept at wave_phase_x (where a
-// ship would see the wave change), so the waves' phase carries over; the height held at
-// Miche's breaking limit of the period at t. Exactly the model's water while the inputs are.
+// current (speed and heading) and the waves' height at t; a new period or heading with the
+// phase kept at wave_phase_point (where a ship would see the wave change), so the waves' phase
+// carries over; the height held at Miche's breaking limit of the period at t. Exactly the
+// model's water while the inputs are the scene's.
 void UpdateWater(const Model& m, const Inputs& in, double t, Water* water);
 
-// The current at elevation y [m/s] and its y-derivative [1/s].
-double CurrentAt(const Model& m, const Water& w, double y);
-double CurrentSlope(const Model& m, const Water& w, double y);
+// The current's velocity at elevation y [m/s] and its y-derivative [1/s].
+Vec CurrentAt(const Model& m, const Water& w, double y);
+Vec CurrentSlope(const Model& m, const Water& w, double y);
 bool HasCurrent(const Model& m, const Water& w);    // anywhere non-zero
 double MaxCurrent(const Model& m, const Water& w);  // the largest |c(y)| over all y [m/s]
 

@@ -49,6 +49,7 @@ Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<Pris
   e.fluid_density = env.fluid_density;
   e.current = env.current;
   e.current_profile = env.current_profile;
+  e.current_direction = env.current_direction;
   if (e.current_profile.y.size() != e.current_profile.speed.size())
     throw Error("the current profile has " + std::to_string(e.current_profile.y.size()) +
                 " elevations but " + std::to_string(e.current_profile.speed.size()) + " speeds");

@@ -13,11 +13,11 @@
 
 namespace cablefilm {
 
-// A current that varies with elevation: speeds along +x at elevations, linearly interpolated in
-// y, constant beyond the first and the last point. Empty: no profile.
+// A current that varies with elevation: speeds along the current's direction at elevations,
+// linearly interpolated in y, constant beyond the first and the last point. Empty: no profile.
 struct CurrentProfile {
   std::vector<double> y;      // elevations [m], strictly increasing
-  std::vector<double> speed;  // the current there [m/s] along +x
+  std::vector<double> speed;  // the current there [m/s] along the current's direction
 
   bool empty() const { return y.empty(); }
   // c(y) [m/s] and dc/dy [1/s] (the slope of the piece holding y, the piece above at a point, 0
@@ -32,8 +32,8 @@ struct CurrentProfile {
 // a spring on the penetration and a dashpot on the normal velocity, the dashpot's force no
 // larger than the spring's: the reaction never pulls the line down, and it starts from 0 when
 // a falling station touches (a dashpot force c v from the first contact would be a jump that an
-// implicit step cannot land on), so 0 <= N_j <= 2 k l_j p_j. Coulomb friction along x
-// regularised by a velocity, -mu N_j tanh(v_x / v_f). l_j is the station's share of the
+// implicit step cannot land on), so 0 <= N_j <= 2 k l_j p_j. Coulomb friction against the
+// sliding velocity on the bed v_h = (v_x, 0, v_z), regularised: -mu N_j tanh(|v_h| / v_f) v_h / |v_h|. l_j is the station's share of the
 // unstretched line (half of each adjoining link).
 struct SeabedSpec {
   bool present = false;
@@ -44,7 +44,7 @@ struct SeabedSpec {
                                  // times the diameter; negative: critical damping of each
                                  // station on its bed spring, c_j = 2 sqrt(k l_j m_j)
   double friction = 0;           // mu, Coulomb coefficient along the seabed
-  double friction_velocity = 0.01;  // v_f [m/s]: friction is mu N tanh(v_x / v_f)
+  double friction_velocity = 0.01;  // v_f [m/s]: friction is mu N tanh(|v_h| / v_f)
 };
 
 enum class LinkLaw {
@@ -71,9 +71,10 @@ struct Line {
   // Per station j (size s+1).
   Eigen::VectorXd arc_length;     // unstretched arc length from station 0 [m]
   Eigen::VectorXd cable_mass;     // m_j = (mu l)_{j-1/2}/2 + (mu l)_{j+1/2}/2 [kg]
-  Points prism_mass;              // (m^x_j, m^y_j) = m*_j + rho (V^x_j, V^y_j) [kg]
+  Points prism_mass;              // (m^x_j, m^y_j, m^z_j) = m*_j + rho (V^x_j, V^y_j, V^z_j) [kg]
   Eigen::VectorXd net_weight;     // W_j + W*_j [N], acting along -y
-  Points prism_drag;              // (f^x_j, f^y_j) = rho/2 (C^x S^x, C^y S^y) [kg/m]
+  Points prism_drag;              // (f^x_j, f^y_j, f^z_j) = rho/2 (C^x S^x, C^y S^y, C^z S^z)
+                                  // [kg/m]
   std::vector<int> weight_stations;  // stations carrying a prism
 
   std::vector<double> section_boundaries;  // interior section ends, unstretched arc length [m]
@@ -95,8 +96,8 @@ struct Line {
   Eigen::VectorXd link_fluid_mass;   // rho sigma l (1 + k) [kg] per link: Froude-Krylov plus
                                      // the normal added mass e, on the water's normal
                                      // acceleration (Morison's C_M = 1 + k)
-  Points prism_added_mass;           // rho (V^x, V^y) [kg] per station
-  Points prism_fluid_mass;           // rho (V* + V^x, V* + V^y) [kg] per station
+  Points prism_added_mass;           // rho (V^x, V^y, V^z) [kg] per station
+  Points prism_fluid_mass;           // rho (V* + V^x, V* + V^y, V* + V^z) [kg] per station
 
   int stations() const { return links + 1; }
   double total_length() const { return arc_length[links]; }
@@ -106,8 +107,9 @@ struct Line {
 struct Environment {
   double gravity = 9.80665;       // g [m/s^2]
   double fluid_density = 0;       // rho [kg/m^3]
-  double current = 0;             // c [m/s] along +x, uniform
+  double current = 0;             // c [m/s] along current_direction, uniform
   CurrentProfile current_profile; // added to c: the current at y is c + profile(y) [m/s]
+  Vec current_direction = Vec(1.0, 0.0, 0.0);  // horizontal unit vector the current flows along
   SeabedSpec seabed;              // seabed.present: contact on the stations below seabed.y
   Wave wave;                      // wave.spec.present: regular waves with a free surface
 };
@@ -159,16 +161,17 @@ struct PrismSpec {
   int station = 0;
   double mass = 0;                   // m* [kg]
   double volume = 0;                 // V* [m^3]
-  Vec added_volume = Vec::Zero();    // (V^x, V^y) [m^3]
-  Vec drag_coefficient = Vec::Zero();  // (C^x, C^y)
-  Vec drag_area = Vec::Zero();       // (S^x, S^y) [m^2]
+  Vec added_volume = Vec::Zero();    // (V^x, V^y, V^z) [m^3]
+  Vec drag_coefficient = Vec::Zero();  // (C^x, C^y, C^z)
+  Vec drag_area = Vec::Zero();       // (S^x, S^y, S^z) [m^2]
 };
 
 struct EnvironmentSpec {
   double gravity = 9.80665;    // g [m/s^2]
   double fluid_density = 0;    // rho [kg/m^3]
-  double current = 0;          // c [m/s]
+  double current = 0;          // c [m/s] along current_direction
   CurrentProfile current_profile;  // added to c (empty: uniform)
+  Vec current_direction = Vec(1.0, 0.0, 0.0);  // horizontal unit vector
   SeabedSpec seabed;           // none unless present
   WaveSpec waves;              // none unless present
 };

@@ -54,9 +54,9 @@ double SurfaceBuoyancyEnergy(const Model& m, const Points& x) {
   for (int j = 0; j < m.stations(); ++j) {
     const double band = m.line.wet_band[j];
     if (m.line.station_buoyancy[j] == 0 || !(band > 0)) continue;
-    const double u = (m.env.wave.spec.surface_y - x(1, j)) / band + 0.5;
+    const double u = (m.env.wave.spec.surface_y - x(kVertical, j)) / band + 0.5;
     // Under water (u >= 1) y + l G(u) = y_surface: the same at every depth.
-    e += m.line.station_buoyancy[j] * (x(1, j) + band * G(u));
+    e += m.line.station_buoyancy[j] * (x(kVertical, j) + band * G(u));
   }
   return e;
 }
@@ -75,18 +75,19 @@ void ComputeSea(const Model& m, const Water& water, double t, const Points& x, S
   const Wave& wave = water.wave;
   const WaveRamp ramp = RampAt(wave.spec, t);
   for (int j = 0; j < n; ++j) {
-    const WaterKinematics w = KinematicsAt(wave, x(0, j), x(1, j), t, ramp);
+    const WaterKinematics w = KinematicsAt(wave, x.col(j), t, ramp);
     sea.velocity.col(j) = w.velocity;
     sea.acceleration.col(j) = w.acceleration;
     Eigen::Map<Mat>(sea.velocity_gradient.col(j).data()) = w.velocity_gradient;
     Eigen::Map<Mat>(sea.acceleration_gradient.col(j).data()) = w.acceleration_gradient;
     // Depth below the instantaneous surface over the station's band: u = 1/2 at the surface.
     const double band = m.line.wet_band[j];
-    const double depth = wave.spec.surface_y + w.eta - x(1, j);
+    const double depth = wave.spec.surface_y + w.eta - x(kVertical, j);
     const double u = depth / band + 0.5;
     sea.wet[j] = WetFraction(u);
-    sea.wet_gradient.col(j) =
-        (WetFractionSlope(u) / band) * Vec(w.eta_gradient.x(), -1.0);
+    Vec ddepth = w.eta_gradient;  // d depth / d position
+    ddepth[kVertical] = -1.0;
+    sea.wet_gradient.col(j) = (WetFractionSlope(u) / band) * ddepth;
   }
 }
 
@@ -95,31 +96,31 @@ void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometr
   const SeaState& sea = g.sea;
   CheckSea(m, sea);
   const bool profile = !m.env.current_profile.empty();
-  Vec current(CurrentAt(m, water, 0.0), 0.0);
+  Vec current = CurrentAt(m, water, 0.0);
   for (int k = 0; k < m.line.links; ++k) {
     const double psi = LinkWet(sea, k);
     if (psi == 0) continue;  // in the air: no drag, no fluid inertia
-    const Vec n(-g.tangent(1, k), g.tangent(0, k));
-    double F = 0;  // along n, on each of the two stations [N]
+    const Vec t = g.tangent.col(k);
+    Vec F = Vec::Zero();  // across the link, on each of its two stations [N]
     if (m.line.drag_factor[k] != 0) {
-      if (profile) current.x() = CurrentAt(m, water, 0.5 * (g.elevation[k] + g.elevation[k + 1]));
+      if (profile) current = CurrentAt(m, water, 0.5 * (g.elevation[k] + g.elevation[k + 1]));
       const Vec rel = 0.5 * (v.col(k) + v.col(k + 1) - sea.velocity.col(k) -
-                                         sea.velocity.col(k + 1)) -
-                                  current;
-      const double q = rel.dot(n);  // q_{k+1/2} [m/s]
-      F += -0.5 * psi * m.line.drag_factor[k] * q * std::abs(q);
+                             sea.velocity.col(k + 1)) -
+                      current;
+      const Vec q = rel - t * t.dot(rel);  // q_{k+1/2} [m/s]
+      F += (-0.5 * psi * m.line.drag_factor[k] * q.norm()) * q;
     }
     const Vec A = 0.5 * (sea.acceleration.col(k) + sea.acceleration.col(k + 1));
-    F += 0.5 * psi * m.line.link_fluid_mass[k] * A.dot(n);
-    force.col(k) += F * n;
-    force.col(k + 1) += F * n;
+    F += (0.5 * psi * m.line.link_fluid_mass[k]) * (A - t * t.dot(A));
+    force.col(k) += F;
+    force.col(k + 1) += F;
   }
   for (int j = 0; j <= m.line.links; ++j)
-    force(1, j) -= m.line.net_weight[j] + (1.0 - sea.wet[j]) * m.line.station_buoyancy[j];
+    force(kVertical, j) -= m.line.net_weight[j] + (1.0 - sea.wet[j]) * m.line.station_buoyancy[j];
   for (int j : m.line.weight_stations) {
     const double phi = sea.wet[j];
     if (phi == 0) continue;
-    if (profile) current.x() = CurrentAt(m, water, g.elevation[j]);
+    if (profile) current = CurrentAt(m, water, g.elevation[j]);
     const Vec rel = v.col(j) - current - sea.velocity.col(j);
     const double u = rel.norm();
     force.col(j) += phi * (m.line.prism_fluid_mass.col(j).cwiseProduct(sea.acceleration.col(j)) -
@@ -130,15 +131,16 @@ void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometr
 Mat WaveStationInertia(const Model& m, const LinkGeometry& g, int j) {
   const bool sea = g.sea.wet.size() == m.stations();
   const double phi = sea ? g.sea.wet[j] : 1.0;
-  Mat M =
-      Vec(m.line.cable_mass[j] + m.line.prism_mass(0, j) - (1.0 - phi) * m.line.prism_added_mass(0, j),
-                      m.line.cable_mass[j] + m.line.prism_mass(1, j) - (1.0 - phi) * m.line.prism_added_mass(1, j))
-          .asDiagonal();
+  Vec diagonal = m.line.prism_mass.col(j) - (1.0 - phi) * m.line.prism_added_mass.col(j);
+  diagonal.array() += m.line.cable_mass[j];
+  Mat M = diagonal.asDiagonal();
   for (int k = j - 1; k <= j; ++k) {
     if (k < 0 || k >= m.line.links) continue;
     const double psi = sea ? LinkWet(g.sea, k) : 1.0;
-    const Vec n(-g.tangent(1, k), g.tangent(0, k));
-    M.noalias() += (0.5 * psi * m.line.virtual_mass[k]) * n * n.transpose();
+    const Vec t = g.tangent.col(k);
+    const double e = 0.5 * psi * m.line.virtual_mass[k];
+    M -= (e * t) * t.transpose();
+    M.diagonal().array() += e;
   }
   return M;
 }
@@ -148,7 +150,7 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
   const SeaState& sea = g.sea;
   CheckSea(m, sea);
   const bool profile = !m.env.current_profile.empty();
-  Vec current(CurrentAt(m, water, 0.0), 0.0);
+  Vec current = CurrentAt(m, water, 0.0);
   for (int k = 0; k < m.line.links; ++k) {
     const double L = g.length[k];
     const double psi = LinkWet(sea, k);
@@ -156,45 +158,46 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
     const Vec dpsi_c = 0.5 * sea.wet_gradient.col(k + 1);
     if (!(L > 0) || (psi == 0 && dpsi_a.isZero() && dpsi_c.isZero())) continue;
     const Vec t = g.tangent.col(k);
-    const Vec n(-t.y(), t.x());
-    const Mat dn = NormalDerivative(t, L);
-    // The same force F n on both stations; its derivatives with respect to d = x_{k+1} - x_k
+    const Mat P = Mat::Identity() - t * t.transpose();
+    // The same force F on both stations; its derivatives with respect to d = x_{k+1} - x_k
     // (orientation), to x_k and x_{k+1} (the water, the current, the wet fraction), and to
     // either station's velocity.
-    Mat Hd = Mat::Zero(), Ja = Mat::Zero(),
-                    Jc = Mat::Zero(), Jv = Mat::Zero();
-    double F_dry = 0;  // F / psi: the force along n of the link all wet
+    Mat Hd = Mat::Zero(), Ja = Mat::Zero(), Jc = Mat::Zero(), Jv = Mat::Zero();
+    Vec F_dry = Vec::Zero();  // F / psi: the force of the link all wet
     if (m.line.drag_factor[k] != 0) {
       const double ymid = 0.5 * (g.elevation[k] + g.elevation[k + 1]);
-      if (profile) current.x() = CurrentAt(m, water, ymid);
+      if (profile) current = CurrentAt(m, water, ymid);
       const Vec w = 0.5 * (v.col(k) + v.col(k + 1) - sea.velocity.col(k) -
-                                       sea.velocity.col(k + 1)) -
-                                current;
-      const double q = w.dot(n), f = m.line.drag_factor[k];
-      F_dry += -0.5 * f * q * std::abs(q);
-      Hd += -0.5 * psi * f * (2.0 * std::abs(q) * n * (w.transpose() * dn) + q * std::abs(q) * dn);
-      Jv = -0.5 * psi * f * std::abs(q) * n * n.transpose();  // d(F n)/dv of either station
-      // w = mean v - c(y_mid) e_x - (U_k + U_{k+1}) / 2: d(F n)/dx_i = 2 Jv dw/dx_i.
+                           sea.velocity.col(k + 1)) -
+                    current;
+      const Vec q = w - t * t.dot(w);
+      const double f = m.line.drag_factor[k];
+      const Mat G = NormalDragDerivative(q);  // d(|q| q) / dq
+      F_dry += (-0.5 * f * q.norm()) * q;
+      Hd += (-0.5 * psi * f) * G * NormalPartDerivative(t, L, w, q);
+      Jv = (-0.25 * psi * f) * G * P;  // dF/dv of either station (dq/dv = P / 2)
+      // w = mean v - c(y_mid) - (U_k + U_{k+1}) / 2: dF/dx_i = 2 Jv dw/dx_i.
       Ja -= Jv * Gradient(sea.velocity_gradient, k);
       Jc -= Jv * Gradient(sea.velocity_gradient, k + 1);
-      const double slope = profile ? CurrentSlope(m, water, ymid) : 0.0;
-      if (slope != 0) {
-        Ja.col(1) -= slope * Jv.col(0);
-        Jc.col(1) -= slope * Jv.col(0);
+      const Vec slope = profile ? CurrentSlope(m, water, ymid) : Vec::Zero();
+      if (!slope.isZero()) {
+        Ja.col(kVertical) -= Jv * slope;
+        Jc.col(kVertical) -= Jv * slope;
       }
     }
     if (m.line.link_fluid_mass[k] != 0) {
       const double M = 0.5 * m.line.link_fluid_mass[k];
       const Vec A = 0.5 * (sea.acceleration.col(k) + sea.acceleration.col(k + 1));
-      F_dry += M * A.dot(n);
-      Hd += psi * M * (n * (A.transpose() * dn) + A.dot(n) * dn);
-      const Mat nn = (0.5 * psi * M) * n * n.transpose();
-      Ja += nn * Gradient(sea.acceleration_gradient, k);
-      Jc += nn * Gradient(sea.acceleration_gradient, k + 1);
+      const Vec An = A - t * t.dot(A);
+      F_dry += M * An;
+      Hd += (psi * M) * NormalPartDerivative(t, L, A, An);
+      const Mat across = (0.5 * psi * M) * P;  // dF/dA_i: A is the mean of the two stations'
+      Ja += across * Gradient(sea.acceleration_gradient, k);
+      Jc += across * Gradient(sea.acceleration_gradient, k + 1);
     }
     // Through the wet fraction psi = (phi_k + phi_{k+1}) / 2.
-    Ja += (F_dry * n) * dpsi_a.transpose();
-    Jc += (F_dry * n) * dpsi_c.transpose();
+    Ja += F_dry * dpsi_a.transpose();
+    Jc += F_dry * dpsi_c.transpose();
     Ja -= Hd;
     Jc += Hd;
     // Stored negated, with dv/dx = kv.
@@ -207,7 +210,7 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
   for (int j = m.first_free(); j <= m.last_free(); ++j) {
     if (m.line.station_buoyancy[j] == 0) continue;
     Mat B = Mat::Zero();
-    B.row(1) = -m.line.station_buoyancy[j] * sea.wet_gradient.col(j).transpose();
+    B.row(kVertical) = -m.line.station_buoyancy[j] * sea.wet_gradient.col(j).transpose();
     AddBlock(m, j, j, B, system);
   }
   for (int j : m.line.weight_stations) {
@@ -215,7 +218,7 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
     const double phi = sea.wet[j];
     const Vec dphi = sea.wet_gradient.col(j);
     if (phi == 0 && dphi.isZero()) continue;
-    if (profile) current.x() = CurrentAt(m, water, g.elevation[j]);
+    if (profile) current = CurrentAt(m, water, g.elevation[j]);
     const Vec rel = v.col(j) - current - sea.velocity.col(j);
     const double u = rel.norm();
     const Vec f = m.line.prism_drag.col(j), P = m.line.prism_fluid_mass.col(j);
@@ -224,8 +227,7 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
     if (u > 0) dfdv = -(f.asDiagonal() * (u * Mat::Identity() + rel * rel.transpose() / u));
     // rel depends on x_j through -U(x_j) and -c(y_j) e_x.
     Mat drel_dx = -Gradient(sea.velocity_gradient, j);
-    const double slope = profile ? CurrentSlope(m, water, g.elevation[j]) : 0.0;
-    drel_dx(0, 1) -= slope;
+    if (profile) drel_dx.col(kVertical) -= CurrentSlope(m, water, g.elevation[j]);
     const Mat Jx = phi * (dfdv * drel_dx +
                                       P.asDiagonal() * Gradient(sea.acceleration_gradient, j)) +
                                F_wet * dphi.transpose();
@@ -243,13 +245,13 @@ void AddWaveInertiaJacobian(const Model& m, const LinkGeometry& g, const Points&
     const Vec Pa = m.line.prism_added_mass.col(j).cwiseProduct(a.col(j));
     AddBlock(m, j, j, Pa * sea.wet_gradient.col(j).transpose(), system);
   }
-  // Links: (psi e / 2) n n^T a_j on stations j = k, k+1, psi = (phi_k + phi_{k+1}) / 2.
+  // Links: (psi e / 2) (I - t t^T) a_j on stations j = k, k+1, psi = (phi_k + phi_{k+1}) / 2.
   for (int k = 0; k < m.line.links; ++k) {
     if (m.line.virtual_mass[k] == 0) continue;
-    const Vec n(-g.tangent(1, k), g.tangent(0, k));
+    const Vec t = g.tangent.col(k);
     const double e = 0.5 * m.line.virtual_mass[k];
     for (int j : {k, k + 1}) {
-      const Vec f = (e * n.dot(a.col(j))) * n;
+      const Vec f = e * (a.col(j) - t * t.dot(a.col(j)));
       AddBlock(m, j, k, f * (0.5 * sea.wet_gradient.col(k)).transpose(), system);
       AddBlock(m, j, k + 1, f * (0.5 * sea.wet_gradient.col(k + 1)).transpose(), system);
     }

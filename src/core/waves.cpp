@@ -48,15 +48,17 @@ Wave MakeWave(const WaveSpec& spec, double gravity) {
   w.omega = 2.0 * kPi / spec.period;
   w.k = WaveNumber(w.omega, gravity, spec.depth);
   w.amplitude = 0.5 * spec.height;
+  w.direction = Horizontal(spec.heading);
   w.decay = std::exp(-2.0 * w.k * spec.depth);
   w.decay_gap = -std::expm1(-2.0 * w.k * spec.depth);
   return w;
 }
 
-double SurfaceAt(const Wave& wave, double x, double t) {
+double SurfaceAt(const Wave& wave, const Vec& position, double t) {
   const double R = RampAt(wave.spec, t).value;
-  return wave.spec.surface_y + R * wave.amplitude * std::cos(wave.k * x - wave.omega * t +
-                                                             wave.spec.phase);
+  return wave.spec.surface_y + R * wave.amplitude * std::cos(wave.k * wave.direction.dot(
+                                                                 HorizontalPart(position)) -
+                                                             wave.omega * t + wave.spec.phase);
 }
 
 void SurfaceProfile(const Wave& wave, double t, double x0, double x1, std::vector<double>& xs,
@@ -67,58 +69,61 @@ void SurfaceProfile(const Wave& wave, double t, double x0, double x1, std::vecto
   ys.resize(n);
   for (int i = 0; i < n; ++i) {
     xs[i] = x0 + (x1 - x0) * i / (n - 1);
-    ys[i] = SurfaceAt(wave, xs[i], t);
+    ys[i] = SurfaceAt(wave, Vec(xs[i], 0.0, 0.0), t);
   }
 }
 
-WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t) {
-  return KinematicsAt(wave, x, y, t, RampAt(wave.spec, t));
+WaterKinematics KinematicsAt(const Wave& wave, const Vec& position, double t) {
+  return KinematicsAt(wave, position, t, RampAt(wave.spec, t));
 }
 
-WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t,
+WaterKinematics KinematicsAt(const Wave& wave, const Vec& position, double t,
                              const WaveRamp& ramp) {
   WaterKinematics out;
   const double a = wave.amplitude, w = wave.omega, k = wave.k, h = wave.spec.depth;
-  const double theta = k * x - w * t + wave.spec.phase;
+  const Vec& e = wave.direction;
+  const double theta = k * e.dot(HorizontalPart(position)) - w * t + wave.spec.phase;
   const double co = std::cos(theta), si = std::sin(theta);
   const double R = ramp.value, dR = ramp.rate;
   out.eta = R * a * co;
-  out.eta_gradient = Eigen::Vector2d(-R * a * k * si, 0.0);
+  const Vec dtheta = k * e;  // d theta / d position
+  out.eta_gradient = (-R * a * si) * dtheta;
   if (a == 0) return out;
   // Wheeler stretching: z_s = h (z - eta) / (h + eta) on [-h, 0]; held at the ends beyond.
-  const double z = y - wave.spec.surface_y, eta = out.eta;
+  const double z = position[kVertical] - wave.spec.surface_y, eta = out.eta;
   double zs = h * (z - eta) / (h + eta);
-  double dzs_dx = -h * (h + z) / ((h + eta) * (h + eta)) * out.eta_gradient.x();
-  double dzs_dy = h / (h + eta);
+  Vec dzs = -h * (h + z) / ((h + eta) * (h + eta)) * out.eta_gradient;  // d zs / d position
+  dzs[kVertical] = h / (h + eta);
   if (zs > 0 || zs < -h) {
     zs = std::clamp(zs, -h, 0.0);
-    dzs_dx = dzs_dy = 0.0;
+    dzs.setZero();
   }
   // cosh(k (zs + h)) / sinh(k h) and sinh(...) / sinh(k h) without overflow at any k h:
   // [e^{k zs} +- e^{-k (zs + 2h)}] / (1 - e^{-2 k h}), e^{-k (zs + 2h)} = e^{-2 k h} / e^{k zs}
   // (both 0 when e^{k zs} underflows: k h > 700 then).
   const double e1 = std::exp(k * zs), e2 = e1 > 0 ? wave.decay / e1 : 0.0;
   const double C = (e1 + e2) / wave.decay_gap, S = (e1 - e2) / wave.decay_gap;
-  // Each component q = A(zs) trig(theta): dq/dx = A'(zs) dzs/dx trig + A trig' k,
-  // dq/dy = A'(zs) dzs/dy trig, with C' = k S and S' = k C.
+  // Each component q = A(zs) trig(theta): dq/dx = A'(zs) dzs/dx trig + A trig' dtheta/dx,
+  // with C' = k S and S' = k C. The horizontal part along e, the vertical along y.
   const double aw = a * w;
-  // Velocity.
-  const double ux = R * aw * C * co, uy = R * aw * S * si;
-  const double ux_z = R * aw * k * S * co, ux_th = -R * aw * C * si;
-  const double uy_z = R * aw * k * C * si, uy_th = R * aw * S * co;
+  const double uh = R * aw * C * co, uv = R * aw * S * si;
+  const double uh_z = R * aw * k * S * co, uh_th = -R * aw * C * si;
+  const double uv_z = R * aw * k * C * si, uv_th = R * aw * S * co;
   // Acceleration d(R u)/dt at fixed zs: dR/dt u + R du/dt, d theta/dt = -omega.
-  const double ax = aw * C * (R * w * si + dR * co);
-  const double ay = aw * S * (-R * w * co + dR * si);
-  const double ax_z = aw * k * S * (R * w * si + dR * co);
-  const double ax_th = aw * C * (R * w * co - dR * si);
-  const double ay_z = aw * k * C * (-R * w * co + dR * si);
-  const double ay_th = aw * S * (R * w * si + dR * co);
-  out.velocity = Eigen::Vector2d(ux, uy);
-  out.acceleration = Eigen::Vector2d(ax, ay);
-  out.velocity_gradient << ux_z * dzs_dx + ux_th * k, ux_z * dzs_dy,
-      uy_z * dzs_dx + uy_th * k, uy_z * dzs_dy;
-  out.acceleration_gradient << ax_z * dzs_dx + ax_th * k, ax_z * dzs_dy,
-      ay_z * dzs_dx + ay_th * k, ay_z * dzs_dy;
+  const double ah = aw * C * (R * w * si + dR * co);
+  const double av = aw * S * (-R * w * co + dR * si);
+  const double ah_z = aw * k * S * (R * w * si + dR * co);
+  const double ah_th = aw * C * (R * w * co - dR * si);
+  const double av_z = aw * k * C * (-R * w * co + dR * si);
+  const double av_th = aw * S * (R * w * si + dR * co);
+  Vec up = Vec::Zero();
+  up[kVertical] = 1.0;
+  out.velocity = uh * e + uv * up;
+  out.acceleration = ah * e + av * up;
+  out.velocity_gradient = e * (uh_z * dzs + uh_th * dtheta).transpose() +
+                          up * (uv_z * dzs + uv_th * dtheta).transpose();
+  out.acceleration_gradient = e * (ah_z * dzs + ah_th * dtheta).transpose() +
+                              up * (av_z * dzs + av_th * dtheta).transpose();
   return out;
 }
 

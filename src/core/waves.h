@@ -1,10 +1,11 @@
 #pragma once
-// Regular linear (Airy) waves travelling along +x in water of finite depth (not in the paper):
-// the free surface, the water particle velocity and acceleration, and their gradients in x and
-// y (for the implicit scheme's Jacobian). Plain data and pure functions; nothing allocates.
+// Regular linear (Airy) waves travelling along a horizontal direction e (the heading) in water
+// of finite depth (not in the paper): the free surface, the water particle velocity and
+// acceleration, and their gradients in space (for the implicit scheme's Jacobian). Plain data
+// and pure functions; nothing allocates.
 //
-//   eta(x, t) = R(t) a cos(theta),  theta = k x - omega t + phase,  a = H / 2
-//   u = R a omega cosh(k (z + h)) / sinh(k h) cos(theta)       (horizontal, along +x)
+//   eta(x, t) = R(t) a cos(theta),  theta = k e . x - omega t + phase,  a = H / 2
+//   u = R a omega cosh(k (z + h)) / sinh(k h) cos(theta)       (horizontal, along e)
 //   w = R a omega sinh(k (z + h)) / sinh(k h) sin(theta)       (vertical, along +y)
 //   omega^2 = g k tanh(k h)                                    (the dispersion relation)
 //
@@ -15,8 +16,9 @@
 // the linear surface velocity, not the exponentially growing extrapolation). Above the
 // instantaneous surface z_s is held at 0 and below the bed (z < -h) at -h. The acceleration is
 // the local one, d(R u)/dt at fixed z_s (the convective terms are second order in H / L).
-#include <Eigen/Core>
 #include <vector>
+
+#include "core/vec.h"
 
 namespace cablefilm {
 
@@ -27,6 +29,7 @@ struct WaveSpec {
   double depth = 1;       // h [m], still water level to the bed
   double surface_y = 0;   // the still water level's elevation [m] (same y as positions)
   double phase = 0;       // [rad]: theta at x = 0, t = 0 (0: a crest at x = 0)
+  double heading = 0;     // the direction they travel [rad] from +x towards +z
   double ramp_rate = 0;   // nu [1/s] of R(t); 0: no ramp (R = 1 from t = 0)
 };
 
@@ -47,6 +50,7 @@ struct Wave {
   double omega = 0;       // 2 pi / T [rad/s]
   double k = 0;           // wave number [1/m]
   double amplitude = 0;   // a = H / 2 [m]
+  Vec direction = Vec(1.0, 0.0, 0.0);  // e: the horizontal unit vector of the heading
   double decay = 0;       // e^{-2 k h}: the depth profiles' constants (KinematicsAt), set by
   double decay_gap = 1;   // 1 - e^{-2 k h}  MakeWave with k
   double length() const;  // L = 2 pi / k [m]
@@ -60,22 +64,24 @@ Wave MakeWave(const WaveSpec& spec, double gravity);
 
 // The water at one point and time.
 struct WaterKinematics {
-  double eta = 0;                       // surface elevation above the still water level [m]
-  Eigen::Vector2d eta_gradient = Eigen::Vector2d::Zero();  // (d eta/dx, 0)
-  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();      // (u, w) [m/s]
-  Eigen::Vector2d acceleration = Eigen::Vector2d::Zero();  // (du/dt, dw/dt) [m/s^2]
-  Eigen::Matrix2d velocity_gradient = Eigen::Matrix2d::Zero();  // d(u, w)/d(x, y) [1/s]
-  Eigen::Matrix2d acceleration_gradient = Eigen::Matrix2d::Zero();  // d(du/dt, dw/dt)/d(x, y)
+  double eta = 0;                        // surface elevation above the still water level [m]
+  Vec eta_gradient = Vec::Zero();        // d eta / d(x, y, z) (horizontal) [1]
+  Vec velocity = Vec::Zero();            // [m/s]
+  Vec acceleration = Vec::Zero();        // its local rate [m/s^2]
+  Mat velocity_gradient = Mat::Zero();   // d velocity / d position [1/s]
+  Mat acceleration_gradient = Mat::Zero();  // d acceleration / d position [1/s^2]
 };
-WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t);
+WaterKinematics KinematicsAt(const Wave& wave, const Vec& position, double t);
 // The same with the ramp at t given (RampAt(wave.spec, t)): one ramp for many points.
-WaterKinematics KinematicsAt(const Wave& wave, double x, double y, double t, const WaveRamp& ramp);
+WaterKinematics KinematicsAt(const Wave& wave, const Vec& position, double t,
+                             const WaveRamp& ramp);
 
-// The surface's elevation (absolute y [m]) at x and t.
-double SurfaceAt(const Wave& wave, double x, double t);
+// The surface's elevation (absolute y [m]) under the horizontal point of `position` at t.
+double SurfaceAt(const Wave& wave, const Vec& position, double t);
 
-// The surface from x0 to x1 [m] at time t, sampled for drawing: at least 24 points a wave length
-// (the polyline's sag below a crest is then under 1 % of the amplitude), from 64 to 4096 points.
+// The surface from x0 to x1 [m] along x (at z = 0) at time t, sampled for drawing: at least 24
+// points a wave length (the polyline's sag below a crest is then under 1 % of the amplitude),
+// from 64 to 4096 points.
 void SurfaceProfile(const Wave& wave, double t, double x0, double x1, std::vector<double>& xs,
                     std::vector<double>& ys);
 

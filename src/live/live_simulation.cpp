@@ -29,9 +29,10 @@ LiveSimulation::LiveSimulation(const SceneDef& scene) : model_(BuildModel(scene)
   if (const EndMotion* e = DrivenEnd(model_)) base_period_ = e->period();
   // The wave's phase is kept where the driven end is (else mid-way between the ends).
   const int last = model_.line.links;
-  scene_inputs_.wave_phase_x = model_.ends.end.moves()     ? initial.x(0, last)
-                               : model_.ends.start.moves() ? initial.x(0, 0)
-                                                           : 0.5 * (initial.x(0, 0) + initial.x(0, last));
+  scene_inputs_.wave_phase_point = model_.ends.end.moves()     ? Vec(initial.x.col(last))
+                                   : model_.ends.start.moves() ? Vec(initial.x.col(0))
+                                                               : Vec(0.5 * (initial.x.col(0) +
+                                                                            initial.x.col(last)));
   initial_ = MakeData(model_, scene_inputs_, grid_.options, initial);
   scene_sea_.period = base_period_;
   scene_sea_.current = model_.env.current;

@@ -8,19 +8,25 @@ namespace cablefilm {
 namespace {
 
 EndMotion MakeEndMotion(const EndDef& e) {
-  const Vec rest(e.position[0], e.position[1]);
+  const Vec rest(e.position[0], e.position[1], e.position[2]);
   switch (e.motion) {
     case EndMotionKind::kFixed:
       return EndMotion::Fixed(rest);
     case EndMotionKind::kFree:
       return EndMotion::Free(rest);
     case EndMotionKind::kTrochoid:
-      return EndMotion::Trochoid(rest, e.x_amplitudes[0], e.x_amplitudes[1], e.y_amplitudes[0],
-                                 e.y_amplitudes[1], 2.0 * M_PI / e.period, e.ramp_rate);
+      return EndMotion::Trochoid(
+          rest, Vec(e.x_amplitudes[0], e.y_amplitudes[0], e.z_amplitudes[0]),
+          Vec(e.x_amplitudes[1], e.y_amplitudes[1], e.z_amplitudes[1]), 2.0 * M_PI / e.period,
+          e.ramp_rate);
     case EndMotionKind::kTable: {
-      std::vector<Eigen::Vector3d> rows;
-      for (const auto& r : e.table) rows.emplace_back(r[0], r[1], r[2]);
-      return EndMotion::Table(rest, rows);
+      std::vector<double> times;
+      std::vector<Vec> offsets;
+      for (const auto& r : e.table) {
+        times.push_back(r[0]);
+        offsets.emplace_back(r[1], r[2], r[3]);
+      }
+      return EndMotion::Table(rest, times, offsets);
     }
   }
   throw Error("unknown end motion");
@@ -38,6 +44,7 @@ WaveSpec MakeWaveSpec(const SceneDef& scene) {
   w.depth = d.depth;
   w.surface_y = d.surface_y;
   w.phase = d.phase * M_PI / 180.0;
+  w.heading = d.heading * M_PI / 180.0;
   w.ramp_rate = d.ramp_rate;
   return w;
 }
@@ -80,9 +87,9 @@ Model BuildModel(const SceneDef& scene) {
     p.station = StationAt(scene, w.at);
     p.mass = w.mass;
     p.volume = w.volume;
-    p.added_volume = {w.added_volume[0], w.added_volume[1]};
-    p.drag_coefficient = {w.drag_coefficient[0], w.drag_coefficient[1]};
-    p.drag_area = {w.drag_area[0], w.drag_area[1]};
+    p.added_volume = Vec(w.added_volume[0], w.added_volume[1], w.added_volume[2]);
+    p.drag_coefficient = Vec(w.drag_coefficient[0], w.drag_coefficient[1], w.drag_coefficient[2]);
+    p.drag_area = Vec(w.drag_area[0], w.drag_area[1], w.drag_area[2]);
     prisms.push_back(p);
   }
   EnvironmentSpec env;
@@ -90,6 +97,7 @@ Model BuildModel(const SceneDef& scene) {
   env.fluid_density = scene.environment.fluid_density;
   env.current = scene.environment.current;
   env.current_profile = scene.environment.current_profile;
+  env.current_direction = scene.environment.current_direction;
   env.seabed = scene.seabed;
   env.waves = MakeWaveSpec(scene);
   const LinkLaw law =

@@ -110,7 +110,8 @@ void CheckEndsReach(const toml::table* ends, const TableReader& r, const SceneDe
   double total = 0;
   for (const SectionDef& sec : scene.sections) total += sec.length;
   const double chord = std::hypot(scene.end.position[0] - scene.start.position[0],
-                                  scene.end.position[1] - scene.start.position[1]);
+                                  scene.end.position[1] - scene.start.position[1],
+                                  scene.end.position[2] - scene.start.position[2]);
   if (chord >= total)
     r.Fail(ends->get("end")->as_table()->get("position"), "end.position",
            "expected the ends less than the cable's length (" + TableReader::Fmt(total) +

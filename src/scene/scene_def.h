@@ -12,10 +12,13 @@ namespace cablefilm {
 struct EnvironmentDef {
   double gravity = 9.80665;       // g [m/s^2]
   double fluid_density = 1025.0;  // rho [kg/m^3]; 0 = vacuum
-  double current = 0.0;           // c [m/s], uniform, along +x
+  double current = 0.0;           // c [m/s], uniform, along current_direction
   // Or a profile: speeds [m/s] at elevations y [m], y strictly increasing, linearly
   // interpolated, constant beyond the ends (current is then 0). Empty: uniform.
   CurrentProfile current_profile;
+  // The horizontal direction the current (uniform and profile) flows along: +x unless
+  // current_heading [deg from +x towards +z] or the vector form [u, w] says otherwise.
+  Vec current_direction = Vec(1.0, 0.0, 0.0);
 };
 
 // [seabed]: a flat seabed (optional), as the core takes it (core/model.h).
@@ -29,6 +32,7 @@ struct WavesDef {                  // [waves]: regular linear (Airy) waves along
                                    // surface_y - seabed.y with a [seabed]
   double surface_y = 0;            // the still water level's elevation [m]
   double phase = 0;                // [deg]: the phase of the surface at x = 0, t = 0 (0: a crest)
+  double heading = 0;              // [deg]: the direction they travel, from +x towards +z
   double ramp_rate = 0;            // nu [1/s] of eq. (3)'s ramp R(t); default 4 / T
 };
 
@@ -54,28 +58,31 @@ struct WeightDef {                      // a suspended prism at a station
   double at = 0;                        // unstretched arc length from station 0 [m]
   double mass = 0;                      // m* [kg]
   double volume = 0;                    // V* [m^3], buoyancy
-  std::array<double, 2> added_volume{};      // [V^x, V^y] [m^3]
-  std::array<double, 2> drag_coefficient{};  // [C^x, C^y]
-  std::array<double, 2> drag_area{};         // [S^x, S^y] [m^2]
+  // [x, y, z]; two values [x, y] mean [x, y, x]: the same across both horizontal axes.
+  std::array<double, 3> added_volume{};      // [V^x, V^y, V^z] [m^3]
+  std::array<double, 3> drag_coefficient{};  // [C^x, C^y, C^z]
+  std::array<double, 3> drag_area{};         // [S^x, S^y, S^z] [m^2]
 };
 
 enum class EndMotionKind { kFixed, kFree, kTrochoid, kTable };
 
 struct EndDef {
   EndMotionKind motion = EndMotionKind::kFixed;
-  std::array<double, 2> position{};       // rest position [x^0, y^0] [m]
+  std::array<double, 3> position{};       // rest position [x^0, y^0, z^0] [m] (z^0 = 0 in 2D)
   std::array<double, 2> x_amplitudes{};   // [a, b] [m], eq. (3)
   std::array<double, 2> y_amplitudes{};   // [c, d] [m], eq. (3)
+  std::array<double, 2> z_amplitudes{};   // [e, f] [m], eq. (3) in 3D
   double period = 0;                      // 2 pi / omega [s]
   double ramp_rate = 0;                   // nu [1/s]
-  std::string table_file;                 // resolved path of the CSV (t, x, y), offsets from position
-  std::vector<std::array<double, 3>> table;  // rows (t [s], dx [m], dy [m])
+  std::string table_file;                 // resolved path of the CSV (t, x, y[, z]), offsets
+  std::vector<std::array<double, 4>> table;  // rows (t [s], dx, dy, dz [m])
   // motion = "wave": the end follows the wave at its rest x through these response amplitude
   // operators, [ratio of the wave's amplitude (m/m), phase lead (deg)]; the loader turns them
   // into the trochoid of eq. (3) above (amplitudes, the wave's period and ramp).
   bool follows_wave = false;
   std::array<double, 2> x_rao{};
   std::array<double, 2> y_rao{};
+  std::array<double, 2> z_rao{};
 };
 
 enum class CableModelKind { kElastic, kInextensible };

@@ -63,19 +63,42 @@ void ReadEnvironment(TableReader& top, SceneDef& scene) {
       r.OptionalNonNegative("gravity", 9.80665, " in m/s^2", kMaxGravity);
   scene.environment.fluid_density =
       r.OptionalNonNegative("fluid_density", 1025.0, " in kg/m^3", kMaxFluidDensity);
+  // A number (along +x, or current_heading), a horizontal vector [u, w] (along +x and +z), or a
+  // profile [[y, speed], ...] (along +x, or current_heading): told apart by their types.
+  EnvironmentDef& env = scene.environment;
   const toml::node* current = t->get("current");
-  if (current && current->is_array()) {
+  const toml::array* array = current ? current->as_array() : nullptr;
+  const bool profile = array && (array->empty() || array->get(0)->is_array());
+  const bool vector = array && !profile;
+  if (profile) {
     r.Get("current");
-    ReadCurrentProfile(r, *current->as_array(), scene.environment.current_profile);
+    ReadCurrentProfile(r, *array, env.current_profile);
+  } else if (vector) {
+    if (array->size() != 2)
+      r.Fail(current, "current",
+             "expected a horizontal current [u, w] in m/s along +x and +z (two numbers), a "
+             "speed, or a profile [[y, speed], ...], got an array of " +
+                 std::to_string(array->size()) + " numbers");
+    const std::array<double, 3> uw = r.Triple("current", {0, 0, 0}, true, false,
+                                              " (m/s along +x and +z)", kMaxCurrent,
+                                              TableReader::TwoValues::kZeroZ);
+    env.current = std::hypot(uw[0], uw[1]);
+    if (env.current > 0) env.current_direction = Vec(uw[0], 0.0, uw[1]) / env.current;
   } else if (current && !current->is_number()) {
     r.Fail(current, "current",
            "expected a speed in m/s from " + TableReader::Fmt(-kMaxCurrent) + " to " +
-               TableReader::Fmt(kMaxCurrent) +
-               ", or a profile [[y, speed], ...] (elevation in m, speed in m/s)");
+               TableReader::Fmt(kMaxCurrent) + ", a horizontal vector [u, w] in m/s, or a "
+               "profile [[y, speed], ...] (elevation in m, speed in m/s)");
   } else {
-    scene.environment.current =
+    env.current =
         r.Ranged("current", 0.0, false, -kMaxCurrent, kMaxCurrent, " (a speed in m/s)");
   }
+  if (r.Has("current_heading") && vector)
+    r.Fail(t->get("current_heading"), "current_heading",
+           "the current [u, w] has its direction already; expected no current_heading with it");
+  const double heading = r.Ranged("current_heading", 0.0, false, -kMaxPhase, kMaxPhase,
+                                  " (degrees from +x towards +z)");
+  if (heading != 0) env.current_direction = Horizontal(heading * M_PI / 180.0);
   r.Finish();
 }
 
@@ -125,6 +148,8 @@ void ReadWaves(TableReader& top, SceneDef& scene) {
                  TableReader::Fmt(w.surface_y) + " m; or give waves.depth");
   }
   w.phase = r.Ranged("phase", 0.0, false, -kMaxPhase, kMaxPhase, " in degrees");
+  w.heading = r.Ranged("heading", 0.0, false, -kMaxPhase, kMaxPhase,
+                       " (the direction they travel, degrees from +x towards +z)");
   w.ramp_rate = r.OptionalPositive("ramp_rate", 4.0 / w.period, " in 1/s", 0, kMaxRampRate);
   if (!(scene.environment.gravity > 0))
     r.Fail(t, "period", "expected gravity > 0 for waves (environment.gravity = 0)");
@@ -242,9 +267,14 @@ void ReadCable(TableReader& top, SceneDef& scene) {
                  " m, on a segment boundary), got " + TableReader::Fmt(def.at));
     def.mass = w.Positive("mass", " in kg", 0, kMaxWeightMass);
     def.volume = w.OptionalNonNegative("volume", 0.0, " in m^3", kMaxVolume);
-    def.added_volume = w.Pair("added_volume", {0, 0}, false, true, " in m^3", kMaxVolume);
-    def.drag_coefficient = w.Pair("drag_coefficient", {0, 0}, false, true, "", kMaxCoefficient);
-    def.drag_area = w.Pair("drag_area", {0, 0}, false, true, " in m^2", kMaxDragArea);
+    // [x, y] or [x, y, z]: two values are the same across both horizontal axes.
+    const auto horizontal_alike = TableReader::TwoValues::kZLikeX;
+    def.added_volume =
+        w.Triple("added_volume", {0, 0, 0}, false, true, " in m^3", kMaxVolume, horizontal_alike);
+    def.drag_coefficient = w.Triple("drag_coefficient", {0, 0, 0}, false, true, "",
+                                    kMaxCoefficient, horizontal_alike);
+    def.drag_area =
+        w.Triple("drag_area", {0, 0, 0}, false, true, " in m^2", kMaxDragArea, horizontal_alike);
     w.Finish();
     scene.weights.push_back(def);
   }
@@ -271,10 +301,14 @@ void FollowWave(const WavesDef& w, double gravity, EndDef& end) {
   const double omega = 2.0 * M_PI / w.period;
   const double k = WaveNumber(omega, gravity, w.depth);
   const double A = 0.5 * w.height, deg = M_PI / 180.0;
-  for (int axis = 0; axis < 2; ++axis) {
-    const std::array<double, 2>& rao = axis == 0 ? end.x_rao : end.y_rao;
-    const double beta = k * end.position[0] + (w.phase + rao[1]) * deg;
-    std::array<double, 2>& amp = axis == 0 ? end.x_amplitudes : end.y_amplitudes;
+  // theta at the end's rest point: k e . x0 with e the heading's direction.
+  const Vec e = Horizontal(w.heading * deg);
+  const double along = e.x() * end.position[0] + e.z() * end.position[2];
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::array<double, 2>& rao = axis == 0 ? end.x_rao : axis == 1 ? end.y_rao : end.z_rao;
+    const double beta = k * along + (w.phase + rao[1]) * deg;
+    std::array<double, 2>& amp =
+        axis == 0 ? end.x_amplitudes : axis == 1 ? end.y_amplitudes : end.z_amplitudes;
     amp = {rao[0] * A * std::cos(beta), rao[0] * A * std::sin(beta)};
   }
   end.period = w.period;
@@ -285,7 +319,8 @@ void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std
              const SceneDef& scene) {
   const toml::table* t = ends.SubTable(which, true);
   TableReader r = ends.Child(*t, "ends." + which);
-  end.position = r.Pair("position", {0, 0}, true, false, " in m", kMaxLength);
+  end.position = r.Triple("position", {0, 0, 0}, true, false, " in m ([x, y] or [x, y, z])",
+                          kMaxLength, TableReader::TwoValues::kZeroZ);
   const std::string motion =
       r.Choice("motion", "fixed", {"fixed", "free", "trochoid", "table", "wave"});
   if (motion == "wave") {
@@ -296,6 +331,7 @@ void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std
     end.follows_wave = true;
     end.x_rao = ReadRao(r, "x_rao");
     end.y_rao = ReadRao(r, "y_rao");
+    end.z_rao = ReadRao(r, "z_rao");
     FollowWave(scene.waves, scene.environment.gravity, end);
   }
   if (motion == "fixed") end.motion = EndMotionKind::kFixed;
@@ -304,6 +340,7 @@ void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std
     end.motion = EndMotionKind::kTrochoid;
     end.x_amplitudes = r.Pair("x_amplitudes", {0, 0}, false, false, " in m", kMaxLength);
     end.y_amplitudes = r.Pair("y_amplitudes", {0, 0}, false, false, " in m", kMaxLength);
+    end.z_amplitudes = r.Pair("z_amplitudes", {0, 0}, false, false, " in m", kMaxLength);
     end.period = r.Positive("period", " in s", kMinPeriod, kMaxPeriod);
     end.ramp_rate = r.Positive("ramp_rate", " in 1/s", 0, kMaxRampRate);
   }

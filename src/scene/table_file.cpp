@@ -1,5 +1,6 @@
 #include "scene/table_file.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -15,7 +16,8 @@
 namespace cablefilm {
 namespace {
 
-constexpr char kHeader[] = "t,x,y";
+constexpr char kHeader[] = "t,x,y";      // a table in the plane (z = 0)
+constexpr char kHeader3D[] = "t,x,y,z";
 
 bool IsBlank(char c) { return c == ' ' || c == '\t'; }
 
@@ -49,13 +51,15 @@ bool ParseDecimal(const std::string& cell, double* value) {
   return true;
 }
 
-// Three decimal numbers separated by commas, nothing else.
-bool ParseRow(const std::string& line, std::array<double, 3>& row) {
+// `columns` (3 or 4) decimal numbers separated by commas, nothing else.
+bool ParseRow(const std::string& line, int columns, std::array<double, 4>& row) {
   std::size_t from = 0;
-  for (int i = 0; i < 3; ++i) {
+  row = {};
+  for (int i = 0; i < columns; ++i) {
+    const bool last = i + 1 == columns;
     const std::size_t comma = line.find(',', from);
-    if ((i < 2) != (comma != std::string::npos)) return false;  // two commas exactly
-    const std::string cell = line.substr(from, i < 2 ? comma - from : std::string::npos);
+    if (last == (comma != std::string::npos)) return false;  // columns - 1 commas exactly
+    const std::string cell = line.substr(from, last ? std::string::npos : comma - from);
     if (!ParseDecimal(cell, &row[i])) return false;
     from = comma + 1;
   }
@@ -74,41 +78,47 @@ struct FileCloser {
 
 }  // namespace
 
-std::vector<std::array<double, 3>> ReadMotionTable(const std::string& path) {
+std::vector<std::array<double, 4>> ReadMotionTable(const std::string& path) {
   const std::string name = EscapeText(path);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    throw Error(name + ": is a directory; expected a CSV file of rows t,x,y");
+    throw Error(name + ": is a directory; expected a CSV file of rows t,x,y or t,x,y,z");
   std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
   if (!file)
     throw Error(name + ": cannot open the motion table: " + std::strerror(errno));
 
-  std::vector<std::array<double, 3>> rows;
-  bool header = false;      // the first row was the header "t,x,y"
+  std::vector<std::array<double, 4>> rows;
+  bool header = false;      // the first row was the header "t,x,y" or "t,x,y,z"
   bool first = true;        // no row (header or data) seen yet
+  int columns = 3;          // t,x,y or t,x,y,z: the header's, or the first row's
   long number = 0;          // line number
   std::uintmax_t bytes = 0;
   auto where = [&] { return name + ":" + std::to_string(number) + ": "; };
+  auto names = [&] { return std::string(columns == 4 ? "t,x,y,z" : "t,x,y"); };
   auto which = [&] {
-    return header ? std::string(" (after the header row \"t,x,y\")")
-                  : std::string(" (this table has no header row \"t,x,y\")");
+    return header ? " (after the header row \"" + names() + "\")"
+                  : " (this table has no header row \"" + names() + "\")";
   };
   auto take = [&](std::string line) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#') return;  // blank or comment
-    std::array<double, 3> row{};
-    if (first && line == kHeader) {
+    std::array<double, 4> row{};
+    if (first && (line == kHeader || line == kHeader3D)) {
       header = true;
       first = false;
+      columns = line == kHeader3D ? 4 : 3;
       return;
     }
-    if (!ParseRow(line, row)) {
+    if (first && std::count(line.begin(), line.end(), ',') == 3) columns = 4;
+    if (!ParseRow(line, columns, row)) {
       if (first)
-        throw Error(where() + "expected a header row exactly \"t,x,y\" or three numbers t,x,y "
-                    "in s, m, m (finite decimals, separated by commas), got " + Shown(line));
-      throw Error(where() + "expected three numbers t,x,y in s, m, m (finite decimals, "
-                  "separated by commas)" + which() + ", got " + Shown(line));
+        throw Error(where() + "expected a header row exactly \"t,x,y\" or \"t,x,y,z\", or "
+                    "numbers t,x,y or t,x,y,z in s and m (finite decimals, separated by "
+                    "commas), got " + Shown(line));
+      throw Error(where() + "expected " + std::string(columns == 3 ? "three" : "four") + " numbers " + names() +
+                  " in s and m (finite decimals, separated by commas)" + which() + ", got " +
+                  Shown(line));
     }
     first = false;
     for (double v : row)
@@ -117,8 +127,9 @@ std::vector<std::array<double, 3>> ReadMotionTable(const std::string& path) {
     if (!(std::abs(row[0]) <= kMaxTime))
       throw Error(where() + "expected a time t from -" + FormatNumber(kMaxTime) + " to " +
                   FormatNumber(kMaxTime) + " s, got " + FormatNumber(row[0]));
-    if (!(std::abs(row[1]) <= kMaxLength && std::abs(row[2]) <= kMaxLength))
-      throw Error(where() + "expected offsets x, y from -" + FormatNumber(kMaxLength) + " to " +
+    if (!(std::abs(row[1]) <= kMaxLength && std::abs(row[2]) <= kMaxLength &&
+          std::abs(row[3]) <= kMaxLength))
+      throw Error(where() + "expected offsets from -" + FormatNumber(kMaxLength) + " to " +
                   FormatNumber(kMaxLength) + " m, got " + Shown(line));
     if (!rows.empty() && !(row[0] > rows.back()[0]))
       throw Error(where() + "expected the time to increase, got " + FormatNumber(row[0]) +
@@ -153,7 +164,7 @@ std::vector<std::array<double, 3>> ReadMotionTable(const std::string& path) {
       if (line.size() >= kMaxTableLineLength) {
         ++number;
         throw Error(where() + "longer than " + std::to_string(kMaxTableLineLength) +
-                    " characters; expected a row t,x,y, got " + Shown(line));
+                    " characters; expected a row " + names() + ", got " + Shown(line));
       }
       line += buffer[i];
     }
@@ -163,7 +174,7 @@ std::vector<std::array<double, 3>> ReadMotionTable(const std::string& path) {
     take(std::move(line));
   }
   if (rows.size() < 2)
-    throw Error(name + ": expected at least two rows t,x,y" + which() + ", found " +
+    throw Error(name + ": expected at least two rows " + names() + which() + ", found " +
                 std::to_string(rows.size()));
   return rows;
 }

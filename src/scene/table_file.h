@@ -1,8 +1,8 @@
 #pragma once
-// The CSV table of a recorded end motion: rows "t,x,y" (s, m, m), times strictly increasing,
-// read strictly: a first row exactly "t,x,y" (the header) or none; every other row three
-// decimal numbers (no hexadecimal, inf or nan, no empty cell); blank lines and lines starting
-// with '#' are skipped. At most kMaxTableBytes, kMaxTableRows rows and kMaxTableLineLength
+// The CSV table of a recorded end motion: rows "t,x,y" (s, m, m; z = 0) or "t,x,y,z", times
+// strictly increasing, read strictly: a first row exactly "t,x,y" or "t,x,y,z" (the header) or
+// none; every other row as many decimal numbers (no hexadecimal, inf or nan, no empty cell);
+// blank lines and lines starting with '#' are skipped. At most kMaxTableBytes, kMaxTableRows rows and kMaxTableLineLength
 // characters a line (scene_limits.h), checked while reading.
 #include <array>
 #include <string>
@@ -11,6 +11,7 @@
 namespace cablefilm {
 
 // Throws Error naming the file, the line and what was expected.
-std::vector<std::array<double, 3>> ReadMotionTable(const std::string& path);
+// Rows (t [s], dx, dy, dz [m]); dz = 0 for a table of three columns.
+std::vector<std::array<double, 4>> ReadMotionTable(const std::string& path);
 
 }  // namespace cablefilm

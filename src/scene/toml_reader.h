@@ -4,6 +4,7 @@
 // end an "unknown key" (a typo is never silently ignored). The scene's schema (scene_parser.h)
 // is written on it.
 #include <cmath>
+#include <array>
 #include <cstdint>
 #include <set>
 #include <sstream>
@@ -162,6 +163,32 @@ class TableReader {
       if (!(out[i] >= (non_negative ? 0.0 : -limit) && out[i] <= limit))
         Fail(n, key, "expected " + what + ", got " + Fmt(out[i]));
     }
+    return out;
+  }
+  // How two numbers are read where three may be: [x, y] is [x, y, 0] (a position in the plane)
+  // or [x, y, x] (a property the same across both horizontal axes).
+  enum class TwoValues { kZeroZ, kZLikeX };
+  // Two or three numbers each within [0, limit] (non_negative) or [-limit, limit].
+  std::array<double, 3> Triple(const std::string& key, std::array<double, 3> fallback,
+                               bool required, bool non_negative, const std::string& unit,
+                               double limit, TwoValues two) {
+    const toml::node* n = Get(key);
+    const std::string what = std::string("an array of two or three ") +
+                             (non_negative ? "numbers >= 0" : "numbers") + unit + " from " +
+                             (non_negative ? "0" : Fmt(-limit)) + " to " + Fmt(limit);
+    if (!n) {
+      if (required) Fail(nullptr, key, "missing; expected " + what);
+      return fallback;
+    }
+    const toml::array* a = n->as_array();
+    if (!a || (a->size() != 2 && a->size() != 3)) Fail(n, key, "expected " + what);
+    std::array<double, 3> out{};
+    for (size_t i = 0; i < a->size(); ++i) {
+      out[i] = Number(key, a->get(i), what);
+      if (!(out[i] >= (non_negative ? 0.0 : -limit) && out[i] <= limit))
+        Fail(n, key, "expected " + what + ", got " + Fmt(out[i]));
+    }
+    if (a->size() == 2) out[2] = two == TwoValues::kZLikeX ? out[0] : 0.0;
     return out;
   }
   std::string String(const std::string& key, const std::string& fallback, bool required) {

@@ -43,8 +43,8 @@ struct DampedLink {
     p.mass = M;
     EnvironmentSpec vacuum;
     vacuum.fluid_density = 0;
-    model = MakeModel({s}, {p}, vacuum, EndMotion::Fixed({0, 0}),
-                            EndMotion::Free({0, -l}), LinkLaw::kElastic);
+    model = MakeModel({s}, {p}, vacuum, EndMotion::Fixed(InPlane(0, 0)),
+                            EndMotion::Free(InPlane(0, -l)), LinkLaw::kElastic);
     const double stretch = m * kG / k;  // static [m]
     y_eq = -(l + stretch);
     d0 = 0.3 * stretch;
@@ -101,11 +101,11 @@ TEST(AxialDamping, RatioIsOfTheLinksOwnAxialMode) {
   PrismSpec p;
   p.station = 2;
   p.mass = 5.0;
-  p.added_volume = {0.001, 0.002};  // the smaller axis's added mass counts: rho 1e-3
+  p.added_volume = Vec(0.001, 0.002, 0.001);  // the smaller axis's added mass counts: rho 1e-3
   EnvironmentSpec sea;
   sea.fluid_density = 1000;
-  const Model m = MakeModel({s}, {p}, sea, EndMotion::Fixed({0, 0}),
-                                       EndMotion::Free({0, -4}), LinkLaw::kElastic);
+  const Model m = MakeModel({s}, {p}, sea, EndMotion::Fixed(InPlane(0, 0)),
+                                       EndMotion::Free(InPlane(0, -4)), LinkLaw::kElastic);
   const double k = 2e-4 * 5e9 / 2.0;
   const double m0 = 3.0, m1 = 6.0, m2 = 3.0 + 5.0 + 1.0;  // [kg]: half links, prism, added
   EXPECT_NEAR(m.line.axial_damping[0], 1.4 * std::sqrt(k * m0 * m1 / (m0 + m1)), 1e-9);

@@ -5,22 +5,25 @@
 
 #include "core/end_motion.h"
 #include "core/error.h"
+#include "test_support.h"
 
 namespace cablefilm {
 namespace {
 
-// Eq. (3) typed in from the paper.
-Vec Eq3(double t, const Vec& rest, double a, double b, double c, double d,
-                    double w, double nu) {
+// Eq. (3) typed in from the paper (x: a, b; y: c, d), with the same form across (z: e, f).
+Vec Eq3(double t, const Vec& rest, double a, double b, double c, double d, double e, double f,
+        double w, double nu) {
   const double R = 1 - (1 + nu * t) * std::exp(-nu * t);
   return rest + R * Vec(a * std::cos(w * t) + b * std::sin(w * t),
-                                    c * std::cos(w * t) + d * std::sin(w * t));
+                        c * std::cos(w * t) + d * std::sin(w * t),
+                        e * std::cos(w * t) + f * std::sin(w * t));
 }
 
 TEST(EndMotion, TrochoidFollowsEquation3) {
-  const Vec rest(80.0, 30.48);
-  const double a = 1.8288, b = 0.3, c = -0.2, d = 1.8288, w = 2 * M_PI / 10, nu = 0.5;
-  const EndMotion e = EndMotion::Trochoid(rest, a, b, c, d, w, nu);
+  const Vec rest(80.0, 30.48, -4.0);
+  const double a = 1.8288, b = 0.3, c = -0.2, d = 1.8288, ez = 0.7, fz = -0.4;
+  const double w = 2 * M_PI / 10, nu = 0.5;
+  const EndMotion e = EndMotion::Trochoid(rest, Vec(a, c, ez), Vec(b, d, fz), w, nu);
   // Starts from rest: R(0) = 0 and R'(0) = 0.
   EXPECT_EQ(e.Position(0.0), rest);
   EXPECT_EQ(e.Velocity(0.0), Vec::Zero());
@@ -28,29 +31,29 @@ TEST(EndMotion, TrochoidFollowsEquation3) {
   // Just after 0 it has barely moved: R(t) ~ nu^2 t^2 / 2, R'(t) ~ nu^2 t.
   EXPECT_LT(e.Velocity(1e-6).norm(), 1e-6 * nu * nu * 2.0 * 2.0);
   for (double t : {0.01, 0.3, 1.0, 2.7, 5.0, 13.1, 60.0}) {
-    EXPECT_LT((e.Position(t) - Eq3(t, rest, a, b, c, d, w, nu)).norm(), 1e-12) << t;
+    EXPECT_LT((e.Position(t) - Eq3(t, rest, a, b, c, d, ez, fz, w, nu)).norm(), 1e-12) << t;
     // Central differences, step h: truncation h^2/6 |x'''| ~ 1e-8 * few, round-off
     // 1e-16 * 80 / h ~ 1e-11 (velocity) and 1e-16 * 80 / h^2 ~ 1e-8 (acceleration, from the
     // velocity: 1e-16 / h ~ 1e-12). Tolerances 1e-7 hold both with room.
     const double h = 1e-4;
-    const Vec v_fd = (Eq3(t + h, rest, a, b, c, d, w, nu) -
-                                  Eq3(t - h, rest, a, b, c, d, w, nu)) / (2 * h);
+    const Vec v_fd = (Eq3(t + h, rest, a, b, c, d, ez, fz, w, nu) -
+                                  Eq3(t - h, rest, a, b, c, d, ez, fz, w, nu)) / (2 * h);
     EXPECT_LT((e.Velocity(t) - v_fd).norm(), 1e-7) << t;
     const Vec a_fd = (e.Velocity(t + h) - e.Velocity(t - h)) / (2 * h);
     EXPECT_LT((e.Acceleration(t) - a_fd).norm(), 1e-7) << t;
   }
   // Late on the ramp is done: a circle of radius 1.83 m about rest (a = d, b = -c would be
   // exact; here only check it stays within the amplitude bound).
-  EXPECT_LT((e.Position(60.0) - rest).norm(), std::hypot(a, b) + std::hypot(c, d));
+  EXPECT_LT((e.Position(60.0) - rest).norm(), std::hypot(a, b) + std::hypot(c, d) + std::hypot(ez, fz));
 }
 
 TEST(EndMotion, FixedAndFreeHoldStill) {
-  const EndMotion f = EndMotion::Fixed({1, 2});
-  EXPECT_EQ(f.Position(5.0), Vec(1, 2));
+  const EndMotion f = EndMotion::Fixed(InPlane(1, 2));
+  EXPECT_EQ(f.Position(5.0), InPlane(1, 2));
   EXPECT_EQ(f.Velocity(5.0), Vec::Zero());
   EXPECT_EQ(f.Acceleration(5.0), Vec::Zero());
   EXPECT_TRUE(f.prescribed());
-  EXPECT_FALSE(EndMotion::Free({0, 0}).prescribed());
+  EXPECT_FALSE(EndMotion::Free(InPlane(0, 0)).prescribed());
 }
 
 std::vector<Eigen::Vector3d> Rows() {
@@ -58,11 +61,11 @@ std::vector<Eigen::Vector3d> Rows() {
 }
 
 TEST(EndMotion, TableSplineThroughKnotsC2AndHeld) {
-  const Vec rest(10.0, -2.0);
+  const Vec rest = InPlane(10.0, -2.0);
   const auto rows = Rows();
-  const EndMotion e = EndMotion::Table(rest, rows);
+  const EndMotion e = testing::PlanarTable(rest, rows);
   for (const auto& r : rows)
-    EXPECT_LT((e.Position(r[0]) - rest - Vec(r[1], r[2])).norm(), 1e-14) << r[0];
+    EXPECT_LT((e.Position(r[0]) - rest - InPlane(r[1], r[2])).norm(), 1e-14) << r[0];
   // C2 at the interior knots: value, slope and curvature agree from both sides.
   const double eps = 1e-9;
   for (size_t i = 1; i + 1 < rows.size(); ++i) {
@@ -83,7 +86,7 @@ TEST(EndMotion, TableSplineThroughKnotsC2AndHeld) {
   EXPECT_LT(e.Acceleration(3.2 - 1e-12).norm(), 1e-9);
   // Holds still outside the table.
   EXPECT_EQ(e.Position(-1.0), rest);
-  EXPECT_LT((e.Position(10.0) - rest - Vec(0.6, -0.5)).norm(), 1e-15);
+  EXPECT_LT((e.Position(10.0) - rest - InPlane(0.6, -0.5)).norm(), 1e-15);
   EXPECT_EQ(e.Velocity(10.0), Vec::Zero());
   EXPECT_EQ(e.Acceleration(-1.0), Vec::Zero());
 }
@@ -91,21 +94,30 @@ TEST(EndMotion, TableSplineThroughKnotsC2AndHeld) {
 TEST(EndMotion, TableSplineHandValues) {
   // Knots (0,0), (1,1), (2,0): the natural spline has M1 = -3 (2 (h0 + h1) M1 = 6 (-1 - 1)),
   // so p(0.5) = 0.5 + (0.125 - 0.5)(-3)/6 = 0.6875, p'(0) = 1 - (-3)/6 = 1.5, p''(1) = -3.
-  const EndMotion e = EndMotion::Table({0, 0}, {{0, 0, 0}, {1, 1, 2}, {2, 0, 0}});
+  const EndMotion e = testing::PlanarTable(InPlane(0, 0), {{0, 0, 0}, {1, 1, 2}, {2, 0, 0}});
   EXPECT_NEAR(e.Position(0.5).x(), 0.6875, 1e-15);
   EXPECT_NEAR(e.Position(1.5).y(), 2 * 0.6875, 1e-15);
   EXPECT_NEAR(e.Velocity(1e-12).x(), 1.5, 1e-9);
   EXPECT_NEAR(e.Acceleration(1.0).x(), -3.0, 1e-12);
   // A linear table is reproduced exactly.
-  const EndMotion lin = EndMotion::Table({0, 0}, {{0, 0, 0}, {1, 2, -1}, {3, 6, -3}, {4, 8, -4}});
+  const EndMotion lin = testing::PlanarTable(InPlane(0, 0), {{0, 0, 0}, {1, 2, -1}, {3, 6, -3}, {4, 8, -4}});
   EXPECT_NEAR(lin.Position(2.2).x(), 4.4, 1e-14);
   EXPECT_NEAR(lin.Velocity(2.2).y(), -1.0, 1e-14);
   EXPECT_NEAR(lin.Acceleration(0.7).x(), 0.0, 1e-13);
 }
 
+TEST(EndMotion, TableMovesAcrossTheLineToo) {
+  // A linear table in all three axes is reproduced exactly, z as x and y.
+  const EndMotion lin = EndMotion::Table(Vec(1, 2, 3), {0, 1, 3},
+                                         {Vec(0, 0, 0), Vec(2, -1, 0.5), Vec(6, -3, 1.5)});
+  EXPECT_LT((lin.Position(2.2) - Vec(1 + 4.4, 2 - 2.2, 3 + 1.1)).norm(), 1e-14);
+  EXPECT_LT((lin.Velocity(0.4) - Vec(2, -1, 0.5)).norm(), 1e-14);
+  EXPECT_LT(lin.Acceleration(1.7).norm(), 1e-13);
+}
+
 TEST(EndMotion, TableRejectsBadRows) {
-  EXPECT_THROW(EndMotion::Table({0, 0}, {{0, 0, 0}}), Error);
-  EXPECT_THROW(EndMotion::Table({0, 0}, {{0, 0, 0}, {1, 0, 0}, {1, 1, 1}}), Error);
+  EXPECT_THROW(testing::PlanarTable(InPlane(0, 0), {{0, 0, 0}}), Error);
+  EXPECT_THROW(testing::PlanarTable(InPlane(0, 0), {{0, 0, 0}, {1, 0, 0}, {1, 1, 1}}), Error);
 }
 
 }  // namespace

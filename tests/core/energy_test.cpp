@@ -30,10 +30,10 @@ EnergyRun RunReleasedLine(double dt_fraction, double duration) {
   env.fluid_density = 0;  // vacuum: no drag, no buoyancy, no added mass
   const int N = 20;
   const Model m = testing::UniformCable(N, 10.0, 1.0, 1e-4, 1e9, env,
-                                             EndMotion::Fixed({0, 0}), EndMotion::Fixed({10.1, 0}));
+                                             EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(10.1, 0)));
   const double dt = dt_fraction * ComputeStabilityLimit(m).time_step;
   Points x(kDim, N + 1);
-  for (int j = 0; j <= N; ++j) x.col(j) = Vec(10.1 * j / N, 0.0);
+  for (int j = 0; j <= N; ++j) x.col(j) = InPlane(10.1 * j / N, 0.0);
   Data d = testing::StartData(m, testing::AtRest(x), Scheme::kExplicit);
   const State& s = d.state;
   const Inputs in = SceneInputs(m);

@@ -20,6 +20,11 @@ namespace {
 
 using testing::ExactCatenary;
 using testing::UniformCable;
+using Vec2 = Eigen::Vector2d;  // the exact catenary lives in the line's vertical plane (x, y)
+
+// A point of the exact catenary's plane as a 3D point (z = 0): comparing in 3D also counts any
+// drift of the lumped line out of its plane as error.
+Vec Spatial(const Vec2& r) { return Vec(r.x(), r.y(), 0.0); }
 
 constexpr double kG = 9.80665;
 
@@ -37,9 +42,9 @@ Errors Compare(const Model& m, const State& st, const ExactCatenary& exact,
   Errors e;
   double tmax = 0;
   for (int j = 0; j <= m.line.links; ++j) {
-    Vec r;
+    Vec2 r;
     exact.Evaluate(exact.H(), exact.V0(), m.line.arc_length[j], &r, nullptr);
-    e.position = std::max(e.position, (st.x.col(j) - origin - r).norm());
+    e.position = std::max(e.position, (st.x.col(j) - origin - Spatial(r)).norm());
   }
   for (int j = 0; j < m.line.links; ++j) {
     double T;
@@ -60,11 +65,11 @@ Errors Compare(const Model& m, const State& st, const ExactCatenary& exact,
 // the lumped station j should sit off the exact line by the leading term
 //   e(s_j) = (l^2/24) [J_{s_j} J_L^{-1} D(L) - D(s_j)],  D(s) = sum over pieces of f'(.^-) - f'(.^+)
 // computed here from the exact solution alone. This is the 1/N^2 error itself, not a bound.
-Vec LeadingError(const ExactCatenary& exact, const std::vector<double>& piece_ends,
-                             double l, double s) {
+Vec2 LeadingError(const ExactCatenary& exact, const std::vector<double>& piece_ends,
+                  double l, double s) {
   const double H = exact.H(), V0 = exact.V0();
   auto D = [&](double upto) {
-    Vec d = Vec::Zero();
+    Vec2 d = Vec2::Zero();
     double a = 0;
     for (double b : piece_ends) {
       if (upto <= a) break;
@@ -75,9 +80,9 @@ Vec LeadingError(const ExactCatenary& exact, const std::vector<double>& piece_en
     return d;
   };
   auto J = [&](double at) {
-    Mat j;
+    Eigen::Matrix2d j;
     const double dh = 1e-6 * H, dv = 1e-6 * (std::abs(V0) + H);
-    Vec p, q;
+    Vec2 p, q;
     exact.Evaluate(H + dh, V0, at, &p, nullptr);
     exact.Evaluate(H - dh, V0, at, &q, nullptr);
     j.col(0) = (p - q) / (2 * dh);
@@ -87,7 +92,7 @@ Vec LeadingError(const ExactCatenary& exact, const std::vector<double>& piece_en
     return j;
   };
   const double L = piece_ends.back();
-  const Vec dp = J(L).fullPivLu().solve(D(L));
+  const Vec2 dp = J(L).fullPivLu().solve(D(L));
   return (l * l / 24.0) * (J(s) * dp - D(s));
 }
 
@@ -98,10 +103,10 @@ double LeadingTermMismatch(const Model& m, const State& st, const ExactCatenary&
   double gap = 0, size = 0;
   const double l = m.line.rest_length[0];
   for (int j = 0; j <= m.line.links; ++j) {
-    Vec r;
+    Vec2 r;
     exact.Evaluate(exact.H(), exact.V0(), m.line.arc_length[j], &r, nullptr);
-    const Vec predicted = LeadingError(exact, piece_ends, l, m.line.arc_length[j]);
-    gap = std::max(gap, (st.x.col(j) - origin - r - predicted).norm());
+    const Vec2 predicted = LeadingError(exact, piece_ends, l, m.line.arc_length[j]);
+    gap = std::max(gap, (st.x.col(j) - origin - Spatial(r + predicted)).norm());
     size = std::max(size, predicted.norm());
   }
   return gap / size;
@@ -122,7 +127,7 @@ TEST_P(IrvineCatenary, LumpedEquilibriumConvergesAtSecondOrder) {
   const double w = (c.mu - c.rho * c.area) * kG;  // net weight per unstretched length [N/m]
   const double EA = c.E * c.area;
   ExactCatenary exact({{c.length, w, EA, 0.0}});
-  const Vec target = c.b - c.a;
+  const Vec2 target = (c.b - c.a).head<2>();
   // Newton from H = wL, V0 = -wL/2 (the guess only picks the root).
   const double miss = exact.Shoot(target, std::abs(w) * c.length, -0.5 * w * c.length);
   ASSERT_LT(miss, 1e-10 * c.length) << "the exact catenary's shooting did not converge";
@@ -162,14 +167,14 @@ INSTANTIATE_TEST_SUITE_P(
     Uniform, IrvineCatenary,
     ::testing::Values(
         // Slack: 100 m of chain between points 82.5 m apart (sag ~ 25 m), vacuum.
-        UniformCase{"slack", 100.0, 2.0, 2.5e-4, 4.0e10, 0.0, {0.0, 0.0}, {80.0, 20.0}},
+        UniformCase{"slack", 100.0, 2.0, 2.5e-4, 4.0e10, 0.0, {0.0, 0.0, 0.0}, {80.0, 20.0, 0.0}},
         // Nearly taut: the chord is 0.2 % shorter than the line (sag ~ 2.7 m), vacuum.
-        UniformCase{"nearly_taut", 100.0, 2.0, 2.5e-4, 4.0e10, 0.0, {0.0, 0.0},
-                    {99.3, 10.0}},
+        UniformCase{"nearly_taut", 100.0, 2.0, 2.5e-4, 4.0e10, 0.0, {0.0, 0.0, 0.0},
+                    {99.3, 10.0, 0.0}},
         // Stretched: soft rope (EA = 50 kN) whose chord is 3 % longer than its unstretched
         // length, immersed in sea water (buoyancy enters through w = (mu - rho sigma) g).
-        UniformCase{"stretched_buoyancy", 100.0, 2.0, 1.0e-3, 5.0e7, 1025.0, {5.0, -3.0},
-                    {107.5, 9.0}}),
+        UniformCase{"stretched_buoyancy", 100.0, 2.0, 1.0e-3, 5.0e7, 1025.0, {5.0, -3.0, 0.0},
+                    {107.5, 9.0, 0.0}}),
     [](const ::testing::TestParamInfo<UniformCase>& i) { return std::string(i.param.name); });
 
 // ---------------------------------------------------------------------------------------------
@@ -205,8 +210,8 @@ TEST(P63Equilibrium, MatchesExactPiecewiseCatenary) {
     const Model m = BuildModel(s);
     EquilibriumReport rep;
     const State st = SolveEquilibrium(m, &rep);
-    const Errors e = Compare(m, st, exact, {0.0, 0.0});
-    const double mismatch = LeadingTermMismatch(m, st, exact, piece_ends, {0.0, 0.0});
+    const Errors e = Compare(m, st, exact, Vec::Zero());
+    const double mismatch = LeadingTermMismatch(m, st, exact, piece_ends, Vec::Zero());
     std::printf("[ P63 ] N=%d: max position error %.3e m, off the predicted leading term by "
                 "%.2e of it; max tension error %.3e (relative), %d iterations, residual %.2e N "
                 "of %.4g N\n",
@@ -265,7 +270,7 @@ void ExpectConvergedFromChord(const Model& m, const char* what) {
 TEST(EquilibriumRobustness, FromStraightChord) {
   EnvironmentSpec vacuum;
   vacuum.fluid_density = 0;
-  const auto fixed = [](double x, double y) { return EndMotion::Fixed({x, y}); };
+  const auto fixed = [](double x, double y) { return EndMotion::Fixed(InPlane(x, y)); };
   // Slack (chord 60 % of the length): the chord has every link compressed, so T = 0 everywhere.
   ExpectConvergedFromChord(
       UniformCable(80, 100.0, 2.0, 2.5e-4, 4e10, vacuum, fixed(0, 0), fixed(50, 30)), "slack");
@@ -319,14 +324,14 @@ TEST(EquilibriumRobustness, FreeHangingCable) {
   EnvironmentSpec sea;
   sea.fluid_density = rho;
   // Station 0 free and starting off to the side; station s fixed at the top.
-  const Model m = UniformCable(N, L, mu, area, E, sea, EndMotion::Free({15.0, -5.0}),
-                                    EndMotion::Fixed({1.0, 2.0}));
+  const Model m = UniformCable(N, L, mu, area, E, sea, EndMotion::Free(InPlane(15.0, -5.0)),
+                                    EndMotion::Fixed(InPlane(1.0, 2.0)));
   EquilibriumReport rep;
   const State st = SolveEquilibrium(m, StraightChord(m), &rep);
   const double l = L / N, w = (mu - rho * area) * kG, EA = area * E;
   double y = 2.0, err = 0;
   for (int j = N; j >= 0; --j) {
-    err = std::max(err, (st.x.col(j) - Vec(1.0, y)).norm());
+    err = std::max(err, (st.x.col(j) - InPlane(1.0, y)).norm());
     if (j > 0) {
       const double T = w * l * (j - 0.5);  // weight below link j-1/2 (stations 0..j-1)
       y -= l * (1.0 + T / EA);
@@ -355,8 +360,8 @@ TEST(EquilibriumTowedCable, EveryLinkAtTheCriticalAngle) {
     for (double U : {0.25, 1.0, 2.0}) {
       sea.current = U;
       // The first guess: the free end straight below the fixed one.
-      const Model m = UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed({0, 0}),
-                                        EndMotion::Free({0, -L}), d, Cd);
+      const Model m = UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed(InPlane(0, 0)),
+                                        EndMotion::Free(InPlane(0, -L)), d, Cd);
       EquilibriumReport rep;
       State st;
       ASSERT_NO_THROW(st = SolveEquilibrium(m, &rep)) << n << " links, " << U << " m/s";
@@ -395,8 +400,8 @@ Model SlackLineInCurrent(int links, double current) {
   EnvironmentSpec sea;
   sea.fluid_density = 1025;
   sea.current = current;
-  return UniformCable(links, 300, 2.0, 2.5e-4, 4e10, sea, EndMotion::Fixed({0, 0}),
-                      EndMotion::Fixed({54, 0}), 0.02, 1.2);
+  return UniformCable(links, 300, 2.0, 2.5e-4, 4e10, sea, EndMotion::Fixed(InPlane(0, 0)),
+                      EndMotion::Fixed(InPlane(54, 0)), 0.02, 1.2);
 }
 
 TEST(EquilibriumSlackLine, ConvergesInEveryCurrent) {
@@ -458,8 +463,8 @@ TEST(EquilibriumSlackLine, PseudoTransientFallbackReachesTheSameState) {
 TEST(EquilibriumRobustness, ReportsNonConvergence) {
   EnvironmentSpec vacuum;
   vacuum.fluid_density = 0;
-  const Model m = UniformCable(20, 10.0, 1.0, 1e-4, 1e10, vacuum, EndMotion::Fixed({0, 0}),
-                                    EndMotion::Fixed({6, 0}));
+  const Model m = UniformCable(20, 10.0, 1.0, 1e-4, 1e10, vacuum, EndMotion::Fixed(InPlane(0, 0)),
+                                    EndMotion::Fixed(InPlane(6, 0)));
   EquilibriumOptions opt;
   opt.max_iterations = 1;
   try {

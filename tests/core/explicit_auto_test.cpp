@@ -117,11 +117,11 @@ TEST(ExplicitAuto, WhippingChainInVacuumGainsNoEnergy) {
   SectionSpec wire{20.0, 20, 0.0254, 5.067e-4, 2.75, 9.0e10, 0, 0};
   EnvironmentSpec env;
   env.fluid_density = 0;
-  const Vec dir(std::sin(M_PI / 3), -std::cos(M_PI / 3));
-  const Model m = MakeModel({wire}, {}, env, EndMotion::Fixed({0, 0}),
+  const Vec dir = InPlane(std::sin(M_PI / 3), -std::cos(M_PI / 3));
+  const Model m = MakeModel({wire}, {}, env, EndMotion::Fixed(InPlane(0, 0)),
                                        EndMotion::Free(20.0 * dir), LinkLaw::kElastic);
   State s;
-  s.x.resize(2, m.stations());
+  s.x.resize(kDim, m.stations());
   for (int j = 0; j <= m.line.links; ++j) s.x.col(j) = m.line.arc_length[j] * dir;
   s.v = Points::Zero(kDim, m.stations());
   ExpectNoEnergyPumped(m, s, 1.0 / 30, 10.0);

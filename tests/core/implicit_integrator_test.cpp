@@ -47,8 +47,8 @@ struct TautString {
     EnvironmentSpec env;
     env.gravity = 0;
     env.fluid_density = 0;
-    model = UniformCable(N, N * l0, mu, 1e-4, EA / 1e-4, env, EndMotion::Fixed({0, 0}),
-                         EndMotion::Fixed({N * L, 0}));
+    model = UniformCable(N, N * l0, mu, 1e-4, EA / 1e-4, env, EndMotion::Fixed(InPlane(0, 0)),
+                         EndMotion::Fixed(InPlane(N * L, 0)));
   }
   static double Omega(int k) { return 2.0 * std::sqrt(T0 / (mass * L)) * std::sin(k * M_PI / (2.0 * N)); }
   static double Shape(int k, int j) { return std::sin(k * M_PI * j / N); }
@@ -56,9 +56,9 @@ struct TautString {
   // by (EA/T0) slope^2/2 ~ 1e-8 relative, so the motion is linear to that order.
   State Initial(int k, double A) const {
     State s;
-    s.x.resize(2, N + 1);
+    s.x.resize(kDim, N + 1);
     s.v = Points::Zero(kDim, N + 1);
-    for (int j = 0; j <= N; ++j) s.x.col(j) = Vec(j * L, A * Shape(k, j));
+    for (int j = 0; j <= N; ++j) s.x.col(j) = InPlane(j * L, A * Shape(k, j));
     return s;
   }
 };
@@ -175,13 +175,13 @@ Model ChainWithWeight(double current, int n) {
   p.station = 2 * n;
   p.mass = 100;
   p.volume = 0.02;
-  p.added_volume = {0.02, 0.02};
-  p.drag_coefficient = {1.0, 1.0};
-  p.drag_area = {0.1, 0.1};
+  p.added_volume = Vec(0.02, 0.02, 0.02);
+  p.drag_coefficient = Vec(1.0, 1.0, 1.0);
+  p.drag_area = Vec(0.1, 0.1, 0.1);
   EnvironmentSpec env;
   env.fluid_density = 1025;
   env.current = current;
-  return MakeModel({a, b}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -40}),
+  return MakeModel({a, b}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -40)),
                          LinkLaw::kElastic);
 }
 
@@ -304,11 +304,11 @@ TEST(ImplicitIntegrator, SwingingChainInVacuumGainsNoEnergy) {
   SectionSpec wire{20.0, 20, 0.0254, 5.067e-4, 2.75, 9.0e10, 0, 0};
   EnvironmentSpec env;
   env.fluid_density = 0;
-  const Vec dir(std::sin(M_PI / 3), -std::cos(M_PI / 3));
-  const Model m = MakeModel({wire}, {}, env, EndMotion::Fixed({0, 0}),
+  const Vec dir = InPlane(std::sin(M_PI / 3), -std::cos(M_PI / 3));
+  const Model m = MakeModel({wire}, {}, env, EndMotion::Fixed(InPlane(0, 0)),
                                        EndMotion::Free(20.0 * dir), LinkLaw::kElastic);
   State s;
-  s.x.resize(2, m.stations());
+  s.x.resize(kDim, m.stations());
   for (int j = 0; j <= m.line.links; ++j) s.x.col(j) = m.line.arc_length[j] * dir;
   s.v = Points::Zero(kDim, m.stations());
   const double h = 20 * ComputeStabilityLimit(m).time_step;
@@ -567,9 +567,9 @@ Model JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = fal
   p.station = 4;
   p.mass = 20;
   p.volume = 0.01;
-  p.added_volume = {0.01, 0.02};
-  p.drag_coefficient = {1.0, 0.7};
-  p.drag_area = {0.1, 0.05};
+  p.added_volume = Vec(0.01, 0.02, 0.01);
+  p.drag_coefficient = Vec(1.0, 0.7, 1.0);
+  p.drag_area = Vec(0.1, 0.05, 0.1);
   EnvironmentSpec env;
   env.fluid_density = 1025;
   env.current = 0.7;
@@ -598,30 +598,34 @@ Model JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = fal
     env.current_profile.y = {-3.0, -0.7, 0.4, 2.5};
     env.current_profile.speed = {0.2, 0.9, -0.4, 1.1};
   }
-  return MakeModel({a, b}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({10, -1}),
+  return MakeModel({a, b}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(10, -1)),
                          LinkLaw::kElastic);
 }
 
 // Station positions and velocities: links alternately 5-15 % stretched and 10-40 % short, at
-// random angles; velocities up to 3 m/s.
+// random angles out of the vertical plane as well as in it; velocities up to 3 m/s in 3D.
 void RandomConfiguration(const Model& m, std::mt19937& rng, Points& x,
                          Points& v, Points& a) {
   std::uniform_real_distribution<double> u(-1, 1);
-  x.resize(2, m.stations());
-  v.resize(2, m.stations());
-  a.resize(2, m.stations());
+  x.resize(kDim, m.stations());
+  v.resize(kDim, m.stations());
+  a.resize(kDim, m.stations());
   x.col(0).setZero();
   for (int k = 0; k < m.line.links; ++k) {
     const double ratio = k % 3 == 2 ? 0.75 + 0.15 * u(rng) : 1.1 + 0.05 * u(rng);
-    const double angle = 0.8 * u(rng);
-    x.col(k + 1) = x.col(k) + ratio * m.line.rest_length[k] * Vec(std::cos(angle), std::sin(angle));
+    const double elevation = 0.8 * u(rng);
+    const double azimuth = 0.8 * u(rng);
+    x.col(k + 1) = x.col(k) + ratio * m.line.rest_length[k] *
+                                  Vec(std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
+                                      std::cos(elevation) * std::sin(azimuth));
   }
   // Drawn one by one: the order in which a call's arguments are evaluated differs between
   // compilers, and every compiler must test the same states (among them a taut link whose
   // damping holds its tension at zero, which only clang's order drew before).
   auto draw = [&](double scale) {
-    const double first = u(rng);
-    return Vec(scale * first, scale * u(rng));
+    Vec r;
+    for (int c = 0; c < kDim; ++c) r(c) = scale * u(rng);
+    return r;
   };
   for (int j = 0; j <= m.line.links; ++j) {
     v.col(j) = draw(3.0);
@@ -632,11 +636,11 @@ void RandomConfiguration(const Model& m, std::mt19937& rng, Points& x,
 // Block matrix of the free stations as a dense matrix.
 Eigen::MatrixXd Dense(const BlockTridiagonal& s) {
   const int n = s.size();
-  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(kDim * n, kDim * n);
   for (int i = 0; i < n; ++i) {
-    d.block<2, 2>(2 * i, 2 * i) = s.diag[i];
-    if (i > 0) d.block<2, 2>(2 * i, 2 * i - 2) = s.lower[i];
-    if (i + 1 < n) d.block<2, 2>(2 * i, 2 * i + 2) = s.upper[i];
+    d.block<kDim, kDim>(kDim * i, kDim * i) = s.diag[i];
+    if (i > 0) d.block<kDim, kDim>(kDim * i, kDim * (i - 1)) = s.lower[i];
+    if (i + 1 < n) d.block<kDim, kDim>(kDim * i, kDim * (i + 1)) = s.upper[i];
   }
   return d;
 }
@@ -674,24 +678,24 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
       ComputeGeometry(m, SceneWater(m), t, xx, ws.geometry);
       ComputeTensions(m, ws.geometry, vv, ws.tension);
       ComputeStationForces(m, SceneWater(m), ws.geometry, ws.tension, vv, ws.force);
-      Eigen::VectorXd f(2 * n);
-      for (int j = j0; j <= j1; ++j) f.segment<2>(2 * (j - j0)) = ws.force.col(j);
+      Eigen::VectorXd f(kDim * n);
+      for (int j = j0; j <= j1; ++j) f.segment<kDim>(kDim * (j - j0)) = ws.force.col(j);
       return f;
     };
     auto inertia_times_a = [&](const Points& xx) {
       ComputeGeometry(m, SceneWater(m), t, xx, ws.geometry);
-      Eigen::VectorXd f(2 * n);
+      Eigen::VectorXd f(kDim * n);
       for (int j = j0; j <= j1; ++j)
-        f.segment<2>(2 * (j - j0)) = StationInertia(m, ws.geometry, j) * a.col(j);
+        f.segment<kDim>(kDim * (j - j0)) = StationInertia(m, ws.geometry, j) * a.col(j);
       return f;
     };
     // Central differences, step 1e-6 m (m/s): truncation ~(1e-6 / 0.1 m)^2 = 1e-10 relative,
     // round-off ~1e-16 * |F| / 1e-6 ~ 1e-10 relative: both far below the 1e-6 asked.
     const double d = 1e-6;
-    Eigen::MatrixXd dFdx(2 * n, 2 * n), dFdv(2 * n, 2 * n), dMadx(2 * n, 2 * n);
+    Eigen::MatrixXd dFdx(kDim * n, kDim * n), dFdv(kDim * n, kDim * n), dMadx(kDim * n, kDim * n);
     for (int j = j0; j <= j1; ++j)
-      for (int c = 0; c < 2; ++c) {
-        const int col = 2 * (j - j0) + c;
+      for (int c = 0; c < kDim; ++c) {
+        const int col = kDim * (j - j0) + c;
         Points xp = x, xm = x, vp = v, vm = v;
         xp(c, j) += d;
         xm(c, j) -= d;
@@ -710,9 +714,9 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
     AddForceJacobian(m, SceneWater(m), ws.geometry, ws.tension, v, 1.0, s1);
     AddInertiaJacobian(m, ws.geometry, a, 0.0, i0);
     AddInertiaJacobian(m, ws.geometry, a, 1.0, i1);
-    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(kDim * n, kDim * n);
     for (int j = j0; j <= j1; ++j)
-      M.block<2, 2>(2 * (j - j0), 2 * (j - j0)) = StationInertia(m, ws.geometry, j);
+      M.block<kDim, kDim>(kDim * (j - j0), kDim * (j - j0)) = StationInertia(m, ws.geometry, j);
     worst_x = std::max(worst_x, RelativeError(-Dense(s0), dFdx));
     worst_v = std::max(worst_v, RelativeError(-(Dense(s1) - Dense(s0)), dFdv));
     worst_ma = std::max(worst_ma, RelativeError(Dense(i0), dMadx));

@@ -109,7 +109,7 @@ class Pendulum {
   }
   Vec EndPosition(const Eigen::VectorXd& th) const {
     Vec r = Vec::Zero();
-    for (int i = 0; i < n_; ++i) r += l_[i] * Vec(std::cos(th[i]), std::sin(th[i]));
+    for (int i = 0; i < n_; ++i) r += l_[i] * InPlane(std::cos(th[i]), std::sin(th[i]));
     return r;
   }
   // Tension of link 0: stations 1..N feel only link 0's pull -T t_0 and gravity, so
@@ -117,15 +117,15 @@ class Pendulum {
   // a_j = sum_{i<j} l_i (th_i'' n_i - th_i'^2 t_i) (t_i = (cos, sin), n_i = (-sin, cos)).
   double FirstTension(const Eigen::VectorXd& th, const Eigen::VectorXd& w) const {
     const Eigen::VectorXd al = Accel(th, w);
-    Vec p = Vec(0, g_ * S_[0]);
+    Vec p = InPlane(0, g_ * S_[0]);
     Vec a = Vec::Zero();
     for (int j = 1; j <= n_; ++j) {
       const int i = j - 1;
-      const Vec t(std::cos(th[i]), std::sin(th[i])), nn(-std::sin(th[i]), std::cos(th[i]));
+      const Vec t = InPlane(std::cos(th[i]), std::sin(th[i])), nn = InPlane(-std::sin(th[i]), std::cos(th[i]));
       a += l_[i] * (al[i] * nn - w[i] * w[i] * t);
       p += mass_[j] * a;
     }
-    return -Vec(std::cos(th[0]), std::sin(th[0])).dot(p);
+    return -InPlane(std::cos(th[0]), std::sin(th[0])).dot(p);
   }
 
  private:
@@ -196,7 +196,7 @@ Errors MaxErrors(const std::vector<Sample>& a, const std::vector<Sample>& b) {
 void CheckPendulumRelease(int links, double interval, int count, double dt, double pos_tol,
                           double ten_tol, double rk4_step) {
   const double L = 1.0, mu = 1.0;
-  const Model m = Chain(links, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Free({L, 0}));
+  const Model m = Chain(links, L, mu, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(L, 0)));
   const Pendulum p = PendulumOf(m);
   // RK4 at a tiny step h; its own error (global O(h^4)) is 1/15 of the difference from the
   // run at 2h, which must be below 1 % of the tolerances: the truth is exact for this purpose.
@@ -275,7 +275,7 @@ struct ChainSample {
 Points PendulumStations(const Model& m, const Eigen::VectorXd& th) {
   Points x = Points::Zero(kDim, m.stations());
   for (int i = 0; i < m.line.links; ++i)
-    x.col(i + 1) = x.col(i) + m.line.rest_length[i] * Vec(std::cos(th[i]), std::sin(th[i]));
+    x.col(i + 1) = x.col(i) + m.line.rest_length[i] * InPlane(std::cos(th[i]), std::sin(th[i]));
   return x;
 }
 
@@ -329,7 +329,7 @@ AutoRun RunAuto(const Model& m, double tolerance, const std::vector<double>& tim
 
 void CheckAutoRelease(int links, double rk4_step) {
   const double L = 5.0, mu = 1.0;
-  const Model m = Chain(links, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Free({L, 0}));
+  const Model m = Chain(links, L, mu, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(L, 0)));
   const std::vector<double> times = {0.25, 0.5, 1.0};
   // RK4's own error is 1/15 of its difference from the run at 2h: held to 1e-7 m and 1e-6 of
   // the tension, 1e-2 or less of the smallest errors measured below (3e-6 m, 2e-6).
@@ -391,8 +391,8 @@ TEST(InextensibleAuto, EndsPulledApartEndTheRunWithABlowUpError) {
   // A 10 m chain whose far end is pulled from 8 m to 12 m from the pinned one in 1 s: at
   // t = 0.5 s it would have to stretch. The error control must not chase ever smaller substeps
   // (a hang): it ends the run with a BlowUpError that says why, near t = 0.5 s.
-  const Model m = Chain(10, 10.0, 1.0, EndMotion::Fixed({0, 0}),
-                             EndMotion::Table({8, 0}, {{0, 0, 0}, {1, 4, 0}}));
+  const Model m = Chain(10, 10.0, 1.0, EndMotion::Fixed(InPlane(0, 0)),
+                             testing::PlanarTable(InPlane(8, 0), {{0, 0, 0}, {1, 4, 0}}));
   State s = SolveInextensibleEquilibrium(m, nullptr);
   testing::Stepper integ(Scheme::kInextensible, 0.5, 1e-5);
   integ.Initialize(m, s);
@@ -442,7 +442,7 @@ double SimulatedPeriod(const Model& m, const Eigen::VectorXd& shape, const Eigen
   s.x = Points::Zero(kDim, m.stations());
   for (int i = 0; i < m.line.links; ++i)
     s.x.col(i + 1) =
-        s.x.col(i) + m.line.rest_length[i] * Vec(std::sin(phi0[i]), -std::cos(phi0[i]));
+        s.x.col(i) + m.line.rest_length[i] * InPlane(std::sin(phi0[i]), -std::cos(phi0[i]));
   s.v = Points::Zero(kDim, m.stations());
   testing::Stepper integ(Scheme::kInextensible);
   integ.Initialize(m, s);
@@ -470,7 +470,7 @@ double SimulatedPeriod(const Model& m, const Eigen::VectorXd& shape, const Eigen
 TEST(InextensibleHangingChain, SmallOscillationPeriods) {
   const int N = 20;
   const double L = 1.0;
-  const Model m = Chain(N, L, 1.0, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -L}));
+  const Model m = Chain(N, L, 1.0, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -L)));
   const HangingModes modes = HangingChainModes(m);
   const double dt = 1e-3;
   for (int k = 0; k < 2; ++k) {
@@ -500,7 +500,7 @@ TEST(InextensibleHangingChain, SmallOscillationPeriods) {
     const double exact = 0.5 * j0[k] * std::sqrt(kG / L);
     double prev = 0;
     for (int n : {20, 40, 80}) {
-      const Model mn = Chain(n, L, 1.0, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -L}));
+      const Model mn = Chain(n, L, 1.0, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -L)));
       const double err = std::abs(HangingChainModes(mn).omega[k] / exact - 1);
       std::printf("  mode %d, N=%d: discrete omega vs Bessel %.3e relative\n", k + 1, n, err);
       if (n == 20) {
@@ -627,13 +627,13 @@ struct DiscreteChain {
   int n;
   double l, W;
   double H = 0, V0 = 0;
-  Vec End(double H_, double V0_, Mat* J) const {
+  Vec End(double H_, double V0_, Eigen::Matrix2d* J) const {  // J = d(x, y)/d(H, V0)
     Vec r = Vec::Zero();
     if (J) J->setZero();
     for (int k = 0; k < n; ++k) {
       const double V = V0_ + k * W, T = std::hypot(H_, V), T3 = T * T * T;
-      r += l / T * Vec(H_, V);
-      if (J) *J += l / T3 * (Mat() << V * V, -H_ * V, -H_ * V, H_ * H_).finished();
+      r += l / T * InPlane(H_, V);
+      if (J) *J += l / T3 * (Eigen::Matrix2d() << V * V, -H_ * V, -H_ * V, H_ * H_).finished();
     }
     return r;
   }
@@ -641,10 +641,10 @@ struct DiscreteChain {
     H = H_guess;
     V0 = V0_guess;
     for (int it = 0; it < 100; ++it) {
-      Mat J;
+      Eigen::Matrix2d J;
       const Vec r = End(H, V0, &J) - target;
       if (r.norm() < 1e-15 * n * l) break;
-      Vec step = -J.partialPivLu().solve(r);
+      const Eigen::Vector2d step = -J.partialPivLu().solve(r.head<2>());
       double a = 1;
       while (H + a * step[0] <= 0) a *= 0.5;
       H += a * step[0];
@@ -655,7 +655,7 @@ struct DiscreteChain {
     Vec r = Vec::Zero();
     for (int k = 0; k < j; ++k) {
       const double V = V0 + k * W;
-      r += l / std::hypot(H, V) * Vec(H, V);
+      r += l / std::hypot(H, V) * InPlane(H, V);
     }
     return r;
   }
@@ -682,7 +682,7 @@ struct Catenary {
   double U(double s) const { return s / a - std::sinh(x0 / a); }
   Vec Point(double s) const {
     const double u = U(s);
-    return {x0 + a * std::asinh(u), a * (std::sqrt(1 + u * u) - std::cosh(x0 / a))};
+    return InPlane(x0 + a * std::asinh(u), a * (std::sqrt(1 + u * u) - std::cosh(x0 / a)));
   }
   double Tension(double s) const { return w * a * std::sqrt(1 + U(s) * U(s)); }
   double V(double s) const { return w * a * U(s); }  // vertical tension component
@@ -694,7 +694,7 @@ struct CatenaryErrors {
 
 CatenaryErrors CheckCatenary(int N) {
   const double L = 10, D = 8, h = 2, mu = 1.5;
-  const Model m = Chain(N, L, mu, EndMotion::Fixed({0, 0}), EndMotion::Fixed({D, h}));
+  const Model m = Chain(N, L, mu, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(D, h)));
   EquilibriumReport rep;
   const State st = SolveInextensibleEquilibrium(m, &rep);
   testing::Stepper integ(Scheme::kInextensible);
@@ -708,8 +708,8 @@ CatenaryErrors CheckCatenary(int N) {
   const Catenary cat(L, D, h, mu * kG);
   DiscreteChain dc{N, L / N, mu * L / N * kG};
   // The continuous catenary's (H, V at s = l/2) seed Newton; the answer is the discrete chain's.
-  dc.Solve({D, h}, cat.w * cat.a, cat.V(0.5 * L / N));
-  EXPECT_LT((dc.Station(N) - Vec(D, h)).norm(), 1e-12 * L);
+  dc.Solve(InPlane(D, h), cat.w * cat.a, cat.V(0.5 * L / N));
+  EXPECT_LT((dc.Station(N) - InPlane(D, h)).norm(), 1e-12 * L);
   for (int j = 0; j <= N; ++j) {
     e.discrete_x = std::max(e.discrete_x, (st.x.col(j) - dc.Station(j)).norm());
     e.continuous_x = std::max(e.continuous_x, (st.x.col(j) - cat.Point(j * L / N)).norm());
@@ -737,8 +737,8 @@ TEST(InextensibleEquilibrium, ChainBetweenFixedPointsIsTheCatenary) {
     EXPECT_LT(e.discrete_x, 1e-10);
     EXPECT_LT(e.discrete_T, 1e-8);
     EXPECT_LT(e.length, 1e-12);
-    EXPECT_LT(e.imbalance, 1e-8 * StaticForceScale(Chain(10, 10, 1.5, EndMotion::Fixed({0, 0}),
-                                                          EndMotion::Fixed({8, 2}))));
+    EXPECT_LT(e.imbalance, 1e-8 * StaticForceScale(Chain(10, 10, 1.5, EndMotion::Fixed(InPlane(0, 0)),
+                                                          EndMotion::Fixed(InPlane(8, 2)))));
   }
   // Against the continuous catenary the lumped chain differs by O(l^2) (measured at N = 20 and
   // 40: 3.39e-3 and 8.46e-4 m, 4.09e-2 and 1.02e-2 N of ~100 N): halving l divides the
@@ -750,12 +750,12 @@ TEST(InextensibleEquilibrium, ChainBetweenFixedPointsIsTheCatenary) {
 }
 
 TEST(InextensibleEquilibrium, EndsFurtherApartThanTheCableThrow) {
-  const Model taut = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({10.1, 0}));
+  const Model taut = Chain(10, 10, 1, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(10.1, 0)));
   EXPECT_THROW(SolveInextensibleEquilibrium(taut, nullptr), Error);
-  const Model slant = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({6, 8.2}));
+  const Model slant = Chain(10, 10, 1, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(6, 8.2)));
   EXPECT_THROW(SolveInextensibleEquilibrium(slant, nullptr), Error);
   // Just shorter than the cable is fine (and lies on the chord's rest lengths).
-  const Model ok = Chain(10, 10, 1, EndMotion::Fixed({0, 0}), EndMotion::Fixed({6, 7.9}));
+  const Model ok = Chain(10, 10, 1, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(6, 7.9)));
   EXPECT_NO_THROW(SolveInextensibleEquilibrium(ok, nullptr));
 }
 

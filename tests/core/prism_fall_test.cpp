@@ -30,13 +30,13 @@ Model PrismModel() {
   p.station = 1;
   p.mass = kMass;
   p.volume = kVolume;
-  p.added_volume = {0.004, kAddedY};
-  p.drag_coefficient = {1.0, kCy};
-  p.drag_area = {0.08, kSy};
+  p.added_volume = Vec(0.004, kAddedY, 0.004);
+  p.drag_coefficient = Vec(1.0, kCy, 1.0);
+  p.drag_area = Vec(0.08, kSy, 0.08);
   EnvironmentSpec env;
   env.gravity = kG;
   env.fluid_density = kRho;
-  return MakeModel({s}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -1}),
+  return MakeModel({s}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -1)),
                          LinkLaw::kElastic);
 }
 
@@ -55,8 +55,8 @@ void Fall(double dt, double* v_err, double* y_err, double* v_end) {
   const Model m = PrismModel();
   const Closed c;
   State s;
-  s.x = Points(2, 2);
-  s.x << 0, 0, 0, -1;
+  s.x = Points(kDim, 2);
+  s.x << 0, 0, 0, -1, 0, 0;  // rows x, y, z
   s.v = Points::Zero(kDim, 2);
   testing::Stepper integ(Scheme::kExplicit);
   integ.Initialize(m, s);
@@ -76,8 +76,8 @@ TEST(PrismFall, InitialAccelerationIncludesVirtualMass) {
   const Model m = PrismModel();
   const Closed c;
   ForceWorkspace ws(m.line.links);
-  Points x(2, 2), v = Points::Zero(kDim, 2), a(2, 2);
-  x << 0, 0, 0, -1;
+  Points x(kDim, 2), v = Points::Zero(kDim, 2), a(kDim, 2);
+  x << 0, 0, 0, -1, 0, 0;  // rows x, y, z
   ComputeAccelerations(m, SceneInputs(m), SceneWater(m), 0.0, x, v, ws, a);
   std::printf("[ prism ] a(0) = %.12f m/s^2, W/(m* + rho V^y + cable) = %.12f m/s^2 "
               "(without virtual mass it would be %.6f)\n",

@@ -98,8 +98,8 @@ Model MooringLine(const MooringCase& c, int links, SeabedSpec bed = {}) {
   bed.y = c.bed_y;
   env.seabed = bed;
   return UniformCable(links, c.length, c.mu, c.area, c.EA / c.area, env,
-                      EndMotion::Fixed({0.0, c.bed_y}),
-                      EndMotion::Fixed({c.span, c.bed_y + c.depth}));
+                      EndMotion::Fixed(InPlane(0.0, c.bed_y)),
+                      EndMotion::Fixed(InPlane(c.span, c.bed_y + c.depth)));
 }
 
 struct GroundedResult {
@@ -225,9 +225,9 @@ TEST(SeabedEquilibrium, FindsTheGroundedLengthFromPoorStarts) {
   const Points through = EquilibriumGuess(no_bed);
   ASSERT_LT(through.row(1).minCoeff(), c.bed_y - 40.0);  // it does cut through the bed
 
-  Points flat(2, m.stations());
+  Points flat(kDim, m.stations());
   for (int j = 0; j < m.line.links; ++j)
-    flat.col(j) = Vec(c.span * j / (m.line.links - 1.0) * 0.999, c.bed_y);
+    flat.col(j) = InPlane(c.span * j / (m.line.links - 1.0) * 0.999, c.bed_y);
   flat.col(m.line.links) = m.ends.end.Position(0);
 
   const struct {
@@ -269,8 +269,8 @@ Model ChainOnBed(double friction) {
   env.seabed.present = true;
   env.seabed.y = 0;
   env.seabed.friction = friction;
-  const EndMotion end = friction > 0 ? EndMotion::Free({20, 0}) : EndMotion::Fixed({20, 0});
-  return UniformCable(20, 20.0, c.mu, c.area, c.EA / c.area, env, EndMotion::Fixed({0, 0}), end,
+  const EndMotion end = friction > 0 ? EndMotion::Free(InPlane(20, 0)) : EndMotion::Fixed(InPlane(20, 0));
+  return UniformCable(20, 20.0, c.mu, c.area, c.EA / c.area, env, EndMotion::Fixed(InPlane(0, 0)), end,
                       0.137, 2.4, 1.0);
 }
 
@@ -359,7 +359,7 @@ TEST(SeabedDynamics, DroppedLineComesToRest) {
   env.seabed.y = 0;
   env.seabed.friction = 0.5;
   const Model m = UniformCable(40, 20.0, c.mu, c.area, c.EA / c.area, env,
-                                    EndMotion::Fixed({0, 0}), EndMotion::Free({19.9, 2.0}), 0.137,
+                                    EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(19.9, 2.0)), 0.137,
                                     2.4, 1.0);
   const double sink = m.line.net_weight[5] / m.line.rest_length[5] / m.env.seabed.stiffness;
   for (const Scheme kind : {Scheme::kImplicit, Scheme::kExplicit}) {
@@ -423,8 +423,8 @@ TEST(SeabedDynamics, DraggedChainTensionGrowsByMuWPerMetre) {
     const double t = 0.05 * i, tau = 1.0;
     rows.emplace_back(t, speed * (t - tau + tau * std::exp(-t / tau)), 0.0);
   }
-  const Model m = MakeModel({sec}, {}, env, EndMotion::Free({0, 0}),
-                                       EndMotion::Table({30, 0}, rows), LinkLaw::kElastic);
+  const Model m = MakeModel({sec}, {}, env, EndMotion::Free(InPlane(0, 0)),
+                                       testing::PlanarTable(InPlane(30, 0), rows), LinkLaw::kElastic);
   State s;
   s.x = StraightChord(m);
   s.v = Points::Zero(kDim, m.stations());
@@ -463,7 +463,7 @@ TEST(SeabedDynamics, DraggedChainTensionGrowsByMuWPerMetre) {
 TEST(SeabedDynamics, ShipDrivenTouchdownRunsThroughWithoutStepCollapse) {
   const MooringCase c;
   const int N = 50;
-  const EndMotion ship = EndMotion::Trochoid({c.span, c.bed_y + c.depth}, 3.0, 0.0, 0.0, 1.0,
+  const EndMotion ship = EndMotion::Trochoid(InPlane(c.span, c.bed_y + c.depth), InPlane(3.0, 0.0), InPlane(0.0, 1.0),
                                              2 * M_PI / 12.0, 0.3);
   EnvironmentSpec env;
   env.fluid_density = c.rho;
@@ -472,7 +472,7 @@ TEST(SeabedDynamics, ShipDrivenTouchdownRunsThroughWithoutStepCollapse) {
   env.seabed.y = c.bed_y;
   auto line = [&](const EnvironmentSpec& e) {
     return UniformCable(N, c.length, c.mu, c.area, c.EA / c.area, e,
-                        EndMotion::Fixed({0.0, c.bed_y}), ship, 0.137, 2.4, 1.0);
+                        EndMotion::Fixed(InPlane(0.0, c.bed_y)), ship, 0.137, 2.4, 1.0);
   };
   const Model grounded = line(env), hanging = line(no_bed);
   struct Run {
@@ -523,14 +523,14 @@ TEST(SeabedDynamics, ShipDrivenTouchdownRunsThroughWithoutStepCollapse) {
 // 49 landings against 20, hops of 21.5 mm against 4.9 mm.
 TEST(SeabedDynamics, LandingsStopWithoutRebound) {
   const MooringCase c;
-  const EndMotion ship = EndMotion::Trochoid({c.span, c.bed_y + c.depth}, 3.0, 0.0, 0.0, 1.0,
+  const EndMotion ship = EndMotion::Trochoid(InPlane(c.span, c.bed_y + c.depth), InPlane(3.0, 0.0), InPlane(0.0, 1.0),
                                              2 * M_PI / 12.0, 0.3);
   EnvironmentSpec env;
   env.fluid_density = c.rho;
   env.seabed.present = true;
   env.seabed.y = c.bed_y;
   const Model m = UniformCable(50, c.length, c.mu, c.area, c.EA / c.area, env,
-                                    EndMotion::Fixed({0.0, c.bed_y}), ship, 0.137, 2.4, 1.0);
+                                    EndMotion::Fixed(InPlane(0.0, c.bed_y)), ship, 0.137, 2.4, 1.0);
   struct Events {
     int landings = 0;
     double highest_hop = 0;  // m above the bed, between a lift-off and a landing within 1 s
@@ -585,8 +585,8 @@ TEST(SeabedInextensible, GroundedCatenaryAndRestingLine) {
   env.seabed.present = true;
   env.seabed.y = c.bed_y;
   SectionSpec sec{c.length, 200, 0.137, c.area, c.mu, c.EA / c.area, 2.4, 1.0};
-  const Model m = MakeModel({sec}, {}, env, EndMotion::Fixed({0.0, c.bed_y}),
-                                       EndMotion::Fixed({c.span, c.bed_y + c.depth}),
+  const Model m = MakeModel({sec}, {}, env, EndMotion::Fixed(InPlane(0.0, c.bed_y)),
+                                       EndMotion::Fixed(InPlane(c.span, c.bed_y + c.depth)),
                                        LinkLaw::kInextensible);
   State st = SolveInextensibleEquilibrium(m, nullptr);
   testing::Stepper integ(Scheme::kInextensible, 0.5, 1e-6 * c.length);
@@ -629,8 +629,8 @@ TEST(SeabedInextensible, GroundedChainInAShearedCurrent) {
   env.current_profile.speed = {0.2, 0.4, 0.8};
   auto line = [&](double ea_factor, LinkLaw law) {
     SectionSpec sec{c.length, 100, 0.137, c.area, c.mu, ea_factor * c.EA / c.area, 2.4, 1.0};
-    return MakeModel({sec}, {}, env, EndMotion::Fixed({0.0, c.bed_y}),
-                           EndMotion::Fixed({c.span, c.bed_y + c.depth}), law);
+    return MakeModel({sec}, {}, env, EndMotion::Fixed(InPlane(0.0, c.bed_y)),
+                           EndMotion::Fixed(InPlane(c.span, c.bed_y + c.depth)), law);
   };
   const Model m = line(1.0, LinkLaw::kInextensible);
   EquilibriumReport report;
@@ -673,11 +673,11 @@ TEST(CurrentProfile, LinkDragTakesTheCurrentAtItsMidpoint) {
   env.gravity = 0;
   env.current_profile.y = {-10.0, 0.0};
   env.current_profile.speed = {3.0, 0.5};
-  const Model m = UniformCable(1, 2.0, 1.0, 1e-4, 1e11, env, EndMotion::Fixed({0, 0}),
-                                    EndMotion::Free({0, -2}), 0.1, 1.0, 0.0);
+  const Model m = UniformCable(1, 2.0, 1.0, 1e-4, 1e11, env, EndMotion::Fixed(InPlane(0, 0)),
+                                    EndMotion::Free(InPlane(0, -2)), 0.1, 1.0, 0.0);
   ForceWorkspace ws(m.line.links);
-  Points x(2, 2), v = Points::Zero(kDim, 2);
-  x << 0, 0, 0, -2;
+  Points x(kDim, 2), v = Points::Zero(kDim, 2);
+  x << 0, 0, 0, -2, 0, 0;  // rows x, y, z
   ComputeGeometry(x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
   ComputeStationForces(m, SceneWater(m), ws.geometry, ws.tension, v, ws.force);
@@ -697,10 +697,10 @@ TEST(CurrentProfile, ConstantTableIsTheUniformCurrent) {
     p.station = 20;
     p.mass = 100;
     p.volume = 0.02;
-    p.added_volume = {0.02, 0.02};
-    p.drag_coefficient = {1.0, 1.0};
-    p.drag_area = {0.1, 0.1};
-    return MakeModel({a}, {p}, env, EndMotion::Fixed({0, 0}), EndMotion::Free({0, -20}),
+    p.added_volume = Vec(0.02, 0.02, 0.02);
+    p.drag_coefficient = Vec(1.0, 1.0, 1.0);
+    p.drag_area = Vec(0.1, 0.1, 0.1);
+    return MakeModel({a}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -20)),
                            LinkLaw::kElastic);
   };
   EnvironmentSpec uniform;

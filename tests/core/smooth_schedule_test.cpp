@@ -8,6 +8,7 @@
 
 #include "core/end_motion.h"
 #include "core/smooth_schedule.h"
+#include "test_support.h"
 
 namespace cablefilm {
 namespace {
@@ -83,7 +84,7 @@ struct Modulated {
 };
 
 EndMotion P63Fairlead() {  // case P63's circular orbit: radius 1.8288 m, period 10 s, nu 0.5
-  return EndMotion::Trochoid({80.0, 30.48}, 1.8288, 0.0, 0.0, 1.8288, 2 * kPi / 10, 0.5);
+  return EndMotion::Trochoid(InPlane(80.0, 30.48), InPlane(1.8288, 0.0), InPlane(0.0, 1.8288), 2 * kPi / 10, 0.5);
 }
 
 TEST(ModulatedEndMotion, IdentityModulationIsTheScenesMotion) {
@@ -118,7 +119,7 @@ TEST(ModulatedEndMotion, ChangesAreSmoothAndEndOnTheNewOrbit) {
   EXPECT_LT((m.Position(19.0) - plain.Position(19.0)).norm(), 1e-12);
   // After both: radius 2 x 1.8288 m about the rest point (the ramp R(t) is 1 to 1e-9 by
   // t = 50 s), period 6 s.
-  const Vec rest(80.0, 30.48);
+  const Vec rest = InPlane(80.0, 30.48);
   for (double t : {50.0, 51.3, 77.7}) {
     EXPECT_NEAR((m.Position(t) - rest).norm(), 2 * 1.8288, 1e-8) << t;
     EXPECT_LT((m.Position(t + 6.0) - m.Position(t)).norm(), 1e-8) << t;
@@ -128,12 +129,12 @@ TEST(ModulatedEndMotion, ChangesAreSmoothAndEndOnTheNewOrbit) {
 
 TEST(ModulatedEndMotion, TableMotionIsScaledAndRetimed) {
   const std::vector<Eigen::Vector3d> rows{{0, 0, 0}, {1, 1, 0}, {2, 1, 1}, {3, 0, 1}, {4, 0, 0}};
-  const EndMotion plain = EndMotion::Table({5, 5}, rows);
+  const EndMotion plain = testing::PlanarTable(InPlane(5, 5), rows);
   SmoothSchedule scale(3.0), rate(0.5);  // constant: three times the offsets, half as fast
   const Modulated m{plain, scale, rate};
   for (double t : {0.5, 1.7, 3.3, 6.1}) {
-    const Vec expect = Vec(5, 5) + 3.0 * (plain.Position(0.5 * t) -
-                                                                   Vec(5, 5));
+    const Vec expect = InPlane(5, 5) + 3.0 * (plain.Position(0.5 * t) -
+                                                                   InPlane(5, 5));
     EXPECT_LT((m.Position(t) - expect).norm(), 1e-12) << t;
     EXPECT_LT((m.Velocity(t) - 1.5 * plain.Velocity(0.5 * t)).norm(), 1e-12) << t;
     EXPECT_LT((m.Acceleration(t) - 0.75 * plain.Acceleration(0.5 * t)).norm(), 1e-12) << t;

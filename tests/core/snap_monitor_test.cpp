@@ -35,13 +35,13 @@ struct OneLinkSnap {
     EnvironmentSpec vacuum;
     vacuum.fluid_density = 0;
     vacuum.gravity = 0;
-    model = UniformCable(1, l, mu, 1e-4, EA / 1e-4, vacuum, EndMotion::Fixed({0, 0}),
-                         EndMotion::Free({0.9 * l, 0}));
+    model = UniformCable(1, l, mu, 1e-4, EA / 1e-4, vacuum, EndMotion::Fixed(InPlane(0, 0)),
+                         EndMotion::Free(InPlane(0.9 * l, 0)));
     state.t = 0;
     state.x = Points::Zero(kDim, 2);
-    state.x.col(1) = Vec(0.9 * l, 0);  // slack: 0.1 l to go
+    state.x.col(1) = InPlane(0.9 * l, 0);  // slack: 0.1 l to go
     state.v = Points::Zero(kDim, 2);
-    state.v.col(1) = Vec(v, 0);
+    state.v.col(1) = InPlane(v, 0);
   }
   double station_mass() const { return model.line.cable_mass[1]; }  // mu l / 2
   double peak() const { return v * std::sqrt(EA / l * station_mass()); }

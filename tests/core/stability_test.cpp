@@ -26,13 +26,13 @@ Model Line(int links) {
   weight.station = 7;
   weight.mass = 450;
   weight.volume = 0.06;
-  weight.added_volume = {0.06, 0.03};
-  weight.drag_coefficient = {1, 1};
-  weight.drag_area = {0.16, 0.16};
+  weight.added_volume = Vec(0.06, 0.03, 0.06);
+  weight.drag_coefficient = Vec(1, 1, 1);
+  weight.drag_area = Vec(0.16, 0.16, 0.16);
   EnvironmentSpec env;
   env.fluid_density = 1025;
-  return MakeModel({wire, rope}, {weight}, env, EndMotion::Fixed({0, 0}),
-                         EndMotion::Fixed({40, 0}), LinkLaw::kElastic);
+  return MakeModel({wire, rope}, {weight}, env, EndMotion::Fixed(InPlane(0, 0)),
+                         EndMotion::Fixed(InPlane(40, 0)), LinkLaw::kElastic);
 }
 
 // omega_max^2 of the linearised free stations at x (v = 0: no drag, so the forces are the
@@ -47,30 +47,32 @@ double HighestEigenvalue(const Model& m, const Points& x) {
     ComputeStationForces(m, SceneWater(m), ws.geometry, ws.tension, v, ws.force);
     return Points(ws.force);
   };
-  Eigen::MatrixXd K(2 * n, 2 * n), M = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  Eigen::MatrixXd K(kDim * n, kDim * n), M = Eigen::MatrixXd::Zero(kDim * n, kDim * n);
   const double h = 1e-7 * m.line.rest_length.minCoeff();
-  for (int c = 0; c < 2 * n; ++c) {
+  for (int c = 0; c < kDim * n; ++c) {
     Points xp = x, xm = x;
-    xp(c % 2, j0 + c / 2) += h;
-    xm(c % 2, j0 + c / 2) -= h;
+    xp(c % kDim, j0 + c / kDim) += h;
+    xm(c % kDim, j0 + c / kDim) -= h;
     const Points df = (forces(xp) - forces(xm)) / (2 * h);
-    for (int r = 0; r < 2 * n; ++r) K(r, c) = -df(r % 2, j0 + r / 2);
+    for (int r = 0; r < kDim * n; ++r) K(r, c) = -df(r % kDim, j0 + r / kDim);
   }
   K = 0.5 * (K + K.transpose()).eval();
   ComputeGeometry(x, ws.geometry);
-  for (int i = 0; i < n; ++i) M.block<2, 2>(2 * i, 2 * i) = StationInertia(m, ws.geometry, j0 + i);
+  for (int i = 0; i < n; ++i) M.block<kDim, kDim>(kDim * i, kDim * i) = StationInertia(m, ws.geometry, j0 + i);
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M, Eigen::EigenvaluesOnly);
   return es.eigenvalues().maxCoeff();
 }
 
-// Stations along a wave y = a sin(k x) with link j stretched by strain[j] (negative: slack).
+// Stations along a wave winding up and down (elevation a cos(0.7 j)) and sideways (azimuth
+// a/2 sin(0.9 j)), link j stretched by strain[j] (negative: slack).
 Points WavyState(const Model& m, double amplitude, const std::vector<double>& strain) {
-  Points x(2, m.stations());
+  Points x(kDim, m.stations());
   x.col(0).setZero();
   for (int j = 0; j < m.line.links; ++j) {
-    const double angle = amplitude * std::cos(0.7 * j);
+    const double up = amplitude * std::cos(0.7 * j), side = 0.5 * amplitude * std::sin(0.9 * j);
     x.col(j + 1) = x.col(j) + m.line.rest_length[j] * (1 + strain[j]) *
-                                  Vec(std::cos(angle), std::sin(angle));
+                                  Vec(std::cos(up) * std::cos(side), std::sin(up),
+                                      std::cos(up) * std::sin(side));
   }
   return x;
 }

@@ -67,6 +67,17 @@ inline std::unique_ptr<Stepper> MakeStepper(Scheme scheme, const Model&, double 
   return std::make_unique<Stepper>(scheme, rho_inf, tolerance);
 }
 
+// A motion table in the plane: rows (t [s], dx [m], dy [m]).
+inline EndMotion PlanarTable(const Vec& rest, const std::vector<Eigen::Vector3d>& rows) {
+  std::vector<double> times;
+  std::vector<Vec> offsets;
+  for (const Eigen::Vector3d& r : rows) {
+    times.push_back(r[0]);
+    offsets.push_back(InPlane(r[1], r[2]));
+  }
+  return EndMotion::Table(rest, times, offsets);
+}
+
 // A state at rest at positions x (t = 0).
 inline State AtRest(const Points& x) {
   State s;
@@ -93,7 +104,8 @@ inline Model UniformCable(int links, double length, double mass_per_length, doub
 }
 
 // The exact static shape of an elastic line in Lagrangian (unstretched) arc length s, Irvine
-// (1981) "Cable Structures" ch. 2, generalised to uniform pieces and point loads.
+// (1981) "Cable Structures" ch. 2, generalised to uniform pieces and point loads; in its own
+// plane (2D vectors: horizontal, vertical).
 // Station 0 sits at the origin; F(s) = (H, V(s)) is the force the part beyond s exerts on the
 // part before it (the tension vector, along the tangent). Equilibrium of an element gives
 // dV/ds = w (w: net weight per unstretched length, N/m), a jump V(s+) = V(s-) + W at a point
@@ -114,8 +126,8 @@ class ExactCatenary {
   explicit ExactCatenary(std::vector<Piece> pieces) : pieces_(std::move(pieces)) {}
 
   // Position (x, y) relative to station 0 and the tension at arc length s.
-  void Evaluate(double H, double V0, double s, Vec* r, double* tension) const {
-    Vec p = Vec::Zero();
+  void Evaluate(double H, double V0, double s, Eigen::Vector2d* r, double* tension) const {
+    Eigen::Vector2d p = Eigen::Vector2d::Zero();
     double V = V0, start = 0;
     for (size_t i = 0; i < pieces_.size(); ++i) {
       const Piece& pc = pieces_[i];
@@ -130,7 +142,7 @@ class ExactCatenary {
     if (tension) *tension = std::hypot(H, V);
   }
   // dr/ds = (1 + T/EA) (H, V)/T at arc length s (just after s at a point load).
-  Vec Slope(double H, double V0, double s) const {
+  Eigen::Vector2d Slope(double H, double V0, double s) const {
     double V = V0, start = 0, EA = pieces_.front().EA;
     for (const Piece& pc : pieces_) {
       if (s < start) break;
@@ -140,11 +152,11 @@ class ExactCatenary {
       start += pc.length;
     }
     const double T = std::hypot(H, V);
-    return (1.0 + T / EA) / T * Vec(H, V);
+    return (1.0 + T / EA) / T * Eigen::Vector2d(H, V);
   }
   // d/ds of dr/ds at s, from the left (s^-) or the right (s^+) of a piece boundary:
   // with dV/ds = w, d/ds[(1/EA + 1/T)(H, V)] = (0, w/EA) + (w H / T^3)(-V, H).
-  Vec SlopeDerivative(double H, double V0, double s, bool from_left) const {
+  Eigen::Vector2d SlopeDerivative(double H, double V0, double s, bool from_left) const {
     double V = V0, start = 0, EA = 0, w = 0;
     for (const Piece& pc : pieces_) {
       V += pc.point_load;
@@ -155,15 +167,15 @@ class ExactCatenary {
       start += pc.length;
     }
     const double T = std::hypot(H, V);
-    return Vec(0.0, w / EA) + (w * H / (T * T * T)) * Vec(-V, H);
+    return Eigen::Vector2d(0.0, w / EA) + (w * H / (T * T * T)) * Eigen::Vector2d(-V, H);
   }
   double total_length() const {
     double L = 0;
     for (const Piece& p : pieces_) L += p.length;
     return L;
   }
-  Vec EndPoint(double H, double V0) const {
-    Vec r;
+  Eigen::Vector2d EndPoint(double H, double V0) const {
+    Eigen::Vector2d r;
     Evaluate(H, V0, total_length(), &r, nullptr);
     return r;
   }
@@ -171,18 +183,18 @@ class ExactCatenary {
   // Newton on (log H, V0) so that the far end lands on `target` (relative to station 0), with a
   // finite-difference Jacobian and backtracking. The guess only selects the root; the answer is
   // fixed by the closed form. Returns the end-point miss [m].
-  double Shoot(const Vec& target, double H_guess, double V0_guess) {
+  double Shoot(const Eigen::Vector2d& target, double H_guess, double V0_guess) {
     double u = std::log(H_guess), V0 = V0_guess;
-    auto miss = [&](double uu, double vv) -> Vec { return EndPoint(std::exp(uu), vv) - target; };
-    Vec r = miss(u, V0);
+    auto miss = [&](double uu, double vv) -> Eigen::Vector2d { return EndPoint(std::exp(uu), vv) - target; };
+    Eigen::Vector2d r = miss(u, V0);
     for (int it = 0; it < 200 && r.norm() > 1e-13 * total_length(); ++it) {
       const double du = 1e-7, dv = 1e-7 * (std::abs(V0) + std::exp(u));
-      Mat J;
+      Eigen::Matrix2d J;
       J.col(0) = (miss(u + du, V0) - miss(u - du, V0)) / (2 * du);
       J.col(1) = (miss(u, V0 + dv) - miss(u, V0 - dv)) / (2 * dv);
-      const Vec step = -J.fullPivLu().solve(r);
+      const Eigen::Vector2d step = -J.fullPivLu().solve(r);
       double a = 1.0;
-      Vec r_new;
+      Eigen::Vector2d r_new;
       for (int k = 0; k < 60; ++k, a *= 0.5) {
         const double su = std::max(-2.0, std::min(2.0, a * step[0]));
         r_new = miss(u + su, V0 + a * step[1]);
@@ -203,13 +215,13 @@ class ExactCatenary {
   double V0() const { return V0_; }
 
  private:
-  static Vec Segment(double H, double Va, double w, double EA, double s) {
+  static Eigen::Vector2d Segment(double H, double Va, double w, double EA, double s) {
     const double Vb = Va + w * s;
     const double x = H * s / EA + H / w * (std::asinh(Vb / H) - std::asinh(Va / H));
     // sqrt(H^2+Vb^2) - sqrt(H^2+Va^2) written without cancellation.
     const double dT = (Vb - Va) * (Vb + Va) / (std::hypot(H, Vb) + std::hypot(H, Va));
     const double y = (Va * s + 0.5 * w * s * s) / EA + dT / w;
-    return {x, y};
+    return Eigen::Vector2d(x, y);
   }
 
   std::vector<Piece> pieces_;

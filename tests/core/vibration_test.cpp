@@ -57,8 +57,8 @@ TEST(TautString, TransverseModesMatchDiscreteFrequencies) {
   EnvironmentSpec env;
   env.gravity = 0;
   env.fluid_density = 0;
-  const Model m = UniformCable(N, N * l0, mu, 1e-4, EA / 1e-4, env, EndMotion::Fixed({0, 0}),
-                                    EndMotion::Fixed({N * L, 0}));
+  const Model m = UniformCable(N, N * l0, mu, 1e-4, EA / 1e-4, env, EndMotion::Fixed(InPlane(0, 0)),
+                                    EndMotion::Fixed(InPlane(N * L, 0)));
   // A stretched link turned by a small angle pulls back with T0 times the angle: transverse
   // stiffness T0 / L. So m y_j'' = (T0/L)(y_{j+1} - 2 y_j + y_{j-1}), with modes
   // y_j = sin(k pi j / N) and omega_k = 2 sqrt(T0 / (m L)) sin(k pi / (2N)).
@@ -68,11 +68,11 @@ TEST(TautString, TransverseModesMatchDiscreteFrequencies) {
     const double expected = 2 * M_PI / VerletFrequency(omega, dt);
     // Amplitude 1e-4 / k m: the extra stretch it causes changes the tension by
     // (EA/T0) slope^2 / 2 ~ 1e-8 relative, so the motion is linear to that order.
-    Points x0(2, N + 1);
+    Points x0(kDim, N + 1);
     Eigen::VectorXd shape(N + 1);
     for (int j = 0; j <= N; ++j) {
       shape[j] = std::sin(k * M_PI * j / N);
-      x0.col(j) = Vec(j * L, 1e-4 / k * shape[j]);
+      x0.col(j) = InPlane(j * L, 1e-4 / k * shape[j]);
     }
     const double period = MeasurePeriod(m, x0, dt, shape, 1, 7);  // three periods
     const double rel = std::abs(period / expected - 1);
@@ -146,18 +146,18 @@ TEST(HangingChain, SimulatedPeriodMatchesEigenproblemAndConverges) {
     EnvironmentSpec env;
     env.gravity = g;
     env.fluid_density = 0;
-    const Model m = UniformCable(N, L, mu, area, EA / area, env, EndMotion::Fixed({0, 0}),
-                                      EndMotion::Free({0, -L}));
+    const Model m = UniformCable(N, L, mu, area, EA / area, env, EndMotion::Fixed(InPlane(0, 0)),
+                                      EndMotion::Free(InPlane(0, -L)));
     Eigen::VectorXd mode;
     const double omega = ChainFirstMode(N, L, mu, g, EA, &mode);
     mode /= std::abs(mode[N]);
     // The exact lumped equilibrium: hanging straight down, each link stretched by its load.
     const double l = L / N;
-    Points x0(2, N + 1);
+    Points x0(kDim, N + 1);
     double y = 0;
     for (int j = 0; j <= N; ++j) {
       if (j > 0) y -= l * (1 + g * mu * l * (N - j + 0.5) / EA);
-      x0.col(j) = Vec(1e-4 * L * mode[j], y);  // 1 mm at the free end
+      x0.col(j) = InPlane(1e-4 * L * mode[j], y);  // 1 mm at the free end
     }
     const double dt = 0.5 * ComputeStabilityLimit(m).time_step;
     // Mass-weighted projection on the mode: the modal coordinate.

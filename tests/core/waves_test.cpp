@@ -79,10 +79,10 @@ struct Airy {
   double C(double z) const { return std::cosh(k * (z + h)) / std::sinh(k * h); }
   double S(double z) const { return std::sinh(k * (z + h)) / std::sinh(k * h); }
   Vec velocity(double z, double th) const {
-    return a * omega * Vec(C(z) * std::cos(th), S(z) * std::sin(th));
+    return a * omega * InPlane(C(z) * std::cos(th), S(z) * std::sin(th));
   }
   Vec acceleration(double z, double th) const {
-    return a * omega * omega * Vec(C(z) * std::sin(th), -S(z) * std::cos(th));
+    return a * omega * omega * InPlane(C(z) * std::sin(th), -S(z) * std::cos(th));
   }
 };
 
@@ -120,11 +120,11 @@ TEST(WaveKinematics, AiryFormulasAtSeveralDepths) {
       for (double x : {0.0, 0.13 * L, 0.5 * L}) {
         for (double t : {0.0, 0.3 * c.T, 0.77 * c.T}) {
           const double th = wave.k * x - omega * t + 0.3;
-          const WaterKinematics w = KinematicsAt(wave, x, z, t);
+          const WaterKinematics w = KinematicsAt(wave, InPlane(x, z), t);
           const double scale_u = airy.a * omega * airy.C(0), scale_a = scale_u * omega;
           worst = std::max(worst, (w.velocity - airy.velocity(z, th)).norm() / scale_u);
           worst = std::max(worst, (w.acceleration - airy.acceleration(z, th)).norm() / scale_a);
-          EXPECT_NEAR(SurfaceAt(wave, x, t), airy.a * std::cos(th), 1e-12 * airy.a);
+          EXPECT_NEAR(SurfaceAt(wave, InPlane(x, 0.0), t), airy.a * std::cos(th), 1e-12 * airy.a);
         }
       }
     }
@@ -149,20 +149,20 @@ TEST(WaveKinematics, WheelerStretchingAtZeroCrossingCrestAndBed) {
     // theta = k x - omega t = pi / 2 at t = 0.
     const double x_cross = 0.5 * kPi / wave.k;
     for (double zf : {-1.0, -0.5, -0.1, 0.0}) {
-      const WaterKinematics w = KinematicsAt(wave, x_cross, zf * c.h, 0.0);
+      const WaterKinematics w = KinematicsAt(wave, InPlane(x_cross, zf * c.h), 0.0);
       EXPECT_LT((w.velocity - airy.velocity(zf * c.h, 0.5 * kPi)).norm(), 1e-12 * scale);
       EXPECT_LT((w.acceleration - airy.acceleration(zf * c.h, 0.5 * kPi)).norm(),
                 1e-12 * scale * omega);
     }
-    const WaterKinematics crest = KinematicsAt(wave, 0.0, airy.a, 0.0);
+    const WaterKinematics crest = KinematicsAt(wave, InPlane(0.0, airy.a), 0.0);
     EXPECT_NEAR(crest.velocity.x(), airy.a * omega / std::tanh(wave.k * c.h), 1e-12 * scale);
     EXPECT_NEAR(crest.velocity.y(), 0.0, 1e-12 * scale);
     // Above the crest: held at the surface's value (the station is dry there anyway).
-    EXPECT_NEAR(KinematicsAt(wave, 0.0, airy.a + 3.0, 0.0).velocity.x(), crest.velocity.x(),
+    EXPECT_NEAR(KinematicsAt(wave, InPlane(0.0, airy.a + 3.0), 0.0).velocity.x(), crest.velocity.x(),
                 1e-12 * scale);
     for (double th : {0.0, 0.4, 2.0}) {
       const double x = th / wave.k;
-      const WaterKinematics bed = KinematicsAt(wave, x, -c.h, 0.0);
+      const WaterKinematics bed = KinematicsAt(wave, InPlane(x, -c.h), 0.0);
       EXPECT_NEAR(bed.velocity.x(), airy.a * omega * std::cos(th) / std::sinh(wave.k * c.h),
                   1e-12 * scale);
       EXPECT_NEAR(bed.velocity.y(), 0.0, 1e-12 * scale);
@@ -183,7 +183,7 @@ TEST(WaveKinematics, IncompressibleAndIrrotational) {
     const double order = 1.1 * std::max(wave.k * wave.amplitude, wave.amplitude / c.h);
     for (double zf : {-0.9, -0.5, -0.05})
       for (double x : {0.1 * L, 0.6 * L}) {
-        const WaterKinematics w = KinematicsAt(wave, x, zf * c.h, 1.3);
+        const WaterKinematics w = KinematicsAt(wave, InPlane(x, zf * c.h), 1.3);
         const Mat& G = w.velocity_gradient;
         EXPECT_LT(std::abs(G(0, 0) + G(1, 1)), order * scale) << c.what;
         EXPECT_LT(std::abs(G(0, 1) - G(1, 0)), order * scale) << c.what;
@@ -197,6 +197,7 @@ TEST(WaveKinematics, IncompressibleAndIrrotational) {
 TEST(WaveKinematics, GradientsMatchCentralDifferences) {
   for (const DepthCase& c : kDepths) {
     WaveSpec spec = Spec(0, c.T, c.h, 0.7);
+    spec.heading = 0.6;  // [rad] off the x axis, so that all nine gradient terms are live
     const double L = 2 * kPi / WaveNumber(2 * kPi / c.T, kG, c.h);
     spec.height = std::min(0.1 * L, 0.5 * c.h);
     spec.ramp_rate = 1.0 / c.T;
@@ -205,13 +206,13 @@ TEST(WaveKinematics, GradientsMatchCentralDifferences) {
     double worst = 0;
     for (double zf : {-0.95, -0.6, -0.2, 0.02})
       for (double xf : {0.05, 0.3, 0.8}) {
-        const double x = xf * L, y = zf * c.h;
-        const WaterKinematics w = KinematicsAt(wave, x, y, t);
+        const Vec at(xf * L, zf * c.h, -0.4 * xf * L);
+        const WaterKinematics w = KinematicsAt(wave, at, t);
         Mat Gu, Ga;
-        for (int axis = 0; axis < 2; ++axis) {
+        for (int axis = 0; axis < kDim; ++axis) {
           const Vec e = d * Vec::Unit(axis);
-          const WaterKinematics p = KinematicsAt(wave, x + e.x(), y + e.y(), t);
-          const WaterKinematics m = KinematicsAt(wave, x - e.x(), y - e.y(), t);
+          const WaterKinematics p = KinematicsAt(wave, at + e, t);
+          const WaterKinematics m = KinematicsAt(wave, at - e, t);
           Gu.col(axis) = (p.velocity - m.velocity) / (2 * d);
           Ga.col(axis) = (p.acceleration - m.acceleration) / (2 * d);
         }
@@ -236,10 +237,10 @@ TEST(WaveKinematics, AccelerationIsTheVelocitysRate) {
     const double scale = wave.amplitude * wave.omega * wave.omega / std::tanh(wave.k * c.h);
     for (double t : {0.3 * c.T, 2.1 * c.T}) {
       const double dt = 1e-5 * c.T;
-      const Vec rate = (KinematicsAt(wave, 0.2 * L, -0.3 * c.h, t + dt).velocity -
-                                    KinematicsAt(wave, 0.2 * L, -0.3 * c.h, t - dt).velocity) /
+      const Vec rate = (KinematicsAt(wave, InPlane(0.2 * L, -0.3 * c.h), t + dt).velocity -
+                                    KinematicsAt(wave, InPlane(0.2 * L, -0.3 * c.h), t - dt).velocity) /
                                    (2 * dt);
-      EXPECT_LT((KinematicsAt(wave, 0.2 * L, -0.3 * c.h, t).acceleration - rate).norm(),
+      EXPECT_LT((KinematicsAt(wave, InPlane(0.2 * L, -0.3 * c.h), t).acceleration - rate).norm(),
                 3.2e-4 * scale) << c.what;
     }
   }
@@ -269,15 +270,15 @@ OrbitFit RunPoint(double drag_area, bool morison_inertia, long* steps) {
   p.station = 1;
   p.mass = rho * volume;  // neutrally buoyant
   p.volume = volume;
-  p.added_volume = morison_inertia ? Vec(volume, volume) : Vec::Zero();
-  p.drag_coefficient = {1.0, 1.0};
-  p.drag_area = {drag_area, drag_area};
-  Model m = MakeModel({link}, {p}, env, EndMotion::Fixed({0, -45}),
-                                 EndMotion::Free({0, -20}), LinkLaw::kElastic);
+  p.added_volume = morison_inertia ? InPlane(volume, volume) : Vec::Zero();
+  p.drag_coefficient = Vec(1.0, 1.0, 1.0);
+  p.drag_area = Vec(drag_area, drag_area, drag_area);
+  Model m = MakeModel({link}, {p}, env, EndMotion::Fixed(InPlane(0, -45)),
+                                 EndMotion::Free(InPlane(0, -20)), LinkLaw::kElastic);
   if (!morison_inertia) m.line.prism_fluid_mass.setZero();  // drag alone carries the point
   State s;
-  s.x = Points(2, 2);
-  s.x << 0, 0, -45, -20;
+  s.x = Points(kDim, 2);
+  s.x << 0, 0, -45, -20, 0, 0;  // rows x, y, z
   s.v = Points::Zero(kDim, 2);
   auto integ = testing::MakeStepper(Scheme::kImplicit, m, 0.5, 1e-9);
   integ->Initialize(m, s);
@@ -374,9 +375,9 @@ WaveRun RunMooringInWaves(int N, bool waves, bool inextensible = false, double f
   }
   SectionSpec s{500.0, N, 0.137, area, mu, EA / area, 2.4, 1.0};
   const EndMotion ship =
-      EndMotion::Trochoid({450, fairlead_y}, 3.0, 0.0, 0.0, 1.0, 2 * kPi / 12.0, 0.3);
+      EndMotion::Trochoid(InPlane(450, fairlead_y), InPlane(3.0, 0.0), InPlane(0.0, 1.0), 2 * kPi / 12.0, 0.3);
   const Model m =
-      MakeModel({s}, {}, env, EndMotion::Fixed({0.0, bed_y}), ship,
+      MakeModel({s}, {}, env, EndMotion::Fixed(InPlane(0.0, bed_y)), ship,
                       inextensible ? LinkLaw::kInextensible : LinkLaw::kElastic);
   State st = SolveEquilibrium(m);
   std::unique_ptr<testing::Stepper> integ =
@@ -486,7 +487,7 @@ TEST(WaveEquilibrium, LinePiercingTheSurfaceHangsWithItsDryPartInAir) {
   env.waves.ramp_rate = 0.2;
   SectionSpec s{30.0, 60, 0.04, area, mu, E, 1.2, 1.0};
   auto build = [&](const EnvironmentSpec& e) {
-    return MakeModel({s}, {}, e, EndMotion::Fixed({0, 5}), EndMotion::Free({0, -25}),
+    return MakeModel({s}, {}, e, EndMotion::Fixed(InPlane(0, 5)), EndMotion::Free(InPlane(0, -25)),
                            LinkLaw::kElastic);
   };
   const Model m = build(env);
@@ -530,7 +531,7 @@ TEST(WaveForces, StationsAboveTheSurfaceAreDryAndStillWaterChangesNothing) {
   env.current = 0.4;
   SectionSpec s{10.0, 10, 0.05, 1e-3, 8.0, 1e9, 1.2, 1.0};
   auto build = [&](const EnvironmentSpec& e) {
-    return MakeModel({s}, {}, e, EndMotion::Fixed({0, -12}), EndMotion::Fixed({6, 0}),
+    return MakeModel({s}, {}, e, EndMotion::Fixed(InPlane(0, -12)), EndMotion::Fixed(InPlane(6, 0)),
                            LinkLaw::kElastic);
   };
   const Model plain = build(env);
@@ -538,10 +539,10 @@ TEST(WaveForces, StationsAboveTheSurfaceAreDryAndStillWaterChangesNothing) {
   still.waves = Spec(0.0, 5.0, 100.0);
   still.waves.surface_y = 50.0;
   const Model calm = build(still);
-  Points x(2, 11), v(2, 11);
+  Points x(kDim, 11), v(kDim, 11);
   for (int j = 0; j <= 10; ++j) {
-    x.col(j) = Vec(0.6 * j, -12.0 + 1.2 * j);
-    v.col(j) = Vec(0.1 * std::sin(j), 0.2 * std::cos(j));
+    x.col(j) = InPlane(0.6 * j, -12.0 + 1.2 * j);
+    v.col(j) = InPlane(0.1 * std::sin(j), 0.2 * std::cos(j));
   }
   ForceWorkspace a(10), b(10);
   ComputeGeometry(x, a.geometry);

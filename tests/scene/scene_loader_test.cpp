@@ -591,7 +591,7 @@ TEST_F(TableMotion, TableThatIsADirectory) {
 TEST_F(TableMotion, StrictRows) {
   WriteFile("zz.csv", "0,zz,0\n1,0,0\n2,0,0\n");
   ExpectError(TableScene("zz.csv"), "ends.end.file",
-              {"zz.csv:1", "expected a header row exactly \"t,x,y\" or three numbers", "0,zz,0"},
+              {"zz.csv:1", "expected a header row exactly \"t,x,y\" or \"t,x,y,z\", or numbers", "0,zz,0"},
               scene_);
   WriteFile("comma.csv", "t,x,y\n0,0,0,\n1,0,0\n");
   ExpectError(TableScene("comma.csv"), "ends.end.file",
@@ -689,16 +689,19 @@ TEST(SceneLoader, CurrentProfile) {
   ASSERT_EQ(s.environment.current_profile.y.size(), 3u);
   EXPECT_EQ(s.environment.current, 0.0);
   const Model m = BuildModel(s);
-  EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -5.0), 0.6);
-  EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -50.0), 0.2);
-  EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), 50.0), 1.5);
+  EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -5.0).x(), 0.6);
+  EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -50.0).x(), 0.2);
+  EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), 50.0).x(), 1.5);
   // One pair: a uniform current written as a table.
   const Model one = BuildModel(ParseScene(With("current = 0.0", "current = [[3, -0.4]]"), kFile));
-  EXPECT_DOUBLE_EQ(CurrentAt(one, SceneWater(one), -20.0), -0.4);
+  EXPECT_DOUBLE_EQ(CurrentAt(one, SceneWater(one), -20.0).x(), -0.4);
   const std::string key = "environment.current";
   ExpectError(With("current = 0.0", "current = []"), key, {"from 1 to 10000 pairs", "got 0"});
   ExpectError(With("current = 0.0", "current = [[0, 1, 2]]"), key + "[0]", {"[y, speed]"});
-  ExpectError(With("current = 0.0", "current = [3]"), key + "[0]", {"[y, speed]"});
+  // A flat array is a horizontal vector [u, w]; one of another size names both forms.
+  ExpectError(With("current = 0.0", "current = [3]"), key,
+              {"[u, w]", "[[y, speed], ...]", "got an array of 1 numbers"});
+  ExpectError(With("current = 0.0", "current = [3, 0, 1]"), key, {"[u, w]"});
   ExpectError(With("current = 0.0", "current = [[0, 1], [0, 2]]"), key + "[1]",
               {"increase strictly", "y = 0 m after 0 m"});
   ExpectError(With("current = 0.0", "current = [[0, 1], [-1, 2]]"), key + "[1]",
@@ -742,7 +745,7 @@ TEST(SceneLoader, Waves) {
   for (double t : {100.0, 103.3, 107.9}) {  // the ramp complete (R = 1 - 5e-16)
     const Vec p = mw.ends.end.Position(t) - mw.ends.end.rest();
     const double theta = mw.env.wave.k * 80.0 - mw.env.wave.omega * t + M_PI / 6;
-    EXPECT_NEAR(p.y(), SurfaceAt(mw.env.wave, 80.0, t) - 35.0, 1e-12);
+    EXPECT_NEAR(p.y(), SurfaceAt(mw.env.wave, InPlane(80.0, 0.0), t) - 35.0, 1e-12);
     EXPECT_NEAR(p.x(), std::cos(theta + M_PI / 2), 1e-12);
   }
 }

@@ -4,14 +4,22 @@ timeseries.csv and the steps its run_report.toml counts (issue 18: results that 
 as the code is reshaped; issue 19: a 2D scene's results the same on the 3D core).
 
 Each scene is run as a user runs it (`cablefilm run SCENE --no-film`) and compared row by row:
-the same rows and times; positions within 1e-9 m, the tensions within 1e-9 of the run's peak
+the same rows and times; positions within 1e-9 m, the tensions within 3e-7 of the run's peak
 tension, the link holding the largest tension the same unless two links are within that
-tolerance of each other; the same steps, rejected steps and Newton iterations. The tolerance:
-the pins were the program's own results to the last bit when they were made (every value
-printed with 10 to 12 significant digits); 1e-9 of the peak allows only the round-off of an
-arithmetic reordered (3D vectors with z = 0, sums in another order), about 1e-13 of the
-peak, with a margin, while a changed step or a changed force moves tensions by far more
-(the smallest change of a scheme's tolerance moves P63's peak by 1e-6 of it).
+tolerance of each other; the same steps, rejected steps and Newton iterations.
+
+What can be pinned is measured, not assumed: each scene is run a second time with every
+Young's modulus changed by 1e-12 of itself, a change of the physics at the level of
+round-off. Where that second run's tensions stay within 1e-7 of the peak of the first, the
+results are a property of the model and are pinned; from the first row where round-off has
+grown past that (a line snapping taut from slack amplifies any change, there is no
+last bit to pin: scenes/snapping_line.toml's peak moves by 2x with the 1e-12 change), the
+rows are not compared one by one, and neither are the step counts. Round-off alone moved the
+tensions of the smooth scenes by up to 2.9e-8 of their peak (grounded_mooring, with the 1e-12
+change; 2.4e-8 from the 2D core to the 3D one), 3x below the 1e-7 that marks a row as
+sensitive; the bound 3e-7 on pinned rows is 3x above it and holds any reordering of the
+arithmetic, while a changed step or a changed force moves tensions by far more (the
+smallest change of a scheme's tolerance moves P63's peak by 1e-6 of it).
 
 `--update` writes the pins anew from this build (say why in the commit).
 """
@@ -27,6 +35,33 @@ import sys
 import tempfile
 
 STEP_KEYS = ("steps", "rejected_steps", "newton_iterations")
+TENSION_KEYS = ("tension_start", "tension_end", "tension_max")
+SENSITIVE = 1e-7  # of the peak: round-off has grown (see above)
+TENSION_BOUND = 3e-7  # of the peak
+
+
+def perturbed(scene, folder):
+    """A copy of the scene (beside copies of its tables) with every Young's modulus * (1+1e-12)."""
+    folder.mkdir(exist_ok=True)
+    for f in scene.parent.iterdir():
+        if f.is_file() and f.suffix != ".toml":
+            (folder / f.name).write_bytes(f.read_bytes())
+    text = re.sub(r"^(\s*youngs_modulus\s*=\s*)([-+0-9.eE]+)",
+                  lambda m: f"{m.group(1)}{float(m.group(2)) * (1 + 1e-12)!r}",
+                  scene.read_text(), flags=re.M)
+    copy = folder / scene.name
+    copy.write_text(text)
+    return copy
+
+
+def sensitive_from(series, nudged):
+    """The index of the first row where the nudged run's tensions differ by 1e-7 of the peak."""
+    a, b = rows(series), rows(nudged)
+    peak = max(float(r["tension_max"]) for r in a)
+    for i, (ra, rb) in enumerate(zip(a, b)):
+        if any(abs(float(ra[k]) - float(rb[k])) > SENSITIVE * peak for k in TENSION_KEYS):
+            return i
+    return len(a)
 
 
 def run(cablefilm, scene, out):
@@ -45,35 +80,38 @@ def rows(text):
     return list(csv.DictReader(io.StringIO(text)))
 
 
-def compare(name, got, want, got_steps, want_steps):
+def compare(name, got, want, got_steps, want_steps, pinned_rows):
     problems = []
-    if got_steps != want_steps:
-        problems.append(f"steps {got_steps}, pinned {want_steps}")
     a, b = rows(got), rows(want)
     if len(a) != len(b):
         return problems + [f"{len(a)} rows, pinned {len(b)}"]
+    if pinned_rows == len(b) and got_steps != want_steps:
+        problems.append(f"steps {got_steps}, pinned {want_steps}")
     peak = max(float(r["tension_max"]) for r in b)
     worst = {"position": 0.0, "tension": 0.0}
-    for ra, rb in zip(a, b):
+    for ra, rb in zip(a[:pinned_rows], b[:pinned_rows]):
         if ra["t"] != rb["t"]:
             problems.append(f"row at t = {rb['t']} s is at t = {ra['t']} s")
             break
         for key in ("x_end", "y_end", "z_end"):
             if key in rb:
                 worst["position"] = max(worst["position"], abs(float(ra[key]) - float(rb[key])))
-        for key in ("tension_start", "tension_end", "tension_max"):
+        for key in TENSION_KEYS:
             worst["tension"] = max(worst["tension"], abs(float(ra[key]) - float(rb[key])))
         if ra["link_max"] != rb["link_max"] and \
-                abs(float(ra["tension_max"]) - float(rb["tension_max"])) > 1e-9 * peak:
+                abs(float(ra["tension_max"]) - float(rb["tension_max"])) > TENSION_BOUND * peak:
             problems.append(f"t = {rb['t']} s: the largest tension in link {ra['link_max']}, "
                             f"pinned {rb['link_max']}")
             break
     if worst["position"] > 1e-9:
         problems.append(f"an end's position differs by {worst['position']:.3g} m (bound 1e-9 m)")
-    if worst["tension"] > 1e-9 * peak:
+    if worst["tension"] > TENSION_BOUND * peak:
         problems.append(f"a tension differs by {worst['tension']:.3g} N = "
-                        f"{worst['tension'] / peak:.3g} of the peak (bound 1e-9)")
-    print(f"{'FAIL' if problems else 'ok'}: {name}: {len(a)} rows, steps {got_steps}, largest "
+                        f"{worst['tension'] / peak:.3g} of the peak (bound {TENSION_BOUND:g})")
+    sensitive = "" if pinned_rows == len(b) else \
+        f" (round-off grows from t = {b[pinned_rows]['t']} s: rows after not compared)"
+    print(f"{'FAIL' if problems else 'ok'}: {name}: {pinned_rows} of {len(a)} rows pinned"
+          f"{sensitive}, steps {got_steps}, largest "
           f"differences {worst['position']:.2g} m, {worst['tension'] / peak:.2g} of the peak "
           f"{peak:.6g} N")
     return problems
@@ -92,6 +130,9 @@ def main():
         for scene in scenes:
             name = scene.stem
             series, steps = run(args.cablefilm, scene, pathlib.Path(tmp) / name)
+            nudged, _ = run(args.cablefilm, perturbed(scene, pathlib.Path(tmp) / "nudged"),
+                            pathlib.Path(tmp) / f"{name}.nudged")
+            pinned_rows = sensitive_from(series, nudged)
             pin = pinned / f"{name}.timeseries.csv.gz"
             pin_steps = pinned / f"{name}.steps"
             if args.update:
@@ -107,7 +148,8 @@ def main():
                 want = f.read()
             want_steps = {m.group(1): int(m.group(2))
                           for m in re.finditer(r"^(\w+) = (\d+)$", pin_steps.read_text(), re.M)}
-            failures += [f"{name}: {p}" for p in compare(name, series, want, steps, want_steps)]
+            failures += [f"{name}: {p}" for p in compare(name, series, want, steps, want_steps,
+                                                               pinned_rows)]
     for f in failures:
         print("FAIL:", f)
     print(f"{'FAIL' if failures else 'ok'}: {len(scenes)} shipped scenes against their pins")

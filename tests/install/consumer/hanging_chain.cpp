@@ -35,8 +35,8 @@ int main() {
   sea.gravity = g;
   sea.fluid_density = rho;
   // Fixed at the origin; the free end starts off to the side, so the solver has work to do.
-  const Model m = MakeModel({chain}, {clump}, sea, EndMotion::Fixed({0.0, 0.0}),
-                                       EndMotion::Free({20.0, -40.0}), LinkLaw::kElastic);
+  const Model m = MakeModel({chain}, {clump}, sea, EndMotion::Fixed(InPlane(0.0, 0.0)),
+                                       EndMotion::Free(InPlane(20.0, -40.0)), LinkLaw::kElastic);
   EquilibriumReport report;
   const State state = SolveEquilibrium(m, StraightChord(m), &report);
 
