@@ -32,7 +32,7 @@ bool BlockTridiagonal::Solve() {
     }
     const double det = pivot.determinant();
     const double scale = pivot.cwiseAbs().maxCoeff();
-    if (!(std::abs(det) > 1e-14 * scale * scale)) return false;
+    if (!(std::abs(det) > 1e-14 * std::pow(scale, kDim))) return false;  // det ~ scale^kDim
     const Mat inv = pivot.inverse();
     if (i + 1 < n) c_prime_[i].noalias() = inv * upper[i];
     rhs[i] = inv * rhs[i];

@@ -2,7 +2,7 @@
 // Static equilibrium of the cable with its ends at rest at their t = 0 positions: the initial
 // state of the paper. Newton's method on the free stations' positions, continued in the
 // current, with pseudo-transient continuation as the fallback; the Jacobian is block
-// tridiagonal (2x2 blocks), so each iteration costs O(s).
+// tridiagonal (kDim x kDim blocks), so each iteration costs O(s).
 #include <Eigen/Core>
 
 #include "core/model.h"

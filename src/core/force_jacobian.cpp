@@ -7,7 +7,7 @@
 namespace cablefilm {
 namespace {
 
-// Adds the 2x2 derivative blocks of a link's force pair to the rows of stations a = k, b = k+1.
+// Adds the kDim x kDim derivative blocks of a link's force pair to the rows of stations a = k, b = k+1.
 // dfa_dd, dfb_dd: derivatives w.r.t. d = x_b - x_a of the forces on a and b; dfa_dv, dfb_dv:
 // derivatives w.r.t. v_a and v_b (equal, through the link's mean velocity). Stored negated.
 struct LinkBlocks {

@@ -13,9 +13,9 @@ namespace cablefilm {
 // The water at each station at one time (waves only: wave_forces.h fills it; empty otherwise).
 struct SeaState {
   double t = 0;                       // the time it is for [s]
-  Points velocity;          // water particle velocity (u, w) [m/s] (2 x s+1)
-  Points acceleration;      // its local acceleration [m/s^2] (2 x s+1)
-  Gradients velocity_gradient;     // d(u, w)/d(x, y) [1/s], column-major kDim x kDim per station
+  Points velocity;          // water particle velocity [m/s] (kDim x s+1)
+  Points acceleration;      // its local acceleration [m/s^2] (kDim x s+1)
+  Gradients velocity_gradient;     // d(velocity)/d(x, y, z) [1/s], column-major kDim x kDim per station
   Gradients acceleration_gradient; // d(du/dt, dw/dt)/d(x, y) [1/s^2], likewise
   Eigen::VectorXd wet;                // phi_j in [0, 1]: the station's wet fraction
   Points wet_gradient;      // d phi_j / d(x_j, y_j) [1/m]
@@ -23,7 +23,7 @@ struct SeaState {
 
 struct LinkGeometry {
   Eigen::VectorXd length;    // L_{j+1/2} = |x_{j+1} - x_j| [m] (size s)
-  Points tangent;  // (cos theta, sin theta)_{j+1/2} (2 x s); zero for a zero-length link
+  Points tangent;  // unit t_{j+1/2}, (cos theta, sin theta, 0) in the plane (kDim x s); zero for a zero-length link
   Eigen::VectorXd elevation;  // y_j of the stations [m] (size s+1): the seabed, the current
                               // profile
   SeaState sea;               // the waves' water at the stations (only with waves)

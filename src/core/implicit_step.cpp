@@ -1,5 +1,6 @@
 #include "core/implicit_step.h"
 
+#include <algorithm>
 #include <Eigen/LU>
 #include <cmath>
 #include <sstream>
@@ -96,9 +97,9 @@ double LocalError(const Model& m, const Data& d, const GeneralizedAlpha& c, doub
     // critically damped spring leaves the station at rest at its resting penetration either
     // way, so the error there is of the penetration's scale (millimetres) and does not grow.
     // Resolving it cost 1.5 times the steps near a moving touchdown, for a larger tension error
-    // (docs/model.md, "Seabed"). Along the bed it is measured as anywhere.
-    if (bed.present && w.x(1, j) < bed.y) {
-      da = std::max(da, std::abs(w.a(0, j) - d.a(0, j)));
+    // (docs/model.md, "Seabed"). Along the bed (x and z) it is measured as anywhere.
+    if (bed.present && w.x(kVertical, j) < bed.y) {
+      da = std::max({da, std::abs(w.a(0, j) - d.a(0, j)), std::abs(w.a(2, j) - d.a(2, j))});
       continue;
     }
     da = std::max(da, (w.a.col(j) - d.a.col(j)).lpNorm<Eigen::Infinity>());

@@ -4,7 +4,7 @@
 //
 // Computed once, from the model, it holds in every state the cable reaches, so it need not be
 // recomputed as the cable moves: the block Gershgorin bound of M^-1/2 K M^-1/2 uses the norm of
-// each link's 2x2 stiffness, which stretched to L > l is (sigma E / l) t t^T + (T / L)(I - t t^T)
+// each link's kDim x kDim stiffness, which stretched to L > l is (sigma E / l) t t^T + (T / L)(I - t t^T)
 // (axial, and the geometric stiffness across), of norm sigma E / l since T / L = sigma E (L - l)
 // / (l L) < sigma E / l at any strain; a slack link has none. And m_j + min(m^x_j, m^y_j) is the
 // least inertia of station j in any direction: the links' normal added mass only adds to it.

@@ -17,7 +17,7 @@ constexpr int kVertical = 1;  // the axis of gravity (along -y) and of the seabe
 
 // The horizontal unit vector at `heading` [rad] from +x towards +z: (cos, 0, sin).
 inline Vec Horizontal(double heading) {
-  // Exact along the axes (0 and pi / 2 give (1, 0, 0) and (0, 0, 1)): a 2D scene's current and
+  // Exact at 0 (cos and sin of 0 are exact, but not of pi / 2): a 2D scene's current and
   // waves along +x are its own.
   if (heading == 0) return Vec(1.0, 0.0, 0.0);
   return Vec(std::cos(heading), 0.0, std::sin(heading));

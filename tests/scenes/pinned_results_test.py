@@ -21,7 +21,8 @@ sensitive; the bound 3e-7 on pinned rows is 3x above it and holds any reordering
 arithmetic, while a changed step or a changed force moves tensions by far more (the
 smallest change of a scheme's tolerance moves P63's peak by 1e-6 of it).
 
-`--update` writes the pins anew from this build (say why in the commit).
+`--update` writes the pins anew from this build (say why in the commit); `--only NAME` limits
+a run to one scene (`--update --only NAME` pins a new scene).
 """
 import argparse
 import csv
@@ -122,9 +123,13 @@ def main():
     parser.add_argument("--cablefilm", required=True)
     parser.add_argument("--source-dir", required=True, type=pathlib.Path)
     parser.add_argument("--update", action="store_true")
+    parser.add_argument("--only", action="append", metavar="NAME",
+                        help="only this scene (repeatable): a new scene is pinned with "
+                             "--update --only NAME, leaving the others' pins as they are")
     args = parser.parse_args()
     pinned = args.source_dir / "tests" / "scenes" / "pinned"
-    scenes = sorted((args.source_dir / "scenes").glob("*.toml"))
+    scenes = sorted(s for s in (args.source_dir / "scenes").glob("*.toml")
+                    if not args.only or s.stem in args.only)
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         for scene in scenes:
