@@ -117,34 +117,41 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
   const int var_s_link = define("s_link", NC_DOUBLE, {dim_link}, "m",
                                 "unstretched arc length of the link midpoint from station 0");
 
-  var_x_ = define("x", NC_DOUBLE, {dim_time, dim_station}, "m",
-                  "horizontal position of the station");
-  var_y_ = define("y", NC_DOUBLE, {dim_time, dim_station}, "m",
-                  "vertical position of the station (up; gravity along -y)");
+  // The axes: x and z horizontal, y up (z = 0 throughout for a cable in the x-y plane).
+  const char* axis_names[kDim] = {"x", "y", "z"};
+  const char* axis_long[kDim] = {"horizontal position x", "vertical position y",
+                                 "horizontal position z"};
+  const char* axis_note[kDim] = {"", " (up; gravity along -y)", " (across the x-y plane)"};
+  for (int c = 0; c < kDim; ++c)
+    var_x_[c] = define(axis_names[c], NC_DOUBLE, {dim_time, dim_station}, "m",
+                       std::string(axis_long[c]) + " of the station" + axis_note[c]);
   var_tension_ = define("tension", NC_DOUBLE, {dim_time, dim_link}, "N",
                         "tension of the link (0 when slack)");
-  for (int var : {var_x_, var_y_}) Text(nc, var, "coordinates", "s", f);
+  for (int var : var_x_) Text(nc, var, "coordinates", "s", f);
   Text(nc, var_tension_, "coordinates", "s_link", f);
 
-  const char* end_names[4] = {"x_start", "y_start", "x_end", "y_end"};
-  const char* end_long[4] = {"horizontal position of the start (station 0)",
-                             "vertical position of the start (station 0)",
-                             "horizontal position of the end (station s)",
-                             "vertical position of the end (station s)"};
-  for (int k = 0; k < 4; ++k)
-    var_end_[k] = define(end_names[k], NC_DOUBLE, {dim_time}, "m", end_long[k]);
+  // x_start, y_start, z_start, x_end, y_end, z_end.
+  for (int k = 0; k < 2 * kDim; ++k) {
+    const char* axis = axis_names[k % kDim];
+    const bool start = k < kDim;
+    var_end_[k] = define((std::string(axis) + (start ? "_start" : "_end")).c_str(), NC_DOUBLE,
+                         {dim_time}, "m",
+                         std::string(axis_long[k % kDim]) +
+                             (start ? " of the start (station 0)" : " of the end (station s)"));
+  }
 
   const bool equilibrium = info.initial_state != "straight";
   const std::string state = equilibrium ? "static equilibrium at t = 0"
                                         : "initial state at t = 0 (the straight chord at rest, "
                                           "not an equilibrium)";
-  const int var_x_eq = define("x_equilibrium", NC_DOUBLE, {dim_station}, "m",
-                              "horizontal position of the station, " + state);
-  const int var_y_eq = define("y_equilibrium", NC_DOUBLE, {dim_station}, "m",
-                              "vertical position of the station, " + state);
+  int var_eq[kDim] = {-1, -1, -1};  // x_equilibrium, y_equilibrium, z_equilibrium
+  for (int c = 0; c < kDim; ++c)
+    var_eq[c] = define((std::string(axis_names[c]) + "_equilibrium").c_str(), NC_DOUBLE,
+                       {dim_station}, "m",
+                       std::string(axis_long[c]) + " of the station, " + state);
   const int var_t_eq = define("tension_equilibrium", NC_DOUBLE, {dim_link}, "N",
                               "tension of the link, " + state);
-  for (int var : {var_x_eq, var_y_eq}) Text(nc, var, "coordinates", "s", f);
+  for (int var : var_eq) Text(nc, var, "coordinates", "s", f);
   Text(nc, var_t_eq, "coordinates", "s_link", f);
 
   Text(nc, NC_GLOBAL, "Conventions", "CF-1.8", f);
@@ -170,9 +177,9 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
   Check(nc_put_var_int(nc, var_link, index.data()), f, "link");
   Check(nc_put_var_double(nc, var_s, m.line.arc_length.data()), f, "s");
   Check(nc_put_var_double(nc, var_s_link, s_link.data()), f, "s_link");
-  for (int c = 0; c < 2; ++c) {
+  for (int c = 0; c < kDim; ++c) {
     for (int j = 0; j < stations_; ++j) row[static_cast<size_t>(j)] = initial.x(c, j);
-    Check(nc_put_var_double(nc, c == 0 ? var_x_eq : var_y_eq, row.data()), f, "equilibrium");
+    Check(nc_put_var_double(nc, var_eq[c], row.data()), f, "equilibrium");
   }
   Check(nc_put_var_double(nc, var_t_eq, initial_tension.data()), f, "tension_equilibrium");
 }
@@ -213,8 +220,7 @@ std::unique_ptr<NetcdfResultsWriter::Block> NetcdfResultsWriter::NewBlock() {
   auto b = std::make_unique<Block>();
   const size_t rows = static_cast<size_t>(chunk_rows_);
   b->time.resize(rows);
-  b->x.resize(rows * static_cast<size_t>(stations_));
-  b->y.resize(b->x.size());
+  for (auto& axis : b->x) axis.resize(rows * static_cast<size_t>(stations_));
   b->tension.resize(rows * static_cast<size_t>(links_));
   for (auto& e : b->ends) e.resize(rows);
   return b;
@@ -227,17 +233,13 @@ void NetcdfResultsWriter::Append(const State& s, const Eigen::VectorXd& tension)
   const size_t r = static_cast<size_t>(b.rows);
   const size_t n = static_cast<size_t>(stations_);
   b.time[r] = s.t;
-  double* x = b.x.data() + r * n;
-  double* y = b.y.data() + r * n;
-  for (int j = 0; j < stations_; ++j) {
-    x[j] = s.x(0, j);
-    y[j] = s.x(1, j);
+  for (int c = 0; c < kDim; ++c) {
+    double* axis = b.x[c].data() + r * n;
+    for (int j = 0; j < stations_; ++j) axis[j] = s.x(c, j);
+    b.ends[c][r] = s.x(c, 0);
+    b.ends[kDim + c][r] = s.x(c, links_);
   }
   std::copy(tension.data(), tension.data() + links_, b.tension.data() + r * links_);
-  b.ends[0][r] = s.x(0, 0);
-  b.ends[1][r] = s.x(1, 0);
-  b.ends[2][r] = s.x(0, links_);
-  b.ends[3][r] = s.x(1, links_);
   ++b.rows;
   ++rows_;
   if (b.rows == chunk_rows_) {
@@ -284,10 +286,10 @@ void NetcdfResultsWriter::Write(const Block& b) {
   const size_t count_x[2] = {static_cast<size_t>(b.rows), static_cast<size_t>(stations_)};
   const size_t count_t[2] = {static_cast<size_t>(b.rows), static_cast<size_t>(links_)};
   Check(nc_put_vara_double(ncid_, var_time_, start, count_x, b.time.data()), f, "time");
-  Check(nc_put_vara_double(ncid_, var_x_, start, count_x, b.x.data()), f, "x");
-  Check(nc_put_vara_double(ncid_, var_y_, start, count_x, b.y.data()), f, "y");
+  for (int c = 0; c < kDim; ++c)
+    Check(nc_put_vara_double(ncid_, var_x_[c], start, count_x, b.x[c].data()), f, "positions");
   Check(nc_put_vara_double(ncid_, var_tension_, start, count_t, b.tension.data()), f, "tension");
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < 2 * kDim; ++k)
     Check(nc_put_vara_double(ncid_, var_end_[k], start, count_x, b.ends[k].data()), f, "ends");
 }
 

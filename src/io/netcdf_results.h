@@ -6,9 +6,11 @@
 //   dimensions  time (unlimited), station (s + 1), link (s: link j+1/2 is link j)
 //   time(time) [s]; station(station), link(link): the indices j
 //   s(station), s_link(link) [m]: unstretched arc length of the stations, of the link midpoints
-//   x(time, station), y(time, station) [m]; tension(time, link) [N]
-//   x_start, y_start, x_end, y_end (time) [m]: the ends' motion
-//   x_equilibrium, y_equilibrium (station) [m], tension_equilibrium (link) [N]: the initial state
+//   x(time, station), y(time, station), z(time, station) [m]; tension(time, link) [N]
+//   x_start, y_start, z_start, x_end, y_end, z_end (time) [m]: the ends' motion
+//   x_equilibrium, y_equilibrium, z_equilibrium (station) [m], tension_equilibrium (link) [N]:
+//   the initial state
+// (z is 0 throughout for a cable in the x-y plane: a 2D scene.)
 //
 // Time-dependent variables are deflated (level 4, with the shuffle filter) and chunked by time:
 // a chunk is up to kChunkRows rows of all stations (fewer for a cable whose row is large). The
@@ -74,7 +76,9 @@ class NetcdfResultsWriter : public RowSink {
   struct Block {
     long first = 0;
     int rows = 0;
-    std::vector<double> time, x, y, tension, ends[4];  // ends: x_start, y_start, x_end, y_end
+    std::vector<double> time, tension;
+    std::vector<double> x[kDim];     // by axis: x, y, z
+    std::vector<double> ends[2 * kDim];  // x_start, y_start, z_start, x_end, y_end, z_end
   };
   void Define(const NetcdfResultsInfo& info, const Model& m, const State& initial,
               const Eigen::VectorXd& initial_tension);  // the file and what is fixed
@@ -89,8 +93,9 @@ class NetcdfResultsWriter : public RowSink {
   std::string path_, temp_path_;
   int ncid_ = -1;
   int stations_ = 0, links_ = 0, chunk_rows_ = 1;
-  int var_time_ = -1, var_x_ = -1, var_y_ = -1, var_tension_ = -1;
-  int var_end_[4] = {-1, -1, -1, -1};
+  int var_time_ = -1, var_tension_ = -1;
+  int var_x_[kDim] = {-1, -1, -1};        // x, y, z
+  int var_end_[2 * kDim] = {-1, -1, -1, -1, -1, -1};
   long rows_ = 0;
   std::unique_ptr<Block> filling_;  // the rows not yet handed over
   bool committed_ = false;

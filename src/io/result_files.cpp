@@ -11,9 +11,10 @@ void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& s
                          const Eigen::VectorXd& tension) {
   AtomicFile file(path);
   std::FILE* f = file.stream();
-  std::fprintf(f, "j,s,x,y,tension\n");
+  std::fprintf(f, "j,s,x,y,z,tension\n");
   for (int j = 0; j <= m.line.links; ++j) {
-    std::fprintf(f, "%d,%.10g,%.12g,%.12g,", j, m.line.arc_length[j], state.x(0, j), state.x(1, j));
+    std::fprintf(f, "%d,%.10g,%.12g,%.12g,%.12g,", j, m.line.arc_length[j], state.x(0, j),
+                 state.x(1, j), state.x(2, j));
     if (j < m.line.links) std::fprintf(f, "%.10g", tension[j]);
     std::fprintf(f, "\n");
   }
@@ -46,14 +47,16 @@ void RemoveEarlierResults(const std::string& out_dir) {
   }
 }
 
-const char kTimeseriesHeader[] = "t,x_end,y_end,tension_start,tension_end,tension_max,link_max\n";
+const char kTimeseriesHeader[] =
+    "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max\n";
 
 void WriteTimeseriesRow(std::FILE* f, const Model& m, const State& s,
                         const Eigen::VectorXd& tension) {
   Eigen::Index link_max = 0;
   const double t_max = tension.maxCoeff(&link_max);
-  std::fprintf(f, "%.10g,%.12g,%.12g,%.10g,%.10g,%.10g,%d\n", s.t, s.x(0, m.line.links),
-               s.x(1, m.line.links), tension[0], tension[m.line.links - 1], t_max,
+  const int end = m.line.links;
+  std::fprintf(f, "%.10g,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g,%d\n", s.t, s.x(0, end),
+               s.x(1, end), s.x(2, end), tension[0], tension[end - 1], t_max,
                static_cast<int>(link_max));
 }
 

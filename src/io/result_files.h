@@ -12,7 +12,7 @@
 
 namespace cablefilm {
 
-// equilibrium.csv: j,s,x,y,tension (tension of link j+1/2; empty on the last row).
+// equilibrium.csv: j,s,x,y,z,tension (tension of link j+1/2; empty on the last row).
 void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& state,
                          const Eigen::VectorXd& tension);
 
@@ -27,8 +27,8 @@ extern const char kTimeseriesHeader[];  // with its newline
 void WriteTimeseriesRow(std::FILE* f, const Model& m, const State& state,
                         const Eigen::VectorXd& tension);
 
-// timeseries.csv: t,x_end,y_end,tension_start,tension_end,tension_max,link_max; a run's rows as
-// they come.
+// timeseries.csv: t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max; a run's
+// rows as they come.
 class TimeseriesWriter : public RowSink {
  public:
   TimeseriesWriter(const std::string& path, const Model& m);

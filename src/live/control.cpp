@@ -50,15 +50,15 @@ double ReadNumber(const Json& v, const char* field, double lo, double hi, const 
 const std::vector<std::string>& ControlFields() {
   static const std::vector<std::string> fields{
       "pause", "step", "restart", "speed", "amplitude_scale", "period",
-      "current", "wave_height", "wave_period", "colormap", "lock_range", "reset_range",
-      "tension_range", "record"};
+      "current", "current_heading", "wave_height", "wave_period", "wave_heading", "colormap",
+      "lock_range", "reset_range", "tension_range", "record"};
   return fields;
 }
 
 bool ControlRequest::empty() const {
   return !pause && !step && !restart && !speed && !amplitude_scale && !period && !current &&
-         !wave_height && !wave_period && !colormap && !lock_range && !reset_range &&
-         !tension_range && !record;
+         !current_heading && !wave_height && !wave_period && !wave_heading && !colormap &&
+         !lock_range && !reset_range && !tension_range && !record;
 }
 
 ControlRequest ParseControl(const std::string& body, const ControlLimits& limits) {
@@ -98,6 +98,9 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
                                        " (times the scene's amplitudes)");
     } else if (key == "current") {
       r.current = ReadNumber(v, "current", -limits.current_max, limits.current_max, " m/s");
+    } else if (key == "current_heading") {
+      r.current_heading = ReadNumber(v, "current_heading", -limits.heading_max,
+                                     limits.heading_max, " degrees from +x towards +z");
     } else if (key == "wave_height") {
       if (!limits.has_waves) throw ControlError("wave_height: the scene has no [waves]");
       r.wave_height = ReadNumber(v, "wave_height", 0, limits.wave_height_max,
@@ -106,6 +109,10 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
       if (!limits.has_waves) throw ControlError("wave_period: the scene has no [waves]");
       r.wave_period = ReadNumber(v, "wave_period", limits.wave_period_min,
                                  limits.wave_period_max, " s");
+    } else if (key == "wave_heading") {
+      if (!limits.has_waves) throw ControlError("wave_heading: the scene has no [waves]");
+      r.wave_heading = ReadNumber(v, "wave_heading", -limits.heading_max, limits.heading_max,
+                                  " degrees from +x towards +z (the way the waves travel)");
     } else if (key == "colormap") {
       std::string names;
       for (const std::string& n : limits.colormaps) names += (names.empty() ? "" : ", ") + n;

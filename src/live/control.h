@@ -17,9 +17,11 @@ struct ControlLimits {
   double amplitude_max = 3;                 // scale on the scene's end-motion amplitudes
   double period_min = 1, period_max = 100;  // of the driven end [s]
   double current_max = 3;                   // |c| [m/s]
+  double heading_max = 360;                 // |heading| [deg], either way, as the scene's
+                                            // current_heading and waves.heading
   double tension_max = 1e9;                 // largest colour range end [N]
   bool has_driven_end = true;               // a trochoid or table end: amplitude, period
-  bool has_waves = false;                   // [waves]: their height
+  bool has_waves = false;                   // [waves]: their height, period and heading
   double wave_height_max = 0;               // the breaking height of the scene's wave [m]
   double wave_period_min = 0, wave_period_max = 0;  // the waves' period range [s]
   std::vector<std::string> colormaps;       // the known colour maps
@@ -30,8 +32,10 @@ struct ControlRequest {
   bool step = false;     // advance one frame (pauses first)
   bool restart = false;  // back to the scene's initial state and sea
   std::optional<double> speed, amplitude_scale, period, current;
+  std::optional<double> current_heading;             // [deg] from +x towards +z
   std::optional<double> wave_height;                 // H [m], crest to trough
   std::optional<double> wave_period;                 // T [s]
+  std::optional<double> wave_heading;                // the way they travel [deg] from +x to +z
   std::optional<std::string> colormap;
   std::optional<bool> lock_range;                    // freeze the colour range (or let it grow)
   bool reset_range = false;  // unlock the range and start it again from the tensions now

@@ -92,7 +92,7 @@ LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
   if (!(speed_ >= limits_.speed_min && speed_ <= limits_.speed_max))
     throw Error("live: --speed must be in [0.1, 10], got " + std::to_string(speed_));
   Colormap check(colormap_);  // an unknown name fails here, naming the known ones
-  targets_ = sim_.targets();
+  targets_ = sim_.scene_sea();  // as a restart sets them (the simulation is at its start)
   start_kind_ = EndKindName(sim_.model().end_motion(0));
   end_kind_ = EndKindName(sim_.model().end_motion(sim_.model().line.links));
   {
@@ -155,8 +155,10 @@ void LiveSession::ApplyPending() {
       if (todo[k].amplitude_scale) todo[i].amplitude_scale.reset();
       if (todo[k].period) todo[i].period.reset();
       if (todo[k].current) todo[i].current.reset();
+      if (todo[k].current_heading) todo[i].current_heading.reset();
       if (todo[k].wave_height) todo[i].wave_height.reset();
       if (todo[k].wave_period) todo[i].wave_period.reset();
+      if (todo[k].wave_heading) todo[i].wave_heading.reset();
     }
   std::vector<TimeMarker> markers;
   std::uint64_t applied = 0;
@@ -185,12 +187,16 @@ void LiveSession::ApplyPending() {
           "amplitude \u00d7", "%.2f", "");
     apply(p.period, &LiveSimulation::SetPeriod, left.period, "period ", "%.3g", " s");
     apply(p.current, &LiveSimulation::SetCurrent, left.current, "current ", "%.2f", " m/s");
+    apply(p.current_heading, &LiveSimulation::SetCurrentHeading, left.current_heading,
+          "current heading ", "%.4g", "\u00b0");
     apply(p.wave_height, &LiveSimulation::SetWaveHeight, left.wave_height, "wave height ", "%.2f",
           " m");
     apply(p.wave_period, &LiveSimulation::SetWavePeriod, left.wave_period, "wave period ", "%.3g",
           " s");
-    if (left.amplitude_scale || left.period || left.current || left.wave_height ||
-        left.wave_period)
+    apply(p.wave_heading, &LiveSimulation::SetWaveHeading, left.wave_heading, "wave heading ",
+          "%.4g", "\u00b0");
+    if (left.amplitude_scale || left.period || left.current || left.current_heading ||
+        left.wave_height || left.wave_period || left.wave_heading)
       deferred_.push_back(left);
     else if (deferred_.empty())  // in order: a control counts once those before it are in
       applied = std::max(applied, p.seq);
@@ -277,6 +283,8 @@ void LiveSession::RecordLocked() {
 void LiveSession::PublishLocked() {
   t_ = sim_.t();
   current_now_ = sim_.current_now();
+  current_heading_now_ = sim_.current_heading_now();
+  wave_heading_now_ = sim_.wave_heading_now();
   const Eigen::VectorXd& T = sim_.tensions();
   Eigen::Index link = 0;
   tension_start_ = T[0];
@@ -499,8 +507,10 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     p.amplitude_scale = r.amplitude_scale;
     p.period = r.period;
     p.current = r.current;
+    p.current_heading = r.current_heading;
     p.wave_height = r.wave_height;
     p.wave_period = r.wave_period;
+    p.wave_heading = r.wave_heading;
     pending_.push_back(p);
     if (r.restart) {
       targets_ = sim_.scene_sea();
@@ -509,6 +519,8 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     if (r.amplitude_scale) targets_.amplitude_scale = *r.amplitude_scale;
     if (r.period) targets_.period = *r.period;
     if (r.current) targets_.current = *r.current;
+    if (r.current_heading) targets_.current_heading = *r.current_heading;
+    if (r.wave_heading) targets_.wave_heading = *r.wave_heading;
     if (r.wave_height) targets_.wave_height = *r.wave_height;
     if (r.wave_period) targets_.wave_period = *r.wave_period;
     if (r.wave_period && sim_.end_follows_wave()) targets_.period = *r.wave_period;
@@ -569,8 +581,12 @@ std::string LiveSession::StateJsonLocked() const {
       {"ends", {{"start", start_kind_}, {"end", end_kind_}}},
       {"current", targets_.current},
       {"current_now", Finite(current_now_)},
+      {"current_heading", targets_.current_heading},
+      {"current_heading_now", Finite(current_heading_now_)},
       {"wave_height", limits_.has_waves ? Json(targets_.wave_height) : Json(nullptr)},
       {"wave_period", limits_.has_waves ? Json(targets_.wave_period) : Json(nullptr)},
+      {"wave_heading", limits_.has_waves ? Json(targets_.wave_heading) : Json(nullptr)},
+      {"wave_heading_now", limits_.has_waves ? Json(Finite(wave_heading_now_)) : Json(nullptr)},
       {"has_waves", limits_.has_waves},
       {"colormap", colormap_},
       {"colormaps", limits_.colormaps},
@@ -594,8 +610,10 @@ std::string LiveSession::StateJsonLocked() const {
                   {"amplitude_scale", {0.0, limits_.amplitude_max}},
                   {"period", {limits_.period_min, limits_.period_max}},
                   {"current", {-limits_.current_max, limits_.current_max}},
+                  {"current_heading", {-limits_.heading_max, limits_.heading_max}},
                   {"wave_height", {0.0, limits_.wave_height_max}},
-                  {"wave_period", {limits_.wave_period_min, limits_.wave_period_max}}}},
+                  {"wave_period", {limits_.wave_period_min, limits_.wave_period_max}},
+                  {"wave_heading", {-limits_.heading_max, limits_.heading_max}}}},
   };
   if (!error_.empty()) j["error"] = error_;
   if (!render_error_.empty()) j["render_error"] = render_error_;

@@ -137,7 +137,8 @@ class LiveSession {
   struct Pending {
     std::uint64_t seq = 0;
     bool restart = false, step = false;
-    std::optional<double> amplitude_scale, period, current, wave_height, wave_period;
+    std::optional<double> amplitude_scale, period, current, current_heading, wave_height,
+        wave_period, wave_heading;
   };
   std::vector<Pending> pending_;
   std::vector<Pending> deferred_;  // refused while too many ramps ran (simulation thread only)
@@ -149,7 +150,7 @@ class LiveSession {
   Snapshot state_;  // the state now as RecordLocked hands it to the history (storage reused)
   RowLog rows_;
   std::uint64_t input_version_ = 0, view_version_ = 0;
-  double t_ = 0, current_now_ = 0;
+  double t_ = 0, current_now_ = 0, current_heading_now_ = 0, wave_heading_now_ = 0;
   double tension_start_ = 0, tension_end_ = 0, tension_max_ = 0;
   int link_max_ = 0;
   std::deque<std::pair<double, double>> progress_;  // (wall [s], simulated [s]) for real time

@@ -10,6 +10,14 @@
 namespace cablefilm {
 namespace {
 
+constexpr double kDegree = M_PI / 180.0;
+
+// The target [rad] a heading of `degrees` gives a schedule now at `target`: the same direction,
+// reached the short way round (at most half a turn either way).
+double NearestHeading(double target, double degrees) {
+  return target + std::remainder(degrees * kDegree - target, 2.0 * M_PI);
+}
+
 // The end whose period the controls show: the far end if it moves, else the start.
 const EndMotion* DrivenEnd(const Model& m) {
   if (m.ends.end.moves()) return &m.ends.end;
@@ -36,6 +44,13 @@ LiveSimulation::LiveSimulation(const SceneDef& scene) : model_(BuildModel(scene)
   initial_ = MakeData(model_, scene_inputs_, grid_.options, initial);
   scene_sea_.period = base_period_;
   scene_sea_.current = model_.env.current;
+  // The scene's headings: waves.heading as it gives it; the current's from its direction
+  // (current_heading, or that of [u, w]), in (-180, 180] degrees and rounded to 1e-9 of a
+  // degree for the state (the round trip through a sine and a cosine leaves 120 as
+  // 120.00000000000001; the current itself turns from the direction's own angle).
+  scene_sea_.current_heading =
+      std::round(HeadingOf(model_.env.current_direction) / kDegree * 1e9) / 1e9;
+  scene_sea_.wave_heading = model_.has_waves() ? scene.waves.heading : 0.0;
   scene_sea_.wave_height = model_.has_waves() ? model_.env.wave.spec.height : 0.0;
   scene_sea_.wave_period = model_.has_waves() ? model_.env.wave.spec.period : 0.0;
   end_follows_wave_ = (model_.ends.end.moves() && scene.end.follows_wave) ||
@@ -54,12 +69,20 @@ SeaTargets LiveSimulation::targets() const {
   s.amplitude_scale = inputs_.end_scale.target();
   s.period = has_driven_end() ? base_period_ / inputs_.end_clock.target() : 0;
   s.current = inputs_.current.target();
+  s.current_heading = inputs_.current_heading.target() / kDegree;
   s.wave_height = inputs_.wave_height.target();
   s.wave_period = inputs_.wave_period.target();
+  s.wave_heading = inputs_.wave_heading.target() / kDegree;
   return s;
 }
 
 double LiveSimulation::current_now() const { return inputs_.current.ValueAt(t()); }
+double LiveSimulation::current_heading_now() const {
+  return inputs_.current_heading.ValueAt(t()) / kDegree;
+}
+double LiveSimulation::wave_heading_now() const {
+  return inputs_.wave_heading.ValueAt(t()) / kDegree;
+}
 double LiveSimulation::wave_height_now() const { return inputs_.wave_height.ValueAt(t()); }
 double LiveSimulation::wave_period_now() const { return inputs_.wave_period.ValueAt(t()); }
 
@@ -83,6 +106,12 @@ bool LiveSimulation::SetCurrent(double current) {
   return inputs_.current.Change(t(), current, kCurrentRamp);
 }
 
+bool LiveSimulation::SetCurrentHeading(double degrees) {
+  if (!std::isfinite(degrees)) return false;
+  SmoothSchedule& s = inputs_.current_heading;
+  return s.Change(t(), NearestHeading(s.target(), degrees), kCurrentRamp);
+}
+
 bool LiveSimulation::SetWaveHeight(double height) {
   if (!model_.has_waves() || !(height >= 0)) return false;
   const double ramp = std::clamp(data_.water.wave.spec.period, kMotionRamp, 30.0);
@@ -99,6 +128,13 @@ bool LiveSimulation::SetWavePeriod(double period) {
   return true;
 }
 
+bool LiveSimulation::SetWaveHeading(double degrees) {
+  if (!model_.has_waves() || !std::isfinite(degrees)) return false;
+  const double ramp = std::clamp(inputs_.wave_period.ValueAt(t()), kMotionRamp, 30.0);
+  SmoothSchedule& s = inputs_.wave_heading;
+  return s.Change(t(), NearestHeading(s.target(), degrees), ramp);
+}
+
 void LiveSimulation::Advance(double seconds) {
   if (!(seconds > 0)) return;
   const int steps =
@@ -110,7 +146,8 @@ void LiveSimulation::Advance(double seconds) {
     data_.state.t = t0 + (i + 1) * dt;  // no round-off drift
   }
   for (SmoothSchedule* s : {&inputs_.end_scale, &inputs_.end_clock, &inputs_.current,
-                            &inputs_.wave_height, &inputs_.wave_period})
+                            &inputs_.current_heading, &inputs_.wave_height,
+                            &inputs_.wave_period, &inputs_.wave_heading})
     s->Retire(t());
 }
 

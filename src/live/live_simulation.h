@@ -18,9 +18,11 @@ namespace cablefilm {
 struct SeaTargets {
   double amplitude_scale = 1;  // times the scene's end-motion amplitudes
   double period = 0;           // of the driven end [s]; 0 when no end is driven
-  double current = 0;          // c [m/s] along +x
+  double current = 0;          // c [m/s], the uniform part, along current_heading
+  double current_heading = 0;  // the way the current flows [deg] from +x towards +z
   double wave_height = 0;      // H [m] of the scene's [waves]; 0 without
   double wave_period = 0;      // T [s] of the scene's [waves]; 0 without
+  double wave_heading = 0;     // the way the waves travel [deg] from +x towards +z; 0 without
 };
 
 class LiveSimulation {
@@ -41,6 +43,10 @@ class LiveSimulation {
   bool SetAmplitudeScale(double scale);
   bool SetPeriod(double period);  // [s]
   bool SetCurrent(double current);  // [m/s]
+  // The current's direction [deg from +x towards +z], over kCurrentRamp as its speed; the whole
+  // current turns (a profile too). It turns the short way round, through at most 180 degrees
+  // (350 after 0 is -10), so any two headings 360 degrees apart are the same target.
+  bool SetCurrentHeading(double degrees);
   // The waves' height H [m], over one wave period (kMotionRamp to 30 s); false without waves.
   // The wave's amplitude is held over each step at its value mid-step, as the current is.
   bool SetWaveHeight(double height);
@@ -52,6 +58,12 @@ class LiveSimulation {
   // wave higher than its breaking height at the period of the moment is held at that height
   // (Miche's limit).
   bool SetWavePeriod(double period);
+  // The way the waves travel [deg from +x towards +z], over one wave period (kMotionRamp to
+  // 30 s), the short way round as the current's; false without waves. Each step takes the
+  // heading at its middle, with the phase kept at the driven end's x as for the period (the
+  // crests swing round that point). An end that follows the wave keeps its RAOs along x and z
+  // (a ship's surge and sway as the scene gives them, not turned with the waves).
+  bool SetWaveHeading(double degrees);
 
   static constexpr double kMotionRamp = 2.0;   // shortest amplitude/period ramp [s]
   static constexpr double kCurrentRamp = 5.0;  // current ramp [s]
@@ -64,10 +76,13 @@ class LiveSimulation {
   const State& initial_state() const { return initial_.state; }
   const Eigen::VectorXd& initial_tensions() const { return initial_.tension(); }
   const SeaTargets& scene_sea() const { return scene_sea_; }
-  SeaTargets targets() const;  // what the sea is ramping to
+  SeaTargets targets() const;  // what the sea is ramping to (headings as the ramps hold
+                               // them: turned the short way, 370 may be 10)
   double current_now() const;  // the current acting now [m/s]
+  double current_heading_now() const;  // its direction now [deg], as the ramp turns it
   double wave_height_now() const;  // H acting now [m]
   double wave_period_now() const;  // T acting now [s]
+  double wave_heading_now() const;  // the waves' heading now [deg], as the ramp turns it
   bool has_driven_end() const { return base_period_ > 0; }
   bool end_follows_wave() const { return end_follows_wave_; }  // set once, at construction
   StepStats stats() const { return data_.step_stats(); }

@@ -106,13 +106,22 @@ py::array View(const py::object& owner, const double* data, std::vector<py::ssiz
 }
 
 // The positions along `axis` of every row [rows, stations] (station -1), or of the start (0) or
-// the end (1) station [rows].
+// the end (1) station [rows]. The rows hold x, y, z station by station: an axis is every
+// kDim-th double.
 py::array Positions(const py::object& self, int axis, int station) {
   const MemoryRun& r = *self.cast<Result&>().run;
   const int stations = r.run.model.stations();
-  const double* data = r.rows.x[axis].data();
-  if (station < 0) return View(self, data, {r.rows.rows, stations}, {stations, 1});
-  return View(self, data + (station == 0 ? 0 : stations - 1), {r.rows.rows}, {stations});
+  const double* data = r.rows.x.data() + axis;
+  if (station < 0) return View(self, data, {r.rows.rows, stations}, {stations * kDim, kDim});
+  return View(self, data + (station == 0 ? 0 : (stations - 1) * kDim), {r.rows.rows},
+              {stations * kDim});
+}
+
+// Every station's position of every row as one array [rows, stations, 3] (x, y, z).
+py::array PositionVectors(const py::object& self) {
+  const MemoryRun& r = *self.cast<Result&>().run;
+  const int stations = r.run.model.stations();
+  return View(self, r.rows.x.data(), {r.rows.rows, stations, kDim}, {stations * kDim, kDim, 1});
 }
 
 py::array Copy(const Eigen::VectorXd& v) {
@@ -144,7 +153,8 @@ py::dict StatsDict(const MemoryRun& r) {
 
 // The static equilibrium of a scene, whatever its [initial] state says.
 struct Equilibrium {
-  py::array x, y, tension, s, s_link;
+  py::array x, y, z, tension, s, s_link;
+  py::array position;  // [stations, 3]: x, y, z
   int iterations = 0;
   double residual = 0;
   bool fallback = false;
@@ -178,6 +188,13 @@ Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
   Equilibrium e;
   e.x = Copy(solved.state.x.row(0).transpose());
   e.y = Copy(solved.state.x.row(1).transpose());
+  e.z = Copy(solved.state.x.row(2).transpose());
+  {
+    const Points& x = solved.state.x;  // column-major: station by station, x, y, z
+    py::array_t<double> position({static_cast<py::ssize_t>(x.cols()), py::ssize_t{kDim}});
+    std::memcpy(position.mutable_data(), x.data(), sizeof(double) * static_cast<std::size_t>(x.size()));
+    e.position = std::move(position);
+  }
   e.tension = Copy(solved.tension);
   e.s = Copy(m.line.arc_length);
   e.s_link = LinkMidpoints(m);
@@ -501,15 +518,19 @@ the loader: a bad key or value raises SceneError and leaves the scene as it was.
         "loader refuses it, with the message `cablefilm check` prints).");
 
   py::class_<Result>(m, "Result", R"(The rows of a run, as results.nc holds them (the same doubles):
-time [n] (s), x, y [n, stations] (m), tension [n, links] (N, 0 when slack), the end motion
-x_start, y_start, x_end, y_end [n] (m), arc lengths s [stations], s_link [links] (m). The arrays
-are read-only views of the run.)")
+time [n] (s), x, y, z [n, stations] (m; y up, z = 0 for a cable in the x-y plane), the same
+as one array position [n, stations, 3], tension
+[n, links] (N, 0 when slack), the end motion x_start, y_start, z_start, x_end, y_end, z_end [n]
+(m), arc lengths s [stations], s_link [links] (m). The arrays are read-only views of the run.)")
       .def_property_readonly("time", [](const py::object& self) {
         const MemoryRows& r = self.cast<Result&>().run->rows;
         return View(self, r.time.data(), {r.rows}, {1});
       })
       .def_property_readonly("x", [](const py::object& self) { return Positions(self, 0, -1); })
       .def_property_readonly("y", [](const py::object& self) { return Positions(self, 1, -1); })
+      .def_property_readonly("z", [](const py::object& self) { return Positions(self, 2, -1); })
+      .def_property_readonly("position", [](const py::object& self) { return PositionVectors(self); },
+                             "every station's position of every row [n, stations, 3] (m): x, y, z")
       .def_property_readonly("tension", [](const py::object& self) {
         const MemoryRun& r = *self.cast<Result&>().run;
         const int links = r.run.model.line.links;
@@ -517,8 +538,10 @@ are read-only views of the run.)")
       })
       .def_property_readonly("x_start", [](const py::object& self) { return Positions(self, 0, 0); })
       .def_property_readonly("y_start", [](const py::object& self) { return Positions(self, 1, 0); })
+      .def_property_readonly("z_start", [](const py::object& self) { return Positions(self, 2, 0); })
       .def_property_readonly("x_end", [](const py::object& self) { return Positions(self, 0, 1); })
       .def_property_readonly("y_end", [](const py::object& self) { return Positions(self, 1, 1); })
+      .def_property_readonly("z_end", [](const py::object& self) { return Positions(self, 2, 1); })
       .def_property_readonly("s", [](const Result& r) { return Copy(r.run->run.model.line.arc_length); })
       .def_property_readonly("s_link", [](const Result& r) { return LinkMidpoints(r.run->run.model); })
       .def_property_readonly("scene", [](const Result& r) { return r.scene; })
@@ -549,10 +572,13 @@ are read-only views of the run.)")
         "blow-up (its .result: the rows so far); SceneError when no initial state is found.");
 
   py::class_<Equilibrium>(m, "Equilibrium",
-                          "The static equilibrium: x, y [stations] (m), tension [links] (N), "
+                          "The static equilibrium: x, y, z [stations] (m), position [stations, 3] "
+                          "(m: x, y, z), tension [links] (N), "
                           "s, s_link (m); unpacks as x, y, tension.")
       .def_readonly("x", &Equilibrium::x)
       .def_readonly("y", &Equilibrium::y)
+      .def_readonly("z", &Equilibrium::z)
+      .def_readonly("position", &Equilibrium::position, "[stations, 3] (m): x, y, z")
       .def_readonly("tension", &Equilibrium::tension)
       .def_readonly("s", &Equilibrium::s)
       .def_readonly("s_link", &Equilibrium::s_link)

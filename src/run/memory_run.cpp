@@ -4,8 +4,8 @@ namespace cablefilm {
 
 bool MemoryRows::Row(const Data& d) {
   time.push_back(d.state.t);
-  for (int i = 0; i < kDim; ++i)
-    for (Eigen::Index j = 0; j < d.state.x.cols(); ++j) x[i].push_back(d.state.x(i, j));
+  const Points& p = d.state.x;  // column-major: x, y, z of station 0, then of station 1, ...
+  x.insert(x.end(), p.data(), p.data() + p.size());
   const Eigen::VectorXd& T = d.tension();
   tension.insert(tension.end(), T.data(), T.data() + T.size());
   ++rows;
@@ -15,7 +15,7 @@ bool MemoryRows::Row(const Data& d) {
 void MemoryRows::Reserve(long rows, int stations, int links) {
   const std::size_t n = static_cast<std::size_t>(rows);
   time.reserve(n);
-  for (std::vector<double>& axis : x) axis.reserve(n * static_cast<std::size_t>(stations));
+  x.reserve(n * static_cast<std::size_t>(stations) * kDim);
   tension.reserve(n * static_cast<std::size_t>(links));
 }
 

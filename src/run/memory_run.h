@@ -15,7 +15,10 @@ namespace cablefilm {
 struct MemoryRows : RowSink {
   long rows = 0;
   std::vector<double> time;       // [s], rows
-  std::vector<double> x[kDim];    // station positions by axis [m], rows x (s + 1)
+  std::vector<double> x;          // station positions [m], rows x (s + 1) x kDim: each row a
+                                  // State::x as it lies in memory (a column of x, y, z a
+                                  // station), so rows x stations x 3 and each axis alike are
+                                  // views of it
   std::vector<double> tension;    // link tensions [N], rows x s (0 when slack)
   bool Row(const Data& d) override;
   void Reserve(long rows, int stations, int links);

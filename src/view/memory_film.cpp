@@ -43,8 +43,7 @@ Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& requ
   LineSnapshot& line = snap.lines[0];
   for (long r = 0; r <= row; ++r) {
     // Each row a snapshot carrying itself: the time plot and the envelope cover every row.
-    for (int d = 0; d < kDim; ++d)
-      x.row(d) = Eigen::Map<const Eigen::RowVectorXd>(rows.x[d].data() + r * stations, stations);
+    x = Eigen::Map<const Points>(rows.x.data() + r * stations * kDim, kDim, stations);
     const Eigen::Map<const Eigen::VectorXd> T(rows.tension.data() + r * links, links);
     snap.t = rows.time[r];
     SetLineState(x, T, &line);

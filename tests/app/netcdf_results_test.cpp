@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -173,7 +174,7 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   ExpectNoTemporaryFiles(out);
 
   const auto csv = ReadCsv(out / "timeseries.csv");
-  ASSERT_EQ(csv[0], (std::vector<std::string>{"t", "x_end", "y_end", "tension_start",
+  ASSERT_EQ(csv[0], (std::vector<std::string>{"t", "x_end", "y_end", "z_end", "tension_start",
                                               "tension_end", "tension_max", "link_max"}));
   const size_t rows = csv.size() - 1;
   ASSERT_EQ(rows, 151u);  // 5 s at a row per film frame, 30 frames/s, and t = 0
@@ -191,18 +192,23 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   EXPECT_EQ(format, NC_FORMAT_NETCDF4);
   EXPECT_EQ(nc.Dims("x"), "time,station");
   EXPECT_EQ(nc.Dims("y"), "time,station");
+  EXPECT_EQ(nc.Dims("z"), "time,station");
   EXPECT_EQ(nc.Dims("tension"), "time,link");
   EXPECT_EQ(nc.Dims("x_end"), "time");
+  EXPECT_EQ(nc.Dims("z_start"), "time");
+  EXPECT_EQ(nc.Dims("z_end"), "time");
+  EXPECT_EQ(nc.Dims("z_equilibrium"), "station");
   EXPECT_EQ(nc.Dims("s"), "station");
   EXPECT_EQ(nc.Dims("s_link"), "link");
   EXPECT_EQ(nc.Dims("tension_equilibrium"), "link");
 
   // Units, and a long name on every variable.
   const std::pair<const char*, const char*> units[] = {
-      {"time", "s"},          {"x", "m"},          {"y", "m"},
+      {"time", "s"},          {"x", "m"},          {"y", "m"},          {"z", "m"},
       {"tension", "N"},       {"s", "m"},          {"s_link", "m"},
-      {"x_start", "m"},       {"y_start", "m"},    {"x_end", "m"},
-      {"y_end", "m"},         {"x_equilibrium", "m"}, {"y_equilibrium", "m"},
+      {"x_start", "m"},       {"y_start", "m"},    {"z_start", "m"},
+      {"x_end", "m"},         {"y_end", "m"},      {"z_end", "m"},
+      {"x_equilibrium", "m"}, {"y_equilibrium", "m"}, {"z_equilibrium", "m"},
       {"tension_equilibrium", "N"}, {"station", "1"}, {"link", "1"}};
   for (const auto& [var, unit] : units) EXPECT_EQ(nc.Attr(var, "units"), unit) << var;
   int nvars = 0;
@@ -227,7 +233,7 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   EXPECT_EQ(nc.Attr(NC_GLOBAL, "initial_state"), "equilibrium");
 
   // Compressed (deflate 4, shuffle), chunked by time: many rows of all stations a chunk.
-  for (const char* var : {"x", "y", "tension"}) {
+  for (const char* var : {"x", "y", "z", "tension"}) {
     int shuffle = 0, deflate = 0, level = 0, storage = -1;
     ASSERT_EQ(nc_inq_var_deflate(nc.id(), nc.Var(var), &shuffle, &deflate, &level), NC_NOERR);
     EXPECT_EQ(shuffle, 1) << var;
@@ -241,30 +247,37 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   }
 
   const std::vector<double> t = nc.Values("time"), x = nc.Values("x"), y = nc.Values("y"),
-                            tension = nc.Values("tension"), x_end = nc.Values("x_end"),
-                            y_end = nc.Values("y_end"), x_start = nc.Values("x_start"),
-                            y_start = nc.Values("y_start");
+                            z = nc.Values("z"), tension = nc.Values("tension"),
+                            x_end = nc.Values("x_end"), y_end = nc.Values("y_end"),
+                            z_end = nc.Values("z_end"), x_start = nc.Values("x_start"),
+                            y_start = nc.Values("y_start"), z_start = nc.Values("z_start");
   // Every row against timeseries.csv, as the CSV prints it: tension_max is the largest
   // tension of the row, link_max its link, tension_start and tension_end the first and the
-  // last link; x_end, y_end the end's position, which is the last station's.
+  // last link; x_end, y_end, z_end the end's position, which is the last station's.
   for (size_t r = 0; r < rows; ++r) {
     const auto& c = csv[r + 1];
-    ASSERT_EQ(c.size(), 7u);
+    ASSERT_EQ(c.size(), 8u);
     const double* row = tension.data() + r * 60;
     const auto max_at = std::max_element(row, row + 60);
     EXPECT_EQ(Format("%.10g", t[r]), c[0]) << "row " << r;
     EXPECT_EQ(Format("%.12g", x_end[r]), c[1]) << "row " << r;
     EXPECT_EQ(Format("%.12g", y_end[r]), c[2]) << "row " << r;
-    EXPECT_EQ(Format("%.10g", row[0]), c[3]) << "row " << r;
-    EXPECT_EQ(Format("%.10g", row[59]), c[4]) << "row " << r;
-    EXPECT_EQ(Format("%.10g", *max_at), c[5]) << "row " << r;
-    EXPECT_EQ(std::to_string(max_at - row), c[6]) << "row " << r;
+    EXPECT_EQ(c[3], "0") << "row " << r;  // P63 is in the x-y plane
+    EXPECT_EQ(Format("%.10g", row[0]), c[4]) << "row " << r;
+    EXPECT_EQ(Format("%.10g", row[59]), c[5]) << "row " << r;
+    EXPECT_EQ(Format("%.10g", *max_at), c[6]) << "row " << r;
+    EXPECT_EQ(std::to_string(max_at - row), c[7]) << "row " << r;
     EXPECT_EQ(x_end[r], x[r * 61 + 60]);
     EXPECT_EQ(y_end[r], y[r * 61 + 60]);
+    EXPECT_EQ(z_end[r], z[r * 61 + 60]);
     EXPECT_EQ(x_start[r], x[r * 61]);
     EXPECT_EQ(y_start[r], y[r * 61]);
+    EXPECT_EQ(z_start[r], z[r * 61]);
     EXPECT_EQ(x_start[r], 0.0);  // the anchor
   }
+  // A scene in the x-y plane stays in it: z is exactly 0 at every station of every row.
+  EXPECT_EQ(std::count(z.begin(), z.end(), 0.0), static_cast<long>(z.size()));
+  EXPECT_EQ(z.size(), rows * 61);
 
   // One time, bit for bit what the run computed (the same simulation in this process).
   const size_t at_row = 100;  // t = 3.333 s
@@ -288,13 +301,16 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   for (int j = 0; j < 61; ++j) {
     EXPECT_EQ(x[at_row * 61 + j], where(0, j)) << "station " << j;
     EXPECT_EQ(y[at_row * 61 + j], where(1, j)) << "station " << j;
+    EXPECT_EQ(z[at_row * 61 + j], where(2, j)) << "station " << j;
   }
 
   // The arc lengths and the equilibrium against equilibrium.csv.
   const auto eq = ReadCsv(out / "equilibrium.csv");
   ASSERT_EQ(eq.size(), 62u);
+  ASSERT_EQ(eq[0], (std::vector<std::string>{"j", "s", "x", "y", "z", "tension"}));
   const std::vector<double> s = nc.Values("s"), s_link = nc.Values("s_link"),
                             x_eq = nc.Values("x_equilibrium"), y_eq = nc.Values("y_equilibrium"),
+                            z_eq = nc.Values("z_equilibrium"),
                             t_eq = nc.Values("tension_equilibrium"),
                             station = nc.Values("station"), link = nc.Values("link");
   for (int j = 0; j <= 60; ++j) {
@@ -303,15 +319,73 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
     EXPECT_EQ(Format("%.10g", s[static_cast<size_t>(j)]), c[1]) << "station " << j;
     EXPECT_EQ(Format("%.12g", x_eq[static_cast<size_t>(j)]), c[2]) << "station " << j;
     EXPECT_EQ(Format("%.12g", y_eq[static_cast<size_t>(j)]), c[3]) << "station " << j;
+    EXPECT_EQ(z_eq[static_cast<size_t>(j)], 0.0) << "station " << j;
+    EXPECT_EQ(c[4], "0") << "station " << j;
     if (j == 60) break;
     EXPECT_EQ(link[static_cast<size_t>(j)], j);
-    EXPECT_EQ(Format("%.10g", t_eq[static_cast<size_t>(j)]), c[4]) << "link " << j;
+    EXPECT_EQ(Format("%.10g", t_eq[static_cast<size_t>(j)]), c[5]) << "link " << j;
     EXPECT_DOUBLE_EQ(s_link[static_cast<size_t>(j)], 0.5 * (s[static_cast<size_t>(j)] +
                                                              s[static_cast<size_t>(j) + 1]));
   }
   // The first row is the initial state.
   for (int j = 0; j <= 60; ++j) EXPECT_EQ(x[static_cast<size_t>(j)], x_eq[static_cast<size_t>(j)]);
   EXPECT_DOUBLE_EQ(s_link[0], 45.72 / 30 / 2);
+}
+
+// Case P63 turned out of its plane (issue 19): a current of 0.5 m/s along +z (heading 90
+// degrees), across the cable, and the fairlead swaying along z as well as on its circle. The z
+// columns of timeseries.csv and equilibrium.csv and the z variables of results.nc agree as the
+// CSV prints them; z_end is eq. (3)'s trochoid along z, worked out here from the scene's numbers;
+// the anchor stays at z = 0; and the current pushes every other station towards +z.
+TEST_F(NetcdfResultsTest, ThreeDimensionalSceneHasZEverywhere) {
+  const fs::path scene = dir_ / "p63_3d.toml";
+  {
+    std::string text = ReadText(ShortP63("3.0"));
+    text = Replace(text, "current = 0.0 ", "current = 0.5\ncurrent_heading = 90.0 ");
+    text = Replace(text, "y_amplitudes = [0.0, 1.8288]",
+                   "y_amplitudes = [0.0, 1.8288]\nz_amplitudes = [0.0, 1.0]");
+    std::ofstream(scene, std::ios::binary) << text;
+  }
+  RunOptions opt;
+  opt.out_dir = (dir_ / "out").string();
+  ASSERT_EQ(RunCommand(scene.string(), opt), 0);
+  const fs::path out = dir_ / "out";
+  const auto csv = ReadCsv(out / "timeseries.csv");
+  const auto eq = ReadCsv(out / "equilibrium.csv");
+  ASSERT_EQ(csv.size(), 92u);  // 3 s, 30 rows a second, and t = 0
+  ASSERT_EQ(eq.size(), 62u);
+  ASSERT_EQ(csv[0][3], "z_end");
+  ASSERT_EQ(eq[0][4], "z");
+  NcFile nc(out / "results.nc");
+  const std::vector<double> t = nc.Values("time"), z = nc.Values("z"),
+                            z_end = nc.Values("z_end"), z_start = nc.Values("z_start"),
+                            z_eq = nc.Values("z_equilibrium");
+  ASSERT_EQ(z.size(), 91u * 61);
+  double largest_z = 0, largest_z_end = 0;
+  for (size_t r = 0; r < 91; ++r) {
+    // z = z0 + R(t) (e cos wt + f sin wt) with z0 = 0, [e, f] = [0, 1] m, w = 2 pi / 10 s,
+    // R(t) = 1 - (1 + nu t) exp(-nu t), nu = 0.5 /s. The program evaluates the same formula in
+    // its own arrangement: round-off of 1e-16 of a metre, 1e-12 m leaves room.
+    const double nu = 0.5, R = 1 - (1 + nu * t[r]) * std::exp(-nu * t[r]);
+    EXPECT_NEAR(z_end[r], R * std::sin(2 * M_PI * t[r] / 10.0), 1e-12) << "row " << r;
+    EXPECT_EQ(z_end[r], z[r * 61 + 60]) << "row " << r;
+    EXPECT_EQ(Format("%.12g", z_end[r]), csv[r + 1][3]) << "row " << r;
+    EXPECT_EQ(z_start[r], 0.0) << "row " << r;  // the anchor
+    EXPECT_EQ(z[r * 61], 0.0) << "row " << r;
+    for (size_t j = 1; j < 60; ++j) {
+      EXPECT_GT(z[r * 61 + j], 0.0) << "row " << r << " station " << j;
+      largest_z = std::max(largest_z, z[r * 61 + j]);
+    }
+    largest_z_end = std::max(largest_z_end, std::abs(z_end[r]));
+  }
+  // Out of the plane by a measurable amount: the sway has R(3 s) sin(0.6 pi) = 0.42 m at 3 s,
+  // and 0.5 m/s across 91 m of line bows it by metres.
+  EXPECT_GT(largest_z_end, 0.4);
+  EXPECT_GT(largest_z, 1.0);
+  for (size_t j = 0; j <= 60; ++j) {
+    EXPECT_EQ(Format("%.12g", z_eq[j]), eq[j + 1][4]) << "station " << j;
+    EXPECT_EQ(z_eq[j], z[j]) << "station " << j;  // the first row is the initial state
+  }
 }
 
 TEST_F(NetcdfResultsTest, BlownUpRunLeavesAPartialFileThatOpens) {
@@ -350,7 +424,7 @@ TEST_F(NetcdfResultsTest, BlownUpRunLeavesAPartialFileThatOpens) {
   for (size_t r = 0; r + 1 < csv.size(); ++r)
     EXPECT_EQ(Format("%.10g", *std::max_element(tension.begin() + r * links,
                                                 tension.begin() + (r + 1) * links)),
-              csv[r + 1][5]);
+              csv[r + 1][6]);
 }
 
 TEST_F(NetcdfResultsTest, CompareWritesBothModelsAndEarlierResultsGo) {
@@ -376,7 +450,7 @@ TEST_F(NetcdfResultsTest, CompareWritesBothModelsAndEarlierResultsGo) {
     for (size_t r = 0; r + 1 < csv.size(); ++r)
       EXPECT_EQ(Format("%.10g", *std::max_element(tension.begin() + r * 60,
                                                   tension.begin() + (r + 1) * 60)),
-                csv[r + 1][5])
+                csv[r + 1][6])
           << file << " row " << r;
   }
 }

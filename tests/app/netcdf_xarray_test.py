@@ -1,12 +1,14 @@
 #!/usr/bin/python3
 """results.nc in xarray (issue 12, part 3): `xarray.open_dataset("results.nc")` opens it with no
 extra arguments, and its dimensions, units and values agree with timeseries.csv and
-equilibrium.csv, as those print them.
+equilibrium.csv, as those print them; z (issue 19) is 0 throughout for P63, in the x-y plane,
+and for P63 turned out of its plane by a current across it (heading 90 degrees) and a sway of
+its fairlead along z, z agrees with the CSV files and z_end is eq. (3)'s trochoid along z.
 
     /usr/bin/python3 tests/app/netcdf_xarray_test.py --cablefilm build/cablefilm \\
         --scene scenes/polachek1963.toml --out-dir /tmp/netcdf_xarray
 
-Runs case P63 cut to 5 s without its film. Exits 77 (skipped, with a message) when xarray or
+Runs case P63 cut to 5 s without its film, then its 3D variant cut to 3 s. Exits 77 (skipped, with a message) when xarray or
 its netCDF backend (python3-netcdf4 or python3-h5netcdf) is missing: scripts/setup.sh --tests
 installs them. Prints one line per check and `N passed, M failed`.
 """
@@ -42,18 +44,30 @@ def main():
 
     shutil.rmtree(a.out_dir, ignore_errors=True)
     os.makedirs(a.out_dir)
-    text = open(a.scene).read()
-    text = re.sub(r'^duration = .*$', 'duration = 5.0', text, flags=re.M)
-    scene = os.path.join(a.out_dir, 'p63_short.toml')
-    with open(scene, 'w') as f:
-        f.write(text)
-    out = os.path.join(a.out_dir, 'out')
-    done = subprocess.run([a.cablefilm, 'run', scene, '--no-film', '--out', out],
-                          capture_output=True, text=True)
-    if done.returncode != 0:
-        print(f'FAIL  cablefilm run: exit {done.returncode}: {done.stderr.strip()[-500:]}')
-        print('0 passed, 1 failed')
-        return 1
+    scene_text = open(a.scene).read()
+
+    def run(name, text):
+        scene = os.path.join(a.out_dir, name + '.toml')
+        with open(scene, 'w') as f:
+            f.write(text)
+        out = os.path.join(a.out_dir, name)
+        done = subprocess.run([a.cablefilm, 'run', scene, '--no-film', '--out', out],
+                              capture_output=True, text=True)
+        if done.returncode != 0:
+            print(f'FAIL  cablefilm run {name}: exit {done.returncode}: '
+                  f'{done.stderr.strip()[-500:]}')
+            print('0 passed, 1 failed')
+            sys.exit(1)
+        return out
+
+    text = re.sub(r'^duration = .*$', 'duration = 5.0', scene_text, flags=re.M)
+    out = run('p63_short', text)
+    text_3d = re.sub(r'^duration = .*$', 'duration = 3.0', scene_text, flags=re.M)
+    text_3d = re.sub(r'^current = 0\.0 ', 'current = 0.5\ncurrent_heading = 90.0 ', text_3d,
+                     flags=re.M)
+    text_3d = re.sub(r'^(y_amplitudes = \[0\.0, 1\.8288\])', r'\1\nz_amplitudes = [0.0, 1.0]',
+                     text_3d, flags=re.M)
+    out_3d = run('p63_3d', text_3d)
 
     results = []
 
@@ -72,20 +86,21 @@ def main():
         check('time is unlimited', ds.encoding.get('unlimited_dims') == {'time'},
               ds.encoding.get('unlimited_dims'))
         check('time is seconds, as numbers', ds.time.dtype == np.float64, ds.time.dtype)
-        units = {'time': 's', 'x': 'm', 'y': 'm', 'tension': 'N', 's': 'm', 's_link': 'm',
-                 'x_start': 'm', 'y_start': 'm', 'x_end': 'm', 'y_end': 'm',
-                 'x_equilibrium': 'm', 'y_equilibrium': 'm', 'tension_equilibrium': 'N'}
+        units = {'time': 's', 'x': 'm', 'y': 'm', 'z': 'm', 'tension': 'N', 's': 'm',
+                 's_link': 'm', 'x_start': 'm', 'y_start': 'm', 'z_start': 'm', 'x_end': 'm',
+                 'y_end': 'm', 'z_end': 'm', 'x_equilibrium': 'm', 'y_equilibrium': 'm',
+                 'z_equilibrium': 'm', 'tension_equilibrium': 'N'}
         got = {k: ds[k].attrs.get('units') for k in units}
         check('units', got == units, got)
         names = list(ds.variables)
         check('a long_name on every variable', all(ds[k].attrs.get('long_name') for k in names),
               [k for k in names if not ds[k].attrs.get('long_name')])
-        check('dims of x, y, tension',
-              (ds.x.dims, ds.y.dims, ds.tension.dims) ==
-              (('time', 'station'), ('time', 'station'), ('time', 'link')),
-              (ds.x.dims, ds.y.dims, ds.tension.dims))
-        check('arc lengths are coordinates', 's' in ds.x.coords and 's_link' in ds.tension.coords,
-              list(ds.coords))
+        check('dims of x, y, z, tension',
+              (ds.x.dims, ds.y.dims, ds.z.dims, ds.tension.dims) ==
+              (('time', 'station'), ('time', 'station'), ('time', 'station'), ('time', 'link')),
+              (ds.x.dims, ds.y.dims, ds.z.dims, ds.tension.dims))
+        check('arc lengths are coordinates', 's' in ds.x.coords and 's' in ds.z.coords and
+              's_link' in ds.tension.coords, list(ds.coords))
         check('Conventions', ds.attrs.get('Conventions') == 'CF-1.8', ds.attrs.get('Conventions'))
         check('title', ds.attrs.get('title') == 'Sample mooring line, Polachek et al. 1963',
               ds.attrs.get('title'))
@@ -106,19 +121,22 @@ def main():
         fmt12 = lambda v: '%.12g' % v
         bad = []
         for r, row in enumerate(rows):
-            want = (row['t'], row['x_end'], row['y_end'], row['tension_start'],
+            want = (row['t'], row['x_end'], row['y_end'], row['z_end'], row['tension_start'],
                     row['tension_end'], row['tension_max'], row['link_max'])
             have = (fmt10(ds.time.values[r]), fmt12(ds.x_end.values[r]),
-                    fmt12(ds.y_end.values[r]), fmt10(tension[r, 0]), fmt10(tension[r, -1]),
-                    fmt10(tmax[r]), str(int(link_max[r])))
+                    fmt12(ds.y_end.values[r]), fmt12(ds.z_end.values[r]), fmt10(tension[r, 0]),
+                    fmt10(tension[r, -1]), fmt10(tmax[r]), str(int(link_max[r])))
             if want != have:
                 bad.append((r, want, have))
-        check('every row of timeseries.csv (t, x_end, y_end, start, end, max, link_max)',
+        check('every row of timeseries.csv (t, x_end, y_end, z_end, start, end, max, link_max)',
               not bad, bad[:3])
-        check('x_end, y_end are the last station', np.array_equal(ds.x_end, ds.x[:, -1]) and
-              np.array_equal(ds.y_end, ds.y[:, -1]))
-        check('x_start, y_start are the first station', np.array_equal(ds.x_start, ds.x[:, 0])
-              and np.array_equal(ds.y_start, ds.y[:, 0]))
+        check('x_end, y_end, z_end are the last station',
+              all(np.array_equal(ds[f'{c}_end'], ds[c][:, -1]) for c in 'xyz'))
+        check('x_start, y_start, z_start are the first station',
+              all(np.array_equal(ds[f'{c}_start'], ds[c][:, 0]) for c in 'xyz'))
+        check('P63 is in the x-y plane: z, z_start, z_end, z_equilibrium all exactly 0',
+              all(not np.any(ds[k].values) for k in ('z', 'z_start', 'z_end', 'z_equilibrium'))
+              and all(row['z_end'] == '0' for row in rows))
         # One link at one time, by label, against the CSV's tension_start at t = 2 s.
         row = next(r for r in rows if r['t'] == '2')
         check('tension.sel(time=2, link=0) is tension_start at t = 2',
@@ -128,17 +146,42 @@ def main():
         bad = []
         for j, row in enumerate(eq):
             have = (fmt10(ds.s.values[j]), fmt12(ds.x_equilibrium.values[j]),
-                    fmt12(ds.y_equilibrium.values[j]),
+                    fmt12(ds.y_equilibrium.values[j]), fmt12(ds.z_equilibrium.values[j]),
                     fmt10(ds.tension_equilibrium.values[j]) if j < 60 else '')
-            if have != (row['s'], row['x'], row['y'], row['tension']):
+            if have != (row['s'], row['x'], row['y'], row['z'], row['tension']):
                 bad.append((j, row, have))
-        check('equilibrium.csv (s, x, y, tension)', not bad, bad[:3])
+        check('equilibrium.csv (s, x, y, z, tension)', not bad, bad[:3])
         check('the first row is the equilibrium',
-              np.array_equal(ds.x[0], ds.x_equilibrium) and np.array_equal(ds.y[0],
-                                                                         ds.y_equilibrium))
+              all(np.array_equal(ds[c][0], ds[f'{c}_equilibrium']) for c in 'xyz'))
         check('s_link is the link midpoints',
               np.allclose(ds.s_link, 0.5 * (ds.s.values[:-1] + ds.s.values[1:]), rtol=0,
                           atol=1e-12))
+
+    # P63 out of its plane: z as the CSV files print it, and z_end as eq. (3) along z.
+    with open(os.path.join(out_3d, 'timeseries.csv')) as f:
+        rows = list(csv.DictReader(f))
+    with open(os.path.join(out_3d, 'equilibrium.csv')) as f:
+        eq = list(csv.DictReader(f))
+    with xr.open_dataset(os.path.join(out_3d, 'results.nc')) as ds:
+        t = ds.time.values
+        check('3D: z_end of every row of timeseries.csv',
+              [row['z_end'] for row in rows] == [fmt12(v) for v in ds.z_end.values])
+        check('3D: z of equilibrium.csv',
+              [row['z'] for row in eq] == [fmt12(v) for v in ds.z_equilibrium.values])
+        check('3D: z_end is the last station, z_start the first',
+              np.array_equal(ds.z_end, ds.z[:, -1]) and np.array_equal(ds.z_start, ds.z[:, 0]))
+        # z = R(t) (0 cos wt + 1 m sin wt), w = 2 pi / 10 s, R = 1 - (1 + 0.5 t) exp(-0.5 t):
+        # the same formula in another arrangement, round-off of 1e-16 m; 1e-12 m leaves room.
+        trochoid = (1 - (1 + 0.5 * t) * np.exp(-0.5 * t)) * np.sin(2 * np.pi * t / 10)
+        check('3D: z_end is the trochoid along z',
+              np.max(np.abs(ds.z_end.values - trochoid)) < 1e-12,
+              np.max(np.abs(ds.z_end.values - trochoid)))
+        check('3D: the anchor stays at z = 0', not np.any(ds.z_start.values))
+        interior = ds.z.values[:, 1:-1]
+        check('3D: the current along +z pushes every other station to z > 0',
+              np.all(interior > 0) and interior.max() > 1.0, interior.min())
+        check('3D: the end sways out of the plane', np.max(np.abs(ds.z_end.values)) > 0.4,
+              np.max(np.abs(ds.z_end.values)))
 
     failed = 0
     for name, ok, detail in results:

@@ -35,15 +35,15 @@ std::vector<Row> ReadRows(const fs::path& p) {
   std::ifstream in(p);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "t,x_end,y_end,tension_start,tension_end,tension_max,link_max");
+  EXPECT_EQ(line, "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max");
   std::vector<Row> rows;
   while (std::getline(in, line)) {
     std::vector<double> cells;
     std::stringstream ss(line);
     std::string cell;
     while (std::getline(ss, cell, ',')) cells.push_back(std::stod(cell));
-    EXPECT_EQ(cells.size(), 7u) << line;
-    if (cells.size() == 7) rows.push_back({cells[0], cells[5]});
+    EXPECT_EQ(cells.size(), 8u) << line;
+    if (cells.size() == 8) rows.push_back({cells[0], cells[6]});
   }
   return rows;
 }

@@ -93,7 +93,7 @@ if not cablefilm.__file__.startswith(prefix):
     sys.exit("cablefilm imported from %s, not from the prefix" % cablefilm.__file__)
 result = cablefilm.run("p63.toml")
 with netCDF4.Dataset("ref/results.nc") as ds:
-    for name in ["time", "x", "y", "tension"]:
+    for name in ["time", "x", "y", "z", "tension"]:
         if not numpy.array_equal(getattr(result, name), ds.variables[name][:].data):
             sys.exit("the installed module's %s differs from results.nc" % name)
 print("installed module %s: %d rows, peak %.6g N, the doubles of results.nc"
@@ -154,7 +154,7 @@ def test_run(args):
         if film[4:8] != b"ftyp" or b"moov" not in film or b"avc1" not in film:
             fail("film.mp4 is not an H.264 MP4")
         header, rows = read_rows(os.path.join(results, "timeseries.csv"))
-        if header != "t,x_end,y_end,tension_start,tension_end,tension_max,link_max":
+        if header != "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max":
             fail("timeseries.csv header " + header)
         expected = int(round(duration * P63_ROWS_PER_SECOND)) + 1
         if len(rows) != expected:
@@ -166,7 +166,7 @@ def test_run(args):
         _, stations = read_rows(os.path.join(results, "equilibrium.csv"))
         if len(stations) != 61:
             fail("equilibrium.csv has %d stations, expected 61" % len(stations))
-        peak = max(float(r[5]) for r in rows)
+        peak = max(float(r[6]) for r in rows)
         print("timeseries.csv: %d rows, t = 0 to %g s, peak tension_max %.1f N; film.mp4 %d bytes"
               % (len(rows), times[-1], peak, len(film)))
 

@@ -11,6 +11,12 @@ checks, waiting on the page's body dataset (frames, lastFrame, t, states) rather
   3. pause: /state says paused; the picture holds still; step advances one frame
   4. amplitude: the slider reaches /state; a refused value shows the server's error; after
      resuming the picture changes
+  4b. heading: the current heading's dial reaches /state and a heading set elsewhere (-45)
+     moves the dial to the same direction (315 degrees); a refused heading shows the server's
+     error; without waves no wave heading
+  4c. waves: on scenes/grounded_mooring.toml (waves, an end that follows them: every sea
+     control shown) the wave heading's dial reaches /state and the waves and the current turn;
+     a refused wave heading shows the server's error; the layout checks of 7 hold
   5. keyboard: Space pauses and resumes, R restarts
   6. record: a film is recorded and its download link works
   7. layout: at 1400x900 and 1000x700 nothing overlaps or overflows sideways, and at 1000x700
@@ -47,7 +53,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
 READY = re.compile(r'live view at (https?://[^\s/]+)/?(\?token=[0-9a-f]+)?\s*$')
-CSV_HEADER = 't,x_end,y_end,tension_start,tension_end,tension_max,link_max'
+CSV_HEADER = 't,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max'
 
 
 class Failure(Exception):
@@ -331,6 +337,82 @@ class BrowserTest:
         return 'amplitude_scale -> %g; error shown: "%s"; t = %.3f s, %.1f %% of pixels changed' % (
             target, message, t1, 100 * d)
 
+    # 4b
+    def check_heading(self):
+        if self.driver.find_element(By.ID, 'wave_heading').is_displayed():
+            raise Failure('a wave heading on a scene without waves')
+        s = self.state()
+        if s['current_heading'] != 0 or s['limits']['current_heading'] != [-360, 360]:
+            raise Failure('the scene\'s current heading %r, limits %r' % (
+                s['current_heading'], s['limits']['current_heading']))
+        if self.text('current_heading-out') != '0°':
+            raise Failure('the dial says %r for the scene\'s 0 degrees' % self.text('current_heading-out'))
+        self.driver.execute_script(
+            'const e = document.getElementById("current_heading"); e.value = arguments[0];'
+            'e.dispatchEvent(new Event("change", {bubbles: true}));', 270)
+        self.wait(lambda: self.state()['current_heading'] == 270, '/state current_heading = 270')
+        self.wait(lambda: self.text('current_heading-out') == '270°', 'the page to show 270°')
+        # Set from elsewhere (a script, another viewer): the dial shows the same direction.
+        self.driver.execute_script('window.cablefilm.control({current_heading: -45})')
+        self.wait(lambda: self.state()['current_heading'] == -45, '/state current_heading = -45')
+        self.wait(lambda: self.text('current_heading-out') == '315°' and self.driver.execute_script(
+            'return document.getElementById("current_heading").value') == '315',
+            'the dial at 315° for -45')
+        self.driver.execute_script('window.cablefilm.control({current_heading: 400})')
+        self.wait(lambda: 'current_heading' in self.text('message'), 'the error about the heading')
+        message = self.text('message')
+        if self.state()['current_heading'] != -45:
+            raise Failure('a refused heading changed the heading')
+        self.screenshot('04b-heading')
+        return 'dial 270 -> /state; -45 shown as 315°; refused: "%s"' % message
+
+    # 4c
+    def check_waves(self):
+        """The fullest panel: scenes/grounded_mooring.toml (waves, an end that follows them):
+        the wave heading's dial reaches /state and turns the waves; a refused heading says why;
+        every control fits at 1000x700 and 1400x900."""
+        scene = os.path.join(os.path.dirname(os.path.abspath(self.args.scene)), 'grounded_mooring.toml')
+        server = Server(self.args, scene, os.path.join(self.args.out_dir, 'waves'), 'server-waves.log')
+        origin = self.origin
+        try:
+            self.origin = server.origin
+            self.driver.set_window_size(1400, 900)
+            self.driver.get(server.origin + '/')
+            self.wait(lambda: self.num('frames') >= 1 and self.ds('transport') == 'websocket', 'the page')
+            for id_ in ('current_heading', 'wave_height', 'wave_period', 'wave_heading'):
+                if not self.driver.find_element(By.ID, id_).is_displayed():
+                    raise Failure('the %s control is hidden on a scene with waves' % id_)
+            s = self.state()
+            if s['wave_heading'] != 0 or s['limits']['wave_heading'] != [-360, 360]:
+                raise Failure('the scene\'s wave heading %r, limits %r' % (
+                    s['wave_heading'], s['limits']['wave_heading']))
+            self.driver.execute_script(
+                'const e = document.getElementById("wave_heading"); e.value = arguments[0];'
+                'e.dispatchEvent(new Event("change", {bubbles: true}));', 30)
+            self.wait(lambda: self.state()['wave_heading'] == 30, '/state wave_heading = 30')
+            self.wait(lambda: self.text('wave_heading-out') == '30°', 'the page to show 30°')
+            # The waves turn over one wave period (10 s) of simulated time, at 5x real time.
+            self.driver.execute_script('window.cablefilm.control({speed: 5, current_heading: 90})')
+            self.wait(lambda: abs(self.state()['wave_heading_now'] - 30) < 1e-9 and
+                      abs(self.state()['current_heading_now'] - 90) < 1e-9,
+                      'the waves turned to 30° and the current to 90°', timeout=max(self.timeout, 60))
+            # Every control fits (before the error below fills the header's message).
+            layout = self._layout('04c-waves-layout')
+            self.driver.execute_script('window.cablefilm.control({wave_heading: -400})')
+            self.wait(lambda: 'wave_heading' in self.text('message'), 'the error about the heading')
+            message = self.text('message')
+            if self.state()['wave_heading'] != 30:
+                raise Failure('a refused wave heading changed it')
+            self.screenshot('04c-waves')
+            return 'wave heading 30 -> /state and turned; refused: "%s"; %s' % (message, layout)
+        finally:
+            self.origin = origin
+            self.driver.get('about:blank')
+            server.stop()
+            self.driver.set_window_size(1400, 900)
+            self.driver.get(self.origin + '/')
+            self.wait(lambda: self.num('frames') >= 1 and self.ds('transport') == 'websocket', 'the main page again')
+
     # 5
     def check_keyboard(self):
         keys = lambda k: self.driver.find_element(By.TAG_NAME, 'body').send_keys(k)
@@ -372,6 +454,10 @@ class BrowserTest:
 
     # 7
     def check_layout(self):
+        return self._layout('07-layout')
+
+    # The layout checks at 1000x700 and 1400x900, a screenshot of each named `prefix`-WxH.
+    def _layout(self, prefix):
         notes = []
         for w, h in ((1000, 700), (1400, 900)):
             self.driver.set_window_size(w, h)
@@ -408,7 +494,7 @@ class BrowserTest:
                 raise Failure('at %dx%d the page is %d px high in a %d px window' % (w, h, *fit['page']))
             if fit['cut']:
                 raise Failure('at %dx%d cut short: %s' % (w, h, fit['cut']))
-            self.screenshot('07-layout-%dx%d' % (w, h))
+            self.screenshot('%s-%dx%d' % (prefix, w, h))
             notes.append('%dx%d frame %dx%d' % (w, h, r['frame'][2] - r['frame'][0], frame_h))
         return ', '.join(notes)
 
@@ -595,6 +681,7 @@ def main():
         test = BrowserTest(args, server)
         checks = [('load', test.check_load), ('frames change', test.check_frames_change),
                   ('pause', test.check_pause), ('amplitude', test.check_amplitude),
+                  ('heading', test.check_heading), ('waves', test.check_waves),
                   ('keyboard', test.check_keyboard), ('record', test.check_record), ('layout', test.check_layout),
                   ('ends and range', test.check_ends_and_range), ('errors', test.check_errors),
                   ('token', test.check_token),

@@ -75,8 +75,8 @@ TEST(ParseControl, DeepNestingIsDescribedNotDumped) {
 TEST(ParseControl, UnknownFieldIsNamedAndEscaped) {
   EXPECT_EQ(Refusal(R"({"speed": 1, "sped": 2})"),
             "unknown field \"sped\"; expected any of pause, step, restart, speed, amplitude_scale, "
-            "period, current, wave_height, wave_period, colormap, lock_range, reset_range, tension_range, "
-            "record");
+            "period, current, current_heading, wave_height, wave_period, wave_heading, colormap, "
+            "lock_range, reset_range, tension_range, record");
   // A control character in a key comes back escaped, not raw to a terminal or page.
   EXPECT_EQ(Refusal("{\"a\\u001bb\": 1}").substr(0, 25), "unknown field \"a\\u001bb\";");
 }
@@ -160,6 +160,50 @@ TEST(ParseControl, WavePeriodWithinItsRange) {
   EXPECT_DOUBLE_EQ(*ParseControl(R"({"wave_period": 12.5})", l).wave_period, 12.5);
   EXPECT_EQ(Refusal(R"({"wave_period": 1})", l),
             "wave_period: expected a number in [2, 18] s, got 1");
+}
+
+// The current's direction and the waves' (issue 19): degrees from +x towards +z, -360 to 360
+// either way as the scene's current_heading and waves.heading; the waves' only with [waves].
+TEST(ParseControl, HeadingsInDegreesWithinAFullTurnEitherWay) {
+  ControlLimits l = Limits();
+  EXPECT_DOUBLE_EQ(*ParseControl(R"({"current_heading": 120})", l).current_heading, 120);
+  EXPECT_FALSE(ParseControl(R"({"current_heading": 0})", l).empty());
+  EXPECT_DOUBLE_EQ(*ParseControl(R"({"current_heading": -360})", l).current_heading, -360);
+  EXPECT_DOUBLE_EQ(*ParseControl(R"({"current_heading": 360})", l).current_heading, 360);
+  EXPECT_EQ(Refusal(R"({"current_heading": 361})", l),
+            "current_heading: expected a number in [-360, 360] degrees from +x towards +z, got "
+            "361");
+  EXPECT_EQ(Refusal(R"({"current_heading": -400.5})", l),
+            "current_heading: expected a number in [-360, 360] degrees from +x towards +z, got "
+            "-400.5");
+  EXPECT_EQ(Refusal(R"({"current_heading": "north"})", l),
+            "current_heading: expected a number in [-360, 360] degrees from +x towards +z, got "
+            "\"north\"");
+  EXPECT_EQ(Refusal(R"({"current_heading": null})", l),
+            "current_heading: expected a number in [-360, 360] degrees from +x towards +z, got "
+            "null");
+  const std::string huge = Refusal(R"({"current_heading": 1e999})", l);
+  EXPECT_TRUE(huge.rfind("current_heading: expected a number in [-360, 360]", 0) == 0 ||
+              huge.rfind("control: malformed JSON", 0) == 0)
+      << huge;
+  // The waves' heading: refused without waves, whatever its value.
+  EXPECT_EQ(Refusal(R"({"wave_heading": 45})", l), "wave_heading: the scene has no [waves]");
+  l.has_waves = true;
+  l.wave_height_max = 5;
+  EXPECT_DOUBLE_EQ(*ParseControl(R"({"wave_heading": -45})", l).wave_heading, -45);
+  EXPECT_DOUBLE_EQ(*ParseControl(R"({"wave_heading": 360})", l).wave_heading, 360);
+  EXPECT_EQ(Refusal(R"({"wave_heading": 720})", l),
+            "wave_heading: expected a number in [-360, 360] degrees from +x towards +z (the way "
+            "the waves travel), got 720");
+  EXPECT_EQ(Refusal(R"({"wave_heading": [90]})", l),
+            "wave_heading: expected a number in [-360, 360] degrees from +x towards +z (the way "
+            "the waves travel), got [90]");
+  // With the others in one request.
+  const ControlRequest r = ParseControl(
+      R"({"current": 0.5, "current_heading": 90, "wave_height": 1, "wave_heading": 30})", l);
+  EXPECT_DOUBLE_EQ(*r.current, 0.5);
+  EXPECT_DOUBLE_EQ(*r.current_heading, 90);
+  EXPECT_DOUBLE_EQ(*r.wave_heading, 30);
 }
 
 TEST(ParseControl, ARefusalIsWhole) {

@@ -277,13 +277,18 @@ def run(args):
         for body, field in ((b'{"speed": 50}', 'speed:'), (b'{"sped": 1}', 'unknown field'),
                             (b'not json', 'control: malformed JSON'),
                             (b'{"current": "fast"}', 'current:'), (b'{"pause": 1}', 'pause:'),
-                            (b'{"period": -3}', 'period:'), (b'{"colormap": "jet"}', 'colormap:')):
+                            (b'{"period": -3}', 'period:'), (b'{"colormap": "jet"}', 'colormap:'),
+                            (b'{"current_heading": 400}',
+                             'current_heading: expected a number in [-360, 360] degrees'),
+                            (b'{"current_heading": "east"}', 'current_heading:'),
+                            (b'{"wave_heading": 30}', 'wave_heading: the scene has no [waves]')):
             before = srv.state()
             code, reply = srv.control(body)
             check(code == 400 and reply['error'].startswith(field),
                   f'{body!r} answered {code} {reply}')
             after = srv.state()
-            for key in ('speed', 'current', 'period', 'paused', 'colormap', 'amplitude_scale'):
+            for key in ('speed', 'current', 'period', 'paused', 'colormap', 'amplitude_scale',
+                        'current_heading', 'wave_heading'):
                 check(before[key] == after[key], f'a refused control changed {key}')
         code, reply = srv.control(b'{' + b' ' * 5000 + b'}')
         check(code in (400, 413), f'a 5 kB control answered {code}')
@@ -370,7 +375,7 @@ def run(args):
     def timeseries():
         _, headers, body = srv.get('/timeseries.csv')
         lines = body.decode().splitlines()
-        check(lines[0] == 't,x_end,y_end,tension_start,tension_end,tension_max,link_max',
+        check(lines[0] == 't,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max',
               f'CSV header {lines[0]}')
         ts = [float(line.split(',')[0]) for line in lines[1:] if line]
         check(len(ts) > 100 and all(a < b for a, b in zip(ts, ts[1:])),
@@ -437,13 +442,61 @@ def run(args):
         # The still line sits at its equilibrium to within newtons; 1 m/s of current on 91 m of
         # line (drag ~1.5 kN) moves the fairlead tension by hundreds of newtons.
         check(change > 50, f'the fairlead tension changed by {change:.2f} N only')
+
+    def current_heading():
+        # The current turned across the line (along +z): over its 5 s ramp, the short way
+        # round; the fairlead tension changes as the line is pushed out of its plane.
+        st = srv2.state()
+        check(st['current_heading'] == 0 and st['limits']['current_heading'] == [-360, 360],
+              f'the scene\'s heading and its limits: {st["current_heading"]}, {st["limits"]}')
+        code, st = srv2.control({'current_heading': -270})  # the same as 90
+        check(code == 200 and st['current_heading'] == -270, f'current_heading answered {code} {st}')
+        st0 = srv2.wait(lambda s: s['seq_applied'] >= st['seq'], 'the heading to be applied')
+        st1 = srv2.wait(lambda s: s['t'] > st0['t'] + 6, 'the heading to ramp')
+        check(abs(st1['current_heading_now'] - 90) < 1e-9,
+              f'the current turned to {st1["current_heading_now"]} degrees, not 90 (the short '
+              f'way from 0)')
+        change = abs(st1['tension']['end'] - st0['tension']['end'])
+        check(change > 10, f'the fairlead tension changed by {change:.2f} N only')
+        code, reply = srv2.control({'current_heading': 361})
+        check(code == 400 and reply['error'].startswith('current_heading:'),
+              f'361 degrees answered {code} {reply}')
+        check(srv2.state()['current_heading'] == -270, 'a refused heading changed the state')
         check(srv2.stop() == 0, 'SIGTERM exit status')
 
     try:
         step('a current change shows in /state and changes the tensions', current)
+        step('the current heading turns the current and shows in /state', current_heading)
     finally:
         if srv2.proc.poll() is None:
             srv2.proc.kill()
+
+    # The waves' heading, on a scene with waves (scenes/grounded_mooring.toml), at 5x real time.
+    srv3 = Server(args.cablefilm, os.path.join(os.path.dirname(os.path.abspath(args.scene)),
+                                               'grounded_mooring.toml'), out_dir)
+
+    def wave_heading():
+        st = srv3.state()
+        check(st['has_waves'] and st['wave_heading'] == 0 and
+              st['limits']['wave_heading'] == [-360, 360], f'the scene\'s waves: {st}')
+        code, st = srv3.control({'wave_heading': 30, 'speed': 5})
+        check(code == 200 and st['wave_heading'] == 30, f'wave_heading answered {code} {st}')
+        st0 = srv3.wait(lambda s: s['seq_applied'] >= st['seq'], 'the heading to be applied')
+        # One wave period (10 s) of ramp, at 5x.
+        st1 = srv3.wait(lambda s: s['t'] > st0['t'] + 10.5, 'the waves to turn', timeout=60)
+        check(abs(st1['wave_heading_now'] - 30) < 1e-9,
+              f'the waves turned to {st1["wave_heading_now"]} degrees, not 30')
+        code, reply = srv3.control({'wave_heading': -361})
+        check(code == 400 and reply['error'].startswith('wave_heading: expected a number in '
+                                                        '[-360, 360]'),
+              f'-361 degrees answered {code} {reply}')
+        check(srv3.stop() == 0, 'SIGTERM exit status')
+
+    try:
+        step('the wave heading turns the waves and shows in /state', wave_heading)
+    finally:
+        if srv3.proc.poll() is None:
+            srv3.proc.kill()
 
     failed = sum(1 for _, e in results if e)
     print(f'{len(results) - failed} passed, {failed} failed')

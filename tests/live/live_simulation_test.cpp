@@ -227,5 +227,116 @@ TEST(LiveSimulation, ACurrentRampedInSettlesOnTheEquilibriumInThatCurrent) {
   EXPECT_GT((expected.x - sim.initial_state().x).cwiseAbs().maxCoeff(), 0.1);
 }
 
+// The current turned live (issue 19): the short way round, over the current's 5 s ramp, and
+// with the fairlead held still a current turned across the line (heading 90 degrees: along +z)
+// settles on the static equilibrium in that current as the Newton solver finds it, out of the
+// x-y plane.
+TEST(LiveSimulation, ACurrentTurnedAcrossSettlesOnTheEquilibriumOutOfThePlane) {
+  SceneDef scene = P63();
+  scene.end.motion = EndMotionKind::kFixed;
+  LiveSimulation sim(scene);
+  EXPECT_EQ(sim.scene_sea().current_heading, 0.0);
+  // 350 degrees from 0 is 10 degrees clockwise: the target -10, half-way (h(1/2) = 1/2) -5.
+  ASSERT_TRUE(sim.SetCurrentHeading(350.0));
+  EXPECT_NEAR(sim.targets().current_heading, -10.0, 1e-12);
+  EXPECT_EQ(sim.current_heading_now(), 0.0);  // a ramp, not a step
+  sim.Advance(2.5);
+  EXPECT_NEAR(sim.current_heading_now(), -5.0, 1e-9);
+  // On to 90 (from the target -10: 100 degrees anticlockwise), with a current to turn.
+  ASSERT_TRUE(sim.SetCurrentHeading(90.0));
+  EXPECT_NEAR(sim.targets().current_heading, 90.0, 1e-12);
+  ASSERT_TRUE(sim.SetCurrent(0.5));
+  for (int i = 0; i < 600; ++i) sim.Advance(1.0);
+  EXPECT_NEAR(sim.current_heading_now(), 90.0, 1e-12);
+  Model in_current = sim.model();
+  in_current.env.current = 0.5;
+  in_current.env.current_direction = Vec(0.0, 0.0, 1.0);
+  const State expected = SolveEquilibrium(in_current);
+  // The heading's direction is (cos 90 deg, 0, sin 90 deg) = (6e-17, 0, 1): the same to 1e-16
+  // of the drag. Drag damps the swing geometrically; after 600 s what is left is far below a
+  // millimetre.
+  EXPECT_LT((sim.state().x - expected.x).cwiseAbs().maxCoeff(), 1e-3);
+  // Out of the plane: the line's stations pushed along +z, by more than 0.1 m somewhere.
+  const int links = sim.model().line.links;
+  EXPECT_EQ(sim.state().x(2, 0), 0.0);
+  EXPECT_EQ(sim.state().x(2, links), 0.0);
+  EXPECT_GT(expected.x.row(2).maxCoeff(), 0.1);
+  for (int j = 1; j < links; ++j) EXPECT_GT(sim.state().x(2, j), 0.0) << "station " << j;
+  // Turned to -90 (half a turn: the short way is either way; along -z whichever), the current
+  // pushes the line the other way: every inner station's z changes sign, and it settles on the
+  // mirror image of the +90 equilibrium (z -> -z, x and y the same), as the solver finds it for
+  // a current along -z (to the same 1e-3 m as above).
+  const Points at_plus_90 = sim.state().x;
+  ASSERT_TRUE(sim.SetCurrentHeading(-90.0));
+  EXPECT_NEAR(std::abs(sim.targets().current_heading), 90.0, 1e-12);
+  for (int i = 0; i < 600; ++i) sim.Advance(1.0);
+  EXPECT_NEAR(std::abs(sim.current_heading_now()), 90.0, 1e-12);
+  in_current.env.current_direction = Vec(0.0, 0.0, -1.0);
+  const State mirrored = SolveEquilibrium(in_current);
+  EXPECT_LT((sim.state().x - mirrored.x).cwiseAbs().maxCoeff(), 1e-3);
+  for (int j = 1; j < links; ++j) {
+    EXPECT_LT(sim.state().x(2, j), 0.0) << "station " << j;
+    EXPECT_NEAR(sim.state().x(2, j), -at_plus_90(2, j), 1e-3) << "station " << j;
+    EXPECT_NEAR(sim.state().x(1, j), at_plus_90(1, j), 1e-3) << "station " << j;
+  }
+  EXPECT_LT(sim.state().x.row(2).minCoeff(), -0.1);
+  sim.Restart();
+  EXPECT_EQ(sim.targets().current_heading, 0.0);
+  EXPECT_EQ(sim.current_heading_now(), 0.0);
+  EXPECT_EQ(sim.state().x.row(2).cwiseAbs().maxCoeff(), 0.0);
+}
+
+// The waves turned live: over one wave period, the short way round, the phase kept at the
+// driven end's rest point (80, 30.48, 0) while the crests swing round it: there theta(t) =
+// theta(t0) - omega (t - t0) at the constant period, to round-off (bound 1e-9 rad). Turned to
+// travel along +z, their particle velocities push the line out of the x-y plane.
+TEST(LiveSimulation, WaveHeadingTurnsWithThePhaseKeptAtTheDrivenEnd) {
+  SceneDef scene = P63();
+  EXPECT_FALSE(LiveSimulation(scene).SetWaveHeading(90.0));
+  AddWaves(scene);
+  LiveSimulation sim(scene);
+  EXPECT_EQ(sim.scene_sea().wave_heading, 0.0);
+  auto advance = [&](double seconds) {  // frame by frame, as the live view does
+    for (int i = 0; i < std::lround(seconds * 30); ++i) sim.Advance(1.0 / 30);
+  };
+  const Vec p = sim.state().x.col(sim.model().line.links);
+  auto theta = [&](double t) {  // the model's wave phase at p, t [rad]
+    const Wave& w = sim.wave();
+    return w.k * w.direction.dot(p) - w.omega * t + w.spec.phase;
+  };
+  advance(2.0);
+  EXPECT_EQ(sim.state().x.row(2).cwiseAbs().maxCoeff(), 0.0);  // in the plane so far
+  const double theta0 = theta(2.0), omega = sim.wave().omega;
+  ASSERT_TRUE(sim.SetWaveHeading(90.0));
+  EXPECT_NEAR(sim.targets().wave_heading, 90.0, 1e-12);
+  // Half-way through the 6 s ramp, h(1/2) = 1/2: each frame holds the heading of its middle,
+  // 1/60 s before the ramp's steepest point (slope 1.875 x (pi/2) / 6 s): 0.008 rad short.
+  advance(3.0);
+  EXPECT_NEAR(sim.wave().spec.heading, M_PI / 4, 0.01);
+  EXPECT_LT(std::abs(std::remainder(theta(5.0) - (theta0 - 3.0 * omega), 2 * M_PI)), 1e-9);
+  advance(3.1);  // past the ramp's end at every frame's middle
+  EXPECT_DOUBLE_EQ(sim.wave().spec.heading, M_PI / 2);
+  EXPECT_NEAR(sim.wave().direction.x(), 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(sim.wave().direction.z(), 1.0);
+  EXPECT_EQ(sim.wave().omega, omega);  // the period as it was
+  EXPECT_LT(std::abs(std::remainder(theta(sim.t()) - (theta0 - (sim.t() - 2.0) * omega),
+                                    2 * M_PI)),
+            1e-9);
+  advance(6.0);
+  const double z = sim.state().x.row(2).cwiseAbs().maxCoeff();
+  std::printf("[ wave heading ] largest |z| 6 s after the waves turned to +z: %.3g m\n", z);
+  EXPECT_GT(z, 1e-3);
+  EXPECT_TRUE(sim.state().x.allFinite());
+  // -270 is 90: no turn. -45 from 90 is 135 clockwise (not 225 anticlockwise).
+  ASSERT_TRUE(sim.SetWaveHeading(-270.0));
+  EXPECT_NEAR(sim.targets().wave_heading, 90.0, 1e-12);
+  ASSERT_TRUE(sim.SetWaveHeading(-45.0));
+  EXPECT_NEAR(sim.targets().wave_heading, -45.0, 1e-12);
+  sim.Restart();
+  EXPECT_EQ(sim.targets().wave_heading, 0.0);
+  EXPECT_EQ(sim.wave().spec.heading, 0.0);
+  EXPECT_EQ(sim.wave().spec.phase, scene.waves.phase);
+}
+
 }  // namespace
 }  // namespace cablefilm

@@ -68,8 +68,8 @@ def cli_results(scene_path, out):
 def assert_result_is_file(test, result, ds):
     """Every variable of results.nc, bit for bit, against the module's arrays."""
     test.assertEqual(ds.dimensions["time"].size, result.time.shape[0])
-    for name in ["time", "x", "y", "tension", "x_start", "y_start", "x_end", "y_end", "s",
-                 "s_link"]:
+    for name in ["time", "x", "y", "z", "tension", "x_start", "y_start", "z_start", "x_end",
+                 "y_end", "z_end", "s", "s_link"]:
         assert_same_bits(test, getattr(result, name), ds.variables[name][:].data, name)
 
 
@@ -84,10 +84,16 @@ class ReproducesTheCli(unittest.TestCase):
             assert_result_is_file(self, result, ds)
             eq = cablefilm.equilibrium(P63)   # the initial state, solved on its own
             for name, ours in [("x_equilibrium", eq.x), ("y_equilibrium", eq.y),
-                               ("tension_equilibrium", eq.tension)]:
+                               ("z_equilibrium", eq.z), ("tension_equilibrium", eq.tension)]:
                 assert_same_bits(self, ours, ds.variables[name][:].data, name)
             x, y, tension = eq   # unpacks so
             assert_same_bits(self, x, result.x[0], "equilibrium = first row")
+            # P63 is in the x-y plane: z is 0 everywhere, exactly.
+            self.assertEqual(result.z.shape, (1801, 61))
+            self.assertEqual(result.position.shape, (1801, 61, 3))
+            self.assertEqual(eq.position.shape, (61, 3))
+            for z in (result.z, result.z_start, result.z_end, eq.z):
+                self.assertEqual(np.count_nonzero(z), 0)
             # The run's printed peak: the largest tension_max of the rows.
             self.assertEqual(result.peak_tension, ds.variables["tension"][:].data.max())
             self.assertTrue(result.completed)
@@ -107,6 +113,50 @@ class ReproducesTheCli(unittest.TestCase):
             result = cablefilm.run(scene)
             self.assertEqual(result.time[-1], 10.0)
             assert_result_is_file(self, result, ds)
+
+
+class ThreeDimensions(unittest.TestCase):
+    """Issue 19: P63 turned out of its plane by a current across it (heading 90 degrees, along
+    +z) and a sway of its fairlead along z: the module's z arrays are the doubles of results.nc
+    and what timeseries.csv and equilibrium.csv print, and out of the plane."""
+
+    def test_z_matches_the_files(self):
+        import csv
+        scene = cablefilm.load(P63)
+        scene.update({"environment.current": 0.5, "environment.current_heading": 90.0,
+                      "ends.end.z_amplitudes": [0.0, 1.0], "simulation.duration": 3})
+        out = workdir("p63_3d")
+        path = os.path.join(out, "scene.toml")
+        with open(path, "w") as f:
+            f.write(scene.text)
+        with cli_results(path, out) as ds:
+            result = cablefilm.run(scene)
+            assert_result_is_file(self, result, ds)   # z, z_start, z_end among them
+            eq = cablefilm.equilibrium(scene)
+            assert_same_bits(self, eq.z, ds.variables["z_equilibrium"][:].data, "z_equilibrium")
+        with open(os.path.join(out, "timeseries.csv")) as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual([r["z_end"] for r in rows], ["%.12g" % v for v in result.z_end])
+        with open(os.path.join(out, "equilibrium.csv")) as f:
+            stations = list(csv.DictReader(f))
+        self.assertEqual([r["z"] for r in stations], ["%.12g" % v for v in eq.z])
+        # The same positions as (N, 3) arrays: a run's [n, stations, 3], a view of the same
+        # doubles (not writeable, as x, y, z); the equilibrium's [stations, 3].
+        self.assertEqual(result.position.shape, result.x.shape + (3,))
+        self.assertFalse(result.position.flags.writeable)
+        for k, axis in enumerate((result.x, result.y, result.z)):
+            assert_same_bits(self, result.position[..., k], axis, "position[..., %d]" % k)
+        assert_same_bits(self, eq.position, np.stack([eq.x, eq.y, eq.z], axis=-1), "eq.position")
+        assert_same_bits(self, result.position[:, -1], np.stack(
+            [result.x_end, result.y_end, result.z_end], axis=-1), "position of the end")
+        # Out of the plane: every station but the anchor and the fairlead pushed towards +z by
+        # the current, the fairlead swaying as eq. (3) says along z (R(3 s) sin(0.6 pi) = 0.42 m).
+        self.assertTrue(np.all(result.z[:, 1:-1] > 0))
+        self.assertEqual(np.count_nonzero(result.z_start), 0)
+        t = result.time
+        trochoid = (1 - (1 + 0.5 * t) * np.exp(-0.5 * t)) * np.sin(2 * np.pi * t / 10)
+        self.assertLess(np.max(np.abs(result.z_end - trochoid)), 1e-12)
+        self.assertGreater(abs(result.z_end[-1]), 0.4)
 
 
 class SceneErrors(unittest.TestCase):
@@ -191,7 +241,7 @@ class DictScenes(unittest.TestCase):
         from_file = cablefilm.load(P63)
         from_file["simulation.duration"] = 20.0
         from_file = cablefilm.run(from_file)
-        for name in ["time", "x", "y", "tension"]:
+        for name in ["time", "x", "y", "z", "tension"]:
             assert_same_bits(self, getattr(from_dict, name), getattr(from_file, name), name)
         # to_dict() gives the dict back; a numpy value is taken as its Python value.
         self.assertEqual(cablefilm.load(d).to_dict(), d)

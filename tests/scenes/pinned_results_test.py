@@ -3,10 +3,13 @@
 timeseries.csv and the steps its run_report.toml counts (issue 18: results that do not change
 as the code is reshaped; issue 19: a 2D scene's results the same on the 3D core).
 
-Each scene is run as a user runs it (`cablefilm run SCENE --no-film`) and compared row by row:
-the same rows and times; positions within 1e-9 m, the tensions within 3e-7 of the run's peak
-tension, the link holding the largest tension the same unless two links are within that
-tolerance of each other; the same steps, rejected steps and Newton iterations.
+Each scene is run as a user runs it (`cablefilm run SCENE --no-film`) and compared row by row,
+column by name: the same rows and times; the end's position x_end, y_end, z_end within 1e-9 m
+(a pin written before timeseries.csv had z_end holds a line in the x-y plane: its z_end is 0);
+the tensions within 3e-7 of the run's peak tension, the link holding the largest tension the
+same unless two links are within that tolerance of each other; the same steps, rejected steps
+and Newton iterations. The comparison is itself checked first on made-up rows (a pin with and
+without z_end, a run in and out of the plane).
 
 What can be pinned is measured, not assumed: each scene is run a second time with every
 Young's modulus changed by 1e-12 of itself, a change of the physics at the level of
@@ -81,7 +84,7 @@ def rows(text):
     return list(csv.DictReader(io.StringIO(text)))
 
 
-def compare(name, got, want, got_steps, want_steps, pinned_rows):
+def compare(name, got, want, got_steps, want_steps, pinned_rows, report=True):
     problems = []
     a, b = rows(got), rows(want)
     if len(a) != len(b):
@@ -95,8 +98,9 @@ def compare(name, got, want, got_steps, want_steps, pinned_rows):
             problems.append(f"row at t = {rb['t']} s is at t = {ra['t']} s")
             break
         for key in ("x_end", "y_end", "z_end"):
-            if key in rb:
-                worst["position"] = max(worst["position"], abs(float(ra[key]) - float(rb[key])))
+            # A pin from before z_end (issue 19) was in the x-y plane: its z_end is 0.
+            worst["position"] = max(worst["position"],
+                                    abs(float(ra[key]) - float(rb.get(key, "0"))))
         for key in TENSION_KEYS:
             worst["tension"] = max(worst["tension"], abs(float(ra[key]) - float(rb[key])))
         if ra["link_max"] != rb["link_max"] and \
@@ -111,10 +115,35 @@ def compare(name, got, want, got_steps, want_steps, pinned_rows):
                         f"{worst['tension'] / peak:.3g} of the peak (bound {TENSION_BOUND:g})")
     sensitive = "" if pinned_rows == len(b) else \
         f" (round-off grows from t = {b[pinned_rows]['t']} s: rows after not compared)"
+    if not report:
+        return problems
     print(f"{'FAIL' if problems else 'ok'}: {name}: {pinned_rows} of {len(a)} rows pinned"
           f"{sensitive}, steps {got_steps}, largest "
           f"differences {worst['position']:.2g} m, {worst['tension'] / peak:.2g} of the peak "
           f"{peak:.6g} N")
+    return problems
+
+
+def check_compare():
+    """compare() itself, on made-up rows: a pin without z_end (from before issue 19) is taken
+    as z_end = 0 and a run in the x-y plane matches it, a run out of the plane does not; a pin
+    with z_end is compared on it. Returns the problems (empty when compare behaves)."""
+    old = "t,x_end,y_end,tension_start,tension_end,tension_max,link_max\n0,80,20,5,6,7,3\n"
+    new = "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max\n" \
+          "0,80,20,{z},5,6,7,3\n"
+    steps = {k: 1 for k in STEP_KEYS}
+    cases = [  # (run, pin, expect a problem)
+        (new.format(z=0), old, False),
+        (new.format(z=1e-6), old, True),   # 1e-6 m off the plane: 1000x the 1e-9 m bound
+        (new.format(z=0.25), new.format(z=0.25), False),
+        (new.format(z=0.25), new.format(z=0.25 + 2e-9), True),
+    ]
+    problems = []
+    for i, (got, want, bad) in enumerate(cases):
+        found = compare(f"check {i}", got, want, steps, steps, 1, report=False)
+        if bool(found) != bad:
+            problems.append(f"compare case {i}: expected {'a problem' if bad else 'none'}, "
+                            f"got {found}")
     return problems
 
 
@@ -130,7 +159,7 @@ def main():
     pinned = args.source_dir / "tests" / "scenes" / "pinned"
     scenes = sorted(s for s in (args.source_dir / "scenes").glob("*.toml")
                     if not args.only or s.stem in args.only)
-    failures = []
+    failures = check_compare()
     with tempfile.TemporaryDirectory() as tmp:
         for scene in scenes:
             name = scene.stem

@@ -26,14 +26,18 @@ const pending = [];        // resolvers of controls sent over the WebSocket, ans
 
 // ---- formatting -------------------------------------------------------------------------
 const kN = (n) => (n == null ? '–' : (n / 1000).toFixed(2) + ' kN');
+const turn = (v) => ((v % 360) + 360) % 360;  // a heading in [0, 360): the same direction
+const degrees = (v) => turn(Math.round(v)).toFixed(0) + '°';
 const secs = (s) => (s == null ? '–' : s.toFixed(2) + ' s');
 const fmt = {
   speed: (v) => v.toFixed(v < 1 ? 2 : 1) + '×',
   amplitude_scale: (v) => v.toFixed(2) + '×',
   period: (v) => v.toFixed(1) + ' s',
   current: (v) => (v > 0 ? '+' : '') + v.toFixed(2) + ' m/s',
+  current_heading: degrees,
   wave_height: (v) => v.toFixed(2) + ' m',
   wave_period: (v) => v.toFixed(1) + ' s',
+  wave_heading: degrees,
 };
 
 // ---- frames -----------------------------------------------------------------------------
@@ -144,6 +148,7 @@ function applyState(s) {
   $('amplitude').disabled = !s.has_period;
   if (s.has_period) setSlider('amplitude', s.amplitude_scale, L.amplitude_scale);
   setSlider('current', s.current, L.current);
+  setSlider('current_heading', s.current_heading);  // the dial is 0 to 360 whatever the limits
   $('sea-title').textContent = s.has_period ? 'Motion and current'
     : s.has_waves ? 'Waves and current' : 'Current';
   $('period-row').hidden = !s.has_period;
@@ -155,6 +160,9 @@ function applyState(s) {
   $('wave-period-row').hidden = !s.has_waves;
   $('wave_period').disabled = !s.has_waves;
   if (s.has_waves) setSlider('wave_period', s.wave_period, L.wave_period);
+  $('wave-heading-row').hidden = !s.has_waves;
+  $('wave_heading').disabled = !s.has_waves;
+  if (s.has_waves) setSlider('wave_heading', s.wave_heading);
 
   const select = $('colormap');
   const names = (s.colormaps || [s.colormap]).join();
@@ -194,11 +202,12 @@ function applyState(s) {
   }
 }
 
-// Sliders marked data-log move in log10 of the value (speed, period).
+// Sliders marked data-log move in log10 of the value (speed, period); data-angle ones show a
+// heading from 0 to 360 degrees (the server takes -360 to 360: -90 is 270).
 // A slider the user is moving (data-busy) is left alone until the server has answered.
 function setSlider(id, value, limits) {
   const el = $(id);
-  const pos = (v) => ('log' in el.dataset ? Math.log10(v) : v);
+  const pos = (v) => ('log' in el.dataset ? Math.log10(v) : 'angle' in el.dataset ? turn(v) : v);
   if (limits) { el.min = pos(limits[0]); el.max = pos(limits[1]); }
   if (value == null || el.dataset.busy) return;
   el.value = pos(value);
