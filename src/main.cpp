@@ -90,6 +90,11 @@ std::string ParseColormap(const std::string& text) {
   Bad("--colormap: expected one of " + list + ", got " + Shown(text));
 }
 
+std::string ParseView(const std::string& text) {
+  if (cablefilm::ViewProblem(text).empty()) return text;
+  Bad("--view: " + cablefilm::ViewProblem(text));
+}
+
 // A folder, checked now rather than after the simulation, when the film needs it.
 std::string ShaderDir(const std::string& text) {
   std::error_code ec;
@@ -166,6 +171,9 @@ void AddRunOptions(CLI::App* cmd, cablefilm::RunOptions* o,
         [o](const std::string& v) { o->colormap = ParseColormap(v); });
   Value(cmd, "--tension-range", "MIN,MAX", "colour and plot range in N (default: the run's)",
         [o](const std::string& v) { ParseTensionRange(v, &o->tension_min, &o->tension_max); });
+  Value(cmd, "--view", "VIEW",
+        "auto (default: 3D unless the scene stays in the plane z = 0), 2d, 3d",
+        [o](const std::string& v) { o->view = ParseView(v); });
   Value(cmd, "--shaders", "DIR", "GLSL shader folder (default: $CABLEFILM_SHADERS, else built in)",
         [o](const std::string& v) { o->shader_dir = ShaderDir(v); });
 }
@@ -220,6 +228,8 @@ void AddLiveOptions(CLI::App* cmd, cablefilm::LiveCommandOptions* o) {
         [o](const std::string& v) { o->speed = ParseNumber("--speed", v, 0.1, 10, false, ""); });
   Value(cmd, "--colormap", "NAME", "as for run (default: the scene's)",
         [o](const std::string& v) { o->colormap = ParseColormap(v); });
+  Value(cmd, "--view", "VIEW", "as for run (default: the scene's film.view)",
+        [o](const std::string& v) { o->view = ParseView(v); });
   Value(cmd, "--out", "DIR", "where recordings go (default output/<scene name>)",
         [o](const std::string& v) { o->out_dir = v; });
   Value(cmd, "--shaders", "DIR", "as for run",

@@ -90,6 +90,7 @@ std::vector<std::string> ChildRunOptions(const RunOptions& o) {
   if (o.fps > 0) args.insert(args.end(), {"--fps", number(o.fps)});
   if (o.speed > 0) args.insert(args.end(), {"--speed", number(o.speed)});
   if (!o.colormap.empty()) args.insert(args.end(), {"--colormap", o.colormap});
+  if (!o.view.empty()) args.insert(args.end(), {"--view", o.view});
   if (o.tension_min >= 0)
     args.insert(args.end(), {"--tension-range", number(o.tension_min) + "," + number(o.tension_max)});
   if (!o.shader_dir.empty()) args.insert(args.end(), {"--shaders", o.shader_dir});

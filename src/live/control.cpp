@@ -45,20 +45,46 @@ double ReadNumber(const Json& v, const char* field, double lo, double hi, const 
   return x;
 }
 
+// "reset", or an object of finite numbers; their ranges are the camera's to clamp to (a drag
+// that overshoots still turns the view as far as it goes).
+CameraRequest ReadCamera(const Json& v) {
+  const std::string want =
+      "camera: expected \"reset\" or an object with any of azimuth, elevation (degrees) and "
+      "zoom (a finite number each)";
+  CameraRequest c;
+  if (v.is_string() && v.get<std::string>() == "reset") {
+    c.reset = true;
+    return c;
+  }
+  if (!v.is_object() || v.empty()) throw ControlError(want + ", got " + Shown(v));
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    const Json& x = it.value();
+    std::optional<double>* field = it.key() == "azimuth"     ? &c.azimuth
+                                   : it.key() == "elevation" ? &c.elevation
+                                   : it.key() == "zoom"      ? &c.zoom
+                                                             : nullptr;
+    if (!field) throw ControlError(want + ", got the field " + Shown(Json(it.key())));
+    if (!x.is_number() || !std::isfinite(x.get<double>()))
+      throw ControlError("camera." + it.key() + ": expected a finite number, got " + Shown(x));
+    *field = x.get<double>();
+  }
+  return c;
+}
+
 }  // namespace
 
 const std::vector<std::string>& ControlFields() {
   static const std::vector<std::string> fields{
       "pause", "step", "restart", "speed", "amplitude_scale", "period",
       "current", "current_heading", "wave_height", "wave_period", "wave_heading", "colormap",
-      "lock_range", "reset_range", "tension_range", "record"};
+      "lock_range", "reset_range", "tension_range", "record", "camera"};
   return fields;
 }
 
 bool ControlRequest::empty() const {
   return !pause && !step && !restart && !speed && !amplitude_scale && !period && !current &&
          !current_heading && !wave_height && !wave_period && !wave_heading && !colormap &&
-         !lock_range && !reset_range && !tension_range && !record;
+         !lock_range && !reset_range && !tension_range && !record && !camera;
 }
 
 ControlRequest ParseControl(const std::string& body, const ControlLimits& limits) {
@@ -140,6 +166,11 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
       r.tension_range = std::array<double, 2>{lo, hi};
     } else if (key == "record") {
       r.record = ReadBool(v, "record");
+    } else if (key == "camera") {
+      if (!limits.space)
+        throw ControlError("camera: the scene is drawn in the plane (start with --view 3d to "
+                           "draw it in space)");
+      r.camera = ReadCamera(v);
     } else {
       std::string names;
       for (const std::string& n : ControlFields()) names += (names.empty() ? "" : ", ") + n;

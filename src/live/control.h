@@ -25,6 +25,14 @@ struct ControlLimits {
   double wave_height_max = 0;               // the breaking height of the scene's wave [m]
   double wave_period_min = 0, wave_period_max = 0;  // the waves' period range [s]
   std::vector<std::string> colormaps;       // the known colour maps
+  bool space = false;                       // drawn in 3D: the camera can be moved
+};
+
+// The 3D view's camera as a viewer moves it: any of its fields (each a finite number, clamped
+// to its range by the session: view/camera.h), or back to the default.
+struct CameraRequest {
+  std::optional<double> azimuth, elevation, zoom;  // [deg], [deg], [1]
+  bool reset = false;
 };
 
 struct ControlRequest {
@@ -41,6 +49,7 @@ struct ControlRequest {
   bool reset_range = false;  // unlock the range and start it again from the tensions now
   std::optional<std::array<double, 2>> tension_range;  // [min, max] N: a locked range
   std::optional<bool> record;                        // start (true) or stop (false) a film
+  std::optional<CameraRequest> camera;               // {"azimuth", "elevation", "zoom"} or "reset"
   bool empty() const;
 };
 

@@ -33,6 +33,7 @@ int LiveCommand(const std::string& scene_path, const LiveCommandOptions& o) {
   lo.fps = o.fps;
   lo.speed = o.speed;
   lo.colormap = o.colormap;
+  lo.view = o.view;
   lo.out_dir = o.out_dir.empty() ? "output/" + scene.name : o.out_dir;
   lo.shader_dir = o.shader_dir;
   std::signal(SIGINT, OnLiveSignal);

@@ -10,6 +10,7 @@ struct LiveCommandOptions {
   int width = 1280, height = 720;
   double fps = 30, speed = 1;
   std::string colormap;             // empty: the scene's
+  std::string view;                 // "auto", "2d", "3d"; empty: the scene's film.view
   std::string out_dir;              // recordings; empty: output/<scene name>
   std::string shader_dir;
 };

@@ -17,6 +17,7 @@
 #include "view/colormap.h"
 #include "view/frame_builder.h"
 #include "view/renderer.h"
+#include "scene/film_view.h"
 #include "view/scene_view_builder.h"
 
 namespace cablefilm {
@@ -25,11 +26,13 @@ namespace {
 using Json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-// The live view's one line, as the film would draw it, with no name (a line alone needs none).
-SceneView MakeLiveScene(const SceneDef& scene, const LiveSimulation& sim) {
+// The live view's one line, as the film would draw it, with no name (a line alone needs none),
+// in space or in the plane as `view` says (empty: the scene's film.view).
+SceneView MakeLiveScene(const SceneDef& scene, const LiveSimulation& sim, const std::string& view) {
   return MakeSceneView(scene, sim.model(),
                        {MakeLineView(scene, sim.model(), sim.initial_state().x,
-                                     sim.initial_tensions(), "")});
+                                     sim.initial_tensions(), "")},
+                       DrawsInSpace(scene, view.empty() ? scene.film.view : view));
 }
 
 ControlLimits MakeLimits(const LiveSimulation& sim) {
@@ -78,7 +81,7 @@ LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
     : scene_(scene),
       options_(options),
       sim_(scene),
-      view_(MakeLiveScene(scene, sim_)),
+      view_(MakeLiveScene(scene, sim_, options.view)),
       speed_(options.speed),
       colormap_(options.colormap.empty() ? scene.film.colormap : options.colormap),
       history_(view_, FollowingPolicy{scene.simulation.duration, sim_.wave()}),
@@ -89,6 +92,8 @@ LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
   if (!(options_.fps >= 1 && options_.fps <= 120))
     throw Error("live: --fps must be in [1, 120], got " + std::to_string(options_.fps));
   limits_ = MakeLimits(sim_);
+  limits_.space = view_.space;
+  camera_ = DefaultCamera(view_);
   if (!(speed_ >= limits_.speed_min && speed_ <= limits_.speed_max))
     throw Error("live: --speed must be in [0.1, 10], got " + std::to_string(speed_));
   Colormap check(colormap_);  // an unknown name fails here, naming the known ones
@@ -276,6 +281,7 @@ void LiveSession::RecordLocked() {
   state_.t = sim_.t();
   state_.lines.resize(1);
   SetLineState(sim_.state().x, sim_.tensions(), &state_.lines[0]);
+  state_.current = TopCurrent(sim_.model(), sim_.water());
   history_.Add(state_);
   rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
 }
@@ -369,6 +375,7 @@ void LiveSession::RenderLoop() {
   }();
   while (true) {
     std::string status, colormap;
+    OrbitCamera camera;
     std::uint64_t seq = 0, fresh = 0, step = 0;
     bool want_record = false;
     {
@@ -391,6 +398,7 @@ void LiveSession::RenderLoop() {
       picture = history_;
       status = StatusLocked();
       colormap = colormap_;
+      camera = camera_;
       seq = seq_applied_;
       step = steps_;
     }
@@ -430,8 +438,8 @@ void LiveSession::RenderLoop() {
     try {
       const Snapshot& shown = picture.now();
       const FrameLayout layout = MakeFrameLayout(view_, picture, options_.width, options_.height);
-      const Frame frame =
-          MakeFrame(view_, picture, shown, layout, Colormap(colormap), Theme::Dark(), status);
+      const Frame frame = MakeFrame(view_, picture, shown, layout, Colormap(colormap),
+                                    Theme::Dark(), status, &camera);
       renderer->Draw(frame, canvas.get());
       auto out = std::make_shared<LiveFrame>();
       out->number = ++number;
@@ -462,6 +470,7 @@ void LiveSession::RenderLoop() {
         frame_ = std::move(out);
         frame_input_ = drawn_input;
         frame_view_ = drawn_view;
+        space_view_ = layout.space ? layout.space_view : PixelRect{};
         if (fresh > fresh_done_) fresh_done_ = fresh;
         previous = std::move(image_);
         image_ = std::move(canvas);
@@ -541,7 +550,15 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
       }
       record_wanted_ = *r.record;
     }
-    if (r.colormap || r.tension_range || r.lock_range || r.reset_range || r.pause || r.speed)
+    if (r.camera) {  // over the camera as it is; clamped: a hostile value only turns the view
+      OrbitCamera c = r.camera->reset ? DefaultCamera(view_) : camera_;
+      if (r.camera->azimuth) c.azimuth = *r.camera->azimuth;
+      if (r.camera->elevation) c.elevation = *r.camera->elevation;
+      if (r.camera->zoom) c.zoom = *r.camera->zoom;
+      camera_ = ClampCamera(c);
+    }
+    if (r.colormap || r.tension_range || r.lock_range || r.reset_range || r.pause || r.speed ||
+        r.camera)
       ++view_version_;
     ++state_version_;
     // The state this control made, not a later one: a film stopped here ends at its t.
@@ -604,6 +621,10 @@ std::string LiveSession::StateJsonLocked() const {
       {"title", scene_.title},
       {"scene", scene_.name},
       {"duration", scene_.simulation.duration},
+      {"space", view_.space},
+      {"camera", {{"azimuth", camera_.azimuth}, {"elevation", camera_.elevation},
+                  {"zoom", camera_.zoom}}},
+      {"space_view", {space_view_.x0, space_view_.y0, space_view_.x1, space_view_.y1}},
       {"width", options_.width},
       {"height", options_.height},
       {"limits", {{"speed", {limits_.speed_min, limits_.speed_max}},

@@ -24,7 +24,9 @@
 #include "live/live_simulation.h"
 #include "live/row_log.h"
 #include "scene/scene_def.h"
+#include "view/camera.h"
 #include "view/history.h"
+#include "view/plot_layout.h"
 #include "view/scene_view.h"
 #include "view/snapshot.h"
 
@@ -35,6 +37,7 @@ struct LiveOptions {
   double fps = 30;                 // frames per wall-clock second
   double speed = 1;                // simulated seconds per wall-clock second
   std::string colormap;            // empty: the scene's
+  std::string view;                // "auto", "2d", "3d" (scene/film_view.h); empty: the scene's
   std::string out_dir;             // where recordings go (created when the first one starts)
   std::string shader_dir;          // empty: the built-in shaders
   int jpeg_quality = 85;
@@ -131,6 +134,7 @@ class LiveSession {
   bool paused_ = false;
   double speed_;
   std::string colormap_;
+  OrbitCamera camera_;          // the 3D view's (a scene drawn in space)
   SeaTargets targets_;          // what the sea is ramping to (as answered to the controls)
   std::uint64_t seq_ = 0;       // controls accepted
   std::uint64_t seq_applied_ = 0;  // controls the simulation has taken
@@ -160,6 +164,7 @@ class LiveSession {
   std::shared_ptr<const Image> image_;
   std::deque<double> frame_times_;  // wall [s] of the frames of the last second
   std::string render_error_;
+  PixelRect space_view_;        // where the last frame drew its 3D view [px] (none: empty)
   std::uint64_t frame_input_ = 0, frame_view_ = 0;  // the versions frame_ was drawn from
   std::uint64_t fresh_wanted_ = 0, fresh_done_ = 0;  // frames asked by FreshFrame, drawn
 

@@ -73,6 +73,7 @@ class LiveSimulation {
   const Eigen::VectorXd& tensions() const { return data_.tension(); }
   const Model& model() const { return model_; }
   const Wave& wave() const { return data_.water.wave; }  // the waves of the last step
+  const Water& water() const { return data_.water; }     // its current and waves
   const State& initial_state() const { return initial_.state; }
   const Eigen::VectorXd& initial_tensions() const { return initial_.tension(); }
   const SeaTargets& scene_sea() const { return scene_sea_; }

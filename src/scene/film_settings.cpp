@@ -3,14 +3,15 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "scene/film_view.h"
 #include "scene/scene_limits.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
 
-const FilmKeyNames kCommandLineNames{"--size", "--fps", "--speed", "--colormap",
-                                     "--tension-range"};
-const FilmKeyNames kPythonNames{"width", "fps", "speed", "colormap", "tension_range"};
+const FilmKeyNames kCommandLineNames{"--size",     "--fps",           "--speed",
+                                     "--colormap", "--tension-range", "--view"};
+const FilmKeyNames kPythonNames{"width", "fps", "speed", "colormap", "tension_range", "view"};
 
 std::string FilmSizeProblem(int width, int height) {
   auto bad = [](int v, int hi) { return v < kMinFilmSize || v > hi || v % 2 != 0; };
@@ -47,6 +48,14 @@ std::string TensionRangeProblem(double lo, double hi) {
          " >= MAX > MIN >= 0, got " + FormatNumber(lo) + "," + FormatNumber(hi);
 }
 
+std::string ViewProblem(const std::string& view) {
+  const std::vector<std::string>& names = FilmViewNames();
+  if (std::find(names.begin(), names.end(), view) != names.end()) return "";
+  std::string known;
+  for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+  return "expected one of " + known + ", got " + QuoteText(view);
+}
+
 FilmSettings ResolveFilm(const SceneDef& scene, const FilmOverrides& o,
                          const FilmKeyNames& names, bool whole_film) {
   auto check = [](const std::string& key, const std::string& problem) {
@@ -64,6 +73,7 @@ FilmSettings ResolveFilm(const SceneDef& scene, const FilmOverrides& o,
   if (o.fps > 0) check(names.fps, FpsProblem(s.look.fps = o.fps));
   if (o.speed > 0) check(names.speed, SpeedProblem(s.look.speed = o.speed));
   if (!o.colormap.empty()) check(names.colormap, ColormapProblem(s.look.colormap = o.colormap));
+  if (!o.view.empty()) check(names.view, ViewProblem(s.look.view = o.view));
   if (o.tension_min >= 0 || o.tension_max >= 0) {
     check(names.tension_range, TensionRangeProblem(o.tension_min, o.tension_max));
     s.look.tension_min = o.tension_min;

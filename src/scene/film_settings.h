@@ -15,6 +15,7 @@ struct FilmOverrides {
   std::string colormap;
   double tension_min = -1, tension_max = -1;  // colour range [N]
   int frames = -1;              // 0/1: keep every frame as PNG or not
+  std::string view;             // "auto", "2d", "3d" (film_view.h)
 };
 
 // What each value must be, as "" (fine) or "expected ..., got ..." for a message after its key.
@@ -23,14 +24,16 @@ std::string FpsProblem(double fps);
 std::string SpeedProblem(double speed);
 std::string ColormapProblem(const std::string& name);
 std::string TensionRangeProblem(double lo, double hi);
+std::string ViewProblem(const std::string& view);
 
 // The names a front end gives its settings, for its messages.
 struct FilmKeyNames {
   std::string size = "film.width", fps = "film.fps", speed = "film.speed",
-              colormap = "film.colormap", tension_range = "film.tension_range";
+              colormap = "film.colormap", tension_range = "film.tension_range",
+              view = "film.view";
 };
-extern const FilmKeyNames kCommandLineNames;  // --size, --fps, --speed, ...
-extern const FilmKeyNames kPythonNames;       // width, fps, speed, colormap, tension_range
+extern const FilmKeyNames kCommandLineNames;  // --size, --fps, --speed, ..., --view
+extern const FilmKeyNames kPythonNames;       // width, fps, speed, colormap, tension_range, view
 
 struct FilmSettings {
   FilmDef look;         // size, fps, speed, quality, colour map and range

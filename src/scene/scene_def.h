@@ -115,6 +115,7 @@ struct FilmDef {                 // [film]: how the film looks (all optional)
   std::string colormap = "viridis";
   double tension_min = -1;       // colour range [N]; negative = from the run
   double tension_max = -1;
+  std::string view = "auto";     // "2d", "3d", or "auto": 3D unless all of it stays in z = 0
 };
 
 struct SceneDef {

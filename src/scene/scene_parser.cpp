@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/waves.h"
+#include "scene/film_view.h"
 #include "scene/scene_checks.h"
 #include "scene/scene_limits.h"
 #include "scene/table_file.h"
@@ -439,6 +440,7 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
                                  kMaxTime);
     f.crf = r.Integer("crf", f.crf, 0, 51, false);
     f.colormap = r.Choice("colormap", f.colormap, ColormapNames());
+    f.view = r.Choice("view", f.view, FilmViewNames());
     if (r.Has("tension_range")) {
       const auto range = r.Pair("tension_range", {0, 0}, true, true, " in N", kMaxTension);
       if (!(range[1] > range[0]))

@@ -9,7 +9,7 @@
 namespace cablefilm {
 namespace {
 
-Rgba PathColor(const Theme& th) { return Mix(th.accent, th.panel, 0.45f); }
+Rgba PathColor(const Theme& th) { return EndPathColor(th); }
 
 bool Inside(int j, std::size_t n) { return j >= 0 && static_cast<std::size_t>(j) < n; }
 
@@ -45,6 +45,8 @@ PanelHead CablePanelHead(const SceneView& scene, const std::string& path_label, 
   return head;
 }
 
+Rgba EndPathColor(const Theme& th) { return Mix(th.accent, th.panel, 0.45f); }
+
 void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& colormap,
                     const Theme& th) {
   const float k = p.k();
@@ -56,7 +58,7 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
   const double lo = in.tension_min, hi = in.tension_max;
   const std::size_t links = snap.tension.size();
   DrawPanelHead(p, in.panel, in.head, in.world.rect.y0, th);
-  DrawAxes(p, in.world, "x [m]", "y [m]", th, 10, 5);
+  DrawAxes(p, in.world, in.x_label, in.y_label, th, 10, 5);
 
   auto world = [&](double x, double y) { return in.world.ToPixel(x, y); };
   if (in.seabed_y && std::isfinite(*in.seabed_y)) {  // beneath everything: the ground, its line
@@ -111,7 +113,7 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
       for (const auto& piece : path.pieces) {
         std::vector<Vec2f> px;
         px.reserve(piece.size());
-        for (const Vec2f& q : piece) px.push_back(world(q.x, q.y));
+        for (const Vec3f& q : piece) px.push_back(world(q.x, q.y));
         for (std::size_t i = 1; i < px.size(); ++i) p.Line(px[i - 1], px[i], 2 * k, PathColor(th));
       }
     }

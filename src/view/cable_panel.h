@@ -45,9 +45,14 @@ struct CablePanelInput {
   // empty = none.
   const std::vector<double>* surface_x = nullptr;
   const std::vector<double>* surface_y = nullptr;
+  // The axes' titles: the plane's (the plan and the elevation of lines in space have others).
+  std::string x_label = "x [m]", y_label = "y [m]";
 };
 
 void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& colormap,
                     const Theme& th);
+
+// The colour of a moving end's path (and of its legend entry).
+Rgba EndPathColor(const Theme& th);
 
 }  // namespace cablefilm

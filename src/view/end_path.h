@@ -9,7 +9,7 @@ namespace cablefilm {
 struct EndPath {
   int line = 0;     // index into the scene view's lines
   int station = 0;  // the moving end (one of its marks.moving_ends)
-  std::vector<std::vector<Vec2f>> pieces;  // polylines [m]
+  std::vector<std::vector<Vec3f>> pieces;  // polylines [m] (z = 0 in the plane)
 };
 
 }  // namespace cablefilm

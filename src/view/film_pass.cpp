@@ -12,6 +12,7 @@
 #include "view/scene_view_builder.h"
 #include "view/time_trace.h"
 #include "view/world_box.h"
+#include "scene/film_view.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
@@ -29,16 +30,18 @@ FilmRequest MakeFilmRequest(const FilmSettings& s, const std::string& out_dir,
   r.colormap = s.look.colormap;
   r.tension_min = s.look.tension_min;
   r.tension_max = s.look.tension_max;
+  r.view = s.look.view;
   r.shader_dir = shader_dir;
   return r;
 }
 
-SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& runs) {
+SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& runs,
+                        const std::string& view) {
   std::vector<LineView> lines;
   for (const Run* run : runs)
     lines.push_back(MakeLineView(scene, run->model, run->initial.state.x, run->initial.tension(),
                                  run->label));
-  return MakeSceneView(scene, runs.front()->model, std::move(lines));
+  return MakeSceneView(scene, runs.front()->model, std::move(lines), DrawsInSpace(scene, view));
 }
 
 FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>& runs,
@@ -58,7 +61,8 @@ FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>&
   policy.tension_min = request.tension_min >= 0 ? request.tension_min : std::min(0.0, t_lo);
   policy.tension_max =
       request.tension_max >= 0 ? request.tension_max : 1.05 * std::max(t_hi, 1.0);
-  policy.box = ShownBox({lo.x(), hi.x(), lo.y(), hi.y()}, view.sea, run.model.env.wave);
+  policy.box =
+      ShownBox({lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z()}, view.sea, run.model.env.wave);
   return policy;
 }
 
@@ -198,9 +202,10 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
   o.shader_dir = request.shader_dir;
   o.write_max_tension = false;  // max_tension.png comes from the rows (WriteMaxTensionFigure)
   o.series_label = main.label;
-  const SceneView view = MakeFilmScene(scene, runs);
+  const SceneView view = MakeFilmScene(scene, runs, request.view);
   const FixedPolicy policy = MakeFilmPolicy(view, runs, request, frame_time(last));
   FilmWriter writer(o, view, policy, request.out_dir, static_cast<int>(last + 1));
+  const Vec current = TopCurrent(main.model, SceneWater(main.model));  // a run's is the scene's
   bool finished = true;
   std::string failure;  // a blow-up in this pass: the film is then partial too
   for (long k = 0; k <= last && failure.empty(); ++k) {
@@ -225,7 +230,11 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
     snap.lines.resize(steppers.size());
     for (std::size_t r = 0; r < steppers.size(); ++r)
       SetLineState(steppers[r].data.state.x, steppers[r].data.tension(), &snap.lines[r]);
-    if (view.sea.surface) AddWaterSurface(main.model.env.wave, policy.box, &snap);
+    if (view.sea.surface) {
+      AddWaterSurface(main.model.env.wave, policy.box, &snap);
+      snap.wave = main.model.env.wave;
+    }
+    snap.current = current;
     // The output rows up to this frame (all that are left at the last frame): the first run's
     // times, every run's largest tension at each.
     const double until = k == last ? std::numeric_limits<double>::infinity()

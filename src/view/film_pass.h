@@ -26,6 +26,7 @@ struct FilmRequest {
   int crf = 20;
   std::string colormap = "viridis";
   double tension_min = -1, tension_max = -1;  // [N]; negative: from the runs
+  std::string view = "auto";    // "auto", "2d", "3d" (scene/film_view.h)
   std::string shader_dir;       // empty: CABLEFILM_SHADERS or the built-in shaders
   bool say_written = true;      // print "wrote DIR/film.mp4" (the Python module names its own file)
 };
@@ -50,9 +51,11 @@ struct SceneView;    // view/scene_view.h
 struct FixedPolicy;  // view/history.h
 
 // The film's scene view: a line a run (each run's cable, ends, sections, initial state, named by
-// the run's label), the first drawn in full and the others over it. Each run has been run once
-// (run/run.h: ExecuteRun). Used by RenderFilm, and to draw a frame on its own.
-SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& runs);
+// the run's label), the first drawn in full and the others over it, in space or in the plane
+// as `view` says (scene/film_view.h). Each run has been run once (run/run.h: ExecuteRun). Used
+// by RenderFilm, and to draw a frame on its own.
+SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& runs,
+                        const std::string& view = "auto");
 
 // What stays fixed over the film of `runs` lasting `duration` simulated seconds: the colour
 // range and the world box of every run (or the request's range), the box reaching to the

@@ -1,7 +1,9 @@
 #pragma once
 // What the renderer draws, as plain C++ (no GL types): the abstract frame MakeFrame builds
 // (frame_builder.h: shapes and text items in pixel coordinates, origin at the top left, y
-// down), which Renderer::Draw rasterises.
+// down, and 3D scenes in world coordinates, each in a rectangle of the frame), which
+// Renderer::Draw rasterises.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,6 +17,10 @@ struct Rgba {
 
 struct Vec2f {
   float x = 0, y = 0;
+};
+
+struct Vec3f {
+  float x = 0, y = 0, z = 0;
 };
 
 enum class ShapeKind : std::uint8_t {
@@ -46,11 +52,61 @@ struct TextItem {
   bool bold = false;
 };
 
-// One frame: drawn in order, shapes first, then the text on top.
+// ---- 3D: world coordinates [m] (x, z horizontal, y up), drawn lit, with a depth buffer --------
+
+// A polyline as a shaded tube of round section, a colour per segment (or one for all).
+struct Tube {
+  std::vector<Vec3f> points;  // at least 2
+  std::vector<Rgba> colors;   // points.size() - 1, or 1 (the whole tube); a < 1: see-through
+  float radius = 1;           // [m]
+};
+
+enum class SolidKind : std::uint8_t {
+  kSphere,      // radius `size` about `centre`
+  kBox,         // a cube of half side `size`, axis-aligned, about `centre`
+  kOctahedron,  // tips `size` from `centre` along the axes (the 2D diamond's solid)
+  kArrow,       // from `centre` (the tail) to centre + axis; shaft radius `size`, a cone head
+};
+
+struct Solid {
+  SolidKind kind = SolidKind::kSphere;
+  Vec3f centre;
+  Vec3f axis;       // kArrow only [m]
+  float size = 1;   // [m]
+  Rgba color;
+};
+
+// A grid of nu x nv vertices origin + i du + j dv, each raised along y by height[i + nu j].
+struct Sheet {
+  Vec3f origin, du, dv;  // [m]
+  int nu = 2, nv = 2;
+  std::vector<float> height;  // [m], nu * nv; empty: flat
+  Rgba color;                 // a < 1: see-through (drawn after the opaque parts)
+  float grid = 0;             // lines every `grid` m along x and z drawn on it; 0: none
+  float shine = 0.2f;         // strength of the specular highlight, 0..1
+};
+
+// A 3D scene in a rectangle of the frame: perspective, lit by a key light, see-through parts
+// blended over the opaque ones.
+struct Scene3 {
+  Vec2f corner0, corner1;      // top left, bottom right of its rectangle [px], whole pixels
+  float view_projection[16] = {};  // world [m] to clip space (OpenGL's), column-major
+  Vec3f eye;                   // the camera [m]
+  Vec3f light{0, 1, 0};        // towards the key light, unit
+  Rgba background;
+  std::size_t after_shapes = 0;  // drawn after shapes [0, after_shapes), before the others
+  std::vector<Sheet> sheets;
+  std::vector<Tube> tubes;
+  std::vector<Solid> solids;
+};
+
+// One frame: drawn in order, shapes first (each 3D scene where it falls among them), then the
+// text on top.
 struct Frame {
   int width = 0, height = 0;
   Rgba background;
   std::vector<Shape> shapes;
+  std::vector<Scene3> scenes;
   std::vector<TextItem> texts;
 };
 

@@ -9,7 +9,10 @@
 #include "view/header_panel.h"
 #include "view/legend.h"
 #include "view/painter.h"
+#include "view/plane_views.h"
 #include "view/plot_axes.h"
+#include "view/space_layout.h"
+#include "view/space_view.h"
 #include "view/tension_panel.h"
 #include "view/time_panel.h"
 
@@ -28,7 +31,9 @@ Heads MakeHeads(const SceneView& scene, const History& history, Rgba swatch, con
   // The film names its band from the start; the live view once it has one.
   const bool band = !history.following() || history.count() > 0;
   Heads h;
-  h.cable = CablePanelHead(scene, history.following() ? "recent path" : "its path", swatch, th);
+  const char* path = history.following() ? "recent path" : "its path";
+  h.cable = scene.space ? SpaceViewHead(scene, path, swatch, th)
+                        : CablePanelHead(scene, path, swatch, th);
   h.tension = TensionPanelHead(scene, named, band ? "min\u2013max so far" : "", th);
   h.time = TimePanelHead(scene, named, th);
   return h;
@@ -103,6 +108,34 @@ std::string TimeNote(const SceneView& scene, const History& history, const Snaps
   return note;
 }
 
+// The top row of a frame in space: the perspective view, the plan and the elevation.
+void DrawSpaceRow(Painter& p, const SceneView& scene, const History& history, const Snapshot& snap,
+                  const FrameLayout& L, const PanelHead& head, const OrbitCamera* camera,
+                  const Colormap& colormap, const Theme& th) {
+  SpaceViewInput space;
+  space.panel = L.space_panel;
+  space.view = L.space_view;
+  space.head = head;
+  space.camera = camera ? *camera : DefaultCamera(scene);
+  space.box = history.view_box();
+  space.cable_width = L.cable_width;
+  space.overlay_width = L.overlay_width;
+  space.tension_min = history.range_min();
+  space.tension_max = history.range_max();
+  space.scene = &scene;
+  space.now = &snap;
+  space.end_paths = &history.end_paths();
+  DrawSpaceView(p, space, colormap, th);
+  PlaneViewsInput planes;
+  planes.scene = &scene;
+  planes.history = &history;
+  planes.now = &snap;
+  planes.plane = MakeElevationPlane(scene);
+  planes.tension_min = history.range_min();
+  planes.tension_max = history.range_max();
+  DrawPlaneViews(p, L, planes, colormap, th);
+}
+
 }  // namespace
 
 FrameLayout MakeFrameLayout(const SceneView& scene, const History& history, int width,
@@ -115,14 +148,29 @@ FrameLayout MakeFrameLayout(const SceneView& scene, const History& history, int 
                   std::to_string(box.x_max) + "], y [" + std::to_string(box.y_min) + ", " +
                   std::to_string(box.y_max) + "] m");
   const Heads heads = MakeHeads(scene, history, Rgba{}, Theme::Dark());
+  double length = 0;  // of the longest line [m]
+  for (const LineView& line : scene.lines) length = std::max(length, line.arc_length.back());
+  if (scene.space) {
+    SpaceLayoutRequest s;
+    SetPlaneBoxes(box, MakeElevationPlane(scene), &s);
+    s.arc_length = length > 0 ? length : 1;
+    s.t_lo = history.time_min();
+    s.t_hi = history.time_max();
+    s.tension_min = history.range_min();
+    s.tension_max = history.range_max();
+    s.space_head = heads.cable;
+    s.plan_head = PlanHead();
+    s.elevation_head = ElevationHead(MakeElevationPlane(scene));
+    s.tension_head = heads.tension;
+    s.time_head = heads.time;
+    return LayoutSpaceFrame(s, width, height);
+  }
   LayoutRequest r;
   r.x_min = box.x_min;
   r.x_max = box.x_max;
   r.y_min = box.y_min;
   r.y_max = box.y_max;
   r.fit_aspect = history.layout_aspect();
-  double length = 0;  // of the longest line [m]
-  for (const LineView& line : scene.lines) length = std::max(length, line.arc_length.back());
   r.arc_length = length > 0 ? length : 1;
   r.t_lo = history.time_min();
   r.t_hi = history.time_max();
@@ -136,7 +184,7 @@ FrameLayout MakeFrameLayout(const SceneView& scene, const History& history, int 
 
 Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& snap,
                 const FrameLayout& L, const Colormap& colormap, const Theme& th,
-                const std::string& status) {
+                const std::string& status, const OrbitCamera* camera) {
   CheckSceneView(scene);
   CheckSnapshot(scene, snap);
   Frame frame;
@@ -156,23 +204,27 @@ Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& 
   HeaderNote(scene, history, snap.t, &header);
   DrawHeader(p, static_cast<float>(L.width), header, th);
 
-  CablePanelInput cable;
-  cable.panel = L.cable_panel;
-  cable.world = L.cable;
-  cable.cable_width = L.cable_width;
-  cable.overlay_width = L.overlay_width;
-  cable.head = heads.cable;
-  cable.tension_min = lo;
-  cable.tension_max = hi;
-  cable.lines = &scene.lines;
-  cable.now = &snap.lines;
-  cable.end_paths = &history.end_paths();
-  if (scene.sea.seabed) cable.seabed_y = &scene.sea.seabed_y;
-  if (scene.sea.surface && !snap.surface_x.empty()) {
-    cable.surface_x = &snap.surface_x;
-    cable.surface_y = &snap.surface_y;
+  if (L.space) {
+    DrawSpaceRow(p, scene, history, snap, L, heads.cable, camera, colormap, th);
+  } else {
+    CablePanelInput cable;
+    cable.panel = L.cable_panel;
+    cable.world = L.cable;
+    cable.cable_width = L.cable_width;
+    cable.overlay_width = L.overlay_width;
+    cable.head = heads.cable;
+    cable.tension_min = lo;
+    cable.tension_max = hi;
+    cable.lines = &scene.lines;
+    cable.now = &snap.lines;
+    cable.end_paths = &history.end_paths();
+    if (scene.sea.seabed) cable.seabed_y = &scene.sea.seabed_y;
+    if (scene.sea.surface && !snap.surface_x.empty()) {
+      cable.surface_x = &snap.surface_x;
+      cable.surface_y = &snap.surface_y;
+    }
+    DrawCablePanel(p, cable, colormap, th);
   }
-  DrawCablePanel(p, cable, colormap, th);
 
   ColorBarInput bar;
   bar.bar = L.colorbar;

@@ -1,6 +1,7 @@
 #pragma once
 // Builds the abstract frame (no GL) of the film and of the live view alike from the panels
-// (header_panel, cable_panel, colorbar_panel, tension_panel, time_panel): the lines to scale
+// (header_panel, cable_panel, colorbar_panel, tension_panel, time_panel; for a scene in space
+// space_view and plane_views in place of cable_panel): the lines to scale
 // coloured by link tension with a colour bar, the tension along each line (now, the reference,
 // the first line's min-max envelope so far, the sections named), the maximum tension against
 // time, the title and the simulated time. What a film's frame and a live frame differ in
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "view/camera.h"
 #include "view/colormap.h"
 #include "view/frame.h"
 #include "view/frame_layout.h"
@@ -21,19 +23,21 @@
 
 namespace cablefilm {
 
-// Where everything goes (FrameLayout, frame_layout.h) for the scene and the history as it is
-// now: its box, time axis and range, the lines' lengths, the legends. A film's is the same for
-// every frame; a live view's follows its box. Throws Error on an invalid scene, a box that is
-// not finite or a frame under 16x16.
+// Where everything goes (FrameLayout, frame_layout.h; space_layout.h for a scene in space) for
+// the scene and the history as it is now: its box, time axis and range, the lines' lengths, the
+// legends. A film's is the same for every frame; a live view's follows its box. Throws Error on
+// an invalid scene, a box that is not finite or a frame under 16x16.
 FrameLayout MakeFrameLayout(const SceneView& scene, const History& history, int width,
                             int height);
 
 // The frame of `snapshot` (checked against the scene: CheckSnapshot, throws Error) on the
 // history's range and time axis, laid out by MakeFrameLayout for it. `status` is the live
 // view's state shown before the subtitle (e.g. "live · 1× real time"); "" = none (the film).
+// A scene in space is seen by `camera` (null: DefaultCamera(scene)).
 Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& snapshot,
                 const FrameLayout& layout, const Colormap& colormap,
-                const Theme& theme = Theme::Dark(), const std::string& status = "");
+                const Theme& theme = Theme::Dark(), const std::string& status = "",
+                const OrbitCamera* camera = nullptr);
 
 // One labelled curve of maximum tension along the cable against time.
 struct MaxTensionSeries {

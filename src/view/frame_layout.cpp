@@ -5,16 +5,14 @@
 
 #include "core/error.h"
 #include "view/header_panel.h"
+#include "view/layout_metrics.h"
 #include "view/plot_axes.h"
 
 namespace cablefilm {
 namespace {
 
-// Geometry in design pixels (times the frame's scale k).
-constexpr float kMargin = 24, kGap = 16;                       // frame edge; between panels
-constexpr float kPlotLeft = 86, kPlotRight = 26, kPlotBottom = 62;  // tick labels, axis titles
-constexpr float kCableLeft = 80;
-constexpr float kCableRight = 172;  // the colour bar with its ticks and caption
+// Geometry in design pixels (times the frame's scale k), beyond layout_metrics.h.
+using namespace layout;
 constexpr float kMinCableAxes = 240, kMinTensionPanel = 560;
 // Share of the height below the header the top row gets: side by side the time plot below is
 // full width and needs less height; stacked, the two rows share it evenly.
@@ -49,8 +47,8 @@ Placed Place(const LayoutRequest& r, FrameLayout L, double wx, double wy) {
   const PixelRect& cp = L.cable_panel;
   const PixelRect axes{cp.x0 + kCableLeft * k, cp.y0 + HeadHeight(cable_top, k),
                        cp.x1 - kCableRight * k, cp.y1 - kPlotBottom * k};
-  L.colorbar = {cp.x1 - 128 * k, axes.y0, cp.x1 - 106 * k, axes.y1};
-  L.colorbar_caption_x = cp.x1 - 20 * k;
+  L.colorbar = {cp.x1 - kColorBarLeft * k, axes.y0, cp.x1 - kColorBarRight * k, axes.y1};
+  L.colorbar_caption_x = cp.x1 - kColorBarCaption * k;
   Placed out;
   out.ppm = std::min(axes.width() / wx, axes.height() / wy);
   const double cx = 0.5 * (r.x_min + r.x_max), cy = 0.5 * (r.y_min + r.y_max);

@@ -27,6 +27,15 @@ struct FrameLayout {
   float overlay_width = 3.6f;  // each line's after the first (drawn under the first's) [px]
   // A plot's head (title and legend) takes a second row: its plot starts lower.
   bool legend_rows = false;
+  // In space (space_layout.h): the perspective view and its colour bar at the left of the top
+  // row, the plan over the elevation at its right, the two plots below; cable_panel and cable
+  // are then unused.
+  bool space = false;
+  PixelRect space_panel;      // the perspective view's panel (its head, its colour bar)
+  PixelRect space_view;       // where the 3D scene is drawn [px], whole pixels
+  PixelRect plan_panel, elevation_panel;
+  PlotMapping plan;           // x [m] across, z [m] down: seen from above (y towards the eye)
+  PlotMapping elevation;      // distance along the ends' vertical plane [m] across, y [m] up
 };
 
 struct LayoutRequest {

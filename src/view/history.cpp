@@ -51,6 +51,8 @@ History::History(const SceneView& scene, bool following)
     static_cast<LineState&>(initial_.lines[i]) = line.reference;
     for (int e : line.marks.moving_ends) end_paths_.push_back({static_cast<int>(i), e, {}});
   }
+  const auto& c = scene.sea.current;
+  initial_.current = Vec(c[0], c[1], c[2]);
   window_max_.resize(lines);
   sample_.resize(lines);
   sample_link_.resize(lines);
@@ -77,7 +79,8 @@ History::History(const SceneView& scene, const FixedPolicy& policy) : History(sc
   range_hi_ = p.tension_max;
   x0_ = b.x_min;
   y0_ = b.y_min;
-  cell_ = std::max({b.x_max - b.x_min, b.y_max - b.y_min, 1e-9}) / 1000;
+  z0_ = b.z_min;
+  cell_ = std::max({b.x_max - b.x_min, b.y_max - b.y_min, b.z_max - b.z_min, 1e-9}) / 1000;
   Reset();
 }
 
@@ -86,6 +89,7 @@ History::History(const SceneView& scene, const FollowingPolicy& policy) : Histor
     throw Error("frame: the time window must be finite and positive, got " +
                 std::to_string(policy.window) + " s");
   follow_ = policy;
+  if (sea_.surface) initial_.wave = policy.wave;
   Reset();
 }
 
@@ -114,7 +118,7 @@ void History::Reset() {
     range_hi_ = 1;
     if (TensionSpan(initial_, &lo, &hi)) GrowRange(lo, hi);
   }
-  box_ = union_box_ = {kInf, -kInf, kInf, -kInf};
+  box_ = union_box_ = {kInf, -kInf, kInf, -kInf, kInf, -kInf};
   FollowBox(initial_);
 }
 
@@ -132,28 +136,38 @@ void History::GrowRange(double lo, double hi) {
 }
 
 void History::FollowBox(const Snapshot& s) {
-  double lo_x = kInf, hi_x = -kInf, lo_y = kInf, hi_y = -kInf;
+  double lo_x = kInf, hi_x = -kInf, lo_y = kInf, hi_y = -kInf, lo_z = 0, hi_z = 0;
+  bool space = false;  // a line with z: the box's z follows it too
   for (const LineSnapshot& l : s.lines)
     for (std::size_t j = 0; j < l.x.size(); ++j) {
       lo_x = std::min(lo_x, l.x[j]);
       hi_x = std::max(hi_x, l.x[j]);
       lo_y = std::min(lo_y, l.y[j]);
       hi_y = std::max(hi_y, l.y[j]);
+      if (l.z.empty()) continue;
+      lo_z = space ? std::min(lo_z, l.z[j]) : l.z[j];
+      hi_z = space ? std::max(hi_z, l.z[j]) : l.z[j];
+      space = true;
     }
   if (!(lo_x <= hi_x)) return;  // no positions (a scene without reference states)
   for (const EndPath& path : end_paths_)
     for (const auto& piece : path.pieces)
-      for (const Vec2f& p : piece) {
+      for (const Vec3f& p : piece) {
         lo_x = std::min<double>(lo_x, p.x);
         hi_x = std::max<double>(hi_x, p.x);
         lo_y = std::min<double>(lo_y, p.y);
         hi_y = std::max<double>(hi_y, p.y);
+        lo_z = std::min<double>(lo_z, p.z);
+        hi_z = std::max<double>(hi_z, p.z);
       }
-  const double pad = kBoxPad * std::max({hi_x - lo_x, hi_y - lo_y, 1e-3});
-  const double want[4] = {lo_x - pad, hi_x + pad, lo_y - pad, hi_y + pad};
-  double* box[4] = {&box_.x_min, &box_.x_max, &box_.y_min, &box_.y_max};
-  double* all[4] = {&union_box_.x_min, &union_box_.x_max, &union_box_.y_min, &union_box_.y_max};
-  for (int i = 0; i < 4; ++i) {
+  const double pad = kBoxPad * std::max({hi_x - lo_x, hi_y - lo_y, hi_z - lo_z, 1e-3});
+  // z is padded only for lines in space: in the plane the box stays at z = 0.
+  const double z_pad = space ? pad : 0;
+  const double want[6] = {lo_x - pad, hi_x + pad, lo_y - pad, hi_y + pad, lo_z - z_pad, hi_z + z_pad};
+  double* box[6] = {&box_.x_min, &box_.x_max, &box_.y_min, &box_.y_max, &box_.z_min, &box_.z_max};
+  double* all[6] = {&union_box_.x_min, &union_box_.x_max, &union_box_.y_min,
+                    &union_box_.y_max, &union_box_.z_min, &union_box_.z_max};
+  for (int i = 0; i < 6; ++i) {
     const bool is_min = i % 2 == 0;
     double& b = *box[i];
     const bool outside = is_min ? want[i] < b : want[i] > b;
@@ -165,7 +179,7 @@ void History::FollowBox(const Snapshot& s) {
   }
 }
 
-void History::AddToPath(std::size_t e, Vec2f p) {
+void History::AddToPath(std::size_t e, Vec3f p) {
   auto& pieces = end_paths_[e].pieces;
   if (following_) {
     if (pieces.empty()) pieces.emplace_back();
@@ -178,18 +192,19 @@ void History::AddToPath(std::size_t e, Vec2f p) {
     path_last_[e] = p;
     return;
   }
-  auto cell = [&](Vec2f q) {
-    const auto cx = static_cast<std::uint64_t>(std::clamp((q.x - x0_) / cell_, -1e4, 1e4) + 16384);
-    const auto cy = static_cast<std::uint64_t>(std::clamp((q.y - y0_) / cell_, -1e4, 1e4) + 16384);
-    return (cx << 16) | cy;  // 15 bits each
+  auto cell = [&](Vec3f q) {
+    auto axis = [&](double v, double origin) {
+      return static_cast<std::uint64_t>(std::clamp((v - origin) / cell_, -1e4, 1e4) + 16384);
+    };
+    return axis(q.x, x0_) << 32 | axis(q.y, y0_) << 16 | axis(q.z, z0_);  // 15 bits each
   };
   const std::uint64_t from = cell(path_last_[e]), to = cell(p);
   if (from == to) return;
-  const std::uint64_t key = std::min(from, to) << 32 | std::max(from, to);
-  if (path_seen_[e].insert(key).second) {
+  if (path_seen_[e].insert({std::min(from, to), std::max(from, to)}).second) {
     // A new piece unless the segment starts where the last one ended (most do).
-    const Vec2f a = path_last_[e];
-    if (pieces.empty() || pieces.back().back().x != a.x || pieces.back().back().y != a.y)
+    const Vec3f a = path_last_[e];
+    const Vec3f& last = pieces.empty() ? a : pieces.back().back();
+    if (pieces.empty() || last.x != a.x || last.y != a.y || last.z != a.z)
       pieces.push_back({a});
     pieces.back().push_back(p);
   }
@@ -240,7 +255,8 @@ void History::Add(const Snapshot& s) {
   for (std::size_t e = 0; e < end_paths_.size(); ++e) {
     const LineSnapshot& l = s.lines[end_paths_[e].line];
     const int j = end_paths_[e].station;
-    AddToPath(e, {static_cast<float>(l.x[j]), static_cast<float>(l.y[j])});
+    AddToPath(e, {static_cast<float>(l.x[j]), static_cast<float>(l.y[j]),
+                  l.z.empty() ? 0.0f : static_cast<float>(l.z[j])});
   }
   now_ = s;
   if (following_) {
@@ -257,7 +273,10 @@ void History::Add(const Snapshot& s) {
     double lo, hi;
     if (TensionSpan(s, &lo, &hi)) GrowRange(lo, hi);
     FollowBox(s);
-    if (sea_.surface) AddWaterSurface(follow_.wave, box_, &now_);
+    if (sea_.surface) {
+      AddWaterSurface(follow_.wave, box_, &now_);
+      now_.wave = follow_.wave;
+    }
   }
   ++count_;
 }
@@ -300,6 +319,10 @@ void History::SetRange(double lo, double hi) {
 
 WorldBox History::box() const {
   return following_ ? ShownBox(box_, sea_, follow_.wave) : fixed_.box;
+}
+
+WorldBox History::view_box() const {
+  return following_ ? ShownBox(union_box_, sea_, follow_.wave) : fixed_.box;
 }
 
 double History::layout_aspect() const {

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <string>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "core/waves.h"
@@ -75,6 +76,9 @@ class History {
   double range_max() const { return range_hi_; }
   bool range_locked() const { return locked_; }
   WorldBox box() const;  // what the cable panel shows [m]
+  // What a 3D view shows [m]: fixed, the box; following, every box since the (re)start (a
+  // camera that fits it does not pump as the lines swing).
+  WorldBox view_box() const;
   // Width / height the cable panel's width is fitted to (0: the box's own): following, the box
   // over the whole run so far, so that the panels do not move as the lines swing.
   double layout_aspect() const;
@@ -111,7 +115,7 @@ class History {
   void AddSample(double t, const double* values, const int* links);
   void GrowRange(double lo, double hi);
   void FollowBox(const Snapshot& s);
-  void AddToPath(std::size_t e, Vec2f p);
+  void AddToPath(std::size_t e, Vec3f p);
 
   bool following_;
   FixedPolicy fixed_;
@@ -131,9 +135,15 @@ class History {
   std::vector<TimeMarker> markers_;
 
   std::vector<EndPath> end_paths_;
-  double x0_ = 0, y0_ = 0, cell_ = 1;  // fixed: the path grid's origin and cell size [m]
-  std::vector<Vec2f> path_last_;       // fixed: last stored point of each end
-  std::vector<std::unordered_set<std::uint64_t>> path_seen_;  // fixed: cell pairs stored
+  struct PairHash {
+    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& p) const {
+      return std::hash<std::uint64_t>()(p.first * 0x9e3779b97f4a7c15ull ^ p.second);
+    }
+  };
+  using CellPairs = std::unordered_set<std::pair<std::uint64_t, std::uint64_t>, PairHash>;
+  double x0_ = 0, y0_ = 0, z0_ = 0, cell_ = 1;  // fixed: the path grid's origin, cell size [m]
+  std::vector<Vec3f> path_last_;       // fixed: last stored point of each end
+  std::vector<CellPairs> path_seen_;   // fixed: cell pairs stored
 
   bool locked_ = false;
   double range_lo_ = 0, range_hi_ = 1;  // [N]

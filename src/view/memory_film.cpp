@@ -10,6 +10,7 @@
 #include "view/history.h"
 #include "view/renderer.h"
 #include "view/scene_view.h"
+#include "view/scene_view_builder.h"
 #include "view/snapshot.h"
 #include "view/world_box.h"
 
@@ -31,7 +32,8 @@ Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& requ
     throw Error("row " + std::to_string(row) + ": expected a row from 0 to " +
                 std::to_string(rows.rows - 1));
   const Model& model = run.run.model;
-  const SceneView scene = MakeFilmScene(run.scene, {&run.run});
+  const SceneView scene = MakeFilmScene(run.scene, {&run.run}, request.view);
+  const Vec current = TopCurrent(model, SceneWater(model));
   const FixedPolicy policy = MakeFilmPolicy(scene, {&run.run}, request, run.run.grid.end());
   const Colormap colormap(request.colormap);
   History history(scene, policy);
@@ -51,7 +53,11 @@ Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& requ
     line.row_max.assign(1, T.maxCoeff());
     line.row_link_min = line.tension;
     line.row_link_max = line.tension;
-    if (scene.sea.surface) AddWaterSurface(model.env.wave, policy.box, &snap);
+    if (scene.sea.surface) {
+      AddWaterSurface(model.env.wave, policy.box, &snap);
+      snap.wave = model.env.wave;
+    }
+    snap.current = current;
     history.Add(snap);
   }
   const FrameLayout layout = MakeFrameLayout(scene, history, request.width, request.height);

@@ -32,6 +32,13 @@ class Painter {
   void Polyline(const std::vector<Vec2f>& p, float width, Rgba c);
   // Dashes continue across the polyline's vertices. dash, gap [px].
   void Dashed(const std::vector<Vec2f>& p, float width, Rgba c, float dash, float gap);
+  // A 3D scene drawn over the shapes added so far and under those added after it: filled in
+  // by the caller (valid until the next Scene3 call).
+  Scene3& Scene3D() {
+    f_.scenes.emplace_back();
+    f_.scenes.back().after_shapes = f_.shapes.size();
+    return f_.scenes.back();
+  }
   // size is raised to kMinFontSize.
   void Text(std::string text, Vec2f pos, float size, Rgba c, HAlign h = HAlign::kLeft,
             VAlign v = VAlign::kBaseline, bool vertical = false, bool bold = false);

@@ -9,6 +9,7 @@
 #include "view/gl_api.h"
 #include "view/gl_context.h"
 #include "view/shader_program.h"
+#include "view/space_renderer.h"
 #include "view/text.h"
 
 namespace cablefilm {
@@ -111,12 +112,22 @@ struct Renderer::Impl {
   GLuint shape_vao = 0, shape_vbo = 0, text_vao = 0, text_vbo = 0, atlas = 0;
   int shape_viewport = -1, text_viewport = -1, text_atlas = -1, text_gamma = -1;
   std::vector<ShapeVertex> shape_vertices;
+  std::vector<std::size_t> scene_starts;  // the shape vertex each 3D scene is drawn before
   std::vector<TextVertex> text_vertices;
   std::vector<GlyphQuad> quads;
+  std::unique_ptr<SpaceRenderer> space;
+
+  void DrawShapes(std::size_t first, std::size_t end) const {
+    if (end <= first) return;
+    shape_program->Use();
+    glBindVertexArray(shape_vao);
+    glDrawArrays(GL_TRIANGLES, static_cast<GLint>(first), static_cast<GLsizei>(end - first));
+  }
 
   ~Impl() {
     if (!context) return;
     context->MakeCurrent();
+    space.reset();
     shape_program.reset();
     text_program.reset();
     glDeleteBuffers(1, &shape_vbo);
@@ -139,6 +150,7 @@ Renderer::Renderer(const RenderOptions& options) : impl_(std::make_unique<Impl>(
   m.text_atlas = m.text_program->Uniform("u_atlas");
   m.text_gamma = m.text_program->Uniform("u_gamma");
   m.font = std::make_unique<FontAtlas>(options.font_path);
+  m.space = std::make_unique<SpaceRenderer>(dir);
 
   glGenVertexArrays(1, &m.shape_vao);
   glGenBuffers(1, &m.shape_vbo);
@@ -210,18 +222,33 @@ void Renderer::Draw(const Frame& frame, Image* out) {
   glClearColor(frame.background.r, frame.background.g, frame.background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
 
+  // The shapes in one buffer, drawn in runs between the 3D scenes placed among them.
   m.shape_vertices.clear();
-  for (const Shape& s : frame.shapes) EmitShape(s, &m.shape_vertices);
+  m.scene_starts.clear();
+  for (std::size_t i = 0; i < frame.shapes.size(); ++i) {
+    while (m.scene_starts.size() < frame.scenes.size() &&
+           frame.scenes[m.scene_starts.size()].after_shapes <= i)
+      m.scene_starts.push_back(m.shape_vertices.size());
+    EmitShape(frame.shapes[i], &m.shape_vertices);
+  }
+  while (m.scene_starts.size() < frame.scenes.size())
+    m.scene_starts.push_back(m.shape_vertices.size());
   if (!m.shape_vertices.empty()) {
     m.shape_program->Use();
     glUniform2f(m.shape_viewport, static_cast<float>(w), static_cast<float>(h));
-    glBindVertexArray(m.shape_vao);
     glBindBuffer(GL_ARRAY_BUFFER, m.shape_vbo);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.shape_vertices.size() * sizeof(ShapeVertex)),
                  m.shape_vertices.data(), GL_STREAM_DRAW);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(m.shape_vertices.size()));
-    CheckGl("drawing " + std::to_string(frame.shapes.size()) + " shapes");
   }
+  std::size_t drawn = 0;
+  for (std::size_t k = 0; k < frame.scenes.size(); ++k) {
+    m.DrawShapes(drawn, m.scene_starts[k]);
+    drawn = m.scene_starts[k];
+    m.space->Draw(frame.scenes[k], w, h);
+  }
+  m.DrawShapes(drawn, m.shape_vertices.size());
+  CheckGl("drawing " + std::to_string(frame.shapes.size()) + " shapes and " +
+          std::to_string(frame.scenes.size()) + " 3D scenes");
 
   m.text_vertices.clear();
   for (const TextItem& t : frame.texts) {

@@ -1,7 +1,8 @@
 #pragma once
-// Draws a Frame into an Image with OpenGL 3.3 core in its own off-screen context: one draw call
-// for all shapes (anti-aliased in the fragment shader, no MSAA), one for all glyphs (an atlas
-// texture), then one glReadPixels. Use a Renderer on the thread that created it.
+// Draws a Frame into an Image with OpenGL 3.3 core in its own off-screen context: the shapes
+// from one buffer (anti-aliased in the fragment shader, no MSAA) in runs around the frame's 3D
+// scenes (space_renderer.h: lit, depth-tested, multisampled), then all glyphs in one draw call
+// (an atlas texture), then one glReadPixels. Use a Renderer on the thread that created it.
 #include <memory>
 #include <string>
 

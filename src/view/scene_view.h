@@ -7,6 +7,7 @@
 // compare command's elastic and inextensible runs of one cable): the first is drawn in full,
 // every line after it as an overlay (thinner, on the same colour range, with its own curves in
 // the plots, named by its label).
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -47,6 +48,10 @@ struct SeaView {
   bool seabed = false;   // a flat seabed, drawn in the cable panel
   double seabed_y = 0;   // its elevation [m]
   bool surface = false;  // waves: each snapshot carries the water surface
+  // The scene's current at the top of the water (the still water level, else the top of its
+  // profile) [m/s], along x, y, z: what a snapshot shows before it says otherwise.
+  std::array<double, 3> current{};
+  bool current_profile = false;  // the current varies with depth
 };
 
 struct SceneView {
@@ -56,6 +61,9 @@ struct SceneView {
   // equilibrium) or, for a run started from the straight chord, kStraightStateLabel.
   std::string reference_label = "equilibrium";
   SeaView sea;
+  // Drawn in space: a perspective view of the lines as lit tubes beside their plan and
+  // elevation (scene/film_view.h says when); else in the plane z = 0, the paper's picture.
+  bool space = false;
 };
 
 // Throws Error (naming the line and the sizes or the value) unless the scene has a line and

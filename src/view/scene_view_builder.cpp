@@ -36,7 +36,16 @@ LineView MakeLineView(const SceneDef& scene, const Model& model, const Points& i
   return view;
 }
 
-SceneView MakeSceneView(const SceneDef& scene, const Model& model, std::vector<LineView> lines) {
+Vec TopCurrent(const Model& model, const Water& water) {
+  const CurrentProfile& profile = model.env.current_profile;
+  const double top = model.has_waves()  ? model.env.wave.spec.surface_y
+                     : profile.empty() ? 0.0
+                                       : profile.y.back();
+  return CurrentAt(model, water, top);
+}
+
+SceneView MakeSceneView(const SceneDef& scene, const Model& model, std::vector<LineView> lines,
+                        bool space) {
   SceneView view;
   view.title = scene.title;
   view.lines = std::move(lines);
@@ -46,6 +55,10 @@ SceneView MakeSceneView(const SceneDef& scene, const Model& model, std::vector<L
     view.sea.seabed_y = model.env.seabed.y;
   }
   view.sea.surface = model.has_waves();
+  const Vec current = TopCurrent(model, SceneWater(model));
+  view.sea.current = {current.x(), current.y(), current.z()};
+  view.sea.current_profile = !model.env.current_profile.empty();
+  view.space = space;
   return view;
 }
 

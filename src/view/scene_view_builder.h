@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/inputs.h"
 #include "core/model.h"
 #include "core/vec.h"
 #include "scene/scene_def.h"
@@ -20,7 +21,13 @@ LineView MakeLineView(const SceneDef& scene, const Model& model, const Points& i
                       const Eigen::VectorXd& initial_tension, std::string label);
 
 // The scene's title, `lines`, the reference's name (the scene's initial state: an equilibrium
-// or the straight chord), and from `model` the seabed and whether waves draw a surface.
-SceneView MakeSceneView(const SceneDef& scene, const Model& model, std::vector<LineView> lines);
+// or the straight chord), from `model` the seabed, whether waves draw a surface and the current
+// at the top of the water, and whether it is drawn in space (`space`: scene/film_view.h).
+SceneView MakeSceneView(const SceneDef& scene, const Model& model, std::vector<LineView> lines,
+                        bool space = false);
+
+// The current of `water` at the top of the water [m/s]: at the still water level with waves,
+// else at the top of its profile (a uniform current is the same at every elevation).
+Vec TopCurrent(const Model& model, const Water& water);
 
 }  // namespace cablefilm

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/vec.h"
+#include "core/waves.h"
 #include "view/scene_view.h"
 
 namespace cablefilm {
@@ -28,6 +29,10 @@ struct Snapshot {
   // Optional: the water surface at this time, a polyline (x increasing, y) [m] reaching beyond
   // the world box on both sides (the plot shows what falls in its x range); empty: none.
   std::vector<double> surface_x, surface_y;
+  // The waves now (wave.spec.present false: none), for the 3D view's surface at t; and the
+  // current at the top of the water [m/s] (SeaView::current).
+  Wave wave;
+  Vec current = Vec::Zero();
 };
 
 // `line`'s positions and tensions from the core's: a column per station of `x` [m] (an axis a

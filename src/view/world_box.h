@@ -10,6 +10,7 @@ namespace cablefilm {
 
 struct WorldBox {
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // [m]
+  double z_min = 0, z_max = 0;  // [m]: 0 in the plane
 };
 
 // `lines` (a box holding the lines) with the seabed in view and a strip of ground below it, and

@@ -2,7 +2,11 @@
 // way of being wrong refused with a message naming the field and what was expected.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "live/control.h"
+#include "view/camera.h"
 
 namespace cablefilm {
 namespace {
@@ -76,9 +80,46 @@ TEST(ParseControl, UnknownFieldIsNamedAndEscaped) {
   EXPECT_EQ(Refusal(R"({"speed": 1, "sped": 2})"),
             "unknown field \"sped\"; expected any of pause, step, restart, speed, amplitude_scale, "
             "period, current, current_heading, wave_height, wave_period, wave_heading, colormap, "
-            "lock_range, reset_range, tension_range, record");
+            "lock_range, reset_range, tension_range, record, camera");
   // A control character in a key comes back escaped, not raw to a terminal or page.
   EXPECT_EQ(Refusal("{\"a\\u001bb\": 1}").substr(0, 25), "unknown field \"a\\u001bb\";");
+}
+
+// The 3D view's camera: any finite numbers, clamped by the session (ClampCamera); anything
+// else refused whole, naming the field; and only for a scene drawn in space.
+TEST(ParseControl, CameraTakesFiniteNumbersOrReset) {
+  ControlLimits space = Limits();
+  space.space = true;
+  const ControlRequest r =
+      ParseControl(R"({"camera": {"azimuth": 1e308, "elevation": -1e300, "zoom": 0}})", space);
+  ASSERT_TRUE(r.camera);
+  OrbitCamera c;
+  c.azimuth = *r.camera->azimuth;
+  c.elevation = *r.camera->elevation;
+  c.zoom = *r.camera->zoom;
+  const OrbitCamera clamped = ClampCamera(c);
+  EXPECT_TRUE(std::isfinite(clamped.azimuth));
+  EXPECT_GT(clamped.azimuth, -180);
+  EXPECT_LE(clamped.azimuth, 180);
+  EXPECT_EQ(clamped.elevation, -kMaxElevation);
+  EXPECT_EQ(clamped.zoom, kMinZoom);
+  OrbitCamera nan;
+  nan.azimuth = nan.elevation = nan.zoom = std::numeric_limits<double>::quiet_NaN();
+  const OrbitCamera fallback = ClampCamera(nan), defaults;
+  EXPECT_EQ(fallback.azimuth, defaults.azimuth);
+  EXPECT_EQ(fallback.elevation, defaults.elevation);
+  EXPECT_EQ(fallback.zoom, defaults.zoom);
+  EXPECT_TRUE(ParseControl(R"({"camera": "reset"})", space).camera->reset);
+  EXPECT_EQ(Refusal(R"({"camera": {"zoom": "near"}})", space),
+            "camera.zoom: expected a finite number, got \"near\"");
+  EXPECT_EQ(Refusal(R"({"camera": {"azimuth": null}})", space),
+            "camera.azimuth: expected a finite number, got null");
+  for (const char* bad : {R"({"camera": {"roll": 1}})", R"({"camera": {}})", R"({"camera": [1, 2]})",
+                          R"({"camera": "spin"})", R"({"camera": true})"})
+    EXPECT_EQ(Refusal(bad, space).rfind("camera: expected \"reset\" or an object", 0), 0u) << bad;
+  EXPECT_NE(Refusal(R"({"pause": true, "camera": {"zoom": "x"}})", space), "(accepted)");
+  // Drawn in the plane: there is no camera to move.
+  EXPECT_EQ(Refusal(R"({"camera": "reset"})").rfind("camera: the scene is drawn in the plane", 0), 0u);
 }
 
 TEST(ParseControl, ResetRangeTakesTrueOnly) {

@@ -308,7 +308,8 @@ TEST(ShaderProgram, DirectoryFromOptionThenEnvironmentThenBuiltIn) {
 
 // Issue 12: the program carries shaders/ as it was at build time, byte for byte.
 TEST(ShaderProgram, BuiltInShadersAreTheSourceFiles) {
-  for (const char* name : {"shape.vert", "shape.frag", "text.vert", "text.frag"}) {
+  for (const char* name :
+       {"shape.vert", "shape.frag", "text.vert", "text.frag", "lit.vert", "lit.frag"}) {
     std::ifstream in(std::string(CABLEFILM_SOURCE_DIR) + "/shaders/" + name, std::ios::binary);
     std::ostringstream source;
     source << in.rdbuf();

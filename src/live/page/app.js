@@ -112,6 +112,8 @@ function applyState(s) {
   if (s.title) { $('title').textContent = s.title; document.title = s.title + ' · cablefilm live'; }
   $('viewers').textContent = s.viewers > 1 ? s.viewers + ' viewers' : '';
   if (s.width && s.height) img.parentElement.style.setProperty('--aspect', s.width + ' / ' + s.height);
+  body.dataset.space = !!s.space;
+  $('orbit-help').hidden = !s.space;
   if (!wsOpen() && !onScreen) $('t').textContent = secs(s.t);  // polling: t comes with the state
   $('frame-note').textContent = (s.paused ? 'paused at frame ' : 'frame ') + s.frame;
   // The ends by their kind, as the film's legend names them (fixed, moving, free).
@@ -307,6 +309,87 @@ document.querySelectorAll('input[type=range]').forEach((el) => {
     if (!timer) timer = setTimeout(send, Math.max(0, 200 - (performance.now() - last)));
   });
   el.addEventListener('change', () => { held = false; send(); });
+});
+
+// ---- the 3D camera ------------------------------------------------------------------------
+// A scene drawn in space: a drag on its perspective view orbits the camera, the wheel zooms,
+// a double click puts it back. The camera goes to the server as a control (it draws with it),
+// at most one in flight: moves made meanwhile are merged into the next.
+const ORBIT_DEG_PER_PX = 0.35;  // of the frame's own pixels: a drag across the view turns ~180°
+const ZOOM_PER_WHEEL = 0.0015;  // per wheel delta unit (a notch of 100: ~15 %)
+let camera = null;              // the camera as this page has moved it (the server clamps it)
+let cameraBusy = false;
+let cameraDirty = false;
+let drag = null;                // {x, y} of the pointer in frame pixels while dragging
+
+// The frame pixel under a mouse event: #frame is scaled to fit its box (object-fit: contain).
+function framePoint(e) {
+  if (!state || !state.width) return null;
+  const r = img.getBoundingClientRect();
+  const k = Math.min(r.width / state.width, r.height / state.height);
+  if (!(k > 0)) return null;
+  return { x: (e.clientX - r.left - (r.width - k * state.width) / 2) / k,
+           y: (e.clientY - r.top - (r.height - k * state.height) / 2) / k };
+}
+
+function inSpaceView(p) {
+  const v = state && state.space && state.space_view;
+  return !!(p && v && p.x >= v[0] && p.x <= v[2] && p.y >= v[1] && p.y <= v[3]);
+}
+
+function sendCamera() {
+  if (cameraBusy || !cameraDirty || !camera) return;
+  cameraBusy = true;
+  cameraDirty = false;
+  control({ camera }, () => { cameraBusy = false; }).then(() => {
+    if (state && state.camera && !cameraDirty) camera = { ...state.camera };
+    sendCamera();  // what moved meanwhile
+  });
+}
+
+function moveCamera(change) {
+  if (!state || !state.space) return;
+  if (!camera) camera = { ...state.camera };
+  change(camera);
+  camera.elevation = Math.max(-89, Math.min(89, camera.elevation));
+  camera.zoom = Math.max(0.2, Math.min(20, camera.zoom));
+  cameraDirty = true;
+  sendCamera();
+}
+
+img.draggable = false;
+img.addEventListener('pointerdown', (e) => {
+  const p = framePoint(e);
+  if (e.button !== 0 || !inSpaceView(p)) return;
+  e.preventDefault();
+  img.setPointerCapture(e.pointerId);
+  drag = p;
+  body.dataset.orbiting = '1';
+});
+img.addEventListener('pointermove', (e) => {
+  const p = framePoint(e);
+  img.classList.toggle('orbit', !!drag || inSpaceView(p));
+  if (!drag || !p) return;
+  const dx = p.x - drag.x, dy = p.y - drag.y;
+  drag = p;
+  // Dragging right carries the scene round to the right: the eye goes the other way.
+  moveCamera((c) => { c.azimuth -= dx * ORBIT_DEG_PER_PX; c.elevation += dy * ORBIT_DEG_PER_PX; });
+});
+const endDrag = () => { drag = null; delete body.dataset.orbiting; };
+img.addEventListener('pointerup', endDrag);
+img.addEventListener('pointercancel', endDrag);
+img.addEventListener('wheel', (e) => {
+  if (!inSpaceView(framePoint(e))) return;
+  e.preventDefault();
+  const delta = e.deltaMode === 1 ? 40 * e.deltaY : e.deltaY;  // lines to pixels
+  moveCamera((c) => { c.zoom *= Math.exp(-delta * ZOOM_PER_WHEEL); });
+}, { passive: false });
+img.addEventListener('dblclick', (e) => {
+  if (!inSpaceView(framePoint(e))) return;
+  e.preventDefault();
+  camera = null;
+  cameraDirty = false;
+  control({ camera: 'reset' });
 });
 
 function togglePause() { if (state) control({ pause: !state.paused }); }

@@ -1,0 +1,46 @@
+#include "scene/film_view.h"
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace cablefilm {
+namespace {
+
+// A direction's sideways part: a heading of 180 degrees leaves sin(pi) ~ 1e-16 in z, which
+// moves nothing anyone could see.
+constexpr double kAcross = 1e-12;
+
+bool EndIsPlanar(const EndDef& end) {
+  if (end.position[2] != 0 || end.z_amplitudes[0] != 0 || end.z_amplitudes[1] != 0) return false;
+  for (const auto& row : end.table)
+    if (row[3] != 0) return false;
+  return true;
+}
+
+}  // namespace
+
+const std::vector<std::string>& FilmViewNames() {
+  static const std::vector<std::string> names{"auto", "2d", "3d"};
+  return names;
+}
+
+bool SceneIsPlanar(const SceneDef& scene) {
+  if (!EndIsPlanar(scene.start) || !EndIsPlanar(scene.end)) return false;
+  const EnvironmentDef& env = scene.environment;
+  const bool current = env.current != 0 || !env.current_profile.empty();
+  if (current && std::fabs(env.current_direction.z()) > kAcross) return false;
+  const WavesDef& w = scene.waves;
+  if (w.present && w.height > 0 && std::fabs(std::sin(w.heading * M_PI / 180.0)) > kAcross)
+    return false;
+  return true;
+}
+
+bool DrawsInSpace(const SceneDef& scene, const std::string& view) {
+  if (view == "3d") return true;
+  if (view == "2d") return false;
+  if (view == "auto") return !SceneIsPlanar(scene);
+  throw Error("film.view: expected \"auto\", \"2d\" or \"3d\", got \"" + view + "\"");
+}
+
+}  // namespace cablefilm
