@@ -15,6 +15,7 @@
 // test fixes the step: what is checked is the physics, not the step control.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -92,9 +93,11 @@ void ExpectTurned(const Case& c, double phi_deg, double bound) {
   ASSERT_TRUE(b.run.summary.completed) << b.run.summary.failure;
   ASSERT_EQ(a.rows.rows, b.rows.rows);
   ASSERT_EQ(a.rows.tension.size(), b.rows.tension.size());
+  ASSERT_EQ(a.rows.x.size(), b.rows.x.size());
   double peak = 0, reach = 0;
   for (double T : a.rows.tension) peak = std::max(peak, std::abs(T));
-  for (double v : a.rows.x[0]) reach = std::max(reach, std::abs(v));
+  // rows.x: every row's stations, each (x, y, z) in turn.
+  for (std::size_t i = 0; i < a.rows.x.size(); i += 3) reach = std::max(reach, std::abs(a.rows.x[i]));
   double tension_diff = 0, position_diff = 0, sideways = 0, initial_diff = 0;
   const std::size_t links = a.rows.tension.size() / a.rows.rows;
   for (std::size_t i = 0; i < a.rows.tension.size(); ++i) {
@@ -103,15 +106,16 @@ void ExpectTurned(const Case& c, double phi_deg, double bound) {
     if (i < links) initial_diff = std::max(initial_diff, diff);
   }
   const double phi = phi_deg * kDegree;
-  for (std::size_t i = 0; i < a.rows.x[0].size(); ++i) {
+  for (std::size_t i = 0; i < a.rows.x.size(); i += 3) {
+    const double* p = &a.rows.x[i];
+    const double* q = &b.rows.x[i];
     double xt, zt;
-    Turn(phi, a.rows.x[0][i], a.rows.x[2][i], &xt, &zt);
-    position_diff = std::max({position_diff, std::abs(xt - b.rows.x[0][i]),
-                              std::abs(a.rows.x[1][i] - b.rows.x[1][i]),
-                              std::abs(zt - b.rows.x[2][i])});
+    Turn(phi, p[0], p[2], &xt, &zt);
+    position_diff = std::max({position_diff, std::abs(xt - q[0]), std::abs(p[1] - q[1]),
+                              std::abs(zt - q[2])});
     // The line leaves its vertical plane (30 deg): a 3D run, not a planar one turned.
-    sideways = std::max(sideways, std::abs(-std::sin(30 * kDegree) * a.rows.x[0][i] +
-                                           std::cos(30 * kDegree) * a.rows.x[2][i]));
+    sideways = std::max(sideways,
+                        std::abs(-std::sin(30 * kDegree) * p[0] + std::cos(30 * kDegree) * p[2]));
   }
   std::printf("[ turned ] %s%s, dt %g, phi %g deg: peak %.6g N, tensions differ by %.2e of the "
               "peak (%.2e at t = 0), positions by %.2e m; the line leaves its plane by %.2f m\n",
