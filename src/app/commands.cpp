@@ -41,6 +41,15 @@ void InstallSignalHandlers() {
 
 const char* ModelName(const Model& m) { return LawName(m.line.law); }
 
+// A horizontal direction as a user gives it: "+x", or "<angle> deg from +x towards +z".
+std::string HeadingText(const Vec& direction) {
+  const double deg = std::atan2(direction.z(), direction.x()) * 180.0 / M_PI;
+  if (deg == 0) return "+x";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.4g deg from +x towards +z", deg);
+  return text;
+}
+
 void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
   const double cable_mass = m.line.link_mass.sum();
   double weights = 0;
@@ -55,8 +64,12 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
     const CurrentProfile& p = m.env.current_profile;
     const auto [lo, hi] = std::minmax_element(p.speed.begin(), p.speed.end());
     std::printf("  current profile: %zu point(s) from y = %.6g to %.6g m, %.4g to %.4g m/s along "
-                "+x, linear between them, constant beyond\n",
-                p.y.size(), p.y.front(), p.y.back(), m.env.current + *lo, m.env.current + *hi);
+                "%s, linear between them, constant beyond\n",
+                p.y.size(), p.y.front(), p.y.back(), m.env.current + *lo, m.env.current + *hi,
+                HeadingText(m.env.current_direction).c_str());
+  } else if (m.env.current != 0) {
+    std::printf("  current: %.4g m/s along %s\n", m.env.current,
+                HeadingText(m.env.current_direction).c_str());
   }
   if (m.env.seabed.present) {
     // What a station resting on it sinks: its net weight over its share of the bed's stiffness.
@@ -84,20 +97,21 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
   if (m.has_waves()) {
     const Wave& w = m.env.wave;
     const double kh = w.k * w.spec.depth;
-    std::printf("  waves (linear Airy, along +x): height %.4g m, period %.4g s, depth %.6g m, "
+    std::printf("  waves (linear Airy, along %s): height %.4g m, period %.4g s, depth %.6g m, "
                 "still water level y = %.6g m: length %.6g m, k h = %.4g (%s), steepness H/L = "
                 "%.4g (breaks above %.4g), crest speed %.4g m/s, phase %.4g deg, ramp rate %.4g "
                 "1/s\n",
-                w.spec.height, w.spec.period, w.spec.depth, w.spec.surface_y, w.length(), kh,
+                HeadingText(w.direction).c_str(), w.spec.height, w.spec.period, w.spec.depth, w.spec.surface_y, w.length(), kh,
                 kh > M_PI ? "deep" : kh < M_PI / 10 ? "shallow" : "intermediate depth",
                 w.steepness(), w.breaking_steepness(), w.omega / w.k, scene.waves.phase,
                 w.spec.ramp_rate);
     for (const auto& [name, end] : {std::pair<const char*, const EndDef*>{"start", &scene.start},
                                     {"end", &scene.end}})
       if (end->follows_wave)
-        std::printf("  ends.%s follows the wave: surge %.4g x [%.4g deg], heave %.4g x "
-                    "[%.4g deg] of the wave's amplitude at its x\n",
-                    name, end->x_rao[0], end->x_rao[1], end->y_rao[0], end->y_rao[1]);
+        std::printf("  ends.%s follows the wave: along x %.4g x [%.4g deg], heave %.4g x "
+                    "[%.4g deg], along z %.4g x [%.4g deg] of the wave's amplitude at it\n",
+                    name, end->x_rao[0], end->x_rao[1], end->y_rao[0], end->y_rao[1],
+                    end->z_rao[0], end->z_rao[1]);
   }
   const long steps = grid.outputs * grid.steps_per_output;
   if (m.line.law == LinkLaw::kElastic)
