@@ -3,7 +3,7 @@
 # with libFuzzer under AddressSanitizer + UndefinedBehaviorSanitizer, for SECONDS (default 600).
 #   bash scripts/fuzz.sh [SECONDS] [BUILD_DIR]      # BUILD_DIR: default build-clang
 # Needs a build configured as scripts/test.sh does (clang, CABLEFILM_SANITIZE, CABLEFILM_FUZZ).
-# Starts from tests/fuzz/corpus and tests/fuzz/regressions (read only); new inputs go to
+# Starts from tests/fuzz/corpus, tests/fuzz/regressions and the shipped scenes (read only); new inputs go to
 # BUILD_DIR/fuzz/corpus. An input that fails (crash-*, leak-*, timeout-*, oom-*) is kept in
 # BUILD_DIR/fuzz/ and the script fails: fix it, then add it to tests/fuzz/regressions/.
 set -euo pipefail
@@ -24,4 +24,4 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
 # fuzzer stops its runs after 0.3 s, through the program's own cancel flag).
 "$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
   -dict=tests/fuzz/scene.dict -print_final_stats=1 -artifact_prefix="$work/" \
-  "$work/corpus" tests/fuzz/corpus tests/fuzz/regressions
+  "$work/corpus" tests/fuzz/corpus tests/fuzz/regressions scenes
