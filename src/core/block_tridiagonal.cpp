@@ -30,10 +30,13 @@ bool BlockTridiagonal::Solve() {
       pivot.noalias() -= lower[i] * c_prime_[i - 1];
       rhs[i].noalias() -= lower[i] * rhs[i - 1];
     }
-    const double det = pivot.determinant();
+    Mat inv;
+    double det;
+    bool invertible;
+    pivot.computeInverseAndDetWithCheck(inv, det, invertible, 0.0);  // one cofactor pass
     const double scale = pivot.cwiseAbs().maxCoeff();
-    if (!(std::abs(det) > 1e-14 * std::pow(scale, kDim))) return false;  // det ~ scale^kDim
-    const Mat inv = pivot.inverse();
+    static_assert(kDim == 3, "det scales as scale^kDim");
+    if (!invertible || !(std::abs(det) > 1e-14 * scale * scale * scale)) return false;
     if (i + 1 < n) c_prime_[i].noalias() = inv * upper[i];
     rhs[i] = inv * rhs[i];
   }

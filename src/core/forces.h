@@ -48,9 +48,16 @@ void ComputeGeometry(const Model& m, const Water& water, double t, const Points&
 // d w_n / d d for w_n = (I - t t^T) w, the part of a vector w across a link d = x_{k+1} - x_k
 // of direction t = d / |d| and length L = |d| [m] (w held fixed): -((t . w) P + t w_n^T) / L,
 // P = I - t t^T. The Jacobians' normal drag and added mass terms.
-Mat NormalPartDerivative(const Vec& t, double L, const Vec& w, const Vec& w_n);
+inline Mat NormalPartDerivative(const Vec& t, double L, const Vec& w, const Vec& w_n) {
+  const Mat P = Mat::Identity() - t * t.transpose();
+  return -(t.dot(w) * P + t * w_n.transpose()) / L;
+}
 // d(|u| u) / du at u = w_n: |u| I + u u^T / |u| (0 at u = 0): the quadratic drag's.
-Mat NormalDragDerivative(const Vec& w_n);
+inline Mat NormalDragDerivative(const Vec& w_n) {
+  const double speed = w_n.norm();
+  if (!(speed > 0)) return Mat::Zero();
+  return speed * Mat::Identity() + w_n * (w_n.transpose() / speed);
+}
 
 // Eq. (2), with a compressed link slack: T = max(0, sigma E (L/l - 1)).
 void ComputeHookeTensions(const Model& m, const LinkGeometry& g, Eigen::VectorXd& tension);

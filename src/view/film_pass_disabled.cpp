@@ -5,14 +5,14 @@
 
 namespace cablefilm {
 
-PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<FilmRun>&,
+PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<const Run*>&,
                                     const std::string&, const std::string&, bool complete) {
   std::printf("%s: not drawn (this build has no renderer: CABLEFILM_RENDER=OFF)\n",
               complete ? "max_tension.png" : "max_tension.partial.png");
   return {};
 }
 
-bool RenderFilm(const SceneDef&, const std::vector<FilmRun>&, const FilmRequest&,
+bool RenderFilm(const SceneDef&, const std::vector<const Run*>&, const FilmRequest&,
                 const std::atomic<int>&, PictureReport*) {
   std::printf("film: not rendered (this build has no renderer: CABLEFILM_RENDER=OFF)\n");
   return true;
