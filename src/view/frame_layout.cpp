@@ -80,20 +80,17 @@ Placed Place(const LayoutRequest& r, FrameLayout L, double wx, double wy) {
 
 }  // namespace
 
-FrameLayout LayoutFrame(const LayoutRequest& r, int width, int height) {
+FrameLayout StartFrameLayout(int width, int height, double tension_min, double tension_max,
+                             double t_lo, double t_hi, double arc_length) {
   if (width < 16 || height < 16)
     throw Error("frame: size " + std::to_string(width) + "x" + std::to_string(height) +
                 " is too small");
-  if (!(r.tension_max > r.tension_min))
-    throw Error("frame: tension range must be increasing, got [" + std::to_string(r.tension_min) +
-                ", " + std::to_string(r.tension_max) + "] N");
-  if (!(r.x_max >= r.x_min) || !(r.y_max >= r.y_min))
-    throw Error("frame: invalid world box x [" + std::to_string(r.x_min) + ", " +
-                std::to_string(r.x_max) + "], y [" + std::to_string(r.y_min) + ", " +
-                std::to_string(r.y_max) + "] m");
-  if (!(r.t_hi > r.t_lo) || !(r.arc_length > 0))
-    throw Error("frame: time axis [" + std::to_string(r.t_lo) + ", " + std::to_string(r.t_hi) +
-                "] s and cable length " + std::to_string(r.arc_length) +
+  if (!(tension_max > tension_min))
+    throw Error("frame: tension range must be increasing, got [" + std::to_string(tension_min) +
+                ", " + std::to_string(tension_max) + "] N");
+  if (!(t_hi > t_lo) || !(arc_length > 0))
+    throw Error("frame: time axis [" + std::to_string(t_lo) + ", " + std::to_string(t_hi) +
+                "] s and cable length " + std::to_string(arc_length) +
                 " m must be increasing and positive");
   FrameLayout L;
   L.width = width;
@@ -102,6 +99,17 @@ FrameLayout LayoutFrame(const LayoutRequest& r, int width, int height) {
   L.scale = k;
   L.cable_width = std::max(1.5f, 6 * k);
   L.overlay_width = std::max(2.0f, 0.6f * L.cable_width);
+  return L;
+}
+
+FrameLayout LayoutFrame(const LayoutRequest& r, int width, int height) {
+  FrameLayout L = StartFrameLayout(width, height, r.tension_min, r.tension_max, r.t_lo, r.t_hi,
+                                   r.arc_length);
+  if (!(r.x_max >= r.x_min) || !(r.y_max >= r.y_min))
+    throw Error("frame: invalid world box x [" + std::to_string(r.x_min) + ", " +
+                std::to_string(r.x_max) + "], y [" + std::to_string(r.y_min) + ", " +
+                std::to_string(r.y_max) + "] m");
+  const float k = L.scale;
   const float W = static_cast<float>(width), H = static_cast<float>(height);
   const float m = kMargin * k, gap = kGap * k, header = HeaderHeight(k);
   const float avail = H - header - m, content = W - 2 * m;

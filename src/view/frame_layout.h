@@ -52,4 +52,10 @@ struct LayoutRequest {
 // Throws Error on a frame smaller than 16x16 or an invalid range.
 FrameLayout LayoutFrame(const LayoutRequest& request, int width, int height);
 
+// What every layout starts from: the frame's size, scale and line widths, after checking the
+// size, the tension range [N] and the time axis [s] and cable length [m] (throws Error naming
+// the bad one). Used by LayoutFrame and LayoutSpaceFrame (space_layout.h).
+FrameLayout StartFrameLayout(int width, int height, double tension_min, double tension_max,
+                             double t_lo, double t_hi, double arc_length);
+
 }  // namespace cablefilm

@@ -42,12 +42,8 @@ PixelRect WholePixels(const PixelRect& r) {
 }  // namespace
 
 FrameLayout LayoutSpaceFrame(const SpaceLayoutRequest& r, int width, int height) {
-  if (width < 16 || height < 16)
-    throw Error("frame: size " + std::to_string(width) + "x" + std::to_string(height) +
-                " is too small");
-  if (!(r.tension_max > r.tension_min))
-    throw Error("frame: tension range must be increasing, got [" + std::to_string(r.tension_min) +
-                ", " + std::to_string(r.tension_max) + "] N");
+  FrameLayout L = StartFrameLayout(width, height, r.tension_min, r.tension_max, r.t_lo, r.t_hi,
+                                   r.arc_length);
   for (double v : {r.x_min, r.x_max, r.z_min, r.z_max, r.s_min, r.s_max, r.y_min, r.y_max})
     if (!std::isfinite(v)) throw Error("frame: the world box is not finite");
   if (!(r.x_max >= r.x_min) || !(r.z_max >= r.z_min) || !(r.s_max >= r.s_min) ||
@@ -56,18 +52,8 @@ FrameLayout LayoutSpaceFrame(const SpaceLayoutRequest& r, int width, int height)
                 std::to_string(r.x_max) + "], y [" + std::to_string(r.y_min) + ", " +
                 std::to_string(r.y_max) + "], z [" + std::to_string(r.z_min) + ", " +
                 std::to_string(r.z_max) + "] m");
-  if (!(r.t_hi > r.t_lo) || !(r.arc_length > 0))
-    throw Error("frame: time axis [" + std::to_string(r.t_lo) + ", " + std::to_string(r.t_hi) +
-                "] s and cable length " + std::to_string(r.arc_length) +
-                " m must be increasing and positive");
-  FrameLayout L;
-  L.width = width;
-  L.height = height;
   L.space = true;
-  const float k = std::min(width / 1920.0f, height / 1080.0f);
-  L.scale = k;
-  L.cable_width = std::max(1.5f, 6 * k);
-  L.overlay_width = std::max(2.0f, 0.6f * L.cable_width);
+  const float k = L.scale;
   const float W = static_cast<float>(width), H = static_cast<float>(height);
   const float m = kMargin * k, gap = kGap * k, header = HeaderHeight(k);
   const float avail = H - header - m, content = W - 2 * m;
