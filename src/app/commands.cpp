@@ -13,6 +13,8 @@
 #include <string>
 
 #include "app/progress.h"
+#include "app/run_support.h"
+#include "app/system_command.h"
 #include "core/version.h"
 #include "io/netcdf_results.h"
 #include "io/result_files.h"
@@ -26,18 +28,6 @@
 
 namespace cablefilm {
 namespace {
-
-std::atomic<int> g_signal{0};
-// The first signal asks the work to stop cleanly (partial results kept); a second stops at once.
-extern "C" void OnSignal(int sig) {
-  if (g_signal != 0) std::_Exit(128 + sig);
-  g_signal = sig;
-}
-
-void InstallSignalHandlers() {
-  std::signal(SIGINT, OnSignal);
-  std::signal(SIGTERM, OnSignal);
-}
 
 const char* ModelName(const Model& m) { return LawName(m.line.law); }
 
@@ -158,22 +148,6 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
                 100.0 * ((b - a).norm() / m.line.total_length() - 1.0));
 }
 
-// results.nc's attributes: the scene (its path and text) and the program's version.
-NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const Model& m) {
-  NetcdfResultsInfo info;
-  info.title = scene.title;
-  info.scene_file = EscapeText(scene.path);
-  std::ifstream in(scene.path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  info.scene = text.str();
-  info.version = kVersion;
-  if (*kGitDescribe) info.version += std::string(" (git ") + kGitDescribe + ")";
-  info.model = ModelName(m);
-  info.initial_state = scene.initial == InitialStateKind::kEquilibrium ? "equilibrium" : "straight";
-  return info;
-}
-
 // The progress line of a run, and its stop at a signal (seen between rows; within a step, the
 // inputs' stop flag).
 class ProgressSink : public RowSink {
@@ -219,7 +193,7 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
   TimeseriesWriter series(series_path, m);
   const std::string nc_path = out_dir + "/results" + suffix + ".nc";
   const std::string nc_partial_path = out_dir + "/results" + suffix + ".partial.nc";
-  NetcdfResultsWriter links(nc_path, MakeNetcdfInfo(scene, m), m, run.initial.state, T0);
+  NetcdfResultsWriter links(nc_path, MakeNetcdfInfo(scene, ModelName(m)), m, run.initial.state, T0);
   ProgressSink progress(std::string("simulating (") + run.label + ")", run.grid.end());
   ExecuteRun(run, {&series, &links, &progress});
   progress.Finish();
@@ -253,16 +227,6 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
   return run;
 }
 
-std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options) {
-  const std::string out_dir = options.out_dir.empty() ? "output/" + scene.name : options.out_dir;
-  std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (ec)
-    throw Error("cannot create the output folder " + EscapeText(out_dir) + ": " + ec.message());
-  RemoveEarlierResults(out_dir);  // a run's folder never mixes its results with older ones
-  return out_dir;
-}
-
 // The runs so far, the last cut short: max_tension.partial.png beside timeseries.partial.csv
 // (a failure to draw it is reported, not thrown: the run's own message comes next). Then a
 // blow-up's message is thrown; a signal gives its exit status.
@@ -287,6 +251,7 @@ int EndCutShort(const SceneDef& scene, const std::vector<const Run*>& runs,
 
 int CheckCommand(const std::string& scene_path) {
   const SceneDef scene = LoadScene(scene_path);
+  if (scene.is_system()) return CheckSystem(scene);
   const Model m = BuildModel(scene);
   CheckModelLimits(scene, m);
   PrintSummary(scene, m, ChooseTimeGrid(m, scene.simulation, scene.output.interval));
@@ -308,6 +273,7 @@ int InterruptedExitStatus() { return 128 + (g_signal != 0 ? g_signal.load() : SI
 
 int RunCommand(const std::string& scene_path, const RunOptions& options, RunReport* report) {
   const SceneDef scene = LoadScene(scene_path);
+  if (scene.is_system()) return RunSystem(scene, options, report);
   const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
   const FilmSettings look = film ? ResolveFilm(scene, options, kCommandLineNames) : FilmSettings{};
   const Model model = BuildModel(scene);

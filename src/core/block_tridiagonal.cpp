@@ -11,6 +11,7 @@ void BlockTridiagonal::Resize(int n) {
   upper.resize(n);
   rhs.resize(n);
   c_prime_.resize(n);
+  inverse_.resize(n);
 }
 
 void BlockTridiagonal::SetZero() {
@@ -22,25 +23,38 @@ void BlockTridiagonal::SetZero() {
   }
 }
 
-bool BlockTridiagonal::Solve() {
-  const int n = size();
-  for (int i = 0; i < n; ++i) {
+bool BlockTridiagonal::Factor(int first, int last) {
+  first_ = first;
+  last_ = last;
+  for (int i = first; i <= last; ++i) {
     Mat pivot = diag[i];
-    if (i > 0) {
-      pivot.noalias() -= lower[i] * c_prime_[i - 1];
-      rhs[i].noalias() -= lower[i] * rhs[i - 1];
-    }
-    Mat inv;
+    if (i > first) pivot.noalias() -= lower[i] * c_prime_[i - 1];
     double det;
     bool invertible;
-    pivot.computeInverseAndDetWithCheck(inv, det, invertible, 0.0);  // one cofactor pass
+    pivot.computeInverseAndDetWithCheck(inverse_[i], det, invertible, 0.0);  // one cofactor pass
     const double scale = pivot.cwiseAbs().maxCoeff();
     static_assert(kDim == 3, "det scales as scale^kDim");
     if (!invertible || !(std::abs(det) > 1e-14 * scale * scale * scale)) return false;
-    if (i + 1 < n) c_prime_[i].noalias() = inv * upper[i];
-    rhs[i] = inv * rhs[i];
+    if (i < last) c_prime_[i].noalias() = inverse_[i] * upper[i];
   }
-  for (int i = n - 2; i >= 0; --i) rhs[i].noalias() -= c_prime_[i] * rhs[i + 1];
+  return true;
+}
+
+template <class Block>
+void BlockTridiagonal::SolveRange(std::vector<Block>& b) const {
+  for (int i = first_; i <= last_; ++i) {
+    if (i > first_) b[i].noalias() -= lower[i] * b[i - 1];
+    b[i] = (inverse_[i] * b[i]).eval();
+  }
+  for (int i = last_ - 1; i >= first_; --i) b[i].noalias() -= c_prime_[i] * b[i + 1];
+}
+
+template void BlockTridiagonal::SolveRange<Vec>(std::vector<Vec>&) const;
+template void BlockTridiagonal::SolveRange<Mat>(std::vector<Mat>&) const;
+
+bool BlockTridiagonal::Solve() {
+  if (!Factor(0, size() - 1)) return false;
+  SolveFactored(rhs);
   return true;
 }
 

@@ -3,6 +3,8 @@
 //   lower_i x_{i-1} + diag_i x_i + upper_i x_{i+1} = rhs_i.
 // Solved by block Gaussian elimination without pivoting (the block Thomas algorithm) in O(n);
 // fine for the systems here, which are block diagonally dominant or symmetric definite.
+// A range of its rows (the interior of a line whose end stations are shared with other lines,
+// system_step.h) may be factored once and then solved for several right-hand sides.
 #include "core/vec.h"
 #include <vector>
 
@@ -20,11 +22,24 @@ class BlockTridiagonal {
   // singular to working precision.
   bool Solve();
 
+  // The rows first..last alone (the blocks coupling them to rows outside left out): factors
+  // them; false when a pivot block is singular to working precision.
+  bool Factor(int first, int last);
+  // After Factor(first, last): solves that range for the right-hand sides b[first..last] in
+  // place (Vec: one right-hand side; Mat: kDim of them, column by column).
+  void SolveFactored(std::vector<Vec>& b) const { SolveRange(b); }
+  void SolveFactored(std::vector<Mat>& b) const { SolveRange(b); }
+
   std::vector<Mat> lower, diag, upper;  // lower[0] and upper[n-1] are unused
   std::vector<Vec> rhs;
 
  private:
-  std::vector<Mat> c_prime_;  // eliminated upper blocks
+  template <class Block>
+  void SolveRange(std::vector<Block>& b) const;
+
+  int first_ = 0, last_ = -1;  // the factored range
+  std::vector<Mat> c_prime_;   // eliminated upper blocks
+  std::vector<Mat> inverse_;   // inverses of the eliminated pivots
 };
 
 }  // namespace cablefilm

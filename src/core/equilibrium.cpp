@@ -373,7 +373,9 @@ double StaticForceScale(const Model& m, const Water& water) {
     const double chord = (m.ends.end.Position(0) - m.ends.start.Position(0)).norm();
     chord_tension = m.line.axial_stiffness.minCoeff() * std::max(0.0, chord / m.line.total_length() - 1.0);
   }
-  return std::max(m.line.net_weight.cwiseAbs().sum() + current_load + chord_tension, 1e-9);
+  const double thrust = m.line.prism_force.colwise().norm().sum();
+  return std::max(m.line.net_weight.cwiseAbs().sum() + current_load + chord_tension + thrust,
+                  1e-9);
 }
 
 Points StraightChord(const Model& m) {
@@ -531,6 +533,22 @@ State SolveEquilibrium(const Model& m, const Points& guess,
     (profile ? w.current_scale : w.current) = level;
     return w;
   };
+  // A guess that is an equilibrium nearby (a held end moved a little: system_equilibrium.h)
+  // is already in the current: Newton from it in the full current first.
+  if (options.warm_start) {
+    Points trial = x;
+    if (Newton(m, with_current(full), trial, tol, options.max_iterations, report,
+               options.cancel)) {
+      StaticProblem problem(m, calm);
+      problem.Residual(trial);
+      report.residual = problem.MaxResidual(nullptr);
+      if (report_out) *report_out = report;
+      State state;
+      state.x = trial;
+      state.v = Points::Zero(kDim, m.stations());
+      return state;
+    }
+  }
   const Water still = with_current(0.0);
   bool ok = Newton(m, still, x, tol, options.max_iterations, report, options.cancel);
   double reached = 0;

@@ -29,6 +29,9 @@ struct EquilibriumOptions {
   int max_current_steps = 64;   // continuation steps in the current
   int max_pseudo_transient_iterations = 5000;  // the fallback's steps when Newton fails
   const CancelFlag* cancel = nullptr;  // polled every iteration: CancelledError when raised
+  bool warm_start = false;      // the guess is an equilibrium nearby in the same current (a
+                                // held end moved a little): Newton from it in the full current
+                                // first, the continuation only if that fails
 };
 
 // The static load the residual is measured against [N]: net weights plus the current's drag

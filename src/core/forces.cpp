@@ -120,6 +120,7 @@ void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g
     const Vec rel = v.col(j) - current;
     const double u = rel.norm();
     force.col(j) -= u * m.line.prism_drag.col(j).cwiseProduct(rel);
+    force.col(j) += m.line.prism_force.col(j);
   }
   if (m.env.seabed.present) AddSeabedForces(m, g, v, force);
 }

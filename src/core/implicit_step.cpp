@@ -1,172 +1,46 @@
 #include "core/implicit_step.h"
 
-#include <algorithm>
-#include <Eigen/LU>
 #include <cmath>
-#include <sstream>
 
-#include "core/cancel.h"
-#include "core/force_jacobian.h"
+#include "core/implicit_stages.h"
 
 namespace cablefilm {
 namespace {
 constexpr int kMaxNewtonIterations = 12;
-constexpr int kMaxRejections = 40;
-constexpr double kSmallestStepFraction = 1e-9;  // of the interval asked of Step()
 
-// a_{n+1}, v_{n+1} and abar_{n+1} (scratch a, v, abar) implied by the positions x (free
-// stations).
-void Kinematics(const Model& m, Data& d, const GeneralizedAlpha& c, double h, const Points& x) {
-  const State& s = d.state;
-  Scratch& w = d.scratch;
-  for (int j = m.first_free(); j <= m.last_free(); ++j) {
-    w.abar.col(j) = (x.col(j) - s.x.col(j) - h * s.v.col(j) -
-                     h * h * (0.5 - c.beta) * d.abar.col(j)) /
-                    (h * h * c.beta);
-    w.a.col(j) = ((1.0 - c.am) * w.abar.col(j) + c.am * d.abar.col(j) - c.af * d.a.col(j)) /
-                 (1.0 - c.af);
-    w.v.col(j) = s.v.col(j) + h * (1.0 - c.gamma) * d.abar.col(j) + h * c.gamma * w.abar.col(j);
-  }
-}
+// One line through the adaptive loop (implicit_stages.h).
+struct LineStepper {
+  const Model& m;
+  Data& d;
+  const Inputs& in;
+  GeneralizedAlpha c;
 
-// Solves one step of size h into the scratch's trial values; false if Newton did not converge.
-bool Solve(const Model& m, Data& d, const Inputs& in, const GeneralizedAlpha& c, double h) {
-  const State& s = d.state;
-  Scratch& w = d.scratch;
-  ForceWorkspace& ws = d.forces;
-  BlockTridiagonal& system = w.system;
-  const Line& line = m.line;
-  const SeabedSpec& bed = m.env.seabed;
-  const int j0 = m.first_free(), j1 = m.last_free();
-  const double t1 = s.t + h;
-  // Predictor: the pseudo-acceleration carried over.
-  w.x = s.x;
-  for (int j = j0; j <= j1; ++j) w.x.col(j) += h * s.v.col(j) + 0.5 * h * h * d.abar.col(j);
-  for (int j : {0, line.links}) {
-    if (!m.prescribed(j)) continue;
-    w.x.col(j) = EndPosition(m, in, j, t1);
-    w.v.col(j) = EndVelocity(m, in, j, t1);
+  double& Time() { return d.state.t; }
+  double& ProposedStep() { return d.proposed_step; }
+  long& Rejected() { return d.stats.rejected; }
+  int WorstLink() const { return cablefilm::WorstLink(m, d); }
+  double Error(double h) const { return LocalError(m, d, c, h); }
+  void Accept(double h) {
+    SettleLandings(m, d, h);
+    Commit(m, d, h);
   }
-  const double ka = (1.0 - c.am) / ((1.0 - c.af) * c.beta * h * h);  // d a_{n+1} / d x_{n+1}
-  const double kv = c.gamma / (c.beta * h);                          // d v_{n+1} / d x_{n+1}
-  for (int it = 1; it <= kMaxNewtonIterations; ++it) {
-    ++d.stats.newton_iterations;
-    Kinematics(m, d, c, h, w.x);
-    ComputeGeometry(m, d.water, t1, w.x, ws.geometry);
-    ComputeTensions(m, ws.geometry, w.v, ws.tension);
-    ComputeStationForces(m, d.water, ws.geometry, ws.tension, w.v, ws.force);
-    system.SetZero();
-    AddInertiaJacobian(m, ws.geometry, w.a, ka, system);
-    AddForceJacobian(m, d.water, ws.geometry, ws.tension, w.v, kv, system);
-    for (int j = j0; j <= j1; ++j)
-      system.rhs[j - j0] = ws.force.col(j) - StationInertia(m, ws.geometry, j) * w.a.col(j);
-    if (!system.Solve()) return false;
-    double dx_max = 0;
-    for (int j = j0; j <= j1; ++j) {
-      const bool above_bed = bed.present && w.x(1, j) >= bed.y;
-      w.x.col(j) += system.rhs[j - j0];
-      dx_max = std::max(dx_max, system.rhs[j - j0].lpNorm<Eigen::Infinity>());
-      // A station above the seabed that the iteration would drive into it (its linear model
-      // knows nothing of the bed) lands at its resting penetration instead: otherwise the next
-      // iteration, in the bed's stiff spring and dashpot, throws it back above and Newton
-      // cycles between the two (a touchdown at a fixed step of 0.05 s blew up so).
-      if (above_bed && w.x(1, j) < bed.y - line.seabed_rest_depth[j])
-        w.x(1, j) = bed.y - line.seabed_rest_depth[j];
+  // Solves one step of size h into the scratch's trial values; false if Newton did not
+  // converge.
+  bool Solve(double h) {
+    PredictStep(m, d, in, c, h);
+    for (int it = 1; it <= kMaxNewtonIterations; ++it) {
+      AssembleNewton(m, d, c, h);
+      if (!d.scratch.system.Solve()) return false;
+      const double dx_max = ApplyCorrection(m, d);
+      if (!std::isfinite(dx_max)) return false;
+      if (dx_max <= d.scratch.newton_tolerance) {
+        FinishSolve(m, d, c, h);
+        return true;
+      }
     }
-    if (!std::isfinite(dx_max)) return false;
-    if (dx_max <= w.newton_tolerance) {
-      Kinematics(m, d, c, h, w.x);
-      ComputeGeometry(m, d.water, t1, w.x, ws.geometry);
-      ComputeTensions(m, ws.geometry, w.v, ws.tension);
-      return true;
-    }
+    return false;
   }
-  return false;
-}
-
-// The local position error of the solved step [m].
-double LocalError(const Model& m, const Data& d, const GeneralizedAlpha& c, double h) {
-  // Zienkiewicz & Xie's estimate for Newmark-type schemes: the step's position error is the
-  // cubic term the scheme misses, h^2 |beta - 1/6| |a_{n+1} - a_n|.
-  const SeabedSpec& bed = m.env.seabed;
-  const Scratch& w = d.scratch;
-  double da = 0;
-  for (int j = m.first_free(); j <= m.last_free(); ++j) {
-    // A station in the seabed at the step's end: its vertical acceleration jumps as the bed
-    // takes its weight (a landing). How the step resolves that does not carry on: the bed's
-    // critically damped spring leaves the station at rest at its resting penetration either
-    // way, so the error there is of the penetration's scale (millimetres) and does not grow.
-    // Resolving it cost 1.5 times the steps near a moving touchdown, for a larger tension error
-    // (docs/model.md, "Seabed"). Along the bed (x and z) it is measured as anywhere.
-    if (bed.present && w.x(kVertical, j) < bed.y) {
-      da = std::max({da, std::abs(w.a(0, j) - d.a(0, j)), std::abs(w.a(2, j) - d.a(2, j))});
-      continue;
-    }
-    da = std::max(da, (w.a.col(j) - d.a.col(j)).lpNorm<Eigen::Infinity>());
-  }
-  return h * h * std::abs(c.beta - 1.0 / 6.0) * da;
-}
-
-// Brings to rest (vertically) the stations that landed on the seabed in the solved step.
-void SettleLandings(const Model& m, Data& d, double h) {
-  // A bed damped at least critically stops a landing station within about its landing time
-  // sqrt(m_j / k_j) (1 ms for steel wire, 2 ms for chain on the default bed, at any link
-  // length). A step longer than that cannot resolve the stop: the scheme's answer to the
-  // unresolved stiff contact threw the station back up by millimetres, to land again and again,
-  // each landing a short step (2.5 times the resolved run's landings on a ship-driven line). So
-  // a landing step ends with the station at rest vertically, the state a resolved landing
-  // reaches within the step; the line's own motion still lifts it when it does
-  // (SeabedDynamics.LandingsStopWithoutRebound). On the grounded mooring scene: 20 % fewer
-  // steps, a third of the rejections, tensions as close to the converged explicit run's.
-  const SeabedSpec& bed = m.env.seabed;
-  if (!bed.present) return;
-  Scratch& w = d.scratch;
-  bool settled = false;
-  for (int j = m.first_free(); j <= m.last_free(); ++j) {
-    const bool landed = d.state.x(1, j) >= bed.y && w.x(1, j) < bed.y;
-    if (!landed || !(h > m.line.seabed_landing_time[j])) continue;
-    w.v(1, j) = 0;
-    w.a(1, j) = 0;
-    w.abar(1, j) = 0;
-    settled = true;
-  }
-  // The tensions' axial damping sees the velocities.
-  if (settled) ComputeTensions(m, d.forces.geometry, w.v, d.forces.tension);
-}
-
-// Makes the solved step the state.
-void Commit(const Model& m, Data& d, double h) {
-  State& s = d.state;
-  Scratch& w = d.scratch;
-  s.x.swap(w.x);
-  s.v.swap(w.v);
-  // A station at rest (on the seabed) sees its velocity and acceleration decay geometrically
-  // step by step, down to subnormal numbers, whose arithmetic (in drag's q |q|, say) is a hundred
-  // times slower: a grounded line ran 25 % slower from the minute its anchor end came to rest.
-  // Below 1e-100 (m/s, m/s^2) they are zero.
-  auto flush = [](double& q) {
-    if (std::abs(q) < 1e-100) q = 0;
-  };
-  for (int j = m.first_free(); j <= m.last_free(); ++j) {
-    for (int i = 0; i < kDim; ++i) {
-      flush(s.v(i, j));
-      flush(w.a(i, j));
-      flush(w.abar(i, j));
-    }
-    d.a.col(j) = w.a.col(j);
-    d.abar.col(j) = w.abar.col(j);
-  }
-  s.t += h;
-  ++d.stats.steps;
-  d.snaps.Observe(s.t, h, d.forces.geometry.length);
-}
-
-// The most stretched link now (a blow-up names it).
-int WorstLink(const Model& m, const Data& d) {
-  int worst = 0;
-  d.forces.geometry.length.cwiseQuotient(m.line.rest_length).maxCoeff(&worst);
-  return worst;
-}
+};
 
 }  // namespace
 
@@ -180,60 +54,9 @@ GeneralizedAlpha GeneralizedAlphaCoefficients(double rho_inf) {
 }
 
 void ImplicitStep(const Model& m, Data& d, const Inputs& in, double dt) {
-  State& s = d.state;
-  const GeneralizedAlpha c = GeneralizedAlphaCoefficients(d.options.rho_inf);
-  const double tolerance = d.options.tolerance;
-  const double t_end = s.t + dt;
-  if (!(d.proposed_step > 0) || d.proposed_step > dt) d.proposed_step = dt;
-  int failures = 0;  // consecutive rejections
-  // A step this much smaller than the one asked for makes no useful progress: the motion (an
-  // end's acceleration, a snap) is faster than any step can follow; say so rather than crawl.
-  const double smallest = kSmallestStepFraction * dt;
-  while (s.t < t_end - 1e-12 * dt) {
-    ThrowIfCancelled(in.stop, "the implicit step");
-    const double h = std::min(d.proposed_step, t_end - s.t);
-    if (h < smallest && h < t_end - s.t) {
-      std::ostringstream os;
-      os << "the implicit step fell to " << h << " s at t = " << s.t << " s (below "
-         << kSmallestStepFraction << " of the " << dt << " s asked for, " << d.stats.rejected
-         << " steps rejected in all): the motion is faster than the scheme can follow (an "
-            "end's motion too violent, or an unresolvable snap)";
-      throw BlowUpError(os.str(), s.t, WorstLink(m, d));
-    }
-    const bool truncated = h < d.proposed_step;
-    double error = 0;
-    bool ok = Solve(m, d, in, c, h);
-    if (ok && tolerance > 0) {
-      error = LocalError(m, d, c, h);
-      ok = error <= tolerance;
-    }
-    if (!ok) {
-      ++d.stats.rejected;
-      if (++failures > kMaxRejections) {
-        std::ostringstream os;
-        os << "the implicit step failed " << failures << " times in a row at t = " << s.t
-           << " s, down to a step of " << h << " s";
-        const int worst = WorstLink(m, d);
-        throw BlowUpError(os.str() + "; the most stretched link is " + std::to_string(worst),
-                          s.t, worst);
-      }
-      // Newton failed: halve. Error too large: the step that would just meet the tolerance
-      // (the error grows as h^3), with a margin.
-      d.proposed_step =
-          error > 0 ? h * std::max(0.2, 0.9 * std::cbrt(tolerance / error)) : 0.5 * h;
-      continue;
-    }
-    SettleLandings(m, d, h);
-    Commit(m, d, h);
-    failures = 0;
-    if (truncated) continue;  // a short last piece says nothing about the step size
-    const double growth =
-        tolerance > 0 ? std::min(2.0, 0.9 * std::cbrt(tolerance / std::max(error, 1e-300)))
-                      : 2.0;
-    d.proposed_step = std::min(dt, h * growth);
-  }
-  s.t = t_end;
-  CheckStateSane(m, s, d.forces.geometry.length);
+  LineStepper stepper{m, d, in, GeneralizedAlphaCoefficients(d.options.rho_inf)};
+  AdaptiveImplicitSteps(stepper, d.options.tolerance, in.stop, dt);
+  CheckStateSane(m, d.state, d.forces.geometry.length);
 }
 
 }  // namespace cablefilm

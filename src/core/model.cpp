@@ -101,15 +101,22 @@ Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<Pris
   }
   m.prism_mass = Points::Zero(kDim, s + 1);
   m.prism_drag = Points::Zero(kDim, s + 1);
+  m.prism_force = Points::Zero(kDim, s + 1);
   for (const PrismSpec& p : prisms) {
     if (p.station < 0 || p.station > s)
       throw Error("weight at station " + std::to_string(p.station) + " is off the cable (0.." +
                   std::to_string(s) + ")");
     m.prism_mass.col(p.station) += Vec::Constant(p.mass) + rho * p.added_volume;
     m.prism_drag.col(p.station) += 0.5 * rho * p.drag_coefficient.cwiseProduct(p.drag_area);
+    m.prism_force.col(p.station) += p.force;
     m.net_weight[p.station] += (p.mass - rho * p.volume) * g;
     m.weight_stations.push_back(p.station);
   }
+  // Each station once: several weights on one station add up in the sums above, and the force
+  // loops over weight_stations must count them once.
+  std::sort(m.weight_stations.begin(), m.weight_stations.end());
+  m.weight_stations.erase(std::unique(m.weight_stations.begin(), m.weight_stations.end()),
+                          m.weight_stations.end());
   // A damping ratio becomes a coefficient once the stations' masses are known (prisms too; the
   // normal added mass does not act along the link).
   j = 0;

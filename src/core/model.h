@@ -75,6 +75,8 @@ struct Line {
   Eigen::VectorXd net_weight;     // W_j + W*_j [N], acting along -y
   Points prism_drag;              // (f^x_j, f^y_j, f^z_j) = rho/2 (C^x S^x, C^y S^y, C^z S^z)
                                   // [kg/m]
+  Points prism_force;             // a constant force on the prism [N] (a point's thrust, not in
+                                  // the paper; zero unless given)
   std::vector<int> weight_stations;  // stations carrying a prism
 
   std::vector<double> section_boundaries;  // interior section ends, unstretched arc length [m]
@@ -164,6 +166,7 @@ struct PrismSpec {
   Vec added_volume = Vec::Zero();    // (V^x, V^y, V^z) [m^3]
   Vec drag_coefficient = Vec::Zero();  // (C^x, C^y, C^z)
   Vec drag_area = Vec::Zero();       // (S^x, S^y, S^z) [m^2]
+  Vec force = Vec::Zero();           // a constant external force [N] (a thrust, a steady wind)
 };
 
 struct EnvironmentSpec {

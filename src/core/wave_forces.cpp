@@ -118,6 +118,7 @@ void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometr
   for (int j = 0; j <= m.line.links; ++j)
     force(kVertical, j) -= m.line.net_weight[j] + (1.0 - sea.wet[j]) * m.line.station_buoyancy[j];
   for (int j : m.line.weight_stations) {
+    force.col(j) += m.line.prism_force.col(j);
     const double phi = sea.wet[j];
     if (phi == 0) continue;
     if (profile) current = CurrentAt(m, water, g.elevation[j]);

@@ -30,9 +30,16 @@ void RemoveEarlierResults(const std::string& out_dir) {
         "timeseries_inextensible.partial.csv", "film.mp4", "film.partial.mp4",
         "max_tension.png", "max_tension.partial.png", "run_report.toml",
         "run_report_inextensible.toml", "results.nc", "results.partial.nc",
-        "results_inextensible.nc", "results_inextensible.partial.nc"})
+        "results_inextensible.nc", "results_inextensible.partial.nc", "points.csv",
+        "points.partial.csv"})
     stale.push_back(fs::path(out_dir) / name);
   std::error_code ec;
+  // A system's lines, each in lines/<name>/ with a line's own files.
+  const fs::path lines = fs::path(out_dir) / "lines";
+  if (fs::is_directory(fs::symlink_status(lines, ec))) {
+    fs::remove_all(lines, ec);
+    if (ec) throw Error("cannot remove the earlier results " + lines.string() + ": " + ec.message());
+  }
   const fs::path frames = fs::path(out_dir) / "frames";
   if (fs::is_directory(frames, ec))
     for (const auto& entry : fs::directory_iterator(frames, ec)) {

@@ -50,9 +50,13 @@ WaveSpec MakeWaveSpec(const SceneDef& scene) {
 }
 
 int StationAt(const SceneDef& scene, double arc_length) {
+  return StationAt(scene.sections, arc_length, scene.path);
+}
+
+int StationAt(const std::vector<SectionDef>& sections, double arc_length, const std::string& path) {
   int station = 0;
   double start = 0;
-  for (const SectionDef& sec : scene.sections) {
+  for (const SectionDef& sec : sections) {
     const double l = sec.length / sec.segments;
     const double k = std::round((arc_length - start) / l);
     if (k >= 0 && k <= sec.segments && std::abs(arc_length - start - k * l) <= 1e-6 * l)
@@ -60,13 +64,15 @@ int StationAt(const SceneDef& scene, double arc_length) {
     station += sec.segments;
     start += sec.length;
   }
-  throw Error(scene.path + ": a weight at " + std::to_string(arc_length) +
+  throw Error(path + ": a weight at " + std::to_string(arc_length) +
               " m is not on a station");
 }
 
-Model BuildModel(const SceneDef& scene) {
+namespace {
+
+std::vector<SectionSpec> MakeSections(const SceneDef& scene, const std::vector<SectionDef>& defs) {
   std::vector<SectionSpec> sections;
-  for (const SectionDef& def : scene.sections) {
+  for (const SectionDef& def : defs) {
     const MaterialDef& mat = scene.materials.at(def.material);
     SectionSpec s;
     s.length = def.length;
@@ -81,17 +87,28 @@ Model BuildModel(const SceneDef& scene) {
     s.axial_damping_ratio = mat.axial_damping_ratio;
     sections.push_back(s);
   }
+  return sections;
+}
+
+Vec ToVec(const std::array<double, 3>& a) { return Vec(a[0], a[1], a[2]); }
+
+std::vector<PrismSpec> MakePrisms(const std::vector<SectionDef>& sections,
+                                  const std::vector<WeightDef>& weights, const std::string& path) {
   std::vector<PrismSpec> prisms;
-  for (const WeightDef& w : scene.weights) {
+  for (const WeightDef& w : weights) {
     PrismSpec p;
-    p.station = StationAt(scene, w.at);
+    p.station = StationAt(sections, w.at, path);
     p.mass = w.mass;
     p.volume = w.volume;
-    p.added_volume = Vec(w.added_volume[0], w.added_volume[1], w.added_volume[2]);
-    p.drag_coefficient = Vec(w.drag_coefficient[0], w.drag_coefficient[1], w.drag_coefficient[2]);
-    p.drag_area = Vec(w.drag_area[0], w.drag_area[1], w.drag_area[2]);
+    p.added_volume = ToVec(w.added_volume);
+    p.drag_coefficient = ToVec(w.drag_coefficient);
+    p.drag_area = ToVec(w.drag_area);
     prisms.push_back(p);
   }
+  return prisms;
+}
+
+EnvironmentSpec MakeEnvironment(const SceneDef& scene) {
   EnvironmentSpec env;
   env.gravity = scene.environment.gravity;
   env.fluid_density = scene.environment.fluid_density;
@@ -100,10 +117,51 @@ Model BuildModel(const SceneDef& scene) {
   env.current_direction = scene.environment.current_direction;
   env.seabed = scene.seabed;
   env.waves = MakeWaveSpec(scene);
+  return env;
+}
+
+}  // namespace
+
+Model BuildModel(const SceneDef& scene) {
+  if (scene.is_system())
+    throw Error(scene.path + ": a system of lines ([[line]] and [[point]]): `cablefilm run` and "
+                "`check` run it; this command takes a single line ([cable] and [ends])");
   const LinkLaw law =
       scene.model == CableModelKind::kElastic ? LinkLaw::kElastic : LinkLaw::kInextensible;
-  return MakeModel(sections, prisms, env, MakeEndMotion(scene.start), MakeEndMotion(scene.end),
-                   law);
+  return MakeModel(MakeSections(scene, scene.sections),
+                   MakePrisms(scene.sections, scene.weights, scene.path), MakeEnvironment(scene),
+                   MakeEndMotion(scene.start), MakeEndMotion(scene.end), law);
+}
+
+SystemModel BuildSystem(const SceneDef& scene) {
+  std::vector<PointSpec> points;
+  for (const PointDef& d : scene.points) {
+    PointSpec p;
+    p.name = d.name;
+    p.motion = MakeEndMotion(d.motion);
+    p.body.mass = d.mass;
+    p.body.volume = d.volume;
+    p.body.added_volume = ToVec(d.added_volume);
+    p.body.drag_coefficient = ToVec(d.drag_coefficient);
+    p.body.drag_area = ToVec(d.drag_area);
+    p.body.force = ToVec(d.force);
+    points.push_back(p);
+  }
+  std::vector<LineSpec> lines;
+  for (const LineDef& d : scene.lines) {
+    LineSpec l;
+    l.name = d.name;
+    l.sections = MakeSections(scene, d.sections);
+    l.prisms = MakePrisms(d.sections, d.weights, scene.path);
+    l.start_point = d.start;
+    l.end_point = d.end;
+    lines.push_back(l);
+  }
+  try {
+    return MakeSystem(lines, points, MakeEnvironment(scene));
+  } catch (const Error& e) {
+    throw Error(scene.path + ": " + e.what());
+  }
 }
 
 }  // namespace cablefilm

@@ -1,16 +1,22 @@
 #pragma once
 // From the scene's plain data to the physics model (parse, then build).
 #include "core/model.h"
+#include "core/system.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {
 
+// A single line's model; throws Error for a system's scene.
 Model BuildModel(const SceneDef& scene);
+// A system's model ([[line]] and [[point]]); throws Error naming the scene when it cannot be
+// built (a free point no line holds, a line whose ends are both loose).
+SystemModel BuildSystem(const SceneDef& scene);
 
 // The scene's [waves] for the core (phase in rad); not present without the table.
 WaveSpec MakeWaveSpec(const SceneDef& scene);
 
 // The station a weight's arc length falls on (the loader has checked that it does).
 int StationAt(const SceneDef& scene, double arc_length);
+int StationAt(const std::vector<SectionDef>& sections, double arc_length, const std::string& path);
 
 }  // namespace cablefilm

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "core/error.h"
 #include "scene/scene_limits.h"
@@ -32,8 +35,17 @@ double LowestElevation(const EndDef& e) {
 // it): an error naming seabed.y.
 void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::string& file) {
   if (!scene.seabed.present) return;
-  for (const auto& [name, end] : {std::pair<const char*, const EndDef*>{"start", &scene.start},
-                                  {"end", &scene.end}}) {
+  // The ends of a single line, or the points of a system: (name, its key, its motion).
+  std::vector<std::tuple<std::string, std::string, const EndDef*>> ends;
+  if (scene.is_system()) {
+    for (size_t i = 0; i < scene.points.size(); ++i)
+      ends.emplace_back("point " + QuoteText(scene.points[i].name),
+                        "point[" + std::to_string(i) + "]", &scene.points[i].motion);
+  } else {
+    ends.emplace_back("start end", "ends.start", &scene.start);
+    ends.emplace_back("end end", "ends.end", &scene.end);
+  }
+  for (const auto& [name, key, end] : ends) {
     if (end->motion == EndMotionKind::kFree) continue;
     const double lowest = LowestElevation(*end);
     if (!(lowest < scene.seabed.y)) continue;
@@ -41,7 +53,7 @@ void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::stri
     os << EscapeText(file) << ":";
     if (const toml::node* n = root.at_path("seabed.y").node()) os << n->source().begin.line << ":";
     os << " seabed.y: the seabed at y = " << FormatNumber(scene.seabed.y)
-       << " m is above the " << name << " end (ends." << name << ".position y = "
+       << " m is above the " << name << " (" << key << ".position y = "
        << FormatNumber(end->position[1]) << " m";
     if (lowest != end->position[1]) os << ", down to " << FormatNumber(lowest) << " m as it moves";
     os << "); expected a seabed at or below the cable's prescribed ends";

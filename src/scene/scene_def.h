@@ -85,6 +85,28 @@ struct EndDef {
   std::array<double, 2> z_rao{};
 };
 
+// [[point]]: where the lines of a system end (a mooring: anchors, fairleads, clump weights,
+// buoys, junctions). Its motion as an end's (EndDef); a free point's own physics as a weight's.
+struct PointDef {
+  std::string name;                       // unique; the lines name it
+  EndDef motion;                          // position and motion: fixed, free, trochoid, ...
+  double mass = 0;                        // free: m* [kg]
+  double volume = 0;                      // free: V* [m^3], buoyancy
+  std::array<double, 3> added_volume{};   // free: [V^x, V^y, V^z] [m^3]
+  std::array<double, 3> drag_coefficient{};  // free: [C^x, C^y, C^z]
+  std::array<double, 3> drag_area{};      // free: [S^x, S^y, S^z] [m^2]
+  std::array<double, 3> force{};          // free: a constant force [F_x, F_y, F_z] [N]
+};
+
+// [[line]]: one line of a system, between two points (elastic).
+struct LineDef {
+  std::string name;                 // unique; its results' folder is lines/<name>
+  std::vector<SectionDef> sections;
+  std::vector<WeightDef> weights;
+  int start = 0;                    // index into SceneDef::points: station 0's point
+  int end = 0;                      // station s's point
+};
+
 enum class CableModelKind { kElastic, kInextensible };
 enum class InitialStateKind { kEquilibrium, kStraight };
 
@@ -131,6 +153,11 @@ struct SceneDef {
   std::vector<WeightDef> weights;
   EndDef start;                  // station 0
   EndDef end;                    // station s
+  // A system of lines ([[point]] and [[line]] instead of [cable] and [ends]): several lines
+  // between points. Empty for a single line.
+  std::vector<PointDef> points;
+  std::vector<LineDef> lines;
+  bool is_system() const { return !lines.empty(); }
   InitialStateKind initial = InitialStateKind::kEquilibrium;
   SimulationDef simulation;
   OutputDef output;

@@ -1,5 +1,7 @@
 #include "scene/scene_parser.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -204,15 +206,33 @@ void ReadMaterials(TableReader& top, SceneDef& scene, bool elastic) {
   }
 }
 
-void ReadCable(TableReader& top, SceneDef& scene) {
-  const toml::table* t = top.SubTable("cable", true);
-  TableReader r = top.Child(*t, "cable");
-  // The model is read first by the caller (materials depend on it); mark it used here.
-  r.Get("model");
+// A suspended prism's own physics (a weight's, a free point's): mass (required when
+// `mass_required`), volume, added volumes, drag coefficients and areas.
+void ReadPrism(TableReader& w, double& mass, double& volume, std::array<double, 3>& added_volume,
+               std::array<double, 3>& drag_coefficient, std::array<double, 3>& drag_area,
+               bool mass_required = true) {
+  mass = mass_required ? w.Positive("mass", " in kg", 0, kMaxWeightMass)
+                       : w.OptionalNonNegative("mass", 0.0, " in kg", kMaxWeightMass);
+  volume = w.OptionalNonNegative("volume", 0.0, " in m^3", kMaxVolume);
+  // [x, y] or [x, y, z]: two values are the same across both horizontal axes.
+  const auto horizontal_alike = TableReader::TwoValues::kZLikeX;
+  added_volume =
+      w.Triple("added_volume", {0, 0, 0}, false, true, " in m^3", kMaxVolume, horizontal_alike);
+  drag_coefficient = w.Triple("drag_coefficient", {0, 0, 0}, false, true, "", kMaxCoefficient,
+                              horizontal_alike);
+  drag_area =
+      w.Triple("drag_area", {0, 0, 0}, false, true, " in m^2", kMaxDragArea, horizontal_alike);
+}
+
+// The sections and weights of a line, from the reader `r` of its table (`name`: "cable" or
+// "line[i]", as messages show it).
+void ReadSections(TableReader& r, const std::string& name, const SceneDef& scene,
+                  std::vector<SectionDef>& out_sections, std::vector<WeightDef>& out_weights) {
   const toml::array* sections = r.TableArray("section", true);
-  if (sections->empty()) r.Fail(nullptr, "section", "expected at least one [[cable.section]]");
+  if (sections->empty())
+    r.Fail(nullptr, "section", "expected at least one [[" + name + ".section]]");
   for (size_t i = 0; i < sections->size(); ++i) {
-    const std::string prefix = "cable.section[" + std::to_string(i) + "]";
+    const std::string prefix = name + ".section[" + std::to_string(i) + "]";
     TableReader s = r.Child(*sections->get(i)->as_table(), prefix);
     SectionDef sec;
     const std::string material = s.String("material", "", true);
@@ -225,11 +245,11 @@ void ReadCable(TableReader& top, SceneDef& scene) {
     sec.length = s.Positive("length", " in m", kMinSectionLength, kMaxLength);
     sec.segments = s.Integer("segments", 0, 1, static_cast<int>(kMaxLinks), true);
     s.Finish();
-    scene.sections.push_back(sec);
+    out_sections.push_back(sec);
   }
   double total = 0, segment_length_min = 1e300, links = 0;
-  for (size_t i = 0; i < scene.sections.size(); ++i) {
-    const SectionDef& sec = scene.sections[i];
+  for (size_t i = 0; i < out_sections.size(); ++i) {
+    const SectionDef& sec = out_sections[i];
     total += sec.length;
     links += sec.segments;
     segment_length_min = std::min(segment_length_min, sec.length / sec.segments);
@@ -247,7 +267,7 @@ void ReadCable(TableReader& top, SceneDef& scene) {
   }
   const toml::array* weights = r.TableArray("weight", false);
   for (size_t i = 0; weights && i < weights->size(); ++i) {
-    const std::string prefix = "cable.weight[" + std::to_string(i) + "]";
+    const std::string prefix = name + ".weight[" + std::to_string(i) + "]";
     const toml::table* wt = weights->get(i)->as_table();
     TableReader w = r.Child(*wt, prefix);
     WeightDef def;
@@ -255,7 +275,7 @@ void ReadCable(TableReader& top, SceneDef& scene) {
     // The station arc lengths, section by section.
     bool on_station = false;
     double start = 0;
-    for (const SectionDef& sec : scene.sections) {
+    for (const SectionDef& sec : out_sections) {
       const double l = sec.length / sec.segments;
       const double k = std::round((def.at - start) / l);
       if (k >= 0 && k <= sec.segments && std::abs(def.at - start - k * l) <= 1e-6 * l)
@@ -266,19 +286,18 @@ void ReadCable(TableReader& top, SceneDef& scene) {
       w.Fail(wt->get("at"), "at",
              "expected the arc length of a station (0 to " + TableReader::Fmt(total) +
                  " m, on a segment boundary), got " + TableReader::Fmt(def.at));
-    def.mass = w.Positive("mass", " in kg", 0, kMaxWeightMass);
-    def.volume = w.OptionalNonNegative("volume", 0.0, " in m^3", kMaxVolume);
-    // [x, y] or [x, y, z]: two values are the same across both horizontal axes.
-    const auto horizontal_alike = TableReader::TwoValues::kZLikeX;
-    def.added_volume =
-        w.Triple("added_volume", {0, 0, 0}, false, true, " in m^3", kMaxVolume, horizontal_alike);
-    def.drag_coefficient = w.Triple("drag_coefficient", {0, 0, 0}, false, true, "",
-                                    kMaxCoefficient, horizontal_alike);
-    def.drag_area =
-        w.Triple("drag_area", {0, 0, 0}, false, true, " in m^2", kMaxDragArea, horizontal_alike);
+    ReadPrism(w, def.mass, def.volume, def.added_volume, def.drag_coefficient, def.drag_area);
     w.Finish();
-    scene.weights.push_back(def);
+    out_weights.push_back(def);
   }
+}
+
+void ReadCable(TableReader& top, SceneDef& scene) {
+  const toml::table* t = top.SubTable("cable", true);
+  TableReader r = top.Child(*t, "cable");
+  // The model is read first by the caller (materials depend on it); mark it used here.
+  r.Get("model");
+  ReadSections(r, "cable", scene, scene.sections, scene.weights);
   r.Finish();
 }
 
@@ -316,10 +335,10 @@ void FollowWave(const WavesDef& w, double gravity, EndDef& end) {
   end.ramp_rate = w.ramp_rate;
 }
 
-void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std::string& file,
-             const SceneDef& scene) {
-  const toml::table* t = ends.SubTable(which, true);
-  TableReader r = ends.Child(*t, "ends." + which);
+// An end's (or a point's) position and motion from its table `t` read by `r`; returns the
+// motion's name. The caller finishes the reader.
+std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const std::string& file,
+                       const SceneDef& scene) {
   end.position = r.Triple("position", {0, 0, 0}, true, false, " in m ([x, y] or [x, y, z])",
                           kMaxLength, TableReader::TwoValues::kZeroZ);
   const std::string motion =
@@ -358,7 +377,81 @@ void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std
       r.Fail(t->get("file"), "file", e.what());
     }
   }
+  return motion;
+}
+
+void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std::string& file,
+             const SceneDef& scene) {
+  const toml::table* t = ends.SubTable(which, true);
+  TableReader r = ends.Child(*t, "ends." + which);
+  const std::string motion = ReadMotion(r, t, end, file, scene);
   r.Finish(" (motion = " + Quote(motion) + " uses only the keys it needs)");
+}
+
+// A name of a point or a line: used in file names (lines/<name>/) and in points.csv.
+std::string ReadName(TableReader& r, const toml::table* t) {
+  const std::string name = r.String("name", "", true);
+  const bool plain = !name.empty() && name.size() <= 64 && name != "." && name != ".." &&
+                     std::all_of(name.begin(), name.end(), [](unsigned char c) {
+                       return std::isalnum(c) || c == '_' || c == '-' || c == '.';
+                     });
+  if (!plain)
+    r.Fail(t->get("name"), "name",
+           "expected 1 to 64 letters, digits, '_', '-' or '.' (it names files), got " +
+               Quote(name));
+  return name;
+}
+
+// [[point]]: the points of a system.
+void ReadPoints(TableReader& top, SceneDef& scene, const std::string& file) {
+  const toml::array* arr = top.TableArray("point", true);
+  for (size_t i = 0; i < arr->size(); ++i) {
+    const toml::table* t = arr->get(i)->as_table();
+    TableReader r = top.Child(*t, "point[" + std::to_string(i) + "]");
+    PointDef p;
+    p.name = ReadName(r, t);
+    for (const PointDef& other : scene.points)
+      if (other.name == p.name)
+        r.Fail(t->get("name"), "name", "expected a unique name, " + Quote(p.name) +
+                                           " names two points");
+    const std::string motion = ReadMotion(r, t, p.motion, file, scene);
+    if (motion == "free") {
+      ReadPrism(r, p.mass, p.volume, p.added_volume, p.drag_coefficient, p.drag_area, false);
+      p.force = r.Triple("force", {0, 0, 0}, false, false, " in N", kMaxTension,
+                         TableReader::TwoValues::kZeroZ);
+    }
+    r.Finish(" (motion = " + Quote(motion) + " uses only the keys it needs)");
+    scene.points.push_back(p);
+  }
+}
+
+// [[line]]: the lines of a system, each between two [[point]]s.
+void ReadLines(TableReader& top, SceneDef& scene) {
+  const toml::array* arr = top.TableArray("line", true);
+  for (size_t i = 0; i < arr->size(); ++i) {
+    const toml::table* t = arr->get(i)->as_table();
+    const std::string name = "line[" + std::to_string(i) + "]";
+    TableReader r = top.Child(*t, name);
+    LineDef line;
+    line.name = ReadName(r, t);
+    for (const LineDef& other : scene.lines)
+      if (other.name == line.name)
+        r.Fail(t->get("name"), "name", "expected a unique name, " + Quote(line.name) +
+                                           " names two lines");
+    for (const char* key : {"start", "end"}) {
+      const std::string point = r.String(key, "", true);
+      int index = -1;
+      for (size_t k = 0; k < scene.points.size(); ++k)
+        if (scene.points[k].name == point) index = static_cast<int>(k);
+      if (index < 0)
+        r.Fail(t->get(key), key, "expected the name of a [[point]], no point is named " +
+                                     Quote(point));
+      (std::string(key) == "start" ? line.start : line.end) = index;
+    }
+    ReadSections(r, name, scene, line.sections, line.weights);
+    r.Finish();
+    scene.lines.push_back(line);
+  }
 }
 
 }  // namespace
@@ -382,9 +475,17 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
     scene.model = elastic ? CableModelKind::kElastic : CableModelKind::kInextensible;
   }
   ReadMaterials(top, scene, elastic);
-  ReadCable(top, scene);
-
-  {
+  if (root.contains("line") || root.contains("point")) {
+    // A system: [[point]] and [[line]] in place of [cable] and [ends].
+    for (const char* single : {"cable", "ends"})
+      if (const toml::node* n = root.get(single))
+        top.Fail(n, single,
+                 "a scene is either one line ([cable] and [ends]) or a system ([[line]] and "
+                 "[[point]]); this one has both");
+    ReadPoints(top, scene, file);
+    ReadLines(top, scene);
+  } else {
+    ReadCable(top, scene);
     const toml::table* ends = top.SubTable("ends", true);
     TableReader r = top.Child(*ends, "ends");
     ReadEnd(r, "start", scene.start, file, scene);
@@ -456,6 +557,15 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
     scene.output.film = r.Bool("film", true);
     scene.output.frames = r.Bool("frames", false);
     r.Finish();
+  }
+  if (scene.is_system()) {
+    // What a system runs with today: the static equilibrium, the implicit scheme.
+    if (scene.initial == InitialStateKind::kStraight)
+      top.Fail(root.at_path("initial.state").node(), "initial.state",
+               "a system of lines starts from its static equilibrium: expected \"equilibrium\"");
+    if (scene.simulation.integrator == IntegratorChoice::kExplicit)
+      top.Fail(root.at_path("simulation.integrator").node(), "simulation.integrator",
+               "a system of lines is stepped by the implicit scheme: expected \"implicit\"");
   }
   const bool interval_given = scene.output.interval > 0;
   if (!interval_given) scene.output.interval = scene.film.speed / scene.film.fps;

@@ -1,0 +1,58 @@
+#include "app/run_support.h"
+
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/version.h"
+#include "io/result_files.h"
+#include "scene/text_escape.h"
+
+namespace cablefilm {
+
+std::atomic<int> g_signal{0};
+
+namespace {
+// The first signal asks the work to stop cleanly (partial results kept); a second stops at once.
+extern "C" void OnSignal(int sig) {
+  if (g_signal != 0) std::_Exit(128 + sig);
+  g_signal = sig;
+}
+}  // namespace
+
+void InstallSignalHandlers() {
+  std::signal(SIGINT, OnSignal);
+  std::signal(SIGTERM, OnSignal);
+}
+
+// results.nc's attributes: the scene (its path and text) and the program's version.
+NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model) {
+  NetcdfResultsInfo info;
+  info.title = scene.title;
+  info.scene_file = EscapeText(scene.path);
+  std::ifstream in(scene.path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  info.scene = text.str();
+  info.version = kVersion;
+  if (*kGitDescribe) info.version += std::string(" (git ") + kGitDescribe + ")";
+  info.model = model;
+  info.initial_state = scene.initial == InitialStateKind::kEquilibrium ? "equilibrium" : "straight";
+  return info;
+}
+
+std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options) {
+  const std::string out_dir = options.out_dir.empty() ? "output/" + scene.name : options.out_dir;
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec)
+    throw Error("cannot create the output folder " + EscapeText(out_dir) + ": " + ec.message());
+  RemoveEarlierResults(out_dir);  // a run's folder never mixes its results with older ones
+  return out_dir;
+}
+
+
+}  // namespace cablefilm

@@ -1,0 +1,26 @@
+#pragma once
+// What the commands that run a scene share: the signals that stop a run cleanly, the output
+// folder, results.nc's attributes.
+#include <atomic>
+#include <string>
+
+#include "app/commands.h"
+#include "io/netcdf_results.h"
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+// The signal that asked the work to stop (0: none yet). The first SIGINT or SIGTERM sets it
+// (the run stops at its next row, partial results kept); a second exits at once.
+extern std::atomic<int> g_signal;
+void InstallSignalHandlers();
+
+// results.nc's attributes: the scene (its path and text), the model's name ("elastic"), the
+// program's version.
+NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model);
+
+// The run's output folder (options.out_dir, or output/<scene name>), created, with the results
+// of an earlier run removed. Throws Error.
+std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options);
+
+}  // namespace cablefilm

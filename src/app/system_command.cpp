@@ -1,0 +1,158 @@
+#include "app/system_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "app/progress.h"
+#include "app/run_support.h"
+#include "core/error.h"
+#include "io/netcdf_results.h"
+#include "io/points_file.h"
+#include "io/result_files.h"
+#include "io/run_report_file.h"
+#include "run/system_run.h"
+#include "scene/build_model.h"
+#include "scene/text_escape.h"
+
+namespace cablefilm {
+namespace {
+
+const char* KindName(PointKind kind) {
+  switch (kind) {
+    case PointKind::kFixed:
+      return "fixed";
+    case PointKind::kMoved:
+      return "moved";
+    case PointKind::kFree:
+      return "free";
+  }
+  return "";
+}
+
+void PrintSystem(const SceneDef& scene, const SystemModel& sys) {
+  std::printf("scene %s: %s\n", EscapeText(scene.path).c_str(), QuoteText(scene.title).c_str());
+  std::printf("  a system of %zu line(s) and %zu point(s)\n", sys.lines.size(),
+              sys.points.size());
+  for (size_t i = 0; i < sys.lines.size(); ++i) {
+    const Model& m = sys.lines[i];
+    std::printf("  line %s: %d links, unstretched length %.6g m, mass %.6g kg, from point %s "
+                "to point %s\n",
+                QuoteText(sys.line_names[i]).c_str(), m.line.links, m.line.total_length(),
+                m.line.link_mass.sum(), QuoteText(sys.points[sys.line_points[i][0]].name).c_str(),
+                QuoteText(sys.points[sys.line_points[i][1]].name).c_str());
+  }
+  for (const SystemPoint& p : sys.points)
+    std::printf("  point %s: %s, %zu line end(s)%s\n", QuoteText(p.name).c_str(),
+                KindName(p.kind), p.ends.size(),
+                p.shared >= 0 ? ", where lines meet (solved with them)" : "");
+}
+
+void PrintEquilibrium(const SystemEquilibriumReport& eq, double ms) {
+  std::printf("equilibrium: %d Newton iteration(s) on the shared points, out-of-balance %.3g N "
+              "(of %.4g N), %.2f ms\n",
+              eq.iterations, eq.residual, eq.force_scale, ms);
+}
+
+// The system's rows on a progress line, stopped by a signal.
+class SystemProgress : public SystemRowSink {
+ public:
+  explicit SystemProgress(double end) : line_("simulating (system)", end, "s") {}
+  bool Row(const SystemData& sd) override {
+    line_.Update(sd.t);
+    return g_signal == 0;
+  }
+  void Finish() { line_.Finish(); }
+
+ private:
+  ProgressLine line_;
+};
+
+// One line's files in its folder.
+struct LineFiles {
+  std::string dir;
+  std::unique_ptr<TimeseriesWriter> series;
+  std::unique_ptr<NetcdfResultsWriter> results;
+};
+
+}  // namespace
+
+int CheckSystem(const SceneDef& scene) {
+  const SystemModel sys = BuildSystem(scene);
+  PrintSystem(scene, sys);
+  InstallSignalHandlers();
+  const SystemRun run = PrepareSystemRun(scene, sys, &g_signal);
+  PrintEquilibrium(run.equilibrium, run.equilibrium_ms);
+  std::printf("ok\n");
+  return 0;
+}
+
+int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* report) {
+  namespace fs = std::filesystem;
+  const SystemModel built = BuildSystem(scene);
+  PrintSystem(scene, built);
+  const std::string out_dir = PrepareOutDir(scene, options);
+  InstallSignalHandlers();
+  SystemRun run = PrepareSystemRun(scene, built, &g_signal);
+  PrintEquilibrium(run.equilibrium, run.equilibrium_ms);
+  const SystemModel& sys = run.sys;
+  const int nl = static_cast<int>(sys.lines.size());
+  std::vector<LineFiles> files(nl);
+  std::vector<std::vector<RowSink*>> line_sinks(nl);
+  for (int i = 0; i < nl; ++i) {
+    const Model& m = sys.lines[i];
+    const Data& d = run.initial.lines[i];
+    LineFiles& f = files[i];
+    f.dir = out_dir + "/lines/" + sys.line_names[i];
+    std::error_code ec;
+    fs::create_directories(f.dir, ec);
+    if (ec) throw Error("cannot create the folder " + EscapeText(f.dir) + ": " + ec.message());
+    WriteEquilibriumCsv(f.dir + "/equilibrium.csv", m, d.state, d.tension());
+    f.series = std::make_unique<TimeseriesWriter>(f.dir + "/timeseries.csv", m);
+    f.results = std::make_unique<NetcdfResultsWriter>(
+        f.dir + "/results.nc", MakeNetcdfInfo(scene, "elastic"), m, d.state, d.tension());
+    line_sinks[i] = {f.series.get(), f.results.get()};
+  }
+  PointsWriter points(out_dir + "/points.csv", sys, run.inputs);
+  SystemProgress progress(run.grid.end());
+  ExecuteSystemRun(run, line_sinks, {&points, &progress});
+  progress.Finish();
+  const RunSummary& s = run.summary;
+  if (report) report->summary = s;
+  if (!s.completed) {
+    for (LineFiles& f : files) {
+      f.series->CommitPartial(f.dir + "/timeseries.partial.csv");
+      f.results->CommitPartial(f.dir + "/results.partial.nc");
+    }
+    points.CommitPartial(out_dir + "/points.partial.csv");
+    const std::string where = "the rows up to then are in " + EscapeText(out_dir) +
+                              "/points.partial.csv and lines/*/timeseries.partial.csv";
+    if (!s.failure.empty()) throw Error(s.failure + "; " + where);
+    std::fprintf(stderr, "interrupted at t = %.4g s; %s\n", s.duration, where.c_str());
+    return InterruptedExitStatus();
+  }
+  for (LineFiles& f : files) {
+    f.series->Commit();
+    f.results->Commit();
+  }
+  points.Commit();
+  for (int i = 0; i < nl; ++i) WriteRunReport(files[i].dir + "/run_report.toml", run.lines[i]);
+  WriteRunReport(out_dir + "/run_report.toml", s);
+  std::printf("simulated %.6g s in %.3g s of computer time: %s\n", s.duration, s.wall,
+              DescribeSteps(s.stats).c_str());
+  if (run.peak_line >= 0)
+    std::printf("peak tension %.6g N at t = %.4g s in line %s, link %d (over the %ld rows, one "
+                "every %.4g s)\n",
+                s.peak, s.peak_t, QuoteText(sys.line_names[run.peak_line]).c_str(), s.peak_link,
+                s.rows, run.grid.interval);
+  for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());
+  std::printf("wrote %s/points.csv, %s/run_report.toml and lines/<name>/ for %d line(s)\n",
+              EscapeText(out_dir).c_str(), EscapeText(out_dir).c_str(), nl);
+  const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
+  if (film)
+    std::printf("note: the film and max_tension.png are drawn for single lines; a system's "
+                "picture is not drawn yet\n");
+  return 0;
+}
+
+}  // namespace cablefilm

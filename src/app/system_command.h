@@ -1,0 +1,14 @@
+#pragma once
+// `check` and `run` of a system of lines ([[line]] and [[point]]): its summary and static
+// equilibrium; its results, a folder per line (lines/<name>/: equilibrium.csv,
+// timeseries.csv, results.nc, run_report.toml, as a single line writes them), points.csv and
+// the system's run_report.toml.
+#include "app/commands.h"
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+int CheckSystem(const SceneDef& scene);
+int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* report);
+
+}  // namespace cablefilm

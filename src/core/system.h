@@ -1,0 +1,76 @@
+#pragma once
+// A mooring system: several lines (each the model of model.h) whose ends are attached to
+// points. A point is fixed (an anchor), moved (a fairlead on a ship: the end motions of
+// end_motion.h) or free (a clump weight, a buoy, a junction of lines), with its own mass,
+// buoyancy, added mass, drag and a constant force. A free point carried by one line is that
+// line's free end with the point as its prism; a free point where several line ends meet is
+// a shared station: each line keeps its own copy of it, and the system's step (system_step.h)
+// solves the lines together through the Schur complement on the shared stations. Its equation
+// of motion is the sum of the rows of its copies: the point's own terms are on the copy of
+// the line that owns it (the first end attached), and each line adds its end station's lumped
+// share (half of its end link's mass, weight, drag), as MoorDyn lumps them.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/model.h"
+
+namespace cablefilm {
+
+enum class PointKind { kFixed, kMoved, kFree };
+
+struct PointSpec {
+  std::string name;
+  EndMotion motion = EndMotion::Fixed(Vec::Zero());  // Free(): the first guess of a free point
+  // A free point's own physics, as a suspended weight's (PrismSpec): mass m* [kg], volume V*
+  // [m^3], added volumes [m^3], drag coefficients and areas [m^2], a constant force [N].
+  PrismSpec body;
+};
+
+struct LineSpec {
+  std::string name;
+  std::vector<SectionSpec> sections;
+  std::vector<PrismSpec> prisms;
+  LinkLaw law = LinkLaw::kElastic;
+  int start_point = 0;  // the point station 0 is attached to (index into the points)
+  int end_point = 0;    // the point station s is attached to
+};
+
+// A line end at a point: line `line`, station 0 or s.
+struct LineEnd {
+  int line = 0;
+  int station = 0;
+};
+
+struct SystemPoint {
+  std::string name;
+  PointKind kind = PointKind::kFixed;
+  EndMotion motion = EndMotion::Fixed(Vec::Zero());  // as given (a free point: its first guess)
+  std::vector<LineEnd> ends;  // the line ends attached to it (the first: its owner)
+  int shared = -1;            // index among the shared points (a free point with several
+                              // line ends), -1 otherwise
+};
+
+struct SystemModel {
+  std::vector<Model> lines;  // each line's model: a shared end is a free station there
+  std::vector<std::string> line_names;
+  std::vector<std::array<int, 2>> line_points;  // per line: the points of station 0 and s
+  std::vector<SystemPoint> points;
+  std::vector<int> shared_points;  // indices of the points that are shared stations
+  EnvironmentSpec env;             // as built (the lines' environments are made from it)
+
+  int shared_count() const { return static_cast<int>(shared_points.size()); }
+  // The line end that owns point p (its first).
+  const LineEnd& owner(int p) const { return points[p].ends.front(); }
+  // The index among the shared points of line i's end at station 0 (e = 0) or s (e = 1); -1
+  // when that end is not at a shared point.
+  int shared_end(int i, int e) const { return points[line_points[i][e]].shared; }
+};
+
+// Builds the system; throws Error on a point no line is attached to, a line end at a point
+// that does not exist, or an inextensible line at a shared point (its constraint solver
+// works on one line).
+SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<PointSpec>& points,
+                       const EnvironmentSpec& env);
+
+}  // namespace cablefilm

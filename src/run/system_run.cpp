@@ -1,0 +1,123 @@
+#include "run/system_run.h"
+
+#include <chrono>
+
+#include "core/cancel.h"
+#include "core/error.h"
+
+namespace cablefilm {
+namespace {
+
+// The grid of the system: each line's own (ChooseTimeGrid), the finest step and tolerance.
+TimeGrid SystemGrid(const SceneDef& scene, const SystemModel& sys) {
+  TimeGrid grid;
+  for (size_t i = 0; i < sys.lines.size(); ++i) {
+    const TimeGrid g = ChooseTimeGrid(sys.lines[i], scene.simulation, scene.output.interval);
+    if (i == 0 || g.dt < grid.dt) {
+      const double tolerance = i == 0 ? g.options.tolerance
+                                      : std::min(grid.options.tolerance, g.options.tolerance);
+      grid = g;
+      grid.options.tolerance = tolerance;
+    } else {
+      grid.options.tolerance = std::min(grid.options.tolerance, g.options.tolerance);
+    }
+  }
+  return grid;
+}
+
+}  // namespace
+
+SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop) {
+  SystemRun run;
+  run.sys = std::move(sys);
+  if (run.sys.lines.empty()) throw Error(scene.path + ": a system needs at least one [[line]]");
+  run.grid = SystemGrid(scene, run.sys);
+  run.inputs = SceneInputs(run.sys.lines[0]);  // one environment: any line's inputs
+  run.inputs.stop = stop;
+  SystemEquilibriumOptions options;
+  options.cancel = stop;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<State> states = SolveSystemEquilibrium(run.sys, &run.equilibrium, options);
+  run.equilibrium_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  run.initial = MakeSystemData(run.sys, run.inputs, run.grid.options, states);
+  run.lines.resize(run.sys.lines.size());
+  for (size_t i = 0; i < run.lines.size(); ++i)
+    run.lines[i].scheme = SchemeName(run.sys.lines[i], run.grid.options);
+  run.summary.scheme = run.lines[0].scheme;
+  run.summary.tolerance = run.grid.automatic ? run.grid.options.tolerance : 0.0;
+  return run;
+}
+
+void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& line_sinks,
+                      const std::vector<SystemRowSink*>& sinks) {
+  SystemData sd = run.initial;
+  const int nl = static_cast<int>(sd.lines.size());
+  auto hand = [&] {
+    bool go_on = true;
+    for (int i = 0; i < nl; ++i) {
+      const Data& d = sd.lines[i];
+      run.lines[i].AddRow(d.state.t, d.tension());
+      if (i < static_cast<int>(line_sinks.size()))
+        for (RowSink* s : line_sinks[i]) go_on = s->Row(d) && go_on;
+    }
+    for (SystemRowSink* s : sinks) go_on = s->Row(sd) && go_on;
+    ++run.summary.rows;
+    return go_on;
+  };
+  RunSummary& s = run.summary;
+  const auto t0 = std::chrono::steady_clock::now();
+  bool completed = hand();
+  for (long row = 1; completed && row <= run.grid.outputs; ++row) {
+    try {
+      for (int k = 0; k < run.grid.steps_per_output; ++k) {
+        ThrowIfCancelled(run.inputs.stop, "the simulation");
+        StepSystem(run.sys, sd, run.inputs, run.grid.dt);
+      }
+    } catch (const CancelledError&) {
+      completed = false;
+      break;
+    } catch (const BlowUpError& e) {
+      s.failure = std::string(e.what()) + " (" + s.scheme + ")";
+      completed = false;
+      break;
+    }
+    // Each row at exactly row x interval (no round-off drift over long runs).
+    sd.t = row * run.grid.interval;
+    for (Data& d : sd.lines) d.state.t = sd.t;
+    completed = hand();
+  }
+  s.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  s.duration = sd.t;
+  s.completed = completed && sd.t >= run.grid.end() - 1e-9 * run.grid.interval;
+  s.stats = sd.stats;
+  for (int i = 0; i < nl; ++i) {
+    RunSummary& l = run.lines[i];
+    l.tolerance = s.tolerance;
+    l.duration = s.duration;
+    l.wall = s.wall;
+    l.rows = s.rows;
+    l.completed = s.completed;
+    l.failure = s.failure;
+    l.stats = sd.lines[i].step_stats();
+    l.stats.rejected = sd.stats.rejected;  // the system's steps are every line's
+    l.warnings = TrustWarnings(run.sys.lines[i], l.stats);
+    for (const std::string& w : l.warnings)
+      s.warnings.push_back("line \"" + run.sys.line_names[i] + "\": " + w);
+    if (!(l.peak <= s.peak)) {  // the first line with the largest peak (NaN: none yet)
+      s.peak = l.peak;
+      s.peak_t = l.peak_t;
+      s.peak_link = l.peak_link;
+      run.peak_line = i;
+    }
+    if (!(l.min_tension >= s.min_tension)) {
+      s.min_tension = l.min_tension;
+      s.min_tension_t = l.min_tension_t;
+      s.min_tension_link = l.min_tension_link;
+    }
+  }
+  // Each line counts every iteration of the coupled solve: the system's are any line's.
+  s.stats.newton_iterations = nl > 0 ? run.lines[0].stats.newton_iterations : 0;
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,46 @@
+#pragma once
+// A system of lines (core/system.h) run as its scene says: the static equilibrium of the whole
+// system, then the coupled implicit step (core/system_step.h) from output row to output row,
+// each row handed to every line's sinks (the same sinks a single line's run writes: its CSV,
+// its NetCDF file) and to the system's own (the points' forces).
+#include <string>
+#include <vector>
+
+#include "core/system_equilibrium.h"
+#include "core/system_step.h"
+#include "run/driver.h"
+#include "run/run_summary.h"
+#include "run/time_grid.h"
+#include "scene/scene_def.h"
+
+namespace cablefilm {
+
+// Where the system's rows go (a row of every line at once). Row() false stops the run.
+class SystemRowSink {
+ public:
+  virtual ~SystemRowSink() = default;
+  virtual bool Row(const SystemData& sd) = 0;
+};
+
+struct SystemRun {
+  SystemModel sys;
+  TimeGrid grid;                     // the output rows and the step's options (the tightest
+                                     // line's tolerance)
+  Inputs inputs;                     // the scene's (with the stop flag)
+  SystemEquilibriumReport equilibrium;
+  double equilibrium_ms = 0;         // [ms]
+  SystemData initial;                // t = 0
+  std::vector<RunSummary> lines;     // each line's: its peak, its least tension
+  RunSummary summary;                // the system's: the peak of all lines, how it ended
+  int peak_line = -1;                // the line holding summary.peak
+};
+
+// Throws Error when the system has no equilibrium, CancelledError when `stop` is raised.
+SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop);
+
+// Steps a copy of run.initial through the grid: every row to line i's `line_sinks[i]`, to
+// `sinks`, and to the run's summaries.
+void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& line_sinks,
+                      const std::vector<SystemRowSink*>& sinks);
+
+}  // namespace cablefilm

@@ -1,0 +1,240 @@
+// Systems of lines (issue 20): lines joined at free points, stepped together through the Schur
+// complement on the shared stations (system_step.h), in equilibrium by Newton on the shared
+// points (system_equilibrium.h). The truths: the same system written as one line with a weight
+// at the junction (a single line's model and step, which the rest of the suite checks against
+// closed forms and MoorDyn), and the exact elastic catenary (test_support.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/equilibrium.h"
+#include "core/forces.h"
+#include "core/system_equilibrium.h"
+#include "core/system_step.h"
+#include "test_support.h"
+
+namespace cablefilm {
+namespace {
+
+SectionSpec Chain(double length, int segments) {
+  SectionSpec s;
+  s.length = length;
+  s.segments = segments;
+  s.diameter = 0.1;
+  s.area = 0.0078;
+  s.mass_per_length = 60.0;
+  s.youngs_modulus = 5e10;
+  s.drag_coefficient = 2.4;
+  s.added_mass_coefficient = 1.0;
+  return s;
+}
+
+// A clump weight with its own buoyancy, added mass and drag.
+PrismSpec Clump() {
+  PrismSpec p;
+  p.mass = 3000;
+  p.volume = 0.4;
+  p.added_volume = Vec(0.2, 0.3, 0.2);
+  p.drag_coefficient = Vec(1.0, 1.2, 1.0);
+  p.drag_area = Vec(0.8, 1.0, 0.8);
+  return p;
+}
+
+EnvironmentSpec Water3D() {
+  EnvironmentSpec env;
+  env.fluid_density = 1025;
+  env.current = 0.4;
+  env.current_direction = Horizontal(0.6);  // across the lines' plane: a 3D shape
+  return env;
+}
+
+const Vec kAnchor(0.0, -60.0, 0.0), kFairlead(70.0, 0.0, 10.0);
+
+// The fairlead on a ship: eq. (3) in three directions.
+EndMotion Ship() {
+  return EndMotion::Trochoid(kFairlead, Vec(1.5, 0.8, 0.5), Vec(0.0, 0.6, -0.4),
+                             2 * M_PI / 8.0, 0.5);
+}
+
+// Anchor -> 60 m -> clump -> 45 m -> fairlead: as two lines joined at a free point.
+SystemModel ClumpSystem() {
+  std::vector<PointSpec> points(3);
+  points[0] = {"anchor", EndMotion::Fixed(kAnchor), {}};
+  points[1] = {"clump", EndMotion::Free(Vec(40.0, -45.0, 5.0)), Clump()};
+  points[2] = {"fairlead", Ship(), {}};
+  std::vector<LineSpec> lines(2);
+  lines[0].name = "lower";
+  lines[0].sections = {Chain(60, 24)};
+  lines[0].start_point = 0;
+  lines[0].end_point = 1;
+  lines[1].name = "upper";
+  lines[1].sections = {Chain(45, 18)};
+  lines[1].start_point = 1;
+  lines[1].end_point = 2;
+  return MakeSystem(lines, points, Water3D());
+}
+
+// The same as one line with the clump as a weight at its station 24.
+Model ClumpLine() {
+  PrismSpec clump = Clump();
+  clump.station = 24;
+  return MakeModel({Chain(60, 24), Chain(45, 18)}, {clump}, Water3D(),
+                   EndMotion::Fixed(kAnchor), Ship(), LinkLaw::kElastic);
+}
+
+// Largest distance between the system's stations and the one line's [m].
+double PositionGap(const std::vector<State>& lines, const Points& one) {
+  double gap = 0;
+  for (int j = 0; j <= 24; ++j) gap = std::max(gap, (lines[0].x.col(j) - one.col(j)).norm());
+  for (int j = 0; j <= 18; ++j) gap = std::max(gap, (lines[1].x.col(j) - one.col(24 + j)).norm());
+  return gap;
+}
+
+TEST(SystemEquilibrium, ClumpJunctionIsTheLineWithAWeight) {
+  const SystemModel sys = ClumpSystem();
+  ASSERT_EQ(sys.shared_count(), 1);
+  SystemEquilibriumReport report;
+  const std::vector<State> states = SolveSystemEquilibrium(sys, &report);
+  const State one = SolveEquilibrium(ClumpLine());
+  // Both are solved to 1e-9 of the static load (about 60 kN here): a station's position then
+  // differs by that force over the line's stiffness across it (T/L ~ 1e3 N/m): ~1e-7 m.
+  EXPECT_LT(PositionGap(states, one.x), 1e-6);
+  EXPECT_LE(report.residual, 1e-9 * report.force_scale);
+  EXPECT_GT(std::abs(states[0].x(2, 24) - 0.0), 0.5);  // the current bends it out of z = 0
+}
+
+TEST(SystemDynamics, ClumpJunctionMovesAsTheLineWithAWeight) {
+  const SystemModel sys = ClumpSystem();
+  const Model line = ClumpLine();
+  const std::vector<State> rest = SolveSystemEquilibrium(sys);
+  const State one_rest = SolveEquilibrium(line);
+  StepOptions o;
+  o.scheme = Scheme::kImplicit;
+  o.tolerance = 1e-4;  // the default's scale (1e-6 of the line's length)
+  SystemData sd = MakeSystemData(sys, SceneInputs(line), o, rest);
+  Data one = MakeData(line, SceneInputs(line), o, one_rest);
+  double gap = 0, peak = 0, tension_gap = 0;
+  for (int k = 0; k < 200; ++k) {  // 20 s: the ship's ramp and two periods
+    StepSystem(sys, sd, SceneInputs(line), 0.1);
+    Step(line, one, SceneInputs(line), 0.1);
+    std::vector<State> now = {sd.lines[0].state, sd.lines[1].state};
+    gap = std::max(gap, PositionGap(now, one.state.x));
+    peak = std::max(peak, one.tension().maxCoeff());
+    tension_gap = std::max(tension_gap, std::abs(sd.lines[1].tension()[17] - one.tension()[41]));
+  }
+  // The same equations, stepped with the same steps (both adapt on the same largest error of
+  // the same stations); they differ by Newton's tolerance (1e-9 of a link length, 2.5e-9 m,
+  // per step) and round-off, far below the step's own error (1e-4 m). A link's tension moves
+  // by EA / l = 1.6e8 N/m times that, 0.4 N: 5e-6 of the 85 kN peak.
+  EXPECT_LT(gap, 1e-6);
+  EXPECT_LT(tension_gap, 1e-5 * peak);
+  EXPECT_EQ(sd.stats.steps, one.stats.steps);
+}
+
+// A buoy held down by three identical legs to anchors 120 degrees apart, pushed sideways by a
+// steady thrust: a spread mooring in its offset under a steady load.
+struct Spread {
+  double rho = 1025, g = 9.80665;
+  double length = 350;                 // each leg [m]
+  double anchor_radius = 300;          // [m] from the centre
+  double anchor_y = -100;              // [m]
+  double buoyancy = 3.0e5;             // the buoy's net buoyancy rho g V - m g [N]
+  Vec thrust = Vec(4.0e4, 0.0, 1.5e4);  // [N]
+  SectionSpec leg(int links) const { return Chain(length, links); }
+  double w() const {  // the legs' net weight per metre [N/m]
+    const SectionSpec c = Chain(1, 1);
+    return (c.mass_per_length - rho * c.area) * g;
+  }
+  Vec anchor(int i) const {
+    return Vec(0.0, anchor_y, 0.0) + anchor_radius * Horizontal(2 * M_PI * i / 3.0 + 0.3);
+  }
+  PrismSpec buoy() const {
+    PrismSpec p;
+    p.mass = 2.0e4;
+    p.volume = (buoyancy + p.mass * g) / (rho * g);
+    p.force = thrust;
+    return p;
+  }
+  SystemModel System(int links) const {
+    EnvironmentSpec env;
+    env.fluid_density = rho;
+    env.gravity = g;
+    std::vector<PointSpec> points = {{"buoy", EndMotion::Free(Vec(0.0, -20.0, 0.0)), buoy()}};
+    std::vector<LineSpec> lines(3);
+    for (int i = 0; i < 3; ++i) {
+      points.push_back({"anchor" + std::to_string(i), EndMotion::Fixed(anchor(i)), {}});
+      lines[i].name = "leg" + std::to_string(i);
+      lines[i].sections = {leg(links)};
+      lines[i].start_point = i + 1;  // from the anchor up to the buoy
+      lines[i].end_point = 0;
+    }
+    return MakeSystem(lines, points, env);
+  }
+  // The exact answer: the buoy where the three exact elastic catenaries, its net buoyancy and
+  // the thrust balance (Newton with central differences on the continuous catenaries).
+  Vec ExactBuoy() const {
+    const SectionSpec c = Chain(1, 1);
+    const double EA = c.area * c.youngs_modulus;
+    auto net = [&](const Vec& P) {
+      Vec F = thrust + Vec(0.0, buoyancy, 0.0);
+      for (int i = 0; i < 3; ++i) {
+        testing::ExactCatenary cat({{length, w(), EA, 0.0}});
+        const Vec A = anchor(i);
+        const Vec d = HorizontalPart(P - A);
+        const double span = d.norm();
+        cat.Shoot(Eigen::Vector2d(span, P[1] - A[1]), 0.5 * w() * length, 0.3 * w() * length);
+        // The top's tension (H, V0 + w L) pulls the buoy back towards the anchor and down.
+        F -= cat.H() * d / span + Vec(0.0, cat.V0() + w() * length, 0.0);
+      }
+      return F;
+    };
+    Vec P(0.0, -20.0, 0.0);
+    for (int it = 0; it < 50; ++it) {
+      const Vec F = net(P);
+      if (F.norm() < 1e-6) break;
+      Mat J;
+      for (int k = 0; k < kDim; ++k) {
+        Vec e = Vec::Zero();
+        e[k] = 1e-4;
+        J.col(k) = (net(P + e) - net(P - e)) / 2e-4;
+      }
+      P -= J.inverse() * F;
+    }
+    return P;
+  }
+};
+
+TEST(SystemEquilibrium, SpreadMooringOffsetConvergesToTheExactCatenaries) {
+  const Spread spread;
+  const Vec exact = spread.ExactBuoy();
+  double error[2];
+  int k = 0;
+  for (int links : {35, 70}) {
+    const SystemModel sys = spread.System(links);
+    const std::vector<State> states = SolveSystemEquilibrium(sys);
+    error[k++] = (states[0].x.col(links) - exact).norm();
+    // The lines' pull balances the buoy: the forces on it at rest sum to zero (PointForces
+    // reports the lines' pull on a free point).
+    StepOptions o;
+    SystemData sd = MakeSystemData(sys, SceneInputs(sys.lines[0]), o, states);
+    PointLoads loads(sys);
+    loads.Compute(sys, sd, SceneInputs(sys.lines[0]));
+    const Points& forces = loads.forces();
+    const Vec own = spread.thrust + Vec(0.0, spread.buoyancy, 0.0);
+    // The lines' pull is the end links' tension; the end stations' lumped weight (half a link
+    // each) is the rest of the balance.
+    const double half_links = 3 * 0.5 * spread.w() * spread.length / links;
+    EXPECT_LT((forces.col(0) + own - Vec(0.0, half_links, 0.0)).norm(), 1e-6 * own.norm());
+  }
+  // The buoy moved by the thrust: tens of metres.
+  EXPECT_GT(HorizontalPart(exact).norm(), 5.0);
+  // Second order in the link length: halving it quarters the error (within 10 %: the next
+  // term), and the finer answer is within a centimetre.
+  RecordProperty("error_35", std::to_string(error[0]));
+  RecordProperty("error_70", std::to_string(error[1]));
+  EXPECT_NEAR(error[0] / error[1], 4.0, 0.4);
+  EXPECT_LT(error[1], 1e-2);
+}
+
+}  // namespace
+}  // namespace cablefilm
