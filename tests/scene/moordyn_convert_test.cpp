@@ -1,0 +1,339 @@
+// Issue 20, MoorDyn's input files: the scene a MoorDyn file converts to, read back with toml++
+// and held against the mapping of docs/moordyn.md (the axes, E = EA / area, the seabed), and
+// the three shipped scenes written as MoorDyn files (tests/scenes/moordyn/) converted back to
+// their own materials and geometry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <toml++/toml.h>
+#include <vector>
+
+#include "core/error.h"
+#include "scene/moordyn_axes.h"
+#include "scene/moordyn_convert.h"
+#include "scene/toml_text.h"
+
+namespace cablefilm {
+namespace {
+
+const std::string kSource = CABLEFILM_SOURCE_DIR;
+const std::string kDir = kSource + "/tests/scenes/moordyn/";
+
+// Relative tolerance of a value computed from the file's numbers (one or two roundings of a
+// product or quotient, then the shortest decimal that reads back the same: a few 1e-16).
+constexpr double kRel = 1e-14;
+
+double Num(const toml::node_view<const toml::node>& n) {
+  EXPECT_TRUE(n.is_number()) << n;
+  return n.value<double>().value_or(std::nan(""));
+}
+
+std::array<double, 3> Vec(const toml::node_view<const toml::node>& n) {
+  const toml::array* a = n.as_array();
+  EXPECT_TRUE(a && (a->size() == 2 || a->size() == 3)) << n;
+  if (!a) return {};
+  std::array<double, 3> v{};
+  for (std::size_t i = 0; i < a->size(); ++i) v[i] = a->get(i)->value<double>().value();
+  return v;
+}
+
+void ExpectNear(const std::array<double, 3>& a, const std::array<double, 3>& b, double tol) {
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], tol) << "component " << i;
+}
+
+// The [[name]] table whose name is `key`.
+toml::node_view<const toml::node> Named(const toml::table& t, const char* array,
+                                        const std::string& key) {
+  const toml::array* a = t[array].as_array();
+  if (a)
+    for (const toml::node& n : *a)
+      if (n.as_table() && (*n.as_table())["name"].value<std::string>() == key)
+        return toml::node_view<const toml::node>(n);
+  ADD_FAILURE() << "no [[" << array << "]] named " << key;
+  return {};
+}
+
+struct Converted {
+  toml::table scene;
+  std::vector<std::string> warnings;
+  std::string text;
+};
+
+Converted Convert(const MoorDynSystem& system) {
+  Converted c;
+  c.text = MoorDynToToml(system, &c.warnings);
+  try {
+    c.scene = toml::parse(c.text, std::string("converted.toml"));
+  } catch (const toml::parse_error& e) {
+    ADD_FAILURE() << "not TOML: " << e << "\n" << c.text;
+  }
+  return c;
+}
+
+bool HasWarning(const std::vector<std::string>& warnings, const std::string& part) {
+  for (const auto& w : warnings)
+    if (w.find(part) != std::string::npos) return true;
+  return false;
+}
+
+TEST(MoorDynConvert, ThreeLegSpreadFollowsTheMapping) {
+  const Converted c = Convert(ReadMoorDynFile(kDir + "three_leg_spread.txt"));
+  const toml::table& s = c.scene;
+  EXPECT_EQ(s["title"].value<std::string>(),
+            "Three-leg spread mooring in 150 m of water, a clump weight on leg 3 (cablefilm's "
+            "reader test)");
+  EXPECT_EQ(Num(s["environment"]["gravity"]), 9.81);  // MoorDyn's documented default
+  EXPECT_EQ(Num(s["environment"]["fluid_density"]), 1025.0);
+  // The seabed: y = -WtrDpth; stiffness and damping per metre of line: kBot d, cBot d with the
+  // longest line's d (the chain's, 0.137 m); the wire's other diameter is a warning.
+  EXPECT_EQ(Num(s["seabed"]["y"]), -150.0);
+  EXPECT_NEAR(Num(s["seabed"]["stiffness"]), 3.0e6 * 0.137, kRel * 4.11e5);
+  EXPECT_NEAR(Num(s["seabed"]["damping"]), 3.0e5 * 0.137, kRel * 4.11e4);
+  EXPECT_EQ(Num(s["seabed"]["friction"]), 0.5);
+  EXPECT_TRUE(HasWarning(c.warnings, "\"wire\" (d 0.076 m)"));
+
+  // Materials: area = pi d^2 / 4 (MoorDyn's d is volume-equivalent), E = EA / area,
+  // BA >= 0 -> axial_damping = BA / area, BA < 0 -> axial_damping_ratio = -BA.
+  const auto chain = Named(s, "material", "chain");
+  const double chain_area = M_PI * 0.137 * 0.137 / 4;
+  EXPECT_EQ(Num(chain["diameter"]), 0.137);
+  EXPECT_NEAR(Num(chain["area"]), chain_area, kRel * chain_area);
+  EXPECT_EQ(Num(chain["mass_per_length"]), 115.0);
+  EXPECT_NEAR(Num(chain["youngs_modulus"]) * Num(chain["area"]), 5.4e8, kRel * 5.4e8);
+  EXPECT_EQ(Num(chain["drag_coefficient"]), 2.4);
+  EXPECT_EQ(Num(chain["added_mass_coefficient"]), 1.0);
+  EXPECT_EQ(Num(chain["axial_damping_ratio"]), 0.8);
+  EXPECT_FALSE(chain["axial_damping"]);
+  const auto wire = Named(s, "material", "wire");
+  const double wire_area = M_PI * 0.076 * 0.076 / 4;
+  EXPECT_NEAR(Num(wire["youngs_modulus"]), 5.6e8 / wire_area, kRel * 5.6e8 / wire_area);
+  EXPECT_NEAR(Num(wire["axial_damping"]), 1.0e5 / wire_area, kRel * 1.0e5 / wire_area);
+  EXPECT_TRUE(HasWarning(c.warnings, "\"chain\": CdAx 0.4, CaAx 0.5: tangential drag / added "
+                                     "mass not modelled yet"));
+
+  // Points: MoorDyn (x, y, z) -> cablefilm (x, z, -y).
+  const auto anchor2 = Named(s, "point", "2");
+  EXPECT_EQ(anchor2["motion"].value<std::string>(), "fixed");
+  ExpectNear(Vec(anchor2["position"]), {-400.0, -150.0, -692.8203}, 0);
+  const auto fairlead5 = Named(s, "point", "5");  // "Vessel": held where it is written
+  EXPECT_EQ(fairlead5["motion"].value<std::string>(), "fixed");
+  ExpectNear(Vec(fairlead5["position"]), {-10.0, -10.0, -17.3205}, 0);
+  const auto clump = Named(s, "point", "7");
+  EXPECT_EQ(clump["motion"].value<std::string>(), "free");
+  ExpectNear(Vec(clump["position"]), {-220.0, -140.0, 381.0512}, 0);
+  EXPECT_EQ(Num(clump["mass"]), 5000.0);
+  EXPECT_EQ(Num(clump["volume"]), 0.5);
+  ExpectNear(Vec(clump["added_volume"]), {0.5, 0.5, 0.5}, 0);        // Ca V
+  ExpectNear(Vec(clump["drag_coefficient"]), {1.0, 1.0, 1.0}, 0);
+  ExpectNear(Vec(clump["drag_area"]), {2.0, 2.0, 2.0}, 0);           // CdA
+  EXPECT_FALSE(Named(s, "point", "1")["mass"]);  // a fixed point has none
+
+  // Lines: start = AttachA, end = AttachB, one section.
+  const auto leg3 = Named(s, "line", "4");
+  EXPECT_EQ(leg3["model"].value<std::string>(), "elastic");
+  EXPECT_EQ(leg3["start"].value<std::string>(), "7");
+  EXPECT_EQ(leg3["end"].value<std::string>(), "6");
+  const toml::array* sections = leg3["section"].as_array();
+  ASSERT_TRUE(sections && sections->size() == 1);
+  const auto section = toml::node_view<const toml::node>(*sections->get(0));
+  EXPECT_EQ(section["material"].value<std::string>(), "wire");
+  EXPECT_EQ(Num(section["length"]), 450.0);
+  EXPECT_EQ(section["segments"].value<int64_t>(), 30);
+  EXPECT_EQ(s["line"].as_array()->size(), 4u);
+  EXPECT_EQ(s["point"].as_array()->size(), 7u);
+
+  // The options cablefilm does not map: dtM and TmaxIC as comments, writeLog a warning.
+  EXPECT_NE(c.text.find("# OPTIONS dtM = 0.001 s (line 29): MoorDyn's time step, a hint"),
+            std::string::npos);
+  EXPECT_NE(c.text.find("# OPTIONS TmaxIC = 60 (line 35): MoorDyn's initial-condition"),
+            std::string::npos);
+  EXPECT_TRUE(HasWarning(c.warnings, "three_leg_spread.txt:37: OPTIONS writeLog = 1: ignored"));
+}
+
+// A body's points: X0 + Rx(r0) Ry(p0) Rz(y0) p, then MoorDyn's axes to cablefilm's.
+TEST(MoorDynConvert, BodyPointsAreFixedAtTheBodysPose) {
+  MoorDynBody body;
+  body.position = {10, 20, -5};
+  body.rotation = {0, 0, 90};  // yaw: the bow (+x) turns to port (+y)
+  ExpectNear(MoorDynBodyPoint(body, {1, 0, 0}), {10, 21, -5}, 1e-15);
+  body.rotation = {0, 90, 0};  // pitch: the bow goes down
+  ExpectNear(MoorDynBodyPoint(body, {1, 0, 0}), {10, 20, -6}, 1e-15);
+  body.rotation = {90, 0, 0};  // roll: the starboard side (-y) goes down
+  ExpectNear(MoorDynBodyPoint(body, {0, -1, 0}), {10, 20, -6}, 1e-15);
+  // Rx Ry Rz, the yaw applied first: (1,0,0) -yaw-> (0,1,0) -roll-> (0,0,1). (Rz Rx would
+  // give (0,1,0).)
+  body.rotation = {90, 0, 90};
+  ExpectNear(MoorDynBodyPoint(body, {1, 0, 0}), {10, 20, -4}, 1e-15);
+  body.rotation = {30, 0, 0};
+  ExpectNear(MoorDynBodyPoint(body, {0, 2, 0}), {10, 20 + 2 * std::cos(M_PI / 6),
+                                                 -5 + 2 * std::sin(M_PI / 6)}, 1e-14);
+  ExpectNear(MoorDynToCablefilm({1, 2, 3}), {1, 3, -2}, 0);
+
+  MoorDynSystem system;
+  system.file = "sys.txt";
+  system.line_types.push_back({5, "chain", 0.1, 150, 1e8, -1, 0, 2.3, 1, 0, 0, 0});
+  body.rotation = {0, 0, 90};
+  body.attachment = MoorDynAttachment::kFixed;
+  body.line = 9;
+  body.id = 1;
+  system.bodies.push_back(body);
+  MoorDynPoint anchor;
+  anchor.id = 1;
+  anchor.position = {-500, 0, -150};
+  MoorDynPoint fairlead;
+  fairlead.id = 2;
+  fairlead.attachment = MoorDynAttachment::kBody;
+  fairlead.body = 1;
+  fairlead.position = {1, 0, 0};
+  system.points = {anchor, fairlead};
+  system.lines.push_back({14, 1, "chain", 1, 2, 550, 20});
+  const Converted c = Convert(system);
+  const auto p = Named(c.scene, "point", "2");
+  EXPECT_EQ(p["motion"].value<std::string>(), "fixed");
+  ExpectNear(Vec(p["position"]), {10, -5, -21}, 1e-15);  // MoorDyn (10, 21, -5)
+  // No WtrDpth: MoorDyn's default 0, lowered to the deepest point (the anchor), as MoorDyn.
+  EXPECT_EQ(Num(c.scene["seabed"]["y"]), -150.0);
+
+  system.bodies[0].attachment = MoorDynAttachment::kFree;
+  try {
+    MoorDynToToml(system, nullptr);
+    FAIL() << "a free body was converted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("sys.txt:9: BODIES row 1, column Attachment: free "
+                                          "bodies are not supported yet; expected Fixed or "
+                                          "Coupled", 0),
+              0u) << e.what();
+  }
+}
+
+TEST(MoorDynConvert, NamesAndTitlesAreEscaped) {
+  EXPECT_EQ(TomlString("a \"b\" \\ c"), "\"a \\\"b\\\" \\\\ c\"");
+  EXPECT_EQ(TomlString("tab\tnl\n\x7f"), "\"tab\\u0009nl\\u000A\\u007F\"");
+  EXPECT_EQ(TomlString("\xff" "x"), "\"\xEF\xBF\xBDx\"");  // not UTF-8 -> U+FFFD
+  EXPECT_EQ(TomlNumber(850), "850.0");
+  EXPECT_EQ(TomlNumber(-0.0), "0.0");
+  EXPECT_EQ(TomlNumber(0.1), "0.1");
+  EXPECT_EQ(TomlNumber(3e5), "300000.0");
+  EXPECT_EQ(TomlNumber(1e-7), "1e-07");
+  EXPECT_EQ(TomlNumber(2.5e20), "2.5e+20");
+  EXPECT_EQ(std::stod(TomlNumber(M_PI)), M_PI);
+
+  MoorDynSystem system = ReadMoorDynFile(kDir + "catenary.txt");
+  const std::string odd = "ch\"ain\\" "\x01" "\xfe";
+  system.line_types[0].name = odd;
+  system.lines[0].type = odd;
+  system.title = std::string(300, 'T') + " \"quoted\"";
+  const Converted c = Convert(system);
+  const std::string material = c.scene["material"][0]["name"].value<std::string>().value_or("");
+  EXPECT_EQ(material, "ch\"ain\\\x01\xEF\xBF\xBD");
+  EXPECT_EQ(c.scene["line"][0]["section"][0]["material"].value<std::string>(), material);
+  EXPECT_EQ(c.scene["title"].value<std::string>(), std::string(200, 'T'));  // at most 200
+}
+
+// The options: a seabed above a point is lowered to it (as MoorDyn), with a warning; kBot 0 is
+// no seabed; waves, currents and unknown options are warnings, and the defaults are written.
+TEST(MoorDynConvert, OptionsAndTheirDefaults) {
+  const std::string text = R"(Options
+---------------------- LINE TYPES -----------------------
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
+chain 0.1 150.0 1e8 0 1e4 2.3 1 0 0
+---------------------- POINTS ---------------------------
+ID Attachment X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Fixed -500 0 -160 0 0 0 0
+2 Coupled 0 0 -9 0 0 0 0
+---------------------- LINES ----------------------------
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 chain 1 2 550 20 -
+---------------------- OPTIONS --------------------------
+150 WtrDpth
+1 WaveKin
+0 Currents
+euler tScheme
+)";
+  const Converted c = Convert(ReadMoorDynText(text, "sys.txt"));
+  EXPECT_EQ(Num(c.scene["seabed"]["y"]), -160.0);
+  EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:9: point 1 lies below the seabed of WtrDpth 150 m"));
+  EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:17: OPTIONS WaveKin = 1: waves are not imported"));
+  EXPECT_FALSE(HasWarning(c.warnings, "Currents"));
+  EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:19: OPTIONS tScheme = euler: ignored"));
+  EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:5: LINE TYPES \"chain\": EI 10000 N m^2: bending "
+                                     "stiffness ignored"));
+  EXPECT_EQ(Num(c.scene["environment"]["gravity"]), 9.81);
+  EXPECT_EQ(Num(c.scene["environment"]["fluid_density"]), 1025.0);
+  EXPECT_NEAR(Num(c.scene["seabed"]["stiffness"]), 3e6 * 0.1, kRel * 3e5);  // kBot's default
+  EXPECT_NEAR(Num(c.scene["seabed"]["damping"]), 3e5 * 0.1, kRel * 3e4);    // cBot's
+  EXPECT_EQ(Num(c.scene["seabed"]["friction"]), 0.0);
+  EXPECT_EQ(Num(Named(c.scene, "material", "chain")["axial_damping"]), 0.0);  // BA 0
+  // The warnings head the scene too, as comments.
+  EXPECT_NE(c.text.find("#   sys.txt:19: OPTIONS tScheme = euler: ignored\n"), std::string::npos);
+
+  const Converted flat = Convert(ReadMoorDynText(text + "0 kBot\n", "sys.txt"));
+  EXPECT_FALSE(flat.scene["seabed"]);
+  EXPECT_TRUE(HasWarning(flat.warnings, "sys.txt:20: kBot 0: MoorDyn's seabed has no stiffness"));
+}
+
+// --- The shipped scenes that a MoorDyn file can express, as MoorDyn files ---------------
+
+// What a shipped scene's end becomes: its position in 3D, and "free" or "fixed" (a driven end,
+// trochoid or table, is a Coupled point, which stays where it is written).
+struct End {
+  std::array<double, 3> position;
+  std::string motion;
+};
+End SceneEnd(const toml::table& scene, const char* which) {
+  const auto end = scene["ends"][which];
+  const std::string motion = end["motion"].value_or(std::string("fixed"));
+  return {Vec(end["position"]), motion == "free" ? "free" : "fixed"};
+}
+
+void ExpectSameScene(const std::string& moordyn, const std::string& shipped) {
+  SCOPED_TRACE(moordyn);
+  const toml::table scene = toml::parse_file(kSource + "/scenes/" + shipped);
+  const Converted c = Convert(ReadMoorDynFile(kDir + moordyn));
+  const toml::table& s = c.scene;
+  EXPECT_EQ(Num(s["environment"]["gravity"]), Num(scene["environment"]["gravity"]));
+  EXPECT_EQ(Num(s["environment"]["fluid_density"]), Num(scene["environment"]["fluid_density"]));
+
+  // The material: the same d, mass per length, EA, drag and added mass coefficients (the
+  // scene's defaults 1.2 and 1.0 when it leaves them out). The area is pi d^2 / 4, not the
+  // scene's: both scenes are in vacuum, where the area enters only through EA = E area.
+  const auto m = s["material"][0];
+  const auto sm = scene["material"][0];
+  EXPECT_EQ(m["name"].value<std::string>(), sm["name"].value<std::string>());
+  EXPECT_EQ(Num(m["diameter"]), Num(sm["diameter"]));
+  EXPECT_EQ(Num(m["mass_per_length"]), Num(sm["mass_per_length"]));
+  const double ea = Num(sm["youngs_modulus"]) * Num(sm["area"]);
+  EXPECT_NEAR(Num(m["youngs_modulus"]) * Num(m["area"]), ea, kRel * ea);
+  EXPECT_EQ(Num(m["drag_coefficient"]), sm["drag_coefficient"].value_or(1.2));
+  EXPECT_EQ(Num(m["added_mass_coefficient"]), sm["added_mass_coefficient"].value_or(1.0));
+  EXPECT_EQ(Num(scene["environment"]["fluid_density"]), 0.0);
+
+  // The geometry: one line from the start's point to the end's, of the same length and links.
+  ASSERT_EQ(s["line"].as_array()->size(), 1u);
+  const auto line = s["line"][0];
+  EXPECT_EQ(Num(line["section"][0]["length"]), Num(scene["cable"]["section"][0]["length"]));
+  EXPECT_EQ(line["section"][0]["segments"].value<int64_t>(),
+            scene["cable"]["section"][0]["segments"].value<int64_t>());
+  for (const char* which : {"start", "end"}) {
+    const auto point = Named(s, "point", line[which].value<std::string>().value_or(""));
+    const End end = SceneEnd(scene, which);
+    EXPECT_EQ(point["motion"].value<std::string>(), end.motion) << which;
+    ExpectNear(Vec(point["position"]), end.position, 0);
+    EXPECT_FALSE(point["mass"]) << which;  // a free end is a station with no weight
+  }
+  // MoorDyn's seabed, which the scenes do not have, lies far below the line.
+  EXPECT_LE(Num(s["seabed"]["y"]), -100.0);
+}
+
+TEST(MoorDynConvert, ShippedScenesAsMoorDynFiles) {
+  ExpectSameScene("catenary.txt", "catenary.toml");
+  ExpectSameScene("hanging_chain.txt", "hanging_chain.toml");
+  ExpectSameScene("taut_string.txt", "taut_string.toml");
+}
+
+}  // namespace
+}  // namespace cablefilm
