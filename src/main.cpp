@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/system_command.h"
 #include "app/sweep_command.h"
 #include "core/version.h"
 #ifdef CABLEFILM_LIVE
@@ -296,6 +297,14 @@ int main(int argc, char** argv) {
   CLI::App* compare = add_command("compare", "elastic and inextensible runs: the paper's Figure 1");
   AddRunOptions(compare, &run_options);
   CLI::App* check = add_command("check", "validate a scene, print stations, mass, time step");
+  std::string convert_out;
+  CLI::App* convert =
+      add_command("convert", "write a MoorDyn v2 input file as the equivalent scene (TOML)");
+  convert->add_option("-o,--out", convert_out, "the scene file to write (default: standard output)")
+      ->type_name("FILE");
+  convert->footer(
+      "'run' and 'check' read a MoorDyn file as it is, through this scene; MoorDyn's\n"
+      "z-up axes become cablefilm's y-up ones: (x, y, z) -> (x, z, -y). See docs/moordyn.md.");
   cablefilm::SweepOptions sweep_options;
   CLI::App* sweep = add_command("sweep", "run a scene over the cross product of values of its keys");
   AddSweepOptions(sweep, &sweep_options);
@@ -379,6 +388,7 @@ int main(int argc, char** argv) {
     if (command == run) return cablefilm::RunCommand(scene, run_options);
     if (command == compare) return cablefilm::CompareCommand(scene, run_options);
     if (command == check) return cablefilm::CheckCommand(scene);
+    if (command == convert) return cablefilm::ConvertCommand(scene, convert_out);
     if (command == sweep) return cablefilm::SweepCommand(scene, sweep_options);
     return UsageFailure("unknown command " + Shown(command->get_name()), "");
   } catch (const cablefilm::CancelledError& e) {  // a signal seen inside the work

@@ -12,7 +12,9 @@
 #include "io/result_files.h"
 #include "io/run_report_file.h"
 #include "run/system_run.h"
+#include "io/atomic_file.h"
 #include "scene/build_model.h"
+#include "scene/scene_loader.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
@@ -46,6 +48,7 @@ void PrintSystem(const SceneDef& scene, const SystemModel& sys) {
     std::printf("  point %s: %s, %zu line end(s)%s\n", QuoteText(p.name).c_str(),
                 KindName(p.kind), p.ends.size(),
                 p.shared >= 0 ? ", where lines meet (solved with them)" : "");
+  for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
 }
 
 void PrintEquilibrium(const SystemEquilibriumReport& eq, double ms) {
@@ -76,6 +79,21 @@ struct LineFiles {
 };
 
 }  // namespace
+
+int ConvertCommand(const std::string& path, const std::string& out_path) {
+  std::vector<std::string> warnings;
+  const std::string text = MoorDynSceneText(path, &warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  if (out_path.empty() || out_path == "-") {
+    std::fputs(text.c_str(), stdout);
+    return 0;
+  }
+  AtomicFile file(out_path);
+  std::fputs(text.c_str(), file.stream());
+  file.Commit();
+  std::fprintf(stderr, "wrote %s\n", EscapeText(out_path).c_str());
+  return 0;
+}
 
 int CheckSystem(const SceneDef& scene) {
   const SystemModel sys = BuildSystem(scene);

@@ -8,20 +8,21 @@
 namespace cablefilm {
 namespace {
 
-// The grid of the system: each line's own (ChooseTimeGrid), the finest step and tolerance.
+// The grid of the system: each line's own (ChooseTimeGrid); the finest step asked, and with
+// "auto" the longest line's tolerance (1e-6 of its length: the system's scale; the shortest
+// line's would make a short pendant set the steps of the whole mooring).
 TimeGrid SystemGrid(const SceneDef& scene, const SystemModel& sys) {
   TimeGrid grid;
+  double longest = -1, tolerance = 0;
   for (size_t i = 0; i < sys.lines.size(); ++i) {
     const TimeGrid g = ChooseTimeGrid(sys.lines[i], scene.simulation, scene.output.interval);
-    if (i == 0 || g.dt < grid.dt) {
-      const double tolerance = i == 0 ? g.options.tolerance
-                                      : std::min(grid.options.tolerance, g.options.tolerance);
-      grid = g;
-      grid.options.tolerance = tolerance;
-    } else {
-      grid.options.tolerance = std::min(grid.options.tolerance, g.options.tolerance);
+    if (i == 0 || g.dt < grid.dt) grid = g;
+    if (sys.lines[i].line.total_length() > longest) {
+      longest = sys.lines[i].line.total_length();
+      tolerance = g.options.tolerance;
     }
   }
+  grid.options.tolerance = tolerance;
   return grid;
 }
 
@@ -118,6 +119,7 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
   }
   // Each line counts every iteration of the coupled solve: the system's are any line's.
   s.stats.newton_iterations = nl > 0 ? run.lines[0].stats.newton_iterations : 0;
+  if (nl > 0) s.stats.record = run.lines[0].stats.record;  // the step range, every line's
 }
 
 }  // namespace cablefilm

@@ -144,6 +144,7 @@ struct SceneDef {
   std::string path;              // the scene file, as given
   std::string name;              // its stem: the default output folder name
   std::string title;
+  std::vector<std::string> warnings;  // what reading it left out (a MoorDyn file's EI, ...)
   EnvironmentDef environment;
   SeabedDef seabed;
   WavesDef waves;

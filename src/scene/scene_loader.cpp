@@ -1,12 +1,17 @@
 #include "scene/scene_loader.h"
 
+#include <cctype>
 #include <cerrno>
+#include <vector>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 
 #include "core/error.h"
+#include "scene/moordyn_convert.h"
+#include "scene/moordyn_file.h"
 #include "scene/scene_limits.h"
+#include "scene/scene_parser.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
@@ -31,7 +36,49 @@ std::string ReadSceneFile(const std::string& path) {
   return text;
 }
 
-SceneDef LoadScene(const std::string& path) { return ParseScene(ReadSceneFile(path), path); }
+bool IsMoorDynText(const std::string& text) {
+  // A MoorDyn file's section headers: a line of dashes around a key phrase, "---- LINES ----".
+  // Never valid TOML, so a scene is never taken for one.
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(start, end - start);
+    const std::size_t first = line.find_first_not_of(" \t");
+    if (first != std::string::npos && line.compare(first, 3, "---") == 0) {
+      std::string upper;
+      for (char c : line) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      if (upper.find("LINE") != std::string::npos || upper.find("POINT") != std::string::npos ||
+          upper.find("OPTIONS") != std::string::npos)
+        return true;
+    }
+    start = end + 1;
+  }
+  return false;
+}
+
+std::string MoorDynSceneText(const std::string& path, std::vector<std::string>* warnings) {
+  return MoorDynToToml(ReadMoorDynText(ReadSceneFile(path), path), warnings);
+}
+
+SceneDef LoadScene(const std::string& path) {
+  std::string text = ReadSceneFile(path);
+  if (!IsMoorDynText(text)) return ParseScene(text, path);
+  SceneDef scene;
+  std::vector<std::string> warnings;
+  const MoorDynSystem system = ReadMoorDynText(text, path);
+  text = MoorDynToToml(system, &warnings);
+  try {
+    scene = ParseScene(text, path);
+  } catch (const Error& e) {
+    // The line numbers are the converted scene's: `cablefilm convert` shows it.
+    throw Error(std::string(e.what()) + " (in the scene converted from this MoorDyn file: "
+                "'cablefilm convert " + EscapeText(path) + "' shows it)");
+  }
+  scene.warnings = system.warnings;
+  scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());
+  return scene;
+}
 
 std::string SceneErrorMessage(const std::string& scene_path, const std::string& what) {
   const std::string prefix = EscapeText(scene_path) + ":";

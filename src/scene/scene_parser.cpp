@@ -438,6 +438,7 @@ void ReadLines(TableReader& top, SceneDef& scene) {
       if (other.name == line.name)
         r.Fail(t->get("name"), "name", "expected a unique name, " + Quote(line.name) +
                                            " names two lines");
+    r.Choice("model", "elastic", {"elastic"});  // the system's step is the elastic line's
     for (const char* key : {"start", "end"}) {
       const std::string point = r.String(key, "", true);
       int index = -1;

@@ -45,6 +45,13 @@ std::vector<std::string> ScenesWithEveryKey() {
         std::string("motion = \"wave\"\nx_rao = [1.0, 90.0]\ny_rao = [1.0, 0.0]"),
         "motion = \"table\"\nfile = \"" + src + "/scenes/ship_motion.csv\""})
     scenes.push_back(Replace(p63, trochoid_end, motion) + tables);
+  // A system of lines (issue 20), with a free point's every key and a line's weight.
+  scenes.push_back(Read(src + "/scenes/spread_mooring.toml") +
+                   "\n[[point]]\nname = \"buoy\"\nmotion = \"free\"\nposition = [0.0, -5.0, 0.0]\n"
+                   "mass = 100.0\nvolume = 1.0\nadded_volume = [0.5, 0.5]\nforce = [1e3, 0.0, 0.0]\n"
+                   "\n[[line]]\nname = \"riser\"\nmodel = \"elastic\"\nstart = \"buoy\"\n"
+                   "end = \"fairlead1\"\n[[line.section]]\nmaterial = \"chain\"\nlength = 20.0\n"
+                   "segments = 4\n[[line.weight]]\nat = 10.0\nmass = 50.0\n");
   return scenes;
 }
 

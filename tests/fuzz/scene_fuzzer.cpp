@@ -134,6 +134,8 @@ void Explain(const char* what, const Error& e) {
 long Links(const SceneDef& scene) {
   long links = 0;
   for (const SectionDef& s : scene.sections) links += s.segments;
+  for (const LineDef& line : scene.lines)  // a system's lines
+    for (const SectionDef& s : line.sections) links += s.segments;
   return links;
 }
 

@@ -74,10 +74,13 @@ def run(cablefilm, scene, out):
     if done.returncode != 0:
         raise RuntimeError(f"{scene.name}: cablefilm run failed ({done.returncode}): "
                            f"{done.stderr.strip()[-400:]}")
-    series = (out / "timeseries.csv").read_text()
     report = (out / "run_report.toml").read_text()
     steps = {k: int(re.search(rf"^{k} = (\d+)", report, re.M).group(1)) for k in STEP_KEYS}
-    return series, steps
+    if not (out / "lines").is_dir():
+        return {"": (out / "timeseries.csv").read_text()}, steps
+    # A system: each line's timeseries.csv, pinned as <scene>.<line>.
+    return {f".{d.name}": (d / "timeseries.csv").read_text()
+            for d in sorted((out / "lines").iterdir())}, steps
 
 
 def rows(text):
@@ -147,6 +150,26 @@ def check_compare():
     return problems
 
 
+def pin_or_compare(args, pinned, name, series, nudged, steps):
+    """Pins one timeseries (--update) or compares it with its pin; the problems found."""
+    pinned_rows = sensitive_from(series, nudged)
+    pin = pinned / f"{name}.timeseries.csv.gz"
+    pin_steps = pinned / f"{name}.steps"
+    if args.update:
+        with gzip.open(pin, "wt", compresslevel=9) as f:
+            f.write(series)
+        pin_steps.write_text("".join(f"{k} = {v}\n" for k, v in steps.items()))
+        print(f"pinned {name}: {steps}")
+        return []
+    if not pin.exists():
+        return [f"{name}: no pin (tests/scenes/pinned/{pin.name}): run with --update"]
+    with gzip.open(pin, "rt") as f:
+        want = f.read()
+    want_steps = {m.group(1): int(m.group(2))
+                  for m in re.finditer(r"^(\w+) = (\d+)$", pin_steps.read_text(), re.M)}
+    return [f"{name}: {p}" for p in compare(name, series, want, steps, want_steps, pinned_rows)]
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--cablefilm", required=True)
@@ -163,27 +186,12 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for scene in scenes:
             name = scene.stem
-            series, steps = run(args.cablefilm, scene, pathlib.Path(tmp) / name)
-            nudged, _ = run(args.cablefilm, perturbed(scene, pathlib.Path(tmp) / "nudged"),
-                            pathlib.Path(tmp) / f"{name}.nudged")
-            pinned_rows = sensitive_from(series, nudged)
-            pin = pinned / f"{name}.timeseries.csv.gz"
-            pin_steps = pinned / f"{name}.steps"
-            if args.update:
-                with gzip.open(pin, "wt", compresslevel=9) as f:
-                    f.write(series)
-                pin_steps.write_text("".join(f"{k} = {v}\n" for k, v in steps.items()))
-                print(f"pinned {name}: {steps}")
-                continue
-            if not pin.exists():
-                failures.append(f"{name}: no pin (tests/scenes/pinned/{pin.name}): run with --update")
-                continue
-            with gzip.open(pin, "rt") as f:
-                want = f.read()
-            want_steps = {m.group(1): int(m.group(2))
-                          for m in re.finditer(r"^(\w+) = (\d+)$", pin_steps.read_text(), re.M)}
-            failures += [f"{name}: {p}" for p in compare(name, series, want, steps, want_steps,
-                                                               pinned_rows)]
+            all_series, steps = run(args.cablefilm, scene, pathlib.Path(tmp) / name)
+            all_nudged, _ = run(args.cablefilm, perturbed(scene, pathlib.Path(tmp) / "nudged"),
+                                pathlib.Path(tmp) / f"{name}.nudged")
+            for suffix, series in all_series.items():
+                failures += pin_or_compare(args, pinned, name + suffix, series,
+                                           all_nudged[suffix], steps)
     for f in failures:
         print("FAIL:", f)
     print(f"{'FAIL' if failures else 'ok'}: {len(scenes)} shipped scenes against their pins")
