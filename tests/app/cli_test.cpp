@@ -53,11 +53,12 @@ class CommandLine : public ::testing::Test {
     std::ofstream(p, std::ios::binary) << text;
     return p.string();
   }
-  // Runs cablefilm with `args` (already quoted for the shell), in the test's folder.
-  Outcome Run(const std::string& args) {
+  // Runs cablefilm with `args` (already quoted for the shell), in the test's folder, with the
+  // environment's assignments `env` ("NAME=value ...", quoted) when given.
+  Outcome Run(const std::string& args, const std::string& env = "") {
     const std::string cmd = "cd '" + dir_.string() + "' || exit 99\n" +
-                            "exec >stdout.txt 2>stderr.txt\n'" + CABLEFILM_BINARY_DIR +
-                            "/cablefilm' " + args;
+                            "exec >stdout.txt 2>stderr.txt\n" + env + " '" +
+                            CABLEFILM_BINARY_DIR + "/cablefilm' " + args;
     const int rc = std::system(cmd.c_str());
     Outcome o;
     o.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);
@@ -325,6 +326,53 @@ TEST_F(CommandLine, RepeatedOptionsTakeTheLast) {
   EXPECT_TRUE(fs::exists(dir_ / "out2" / "timeseries.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "out2" / "film.mp4"));
   EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// Issue 22 item 1: a full disk (tests/app/full_disk_shim.cpp: writes to the chosen temporary
+// files fail with ENOSPC past a budget) killed the run with SIGSEGV after its message when
+// results.nc's close failed, or when the CSV failed and the NetCDF file's close after it: HDF5's
+// exit handler closed the file the failed close had freed. Exit 1 with the message, nothing
+// left under a final name or a temporary one.
+TEST_F(CommandLine, FullDiskIsAnErrorNotACrash) {
+  const std::string scene = Scene("s.toml");
+  const Outcome whole = Run("run --no-film --out whole s.toml");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  const auto nc_size = static_cast<long long>(fs::file_size(dir_ / "whole" / "results.nc"));
+  const std::string nc = "results.nc.tmp:", csv = ",timeseries.csv.tmp:";
+  struct Case {
+    std::string full;  // CABLEFILM_TEST_FULL_DISK: the files and the bytes each may take
+    std::string message;
+  };
+  const std::vector<Case> cases{
+      // Only the last writes of the close fail (the report's case), or the chunks as the run
+      // writes them, or every write.
+      {nc + std::to_string(nc_size - 1), "results.nc.tmp"},
+      {nc + std::to_string(nc_size / 2), "results.nc.tmp"},
+      {nc + "0", "results.nc.tmp"},
+      // The CSV fails first; the NetCDF file, closed as the run unwinds, fails too.
+      {nc + std::to_string(nc_size) + csv + "0", "timeseries.csv.tmp"},
+      {nc + std::to_string(nc_size) + csv + "500", "timeseries.csv.tmp"},
+  };
+  int k = 0;
+  for (const Case& c : cases) {
+    const std::string out = "out" + std::to_string(k++);
+    const std::string env = std::string("LD_PRELOAD='") + CABLEFILM_FULL_DISK_SHIM +
+                            "' CABLEFILM_TEST_FULL_DISK='" + c.full +
+                            "' ASAN_OPTIONS=\"$ASAN_OPTIONS:verify_asan_link_order=0\" ";
+    const std::string& what = c.full;
+    const Outcome o = Run("run --no-film --out " + out + " s.toml", env);
+    EXPECT_EQ(o.status, 1) << what << ": " << o.err;
+    EXPECT_NE(o.err.find("s.toml"), std::string::npos) << what << ": " << o.err;
+    EXPECT_NE(o.err.find(c.message), std::string::npos) << what << ": " << o.err;
+    // The system's reason, not only HDF5's "HDF error" or "Permission denied".
+    EXPECT_TRUE(o.err.find("No space left on device") != std::string::npos ||
+                o.err.find("disk full") != std::string::npos)
+        << what << ": " << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / out / "results.nc")) << what;
+    for (const auto& entry : fs::directory_iterator(dir_ / out))
+      EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos)
+          << what << ": " << entry.path();
+  }
 }
 
 }  // namespace
