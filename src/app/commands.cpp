@@ -15,6 +15,7 @@
 #include "app/progress.h"
 #include "core/version.h"
 #include "io/netcdf_results.h"
+#include "io/out_dir_lock.h"
 #include "io/result_files.h"
 #include "io/run_report_file.h"
 #include "run/initial_state.h"
@@ -253,12 +254,15 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
   return run;
 }
 
-std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options) {
+// The run's folder, made and locked (`lock` holds it until the run ends: one run at a time in
+// a folder), then cleared of earlier results.
+std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options, OutDirLock& lock) {
   const std::string out_dir = options.out_dir.empty() ? "output/" + scene.name : options.out_dir;
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec)
     throw Error("cannot create the output folder " + EscapeText(out_dir) + ": " + ec.message());
+  lock.Lock(out_dir, "output folder");
   RemoveEarlierResults(out_dir);  // a run's folder never mixes its results with older ones
   return out_dir;
 }
@@ -312,7 +316,8 @@ int RunCommand(const std::string& scene_path, const RunOptions& options, RunRepo
   const FilmSettings look = film ? ResolveFilm(scene, options, kCommandLineNames) : FilmSettings{};
   const Model model = BuildModel(scene);
   CheckModelLimits(scene, model);
-  const std::string out_dir = PrepareOutDir(scene, options);
+  OutDirLock lock;
+  const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
   const Run run = SimulateToFiles(scene, model, out_dir, "");
   if (report) report->summary = run.summary;
@@ -339,7 +344,8 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
     scene.model = kind;
     CheckModelLimits(scene, BuildModel(scene));
   }
-  const std::string out_dir = PrepareOutDir(scene, options);
+  OutDirLock lock;
+  const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
   scene.model = CableModelKind::kElastic;
   const Run elastic = SimulateToFiles(scene, BuildModel(scene), out_dir, "");

@@ -1,9 +1,13 @@
 // Issue 11: the program as a user drives it, through its command line: every bad input is
 // answered with a message and a status (never an abort), before anything is simulated when
 // the input alone tells; messages name the scene and print input text escaped.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <algorithm>
 #include <cstdlib>
@@ -373,6 +377,81 @@ TEST_F(CommandLine, FullDiskIsAnErrorNotACrash) {
       EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos)
           << what << ": " << entry.path();
   }
+}
+
+// Issue 22 item 4: two runs into one --out left a mixed folder (one's equilibrium beside the
+// other's time series), both exiting 0. A run holds .cablefilm.lock (flock) in its folder; a
+// second is refused, naming the first one's process, before it touches the folder.
+TEST_F(CommandLine, SecondRunIntoABusyFolderIsRefused) {
+  Scene("s.toml");
+  const fs::path out = dir_ / "out";
+  fs::create_directories(out);
+  std::ofstream(out / "timeseries.csv") << "the other run's rows\n";
+  // Another run holding the folder, as a run holds it: the lock, and its process id inside.
+  const int fd = ::open((out / ".cablefilm.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const std::string holder = std::to_string(::getpid());
+  ASSERT_EQ(::write(fd, (holder + "\n").data(), holder.size() + 1),
+            static_cast<ssize_t>(holder.size() + 1));
+  for (const char* command : {"run --no-film", "compare --no-film"}) {
+    const Outcome o = Run(std::string(command) + " --out out s.toml");
+    EXPECT_EQ(o.status, 1) << command << ": " << o.err;
+    EXPECT_NE(o.err.find("s.toml: the output folder out is in use by another cablefilm run "
+                         "(process " + holder + ")"),
+              std::string::npos)
+        << command << ": " << o.err;
+    EXPECT_EQ(ReadText(out / "timeseries.csv"), "the other run's rows\n") << command;
+    EXPECT_FALSE(fs::exists(out / "equilibrium.csv")) << command;
+  }
+  const Outcome sweep = Run("sweep --out out --set environment.gravity=9,10 s.toml");
+  EXPECT_EQ(sweep.status, 1) << sweep.err;
+  EXPECT_NE(sweep.err.find("the sweep folder out is in use by another cablefilm run (process " +
+                           holder + ")"),
+            std::string::npos)
+      << sweep.err;
+  EXPECT_FALSE(fs::exists(out / "sweep.csv"));
+  // Let go (as a run that ends, or is killed, lets go): the file left behind is taken over, and
+  // a run that ends removes it.
+  ::close(fd);
+  const Outcome after = Run("run --no-film --out out s.toml");
+  EXPECT_EQ(after.status, 0) << after.err;
+  EXPECT_TRUE(fs::exists(out / "equilibrium.csv"));
+  EXPECT_NE(ReadText(out / "timeseries.csv"), "the other run's rows\n");
+  EXPECT_FALSE(fs::exists(out / ".cablefilm.lock"));
+}
+
+// The same with two real runs: the first (long) holds the folder while it runs.
+TEST_F(CommandLine, TwoRunsIntoOneFolder) {
+  Scene("long.toml", "duration = 2.0", "duration = 1e5");
+  Scene("s.toml");
+  const fs::path lock = dir_ / "out" / ".cablefilm.lock";
+  const pid_t first = ::fork();
+  ASSERT_GE(first, 0);
+  if (first == 0) {
+    const std::string cmd = "cd '" + dir_.string() + "' && exec '" + CABLEFILM_BINARY_DIR +
+                            "/cablefilm' run --no-film --out out long.toml >first.txt 2>&1";
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Until the first run has locked the folder and written its process id (a condition, not a
+  // time; the first run cannot end by itself before the test stops it).
+  const std::string pid = std::to_string(first);
+  int status = 0;
+  while (ReadText(lock) != pid + "\n") {
+    ASSERT_EQ(::waitpid(first, &status, WNOHANG), 0) << ReadText(dir_ / "first.txt");
+    ::usleep(10000);
+  }
+  const Outcome second = Run("run --no-film --out out s.toml");
+  EXPECT_EQ(second.status, 1) << second.err;
+  EXPECT_NE(second.err.find("in use by another cablefilm run (process " + pid + ")"),
+            std::string::npos)
+      << second.err;
+  ::kill(first, SIGINT);
+  ASSERT_EQ(::waitpid(first, &status, 0), first);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130) << ReadText(dir_ / "first.txt");
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "timeseries.partial.csv"));  // the first run's, alone
+  EXPECT_FALSE(fs::exists(lock));
 }
 
 }  // namespace
