@@ -454,4 +454,36 @@ TEST_F(CommandLine, TwoRunsIntoOneFolder) {
   EXPECT_FALSE(fs::exists(lock));
 }
 
+// Issue 22 item 5: the line's own load stretching a link past twice its rest length in the
+// static equilibrium: `check` said ok and `run` stopped at t = 0 with a blow-up naming no key.
+// Both refuse it now, alike, naming the key at fault.
+TEST_F(CommandLine, EquilibriumStretchedPastTwiceIsRefusedByCheckAndRun) {
+  auto edited = [&](const char* scene, const std::string& from, const std::string& to,
+                    const char* name) {
+    const std::string text = ReadText(fs::path(CABLEFILM_SOURCE_DIR) / "scenes" / scene);
+    std::ofstream(dir_ / name, std::ios::binary) << Replace(text, from, to);
+  };
+  // A 2e5 kg weight on the hanging chain (EA = 1 MN): the weight's mass.
+  edited("hanging_chain.toml", "[initial]", "[[cable.weight]]\nat = 10.0\nmass = 2e5\n\n[initial]",
+         "heavy.toml");
+  // P63's wire with E = 16 Pa: the material's modulus (the weight is the same as ever).
+  edited("polachek1963.toml", "youngs_modulus = 9.0e10", "youngs_modulus = 16", "soft.toml");
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"heavy.toml", "heavy.toml: cable.weight[0].mass: the static equilibrium at t = 0 "
+                     "stretches link 0 (stations 0-1, section 0) to 2.96"},
+      {"soft.toml", "soft.toml: material[0].youngs_modulus: the static equilibrium at t = 0 "
+                    "stretches link "}};
+  for (const auto& [scene, message] : cases) {
+    for (const std::string command : {"check", "run --no-film --out out"}) {
+      const Outcome o = Run(command + " " + scene);
+      EXPECT_EQ(o.status, 1) << command << " " << scene << ": " << o.out << o.err;
+      EXPECT_NE(o.err.find(message), std::string::npos) << command << ": " << o.err;
+      EXPECT_NE(o.err.find("expected at most 2 times"), std::string::npos) << o.err;
+      EXPECT_EQ(o.err.find("blow-up at"), std::string::npos) << o.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.partial.csv"));
+}
+
 }  // namespace
