@@ -49,6 +49,8 @@ constexpr double kMaxTension = 1e15;         // N: a film's colour range
 constexpr double kMaxStartStretch = 2.0;    // an elastic link at t = 0, L / l (the integrators
                                             // call a link beyond it a blow-up)
 
+constexpr std::size_t kMaxTitleLength = 200;  // characters of a given title (one line of film)
+
 // What a run produces.
 constexpr double kMaxOutputRows = 1e7;      // rows of timeseries.csv (about 1 GB)
 constexpr double kMaxSteps = 1e9;           // time steps of a fixed-step run

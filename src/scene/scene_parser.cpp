@@ -393,6 +393,15 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
   scene.name = std::filesystem::path(file).stem().string();
   TableReader top(root, file, keys);
   scene.title = top.String("title", scene.name, false);
+  if (const toml::node* title = root.get("title")) {
+    std::size_t characters = 0;  // UTF-8 lead bytes
+    for (const unsigned char c : scene.title) characters += (c & 0xC0) != 0x80;
+    if (characters > kMaxTitleLength)
+      top.Fail(title, "title",
+               "expected a title of at most " + std::to_string(kMaxTitleLength) +
+                   " characters (it is drawn on one line of the film), got " +
+                   std::to_string(characters));
+  }
   ReadEnvironment(top, scene);
   ReadSeabed(top, scene);
   ReadWaves(top, scene);

@@ -828,5 +828,31 @@ TEST(SceneLoader, WaveDepthAgainstTheSeabed) {
   EXPECT_EQ(ParseScene(open_sea + "depth = 0.001\n", kFile).waves.depth, 0.001);
 }
 
+// Issue 22 item 9: a 1 MB title cost 21 s and 420 MB of film, a 10 MB one needed SIGKILL. A
+// title is at most 200 characters (UTF-8 characters, not bytes), refused with its line.
+TEST(SceneLoader, TitleHasALengthLimit) {
+  auto titled = [](const std::string& title) {
+    return With("title = \"base\"", "title = \"" + title + "\"");
+  };
+  std::string accented;
+  for (int i = 0; i < 200; ++i) accented += "\u00e9";  // 400 bytes
+  EXPECT_EQ(ParseScene(titled(accented), kFile).title, accented);
+  EXPECT_EQ(ParseScene(titled(std::string(200, 'x')), kFile).title, std::string(200, 'x'));
+  for (const std::size_t n : {201ul, 1000000ul}) {
+    try {
+      ParseScene(titled(std::string(n, 'x')), kFile);
+      ADD_FAILURE() << "a title of " << n << " characters was taken";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                std::string(kFile) + ":1: title: expected a title of at most 200 characters (it "
+                                     "is drawn on one line of the film), got " +
+                    std::to_string(n));
+    }
+  }
+  // The default title (the file's name) is not the user's text: not refused.
+  EXPECT_EQ(ParseScene(With("title = \"base\"\n", ""), std::string(220, 'n') + ".toml").title,
+            std::string(220, 'n'));
+}
+
 }  // namespace
 }  // namespace cablefilm
