@@ -17,6 +17,7 @@
 #include "app/system_command.h"
 #include "core/version.h"
 #include "io/netcdf_results.h"
+#include "io/out_dir_lock.h"
 #include "io/result_files.h"
 #include "io/run_report_file.h"
 #include "run/initial_state.h"
@@ -278,7 +279,8 @@ int RunCommand(const std::string& scene_path, const RunOptions& options, RunRepo
   const FilmSettings look = film ? ResolveFilm(scene, options, kCommandLineNames) : FilmSettings{};
   const Model model = BuildModel(scene);
   CheckModelLimits(scene, model);
-  const std::string out_dir = PrepareOutDir(scene, options);
+  OutDirLock lock;
+  const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
   const Run run = SimulateToFiles(scene, model, out_dir, "");
   if (report) report->summary = run.summary;
@@ -305,7 +307,8 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
     scene.model = kind;
     CheckModelLimits(scene, BuildModel(scene));
   }
-  const std::string out_dir = PrepareOutDir(scene, options);
+  OutDirLock lock;
+  const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
   scene.model = CableModelKind::kElastic;
   const Run elastic = SimulateToFiles(scene, BuildModel(scene), out_dir, "");

@@ -44,12 +44,13 @@ NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model) {
   return info;
 }
 
-std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options) {
+std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options, OutDirLock& lock) {
   const std::string out_dir = options.out_dir.empty() ? "output/" + scene.name : options.out_dir;
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec)
     throw Error("cannot create the output folder " + EscapeText(out_dir) + ": " + ec.message());
+  lock.Lock(out_dir, "output folder");
   RemoveEarlierResults(out_dir);  // a run's folder never mixes its results with older ones
   return out_dir;
 }

@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "io/netcdf_results.h"
+#include "io/out_dir_lock.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {
@@ -19,8 +20,9 @@ void InstallSignalHandlers();
 // program's version.
 NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model);
 
-// The run's output folder (options.out_dir, or output/<scene name>), created, with the results
-// of an earlier run removed. Throws Error.
-std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options);
+// The run's output folder (options.out_dir, or output/<scene name>), created and locked
+// (`lock` holds it until the run ends: one run at a time in a folder), with the results of an
+// earlier run removed. Throws Error.
+std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options, OutDirLock& lock);
 
 }  // namespace cablefilm

@@ -22,6 +22,7 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/out_dir_lock.h"
 #include "io/result_files.h"
 #include "io/run_report_file.h"
 #include "run/sweep.h"
@@ -118,7 +119,7 @@ void RemoveStaleCases(const fs::path& dir, const std::set<std::string>& keep) {
   }
   for (const fs::path& p : stale) {
     RemoveEarlierResults(p.string());
-    for (const char* n : {"scene.toml", "run.log"}) fs::remove(p / n, ec);
+    for (const char* n : {"scene.toml", "run.log", OutDirLock::kFileName}) fs::remove(p / n, ec);
     fs::remove(p / "frames", ec);  // only when empty
     fs::remove(p, ec);
   }
@@ -299,6 +300,7 @@ class Sweep {
     if (ec)
       throw Error("cannot create the sweep folder " + EscapeText(dir_.string()) + ": " +
                   ec.message());
+    lock_.Lock(dir_.string(), "sweep folder");  // one sweep at a time in it
     std::set<std::string> names;
     for (std::size_t i = 0; i < n; ++i) names.insert(CaseFolderName(i, n));
     RemoveStaleCases(dir_, names);
@@ -463,6 +465,7 @@ class Sweep {
   SweepOptions options_;
   SweepCases cases_;
   fs::path dir_;
+  OutDirLock lock_;
   std::vector<CaseOutcome> outcomes_;
 };
 

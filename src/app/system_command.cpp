@@ -109,7 +109,8 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
   namespace fs = std::filesystem;
   const SystemModel built = BuildSystem(scene);
   PrintSystem(scene, built);
-  const std::string out_dir = PrepareOutDir(scene, options);
+  OutDirLock lock;
+  const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
   SystemRun run = PrepareSystemRun(scene, built, &g_signal);
   PrintEquilibrium(run.equilibrium, run.equilibrium_ms);

@@ -1,5 +1,6 @@
 #include "io/netcdf_results.h"
 
+#include <H5public.h>
 #include <malloc.h>
 #include <netcdf.h>
 #include <pthread.h>
@@ -16,9 +17,14 @@
 namespace cablefilm {
 namespace {
 
+// A failed call's message. HDF5 reports a full disk as "HDF error" (or, at nc_create, as
+// "Permission denied"): the system's own reason, left in errno by the write that failed, comes
+// first when it is a full disk or quota.
 void Check(int status, const std::string& file, const char* what) {
-  if (status != NC_NOERR)
-    throw Error("cannot write " + file + " (" + what + "): " + nc_strerror(status));
+  if (status == NC_NOERR) return;
+  std::string why = nc_strerror(status);
+  if (errno == ENOSPC || errno == EDQUOT) why = std::strerror(errno) + (" (" + why + ")");
+  throw Error("cannot write " + file + " (" + what + "): " + why);
 }
 
 void Text(int ncid, int var, const char* name, const std::string& value, const std::string& file) {
@@ -41,6 +47,21 @@ void KeepFreedMemoryForTheCompressor() {
 #endif
 }
 
+// A close that fails (a full disk: the last metadata cannot be written) leaves HDF5 1.10 with
+// a file ID whose file it has already freed (HDF5's H5F__dest frees it on failure too, fixed
+// only in 1.14.1). HDF5's own atexit handler then closes every ID still open and follows the
+// freed pointer: the program, having printed its error, died of SIGSEGV. Without that handler
+// nothing touches the stale ID: the process ends with its own status. Successful closes have
+// written and released everything already, so the handler has nothing else to do at exit.
+// H5dont_atexit() takes effect only before HDF5 starts, which the first nc_create does.
+void SkipHdf5CleanupAtExit() {
+  static const bool once = [] {
+    H5dont_atexit();
+    return true;
+  }();
+  (void)once;
+}
+
 }  // namespace
 
 NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
@@ -48,6 +69,7 @@ NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfRe
                                          const Eigen::VectorXd& initial_tension)
     : path_(path), temp_path_(path + ".tmp" + std::to_string(::getpid())) {
   KeepFreedMemoryForTheCompressor();
+  SkipHdf5CleanupAtExit();
   try {
     Define(info, m, initial, initial_tension);
     filling_ = NewBlock();
@@ -65,6 +87,7 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
   stations_ = m.stations();
   links_ = m.line.links;
   const std::string& f = temp_path_;
+  errno = 0;  // Check reads it
   int created = -1;
   Check(nc_create(f.c_str(), NC_NETCDF4 | NC_CLOBBER, &created), f, "create");
   ncid_ = created;
@@ -282,6 +305,7 @@ void NetcdfResultsWriter::WriterLoop() {
 
 void NetcdfResultsWriter::Write(const Block& b) {
   const std::string& f = temp_path_;
+  errno = 0;
   const size_t start[2] = {static_cast<size_t>(b.first), 0};
   const size_t count_x[2] = {static_cast<size_t>(b.rows), static_cast<size_t>(stations_)};
   const size_t count_t[2] = {static_cast<size_t>(b.rows), static_cast<size_t>(links_)};
@@ -311,6 +335,7 @@ void NetcdfResultsWriter::Close() {
   if (!error_.empty()) throw Error(error_);
   const int id = ncid_;
   ncid_ = -1;
+  errno = 0;
   Check(nc_close(id), temp_path_, "close");
 }
 

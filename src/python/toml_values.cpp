@@ -3,6 +3,7 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <vector>
 #include <toml++/toml.h>
 
 namespace py = pybind11;
@@ -25,37 +26,77 @@ void MakeInline(toml::node& node) {
   }
 }
 
-// The TOML value of `obj`: a table, an array, a bool, an integer, a float or a string.
-std::unique_ptr<toml::node> ToNode(const py::handle& obj, const std::string& key);
+// Values nested deeper than this (dicts, lists, tuples and tolist() results within each other)
+// are refused: a scene nests a handful, TOML parsers stop at a few hundred, and the conversion
+// recurses once a level on the C stack, which a list nested 100 000 deep overflowed.
+constexpr int kMaxNesting = 64;
 
-toml::table ToTable(const py::handle& obj, const std::string& key) {
+// The containers from the root to the value being converted: a value that contains itself
+// (d["environment"]["loop"] = d) is found by its identity, as json.dumps finds it.
+struct Path {
+  std::vector<const PyObject*> open;
+};
+
+// Enters `obj` (one level deeper) for the life of the guard: a ValueError when it is one of the
+// containers it is inside, or when it is one level too deep.
+class Enter {
+ public:
+  Enter(Path& path, const py::handle& obj, const std::string& key) : path_(path) {
+    for (const PyObject* outer : path.open)
+      if (outer == obj.ptr())
+        throw py::value_error(Name(key) + ": the value contains itself (a circular reference); "
+                              "expected a tree of dicts and lists");
+    if (static_cast<int>(path.open.size()) >= kMaxNesting)
+      throw py::value_error(Name(key) + ": nested more than " + std::to_string(kMaxNesting) +
+                            " levels deep (dicts, lists and tolist() values within each "
+                            "other); expected a scene's few levels");
+    path.open.push_back(obj.ptr());
+  }
+  ~Enter() { path_.open.pop_back(); }
+  Enter(const Enter&) = delete;
+  Enter& operator=(const Enter&) = delete;
+
+ private:
+  static std::string Name(const std::string& key) { return key.empty() ? "the scene" : key; }
+  Path& path_;
+};
+
+// The TOML value of `obj`: a table, an array, a bool, an integer, a float or a string.
+std::unique_ptr<toml::node> ToNode(const py::handle& obj, const std::string& key, Path& path);
+
+toml::table ToTable(const py::handle& obj, const std::string& key, Path& path) {
+  const Enter inside(path, obj, key);
   toml::table table;
   for (const auto& item : py::reinterpret_borrow<py::dict>(obj)) {
     if (!py::isinstance<py::str>(item.first))
       throw py::type_error(key + ": a dict's keys must be strings, got a " +
                            std::string(py::str(py::type::of(item.first).attr("__name__"))));
     const std::string name = item.first.cast<std::string>();
-    table.insert_or_assign(name, *ToNode(item.second, key.empty() ? name : key + "." + name));
+    table.insert_or_assign(name,
+                           *ToNode(item.second, key.empty() ? name : key + "." + name, path));
   }
   return table;
 }
 
-std::unique_ptr<toml::node> ToNode(const py::handle& obj, const std::string& key) {
+std::unique_ptr<toml::node> ToNode(const py::handle& obj, const std::string& key, Path& path) {
   if (py::isinstance<py::bool_>(obj)) return std::make_unique<toml::value<bool>>(obj.cast<bool>());
   if (py::isinstance<py::str>(obj))
     return std::make_unique<toml::value<std::string>>(obj.cast<std::string>());
-  if (py::isinstance<py::dict>(obj)) return std::make_unique<toml::table>(ToTable(obj, key));
+  if (py::isinstance<py::dict>(obj)) return std::make_unique<toml::table>(ToTable(obj, key, path));
   if (py::hasattr(obj, "tolist") && !py::isinstance<py::list>(obj) &&
       !py::isinstance<py::tuple>(obj)) {
-    // A numpy array or scalar: its Python values (a scalar's tolist() is the scalar).
+    // A numpy array or scalar: its Python values (a scalar's tolist() is the scalar). A level
+    // of its own: an object whose tolist() gives another such object ends at kMaxNesting.
+    const Enter inside(path, obj, key);
     const py::object plain = obj.attr("tolist")();
-    if (!plain.is(obj)) return ToNode(plain, key);
+    if (!plain.is(obj)) return ToNode(plain, key, path);
   }
   if (py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj)) {
+    const Enter inside(path, obj, key);
     auto array = std::make_unique<toml::array>();
     std::size_t i = 0;
     for (const py::handle item : obj)
-      array->push_back(*ToNode(item, key + "[" + std::to_string(i++) + "]"));
+      array->push_back(*ToNode(item, key + "[" + std::to_string(i++) + "]", path));
     return array;
   }
   if (py::isinstance<py::int_>(obj)) {
@@ -94,14 +135,16 @@ py::object ToPython(const toml::node& node) {
 }  // namespace
 
 std::string DictToToml(const py::dict& scene) {
+  Path path;
   std::ostringstream os;
-  os << ToTable(scene, "") << "\n";
+  os << ToTable(scene, "", path) << "\n";
   return os.str();
 }
 
 std::string ValueToToml(const py::handle& value, const std::string& key) {
+  Path path;
   toml::table holder;
-  holder.insert_or_assign("v", *ToNode(value, key));
+  holder.insert_or_assign("v", *ToNode(value, key, path));
   MakeInline(*holder.get("v"));
   std::ostringstream os;
   os << holder;

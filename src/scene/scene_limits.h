@@ -34,6 +34,9 @@ constexpr double kMaxFriction = 10;         // Coulomb coefficient
 constexpr double kMinFrictionVelocity = 1e-9, kMaxFrictionVelocity = 1e3;  // m/s
 constexpr double kMaxWaveHeight = 1e3;     // m
 constexpr double kMinWavePeriod = 1e-3, kMaxWavePeriod = 1e6;  // s
+constexpr double kMinWaveDepth = 1e-3;      // m (below it the dispersion relation underflows)
+constexpr double kWaveDepthTolerance = 1e-6;  // waves.depth against surface_y - seabed.y,
+                                              // relative to the larger
 constexpr double kMaxPhase = 360;           // deg, either way
 constexpr double kMaxRao = 1e3;             // m of motion per m of wave amplitude
 constexpr double kMaxWeightMass = 1e9;      // kg
@@ -45,6 +48,8 @@ constexpr double kMaxTime = 1e9;            // s: a duration, |a table's times|
 constexpr double kMaxTension = 1e15;         // N: a film's colour range
 constexpr double kMaxStartStretch = 2.0;    // an elastic link at t = 0, L / l (the integrators
                                             // call a link beyond it a blow-up)
+
+constexpr std::size_t kMaxTitleLength = 200;  // characters of a given title (one line of film)
 
 // What a run produces.
 constexpr double kMaxOutputRows = 1e7;      // rows of timeseries.csv (about 1 GB)

@@ -139,16 +139,31 @@ void ReadWaves(TableReader& top, SceneDef& scene) {
   w.period = r.Ranged("period", 0.0, true, kMinWavePeriod, kMaxWavePeriod, " in s");
   w.surface_y = r.Ranged("surface_y", 0.0, false, -kMaxLength, kMaxLength,
                          " (the still water level's elevation in m)");
+  // With a [seabed], the depth is the water's over it: given, it must be surface_y - seabed.y
+  // (to kWaveDepthTolerance), and the surface at least kMinWaveDepth above the bed.
+  const double over_bed = w.surface_y - scene.seabed.y;
+  if (scene.seabed.present && !(over_bed >= kMinWaveDepth))
+    r.Fail(t->get("surface_y"), "surface_y",
+           "expected the still water level at least " + TableReader::Fmt(kMinWaveDepth) +
+               " m above the seabed (seabed.y = " + TableReader::Fmt(scene.seabed.y) +
+               " m), got y = " + TableReader::Fmt(w.surface_y) + " m, " +
+               TableReader::Fmt(std::abs(over_bed)) + " m " + (over_bed < 0 ? "below" : "above") +
+               " it");
   if (r.Has("depth") || !scene.seabed.present) {
-    w.depth = r.Positive("depth", " in m (still water level to the bed)", 0, kMaxLength);
+    w.depth = r.Positive("depth", " in m (still water level to the bed)", kMinWaveDepth,
+                         kMaxLength);
+    if (scene.seabed.present &&
+        !(std::abs(w.depth - over_bed) <= kWaveDepthTolerance * std::max(w.depth, over_bed)))
+      r.Fail(t->get("depth"), "depth",
+             "expected the still water level's height over the seabed, surface_y - seabed.y = " +
+                 TableReader::Fmt(w.surface_y) + " - (" + TableReader::Fmt(scene.seabed.y) +
+                 ") = " + TableReader::Fmt(over_bed) + " m (to " +
+                 TableReader::Fmt(kWaveDepthTolerance) + " of it), got " +
+                 TableReader::Fmt(w.depth) + " m; or leave depth out (it is surface_y - seabed.y "
+                 "by default)");
   } else {
     r.Get("depth");
-    w.depth = w.surface_y - scene.seabed.y;
-    if (!(w.depth > 0))
-      r.Fail(t->get("surface_y"), "surface_y",
-             "expected the still water level above the seabed (seabed.y = " +
-                 TableReader::Fmt(scene.seabed.y) + " m) for the default depth, got " +
-                 TableReader::Fmt(w.surface_y) + " m; or give waves.depth");
+    w.depth = over_bed;
   }
   w.phase = r.Ranged("phase", 0.0, false, -kMaxPhase, kMaxPhase, " in degrees");
   w.heading = r.Ranged("heading", 0.0, false, -kMaxPhase, kMaxPhase,
@@ -161,6 +176,13 @@ void ReadWaves(TableReader& top, SceneDef& scene) {
   spec.depth = w.depth;
   const Wave wave = MakeWave(spec, scene.environment.gravity);
   const double k = wave.k, L = wave.length(), limit = wave.breaking_height();
+  if (!(std::isfinite(k * w.depth) && k > 0 && std::isfinite(limit)))  // a gravity near 0
+    r.Fail(t->get("period"), "period",
+           "no finite wave length for T = " + TableReader::Fmt(w.period) + " s in " +
+               TableReader::Fmt(w.depth) + " m of water at environment.gravity = " +
+               TableReader::Fmt(scene.environment.gravity) +
+               " m/s^2; expected a period, depth and gravity whose deep-water wave length "
+               "g T^2 / (2 pi) is finite and above 0");
   if (!(w.height <= limit))
     r.Fail(t->get("height"), "height",
            "the wave breaks: H / L = " + TableReader::Fmt(w.height / L) + " (L = " +
@@ -464,6 +486,15 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
   scene.name = std::filesystem::path(file).stem().string();
   TableReader top(root, file, keys);
   scene.title = top.String("title", scene.name, false);
+  if (const toml::node* title = root.get("title")) {
+    std::size_t characters = 0;  // UTF-8 lead bytes
+    for (const unsigned char c : scene.title) characters += (c & 0xC0) != 0x80;
+    if (characters > kMaxTitleLength)
+      top.Fail(title, "title",
+               "expected a title of at most " + std::to_string(kMaxTitleLength) +
+                   " characters (it is drawn on one line of the film), got " +
+                   std::to_string(characters));
+  }
   ReadEnvironment(top, scene);
   ReadSeabed(top, scene);
   ReadWaves(top, scene);

@@ -253,7 +253,7 @@ void Renderer::Draw(const Frame& frame, Image* out) {
   m.text_vertices.clear();
   for (const TextItem& t : frame.texts) {
     m.quads.clear();
-    m.font->Layout(t, &m.quads);
+    m.font->Layout(t, &m.quads, static_cast<float>(w), static_cast<float>(h));
     TextVertex v{};
     PackColor(t.color, v.color);
     for (const GlyphQuad& q : m.quads) {

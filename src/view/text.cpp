@@ -159,12 +159,14 @@ float FontAtlas::MeasureWidth(const std::string& text, float size, bool bold) {
   return w;
 }
 
-void FontAtlas::Layout(const TextItem& item, std::vector<GlyphQuad>* quads) {
+void FontAtlas::Layout(const TextItem& item, std::vector<GlyphQuad>* quads, float clip_width,
+                       float clip_height) {
   const int px = std::max(1, static_cast<int>(std::lround(item.size)));
   const Face& face = SizedFace(px, item.bold);
   const std::u32string text = DecodeUtf8(item.text);
   float width = 0;
-  for (char32_t c : text) width += GetGlyph(c, px, item.bold).advance;
+  if (item.halign != HAlign::kLeft)
+    for (char32_t c : text) width += GetGlyph(c, px, item.bold).advance;
   // (u, v): along the text from its anchor, and down from it, before any rotation.
   float u0 = 0;
   if (item.halign == HAlign::kCenter) u0 = -width / 2;
@@ -182,8 +184,19 @@ void FontAtlas::Layout(const TextItem& item, std::vector<GlyphQuad>* quads) {
   const float inv = 1.0f / size_;
   float pen = std::round(u0);
   baseline = std::round(baseline);
+  // Along the text, the frame ends at `beyond` (u grows rightwards, or upwards when vertical);
+  // a glyph that starts past it, and every one after it, is outside. A margin of a glyph's
+  // size either side keeps a glyph that reaches into the frame.
+  const float margin = 2.0f * px;
+  const float beyond = item.vertical ? ay + margin : clip_width - ax + margin;
+  const float before = item.vertical ? ay - clip_height - margin : -ax - margin;
   for (char32_t c : text) {
+    if (pen > beyond) break;  // advances are never negative: the rest is further on
     const Glyph& g = GetGlyph(c, px, item.bold);
+    if (pen < before) {  // not in the frame yet: only the pen moves
+      pen += g.advance;
+      continue;
+    }
     if (g.w > 0 && g.h > 0) {
       const float gu0 = std::round(pen) + g.left, gu1 = gu0 + g.w;
       const float gv0 = baseline - g.top, gv1 = gv0 + g.h;

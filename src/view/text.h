@@ -3,6 +3,7 @@
 // glyphs rasterised on demand (anti-aliased, 8-bit coverage) into one CPU-side atlas that the
 // renderer uploads as a texture, and the layout of a TextItem into positioned glyph quads.
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -29,8 +30,12 @@ class FontAtlas {
   FontAtlas(const FontAtlas&) = delete;
   FontAtlas& operator=(const FontAtlas&) = delete;
 
-  // Appends the quads of `item`, rasterising any glyph not yet in the atlas.
-  void Layout(const TextItem& item, std::vector<GlyphQuad>* quads);
+  // Appends the quads of `item`, rasterising any glyph not yet in the atlas. Only the glyphs
+  // within the frame (0 to clip_width, 0 to clip_height) are laid out: the rest of a long
+  // text costs no glyph, quad or vertex (the text's width is still measured to align it).
+  void Layout(const TextItem& item, std::vector<GlyphQuad>* quads,
+              float clip_width = std::numeric_limits<float>::infinity(),
+              float clip_height = std::numeric_limits<float>::infinity());
   // Advance width of the text at a pixel size [px].
   float MeasureWidth(const std::string& text, float size, bool bold = false);
 

@@ -1,9 +1,13 @@
 // Issue 11: the program as a user drives it, through its command line: every bad input is
 // answered with a message and a status (never an abort), before anything is simulated when
 // the input alone tells; messages name the scene and print input text escaped.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <algorithm>
 #include <cstdlib>
@@ -53,11 +57,12 @@ class CommandLine : public ::testing::Test {
     std::ofstream(p, std::ios::binary) << text;
     return p.string();
   }
-  // Runs cablefilm with `args` (already quoted for the shell), in the test's folder.
-  Outcome Run(const std::string& args) {
+  // Runs cablefilm with `args` (already quoted for the shell), in the test's folder, with the
+  // environment's assignments `env` ("NAME=value ...", quoted) when given.
+  Outcome Run(const std::string& args, const std::string& env = "") {
     const std::string cmd = "cd '" + dir_.string() + "' || exit 99\n" +
-                            "exec >stdout.txt 2>stderr.txt\n'" + CABLEFILM_BINARY_DIR +
-                            "/cablefilm' " + args;
+                            "exec >stdout.txt 2>stderr.txt\n" + env + " '" +
+                            CABLEFILM_BINARY_DIR + "/cablefilm' " + args;
     const int rc = std::system(cmd.c_str());
     Outcome o;
     o.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);
@@ -325,6 +330,160 @@ TEST_F(CommandLine, RepeatedOptionsTakeTheLast) {
   EXPECT_TRUE(fs::exists(dir_ / "out2" / "timeseries.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "out2" / "film.mp4"));
   EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// Issue 22 item 1: a full disk (tests/app/full_disk_shim.cpp: writes to the chosen temporary
+// files fail with ENOSPC past a budget) killed the run with SIGSEGV after its message when
+// results.nc's close failed, or when the CSV failed and the NetCDF file's close after it: HDF5's
+// exit handler closed the file the failed close had freed. Exit 1 with the message, nothing
+// left under a final name or a temporary one.
+TEST_F(CommandLine, FullDiskIsAnErrorNotACrash) {
+  const std::string scene = Scene("s.toml");
+  const Outcome whole = Run("run --no-film --out whole s.toml");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  const auto nc_size = static_cast<long long>(fs::file_size(dir_ / "whole" / "results.nc"));
+  const std::string nc = "results.nc.tmp:", csv = ",timeseries.csv.tmp:";
+  struct Case {
+    std::string full;  // CABLEFILM_TEST_FULL_DISK: the files and the bytes each may take
+    std::string message;
+  };
+  const std::vector<Case> cases{
+      // Only the last writes of the close fail (the report's case), or the chunks as the run
+      // writes them, or every write.
+      {nc + std::to_string(nc_size - 1), "results.nc.tmp"},
+      {nc + std::to_string(nc_size / 2), "results.nc.tmp"},
+      {nc + "0", "results.nc.tmp"},
+      // The CSV fails first; the NetCDF file, closed as the run unwinds, fails too.
+      {nc + std::to_string(nc_size) + csv + "0", "timeseries.csv.tmp"},
+      {nc + std::to_string(nc_size) + csv + "500", "timeseries.csv.tmp"},
+  };
+  int k = 0;
+  for (const Case& c : cases) {
+    const std::string out = "out" + std::to_string(k++);
+    const std::string env = std::string("LD_PRELOAD='") + CABLEFILM_FULL_DISK_SHIM +
+                            "' CABLEFILM_TEST_FULL_DISK='" + c.full +
+                            "' ASAN_OPTIONS=\"$ASAN_OPTIONS:verify_asan_link_order=0\" ";
+    const std::string& what = c.full;
+    const Outcome o = Run("run --no-film --out " + out + " s.toml", env);
+    EXPECT_EQ(o.status, 1) << what << ": " << o.err;
+    EXPECT_NE(o.err.find("s.toml"), std::string::npos) << what << ": " << o.err;
+    EXPECT_NE(o.err.find(c.message), std::string::npos) << what << ": " << o.err;
+    // The system's reason, not only HDF5's "HDF error" or "Permission denied".
+    EXPECT_TRUE(o.err.find("No space left on device") != std::string::npos ||
+                o.err.find("disk full") != std::string::npos)
+        << what << ": " << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / out / "results.nc")) << what;
+    for (const auto& entry : fs::directory_iterator(dir_ / out))
+      EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos)
+          << what << ": " << entry.path();
+  }
+}
+
+// Issue 22 item 4: two runs into one --out left a mixed folder (one's equilibrium beside the
+// other's time series), both exiting 0. A run holds .cablefilm.lock (flock) in its folder; a
+// second is refused, naming the first one's process, before it touches the folder.
+TEST_F(CommandLine, SecondRunIntoABusyFolderIsRefused) {
+  Scene("s.toml");
+  const fs::path out = dir_ / "out";
+  fs::create_directories(out);
+  std::ofstream(out / "timeseries.csv") << "the other run's rows\n";
+  // Another run holding the folder, as a run holds it: the lock, and its process id inside.
+  const int fd = ::open((out / ".cablefilm.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const std::string holder = std::to_string(::getpid());
+  ASSERT_EQ(::write(fd, (holder + "\n").data(), holder.size() + 1),
+            static_cast<ssize_t>(holder.size() + 1));
+  for (const char* command : {"run --no-film", "compare --no-film"}) {
+    const Outcome o = Run(std::string(command) + " --out out s.toml");
+    EXPECT_EQ(o.status, 1) << command << ": " << o.err;
+    EXPECT_NE(o.err.find("s.toml: the output folder out is in use by another cablefilm run "
+                         "(process " + holder + ")"),
+              std::string::npos)
+        << command << ": " << o.err;
+    EXPECT_EQ(ReadText(out / "timeseries.csv"), "the other run's rows\n") << command;
+    EXPECT_FALSE(fs::exists(out / "equilibrium.csv")) << command;
+  }
+  const Outcome sweep = Run("sweep --out out --set environment.gravity=9,10 s.toml");
+  EXPECT_EQ(sweep.status, 1) << sweep.err;
+  EXPECT_NE(sweep.err.find("the sweep folder out is in use by another cablefilm run (process " +
+                           holder + ")"),
+            std::string::npos)
+      << sweep.err;
+  EXPECT_FALSE(fs::exists(out / "sweep.csv"));
+  // Let go (as a run that ends, or is killed, lets go): the file left behind is taken over, and
+  // a run that ends removes it.
+  ::close(fd);
+  const Outcome after = Run("run --no-film --out out s.toml");
+  EXPECT_EQ(after.status, 0) << after.err;
+  EXPECT_TRUE(fs::exists(out / "equilibrium.csv"));
+  EXPECT_NE(ReadText(out / "timeseries.csv"), "the other run's rows\n");
+  EXPECT_FALSE(fs::exists(out / ".cablefilm.lock"));
+}
+
+// The same with two real runs: the first (long) holds the folder while it runs.
+TEST_F(CommandLine, TwoRunsIntoOneFolder) {
+  Scene("long.toml", "duration = 2.0", "duration = 1e5");
+  Scene("s.toml");
+  const fs::path lock = dir_ / "out" / ".cablefilm.lock";
+  const pid_t first = ::fork();
+  ASSERT_GE(first, 0);
+  if (first == 0) {
+    const std::string cmd = "cd '" + dir_.string() + "' && exec '" + CABLEFILM_BINARY_DIR +
+                            "/cablefilm' run --no-film --out out long.toml >first.txt 2>&1";
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Until the first run has locked the folder and written its process id (a condition, not a
+  // time; the first run cannot end by itself before the test stops it).
+  const std::string pid = std::to_string(first);
+  int status = 0;
+  while (ReadText(lock) != pid + "\n") {
+    ASSERT_EQ(::waitpid(first, &status, WNOHANG), 0) << ReadText(dir_ / "first.txt");
+    ::usleep(10000);
+  }
+  const Outcome second = Run("run --no-film --out out s.toml");
+  EXPECT_EQ(second.status, 1) << second.err;
+  EXPECT_NE(second.err.find("in use by another cablefilm run (process " + pid + ")"),
+            std::string::npos)
+      << second.err;
+  ::kill(first, SIGINT);
+  ASSERT_EQ(::waitpid(first, &status, 0), first);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130) << ReadText(dir_ / "first.txt");
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "timeseries.partial.csv"));  // the first run's, alone
+  EXPECT_FALSE(fs::exists(lock));
+}
+
+// Issue 22 item 5: the line's own load stretching a link past twice its rest length in the
+// static equilibrium: `check` said ok and `run` stopped at t = 0 with a blow-up naming no key.
+// Both refuse it now, alike, naming the key at fault.
+TEST_F(CommandLine, EquilibriumStretchedPastTwiceIsRefusedByCheckAndRun) {
+  auto edited = [&](const char* scene, const std::string& from, const std::string& to,
+                    const char* name) {
+    const std::string text = ReadText(fs::path(CABLEFILM_SOURCE_DIR) / "scenes" / scene);
+    std::ofstream(dir_ / name, std::ios::binary) << Replace(text, from, to);
+  };
+  // A 2e5 kg weight on the hanging chain (EA = 1 MN): the weight's mass.
+  edited("hanging_chain.toml", "[initial]", "[[cable.weight]]\nat = 10.0\nmass = 2e5\n\n[initial]",
+         "heavy.toml");
+  // P63's wire with E = 16 Pa: the material's modulus (the weight is the same as ever).
+  edited("polachek1963.toml", "youngs_modulus = 9.0e10", "youngs_modulus = 16", "soft.toml");
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"heavy.toml", "heavy.toml: cable.weight[0].mass: the static equilibrium at t = 0 "
+                     "stretches link 0 (stations 0-1, section 0) to 2.96"},
+      {"soft.toml", "soft.toml: material[0].youngs_modulus: the static equilibrium at t = 0 "
+                    "stretches link "}};
+  for (const auto& [scene, message] : cases) {
+    for (const std::string command : {"check", "run --no-film --out out"}) {
+      const Outcome o = Run(command + " " + scene);
+      EXPECT_EQ(o.status, 1) << command << " " << scene << ": " << o.out << o.err;
+      EXPECT_NE(o.err.find(message), std::string::npos) << command << ": " << o.err;
+      EXPECT_NE(o.err.find("expected at most 2 times"), std::string::npos) << o.err;
+      EXPECT_EQ(o.err.find("blow-up at"), std::string::npos) << o.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.partial.csv"));
 }
 
 }  // namespace

@@ -263,6 +263,48 @@ class DictScenes(unittest.TestCase):
         with self.assertRaises(TypeError):
             cablefilm.load({"environment": {"current": object()}})
 
+    def test_circular_and_deep_values_are_errors(self):
+        # Issue 22 item 2: these recursed in the TOML conversion until the interpreter died
+        # (SIGSEGV). A ValueError naming the key, as json.dumps gives one; the module still works.
+        with open(P63, "rb") as f:
+            d = tomllib.load(f)
+        d["environment"]["loop"] = d
+        with self.assertRaisesRegex(ValueError, r"^environment\.loop: .*circular reference"):
+            cablefilm.load(d)
+        del d["environment"]["loop"]
+        deep = []
+        for _ in range(100000):
+            deep = [deep]
+
+        class Endless:  # tolist() gives another of its kind, for ever
+            def tolist(self):
+                return Endless()
+
+        class Itself:  # tolist() gives a list holding it
+            def tolist(self):
+                return [self]
+
+        for value, message in [(deep, r"nested more than 64 levels"),
+                               (Endless(), r"nested more than 64 levels"),
+                               (Itself(), r"circular reference")]:
+            d["environment"]["current"] = value
+            with self.assertRaisesRegex(ValueError, r"^environment\.current\b.*" + message):
+                cablefilm.load(d)
+            scene = cablefilm.load(P63)
+            with self.assertRaisesRegex(ValueError, message):
+                scene["environment.current"] = value
+            with self.assertRaisesRegex(ValueError, message):
+                cablefilm.sweep(scene, {"environment.current": [value]})
+            with self.assertRaisesRegex(ValueError, message):
+                cablefilm.sweep(scene, cases=[{"environment.current": value}])
+        # Nesting within the limit is converted (a scene's own tables nest three deep).
+        d["environment"]["current"] = 0.0
+        self.assertEqual(cablefilm.load(d)["environment.current"], 0.0)
+        shared = [1.0, 0.0]  # one list twice is no cycle
+        d["ends"]["end"]["x_amplitudes"] = shared
+        d["ends"]["end"]["y_amplitudes"] = shared
+        self.assertEqual(cablefilm.load(d)["ends.end.y_amplitudes"], [1.0, 0.0])
+
 
 class Equilibrium(unittest.TestCase):
     """A chain hanging between two fixed ends: the static balance worked out by hand."""

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -774,6 +775,83 @@ TEST(SceneLoader, WaveErrors) {
                    "motion = \"wave\"\nx_rao = [-1.0, 0.0]\nx_amplitudes = [1.8288, 0.0]") +
                   "\n[waves]\nheight = 2\nperiod = 8\ndepth = 50\n",
               "ends.end.x_rao", {"amplitude ratio"});
+}
+
+// Issue 22 item 6: waves.depth was never compared with surface_y - seabed.y (a surface 100 m
+// below the seabed ran with the whole line in air, exit 0), and a depth of 1e-300 printed NaN.
+TEST(SceneLoader, WaveDepthAgainstTheSeabed) {
+  // The message names the file, the line and the key, holds every piece of `expected`, and no
+  // NaN.
+  auto refused = [](const std::string& text, const std::string& key,
+                    const std::vector<std::string>& expected) {
+    try {
+      ParseScene(text, kFile);
+      ADD_FAILURE() << "no error for " << key;
+    } catch (const Error& e) {
+      const std::string msg = e.what();
+      EXPECT_TRUE(std::regex_search(msg, std::regex(std::string("^") + kFile + ":[0-9]+: " +
+                                                     std::regex_replace(key, std::regex("[.]"),
+                                                                        "\\.") +
+                                                     ": ")))
+          << msg;
+      for (const std::string& s : expected)
+        EXPECT_NE(msg.find(s), std::string::npos) << "\"" << s << "\" not in: " << msg;
+      std::string lower = msg;
+      std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+      EXPECT_EQ(lower.find("nan"), std::string::npos) << msg;
+      EXPECT_EQ(lower.find("inf"), std::string::npos) << msg;
+    }
+  };
+  const std::string bed = kBase + "\n[seabed]\ny = -10\n\n[waves]\nheight = 1\nperiod = 8\n";
+  // The surface 100 m below the seabed, with the depth given (as the report's scene) or not.
+  refused(bed + "depth = 100\nsurface_y = -110\n", "waves.surface_y",
+          {"at least 0.001 m above the seabed (seabed.y = -10 m)", "100 m below it"});
+  refused(bed + "surface_y = -110\n", "waves.surface_y", {"100 m below it"});
+  refused(bed + "surface_y = -10\n", "waves.surface_y", {"0 m above it"});
+  refused(bed + "surface_y = -9.9999999\n", "waves.surface_y", {"at least 0.001 m"});
+  // A depth that is not the water's over the bed.
+  refused(bed + "depth = 30\nsurface_y = 40\n", "waves.depth",
+          {"surface_y - seabed.y = 40 - (-10) = 50 m (to 1e-6 of it), got 30 m",
+           "or leave depth out"});
+  refused(bed + "depth = 50.001\nsurface_y = 40\n", "waves.depth", {"got 50.001 m"});
+  refused(bed + "depth = 1e-300\nsurface_y = 40\n", "waves.depth", {"from 0.001 to 1e6"});
+  // Without a seabed the depth stands alone; 1e-300 m underflowed the dispersion relation.
+  const std::string open_sea = kBase + "\n[waves]\nheight = 0\nperiod = 8\n";
+  refused(open_sea + "depth = 1e-300\n", "waves.depth", {"from 0.001 to 1e6, got 1e-300"});
+  refused(With("gravity = 9.80665", "gravity = 1e-300") +
+              "\n[waves]\nheight = 0\nperiod = 0.001\ndepth = 1e6\n",
+          "waves.period", {"no finite wave length", "environment.gravity = 1e-300"});
+  // Consistent depths load: equal, within the tolerance, or left to the default.
+  EXPECT_EQ(ParseScene(bed + "depth = 50\nsurface_y = 40\n", kFile).waves.depth, 50.0);
+  EXPECT_EQ(ParseScene(bed + "depth = 50.00001\nsurface_y = 40\n", kFile).waves.depth, 50.00001);
+  EXPECT_EQ(ParseScene(bed + "surface_y = 40\n", kFile).waves.depth, 50.0);
+  EXPECT_EQ(ParseScene(open_sea + "depth = 0.001\n", kFile).waves.depth, 0.001);
+}
+
+// Issue 22 item 9: a 1 MB title cost 21 s and 420 MB of film, a 10 MB one needed SIGKILL. A
+// title is at most 200 characters (UTF-8 characters, not bytes), refused with its line.
+TEST(SceneLoader, TitleHasALengthLimit) {
+  auto titled = [](const std::string& title) {
+    return With("title = \"base\"", "title = \"" + title + "\"");
+  };
+  std::string accented;
+  for (int i = 0; i < 200; ++i) accented += "\u00e9";  // 400 bytes
+  EXPECT_EQ(ParseScene(titled(accented), kFile).title, accented);
+  EXPECT_EQ(ParseScene(titled(std::string(200, 'x')), kFile).title, std::string(200, 'x'));
+  for (const std::size_t n : {201ul, 1000000ul}) {
+    try {
+      ParseScene(titled(std::string(n, 'x')), kFile);
+      ADD_FAILURE() << "a title of " << n << " characters was taken";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                std::string(kFile) + ":1: title: expected a title of at most 200 characters (it "
+                                     "is drawn on one line of the film), got " +
+                    std::to_string(n));
+    }
+  }
+  // The default title (the file's name) is not the user's text: not refused.
+  EXPECT_EQ(ParseScene(With("title = \"base\"\n", ""), std::string(220, 'n') + ".toml").title,
+            std::string(220, 'n'));
 }
 
 }  // namespace
