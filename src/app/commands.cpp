@@ -270,8 +270,6 @@ int CheckCommand(const std::string& scene_path) {
   return 0;
 }
 
-int InterruptedExitStatus() { return 128 + (g_signal != 0 ? g_signal.load() : SIGINT); }
-
 int RunCommand(const std::string& scene_path, const RunOptions& options, RunReport* report) {
   const SceneDef scene = LoadScene(scene_path);
   if (scene.is_system()) return RunSystem(scene, options, report);

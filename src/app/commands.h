@@ -3,32 +3,13 @@
 #include <limits>
 #include <string>
 
-#include "run/run_summary.h"
-#include "scene/film_settings.h"
-#include "view/film_pass.h"
+#include "app/run_options.h"
+#include "app/run_support.h"
 
 namespace cablefilm {
 
-// What the command line says of a run: the film's settings over the scene's, and where it goes.
-struct RunOptions : FilmOverrides {
-  std::string out_dir;          // empty: output/<scene name>
-  int film = -1;                // -1: as the scene says, 0: no film, 1: film
-  std::string shader_dir;       // empty: CABLEFILM_SHADERS or the built-in path
-};
-
-// What a run reports and what its pictures show (for the tests; NaN: not made). All come from
-// the same output rows, so the peaks agree: the film's to the last bit, the CSV's to its 10
-// significant digits.
-struct RunReport {
-  RunSummary summary;     // the run's: its rows and the peak it printed
-  PictureReport figure;   // max_tension[.partial].png
-  PictureReport film;     // the film's time plot at its last frame
-};
-
 int RunCommand(const std::string& scene_path, const RunOptions& options,
                RunReport* report = nullptr);
-// The exit status after a signal stopped the work (128 + its number).
-int InterruptedExitStatus();
 int CheckCommand(const std::string& scene_path);
 // Runs the scene with the elastic and the inextensible model: timeseries.csv and
 // timeseries_inextensible.csv, max_tension.png with both (the paper's Figure 1), the film.

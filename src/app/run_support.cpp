@@ -28,6 +28,8 @@ void InstallSignalHandlers() {
   std::signal(SIGTERM, OnSignal);
 }
 
+int InterruptedExitStatus() { return 128 + (g_signal != 0 ? g_signal.load() : SIGINT); }
+
 // results.nc's attributes: the scene (its path and text) and the program's version.
 NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model) {
   NetcdfResultsInfo info;

@@ -4,7 +4,7 @@
 #include <atomic>
 #include <string>
 
-#include "app/commands.h"
+#include "app/run_options.h"
 #include "io/netcdf_results.h"
 #include "io/out_dir_lock.h"
 #include "scene/scene_def.h"
@@ -15,6 +15,8 @@ namespace cablefilm {
 // (the run stops at its next row, partial results kept); a second exits at once.
 extern std::atomic<int> g_signal;
 void InstallSignalHandlers();
+// The exit status after a signal stopped the work (128 + its number).
+int InterruptedExitStatus();
 
 // results.nc's attributes: the scene (its path and text), the model's name ("elastic"), the
 // program's version.

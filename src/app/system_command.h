@@ -5,7 +5,7 @@
 // the system's run_report.toml.
 #include <string>
 
-#include "app/commands.h"
+#include "app/run_options.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {

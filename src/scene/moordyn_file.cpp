@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "scene/input_file.h"
 #include "scene/moordyn_checks.h"
 #include "scene/moordyn_layout.h"
 #include "scene/moordyn_options.h"
@@ -18,23 +19,7 @@ namespace cablefilm {
 namespace {
 
 std::string ReadText(const std::string& path) {
-  const std::string name = EscapeText(path);
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw Error(name + ": is a directory; expected a MoorDyn input file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(name + ": cannot open the MoorDyn input file: " + std::strerror(errno));
-  // At most kMaxSceneBytes, as a scene, checked while reading (whatever the file is).
-  std::string text;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxSceneBytes)
-      throw Error(name + ": larger than " + std::to_string(kMaxSceneBytes >> 20) +
-                  " MiB; expected a MoorDyn input file of at most that size");
-  }
-  if (in.bad()) throw Error(name + ": cannot read the MoorDyn input file");
-  return text;
+  return ReadInputFile(path, "MoorDyn input file", "a MoorDyn input file");
 }
 
 std::string At(const std::string& file, int line) {

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "scene/input_file.h"
 #include "scene/moordyn_convert.h"
 #include "scene/moordyn_file.h"
 #include "scene/scene_limits.h"
@@ -17,23 +18,7 @@
 namespace cablefilm {
 
 std::string ReadSceneFile(const std::string& path) {
-  const std::string name = EscapeText(path);
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw Error(name + ": is a directory; expected a scene file (TOML)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(name + ": cannot open the scene file: " + std::strerror(errno));
-  // At most kMaxSceneBytes, checked while reading, whatever the file is (/dev/zero).
-  std::string text;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxSceneBytes)
-      throw Error(name + ": larger than " + std::to_string(kMaxSceneBytes >> 20) +
-                  " MiB; expected a scene file of at most that size");
-  }
-  if (in.bad()) throw Error(name + ": cannot read the scene file");
-  return text;
+  return ReadInputFile(path, "scene file", "a scene file (TOML)");
 }
 
 bool IsMoorDynText(const std::string& text) {
