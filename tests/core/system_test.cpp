@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/equilibrium.h"
+#include "core/error.h"
 #include "core/forces.h"
 #include "core/system_equilibrium.h"
 #include "core/system_step.h"
@@ -97,6 +98,28 @@ double PositionGap(const std::vector<State>& lines, const Points& one) {
   for (int j = 0; j <= 24; ++j) gap = std::max(gap, (lines[0].x.col(j) - one.col(j)).norm());
   for (int j = 0; j <= 18; ++j) gap = std::max(gap, (lines[1].x.col(j) - one.col(24 + j)).norm());
   return gap;
+}
+
+TEST(SystemModel, RefusesWhatNothingHolds) {
+  const EnvironmentSpec env = Water3D();
+  LineSpec line;
+  line.name = "l";
+  line.sections = {Chain(10, 4)};
+  line.start_point = 0;
+  line.end_point = 1;
+  const PointSpec fixed{"a", EndMotion::Fixed(Vec::Zero()), {}};
+  const PointSpec free{"f", EndMotion::Free(Vec(5.0, -5.0, 0.0)), {}};
+  // A free point no line holds.
+  EXPECT_THROW(MakeSystem({line}, {fixed, free, free}, env), Error);
+  // A line whose ends are both free points that hold nothing else.
+  EXPECT_THROW(MakeSystem({line}, {free, free}, env), Error);
+  // A line end at a point that does not exist.
+  line.end_point = 5;
+  EXPECT_THROW(MakeSystem({line}, {fixed, free}, env), Error);
+  line.end_point = 1;
+  const SystemModel ok = MakeSystem({line}, {fixed, free}, env);
+  EXPECT_EQ(ok.shared_count(), 0);  // a free end, not a shared station
+  EXPECT_FALSE(ok.lines[0].ends.end.prescribed());
 }
 
 TEST(SystemEquilibrium, ClumpJunctionIsTheLineWithAWeight) {

@@ -856,3 +856,90 @@ TEST(SceneLoader, TitleHasALengthLimit) {
 
 }  // namespace
 }  // namespace cablefilm
+
+namespace cablefilm {
+namespace {
+
+// A system of two lines and three points (issue 20), for the system's errors.
+const std::string kSystem = R"(
+[[material]]
+name = "chain"
+diameter = 0.1
+area = 0.0078
+mass_per_length = 60.0
+youngs_modulus = 5e10
+
+[[point]]
+name = "anchor"
+position = [0.0, -60.0, 0.0]
+
+[[point]]
+name = "clump"
+motion = "free"
+position = [45.0, -40.0, 5.0]
+mass = 3000.0
+
+[[point]]
+name = "fairlead"
+position = [70.0, 0.0, 10.0]
+
+[[line]]
+name = "lower"
+start = "anchor"
+end = "clump"
+[[line.section]]
+material = "chain"
+length = 60.0
+segments = 24
+
+[[line]]
+name = "upper"
+start = "clump"
+end = "fairlead"
+[[line.section]]
+material = "chain"
+length = 45.0
+segments = 18
+)";
+
+std::string SystemWith(const std::string& from, const std::string& to) {
+  return With(from, to, kSystem);
+}
+
+TEST(SceneLoader, SystemLoads) {
+  const SceneDef s = ParseScene(kSystem, kFile);
+  ASSERT_TRUE(s.is_system());
+  ASSERT_EQ(s.points.size(), 3u);
+  ASSERT_EQ(s.lines.size(), 2u);
+  EXPECT_EQ(s.lines[1].start, 1);
+  EXPECT_EQ(s.lines[1].end, 2);
+  EXPECT_EQ(s.points[1].motion.motion, EndMotionKind::kFree);
+  EXPECT_EQ(s.points[1].mass, 3000.0);
+  EXPECT_EQ(s.lines[0].sections[0].segments, 24);
+}
+
+TEST(SceneLoader, SystemErrors) {
+  ExpectError(kSystem + "\n[cable]\n", "cable", {"either one line", "this one has both"});
+  ExpectError(SystemWith("end = \"clump\"", "end = \"clamp\""), "line[0].end",
+              {"no point is named \"clamp\""});
+  ExpectError(SystemWith("name = \"fairlead\"", "name = \"clump\""), "point[2].name",
+              {"unique name"});
+  ExpectError(SystemWith("name = \"upper\"", "name = \"lower\""), "line[1].name",
+              {"unique name"});
+  ExpectError(SystemWith("name = \"lower\"", "name = \"../lower\""), "line[0].name",
+              {"letters, digits"});
+  // A fixed point has no mass: the key of another motion is unknown.
+  ExpectError(SystemWith("position = [0.0, -60.0, 0.0]", "position = [0.0, -60.0, 0.0]\nmass = 1.0"),
+              "point[0].mass", {"unknown key"});
+  ExpectError(SystemWith("mass = 3000.0", "mass = 3000.0\nforce = [1.0, \"x\"]"), "point[1].force",
+              {"expected"});
+  ExpectError(kSystem + "\n[simulation]\nintegrator = \"explicit\"\n", "simulation.integrator",
+              {"implicit"});
+  ExpectError(kSystem + "\n[initial]\nstate = \"straight\"\n", "initial.state",
+              {"equilibrium"});
+  ExpectError(SystemWith("segments = 18", "segments = 0"), "line[1].section[0].segments",
+              {"expected"});
+}
+
+}  // namespace
+}  // namespace cablefilm
