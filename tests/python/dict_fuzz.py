@@ -372,6 +372,10 @@ def child(args):
         while time.monotonic() < end:
             case = make_case(rng, scene_names)
             case["id"] = "%d_%d" % (args.seed, i)
+            if i == args.crash_at:  # a check of this script: the parent must see it
+                with open(current, "w") as f:
+                    json.dump(case, f)
+                os.abort()
             one("case %s" % case["id"], case)
             i += 1
     print("dict_fuzz: %d saved case(s) replayed, %d case(s) in all, %d passed; %d loaded, %d "
@@ -392,6 +396,8 @@ def main():
     ap.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
     ap.add_argument("--current", help=argparse.SUPPRESS)
     ap.add_argument("--skip-saved", action="store_true", help=argparse.SUPPRESS)
+    ap.add_argument("--crash-at", type=int, default=-1,
+                    help="abort at that case (a check that a crash is seen and kept)")
     args = ap.parse_args()
     if args.child:
         return child(args)
@@ -409,7 +415,8 @@ def main():
             seconds = max(0.0, deadline - time.monotonic())
             cmd = [sys.executable, os.path.abspath(__file__), "--child", "--current", current,
                    "--seconds", str(seconds), "--seed", str(seed),
-                   "--regressions", args.regressions] + (["--replay"] if replay else []) + \
+                   "--regressions", args.regressions, "--crash-at", str(args.crash_at)] + \
+                (["--replay"] if replay else []) + \
                 (["--skip-saved"] if skip_saved else [])
             r = subprocess.run(cmd)
             if r.returncode >= 0:
