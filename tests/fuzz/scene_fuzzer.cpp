@@ -27,8 +27,8 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <mutex>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <string>
 #include <thread>
