@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes the scene loader, `check` and the first outputs of a run (tests/fuzz/scene_fuzzer.cpp)
 # with libFuzzer under AddressSanitizer + UndefinedBehaviorSanitizer, for SECONDS (default 600).
+# Its inputs are mutated as scenes (tests/fuzz/scene_mutator.cpp: one change to a value or a
+# key), not as bytes; it prints at exit how many passed the TOML parser and reached a run.
 #   bash scripts/fuzz.sh [SECONDS] [BUILD_DIR]      # BUILD_DIR: default build-clang
 # Needs a build configured as scripts/test.sh does (clang, CABLEFILM_SANITIZE, CABLEFILM_FUZZ).
 # Starts from tests/fuzz/corpus, tests/fuzz/regressions and the shipped scenes (read only); new inputs go to

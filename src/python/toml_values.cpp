@@ -61,6 +61,17 @@ class Enter {
   Path& path_;
 };
 
+// A str as UTF-8: a lone surrogate ("\ud800") has none, and TOML holds only Unicode text
+// (pybind11's cast would raise a RuntimeError "Unable to cast Python instance to C++ type").
+std::string Utf8(const py::handle& s, const std::string& what) {
+  try {
+    return s.cast<std::string>();
+  } catch (const py::cast_error&) {
+    throw py::value_error(what + ": a string that is not valid Unicode (a lone surrogate), " +
+                          "which TOML cannot hold");
+  }
+}
+
 // The TOML value of `obj`: a table, an array, a bool, an integer, a float or a string.
 std::unique_ptr<toml::node> ToNode(const py::handle& obj, const std::string& key, Path& path);
 
@@ -71,7 +82,8 @@ toml::table ToTable(const py::handle& obj, const std::string& key, Path& path) {
     if (!py::isinstance<py::str>(item.first))
       throw py::type_error(key + ": a dict's keys must be strings, got a " +
                            std::string(py::str(py::type::of(item.first).attr("__name__"))));
-    const std::string name = item.first.cast<std::string>();
+    const std::string name =
+        Utf8(item.first, key.empty() ? std::string("a key of the scene") : "a key of " + key);
     table.insert_or_assign(name,
                            *ToNode(item.second, key.empty() ? name : key + "." + name, path));
   }
@@ -81,7 +93,7 @@ toml::table ToTable(const py::handle& obj, const std::string& key, Path& path) {
 std::unique_ptr<toml::node> ToNode(const py::handle& obj, const std::string& key, Path& path) {
   if (py::isinstance<py::bool_>(obj)) return std::make_unique<toml::value<bool>>(obj.cast<bool>());
   if (py::isinstance<py::str>(obj))
-    return std::make_unique<toml::value<std::string>>(obj.cast<std::string>());
+    return std::make_unique<toml::value<std::string>>(Utf8(obj, key));
   if (py::isinstance<py::dict>(obj)) return std::make_unique<toml::table>(ToTable(obj, key, path));
   if (py::hasattr(obj, "tolist") && !py::isinstance<py::list>(obj) &&
       !py::isinstance<py::tuple>(obj)) {

@@ -9,7 +9,9 @@
 //      before the equilibrium (the equilibrium then runs in 2., within the time budget);
 //   2. for a scene of at most kMaxLinksSimulated links: the initial state (the static
 //      equilibrium) and the first kMaxOutputs outputs of the run, with its result files, for the
-//      scene's model and, when compare would accept it, for the other model too.
+//      scene's model and, when compare would accept it, for the other model too; for a system
+//      of lines ([[point]] and [[line]]) the system's equilibrium and its first kMaxOutputs
+//      outputs through the system's run (what RunSystem does: each line's files, points.csv).
 // Every cablefilm::Error is a clean answer. Anything else fails: a sanitizer report, another
 // exception (std::bad_alloc, std::out_of_range, ...; main() would abort on them), a hang
 // (libFuzzer -timeout; the replay driver's alarm). Runs long by design (a stiff explicit scene)
@@ -25,16 +27,22 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <mutex>
 #include <new>
 #include <string>
 #include <thread>
+#include <vector>
+
+#include <toml++/toml.h>
 
 #include "app/commands.h"
 #include "core/cancel.h"
 #include "core/error.h"
+#include "io/points_file.h"
 #include "io/result_files.h"
 #include "run/run.h"
+#include "run/system_run.h"
 #include "run/time_grid.h"
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
@@ -54,6 +62,7 @@ constexpr long kMaxLinksSimulated = 1000;
 constexpr long kMaxOutputs = 20;          // outputs simulated after t = 0, per model
 constexpr double kBudgetSeconds = 0.3;    // wall time for the runs of an input
                                           // (CABLEFILM_FUZZ_BUDGET)
+constexpr double kSystemEquilibriumBudgets = 5;  // a system's equilibrium: 5 budgets
 
 Counts g_counts;
 
@@ -165,6 +174,62 @@ Outcome RunModel(const SceneDef& scene, const std::string& suffix, const CancelF
   return *cancel != 0 ? Outcome::kBudget : Outcome::kFinished;
 }
 
+// A system's run as RunSystem does it (system_command.cpp), on the first kMaxOutputs outputs:
+// the system's equilibrium, each line's equilibrium.csv and timeseries.csv, points.csv.
+class EnoughRows : public SystemRowSink {
+ public:
+  bool Row(const SystemData&) override { return outputs_++ < kMaxOutputs; }
+
+ private:
+  long outputs_ = 0;
+};
+
+Outcome RunSystemModel(const SceneDef& scene, const CancelFlag* cancel) {
+  try {
+    SystemRun run = PrepareSystemRun(scene, BuildSystem(scene), cancel);
+    g_setup->watchdog->Arm(g_setup->budget);  // the steps: the budget of a line's run
+    const SystemModel& sys = run.sys;
+    const std::string out = g_setup->out.string();
+    const std::size_t nl = sys.lines.size();
+    std::vector<std::unique_ptr<TimeseriesWriter>> series(nl);
+    std::vector<std::vector<RowSink*>> line_sinks(nl);
+    for (std::size_t i = 0; i < nl; ++i) {
+      const Data& d = run.initial.lines[i];
+      const std::string name = out + "/line" + std::to_string(i);
+      WriteEquilibriumCsv(name + "_equilibrium.csv", sys.lines[i], d.state, d.tension());
+      series[i] = std::make_unique<TimeseriesWriter>(name + "_timeseries.csv", sys.lines[i]);
+      line_sinks[i] = {series[i].get()};
+    }
+    PointsWriter points(out + "/points.csv", sys, run.inputs);
+    EnoughRows enough;
+    ExecuteSystemRun(run, line_sinks, {&points, &enough});
+    for (std::size_t i = 0; i < nl; ++i) {
+      if (run.summary.completed)
+        series[i]->Commit();
+      else
+        series[i]->CommitPartial(out + "/line" + std::to_string(i) + "_timeseries.partial.csv");
+    }
+    if (run.summary.completed)
+      points.Commit();
+    else
+      points.CommitPartial(out + "/points.partial.csv");
+  } catch (const Error& e) {
+    Explain("system run", e);
+    return *cancel != 0 ? Outcome::kBudget : Outcome::kError;
+  }
+  return *cancel != 0 ? Outcome::kBudget : Outcome::kFinished;
+}
+
+// Whether the scene text is TOML at all (the counts tell the parser's rejections apart).
+bool IsToml(const char* data, std::size_t size) {
+  try {
+    (void)toml::parse(std::string_view(data, size));
+  } catch (const toml::parse_error&) {
+    return false;
+  }
+  return true;
+}
+
 void RunOne(const char* data, std::size_t size) {
   // The scene and its table, written afresh: nothing of an earlier input may be read.
   const std::string input(data, size);
@@ -192,8 +257,10 @@ void RunOne(const char* data, std::size_t size) {
       return;
     }
     if (links <= kMaxLinksCheckedWithEquilibrium ||
-        scene.initial != InitialStateKind::kEquilibrium) {
+        (!scene.is_system() && scene.initial != InitialStateKind::kEquilibrium)) {
       CheckCommand(g_setup->scene.string());
+    } else if (scene.is_system()) {
+      (void)BuildSystem(scene);  // `check` builds it, then solves its equilibrium (in 2.)
     } else {
       const Model m = BuildModel(scene);
       CheckModelLimits(scene, m);
@@ -202,6 +269,7 @@ void RunOne(const char* data, std::size_t size) {
   } catch (const Error& e) {
     Explain("rejected", e);
     ++g_counts.rejected;
+    if (!IsToml(data, cut == std::string::npos ? size : cut + 1)) ++g_counts.not_toml;
     return;
   }
   if (Links(scene) > kMaxLinksSimulated) {
@@ -211,6 +279,18 @@ void RunOne(const char* data, std::size_t size) {
 
   // 2. The run, and compare's second model when its limits allow it.
   ++g_counts.simulated;
+  if (scene.is_system()) {
+    // The system's equilibrium (all lines and shared points at once) takes longer than a
+    // line's: kSystemEquilibriumBudgets budgets for it, then one for the steps.
+    ++g_counts.systems;
+    const CancelFlag* cancel =
+        g_setup->watchdog->Arm(g_setup->budget * kSystemEquilibriumBudgets);
+    const Outcome end = RunSystemModel(scene, cancel);
+    g_setup->watchdog->Disarm();
+    if (end == Outcome::kError) ++g_counts.run_errors;
+    if (end == Outcome::kBudget) ++g_counts.budget_cut;
+    return;
+  }
   const CancelFlag* cancel = g_setup->watchdog->Arm(g_setup->budget);
   Outcome end = RunModel(scene, "", cancel);
   SceneDef other = scene;
@@ -238,10 +318,15 @@ const Counts& GetCounts() { return g_counts; }
 void PrintCounts() {
   const Counts& c = g_counts;
   std::fprintf(stderr,
-               "scene_fuzzer: %ld inputs: %ld rejected cleanly; accepted: %ld too large to check "
-               "here, %ld too large to simulate here, %ld simulated (%ld ended in a clean run "
-               "error, %ld stopped at the time budget)\n",
-               c.inputs, c.rejected, c.loaded_only, c.checked_only, c.simulated, c.run_errors,
+               "scene_fuzzer: %ld inputs: %ld rejected cleanly (%ld of them not TOML: %.1f %% of "
+               "the inputs pass the TOML parser); accepted: %ld too large to check here, %ld too "
+               "large to simulate here, %ld simulated (%ld systems of lines; %ld ended in a "
+               "clean run error, %ld stopped at the time budget)\n",
+               c.inputs, c.rejected, c.not_toml,
+               c.inputs > 0 ? 100.0 * static_cast<double>(c.inputs - c.not_toml) /
+                                  static_cast<double>(c.inputs)
+                            : 0.0,
+               c.loaded_only, c.checked_only, c.simulated, c.systems, c.run_errors,
                c.budget_cut);
 }
 
