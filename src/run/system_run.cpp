@@ -1,5 +1,6 @@
 #include "run/system_run.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "core/cancel.h"
@@ -119,7 +120,24 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
   }
   // Each line counts every iteration of the coupled solve: the system's are any line's.
   s.stats.newton_iterations = nl > 0 ? run.lines[0].stats.newton_iterations : 0;
-  if (nl > 0) s.stats.record = run.lines[0].stats.record;  // the step range, every line's
+  // The step range is every line's; the snaps are all lines' (the first unresolved one of the
+  // line that had the earliest).
+  for (int i = 0; i < nl; ++i) {
+    const StepRecord& r = run.lines[i].stats.record;
+    StepRecord& all = s.stats.record;
+    if (i == 0) {
+      all = r;
+      continue;
+    }
+    all.snaps += r.snaps;
+    all.unresolved_snaps += r.unresolved_snaps;
+    all.worst_snap_ratio = std::max(all.worst_snap_ratio, r.worst_snap_ratio);
+    if (r.first_unresolved_time >= 0 &&
+        (all.first_unresolved_time < 0 || r.first_unresolved_time < all.first_unresolved_time)) {
+      all.first_unresolved_time = r.first_unresolved_time;
+      all.first_unresolved_link = r.first_unresolved_link;
+    }
+  }
 }
 
 }  // namespace cablefilm
