@@ -50,6 +50,8 @@ SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<Poi
   }
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     const LineSpec& l = lines[i];
+    if (l.law != LinkLaw::kElastic)  // the system's step is the elastic line's
+      throw Error(LineName(l, i) + ": the lines of a system are elastic");
     std::vector<PrismSpec> prisms = l.prisms;
     EndMotion ends[2] = {points[l.start_point].motion, points[l.end_point].motion};
     const int at[2] = {l.start_point, l.end_point};
@@ -65,9 +67,6 @@ SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<Poi
         body.station = station;
         prisms.push_back(body);
       }
-      if (point.shared >= 0 && l.law != LinkLaw::kElastic)
-        throw Error(LineName(l, i) + ": an inextensible line cannot end at the shared point \"" +
-                    point.name + "\"");
     }
     if (!ends[0].prescribed() && !ends[1].prescribed() &&
         sys.points[at[0]].shared < 0 && sys.points[at[1]].shared < 0)

@@ -67,9 +67,9 @@ struct SystemModel {
   int shared_end(int i, int e) const { return points[line_points[i][e]].shared; }
 };
 
-// Builds the system; throws Error on a point no line is attached to, a line end at a point
-// that does not exist, or an inextensible line at a shared point (its constraint solver
-// works on one line).
+// Builds the system; throws Error on a free point no line is attached to, a line end at a
+// point that does not exist, a line whose ends are both loose, or an inextensible line (the
+// system's step is the elastic line's implicit one).
 SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<PointSpec>& points,
                        const EnvironmentSpec& env);
 

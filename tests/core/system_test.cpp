@@ -117,6 +117,10 @@ TEST(SystemModel, RefusesWhatNothingHolds) {
   line.end_point = 5;
   EXPECT_THROW(MakeSystem({line}, {fixed, free}, env), Error);
   line.end_point = 1;
+  // An inextensible line: the system's step is the elastic line's.
+  line.law = LinkLaw::kInextensible;
+  EXPECT_THROW(MakeSystem({line}, {fixed, free}, env), Error);
+  line.law = LinkLaw::kElastic;
   const SystemModel ok = MakeSystem({line}, {fixed, free}, env);
   EXPECT_EQ(ok.shared_count(), 0);  // a free end, not a shared station
   EXPECT_FALSE(ok.lines[0].ends.end.prescribed());
