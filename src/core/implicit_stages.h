@@ -13,6 +13,9 @@
 
 namespace cablefilm {
 
+// Newton iterations a step may take before it is rejected (and retried shorter).
+constexpr int kMaxNewtonIterations = 12;
+
 // The trial step of size h: positions predicted with the pseudo-acceleration carried over,
 // prescribed ends at their positions and velocities at t + h.
 void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlpha& c,

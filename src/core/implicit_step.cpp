@@ -6,7 +6,6 @@
 
 namespace cablefilm {
 namespace {
-constexpr int kMaxNewtonIterations = 12;
 
 // One line through the adaptive loop (implicit_stages.h).
 struct LineStepper {

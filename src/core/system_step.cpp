@@ -9,7 +9,6 @@
 
 namespace cablefilm {
 namespace {
-constexpr int kMaxNewtonIterations = 12;
 
 // Makes every copy of each shared station equal to its owner's trial position (`x`) or
 // trial velocity and accelerations (`motion`).

@@ -424,6 +424,16 @@ std::string ReadName(TableReader& r, const toml::table* t) {
   return name;
 }
 
+// A point's or line's name not yet taken by one of `earlier`.
+template <class Named>
+void CheckUnique(TableReader& r, const toml::table* t, const std::string& name,
+                 const std::vector<Named>& earlier, const char* what) {
+  for (const Named& other : earlier)
+    if (other.name == name)
+      r.Fail(t->get("name"), "name",
+             "expected a unique name, " + Quote(name) + " names two " + what);
+}
+
 // [[point]]: the points of a system.
 void ReadPoints(TableReader& top, SceneDef& scene, const std::string& file) {
   const toml::array* arr = top.TableArray("point", true);
@@ -432,10 +442,7 @@ void ReadPoints(TableReader& top, SceneDef& scene, const std::string& file) {
     TableReader r = top.Child(*t, "point[" + std::to_string(i) + "]");
     PointDef p;
     p.name = ReadName(r, t);
-    for (const PointDef& other : scene.points)
-      if (other.name == p.name)
-        r.Fail(t->get("name"), "name", "expected a unique name, " + Quote(p.name) +
-                                           " names two points");
+    CheckUnique(r, t, p.name, scene.points, "points");
     const std::string motion = ReadMotion(r, t, p.motion, file, scene);
     if (motion == "free") {
       ReadPrism(r, p.mass, p.volume, p.added_volume, p.drag_coefficient, p.drag_area, false);
@@ -456,10 +463,7 @@ void ReadLines(TableReader& top, SceneDef& scene) {
     TableReader r = top.Child(*t, name);
     LineDef line;
     line.name = ReadName(r, t);
-    for (const LineDef& other : scene.lines)
-      if (other.name == line.name)
-        r.Fail(t->get("name"), "name", "expected a unique name, " + Quote(line.name) +
-                                           " names two lines");
+    CheckUnique(r, t, line.name, scene.lines, "lines");
     r.Choice("model", "elastic", {"elastic"});  // the system's step is the elastic line's
     for (const char* key : {"start", "end"}) {
       const std::string point = r.String(key, "", true);
