@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "app/body_commands.h"
 #include "app/commands.h"
 #include "app/system_command.h"
 #include "app/sweep_command.h"
@@ -305,6 +306,39 @@ int main(int argc, char** argv) {
   convert->footer(
       "'run' and 'check' read a MoorDyn file as it is, through this scene; MoorDyn's\n"
       "z-up axes become cablefilm's y-up ones: (x, y, z) -> (x, z, -y). See docs/moordyn.md.");
+  std::string stiffness_body;
+  CLI::App* stiffness = add_command(
+      "stiffness", "print the moorings' 6x6 stiffness matrix of a body at equilibrium");
+  stiffness->add_option("--body", stiffness_body, "the body (default: the scene's only one)")
+      ->type_name("NAME");
+  cablefilm::OffsetOptions offset_options;
+  CLI::App* offset =
+      add_command("offset", "the offset-restoring curve of a body along a heading (CSV)");
+  offset->add_option("--body", offset_options.body, "the body (default: the scene's only one)")
+      ->type_name("NAME");
+  Value(offset, "--heading", "DEG", "direction of the offset from +x towards +z (default 0)",
+        [&](const std::string& v) {
+          offset_options.heading = ParseNumber("--heading", v, -360, 360, false, " degrees");
+        });
+  Value(offset, "--max", "M",
+        "largest offset in m (default: a twentieth of the shortest line on the body)",
+        [&](const std::string& v) {
+          offset_options.max_offset =
+              ParseNumber("--max", v, 0, cablefilm::kMaxLength, false, " m");
+        });
+  Value(offset, "--points", "N", "offsets from 0 to --max, 1 to 10000 (default 11)",
+        [&](const std::string& v) {
+          offset_options.points =
+              static_cast<int>(ParseNumber("--points", v, 1, 10000, false, " points"));
+          if (offset_options.points != std::stod(v)) Bad("--points: expected a whole number");
+        });
+  offset->add_option("-o,--out", offset_options.out, "the CSV file (default: standard output)")
+      ->type_name("FILE");
+  offset->footer(
+      "Columns: offset [m], restoring (the moorings' horizontal force against the heading)\n"
+      "[N], fx, fy, fz [N], mx, my, mz [N m] (the moorings' load on the body), then the load\n"
+      "at each line's end on the body, tension_<line> [N]. The body moves from its\n"
+      "equilibrium; its other degrees of freedom are held. See docs/systems.md.");
   cablefilm::SweepOptions sweep_options;
   CLI::App* sweep = add_command("sweep", "run a scene over the cross product of values of its keys");
   AddSweepOptions(sweep, &sweep_options);
@@ -389,6 +423,8 @@ int main(int argc, char** argv) {
     if (command == compare) return cablefilm::CompareCommand(scene, run_options);
     if (command == check) return cablefilm::CheckCommand(scene);
     if (command == convert) return cablefilm::ConvertCommand(scene, convert_out);
+    if (command == stiffness) return cablefilm::StiffnessCommand(scene, stiffness_body);
+    if (command == offset) return cablefilm::OffsetCommand(scene, offset_options);
     if (command == sweep) return cablefilm::SweepCommand(scene, sweep_options);
     return UsageFailure("unknown command " + Shown(command->get_name()), "");
   } catch (const cablefilm::CancelledError& e) {  // a signal seen inside the work

@@ -1,5 +1,6 @@
 #include "app/system_command.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -28,6 +29,8 @@ const char* KindName(PointKind kind) {
       return "moved";
     case PointKind::kFree:
       return "free";
+    case PointKind::kBody:
+      return "on a free body";
   }
   return "";
 }
@@ -48,13 +51,28 @@ void PrintSystem(const SceneDef& scene, const SystemModel& sys) {
     std::printf("  point %s: %s, %zu line end(s)%s\n", QuoteText(p.name).c_str(),
                 KindName(p.kind), p.ends.size(),
                 p.shared >= 0 ? ", where lines meet (solved with them)" : "");
+  for (const BodySpec& b : sys.bodies) {
+    const char* kind = b.kind == BodyKind::kFree     ? "free"
+                       : b.kind == BodyKind::kDriven ? "driven"
+                                                     : "held";
+    std::printf("  body %s: %s, reference point at (%.6g, %.6g, %.6g) m\n",
+                QuoteText(b.name).c_str(), kind, b.motion.rest()[0], b.motion.rest()[1],
+                b.motion.rest()[2]);
+  }
   for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
 }
 
-void PrintEquilibrium(const SystemEquilibriumReport& eq, double ms) {
-  std::printf("equilibrium: %d Newton iteration(s) on the shared points, out-of-balance %.3g N "
-              "(of %.4g N), %.2f ms\n",
+void PrintEquilibrium(const SystemModel& sys, const SystemEquilibriumReport& eq, double ms) {
+  std::printf("equilibrium: %d Newton iteration(s) on the shared points and free bodies, "
+              "out-of-balance %.3g N (of %.4g N), %.2f ms\n",
               eq.iterations, eq.residual, eq.force_scale, ms);
+  for (int b : sys.free_bodies) {
+    const Vec6& q = eq.body_poses[b];
+    std::printf("  body %s at (%.6g, %.6g, %.6g) m, turned (%.6g, %.6g, %.6g) deg about x, y, "
+                "z\n",
+                QuoteText(sys.bodies[b].name).c_str(), q[0], q[1], q[2], q[3] * 180 / M_PI,
+                q[4] * 180 / M_PI, q[5] * 180 / M_PI);
+  }
 }
 
 // The system's rows on a progress line, stopped by a signal.
@@ -100,7 +118,7 @@ int CheckSystem(const SceneDef& scene) {
   PrintSystem(scene, sys);
   InstallSignalHandlers();
   const SystemRun run = PrepareSystemRun(scene, sys, &g_signal);
-  PrintEquilibrium(run.equilibrium, run.equilibrium_ms);
+  PrintEquilibrium(run.sys, run.equilibrium, run.equilibrium_ms);
   std::printf("ok\n");
   return 0;
 }
@@ -113,7 +131,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
   const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
   SystemRun run = PrepareSystemRun(scene, built, &g_signal);
-  PrintEquilibrium(run.equilibrium, run.equilibrium_ms);
+  PrintEquilibrium(run.sys, run.equilibrium, run.equilibrium_ms);
   const SystemModel& sys = run.sys;
   const int nl = static_cast<int>(sys.lines.size());
   std::vector<LineFiles> files(nl);

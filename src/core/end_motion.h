@@ -30,6 +30,14 @@ class EndMotion {
   static EndMotion Table(Vec rest, const std::vector<double>& times,
                          const std::vector<Vec>& offsets);
 
+  // The same motion about another rest position (a point of a body that moves as its
+  // reference point does).
+  EndMotion WithRest(const Vec& rest) const {
+    EndMotion m = *this;
+    m.rest_ = rest;
+    return m;
+  }
+
   EndKind kind() const { return kind_; }
   bool prescribed() const { return kind_ != EndKind::kFree; }
   bool moves() const { return kind_ == EndKind::kTrochoid || kind_ == EndKind::kTable; }

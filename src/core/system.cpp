@@ -1,5 +1,7 @@
 #include "core/system.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 
 namespace cablefilm {
@@ -20,15 +22,42 @@ int Links(const LineSpec& line) {
   return links;
 }
 
+// Point p as its body puts it: fixed to a held body, moving with a driven one, placed by a
+// free one's pose.
+SystemPoint OnBody(const PointSpec& p, const BodySpec& body) {
+  const Vec x = BodyPoint(RestPose(body), p.local);
+  SystemPoint point{p.name, PointKind::kFixed, EndMotion::Fixed(x), {}, -1, p.on_body, p.local};
+  if (body.kind == BodyKind::kFree) point.kind = PointKind::kBody;
+  if (body.kind == BodyKind::kDriven) {
+    point.motion = body.motion.WithRest(x);
+    point.kind = KindOf(point.motion);
+  }
+  return point;
+}
+
 }  // namespace
 
 SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<PointSpec>& points,
-                       const EnvironmentSpec& env) {
+                       const EnvironmentSpec& env, const std::vector<BodySpec>& bodies) {
   SystemModel sys;
   sys.env = env;
+  sys.bodies = bodies;
   const int np = static_cast<int>(points.size());
-  for (const PointSpec& p : points)
-    sys.points.push_back({p.name, KindOf(p.motion), p.motion, {}, -1});
+  const int nb = static_cast<int>(bodies.size());
+  for (const PointSpec& p : points) {
+    if (p.on_body >= nb)
+      throw Error("point \"" + p.name + "\": on body " + std::to_string(p.on_body) +
+                  ", which does not exist");
+    if (p.on_body >= 0)
+      sys.points.push_back(OnBody(p, bodies[p.on_body]));
+    else
+      sys.points.push_back({p.name, KindOf(p.motion), p.motion, {}, -1, -1, Vec::Zero()});
+  }
+  for (int b = 0; b < nb; ++b) {
+    sys.body_poses.push_back(RestPose(bodies[b]));
+    if (bodies[b].kind != BodyKind::kFree) continue;
+    sys.free_bodies.push_back(b);
+  }
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     const LineSpec& l = lines[i];
     for (int p : {l.start_point, l.end_point})
@@ -37,6 +66,12 @@ SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<Poi
                     ", which does not exist");
     sys.points[l.start_point].ends.push_back({i, 0});
     sys.points[l.end_point].ends.push_back({i, Links(l)});
+  }
+  for (int b : sys.free_bodies) {
+    bool held = false;
+    for (const SystemPoint& p : sys.points) held = held || (p.on_body == b && !p.ends.empty());
+    if (!held)
+      throw Error("body \"" + bodies[b].name + "\" is free but no line ends at a point on it");
   }
   for (int p = 0; p < np; ++p) {
     SystemPoint& point = sys.points[p];
@@ -53,11 +88,15 @@ SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<Poi
     if (l.law != LinkLaw::kElastic)  // the system's step is the elastic line's
       throw Error(LineName(l, i) + ": the lines of a system are elastic");
     std::vector<PrismSpec> prisms = l.prisms;
-    EndMotion ends[2] = {points[l.start_point].motion, points[l.end_point].motion};
+    EndMotion ends[2] = {sys.points[l.start_point].motion, sys.points[l.end_point].motion};
     const int at[2] = {l.start_point, l.end_point};
     const int links = Links(l);
     for (int e = 0; e < 2; ++e) {
       const SystemPoint& point = sys.points[at[e]];
+      if (point.kind == PointKind::kBody) {  // a free station that follows its body
+        ends[e] = EndMotion::Free(point.motion.rest());
+        continue;
+      }
       if (point.kind != PointKind::kFree) continue;
       ends[e] = EndMotion::Free(points[at[e]].motion.rest());
       const LineEnd& owner = point.ends.front();
@@ -68,8 +107,11 @@ SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<Poi
         prisms.push_back(body);
       }
     }
-    if (!ends[0].prescribed() && !ends[1].prescribed() &&
-        sys.points[at[0]].shared < 0 && sys.points[at[1]].shared < 0)
+    auto loose = [&](int e) {
+      const SystemPoint& p = sys.points[at[e]];
+      return !ends[e].prescribed() && p.shared < 0 && p.kind != PointKind::kBody;
+    };
+    if (loose(0) && loose(1))
       throw Error(LineName(l, i) +
                   ": both its ends are free points that hold no other line: nothing holds it");
     sys.lines.push_back(MakeModel(l.sections, prisms, env, ends[0], ends[1], l.law));
@@ -77,6 +119,51 @@ SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<Poi
     sys.line_points.push_back({l.start_point, l.end_point});
   }
   return sys;
+}
+
+void PlaceBodyEnds(const SystemModel& sys, int b, const Vec6& pose, int line, Model& model) {
+  for (int e = 0; e < 2; ++e) {
+    const SystemPoint& p = sys.points[sys.line_points[line][e]];
+    if (p.on_body != b) continue;
+    (e == 0 ? model.ends.start : model.ends.end) = EndMotion::Fixed(BodyPoint(pose, p.local));
+  }
+}
+
+void PlaceBody(SystemModel& sys, int b, const Vec6& pose) {
+  BodySpec& body = sys.bodies[b];
+  sys.body_poses[b] = pose;
+  if (body.kind != BodyKind::kFree) {
+    body.motion = body.motion.WithRest(pose.head<3>());
+    body.angles = pose.tail<3>();
+  }
+  for (SystemPoint& p : sys.points)
+    if (p.on_body == b) p.motion = p.motion.WithRest(BodyPoint(pose, p.local));
+  for (int i = 0; i < static_cast<int>(sys.lines.size()); ++i)
+    for (int e = 0; e < 2; ++e) {
+      const SystemPoint& p = sys.points[sys.line_points[i][e]];
+      if (p.on_body != b) continue;
+      EndMotion& end = e == 0 ? sys.lines[i].ends.start : sys.lines[i].ends.end;
+      end = end.WithRest(p.motion.rest());
+    }
+}
+
+SystemModel HoldBody(const SystemModel& sys, int b, const Vec6& pose) {
+  SystemModel held = sys;
+  held.bodies[b].kind = BodyKind::kHeld;
+  held.bodies[b].motion = EndMotion::Fixed(pose.head<3>());
+  for (SystemPoint& p : held.points)
+    if (p.on_body == b) {
+      p.kind = PointKind::kFixed;
+      p.motion = EndMotion::Fixed(p.motion.rest());
+    }
+  held.free_bodies.erase(std::remove(held.free_bodies.begin(), held.free_bodies.end(), b),
+                         held.free_bodies.end());
+  for (int i = 0; i < static_cast<int>(held.lines.size()); ++i)
+    for (int e = 0; e < 2; ++e)
+      if (held.points[held.line_points[i][e]].on_body == b)
+        (e == 0 ? held.lines[i].ends.start : held.lines[i].ends.end) = EndMotion::Fixed(Vec::Zero());
+  PlaceBody(held, b, pose);
+  return held;
 }
 
 }  // namespace cablefilm

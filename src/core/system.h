@@ -9,15 +9,20 @@
 // of motion is the sum of the rows of its copies: the point's own terms are on the copy of
 // the line that owns it (the first end attached), and each line adds its end station's lumped
 // share (half of its end link's mass, weight, drag), as MoorDyn lumps them.
+//
+// A point may be fixed to a rigid body (body.h) at a local position instead: a held body's
+// points are fixed, a driven body's move with its reference point, and a free body's (kind
+// kBody) are where the body's pose puts them; the system's statics find a free body's pose.
 #include <array>
 #include <string>
 #include <vector>
 
+#include "core/body.h"
 #include "core/model.h"
 
 namespace cablefilm {
 
-enum class PointKind { kFixed, kMoved, kFree };
+enum class PointKind { kFixed, kMoved, kFree, kBody };
 
 struct PointSpec {
   std::string name;
@@ -25,6 +30,10 @@ struct PointSpec {
   // A free point's own physics, as a suspended weight's (PrismSpec): mass m* [kg], volume V*
   // [m^3], added volumes [m^3], drag coefficients and areas [m^2], a constant force [N].
   PrismSpec body;
+  // On a body: its index, and the point's position in the body's axes from its reference
+  // point [m] (the motion above is then unused).
+  int on_body = -1;
+  Vec local = Vec::Zero();
 };
 
 struct LineSpec {
@@ -49,6 +58,8 @@ struct SystemPoint {
   std::vector<LineEnd> ends;  // the line ends attached to it (the first: its owner)
   int shared = -1;            // index among the shared points (a free point with several
                               // line ends), -1 otherwise
+  int on_body = -1;           // the body it is fixed to, -1 for none
+  Vec local = Vec::Zero();    // its position in that body's axes [m]
 };
 
 struct SystemModel {
@@ -58,6 +69,11 @@ struct SystemModel {
   std::vector<SystemPoint> points;
   std::vector<int> shared_points;  // indices of the points that are shared stations
   EnvironmentSpec env;             // as built (the lines' environments are made from it)
+  std::vector<BodySpec> bodies;
+  std::vector<int> free_bodies;    // indices of the free bodies (the statics' unknowns)
+  // Each body's pose at the start [m, rad]: its rest pose, or where PlaceBody put it (a free
+  // body's equilibrium). A free body's waterplane keeps its scene's rest as its reference.
+  std::vector<Vec6> body_poses;
 
   int shared_count() const { return static_cast<int>(shared_points.size()); }
   // The line end that owns point p (its first).
@@ -68,9 +84,22 @@ struct SystemModel {
 };
 
 // Builds the system; throws Error on a free point no line is attached to, a line end at a
-// point that does not exist, a line whose ends are both loose, or an inextensible line (the
-// system's step is the elastic line's implicit one).
+// point that does not exist, a line whose ends are both loose, an inextensible line (the
+// system's step is the elastic line's implicit one), a point on a body that does not exist,
+// or a free body that no line holds.
 SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<PointSpec>& points,
-                       const EnvironmentSpec& env);
+                       const EnvironmentSpec& env, const std::vector<BodySpec>& bodies = {});
+
+// Body b at rest at `pose` (body_poses[b]): its points and the lines' ends there moved with it
+// (their motions about the new rest positions); a held or driven body's rest pose too.
+void PlaceBody(SystemModel& sys, int b, const Vec6& pose);
+
+// The system with body b held at `pose` (its points fixed where the pose puts them, the lines'
+// ends with them): how the statics and the quasi-static tools place a body.
+SystemModel HoldBody(const SystemModel& sys, int b, const Vec6& pose);
+
+// Moves the ends of model `line` that are at points of body b to where `pose` puts them
+// (held there: fixed ends).
+void PlaceBodyEnds(const SystemModel& sys, int b, const Vec6& pose, int line, Model& model);
 
 }  // namespace cablefilm

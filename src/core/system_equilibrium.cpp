@@ -9,10 +9,7 @@
 #include "core/forces.h"
 
 namespace cablefilm {
-namespace {
 
-// The force on station j of a line at rest in its scene's water [N] (tension, weight,
-// buoyancy, the current's drag, the seabed).
 Vec StaticStationForce(const Model& m, const State& s, int j) {
   const Water water = SceneWater(m);
   ForceWorkspace ws(m.line.links);
@@ -23,26 +20,90 @@ Vec StaticStationForce(const Model& m, const State& s, int j) {
   return ws.force.col(j);
 }
 
-// The lines with their shared ends held at the shared points' positions X (kDim per point),
-// and their equilibria.
+namespace {
+
+// The lines' load on body b at `pose`, each line's model from `models` (the held lines').
+Vec6 LinesLoad(const SystemModel& sys, const std::vector<Model>& models,
+               const std::vector<State>& states, int b, const Vec6& pose) {
+  Vec6 load = Vec6::Zero();
+  const Vec r = pose.head<3>();
+  for (const SystemPoint& p : sys.points) {
+    if (p.on_body != b) continue;
+    for (const LineEnd& e : p.ends) {
+      const State& s = states[e.line];
+      load += LoadAbout(r, s.x.col(e.station), StaticStationForce(models[e.line], s, e.station));
+    }
+  }
+  return load;
+}
+
+// The unknowns: kDim per shared point (its position), then 6 per free body (its pose), as
+// groups; a group moves the lines with an end at its point or at a point on its body.
+struct Unknowns {
+  struct Group {
+    int offset = 0, size = 0;  // in the vector of unknowns
+    int point = -1, body = -1;
+    double limit = 1e300;      // the shortest of its lines [m]: a Newton step moves it (and a
+                               // body's farthest point) at most a tenth of that
+    double radius = 1;         // a body's size: its farthest point from its reference, >= 1 [m]
+  };
+  std::vector<Group> groups;
+  int size = 0;
+
+  explicit Unknowns(const SystemModel& sys) {
+    for (int p : sys.shared_points) {
+      Group g{size, kDim, p, -1};
+      for (const LineEnd& e : sys.points[p].ends)
+        g.limit = std::min(g.limit, sys.lines[e.line].line.total_length());
+      groups.push_back(g);
+      size += g.size;
+    }
+    for (int b : sys.free_bodies) {
+      Group g{size, 6, -1, b};
+      for (const SystemPoint& p : sys.points) {
+        if (p.on_body != b) continue;
+        g.radius = std::max(g.radius, p.local.norm());
+        for (const LineEnd& e : p.ends)
+          g.limit = std::min(g.limit, sys.lines[e.line].line.total_length());
+      }
+      groups.push_back(g);
+      size += g.size;
+    }
+  }
+
+  // Whether group k moves an end of line i.
+  bool Moves(const SystemModel& sys, int k, int i) const {
+    for (int e = 0; e < 2; ++e) {
+      const int at = sys.line_points[i][e];
+      if (at == groups[k].point) return true;
+      if (groups[k].body >= 0 && sys.points[at].on_body == groups[k].body) return true;
+    }
+    return false;
+  }
+};
+
+// The lines with their ends at shared points held where the unknowns X put those points, and
+// their ends on free bodies where X puts the bodies; and their equilibria.
 class HeldLines {
  public:
-  HeldLines(const SystemModel& sys, const SystemEquilibriumOptions& options)
-      : sys_(sys), models_(sys.lines), states_(sys.lines.size()), reports_(sys.lines.size()) {
+  HeldLines(const SystemModel& sys, const Unknowns& u, const SystemEquilibriumOptions& options)
+      : sys_(sys), u_(u), models_(sys.lines), states_(sys.lines.size()),
+        reports_(sys.lines.size()) {
     line_options_.cancel = options.cancel;
   }
 
-  static constexpr int kAll = -1;     // every line
-  static constexpr int kShared = -2;  // the lines that end at a shared point
+  static constexpr int kAll = -1;    // every line
+  static constexpr int kMoved = -2;  // the lines that some unknown moves
 
-  // Moves the shared points to X and solves the lines that end at `point` (or kAll, kShared).
-  void Solve(const Eigen::VectorXd& X, int point) {
+  // Places the unknowns at X and solves the lines that group `group` moves (or kAll, kMoved).
+  void Solve(const Eigen::VectorXd& X, int group) {
+    const int groups = static_cast<int>(u_.groups.size());
     for (int i = 0; i < static_cast<int>(models_.size()); ++i) {
-      const int P = sys_.shared_end(i, 0), Q = sys_.shared_end(i, 1);
-      if (point >= 0 && P != point && Q != point) continue;
-      if (point == kShared && P < 0 && Q < 0) continue;
-      if (P >= 0) models_[i].ends.start = EndMotion::Fixed(X.segment<kDim>(kDim * P));
-      if (Q >= 0) models_[i].ends.end = EndMotion::Fixed(X.segment<kDim>(kDim * Q));
+      bool moved = false;
+      for (int k = 0; k < groups; ++k)
+        if (u_.Moves(sys_, k, i)) moved = true, Place(X, k, i);
+      if (group == kMoved && !moved) continue;
+      if (group >= 0 && !u_.Moves(sys_, group, i)) continue;
       try {
         states_[i] = SolveHeld(i);
       } catch (const CancelledError&) {
@@ -53,13 +114,22 @@ class HeldLines {
     }
   }
 
-  // The net force on each shared point [N], kDim per point.
-  Eigen::VectorXd Residual() const {
-    Eigen::VectorXd R = Eigen::VectorXd::Zero(kDim * sys_.shared_count());
-    for (int p : sys_.shared_points)
-      for (const LineEnd& e : sys_.points[p].ends)
-        R.segment<kDim>(kDim * sys_.points[p].shared) +=
-            StaticStationForce(models_[e.line], states_[e.line], e.station);
+  // The out-of-balance load of each group at X: the net force on a shared point [N], the net
+  // force and moment on a free body [N, N m about its reference point].
+  Eigen::VectorXd Residual(const Eigen::VectorXd& X) const {
+    Eigen::VectorXd R = Eigen::VectorXd::Zero(u_.size);
+    for (const Unknowns::Group& g : u_.groups) {
+      if (g.point >= 0) {
+        for (const LineEnd& e : sys_.points[g.point].ends)
+          R.segment<kDim>(g.offset) +=
+              StaticStationForce(models_[e.line], states_[e.line], e.station);
+        continue;
+      }
+      const Vec6 pose = X.segment<6>(g.offset);
+      R.segment<6>(g.offset) =
+          LinesLoad(sys_, models_, states_, g.body, pose) +
+          BodyOwnLoads(sys_.bodies[g.body], pose, sys_.env.fluid_density, sys_.env.gravity);
+    }
     return R;
   }
 
@@ -68,6 +138,19 @@ class HeldLines {
   void Restore(const std::vector<State>& states) { states_ = states; }
 
  private:
+  // Line i's ends at group k's point or body, where X puts them.
+  void Place(const Eigen::VectorXd& X, int k, int i) {
+    const Unknowns::Group& g = u_.groups[k];
+    if (g.body >= 0) {
+      PlaceBodyEnds(sys_, g.body, X.segment<6>(g.offset), i, models_[i]);
+      return;
+    }
+    for (int e = 0; e < 2; ++e)
+      if (sys_.line_points[i][e] == g.point)
+        (e == 0 ? models_[i].ends.start : models_[i].ends.end) =
+            EndMotion::Fixed(X.segment<kDim>(g.offset));
+  }
+
   // Line i's equilibrium: from its last one moved with its ends (warm), or when there is none
   // or that fails, from the first guess of a single line.
   State SolveHeld(int i) {
@@ -102,21 +185,12 @@ class HeldLines {
   }
 
   const SystemModel& sys_;
+  const Unknowns& u_;
   std::vector<Model> models_;
   std::vector<State> states_;
   std::vector<EquilibriumReport> reports_;
   EquilibriumOptions line_options_;
 };
-
-// The shortest line at each shared point [m]: how far a Newton step may move it.
-Eigen::VectorXd StepLimits(const SystemModel& sys) {
-  Eigen::VectorXd limit = Eigen::VectorXd::Constant(sys.shared_count(), 1e300);
-  for (int p : sys.shared_points)
-    for (const LineEnd& e : sys.points[p].ends)
-      limit[sys.points[p].shared] =
-          std::min(limit[sys.points[p].shared], sys.lines[e.line].line.total_length());
-  return limit;
-}
 
 }  // namespace
 
@@ -128,43 +202,59 @@ Points SharedPointResiduals(const SystemModel& sys, const std::vector<State>& st
   return R;
 }
 
+Vec6 LinesLoadOnBody(const SystemModel& sys, const std::vector<State>& states, int b,
+                     const Vec6& pose) {
+  return LinesLoad(sys, sys.lines, states, b, pose);
+}
+
 std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibriumReport* report,
                                           const SystemEquilibriumOptions& options) {
-  const int n = kDim * sys.shared_count();
+  const Unknowns u(sys);
+  const int n = u.size;
   Eigen::VectorXd X(n);
-  for (int p : sys.shared_points) {
-    const LineEnd& o = sys.owner(p);
+  for (const Unknowns::Group& g : u.groups) {
+    if (g.body >= 0) {
+      X.segment<6>(g.offset) = sys.body_poses[g.body];
+      continue;
+    }
+    const LineEnd& o = sys.owner(g.point);
     const Model& m = sys.lines[o.line];
-    X.segment<kDim>(kDim * sys.points[p].shared) =
-        (o.station == 0 ? m.ends.start : m.ends.end).rest();
+    X.segment<kDim>(g.offset) = (o.station == 0 ? m.ends.start : m.ends.end).rest();
   }
-  HeldLines lines(sys, options);
+  HeldLines lines(sys, u, options);
   lines.Solve(X, HeldLines::kAll);
   double scale = 0;
   for (const Model& m : sys.lines) scale += StaticForceScale(m);
   SystemEquilibriumReport r;
   r.force_scale = scale;
-  Eigen::VectorXd R = lines.Residual();
-  const Eigen::VectorXd limit = StepLimits(sys);
-  auto norm = [](const Eigen::VectorXd& v) { return v.size() ? v.lpNorm<Eigen::Infinity>() : 0.0; };
-  // Broyden's method: the Jacobian dR/dX by forward differences (a point at a time, each
-  // column re-solving that point's lines) at the start and whenever a step fails to reduce the
-  // out-of-balance force, and updated by rank one after each step that does (the held lines'
-  // solves are the cost: one per step instead of kDim + 1 per point).
+  Eigen::VectorXd R = lines.Residual(X);
+  // The out-of-balance measure: forces [N], and a body's moments over its size [N].
+  Eigen::VectorXd weight = Eigen::VectorXd::Ones(n);
+  for (const Unknowns::Group& g : u.groups)
+    if (g.body >= 0) weight.segment<3>(g.offset + 3).setConstant(1.0 / g.radius);
+  auto norm = [&](const Eigen::VectorXd& v) {
+    return v.size() ? v.cwiseProduct(weight).lpNorm<Eigen::Infinity>() : 0.0;
+  };
+  // Broyden's method: the Jacobian dR/dX by forward differences (a group at a time, each
+  // column re-solving that group's lines) at the start and whenever a step fails to reduce the
+  // out-of-balance load, and updated by rank one after each step that does (the held lines'
+  // solves are the cost: one per step instead of one per unknown).
   Eigen::MatrixXd J(n, n);
   bool fresh = false;
   auto differences = [&] {
     const std::vector<State> base = lines.states();
-    for (int p = 0; p < sys.shared_count(); ++p) {
-      const double delta = 1e-6 * limit[p];
-      for (int k = 0; k < kDim; ++k) {
+    for (int k = 0; k < static_cast<int>(u.groups.size()); ++k) {
+      const Unknowns::Group& g = u.groups[k];
+      for (int c = 0; c < g.size; ++c) {
+        // A millionth of its shortest line (a turn moves its farthest point as far).
+        const double delta = 1e-6 * g.limit / (c < 3 ? 1.0 : g.radius);
         Eigen::VectorXd Xd = X;
-        Xd[kDim * p + k] += delta;
-        lines.Solve(Xd, p);
-        J.col(kDim * p + k) = (lines.Residual() - R) / delta;
+        Xd[g.offset + c] += delta;
+        lines.Solve(Xd, k);
+        J.col(g.offset + c) = (lines.Residual(Xd) - R) / delta;
         lines.Restore(base);
       }
-      lines.Solve(X, p);
+      lines.Solve(X, k);
     }
     fresh = true;
   };
@@ -172,34 +262,38 @@ std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibr
   while (norm(R) > options.tolerance * scale) {
     if (++r.iterations > options.max_iterations) {
       std::ostringstream os;
-      os << "the shared points of the system do not balance after " << options.max_iterations
-         << " Newton iterations: out-of-balance force " << norm(R) << " N against a load of "
-         << scale << " N";
+      os << "the shared points and free bodies of the system do not balance after "
+         << options.max_iterations << " Newton iterations: out-of-balance force " << norm(R)
+         << " N against a load of " << scale << " N";
       throw Error(os.str());
     }
     ThrowIfCancelled(options.cancel, "the system's static equilibrium");
     Eigen::VectorXd dX = J.partialPivLu().solve(-R);
-    for (int p = 0; p < sys.shared_count(); ++p) {  // at most a tenth of the shortest line
-      const double size = dX.segment<kDim>(kDim * p).norm(), most = 0.1 * limit[p];
+    for (const Unknowns::Group& g : u.groups) {  // at most a tenth of the shortest line
+      const double most = 0.1 * g.limit;
+      const double size = dX.segment<kDim>(g.offset).norm();
       if (size > most) dX *= most / size;
+      if (g.body < 0) continue;
+      const double turn = dX.segment<3>(g.offset + 3).norm() * g.radius;
+      if (turn > most) dX *= most / turn;
     }
     const std::vector<State> base = lines.states();
-    lines.Solve(X + dX, HeldLines::kShared);
-    Eigen::VectorXd Rt = lines.Residual();
+    lines.Solve(X + dX, HeldLines::kMoved);
+    Eigen::VectorXd Rt = lines.Residual(X + dX);
     if (!(norm(Rt) < norm(R)) && !fresh) {  // an old Jacobian: a fresh one, and again
       lines.Restore(base);
-      lines.Solve(X, HeldLines::kShared);
+      lines.Solve(X, HeldLines::kMoved);
       differences();
       --r.iterations;
       continue;
     }
-    // Backtracking: the step halved until the out-of-balance force falls.
+    // Backtracking: the step halved until the out-of-balance load falls.
     double step = 1;
     for (int tries = 0; !(norm(Rt) < norm(R)) && tries < 12; ++tries) {
       lines.Restore(base);
       step *= 0.5;
-      lines.Solve(X + step * dX, HeldLines::kShared);
-      Rt = lines.Residual();
+      lines.Solve(X + step * dX, HeldLines::kMoved);
+      Rt = lines.Residual(X + step * dX);
     }
     const Eigen::VectorXd s = step * dX;
     J += (Rt - R - J * s) * s.transpose() / s.squaredNorm();
@@ -209,6 +303,9 @@ std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibr
   }
   r.residual = norm(R);
   r.lines = lines.reports();
+  r.body_poses = sys.body_poses;
+  for (const Unknowns::Group& g : u.groups)
+    if (g.body >= 0) r.body_poses[g.body] = X.segment<6>(g.offset);
   if (report) *report = r;
   return lines.states();
 }

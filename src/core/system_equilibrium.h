@@ -2,9 +2,11 @@
 // The static equilibrium of a system of lines (system.h): the paper's initial state for a
 // mooring. Each line is in equilibrium (SolveEquilibrium, equilibrium.h) with its ends at its
 // points; the shared points (free points where several lines meet) are where the forces of
-// their lines balance: Newton's method on their positions, kDim unknowns per point, with a
-// Jacobian of finite differences (each column re-solves the lines at one point, from their
-// last equilibrium) and a backtracking line search.
+// their lines balance, and a free body (body.h) is where its lines' loads balance its own:
+// Newton's method on the shared points' positions (kDim unknowns per point) and the free
+// bodies' poses (6 per body), with a Jacobian of finite differences (each column re-solves
+// the lines at one point or body, from their last equilibrium), Broyden's updates and a
+// backtracking line search.
 #include <vector>
 
 #include "core/equilibrium.h"
@@ -13,10 +15,12 @@
 namespace cablefilm {
 
 struct SystemEquilibriumReport {
-  int iterations = 0;         // Newton iterations on the shared points
-  double residual = 0;        // the largest out-of-balance force on a shared point at the end [N]
+  int iterations = 0;         // Newton iterations on the shared points and free bodies
+  double residual = 0;        // the largest out-of-balance force on a shared point or body at
+                              // the end [N] (a body's moment divided by its size [m])
   double force_scale = 0;     // the load it is measured against: the lines' (StaticForceScale)
   std::vector<EquilibriumReport> lines;  // each line's last solve
+  std::vector<Vec6> body_poses;          // each body's pose (a free body's as solved)
 };
 
 struct SystemEquilibriumOptions {
@@ -26,14 +30,25 @@ struct SystemEquilibriumOptions {
 };
 
 // Each line's state at rest (t = 0). Throws Error naming the line that has no equilibrium, or
-// the points when they do not balance.
+// the points and bodies when they do not balance.
 std::vector<State> SolveSystemEquilibrium(const SystemModel& sys,
                                           SystemEquilibriumReport* report = nullptr,
                                           const SystemEquilibriumOptions& options = {});
+
+// The force on station j of a line at rest in its scene's water [N]: its links' tensions, its
+// weight, buoyancy, the current's drag and the seabed's reaction (an end station's: what its
+// point holds).
+Vec StaticStationForce(const Model& m, const State& s, int j);
 
 // The net force on each shared point (column: the shared point's index) of the lines' static
 // states [N]: the sum of its end stations' forces (its own weight, buoyancy and thrust on its
 // owner's). Zero at equilibrium.
 Points SharedPointResiduals(const SystemModel& sys, const std::vector<State>& states);
+
+// The static load of the lines on body b at `pose` [N, N m about its reference point]: the sum
+// of the forces of the end stations at its points (each end link's tension and the station's
+// lumped share of weight, buoyancy and the current's drag), with their moments.
+Vec6 LinesLoadOnBody(const SystemModel& sys, const std::vector<State>& states, int b,
+                     const Vec6& pose);
 
 }  // namespace cablefilm

@@ -1,5 +1,6 @@
 #include "core/system_step.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -10,9 +11,12 @@
 namespace cablefilm {
 namespace {
 
+using Map36 = Eigen::Matrix<double, 3, 6>;
+
 // Makes every copy of each shared station equal to its owner's trial position (`x`) or
-// trial velocity and accelerations (`motion`).
-void SyncShared(const SystemModel& sys, SystemData& sd, bool motion) {
+// trial velocity and accelerations (`motion`); with `x`, puts each station on a free body
+// where the body's trial pose puts its point.
+void SyncCoupled(const SystemModel& sys, SystemData& sd, bool motion) {
   for (int p : sys.shared_points) {
     const LineEnd& o = sys.owner(p);
     const Scratch& w = sd.lines[o.line].scratch;
@@ -28,67 +32,138 @@ void SyncShared(const SystemModel& sys, SystemData& sd, bool motion) {
       v.abar.col(e.station) = w.abar.col(o.station);
     }
   }
+  if (motion) return;
+  for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i)
+    for (int e = 0; e < 2; ++e) {
+      const EndCoupling& c = sd.couplings[i][e];
+      if (c.body < 0) continue;
+      const int j = e == 0 ? 0 : sys.lines[i].line.links;
+      sd.lines[i].scratch.x.col(j) = BodyPoint(sd.bodies[c.body].tq, c.local);
+      sd.end_maps[i][e] = BodyPointJacobian(sd.bodies[c.body].tq, c.local);
+    }
 }
 
-// Line i's share of the shared stations' system: its interior eliminated (A_II^-1 for the
-// right-hand side and for the columns coupling it to its shared ends), the Schur complement
-// rows of its shared ends added. False when a pivot is singular.
-bool EliminateInterior(const SystemModel& sys, SystemData& sd, int i) {
+// Adds T_a^T S T_b to the dense system's block of the unknowns of ends a and b.
+void AddCoupledBlock(SystemData& sd, const EndCoupling& ca, const Map36& Ta,
+                     const EndCoupling& cb, const Map36& Tb, const Mat& S) {
+  const Mat6 block = Ta.transpose() * S * Tb;
+  sd.schur.block(ca.offset, cb.offset, ca.size, cb.size) += block.topLeftCorner(ca.size, cb.size);
+}
+
+void AddCoupledRhs(SystemData& sd, const EndCoupling& c, const Map36& T, const Vec& r) {
+  const Vec6 rows = T.transpose() * r;
+  sd.schur_rhs.segment(c.offset, c.size) += rows.head(c.size);
+}
+
+// The correction of a coupled end station from the dense system's solution: T dq.
+Vec CoupledCorrection(const SystemData& sd, const EndCoupling& c, const Map36& T) {
+  Vec6 u = Vec6::Zero();
+  u.head(c.size) = sd.schur_x.segment(c.offset, c.size);
+  return T * u;
+}
+
+// Line i's share of the dense system: its interior eliminated (A_II^-1 for the right-hand side
+// and for the columns coupling it to its coupled ends), the Schur complement rows of its
+// coupled ends added through their maps T. False when a pivot is singular.
+bool EliminateInterior(SystemData& sd, int i) {
   BlockTridiagonal& A = sd.lines[i].scratch.system;
   std::vector<Mat>& zs = sd.start_columns[i];
   std::vector<Mat>& ze = sd.end_columns[i];
   const int n = A.size();
-  const int P = sys.shared_end(i, 0), Q = sys.shared_end(i, 1);
-  const int f = P >= 0 ? 1 : 0, l = Q >= 0 ? n - 2 : n - 1;  // the interior rows
+  const EndCoupling &cP = sd.couplings[i][0], &cQ = sd.couplings[i][1];
+  const Map36 &TP = sd.end_maps[i][0], &TQ = sd.end_maps[i][1];
+  const bool P = cP.size > 0, Q = cQ.size > 0;
+  const int f = P ? 1 : 0, l = Q ? n - 2 : n - 1;  // the interior rows
   const bool interior = f <= l;
   if (interior) {
     if (!A.Factor(f, l)) return false;
     A.SolveFactored(A.rhs);
-    if (P >= 0) {
+    if (P) {
       for (int r = f; r <= l; ++r) zs[r].setZero();
       zs[f] = A.lower[f];
       A.SolveFactored(zs);
     }
-    if (Q >= 0) {
+    if (Q) {
       for (int r = f; r <= l; ++r) ze[r].setZero();
       ze[l] = A.upper[l];
       A.SolveFactored(ze);
     }
   }
-  auto block = [&](int a, int b) { return sd.schur.block<kDim, kDim>(kDim * a, kDim * b); };
-  auto rhs = [&](int a) { return sd.schur_rhs.segment<kDim>(kDim * a); };
-  if (P >= 0) {  // row 0
-    block(P, P) += interior ? Mat(A.diag[0] - A.upper[0] * zs[f]) : A.diag[0];
-    rhs(P) += interior ? Vec(A.rhs[0] - A.upper[0] * A.rhs[f]) : A.rhs[0];
-    if (Q >= 0) block(P, Q) += interior ? Mat(-A.upper[0] * ze[f]) : A.upper[0];
+  if (P) {  // row 0
+    AddCoupledBlock(sd, cP, TP, cP, TP, interior ? Mat(A.diag[0] - A.upper[0] * zs[f]) : A.diag[0]);
+    AddCoupledRhs(sd, cP, TP, interior ? Vec(A.rhs[0] - A.upper[0] * A.rhs[f]) : A.rhs[0]);
+    if (Q) AddCoupledBlock(sd, cP, TP, cQ, TQ, interior ? Mat(-A.upper[0] * ze[f]) : A.upper[0]);
   }
-  if (Q >= 0) {  // row n - 1
+  if (Q) {  // row n - 1
     const int e = n - 1;
-    block(Q, Q) += interior ? Mat(A.diag[e] - A.lower[e] * ze[l]) : A.diag[e];
-    rhs(Q) += interior ? Vec(A.rhs[e] - A.lower[e] * A.rhs[l]) : A.rhs[e];
-    if (P >= 0) block(Q, P) += interior ? Mat(-A.lower[e] * zs[l]) : A.lower[e];
+    AddCoupledBlock(sd, cQ, TQ, cQ, TQ, interior ? Mat(A.diag[e] - A.lower[e] * ze[l]) : A.diag[e]);
+    AddCoupledRhs(sd, cQ, TQ, interior ? Vec(A.rhs[e] - A.lower[e] * A.rhs[l]) : A.rhs[e]);
+    if (P) AddCoupledBlock(sd, cQ, TQ, cP, TP, interior ? Mat(-A.lower[e] * zs[l]) : A.lower[e]);
   }
   return true;
 }
 
-// Line i's corrections from the shared stations' (sd.schur_x): x_I = y - Z x_B.
-void BackSubstitute(const SystemModel& sys, SystemData& sd, int i) {
+// Line i's corrections from the dense system's solution: x_B = T dq, x_I = y - Z x_B.
+void BackSubstitute(SystemData& sd, int i) {
   BlockTridiagonal& A = sd.lines[i].scratch.system;
   const int n = A.size();
-  const int P = sys.shared_end(i, 0), Q = sys.shared_end(i, 1);
-  const int f = P >= 0 ? 1 : 0, l = Q >= 0 ? n - 2 : n - 1;
+  const EndCoupling &cP = sd.couplings[i][0], &cQ = sd.couplings[i][1];
+  const bool P = cP.size > 0, Q = cQ.size > 0;
+  const Vec xP = P ? CoupledCorrection(sd, cP, sd.end_maps[i][0]) : Vec::Zero();
+  const Vec xQ = Q ? CoupledCorrection(sd, cQ, sd.end_maps[i][1]) : Vec::Zero();
+  const int f = P ? 1 : 0, l = Q ? n - 2 : n - 1;
   for (int r = f; r <= l; ++r) {
-    if (P >= 0) A.rhs[r].noalias() -= sd.start_columns[i][r] * sd.schur_x.segment<kDim>(kDim * P);
-    if (Q >= 0) A.rhs[r].noalias() -= sd.end_columns[i][r] * sd.schur_x.segment<kDim>(kDim * Q);
+    if (P) A.rhs[r].noalias() -= sd.start_columns[i][r] * xP;
+    if (Q) A.rhs[r].noalias() -= sd.end_columns[i][r] * xQ;
   }
-  if (P >= 0) A.rhs[0] = sd.schur_x.segment<kDim>(kDim * P);
-  if (Q >= 0) A.rhs[n - 1] = sd.schur_x.segment<kDim>(kDim * Q);
+  if (P) A.rhs[0] = xP;
+  if (Q) A.rhs[n - 1] = xQ;
 }
 
-// Solves Newton's system of every line, coupled at the shared stations, into each line's
-// system.rhs. False when a pivot or the shared stations' system is singular.
-bool SolveCoupled(const SystemModel& sys, SystemData& sd) {
-  if (sys.shared_count() == 0) {
+// a_{n+1}, v_{n+1} and abar_{n+1} of a free body implied by its trial pose (as Kinematics of
+// implicit_stages.cpp for a station).
+void BodyKinematics(BodyMotion& b, const GeneralizedAlpha& c, double h) {
+  b.tabar = (b.tq - b.q - h * b.v - h * h * (0.5 - c.beta) * b.abar) / (h * h * c.beta);
+  b.ta = ((1.0 - c.am) * b.tabar + c.am * b.abar - c.af * b.a) / (1.0 - c.af);
+  b.tv = b.v + h * (1.0 - c.gamma) * b.abar + h * c.gamma * b.tabar;
+}
+
+// A free body's own generalized load at a pose [N, N m]: weight, buoyancy, waterplane,
+// constant loads.
+Vec6 OwnLoad(const SystemModel& sys, const BodySpec& body, const Vec6& q) {
+  return GeneralizedLoad(q, BodyOwnLoads(body, q, sys.env.fluid_density, sys.env.gravity));
+}
+
+// Free body k's own rows of the dense system at its trial pose: the matrix
+// ka M + kv dD/dv - dQ/dq and the residual Q + D - M a (its lines' rows come through their
+// ends).
+void AssembleBody(const SystemModel& sys, SystemData& sd, int k, const GeneralizedAlpha& c,
+                  double h, int offset) {
+  BodyMotion& b = sd.bodies[k];
+  const BodySpec& body = sys.bodies[sys.free_bodies[k]];
+  BodyKinematics(b, c, h);
+  const double ka = (1.0 - c.am) / ((1.0 - c.af) * c.beta * h * h);
+  const double kv = c.gamma / (c.beta * h);
+  const Mat6 M = BodyMassMatrix(body, b.tq);
+  const Vec6 Q = OwnLoad(sys, body, b.tq);
+  Mat6 K = ka * M;
+  K.diagonal() += kv * (body.linear_damping +
+                        2.0 * body.quadratic_damping.cwiseProduct(b.tv.cwiseAbs()));
+  for (int col = 0; col < 6; ++col) {  // -dQ/dq by forward differences (a cheap closed form)
+    Vec6 d = b.tq;
+    const double step = 1e-7 * (col < 3 ? std::max(1.0, b.tq.head<3>().norm()) : 1.0);
+    d[col] += step;
+    K.col(col) -= (OwnLoad(sys, body, d) - Q) / step;
+  }
+  sd.schur.block<6, 6>(offset, offset) += K;
+  sd.schur_rhs.segment<6>(offset) += Q + BodyDampingLoad(body, b.tv) - M * b.ta;
+}
+
+// Solves Newton's system of every line and free body, coupled at the shared stations and the
+// bodies, into each line's system.rhs and the bodies' corrections (sd.schur_x). False when a
+// pivot or the dense system is singular.
+bool SolveCoupled(const SystemModel& sys, SystemData& sd, const GeneralizedAlpha& c, double h) {
+  if (sd.schur.rows() == 0) {
     for (Data& d : sd.lines)
       if (!d.scratch.system.Solve()) return false;
     return true;
@@ -96,12 +171,20 @@ bool SolveCoupled(const SystemModel& sys, SystemData& sd) {
   sd.schur.setZero();
   sd.schur_rhs.setZero();
   for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i)
-    if (!EliminateInterior(sys, sd, i)) return false;
+    if (!EliminateInterior(sd, i)) return false;
+  const int body0 = kDim * sys.shared_count();
+  for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k)
+    AssembleBody(sys, sd, k, c, h, body0 + 6 * k);
   sd.schur_lu.compute(sd.schur);
   sd.schur_x.noalias() = sd.schur_lu.solve(sd.schur_rhs);
   if (!sd.schur_x.allFinite()) return false;
-  for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i) BackSubstitute(sys, sd, i);
+  for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i) BackSubstitute(sd, i);
   return true;
+}
+
+// The largest of a pose change's translation and its turns times the arm [m].
+double PoseSize(const Vec6& d, double arm) {
+  return std::max(d.head<3>().lpNorm<Eigen::Infinity>(), arm * d.tail<3>().lpNorm<Eigen::Infinity>());
 }
 
 // The system through the adaptive loop (implicit_stages.h).
@@ -129,6 +212,9 @@ struct SystemStepper {
   double Error(double h) const {
     double e = 0;
     for (int i = 0; i < lines(); ++i) e = std::max(e, LocalError(sys.lines[i], sd.lines[i], c, h));
+    // A free body's, as a station's (implicit_stages.cpp, LocalError).
+    for (const BodyMotion& b : sd.bodies)
+      e = std::max(e, h * h * std::abs(c.beta - 1.0 / 6.0) * PoseSize(b.ta - b.a, b.arm));
     return e;
   }
   void Accept(double h) {
@@ -136,35 +222,72 @@ struct SystemStepper {
     if (sys.env.seabed.present && sys.shared_count() > 0) {
       // The owner's landing decides a shared station's; the others' tensions see it (their
       // axial damping).
-      SyncShared(sys, sd, true);
+      SyncCoupled(sys, sd, true);
       for (int i = 0; i < lines(); ++i)
         ComputeTensions(sys.lines[i], sd.lines[i].forces.geometry, sd.lines[i].scratch.v,
                         sd.lines[i].forces.tension);
     }
     for (int i = 0; i < lines(); ++i) Commit(sys.lines[i], sd.lines[i], h);
+    for (BodyMotion& b : sd.bodies) {
+      b.q = b.tq;
+      b.v = b.tv;
+      b.a = b.ta;
+      b.abar = b.tabar;
+    }
     sd.t += h;
     ++sd.stats.steps;
   }
   bool Solve(double h) {
     for (int i = 0; i < lines(); ++i) PredictStep(sys.lines[i], sd.lines[i], in, c, h);
+    for (BodyMotion& b : sd.bodies) b.tq = b.q + h * b.v + 0.5 * h * h * b.abar;
+    SyncCoupled(sys, sd, false);
+    const int body0 = kDim * sys.shared_count();
     for (int it = 1; it <= kMaxNewtonIterations; ++it) {
       for (int i = 0; i < lines(); ++i) AssembleNewton(sys.lines[i], sd.lines[i], c, h);
-      if (!SolveCoupled(sys, sd)) return false;
+      if (!SolveCoupled(sys, sd, c, h)) return false;
       bool converged = true;
       for (int i = 0; i < lines(); ++i) {
         const double dx = ApplyCorrection(sys.lines[i], sd.lines[i]);
         if (!std::isfinite(dx)) return false;
         converged = converged && dx <= sd.lines[i].scratch.newton_tolerance;
       }
-      SyncShared(sys, sd, false);  // the seabed's landing clamp is the owner's
+      for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k) {
+        BodyMotion& b = sd.bodies[k];
+        const Vec6 dq = sd.schur_x.segment<6>(body0 + 6 * k);
+        b.tq += dq;
+        converged = converged && PoseSize(dq, b.arm) <= sd.newton_tolerance;
+      }
+      SyncCoupled(sys, sd, false);  // the seabed's landing clamp is the owner's
       if (converged) {
         for (int i = 0; i < lines(); ++i) FinishSolve(sys.lines[i], sd.lines[i], c, h);
+        for (BodyMotion& b : sd.bodies) BodyKinematics(b, c, h);
         return true;
       }
     }
     return false;
   }
 };
+
+// Line i's ends' couplings: a shared point's 3 unknowns, a free body's 6.
+std::array<EndCoupling, 2> Couplings(const SystemModel& sys, int i) {
+  std::array<EndCoupling, 2> out;
+  for (int e = 0; e < 2; ++e) {
+    const SystemPoint& p = sys.points[sys.line_points[i][e]];
+    if (p.shared >= 0) {
+      out[e].offset = kDim * p.shared;
+      out[e].size = kDim;
+    }
+    if (p.kind != PointKind::kBody) continue;
+    const int k = static_cast<int>(
+        std::find(sys.free_bodies.begin(), sys.free_bodies.end(), p.on_body) -
+        sys.free_bodies.begin());
+    out[e].offset = kDim * sys.shared_count() + 6 * k;
+    out[e].size = 6;
+    out[e].body = k;
+    out[e].local = p.local;
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -177,16 +300,30 @@ SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOp
     throw Error("MakeSystemData: one state per line is needed");
   SystemData sd;
   sd.t = nl > 0 ? states[0].t : 0.0;
+  sd.newton_tolerance = 1e300;
   for (int i = 0; i < nl; ++i) {
     sd.lines.push_back(MakeData(sys.lines[i], in, options, states[i]));
     const int n = sd.lines[i].scratch.system.size();
     sd.start_columns.emplace_back(n, Mat::Zero());
     sd.end_columns.emplace_back(n, Mat::Zero());
+    sd.couplings.push_back(Couplings(sys, i));
+    Map36 point_map = Map36::Zero();
+    point_map.leftCols<3>().setIdentity();
+    sd.end_maps.push_back({point_map, point_map});
+    sd.newton_tolerance = std::min(sd.newton_tolerance, sd.lines[i].scratch.newton_tolerance);
   }
-  const int ns = kDim * sys.shared_count();
+  for (int b : sys.free_bodies) {
+    BodyMotion m;
+    m.q = m.tq = sys.body_poses[b];
+    for (const SystemPoint& p : sys.points)
+      if (p.on_body == b) m.arm = std::max(m.arm, p.local.norm());
+    sd.bodies.push_back(m);
+  }
+  const int ns = kDim * sys.shared_count() + 6 * static_cast<int>(sys.free_bodies.size());
   sd.schur = Eigen::MatrixXd::Zero(ns, ns);
   sd.schur_rhs = sd.schur_x = Eigen::VectorXd::Zero(ns);
   sd.schur_lu = Eigen::PartialPivLU<Eigen::MatrixXd>(ns);
+  SyncCoupled(sys, sd, false);  // the maps T at the rest poses
   // A shared station's acceleration is that of its whole mass under all its forces.
   for (int p : sys.shared_points) {
     Mat M = Mat::Zero();
@@ -201,6 +338,30 @@ SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOp
       sd.lines[e.line].a.col(e.station) = a;
       sd.lines[e.line].abar.col(e.station) = a;
     }
+  }
+  // A free body's from its mass and its stations' under its loads and theirs (zero at its
+  // equilibrium, but for the dynamic terms a moving start would add).
+  for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k) {
+    BodyMotion& b = sd.bodies[k];
+    const BodySpec& body = sys.bodies[sys.free_bodies[k]];
+    Mat6 M = BodyMassMatrix(body, b.q);
+    Vec6 Q = OwnLoad(sys, body, b.q);
+    for (int i = 0; i < nl; ++i)
+      for (int e = 0; e < 2; ++e) {
+        if (sd.couplings[i][e].body != k) continue;
+        const Map36& T = sd.end_maps[i][e];
+        const int j = e == 0 ? 0 : sys.lines[i].line.links;
+        const Data& d = sd.lines[i];
+        M += T.transpose() * StationInertia(sys.lines[i], d.forces.geometry, j) * T;
+        Q += T.transpose() * d.forces.force.col(j);
+      }
+    b.a = b.abar = b.ta = b.tabar = M.partialPivLu().solve(Q);
+    for (int i = 0; i < nl; ++i)
+      for (int e = 0; e < 2; ++e) {
+        if (sd.couplings[i][e].body != k) continue;
+        const int j = e == 0 ? 0 : sys.lines[i].line.links;
+        sd.lines[i].a.col(j) = sd.lines[i].abar.col(j) = sd.end_maps[i][e] * b.a;
+      }
   }
   return sd;
 }
@@ -218,6 +379,11 @@ void StepSystem(const SystemModel& sys, SystemData& sd, const Inputs& in, double
       throw BlowUpError("line \"" + sys.line_names[i] + "\": " + e.what(), e.time, e.station);
     }
   }
+  for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k)
+    if (!sd.bodies[k].q.allFinite() || !sd.bodies[k].v.allFinite())
+      throw BlowUpError("body \"" + sys.bodies[sys.free_bodies[k]].name +
+                            "\": its pose is not finite at t = " + std::to_string(sd.t) + " s",
+                        sd.t, 0);
 }
 
 PointLoads::PointLoads(const SystemModel& sys) {
@@ -225,6 +391,8 @@ PointLoads::PointLoads(const SystemModel& sys) {
   const int np = static_cast<int>(sys.points.size());
   positions_ = forces_ = Points::Zero(kDim, np);
   for (int p = 0; p < np; ++p) positions_.col(p) = sys.points[p].motion.rest();
+  body_poses_ = sys.body_poses;
+  body_loads_.assign(sys.bodies.size(), Vec6::Zero());
 }
 
 void PointLoads::Compute(const SystemModel& sys, const SystemData& sd, const Inputs& in) {
@@ -238,16 +406,32 @@ void PointLoads::Compute(const SystemModel& sys, const SystemData& sd, const Inp
       const int p = sys.line_points[i][e];
       const int j = e == 0 ? 0 : m.line.links;
       positions_.col(p) = d.state.x.col(j);
-      if (sys.points[p].kind == PointKind::kFree) {
+      const PointKind kind = sys.points[p].kind;
+      if (kind == PointKind::kFree) {
         const int k = e == 0 ? 0 : m.line.links - 1;  // the end link
         const Vec pull = d.forces.tension[k] * d.forces.geometry.tangent.col(k);
         forces_.col(p) += e == 0 ? pull : Vec(-pull);
         continue;
       }
       Vec a = Vec::Zero();
-      if (sys.points[p].kind == PointKind::kMoved) a = EndAcceleration(m, in, j, d.state.t);
+      if (kind == PointKind::kMoved) a = EndAcceleration(m, in, j, d.state.t);
+      if (kind == PointKind::kBody) a = d.a.col(j);
       forces_.col(p) += f.col(j) - StationInertia(m, d.forces.geometry, j) * a;
     }
+  }
+  // The bodies: a free one's pose as stepped, a driven one's reference point as it moves.
+  for (int b = 0; b < static_cast<int>(sys.bodies.size()); ++b) {
+    const BodySpec& body = sys.bodies[b];
+    if (body.kind == BodyKind::kDriven)
+      body_poses_[b].head<3>() = body.motion.Position(sd.t);
+  }
+  for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k)
+    body_poses_[sys.free_bodies[k]] = sd.bodies[k].q;
+  for (int b = 0; b < static_cast<int>(sys.bodies.size()); ++b) {
+    body_loads_[b].setZero();
+    for (int p = 0; p < static_cast<int>(sys.points.size()); ++p)
+      if (sys.points[p].on_body == b)
+        body_loads_[b] += LoadAbout(body_poses_[b].head<3>(), positions_.col(p), forces_.col(p));
   }
 }
 

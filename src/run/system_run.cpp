@@ -42,6 +42,7 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
   const std::vector<State> states = SolveSystemEquilibrium(run.sys, &run.equilibrium, options);
   run.equilibrium_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  for (int b : run.sys.free_bodies) PlaceBody(run.sys, b, run.equilibrium.body_poses[b]);
   run.initial = MakeSystemData(run.sys, run.inputs, run.grid.options, states);
   run.lines.resize(run.sys.lines.size());
   for (size_t i = 0; i < run.lines.size(); ++i)

@@ -134,10 +134,36 @@ Model BuildModel(const SceneDef& scene) {
 }
 
 SystemModel BuildSystem(const SceneDef& scene) {
+  const double deg = M_PI / 180.0;
+  std::vector<BodySpec> bodies;
+  for (const BodyDef& d : scene.bodies) {
+    BodySpec b;
+    b.name = d.name;
+    b.kind = d.free ? BodyKind::kFree
+                    : d.motion.motion == EndMotionKind::kFixed ? BodyKind::kHeld : BodyKind::kDriven;
+    b.motion = MakeEndMotion(d.motion);
+    b.angles = ToVec(d.orientation) * deg;
+    b.mass = d.mass;
+    b.center_of_gravity = ToVec(d.center_of_gravity);
+    b.volume = d.volume;
+    b.center_of_buoyancy = ToVec(d.center_of_buoyancy);
+    b.waterplane_area = d.waterplane_area;
+    b.waterplane_inertia_x = d.waterplane_inertia[0];
+    b.waterplane_inertia_z = d.waterplane_inertia[1];
+    b.force = ToVec(d.force);
+    b.moment = ToVec(d.moment);
+    bodies.push_back(b);
+  }
   std::vector<PointSpec> points;
   for (const PointDef& d : scene.points) {
     PointSpec p;
     p.name = d.name;
+    p.on_body = d.body;
+    if (d.body >= 0) {
+      p.local = ToVec(d.motion.position);
+      points.push_back(p);
+      continue;
+    }
     p.motion = MakeEndMotion(d.motion);
     p.body.mass = d.mass;
     p.body.volume = d.volume;
@@ -158,7 +184,7 @@ SystemModel BuildSystem(const SceneDef& scene) {
     lines.push_back(l);
   }
   try {
-    return MakeSystem(lines, points, MakeEnvironment(scene));
+    return MakeSystem(lines, points, MakeEnvironment(scene), bodies);
   } catch (const Error& e) {
     throw Error(scene.path + ": " + e.what());
   }

@@ -39,7 +39,8 @@ void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::stri
   std::vector<std::tuple<std::string, std::string, const EndDef*>> ends;
   if (scene.is_system()) {
     for (size_t i = 0; i < scene.points.size(); ++i)
-      ends.emplace_back("point " + QuoteText(scene.points[i].name),
+      if (scene.points[i].body < 0)  // a body's point is in its axes
+        ends.emplace_back("point " + QuoteText(scene.points[i].name),
                         "point[" + std::to_string(i) + "]", &scene.points[i].motion);
   } else {
     ends.emplace_back("start end", "ends.start", &scene.start);

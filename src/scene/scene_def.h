@@ -96,6 +96,25 @@ struct PointDef {
   std::array<double, 3> drag_coefficient{};  // free: [C^x, C^y, C^z]
   std::array<double, 3> drag_area{};      // free: [S^x, S^y, S^z] [m^2]
   std::array<double, 3> force{};          // free: a constant force [F_x, F_y, F_z] [N]
+  int body = -1;                          // on a [[body]] (index into SceneDef::bodies): the
+                                          // motion's position is then local, in its axes
+};
+
+// [[body]]: a rigid body of a system carrying points (a platform, a ship): held, driven (its
+// reference point moves as an end does) or free (where its loads balance: statics only).
+struct BodyDef {
+  std::string name;
+  EndDef motion;                          // the reference point's position and motion
+  bool free = false;                      // motion = "free"
+  std::array<double, 3> orientation{};    // [about x, y, z] [deg], turned in that order
+  double mass = 0;                        // free: [kg]
+  std::array<double, 3> center_of_gravity{};   // free: local [m]
+  double volume = 0;                      // free: displaced at rest [m^3]
+  std::array<double, 3> center_of_buoyancy{};  // free: local [m]
+  double waterplane_area = 0;             // free: [m^2]
+  std::array<double, 2> waterplane_inertia{};  // free: about its x and z axes [m^4]
+  std::array<double, 3> force{};          // free: constant [N]
+  std::array<double, 3> moment{};         // free: constant, about the reference point [N m]
 };
 
 // [[line]]: one line of a system, between two points (elastic).
@@ -158,6 +177,7 @@ struct SceneDef {
   // between points. Empty for a single line.
   std::vector<PointDef> points;
   std::vector<LineDef> lines;
+  std::vector<BodyDef> bodies;
   bool is_system() const { return !lines.empty(); }
   InitialStateKind initial = InitialStateKind::kEquilibrium;
   SimulationDef simulation;

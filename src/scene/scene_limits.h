@@ -42,6 +42,10 @@ constexpr double kMaxRao = 1e3;             // m of motion per m of wave amplitu
 constexpr double kMaxWeightMass = 1e9;      // kg
 constexpr double kMaxVolume = 1e6;          // m^3 (volumes, added volumes)
 constexpr double kMaxDragArea = 1e6;        // m^2
+constexpr double kMaxBodyMass = 1e12;       // kg: a body (the largest ships: 1e9)
+constexpr double kMaxBodyVolume = 1e10;     // m^3: its displacement
+constexpr double kMaxArea2D = 1e8;          // m^2: a waterplane
+constexpr double kMaxWaterplaneInertia = 1e16;  // m^4
 constexpr double kMinPeriod = 1e-6, kMaxPeriod = 1e9;  // s
 constexpr double kMaxRampRate = 1e6;        // 1/s
 constexpr double kMaxTime = 1e9;            // s: a duration, |a table's times|

@@ -443,6 +443,20 @@ void ReadPoints(TableReader& top, SceneDef& scene, const std::string& file) {
     PointDef p;
     p.name = ReadName(r, t);
     CheckUnique(r, t, p.name, scene.points, "points");
+    if (t->contains("body")) {  // fixed to a body: its position in the body's axes
+      const std::string body = r.String("body", "", true);
+      for (size_t k = 0; k < scene.bodies.size(); ++k)
+        if (scene.bodies[k].name == body) p.body = static_cast<int>(k);
+      if (p.body < 0)
+        r.Fail(t->get("body"), "body", "expected the name of a [[body]], no body is named " +
+                                           Quote(body));
+      p.motion.position = r.Triple("position", {0, 0, 0}, true, false,
+                                   " in m, in the body's axes ([x, y] or [x, y, z])", kMaxLength,
+                                   TableReader::TwoValues::kZeroZ);
+      r.Finish(" (a point on a body moves with it: it takes name, body and position)");
+      scene.points.push_back(p);
+      continue;
+    }
     const std::string motion = ReadMotion(r, t, p.motion, file, scene);
     if (motion == "free") {
       ReadPrism(r, p.mass, p.volume, p.added_volume, p.drag_coefficient, p.drag_area, false);
@@ -451,6 +465,42 @@ void ReadPoints(TableReader& top, SceneDef& scene, const std::string& file) {
     }
     r.Finish(" (motion = " + Quote(motion) + " uses only the keys it needs)");
     scene.points.push_back(p);
+  }
+}
+
+// [[body]]: the rigid bodies of a system.
+void ReadBodies(TableReader& top, SceneDef& scene, const std::string& file) {
+  const toml::array* arr = top.TableArray("body", false);
+  for (size_t i = 0; arr && i < arr->size(); ++i) {
+    const toml::table* t = arr->get(i)->as_table();
+    TableReader r = top.Child(*t, "body[" + std::to_string(i) + "]");
+    BodyDef b;
+    b.name = ReadName(r, t);
+    CheckUnique(r, t, b.name, scene.bodies, "bodies");
+    const std::string motion = ReadMotion(r, t, b.motion, file, scene);
+    b.free = motion == "free";
+    b.orientation = r.Triple("orientation", {0, 0, 0}, false, false,
+                             " in degrees, about x, y and z", kMaxPhase,
+                             TableReader::TwoValues::kZeroZ);
+    if (b.free) {
+      b.mass = r.OptionalNonNegative("mass", 0.0, " in kg", kMaxBodyMass);
+      b.center_of_gravity = r.Triple("center_of_gravity", {0, 0, 0}, false, false,
+                                     " in m, in the body's axes", kMaxLength,
+                                     TableReader::TwoValues::kZeroZ);
+      b.volume = r.OptionalNonNegative("volume", 0.0, " in m^3", kMaxBodyVolume);
+      b.center_of_buoyancy = r.Triple("center_of_buoyancy", {0, 0, 0}, false, false,
+                                      " in m, in the body's axes", kMaxLength,
+                                      TableReader::TwoValues::kZeroZ);
+      b.waterplane_area = r.OptionalNonNegative("waterplane_area", 0.0, " in m^2", kMaxArea2D);
+      b.waterplane_inertia = r.Pair("waterplane_inertia", {0, 0}, false, true,
+                                    " in m^4, about the body's x and z axes", kMaxWaterplaneInertia);
+      b.force = r.Triple("force", {0, 0, 0}, false, false, " in N", kMaxTension,
+                         TableReader::TwoValues::kZeroZ);
+      b.moment = r.Triple("moment", {0, 0, 0}, false, false, " in N m", kMaxTension,
+                          TableReader::TwoValues::kZeroZ);
+    }
+    r.Finish(" (motion = " + Quote(motion) + " uses only the keys it needs)");
+    scene.bodies.push_back(b);
   }
 }
 
@@ -511,13 +561,14 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
     scene.model = elastic ? CableModelKind::kElastic : CableModelKind::kInextensible;
   }
   ReadMaterials(top, scene, elastic);
-  if (root.contains("line") || root.contains("point")) {
+  if (root.contains("line") || root.contains("point") || root.contains("body")) {
     // A system: [[point]] and [[line]] in place of [cable] and [ends].
     for (const char* single : {"cable", "ends"})
       if (const toml::node* n = root.get(single))
         top.Fail(n, single,
                  "a scene is either one line ([cable] and [ends]) or a system ([[line]] and "
                  "[[point]]); this one has both");
+    ReadBodies(top, scene, file);
     ReadPoints(top, scene, file);
     ReadLines(top, scene);
   } else {

@@ -1,0 +1,131 @@
+#include "app/body_commands.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "app/run_support.h"
+#include "core/body_statics.h"
+#include "core/error.h"
+#include "io/atomic_file.h"
+#include "scene/build_model.h"
+#include "scene/scene_loader.h"
+#include "scene/text_escape.h"
+
+namespace cablefilm {
+namespace {
+
+// The index of the body named `name` (empty: the only one); throws Error naming the choices.
+int FindBody(const SceneDef& scene, const SystemModel& sys, const std::string& name) {
+  if (sys.bodies.empty())
+    throw Error(scene.path + ": the scene has no [[body]]: the quasi-static tools move a body");
+  if (name.empty()) {
+    if (sys.bodies.size() == 1) return 0;
+    throw Error(scene.path + ": the scene has " + std::to_string(sys.bodies.size()) +
+                " bodies: name one with --body");
+  }
+  std::string names;
+  for (size_t b = 0; b < sys.bodies.size(); ++b) {
+    if (sys.bodies[b].name == name) return static_cast<int>(b);
+    names += (b ? ", " : "") + QuoteText(sys.bodies[b].name);
+  }
+  throw Error(scene.path + ": --body: no body is named " + QuoteText(name) + " (the bodies: " +
+              names + ")");
+}
+
+// The shortest line with an end on body b [m].
+double ShortestLineOn(const SystemModel& sys, int b) {
+  double shortest = INFINITY;
+  for (const SystemPoint& p : sys.points)
+    if (p.on_body == b)
+      for (const LineEnd& e : p.ends)
+        shortest = std::min(shortest, sys.lines[e.line].line.total_length());
+  if (!std::isfinite(shortest))
+    throw Error("body \"" + sys.bodies[b].name + "\": no line ends on it");
+  return shortest;
+}
+
+SystemModel LoadSystem(const std::string& scene_path, SceneDef* scene) {
+  *scene = LoadScene(scene_path);
+  if (!scene->is_system())
+    throw Error(scene_path + ": a single line has no body: the quasi-static tools take a system "
+                             "([[line]], [[point]] and [[body]])");
+  return BuildSystem(*scene);
+}
+
+void PrintPose(const char* what, const Vec6& pose) {
+  std::printf("%s: x %.6g m, y %.6g m, z %.6g m, about x %.6g deg, about y %.6g deg, about z "
+              "%.6g deg\n",
+              what, pose[0], pose[1], pose[2], pose[3] * 180 / M_PI, pose[4] * 180 / M_PI,
+              pose[5] * 180 / M_PI);
+}
+
+}  // namespace
+
+int StiffnessCommand(const std::string& scene_path, const std::string& body) {
+  SceneDef scene;
+  const SystemModel sys = LoadSystem(scene_path, &scene);
+  const int b = FindBody(scene, sys, body);
+  InstallSignalHandlers();
+  SystemEquilibriumOptions options;
+  options.cancel = &g_signal;
+  const Vec6 pose = EquilibriumPose(sys, b, options);
+  const double step = 1e-4 * ShortestLineOn(sys, b);
+  const Mat6 K = MooringStiffness(sys, b, pose, step, options);
+  std::printf("body %s\n", QuoteText(sys.bodies[b].name).c_str());
+  PrintPose("pose at equilibrium", pose);
+  std::printf("mooring stiffness K = -dF/dq at that pose (central differences of %.3g m):\n"
+              "rows: Fx, Fy, Fz [N], Mx, My, Mz [N m] about the reference point; columns: x, "
+              "y, z [m], about x, y, z [rad]\n",
+              step);
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j) std::printf("%s%14.6e", j ? " " : "", K(i, j));
+    std::printf("\n");
+  }
+  return 0;
+}
+
+int OffsetCommand(const std::string& scene_path, const OffsetOptions& o) {
+  SceneDef scene;
+  const SystemModel sys = LoadSystem(scene_path, &scene);
+  const int b = FindBody(scene, sys, o.body);
+  InstallSignalHandlers();
+  SystemEquilibriumOptions options;
+  options.cancel = &g_signal;
+  const Vec6 pose = EquilibriumPose(sys, b, options);
+  const double most = o.max_offset >= 0 ? o.max_offset : 0.05 * ShortestLineOn(sys, b);
+  std::vector<double> offsets;
+  for (int k = 0; k < o.points; ++k)
+    offsets.push_back(o.points > 1 ? most * k / (o.points - 1) : most);
+  const std::vector<OffsetPoint> curve =
+      OffsetCurve(sys, b, pose, o.heading * M_PI / 180.0, offsets, options);
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "offset,restoring,fx,fy,fz,mx,my,mz";
+  std::vector<int> on_body;
+  for (size_t i = 0; i < sys.lines.size(); ++i)
+    if (!std::isnan(curve.front().load.end_tension[i])) {
+      on_body.push_back(static_cast<int>(i));
+      csv << ",tension_" << sys.line_names[i];
+    }
+  csv << "\n";
+  for (const OffsetPoint& p : curve) {
+    csv << p.offset << "," << p.restoring;
+    for (int k = 0; k < 6; ++k) csv << "," << p.load.load[k];
+    for (int i : on_body) csv << "," << p.load.end_tension[i];
+    csv << "\n";
+  }
+  std::fprintf(stderr, "body %s from its equilibrium along %.6g deg, offsets 0 to %.6g m\n",
+               QuoteText(sys.bodies[b].name).c_str(), o.heading, most);
+  if (o.out.empty() || o.out == "-") {
+    std::fputs(csv.str().c_str(), stdout);
+    return 0;
+  }
+  AtomicFile file(o.out);
+  std::fputs(csv.str().c_str(), file.stream());
+  file.Commit();
+  std::fprintf(stderr, "wrote %s\n", EscapeText(o.out).c_str());
+  return 0;
+}
+
+}  // namespace cablefilm

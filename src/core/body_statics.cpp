@@ -1,0 +1,69 @@
+#include "core/body_statics.h"
+
+#include <cmath>
+#include <limits>
+
+namespace cablefilm {
+
+Vec6 EquilibriumPose(const SystemModel& sys, int b, const SystemEquilibriumOptions& options) {
+  SystemEquilibriumReport report;
+  SolveSystemEquilibrium(sys, &report, options);
+  return report.body_poses[b];
+}
+
+MooringLoad LoadAtPose(const SystemModel& sys, int b, const Vec6& pose,
+                       const SystemEquilibriumOptions& options) {
+  const SystemModel held = HoldBody(sys, b, pose);
+  MooringLoad out;
+  out.states = SolveSystemEquilibrium(held, nullptr, options);
+  out.load = LinesLoadOnBody(held, out.states, b, pose);
+  out.end_tension.assign(held.lines.size(), std::numeric_limits<double>::quiet_NaN());
+  for (const SystemPoint& p : held.points) {
+    if (p.on_body != b) continue;
+    for (const LineEnd& e : p.ends)
+      out.end_tension[e.line] =
+          StaticStationForce(held.lines[e.line], out.states[e.line], e.station).norm();
+  }
+  return out;
+}
+
+double BodySize(const SystemModel& sys, int b) {
+  double size = 1;
+  for (const SystemPoint& p : sys.points)
+    if (p.on_body == b && !p.ends.empty()) size = std::max(size, p.local.norm());
+  return size;
+}
+
+Mat6 MooringStiffness(const SystemModel& sys, int b, const Vec6& pose, double step,
+                      const SystemEquilibriumOptions& options) {
+  Mat6 K;
+  const double size = BodySize(sys, b);
+  for (int k = 0; k < 6; ++k) {
+    const double h = k < 3 ? step : step / size;
+    Vec6 d = Vec6::Zero();
+    d[k] = h;
+    const Vec6 plus = LoadAtPose(sys, b, pose + d, options).load;
+    const Vec6 minus = LoadAtPose(sys, b, pose - d, options).load;
+    K.col(k) = -(plus - minus) / (2 * h);
+  }
+  return K;
+}
+
+std::vector<OffsetPoint> OffsetCurve(const SystemModel& sys, int b, const Vec6& pose,
+                                     double heading, const std::vector<double>& offsets,
+                                     const SystemEquilibriumOptions& options) {
+  const Vec e = Horizontal(heading);
+  std::vector<OffsetPoint> curve;
+  for (double d : offsets) {
+    Vec6 at = pose;
+    at.head<3>() += d * e;
+    OffsetPoint p;
+    p.offset = d;
+    p.load = LoadAtPose(sys, b, at, options);
+    p.restoring = -p.load.load.head<3>().dot(e);
+    curve.push_back(std::move(p));
+  }
+  return curve;
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,50 @@
+#pragma once
+// The quasi-static tools of a moored body (MoorPy's): the load of the moorings on a body held at
+// a pose, their 6x6 stiffness matrix there, and the offset-restoring curve (the body moved along
+// a heading, its other degrees of freedom held, against the restoring force and the tensions at
+// its lines' ends). Each pose is a static equilibrium of the system (system_equilibrium.h) with
+// the body held there: the lines, the shared points and the other free bodies balance.
+#include <vector>
+
+#include "core/system_equilibrium.h"
+
+namespace cablefilm {
+
+// Body b's pose at the system's equilibrium: a free body's as solved, another's at rest.
+Vec6 EquilibriumPose(const SystemModel& sys, int b, const SystemEquilibriumOptions& options = {});
+
+struct MooringLoad {
+  Vec6 load = Vec6::Zero();  // the lines' force [N] and moment about the reference point [N m]
+  // Per line: the load at its end on the body (the end station's force: its end link's tension
+  // and lumped share, as points.csv reports a fairlead's) [N]; NaN for a line not on the body.
+  std::vector<double> end_tension;
+  std::vector<State> states;  // the lines' equilibrium
+};
+
+// The moorings' load on body b held at `pose`.
+MooringLoad LoadAtPose(const SystemModel& sys, int b, const Vec6& pose,
+                       const SystemEquilibriumOptions& options = {});
+
+// K = -d(load)/d(pose) at `pose` [N/m, N/rad, N m/m, N m/rad] by central differences: steps of
+// `step` [m] in translation and step / (the body's size) [rad] in rotation (a turn moving its
+// farthest point as far). The moorings' stiffness only: the body's hydrostatics are its own.
+Mat6 MooringStiffness(const SystemModel& sys, int b, const Vec6& pose, double step,
+                      const SystemEquilibriumOptions& options = {});
+
+struct OffsetPoint {
+  double offset = 0;     // along the heading [m]
+  double restoring = 0;  // the load's horizontal force against the heading [N]
+  MooringLoad load;
+};
+
+// Body b moved from `pose` by each of `offsets` [m] along the horizontal heading [rad] from +x
+// towards +z, its other degrees of freedom held.
+std::vector<OffsetPoint> OffsetCurve(const SystemModel& sys, int b, const Vec6& pose,
+                                     double heading, const std::vector<double>& offsets,
+                                     const SystemEquilibriumOptions& options = {});
+
+// The largest distance from body b's reference point to a point on it where a line ends, at
+// least 1 m: its size, as the stiffness's rotation steps use it.
+double BodySize(const SystemModel& sys, int b);
+
+}  // namespace cablefilm
