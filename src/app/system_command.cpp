@@ -8,6 +8,7 @@
 #include "app/progress.h"
 #include "app/run_support.h"
 #include "core/error.h"
+#include "io/bodies_file.h"
 #include "io/netcdf_results.h"
 #include "io/points_file.h"
 #include "io/result_files.h"
@@ -151,8 +152,13 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
     line_sinks[i] = {f.series.get(), f.results.get()};
   }
   PointsWriter points(out_dir + "/points.csv", sys, run.inputs);
+  std::unique_ptr<BodiesWriter> bodies;
+  if (!sys.bodies.empty())
+    bodies = std::make_unique<BodiesWriter>(out_dir + "/body.csv", sys, run.inputs);
   SystemProgress progress(run.grid.end());
-  ExecuteSystemRun(run, line_sinks, {&points, &progress});
+  std::vector<SystemRowSink*> sinks = {&points, &progress};
+  if (bodies) sinks.push_back(bodies.get());
+  ExecuteSystemRun(run, line_sinks, sinks);
   progress.Finish();
   const RunSummary& s = run.summary;
   if (report) report->summary = s;
@@ -162,6 +168,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
       f.results->CommitPartial(f.dir + "/results.partial.nc");
     }
     points.CommitPartial(out_dir + "/points.partial.csv");
+    if (bodies) bodies->CommitPartial(out_dir + "/body.partial.csv");
     const std::string where = "the rows up to then are in " + EscapeText(out_dir) +
                               "/points.partial.csv and lines/*/timeseries.partial.csv";
     if (!s.failure.empty()) throw Error(s.failure + "; " + where);
@@ -173,6 +180,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
     f.results->Commit();
   }
   points.Commit();
+  if (bodies) bodies->Commit();
   for (int i = 0; i < nl; ++i) WriteRunReport(files[i].dir + "/run_report.toml", run.lines[i]);
   WriteRunReport(out_dir + "/run_report.toml", s);
   std::printf("simulated %.6g s in %.3g s of computer time: %s\n", s.duration, s.wall,
@@ -183,8 +191,9 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
                 s.peak, s.peak_t, QuoteText(sys.line_names[run.peak_line]).c_str(), s.peak_link,
                 s.rows, run.grid.interval);
   for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());
-  std::printf("wrote %s/points.csv, %s/run_report.toml and lines/<name>/ for %d line(s)\n",
-              EscapeText(out_dir).c_str(), EscapeText(out_dir).c_str(), nl);
+  std::printf("wrote %s/points.csv,%s %s/run_report.toml and lines/<name>/ for %d line(s)\n",
+              EscapeText(out_dir).c_str(), bodies ? " body.csv," : "",
+              EscapeText(out_dir).c_str(), nl);
   const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
   if (film)
     std::printf("note: the film and max_tension.png are drawn for single lines; a system's "

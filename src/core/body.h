@@ -50,6 +50,9 @@ struct BodySpec {
   Vec6 added_mass = Vec6::Zero();
   Vec6 linear_damping = Vec6::Zero();
   Vec6 quadratic_damping = Vec6::Zero();
+  // Where a free body starts a run, from its equilibrium [m, rad] (the lines in equilibrium
+  // with it held there): a decay test.
+  Vec6 initial_offset = Vec6::Zero();
 };
 
 // R(theta): about x, then y, then z.

@@ -1,6 +1,7 @@
 #include "core/system_equilibrium.h"
 
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -268,7 +269,9 @@ std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibr
       throw Error(os.str());
     }
     ThrowIfCancelled(options.cancel, "the system's static equilibrium");
-    Eigen::VectorXd dX = J.partialPivLu().solve(-R);
+    // The least-squares step of least size: a direction nothing stiffens (a body's yaw on one
+    // mooring point, its turns when its lines meet at its reference) stays where it is.
+    Eigen::VectorXd dX = J.completeOrthogonalDecomposition().solve(-R);
     for (const Unknowns::Group& g : u.groups) {  // at most a tenth of the shortest line
       const double most = 0.1 * g.limit;
       const double size = dX.segment<kDim>(g.offset).norm();

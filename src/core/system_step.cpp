@@ -313,6 +313,14 @@ SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOp
     sd.newton_tolerance = std::min(sd.newton_tolerance, sd.lines[i].scratch.newton_tolerance);
   }
   for (int b : sys.free_bodies) {
+    const BodySpec& body = sys.bodies[b];
+    Vec6 inertia;
+    inertia << Vec::Constant(body.mass), body.inertia;
+    inertia += body.added_mass;
+    if (!(inertia.minCoeff() > 0))
+      throw Error("body \"" + body.name + "\" is free: to move in time it needs a mass and "
+                  "moments of inertia (with its added mass, above 0 in each of its six degrees "
+                  "of freedom)");
     BodyMotion m;
     m.q = m.tq = sys.body_poses[b];
     for (const SystemPoint& p : sys.points)

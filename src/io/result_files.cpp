@@ -31,7 +31,7 @@ void RemoveEarlierResults(const std::string& out_dir) {
         "max_tension.png", "max_tension.partial.png", "run_report.toml",
         "run_report_inextensible.toml", "results.nc", "results.partial.nc",
         "results_inextensible.nc", "results_inextensible.partial.nc", "points.csv",
-        "points.partial.csv"})
+        "points.partial.csv", "body.csv", "body.partial.csv"})
     stale.push_back(fs::path(out_dir) / name);
   std::error_code ec;
   // A system's lines, each in lines/<name>/ with a line's own files.

@@ -39,10 +39,29 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
   SystemEquilibriumOptions options;
   options.cancel = stop;
   const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<State> states = SolveSystemEquilibrium(run.sys, &run.equilibrium, options);
+  std::vector<State> states = SolveSystemEquilibrium(run.sys, &run.equilibrium, options);
+  // A free body given an initial offset starts there, its lines in equilibrium with it held
+  // (a decay test); the others at their equilibrium.
+  SystemModel held = run.sys;
+  bool offset = false;
+  for (int b : run.sys.free_bodies) {
+    const Vec6 start = run.equilibrium.body_poses[b] + run.sys.bodies[b].initial_offset;
+    PlaceBody(run.sys, b, start);
+    if (run.sys.bodies[b].initial_offset == Vec6::Zero()) continue;
+    held = HoldBody(held, b, start);
+    offset = true;
+  }
+  if (offset) {
+    try {
+      states = SolveSystemEquilibrium(held, nullptr, options);
+    } catch (const CancelledError&) {
+      throw;
+    } catch (const Error& e) {
+      throw Error(scene.path + ": with the bodies at their initial offsets: " + e.what());
+    }
+  }
   run.equilibrium_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  for (int b : run.sys.free_bodies) PlaceBody(run.sys, b, run.equilibrium.body_poses[b]);
   run.initial = MakeSystemData(run.sys, run.inputs, run.grid.options, states);
   run.lines.resize(run.sys.lines.size());
   for (size_t i = 0; i < run.lines.size(); ++i)

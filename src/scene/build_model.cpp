@@ -152,6 +152,13 @@ SystemModel BuildSystem(const SceneDef& scene) {
     b.waterplane_inertia_z = d.waterplane_inertia[1];
     b.force = ToVec(d.force);
     b.moment = ToVec(d.moment);
+    b.inertia = ToVec(d.inertia);
+    for (int k = 0; k < 6; ++k) {
+      b.added_mass[k] = d.added_mass[k];
+      b.linear_damping[k] = d.linear_damping[k];
+      b.quadratic_damping[k] = d.quadratic_damping[k];
+      b.initial_offset[k] = d.initial_offset[k] * (k < 3 ? 1.0 : deg);
+    }
     bodies.push_back(b);
   }
   std::vector<PointSpec> points;

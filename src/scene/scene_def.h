@@ -115,6 +115,12 @@ struct BodyDef {
   std::array<double, 2> waterplane_inertia{};  // free: about its x and z axes [m^4]
   std::array<double, 3> force{};          // free: constant [N]
   std::array<double, 3> moment{};         // free: constant, about the reference point [N m]
+  std::array<double, 3> inertia{};        // free: about the centre of gravity [kg m^2]
+  std::array<double, 6> added_mass{};     // free: [kg] x3, [kg m^2] x3
+  std::array<double, 6> linear_damping{};     // free: [N s/m] x3, [N m s] x3
+  std::array<double, 6> quadratic_damping{};  // free: [N s^2/m^2] x3, [N m s^2] x3
+  std::array<double, 6> initial_offset{};     // free: from its equilibrium at t = 0, [m] x3,
+                                              // [deg] x3 (a decay test)
 };
 
 // [[line]]: one line of a system, between two points (elastic).

@@ -46,6 +46,7 @@ constexpr double kMaxBodyMass = 1e12;       // kg: a body (the largest ships: 1e
 constexpr double kMaxBodyVolume = 1e10;     // m^3: its displacement
 constexpr double kMaxArea2D = 1e8;          // m^2: a waterplane
 constexpr double kMaxWaterplaneInertia = 1e16;  // m^4
+constexpr double kMaxBodyInertia = 1e18;    // kg m^2 (and a body's added mass and damping)
 constexpr double kMinPeriod = 1e-6, kMaxPeriod = 1e9;  // s
 constexpr double kMaxRampRate = 1e6;        // 1/s
 constexpr double kMaxTime = 1e9;            // s: a duration, |a table's times|

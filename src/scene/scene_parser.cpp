@@ -468,6 +468,26 @@ void ReadPoints(TableReader& top, SceneDef& scene, const std::string& file) {
   }
 }
 
+// Six numbers per degree of freedom of a body (x, y, z, about x, y, z), each >= 0 when
+// `non_negative`, within `limit`.
+std::array<double, 6> ReadSix(TableReader& r, const std::string& key, bool non_negative,
+                              const std::string& units, double limit) {
+  std::array<double, 6> out{};
+  const toml::node* n = r.Get(key);
+  if (!n) return out;
+  const std::string what = "an array of six " +
+                           std::string(non_negative ? "numbers >= 0" : "numbers") + " (x, y, z, "
+                           "about x, y, z) " + units + " up to " + TableReader::Fmt(limit);
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != 6) r.Fail(n, key, "expected " + what);
+  for (size_t i = 0; i < 6; ++i) {
+    out[i] = r.Number(key, a->get(i), what);
+    if (!(std::abs(out[i]) <= limit) || (non_negative && out[i] < 0))
+      r.Fail(n, key, "expected " + what + ", got " + TableReader::Fmt(out[i]));
+  }
+  return out;
+}
+
 // [[body]]: the rigid bodies of a system.
 void ReadBodies(TableReader& top, SceneDef& scene, const std::string& file) {
   const toml::array* arr = top.TableArray("body", false);
@@ -498,6 +518,16 @@ void ReadBodies(TableReader& top, SceneDef& scene, const std::string& file) {
                          TableReader::TwoValues::kZeroZ);
       b.moment = r.Triple("moment", {0, 0, 0}, false, false, " in N m", kMaxTension,
                           TableReader::TwoValues::kZeroZ);
+      b.inertia = r.Triple("inertia", {0, 0, 0}, false, true,
+                           " in kg m^2, about its centre of gravity along its x, y, z axes",
+                           kMaxBodyInertia, TableReader::TwoValues::kZLikeX);
+      b.added_mass = ReadSix(r, "added_mass", true, "in kg and kg m^2", kMaxBodyInertia);
+      b.linear_damping =
+          ReadSix(r, "linear_damping", true, "in N s/m and N m s", kMaxBodyInertia);
+      b.quadratic_damping =
+          ReadSix(r, "quadratic_damping", true, "in N s^2/m^2 and N m s^2", kMaxBodyInertia);
+      b.initial_offset =
+          ReadSix(r, "initial_offset", false, "in m and degrees", kMaxPhase);
     }
     r.Finish(" (motion = " + Quote(motion) + " uses only the keys it needs)");
     scene.bodies.push_back(b);

@@ -23,65 +23,13 @@
 namespace cablefilm {
 namespace {
 
+using testing::GroundedCatenary;
+using testing::SolveGroundedCatenary;
 using testing::UniformCable;
 
 constexpr double kG = 9.80665;
 
 // ---------------------------------------------------------------------------------------------
-// The elastic catenary with a grounded portion (frictionless bed), from its closed form alone:
-// the anchor on the bed at the origin, the fairlead at (X, h). The grounded part, of unstretched
-// length Lb, lies flat and carries the horizontal tension H all along (no friction); the
-// suspended part, of Ls = L - Lb, leaves the bed tangentially (V = 0 at touchdown), so it is the
-// elastic catenary of Irvine (1981) from its lowest point:
-//   x_s = H Ls / EA + (H / w) asinh(w Ls / H)
-//   h   = w Ls^2 / (2 EA) + (H / w) (sqrt(1 + (w Ls / H)^2) - 1)
-//   X   = Lb (1 + H / EA) + x_s
-// Anchor tension H, fairlead tension sqrt(H^2 + (w Ls)^2), touchdown at x = Lb (1 + H / EA).
-struct GroundedCatenary {
-  double H = 0, Lb = 0;  // [N], [m unstretched]
-  double L = 0, w = 0, EA = 0;
-  double fairlead_tension() const { return std::hypot(H, w * (L - Lb)); }
-  double touchdown_x() const { return Lb * (1.0 + H / EA); }
-};
-
-GroundedCatenary SolveGroundedCatenary(double L, double w, double EA, double X, double h) {
-  auto height = [&](double H, double Ls) {
-    const double r = w * Ls / H;
-    return w * Ls * Ls / (2 * EA) + (H / w) * (r * r / (std::sqrt(1 + r * r) + 1));
-  };
-  // For a suspended length Ls, the H that lifts it to h (height falls as H grows).
-  auto tension_for = [&](double Ls) {
-    double lo = 1e-12, hi = 1e15;
-    for (int i = 0; i < 400; ++i) {
-      const double mid = std::sqrt(lo * hi);
-      (height(mid, Ls) > h ? lo : hi) = mid;
-      if (hi / lo - 1 < 1e-15) break;
-    }
-    return std::sqrt(lo * hi);
-  };
-  auto span = [&](double Ls) {
-    const double H = tension_for(Ls);
-    return (L - Ls) * (1 + H / EA) + H * Ls / EA + (H / w) * std::asinh(w * Ls / H) - X;
-  };
-  // The span grows with the suspended length (a longer suspended part is flatter): bisection
-  // between the line hanging straight down (Ls ~ h) and all of it suspended.
-  double lo = h * (1 + 1e-9), hi = L;
-  EXPECT_LT(span(lo), 0);
-  EXPECT_GT(span(hi), 0) << "the line is too long: no grounded part would lift";
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (span(mid) < 0 ? lo : hi) = mid;
-  }
-  GroundedCatenary c;
-  const double Ls = 0.5 * (lo + hi);
-  c.H = tension_for(Ls);
-  c.Lb = L - Ls;
-  c.L = L;
-  c.w = w;
-  c.EA = EA;
-  return c;
-}
-
 // A chain mooring line in 100 m of water: 500 m of 76 mm studless chain (115 kg/m, displacing
 // 0.01465 m^3/m of steel, EA = 5.4e8 N), fairlead 450 m from the anchor, 100 m above the bed.
 struct MooringCase {
