@@ -941,5 +941,58 @@ TEST(SceneLoader, SystemErrors) {
               {"expected"});
 }
 
+// The system with its fairlead on a free body.
+const std::string kBodyPoint = R"([[body]]
+name = "buoy"
+motion = "free"
+position = [70.0, 0.0, 10.0]
+orientation = [0.0, 90.0, 0.0]
+mass = 2.0e4
+volume = 30.0
+inertia = [1.0e5, 2.0e5]
+added_mass = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
+initial_offset = [1.0, 0.0, 0.0, 0.0, 0.0, 10.0]
+
+[[point]]
+name = "fairlead"
+body = "buoy"
+position = [2.0, -1.0, 0.0])";
+
+std::string BodySystem() {
+  return SystemWith("[[point]]\nname = \"fairlead\"\nposition = [70.0, 0.0, 10.0]", kBodyPoint);
+}
+
+TEST(SceneLoader, BodyLoads) {
+  const SceneDef s = ParseScene(BodySystem(), kFile);
+  ASSERT_EQ(s.bodies.size(), 1u);
+  EXPECT_TRUE(s.bodies[0].free);
+  EXPECT_EQ(s.points[2].body, 0);
+  EXPECT_EQ(s.points[2].motion.position[0], 2.0);
+  EXPECT_EQ(s.bodies[0].inertia[2], 1.0e5);  // [x, y]: z like x
+  EXPECT_EQ(s.bodies[0].added_mass[5], 6.0);
+  const SystemModel sys = BuildSystem(s);
+  ASSERT_EQ(sys.free_bodies.size(), 1u);
+  EXPECT_EQ(sys.points[2].kind, PointKind::kBody);
+  EXPECT_NEAR(sys.bodies[0].initial_offset[5], 10 * M_PI / 180, 1e-15);
+  // Turned 90 degrees about y (from +x towards -z): the local (2, -1, 0) is at (0, -1, -2).
+  EXPECT_LT((sys.points[2].motion.rest() - Vec(70.0, -1.0, 8.0)).norm(), 1e-12);
+}
+
+TEST(SceneLoader, BodyErrors) {
+  ExpectError(With("body = \"buoy\"", "body = \"boy\"", BodySystem()), "point[2].body",
+              {"no body is named \"boy\""});
+  // A point on a body moves with it: no motion of its own.
+  ExpectError(With("body = \"buoy\"", "body = \"buoy\"\nmotion = \"free\"", BodySystem()),
+              "point[2].motion", {"unknown key", "moves with it"});
+  ExpectError(With("added_mass = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]", "added_mass = [1.0, 2.0]",
+                   BodySystem()),
+              "body[0].added_mass", {"six"});
+  ExpectError(With("mass = 2.0e4", "mass = -1.0", BodySystem()), "body[0].mass", {"expected"});
+  // A held body has no mass of its own to balance.
+  ExpectError(With("motion = \"free\"\nposition = [70.0, 0.0, 10.0]", "position = [70.0, 0.0, 10.0]",
+                   BodySystem()),
+              "body[0].added_mass", {"unknown key", "motion = \"fixed\""});
+}
+
 }  // namespace
 }  // namespace cablefilm

@@ -3,7 +3,7 @@ at a free point, run by `cablefilm run`, against clump_line.toml, the same chain
 with the clump as a weight (today's single line, which the rest of the suite checks against
 closed forms and MoorDyn). Checks the scene's reading ([[point]] and [[line]], the point's
 mass, buoyancy, added mass and drag), the system's statics and step, and the files it writes
-(lines/<name>/, points.csv)."""
+(lines/<name>/, points.csv); and a free body's files and quasi-static tools."""
 import argparse
 import csv
 import io
@@ -69,6 +69,56 @@ def moordyn_file(args, tmp):
     return failures
 
 
+def body_tools(args, tmp):
+    """A free body (scenes/floating_platform.toml: a 200 kN steady wind): at its equilibrium
+    the moorings' restoring force is the wind (to the statics' 1e-9 of the 1.5 MN load scale:
+    1e-3 N; bound 1 N); `stiffness`'s surge term is the slope of `offset`'s curve (the curve's
+    forward difference over 0.05 m, its curvature K' ~ K / 10 m making it 0.25 % steeper: bound
+    1 %); `run` writes body.csv, starting at the equilibrium plus the initial offset (5 m), and
+    the errors name what is wrong."""
+    scene = args.source_dir / "scenes" / "floating_platform.toml"
+    failures = []
+    curve = tmp / "curve.csv"
+
+    def cli(*words):
+        return subprocess.run([args.cablefilm, *map(str, words)], capture_output=True,
+                              text=True, timeout=300)
+
+    done = cli("offset", scene, "--max", "0.05", "--points", "2", "-o", curve)
+    if done.returncode != 0:
+        return [f"offset: exit {done.returncode}: {done.stderr[-300:]}"]
+    rows = table(curve)
+    if list(rows[0]) != ["offset", "restoring", "fx", "fy", "fz", "mx", "my", "mz",
+                         "tension_leg1", "tension_leg2", "tension_leg3"]:
+        failures.append(f"offset's columns: {list(rows[0])}")
+    wind = 2.0e5
+    if not abs(float(rows[0]["restoring"]) - wind) <= 1.0:
+        failures.append(f"restoring at the equilibrium {rows[0]['restoring']} N, the wind {wind} N")
+    slope = (float(rows[1]["restoring"]) - float(rows[0]["restoring"])) / 0.05
+    done = cli("stiffness", scene)
+    matrix = [line.split() for line in done.stdout.splitlines()[-6:]]
+    if done.returncode != 0 or len(matrix) != 6:
+        return failures + [f"stiffness: exit {done.returncode}: {done.stdout[-300:]}"]
+    kxx = float(matrix[0][0])
+    print(f"surge stiffness {kxx:.6g} N/m, the offset curve's slope {slope:.6g} N/m")
+    if not abs(slope - kxx) <= 0.01 * kxx:
+        failures.append(f"stiffness K_xx {kxx} N/m against the curve's slope {slope} N/m")
+    run(args.cablefilm, scene, tmp / "platform")
+    body = table(tmp / "platform" / "body.csv")
+    eq = re.search(r'body "platform" at \(([-0-9.e+]+),', cli("check", scene).stdout)
+    if len(body) != 601 or eq is None:
+        failures.append(f"body.csv has {len(body)} rows (601 expected); check said {eq}")
+    elif not abs(float(body[0]["x"]) - (float(eq.group(1)) + 5.0)) <= 1e-4:  # check's 6 digits
+        failures.append(f"body.csv starts at x = {body[0]['x']}, not the equilibrium + 5 m")
+    for words, expected in ((("stiffness", args.source_dir / "scenes" / "polachek1963.toml"),
+                             "a single line has no body"),
+                            (("offset", scene, "--body", "hull"), 'no body is named "hull"')):
+        done = cli(*words)
+        if done.returncode != 1 or expected not in done.stderr:
+            failures.append(f"{words[0]}: exit {done.returncode}, said {done.stderr[-200:]!r}")
+    return failures
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--cablefilm", required=True)
@@ -118,6 +168,7 @@ def main():
             failures.append(f"points.csv's clump at t = 0 is {gap:.3g} m from the line's end")
         failures += moordyn_file(args, pathlib.Path(tmp))
         failures += default_accuracy(args, pathlib.Path(tmp))
+        failures += body_tools(args, pathlib.Path(tmp))
     for f in failures:
         print("FAIL:", f)
     print("FAIL" if failures else "ok")
