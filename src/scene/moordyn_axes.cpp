@@ -1,5 +1,6 @@
 #include "scene/moordyn_axes.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cablefilm {
@@ -47,6 +48,24 @@ MoorDynVec MoorDynBodyPoint(const MoorDynBody& body, const MoorDynVec& p) {
   const MoorDynVec r =
       RotateX(body.rotation[0], RotateY(body.rotation[1], RotateZ(body.rotation[2], p)));
   return {body.position[0] + r[0], body.position[1] + r[1], body.position[2] + r[2]};
+}
+
+MoorDynVec MoorDynAnglesToCablefilm(const MoorDynVec& rpy) {
+  if (rpy[0] == 0 && rpy[1] == 0) return {0.0, rpy[2], 0.0};  // exact for the usual yaw alone
+  // The turn's matrix in cablefilm's axes, column k: MoorDyn's R applied to the MoorDyn vector
+  // that is cablefilm's axis k, mapped back.
+  const MoorDynVec axes[3] = {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}};  // cablefilm x, y, z in MoorDyn's
+  double R[3][3];
+  for (int k = 0; k < 3; ++k) {
+    const MoorDynVec v = MoorDynToCablefilm(
+        RotateX(rpy[0], RotateY(rpy[1], RotateZ(rpy[2], axes[k]))));
+    for (int i = 0; i < 3; ++i) R[i][k] = v[i];
+  }
+  // R = Rz(c) Ry(b) Rx(a): R[2][0] = -sin b, R[2][1] = cos b sin a, R[2][2] = cos b cos a,
+  // R[1][0] = sin c cos b, R[0][0] = cos c cos b.
+  const double deg = 180.0 / M_PI;
+  const double b = std::asin(std::max(-1.0, std::min(1.0, -R[2][0])));
+  return {std::atan2(R[2][1], R[2][2]) * deg, b * deg, std::atan2(R[1][0], R[0][0]) * deg};
 }
 
 MoorDynVec MoorDynPointPosition(const MoorDynSystem& system, const MoorDynPoint& point) {

@@ -21,6 +21,11 @@ MoorDynVec MoorDynToCablefilm(const MoorDynVec& p);
 // positive yaw turns the bow to port +y).
 MoorDynVec MoorDynBodyPoint(const MoorDynBody& body, const MoorDynVec& p);
 
+// A body's angles (r0, p0, y0 [deg], R = Rx(r0) Ry(p0) Rz(y0) in MoorDyn's axes) as
+// cablefilm's [about x, about y, about z] [deg] (R = Rz Ry Rx in its axes, the same turn): a
+// yaw alone is a turn about cablefilm's y by the same angle.
+MoorDynVec MoorDynAnglesToCablefilm(const MoorDynVec& rpy);
+
 // A point's position in MoorDyn's global frame: as given, or through its body's pose for a
 // Body#N point (whose body must be defined).
 MoorDynVec MoorDynPointPosition(const MoorDynSystem& system, const MoorDynPoint& point);

@@ -49,15 +49,6 @@ void CheckSystem(const MoorDynSystem& system, const std::string& file) {
   CheckMoorDynReferences(file, &copy);
 }
 
-// cablefilm has no free (6-DOF) body yet: a file that has one cannot be run as it means.
-void RefuseFreeBodies(const MoorDynSystem& system, const std::string& file) {
-  for (const MoorDynBody& b : system.bodies)
-    if (b.attachment == MoorDynAttachment::kFree)
-      throw Error(file + ":" + std::to_string(b.line) + ": BODIES row " + std::to_string(b.id) +
-                  ", column Attachment: free bodies are not supported yet; expected Fixed or "
-                  "Coupled (a body whose pose is given)");
-}
-
 void WriteMaterial(const MoorDynLineType& t, MoorDynTomlOut* out) {
   const double area = M_PI * t.diameter * t.diameter / 4;  // m^2
   const std::string name = "LINE TYPES \"" + t.name + "\": ";
@@ -99,14 +90,10 @@ const char* AttachmentName(MoorDynAttachment a) {
 }
 
 // Why a point not free is fixed where it is written.
-std::string FixedReason(const MoorDynSystem& system, const MoorDynPoint& p) {
+std::string FixedReason(const MoorDynPoint& p) {
   if (p.attachment == MoorDynAttachment::kCoupled)
     return "Coupled: moved by MoorDyn's calling program; with no motion given it stays here";
-  if (p.attachment != MoorDynAttachment::kBody) return "Fixed";
-  const MoorDynBody& b = system.bodies[static_cast<std::size_t>(p.body - 1)];
-  return "Body" + std::to_string(p.body) + " (" + AttachmentName(b.attachment) + ", at " +
-         Triple(b.position) + ", r0 p0 y0 " + Triple(b.rotation) + " deg): fixed at the body's "
-         "pose; body frame " + Triple(p.position) + ", R = Rx(r0) Ry(p0) Rz(y0)";
+  return "Fixed";
 }
 
 // A free point's mass, buoyancy, added mass and drag, only those that are not 0: MoorDyn's
@@ -131,8 +118,16 @@ void WritePoint(const MoorDynSystem& system, const MoorDynPoint& p, MoorDynTomlO
   out->text << "\n[[point]]                         # "
             << EscapeText(Row("POINTS", p.id, p.line)) << "\n";
   out->Key("name", TomlString(std::to_string(p.id)), "MoorDyn's point ID");
+  if (p.attachment == MoorDynAttachment::kBody) {  // in the body's axes, moving with it
+    const MoorDynBody& b = system.bodies[static_cast<std::size_t>(p.body - 1)];
+    out->Key("body", TomlString(std::to_string(p.body)),
+             "Body" + std::to_string(p.body) + " (" + AttachmentName(b.attachment) + ")");
+    out->Key("position", Vector(MoorDynToCablefilm(p.position)),
+             "MoorDyn's body frame " + Triple(p.position) + "; at rest " + Triple(global));
+    return;
+  }
   out->Key("motion", TomlString(free ? "free" : "fixed"),
-           free ? "Free" : FixedReason(system, p));
+           free ? "Free" : FixedReason(p));
   out->Key("position", Vector(MoorDynToCablefilm(global)),
            "MoorDyn " + Triple(global) + (free ? ", a first guess" : ""));
   if (free) WriteFreePoint(p, out);
@@ -149,18 +144,6 @@ void WriteLine(const MoorDynLine& l, MoorDynTomlOut* out) {
   out->Key("material", TomlString(l.type), "LineType");
   out->Key("length", TomlNumber(l.length), "UnstrLen, m");
   out->Key("segments", std::to_string(l.segments), "NumSegs");
-}
-
-void WriteBodies(const MoorDynSystem& system, MoorDynTomlOut* out) {
-  if (system.bodies.empty()) return;
-  out->text << "\n";
-  for (const MoorDynBody& b : system.bodies)
-    out->Comment(Row("BODIES", b.id, b.line) + ": " + AttachmentName(b.attachment) + " body " +
-                 std::to_string(b.id) + " at " + Triple(b.position) + ", r0 p0 y0 " +
-                 Triple(b.rotation) + " deg: not a scene object yet; its points are fixed at "
-                 "its pose" + (b.attachment == MoorDynAttachment::kCoupled
-                                   ? " (MoorDyn's calling program would move it)"
-                                   : ""));
 }
 
 std::string Header(const MoorDynSystem& system, const std::vector<std::string>& warnings) {
@@ -181,10 +164,9 @@ std::string MoorDynToToml(const MoorDynSystem& system, std::vector<std::string>*
   MoorDynTomlOut out;
   out.file = EscapeText(system.file);
   CheckSystem(system, out.file);
-  RefuseFreeBodies(system, out.file);
   WriteMoorDynEnvironment(system, &out);
   for (const MoorDynLineType& t : system.line_types) WriteMaterial(t, &out);
-  WriteBodies(system, &out);
+  WriteMoorDynBodies(system, MoorDynDensity(system), &out);
   for (const MoorDynPoint& p : system.points) WritePoint(system, p, &out);
   for (const MoorDynLine& l : system.lines) WriteLine(l, &out);
   std::vector<std::string> all = system.warnings;

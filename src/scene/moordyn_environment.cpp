@@ -157,6 +157,10 @@ void NoteOptions(const MoorDynSystem& system, MoorDynTomlOut* out) {
 
 }  // namespace
 
+double MoorDynDensity(const MoorDynSystem& system) {
+  return OptionOr(system, MoorDynOptionKind::kDensity, kDefaultDensity, "rho").value;
+}
+
 void WriteMoorDynEnvironment(const MoorDynSystem& system, MoorDynTomlOut* out) {
   WriteEnvironment(system, out);
   WriteSeabed(system, out);

@@ -27,4 +27,11 @@ struct MoorDynTomlOut {
 // [environment] and [seabed] from OPTIONS, and a comment (or a warning) for every option.
 void WriteMoorDynEnvironment(const MoorDynSystem& system, MoorDynTomlOut* out);
 
+// The fluid density the file gives, or MoorDyn's default [kg/m^3].
+double MoorDynDensity(const MoorDynSystem& system);
+
+// [[body]] for each of BODIES (moordyn_bodies.cpp), with the fluid density rho [kg/m^3] for
+// their added mass and drag.
+void WriteMoorDynBodies(const MoorDynSystem& system, double rho, MoorDynTomlOut* out);
+
 }  // namespace cablefilm

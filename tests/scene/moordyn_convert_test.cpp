@@ -9,9 +9,12 @@
 #include <toml++/toml.h>
 #include <vector>
 
+#include "core/body.h"
 #include "core/error.h"
 #include "scene/moordyn_axes.h"
+#include "scene/build_model.h"
 #include "scene/moordyn_convert.h"
+#include "scene/scene_parser.h"
 #include "scene/toml_text.h"
 
 namespace cablefilm {
@@ -190,20 +193,54 @@ TEST(MoorDynConvert, BodyPointsAreFixedAtTheBodysPose) {
   system.lines.push_back({14, 1, "chain", 1, 2, 550, 20});
   const Converted c = Convert(system);
   const auto p = Named(c.scene, "point", "2");
-  EXPECT_EQ(p["motion"].value<std::string>(), "fixed");
-  ExpectNear(Vec(p["position"]), {10, -5, -21}, 1e-15);  // MoorDyn (10, 21, -5)
+  EXPECT_EQ(p["body"].value<std::string>(), "1");  // on the body, in its axes
+  ExpectNear(Vec(p["position"]), {1, 0, 0}, 0);
+  const auto held = Named(c.scene, "body", "1");
+  EXPECT_EQ(held["motion"].value<std::string>(), "fixed");
+  ExpectNear(Vec(held["orientation"]), {0, 90, 0}, 0);  // a yaw: about cablefilm's y
+  // Where the body puts it: MoorDyn (10, 21, -5) is cablefilm's (10, -5, -21).
+  const SceneDef scene = ParseScene(c.text, "sys.toml");
+  EXPECT_LT((BuildSystem(scene).points[1].motion.rest() - Eigen::Vector3d(10, -5, -21)).norm(),
+            1e-14);
   // No WtrDpth: MoorDyn's default 0, lowered to the deepest point (the anchor), as MoorDyn.
   EXPECT_EQ(Num(c.scene["seabed"]["y"]), -150.0);
 
+  // A free body: its mass, inertia and centre of gravity in cablefilm's axes.
   system.bodies[0].attachment = MoorDynAttachment::kFree;
-  try {
-    MoorDynToToml(system, nullptr);
-    FAIL() << "a free body was converted";
-  } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("sys.txt:9: BODIES row 1, column Attachment: free "
-                                          "bodies are not supported yet; expected Fixed or "
-                                          "Coupled", 0),
-              0u) << e.what();
+  system.bodies[0].mass = 1000;
+  system.bodies[0].cg = {0, 0.5, -2};
+  system.bodies[0].inertia = {10, 20, 30};
+  system.bodies[0].volume = 2;
+  system.bodies[0].ca = {1, 0.5, 0.25};
+  const Converted f = Convert(system);
+  const auto free = Named(f.scene, "body", "1");
+  EXPECT_EQ(free["motion"].value<std::string>(), "free");
+  ExpectNear(Vec(free["center_of_gravity"]), {0, -2, -0.5}, 0);
+  ExpectNear(Vec(free["inertia"]), {10, 30, 20}, 0);
+  EXPECT_EQ(Num(free["added_mass"][1]), 1025.0 * 0.25 * 2);  // MoorDyn's z: cablefilm's y
+  EXPECT_EQ(BuildSystem(ParseScene(f.text, "sys.toml")).free_bodies.size(), 1u);
+}
+
+// A MoorDyn body's angles as cablefilm's: the same turn, whatever the angles. A body point at
+// MoorDyn's X0 + Rx(r0) Ry(p0) Rz(y0) p is, in cablefilm's axes, at r + R(theta) p' with the
+// converted angles and p' the point in cablefilm's axes.
+TEST(MoorDynConvert, BodyAnglesAreTheSameTurn) {
+  const MoorDynVec local = {3, -2, 1.5};
+  for (const MoorDynVec& rpy : std::vector<MoorDynVec>{
+           {0, 0, 37}, {10, 0, 0}, {0, -25, 0}, {12, -7, 140}, {-80, 33, -170}, {5, 60, 5}}) {
+    MoorDynBody body;
+    body.position = {4, -6, -8};
+    body.rotation = rpy;
+    const MoorDynVec want = MoorDynToCablefilm(MoorDynBodyPoint(body, local));
+    const MoorDynVec angles = MoorDynAnglesToCablefilm(rpy);
+    Vec6 pose;
+    const MoorDynVec r = MoorDynToCablefilm(body.position);
+    pose << r[0], r[1], r[2], angles[0] * M_PI / 180, angles[1] * M_PI / 180,
+        angles[2] * M_PI / 180;
+    const MoorDynVec p = MoorDynToCablefilm(local);
+    const Eigen::Vector3d got = BodyPoint(pose, Eigen::Vector3d(p[0], p[1], p[2]));
+    EXPECT_LT((got - Eigen::Vector3d(want[0], want[1], want[2])).norm(), 1e-12)
+        << rpy[0] << " " << rpy[1] << " " << rpy[2];
   }
 }
 
