@@ -5,6 +5,14 @@
 
 namespace cablefilm {
 
+PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<RowMaxima>&,
+                                    const std::string&, const std::string&, bool complete,
+                                    const std::string&) {
+  std::printf("%s: not drawn (this build has no renderer: CABLEFILM_RENDER=OFF)\n",
+              complete ? "max_tension.png" : "max_tension.partial.png");
+  return {};
+}
+
 PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<const Run*>&,
                                     const std::string&, const std::string&, bool complete) {
   std::printf("%s: not drawn (this build has no renderer: CABLEFILM_RENDER=OFF)\n",
