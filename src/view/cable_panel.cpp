@@ -192,13 +192,14 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
     }
   }
   if (!in.alike) return;
-  // The names over everything: each line's beside its middle, then each point's by its
-  // marker, none over another.
+  // The names over everything, none over another: each point's by its marker, then each
+  // line's beside it.
   NameTags tags(in.world.rect);
-  for (std::size_t i = 0; i < now.size() && i < lines.size(); ++i) {
-    std::vector<Vec2f> c;
-    for (std::size_t j = 0; j < now[i].x.size(); ++j) c.push_back(world(now[i].x[j], now[i].y[j]));
-    if (!c.empty()) tags.AddLineName(p, lines[i].label, PolylineMiddle(c), LineColor(th, i), th);
+  std::vector<std::vector<Vec2f>> shapes(now.size());
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    for (std::size_t j = 0; j < now[i].x.size(); ++j)
+      shapes[i].push_back(world(now[i].x[j], now[i].y[j]));
+    tags.Avoid(shapes[i], cw + 2.5f * k);
   }
   for (std::size_t q = 0; in.points && q < in.points->size(); ++q) {
     const PointView& pt = (*in.points)[q];
@@ -209,6 +210,8 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
     tags.AddPointName(p, pt.name, world(l.x[pt.station], l.y[pt.station]),
                       0.5f * (in.world.rect.x0 + in.world.rect.x1), th.text_dim, th);
   }
+  for (std::size_t i = 0; i < now.size() && i < lines.size(); ++i)
+    tags.AddLineName(p, lines[i].label, shapes[i], LineColor(th, i), th);
 }
 
 }  // namespace cablefilm

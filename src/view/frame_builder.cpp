@@ -327,17 +327,26 @@ Frame MakeMaxTensionFigure(const std::string& title, const std::vector<MaxTensio
   p.Rect(panel, th.panel);
   p.Text(title, {panel.x0 + 24 * k, panel.y0 + 44 * k}, 28 * k, th.text, HAlign::kLeft,
          VAlign::kBaseline, false, true);
+  static const std::uint32_t kPalette[] = {0x1f6fb4, 0xd9480f, 0x2b8a3e, 0x862e9c, 0x495057};
+  std::vector<LegendEntry> legend;
+  for (std::size_t i = 0; i < series.size(); ++i)
+    legend.push_back({LegendEntry::kLine, Hex(kPalette[i % 5]), series[i].label});
+  // The legend beside the title when both fit, else on a row of its own under it (a system's
+  // names after a long title).
+  const float right = panel.x1 - 40 * k;
+  const bool own_row = panel.x0 + 24 * k + EstimateTextWidth(title, 28 * k, true) + 40 * k >
+                       right - LegendWidth(legend, k);
+  const float legend_baseline = panel.y0 + (own_row ? 80 : 44) * k;
   PlotMapping pm;
-  pm.rect = {panel.x0 + 100 * k, panel.y0 + 80 * k, panel.x1 - 40 * k, panel.y1 - 80 * k};
+  pm.rect = {panel.x0 + 100 * k, panel.y0 + (own_row ? 110 : 80) * k, right,
+             panel.y1 - 80 * k};
   pm.x_lo = 0;
   pm.x_hi = t_hi;
   pm.y_lo = v_lo;
   pm.y_hi = v_hi;
   DrawAxes(p, pm, "time [s]", "maximum tension along the cable [kN]", th, 10, 7);
-  static const std::uint32_t kPalette[] = {0x1f6fb4, 0xd9480f, 0x2b8a3e, 0x862e9c, 0x495057};
-  std::vector<LegendEntry> legend;
   for (std::size_t i = 0; i < series.size(); ++i) {
-    const Rgba c = Hex(kPalette[i % 5]);
+    const Rgba c = legend[i].color;
     std::vector<Vec2f> pts;
     int column = -1;
     for (std::size_t j = 0; j < series[i].t.size(); ++j) {
@@ -351,10 +360,11 @@ Frame MakeMaxTensionFigure(const std::string& title, const std::vector<MaxTensio
       column = col;
       pts.push_back(q);
     }
-    p.Polyline(pts, 2.4f * k, c);
-    legend.push_back({LegendEntry::kLine, c, series[i].label});
+    // Each series thinner than the one before, on top: where they coincide each shows as an
+    // edge of the one under it.
+    p.Polyline(pts, NestedWidth(i, series.size()) * k, c);
   }
-  DrawLegend(p, pm.rect.x1, panel.y0 + 44 * k, legend, th, th.panel);
+  DrawLegend(p, pm.rect.x1, legend_baseline, legend, th, th.panel);
   return frame;
 }
 

@@ -294,15 +294,14 @@ ViewProjection DrawSpaceView(Painter& p, const SpaceViewInput& in, const Colorma
     p.Text("seabed grid " + FormatValue("%g", s.sheets.front().grid) + " m",
            {in.view.x1 - 10 * k, in.view.y1 - 10 * k}, 13 * k, th.text_dim, HAlign::kRight,
            VAlign::kBottom);
-  if (scene.lines_alike) {  // the names over the scene: lines by their middles, points by
-    NameTags tags(in.view);  // their markers, none over another
-    for (std::size_t i = 0; i < now.lines.size() && i < scene.lines.size(); ++i) {
-      std::vector<Vec2f> c;
+  if (scene.lines_alike) {  // the names over the scene, none over another: points by their
+    NameTags tags(in.view);  // markers, then lines beside them
+    std::vector<std::vector<Vec2f>> shapes(now.lines.size());
+    for (std::size_t i = 0; i < now.lines.size(); ++i) {
       Vec2f q;
       for (std::size_t j = 0; j < now.lines[i].x.size(); ++j)
-        if (v.ToPixel(StationOf(now.lines[i], j), &q)) c.push_back(q);
-      if (!c.empty())
-        tags.AddLineName(p, scene.lines[i].label, PolylineMiddle(c), LineColor(th, i), th);
+        if (v.ToPixel(StationOf(now.lines[i], j), &q)) shapes[i].push_back(q);
+      tags.Avoid(shapes[i], kTubeWidth * in.cable_width);
     }
     for (const PointView& pt : scene.points) {
       if (pt.line < 0 || static_cast<std::size_t>(pt.line) >= now.lines.size()) continue;
@@ -313,6 +312,8 @@ ViewProjection DrawSpaceView(Painter& p, const SpaceViewInput& in, const Colorma
         continue;
       tags.AddPointName(p, pt.name, q, 0.5f * (in.view.x0 + in.view.x1), th.text_dim, th);
     }
+    for (std::size_t i = 0; i < now.lines.size() && i < scene.lines.size(); ++i)
+      tags.AddLineName(p, scene.lines[i].label, shapes[i], LineColor(th, i), th);
   }
   DrawTriad(p, v, in.view);
   return v;

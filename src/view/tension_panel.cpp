@@ -128,7 +128,7 @@ void DrawTensionPanel(Painter& p, const TensionPanelInput& in, const Theme& th) 
                  Mix(LineColor(th, i), th.panel, 0.55f), 7 * k, 5 * k);
     for (std::size_t i = 0; i < now.size(); ++i)
       if (drawable(i, now[i].tension))
-        p.Polyline(curve(i, now[i].tension), 2.4f * k, LineColor(th, i));
+        p.Polyline(curve(i, now[i].tension), NestedWidth(i, now.size()) * k, LineColor(th, i));
     return;
   }
   if (PerLink(&first.reference.tension, links))

@@ -3,7 +3,8 @@
 // first line's min-max envelope of each link so far (a band), the curves of the lines after the
 // first (overlays: thinner, on top), and the first line's sections: a dashed line at each
 // boundary and each section's name in its span. Lines drawn alike (a system) are each a curve of
-// its own colour (LineColor) with its reference dashed in a paler shade, and no band.
+// its own colour (LineColor), each thinner than the one before (NestedWidth), with its
+// reference dashed in a paler shade, and no band.
 #include <string>
 #include <vector>
 

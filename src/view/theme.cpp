@@ -14,6 +14,11 @@ Rgba LineColor(const Theme& th, std::size_t line) {
   return th.line_colors[line % Theme::kLineColors];
 }
 
+float NestedWidth(std::size_t i, std::size_t n) {
+  if (n < 2) return 2.4f;
+  return 1.8f + 2.4f * static_cast<float>(n - 1 - i) / static_cast<float>(n - 1);
+}
+
 Theme Theme::Dark() {
   Theme t;
   t.background = Hex(0x0e1217);

@@ -26,6 +26,11 @@ struct Theme {
 // The colour of line i of lines drawn alike (the palette repeats after kLineColors lines).
 Rgba LineColor(const Theme& th, std::size_t line);
 
+// The width of curve i of n drawn over each other in one plot [design px]: one is 2.4 wide;
+// several go from 4.2 (the first, at the bottom) to 1.8 (the last, on top), so that where
+// curves coincide (a symmetric mooring's legs) each still shows as an edge of the one under it.
+float NestedWidth(std::size_t i, std::size_t n);
+
 // 0xRRGGBB with alpha a.
 Rgba Hex(std::uint32_t rgb, float a = 1);
 // Opaque blend of a over b (t = weight of a): faint lines stay opaque, so joints of a

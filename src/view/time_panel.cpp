@@ -125,16 +125,16 @@ void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
     p.Text(in.equilibrium_label, {x0, under ? y + 6 * k : y - 6 * k}, font, th.equilibrium, HAlign::kLeft,
            under ? VAlign::kTop : VAlign::kBaseline);
   }
-  // Lines drawn alike: each its colour, one width; else the first thick, the others thinner
-  // on top, like the tension curves.
+  // Lines drawn alike: each its colour, each thinner than the one before (NestedWidth); else
+  // the first thick, the others thinner on top, like the tension curves.
   const Rgba first_color = in.alike ? LineColor(th, 0) : th.accent;
-  p.Polyline(trace, 2.4f * k, first_color);
+  p.Polyline(trace, (in.alike ? NestedWidth(0, lines.size()) : 2.4f) * k, first_color);
   if (!ts.empty() && std::isfinite(vs.back()))
     p.Disc(PlotPoint(mm, ts.back(), vs.back() / kN), 5 * k, first_color);
   for (std::size_t i = 1; i < lines.size(); ++i) {
     if (lines[i].size() != ts.size()) continue;
     const Rgba c = in.alike ? LineColor(th, i) : th.overlay;
-    p.Polyline(overlays[i - 1], (in.alike ? 2.4f : 1.8f) * k, c);
+    p.Polyline(overlays[i - 1], (in.alike ? NestedWidth(i, lines.size()) : 1.8f) * k, c);
     if (!ts.empty() && std::isfinite(lines[i].back()))
       p.Disc(PlotPoint(mm, ts.back(), lines[i].back() / kN), (in.alike ? 5 : 4) * k, c);
   }

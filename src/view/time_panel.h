@@ -4,7 +4,7 @@
 // first thinner, on top), the first line's largest reference tension as a dashed reference, a
 // readout (the note), and vertical markers at given times with short labels (the live view's
 // control changes). Lines drawn alike (a system) are each a trace of its own colour
-// (LineColor), all of one width.
+// (LineColor), each thinner than the one before (NestedWidth).
 #include <limits>
 #include <string>
 #include <vector>

@@ -85,7 +85,7 @@ Snapshot SystemSnapshot(const SceneView& scene, double t) {
 
 class SystemFrameTest : public ::testing::Test {
  protected:
-  static constexpr int kW = 1280, kH = 720;
+  static constexpr int kW = 1920, kH = 1080;  // the design size: the thinnest curve 1.8 px
   void SetUp() override {
     scene_ = SystemScene();
     FixedPolicy policy;
@@ -105,18 +105,18 @@ class SystemFrameTest : public ::testing::Test {
     options.height = kH;
     Renderer renderer(options);
     image_ = renderer.Draw(frame_);
-    WritePng(testing::OutputDir("system") + "/system_frame_1280x720.png", image_);
+    WritePng(testing::OutputDir("system") + "/system_frame_1920x1080.png", image_);
   }
   bool HasText(const std::string& s) const {
     return std::any_of(frame_.texts.begin(), frame_.texts.end(),
                        [&](const TextItem& t) { return t.text == s; });
   }
-  // Pixels in `r` within 6/255 of colour c (sampled every pixel).
+  // Pixels in `r` within 16/255 of colour c (sampled every pixel).
   int Count(const PixelRect& r, const Rgba& c) const {
     int n = 0;
     for (int y = static_cast<int>(r.y0); y < static_cast<int>(r.y1); ++y)
       for (int x = static_cast<int>(r.x0); x < static_cast<int>(r.x1); ++x)
-        n += Distance(PixelAt(image_, x, y), c) < 6;
+        n += Distance(PixelAt(image_, x, y), c) < 16;
     return n;
   }
 
