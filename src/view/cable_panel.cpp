@@ -56,7 +56,7 @@ PanelHead CablePanelHead(const SceneView& scene, const std::string& path_label, 
     marks_row.push_back({LegendEntry::kLine, PathColor(th), path_label});
   }
   if (!first.free_ends.empty())
-    marks_row.push_back({LegendEntry::kRing, th.marker_fill, ends.free});
+    marks_row.push_back({LegendEntry::kRing, th.marker_edge, ends.free});
   marks_row.push_back({LegendEntry::kDash, th.equilibrium, ReferenceName(scene)});
   if (scene.sea.surface) marks_row.push_back({LegendEntry::kLine, th.water, "water surface"});
   if (scene.sea.seabed) marks_row.push_back({LegendEntry::kLine, th.seabed, "seabed"});

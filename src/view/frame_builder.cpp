@@ -327,10 +327,9 @@ Frame MakeMaxTensionFigure(const std::string& title, const std::vector<MaxTensio
   p.Rect(panel, th.panel);
   p.Text(title, {panel.x0 + 24 * k, panel.y0 + 44 * k}, 28 * k, th.text, HAlign::kLeft,
          VAlign::kBaseline, false, true);
-  static const std::uint32_t kPalette[] = {0x1f6fb4, 0xd9480f, 0x2b8a3e, 0x862e9c, 0x495057};
-  std::vector<LegendEntry> legend;
+  std::vector<LegendEntry> legend;  // a colour a series: the lines' palette (8 apart)
   for (std::size_t i = 0; i < series.size(); ++i)
-    legend.push_back({LegendEntry::kLine, Hex(kPalette[i % 5]), series[i].label});
+    legend.push_back({LegendEntry::kLine, LineColor(th, i), series[i].label});
   // The legend beside the title when both fit, else on a row of its own under it (a system's
   // names after a long title).
   const float right = panel.x1 - 40 * k;
