@@ -9,6 +9,9 @@
 
 #include "core/error.h"
 #include "encode/png_writer.h"
+#include "scene/film_view.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_parser.h"
 #include "view/frame_builder.h"
 #include "view/history.h"
 #include "view/plot_axes.h"
@@ -212,6 +215,37 @@ TEST(SystemScene, PointsMustBeOnStationsOfTheirLines) {
   EXPECT_THROW(CheckSceneView(scene), Error);
   scene.points.back() = {"lost", 2, 0};
   EXPECT_THROW(CheckSceneView(scene), Error);
+}
+
+// film.view = "auto": a system is drawn in space when a point leaves the plane z = 0 (its line
+// ends are there), in the plane when every point, the current and the waves stay in it.
+TEST(SystemScene, AutoViewFollowsThePoints) {
+  const std::string path =
+      std::string(CABLEFILM_SOURCE_DIR) + "/tests/scenes/system/clump_system.toml";
+  std::string text = ReadSceneFile(path);
+  EXPECT_FALSE(SceneIsPlanar(ParseScene(text, path)));  // the clump and fairlead at z 5, 10 m
+  auto replace = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("current_heading = 34.4", "current_heading = 0.0");
+  replace("position = [45.0, -40.0, 5.0]", "position = [45.0, -40.0, 0.0]");
+  replace("position = [70.0, 0.0, 10.0]", "position = [70.0, 0.0, 0.0]");
+  replace("z_amplitudes = [0.5, -0.4]", "z_amplitudes = [0.0, 0.0]");
+  const SceneDef flat = ParseScene(text, path);
+  EXPECT_TRUE(SceneIsPlanar(flat));
+  EXPECT_FALSE(DrawsInSpace(flat, "auto"));
+  // A point off the plane, moved across it or pushed across it is drawn in space.
+  std::string off = text;
+  off.replace(off.find("position = [45.0, -40.0, 0.0]"), 29, "position = [45.0, -40.0, 5.0]");
+  EXPECT_TRUE(DrawsInSpace(ParseScene(off, path), "auto"));
+  std::string moved = text;
+  moved.replace(moved.find("z_amplitudes = [0.0, 0.0]"), 25, "z_amplitudes = [0.3, 0.0]");
+  EXPECT_TRUE(DrawsInSpace(ParseScene(moved, path), "auto"));
+  std::string pushed = text;
+  pushed.replace(pushed.find("mass = 3000.0"), 13, "mass = 3000.0\nforce = [0.0, 0.0, 50.0]");
+  EXPECT_TRUE(DrawsInSpace(ParseScene(pushed, path), "auto"));
 }
 
 }  // namespace
