@@ -16,8 +16,10 @@
 #include "run/system_run.h"
 #include "io/atomic_file.h"
 #include "scene/build_model.h"
+#include "scene/film_settings.h"
 #include "scene/scene_loader.h"
 #include "scene/text_escape.h"
+#include "view/system_film.h"
 
 namespace cablefilm {
 namespace {
@@ -126,6 +128,9 @@ int CheckSystem(const SceneDef& scene) {
 
 int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* report) {
   namespace fs = std::filesystem;
+  // The film's settings checked before anything runs, as a line's are.
+  const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
+  const FilmSettings look = film ? ResolveFilm(scene, options, kCommandLineNames) : FilmSettings{};
   const SystemModel built = BuildSystem(scene);
   PrintSystem(scene, built);
   OutDirLock lock;
@@ -171,7 +176,18 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
     if (bodies) bodies->CommitPartial(out_dir + "/body.partial.csv");
     const std::string where = "the rows up to then are in " + EscapeText(out_dir) +
                               "/points.partial.csv and lines/*/timeseries.partial.csv";
-    if (!s.failure.empty()) throw Error(s.failure + "; " + where);
+    // Those rows drawn (a failure to draw them is reported: the run's own message comes next).
+    bool drawn = false;
+    try {
+      const PictureReport figure =
+          WriteSystemMaxTensionFigure(scene, run, out_dir, options.shader_dir, false);
+      drawn = !std::isnan(figure.peak);
+      if (report) report->figure = figure;
+    } catch (const Error& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+    }
+    if (!s.failure.empty())
+      throw Error(s.failure + "; " + where + (drawn ? " (drawn in max_tension.partial.png)" : ""));
     std::fprintf(stderr, "interrupted at t = %.4g s; %s\n", s.duration, where.c_str());
     return InterruptedExitStatus();
   }
@@ -194,11 +210,16 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
   std::printf("wrote %s/points.csv,%s %s/run_report.toml and lines/<name>/ for %d line(s)\n",
               EscapeText(out_dir).c_str(), bodies ? " body.csv," : "",
               EscapeText(out_dir).c_str(), nl);
-  const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
-  if (film)
-    std::printf("note: the film and max_tension.png are drawn for single lines; a system's "
-                "picture is not drawn yet\n");
-  return 0;
+  // Figure 1 from every row, film or not (a film cut short leaves it whole: it has every row).
+  const PictureReport figure =
+      WriteSystemMaxTensionFigure(scene, run, out_dir, options.shader_dir, true);
+  if (report) report->figure = figure;
+  if (!film) return 0;
+  PictureReport shown;
+  const bool finished = RenderSystemFilm(
+      scene, run, MakeFilmRequest(look, out_dir, options.shader_dir), g_signal, &shown);
+  if (report) report->film = shown;
+  return finished ? 0 : InterruptedExitStatus();
 }
 
 }  // namespace cablefilm

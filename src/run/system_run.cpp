@@ -29,6 +29,16 @@ TimeGrid SystemGrid(const SceneDef& scene, const SystemModel& sys) {
 
 }  // namespace
 
+void SystemRowStepper::Next() {
+  for (int k = 0; k < grid_.steps_per_output; ++k) {
+    ThrowIfCancelled(in_.stop, "the simulation");
+    StepSystem(sys_, sd_, in_, grid_.dt);
+  }
+  // Each row at exactly row x interval (no round-off drift over long runs).
+  sd_.t = ++row_ * grid_.interval;
+  for (Data& d : sd_.lines) d.state.t = sd_.t;
+}
+
 SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop) {
   SystemRun run;
   run.sys = std::move(sys);
@@ -64,8 +74,11 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   run.initial = MakeSystemData(run.sys, run.inputs, run.grid.options, states);
   run.lines.resize(run.sys.lines.size());
-  for (size_t i = 0; i < run.lines.size(); ++i)
+  for (size_t i = 0; i < run.lines.size(); ++i) {
     run.lines[i].scheme = SchemeName(run.sys.lines[i], run.grid.options);
+    run.extents.emplace_back(run.initial.lines[i].state);
+    run.row_max.emplace_back();
+  }
   run.summary.scheme = run.lines[0].scheme;
   run.summary.tolerance = run.grid.automatic ? run.grid.options.tolerance : 0.0;
   return run;
@@ -79,7 +92,10 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
     bool go_on = true;
     for (int i = 0; i < nl; ++i) {
       const Data& d = sd.lines[i];
-      run.lines[i].AddRow(d.state.t, d.tension());
+      const Eigen::VectorXd& T = d.tension();
+      run.lines[i].AddRow(d.state.t, T);
+      run.extents[i].Add(d.state, T);
+      run.row_max[i].Append(d.state.t, T.maxCoeff());
       if (i < static_cast<int>(line_sinks.size()))
         for (RowSink* s : line_sinks[i]) go_on = s->Row(d) && go_on;
     }
@@ -90,12 +106,10 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
   RunSummary& s = run.summary;
   const auto t0 = std::chrono::steady_clock::now();
   bool completed = hand();
-  for (long row = 1; completed && row <= run.grid.outputs; ++row) {
+  SystemRowStepper rows(run.sys, sd, run.inputs, run.grid);
+  while (completed && !rows.done()) {
     try {
-      for (int k = 0; k < run.grid.steps_per_output; ++k) {
-        ThrowIfCancelled(run.inputs.stop, "the simulation");
-        StepSystem(run.sys, sd, run.inputs, run.grid.dt);
-      }
+      rows.Next();
     } catch (const CancelledError&) {
       completed = false;
       break;
@@ -104,9 +118,6 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
       completed = false;
       break;
     }
-    // Each row at exactly row x interval (no round-off drift over long runs).
-    sd.t = row * run.grid.interval;
-    for (Data& d : sd.lines) d.state.t = sd.t;
     completed = hand();
   }
   s.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

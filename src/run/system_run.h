@@ -9,6 +9,8 @@
 #include "core/system_equilibrium.h"
 #include "core/system_step.h"
 #include "run/driver.h"
+#include "run/max_tension_log.h"
+#include "run/run_extent.h"
 #include "run/run_summary.h"
 #include "run/time_grid.h"
 #include "scene/scene_def.h"
@@ -31,8 +33,33 @@ struct SystemRun {
   double equilibrium_ms = 0;         // [ms]
   SystemData initial;                // t = 0
   std::vector<RunSummary> lines;     // each line's: its peak, its least tension
+  std::vector<RunExtent> extents;    // each line's over every row: the film's colour range
+                                     // and world box
+  std::vector<MaxTensionLog> row_max;  // each line's largest link tension of every row: the
+                                       // pictures' time plots
   RunSummary summary;                // the system's: the peak of all lines, how it ended
   int peak_line = -1;                // the line holding summary.peak
+};
+
+// Steps a SystemData from row to row of a grid, as RowStepper steps a line: the run and the
+// film's second pass step alike, so that the film repeats the run step for step.
+class SystemRowStepper {
+ public:
+  SystemRowStepper(const SystemModel& sys, SystemData& sd, const Inputs& in,
+                   const TimeGrid& grid)
+      : sys_(sys), sd_(sd), in_(in), grid_(grid) {}
+  long row() const { return row_; }  // the row reached: 0 is the initial state
+  bool done() const { return row_ >= grid_.outputs; }
+  // Steps to the next row, its time exactly row x interval (every line's too). Throws
+  // BlowUpError, CancelledError (in.stop).
+  void Next();
+
+ private:
+  const SystemModel& sys_;
+  SystemData& sd_;
+  const Inputs& in_;
+  const TimeGrid& grid_;
+  long row_ = 0;
 };
 
 // Throws Error when the system has no equilibrium, CancelledError when `stop` is raised.

@@ -26,7 +26,9 @@ const std::vector<std::string>& FilmViewNames() {
 }
 
 bool SceneIsPlanar(const SceneDef& scene) {
-  if (!EndIsPlanar(scene.start) || !EndIsPlanar(scene.end)) return false;
+  if (!scene.is_system() && (!EndIsPlanar(scene.start) || !EndIsPlanar(scene.end))) return false;
+  for (const PointDef& p : scene.points)  // a system's points: where its lines' ends are
+    if (!EndIsPlanar(p.motion) || p.force[2] != 0) return false;
   const EnvironmentDef& env = scene.environment;
   const bool current = env.current != 0 || !env.current_profile.empty();
   if (current && std::fabs(env.current_direction.z()) > kAcross) return false;

@@ -13,7 +13,8 @@ namespace cablefilm {
 const std::vector<std::string>& FilmViewNames();
 
 // Every end's rest position and motion (trochoid, table, wave response), the current and the
-// waves keep z = 0, so the line stays in that plane.
+// waves keep z = 0, so the line stays in that plane; a system's every point likewise (and no
+// point's force pushes across it).
 bool SceneIsPlanar(const SceneDef& scene);
 
 // The 3D picture for `view` ("auto", "2d", "3d"; anything else throws Error) of the scene.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "view/cable_style.h"
+#include "view/name_tag.h"
 #include "view/plot_axes.h"
 
 namespace cablefilm {
@@ -15,11 +16,28 @@ bool Inside(int j, std::size_t n) { return j >= 0 && static_cast<std::size_t>(j)
 
 }  // namespace
 
+EndNames EndLabels(const SceneView& scene) {
+  if (scene.lines_alike) return {"fixed point", "moved point", "free point"};
+  return {"fixed end", "moving end", "free end"};
+}
+
+StationMarks LegendMarks(const SceneView& scene) {
+  StationMarks all = scene.lines.front().marks;
+  for (std::size_t i = 1; scene.lines_alike && i < scene.lines.size(); ++i) {
+    const StationMarks& m = scene.lines[i].marks;
+    all.fixed_ends.insert(all.fixed_ends.end(), m.fixed_ends.begin(), m.fixed_ends.end());
+    all.moving_ends.insert(all.moving_ends.end(), m.moving_ends.begin(), m.moving_ends.end());
+    all.free_ends.insert(all.free_ends.end(), m.free_ends.begin(), m.free_ends.end());
+  }
+  return all;
+}
+
 PanelHead CablePanelHead(const SceneView& scene, const std::string& path_label, Rgba swatch,
                          const Theme& th) {
   PanelHead head;
-  head.title = "Cable shape (to scale)";
-  if (scene.lines.size() > 1) {  // the names first, on a row of their own when space is short
+  head.title = scene.lines_alike ? "Lines (to scale)" : "Cable shape (to scale)";
+  // The names first, on a row of their own when space is short (alike: on the picture).
+  if (scene.lines.size() > 1 && !scene.lines_alike) {
     LegendGroup names{{LegendEntry::kCable, swatch, LineName(scene, 0)}};
     for (std::size_t i = 1; i < scene.lines.size(); ++i)
       names.push_back({LegendEntry::kOverlay, swatch, LineName(scene, i)});
@@ -27,17 +45,18 @@ PanelHead CablePanelHead(const SceneView& scene, const std::string& path_label, 
   }
   bool weights = false;
   for (const LineView& line : scene.lines) weights = weights || !line.marks.weights.empty();
-  const StationMarks& first = scene.lines.front().marks;
+  const StationMarks first = LegendMarks(scene);
+  const EndNames ends = EndLabels(scene);
   LegendGroup marks_row;
   if (weights) marks_row.push_back({LegendEntry::kDiamond, th.marker_fill, "weight"});
   if (!first.fixed_ends.empty())
-    marks_row.push_back({LegendEntry::kSquare, th.marker_fill, "fixed end"});
+    marks_row.push_back({LegendEntry::kSquare, th.marker_fill, ends.fixed});
   if (!first.moving_ends.empty()) {
-    marks_row.push_back({LegendEntry::kRing, th.accent, "moving end"});
+    marks_row.push_back({LegendEntry::kRing, th.accent, ends.moving});
     marks_row.push_back({LegendEntry::kLine, PathColor(th), path_label});
   }
   if (!first.free_ends.empty())
-    marks_row.push_back({LegendEntry::kRing, th.marker_fill, "free end"});
+    marks_row.push_back({LegendEntry::kRing, th.marker_edge, ends.free});
   marks_row.push_back({LegendEntry::kDash, th.equilibrium, ReferenceName(scene)});
   if (scene.sea.surface) marks_row.push_back({LegendEntry::kLine, th.water, "water surface"});
   if (scene.sea.seabed) marks_row.push_back({LegendEntry::kLine, th.seabed, "seabed"});
@@ -52,11 +71,7 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
   const float k = p.k();
   const std::vector<LineView>& lines = *in.lines;
   const std::vector<LineSnapshot>& now = *in.now;
-  const LineSnapshot& snap = now.front();  // the first line, drawn in full
-  const StationMarks& marks = lines.front().marks;
-  const LineState& reference = lines.front().reference;
   const double lo = in.tension_min, hi = in.tension_max;
-  const std::size_t links = snap.tension.size();
   DrawPanelHead(p, in.panel, in.head, in.world.rect.y0, th);
   DrawAxes(p, in.world, in.x_label, in.y_label, th, 10, 5);
 
@@ -101,15 +116,19 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
     }
     p.Polyline(line, 2 * k, th.water);
   }
-  if (reference.x.size() == snap.x.size() && reference.y.size() == snap.x.size()) {
+  // Drawn in full, with their marks, references and paths: the first line, or all alike.
+  const std::size_t full = in.alike ? now.size() : 1;
+  for (std::size_t i = 0; i < full && i < lines.size(); ++i) {
+    const LineState& ref = lines[i].reference;
+    if (ref.x.size() != now[i].x.size() || ref.y.size() != now[i].x.size()) continue;
     std::vector<Vec2f> eq;
-    for (std::size_t j = 0; j < reference.x.size(); ++j)
-      eq.push_back(world(reference.x[j], reference.y[j]));
+    for (std::size_t j = 0; j < ref.x.size(); ++j) eq.push_back(world(ref.x[j], ref.y[j]));
     p.Dashed(eq, 1.6f * k, th.equilibrium, 8 * k, 6 * k);
   }
   if (in.end_paths)
     for (const EndPath& path : *in.end_paths) {
-      if (path.line != 0) continue;  // an overlay's end goes where the first line's does
+      // An overlay's end goes where the first line's does.
+      if (path.line < 0 || static_cast<std::size_t>(path.line) >= full) continue;
       for (const auto& piece : path.pieces) {
         std::vector<Vec2f> px;
         px.reserve(piece.size());
@@ -118,52 +137,81 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
       }
     }
   const float cw = in.cable_width;
-  for (std::size_t i = 1; i < now.size(); ++i) {  // beneath the first line; each dotted rim
-    const LineSnapshot& o = now[i];                // shows where the lines coincide
+  for (std::size_t i = full; i < now.size(); ++i) {  // beneath the first line; each dotted rim
+    const LineSnapshot& o = now[i];                   // shows where the lines coincide
     std::vector<Vec2f> c;
     for (std::size_t j = 0; j < o.x.size(); ++j) c.push_back(world(o.x[j], o.y[j]));
     DrawOverlayRim(p, c, cw + 7 * k, th);
     for (std::size_t j = 0; j < o.tension.size() && j + 1 < c.size(); ++j)
       p.Line(c[j], c[j + 1], in.overlay_width, colormap.Map(o.tension[j], lo, hi));
   }
-  for (std::size_t j = 0; j < links; ++j)  // a thin rim keeps the dark end of the map visible
-    p.Line(world(snap.x[j], snap.y[j]), world(snap.x[j + 1], snap.y[j + 1]), cw + 2.5f * k,
-           th.halo);
-  for (std::size_t j = 0; j < links; ++j)
-    p.Line(world(snap.x[j], snap.y[j]), world(snap.x[j + 1], snap.y[j + 1]), cw,
-           colormap.Map(snap.tension[j], lo, hi));
-  for (std::size_t i = 1; i < now.size() && i < lines.size(); ++i)  // the overlays' weights,
+  // The last drawn on top: the first line over the others.
+  for (std::size_t i = full; i-- > 0;) {
+    const LineSnapshot& l = now[i];
+    const std::size_t n = std::min(l.tension.size() + 1, l.x.size());
+    for (std::size_t j = 0; j + 1 < n; ++j)  // a thin rim keeps the dark end of the map visible
+      p.Line(world(l.x[j], l.y[j]), world(l.x[j + 1], l.y[j + 1]), cw + 2.5f * k, th.halo);
+    for (std::size_t j = 0; j + 1 < n; ++j)
+      p.Line(world(l.x[j], l.y[j]), world(l.x[j + 1], l.y[j + 1]), cw,
+             colormap.Map(l.tension[j], lo, hi));
+  }
+  for (std::size_t i = full; i < now.size() && i < lines.size(); ++i)  // the overlays' weights,
     for (int w : lines[i].marks.weights) {  // smaller: hidden by the first's where they coincide
       if (!Inside(w, now[i].x.size())) continue;
       const Vec2f c = world(now[i].x[w], now[i].y[w]);
       p.Diamond(c, 8.5f * k, th.overlay_rim);
       p.Diamond(c, 6 * k, th.marker_fill);
     }
-  for (int w : marks.weights) {
-    if (!Inside(w, snap.x.size())) continue;
-    const Vec2f c = world(snap.x[w], snap.y[w]);
-    p.Diamond(c, 11 * k, th.marker_edge);
-    p.Diamond(c, 8 * k, th.marker_fill);
+  for (std::size_t i = 0; i < full && i < lines.size(); ++i) {
+    const LineSnapshot& l = now[i];
+    const StationMarks& m = lines[i].marks;
+    for (int w : m.weights) {
+      if (!Inside(w, l.x.size())) continue;
+      const Vec2f c = world(l.x[w], l.y[w]);
+      p.Diamond(c, 11 * k, th.marker_edge);
+      p.Diamond(c, 8 * k, th.marker_fill);
+    }
+    for (int e : m.fixed_ends) {
+      if (!Inside(e, l.x.size())) continue;
+      const Vec2f c = world(l.x[e], l.y[e]);
+      p.Square(c, 8 * k, th.marker_edge);
+      p.Square(c, 5.5f * k, th.marker_fill);
+    }
+    for (int e : m.moving_ends) {
+      if (!Inside(e, l.x.size())) continue;
+      const Vec2f c = world(l.x[e], l.y[e]);
+      p.Disc(c, 9 * k, th.accent);
+      p.Disc(c, 4.5f * k, th.panel);
+    }
+    for (int e : m.free_ends) {
+      if (!Inside(e, l.x.size())) continue;
+      const Vec2f c = world(l.x[e], l.y[e]);
+      p.Disc(c, 8.5f * k, th.marker_edge);
+      p.Disc(c, 7 * k, th.marker_fill);
+      p.Disc(c, 3.5f * k, th.panel);
+    }
   }
-  for (int e : marks.fixed_ends) {
-    if (!Inside(e, snap.x.size())) continue;
-    const Vec2f c = world(snap.x[e], snap.y[e]);
-    p.Square(c, 8 * k, th.marker_edge);
-    p.Square(c, 5.5f * k, th.marker_fill);
+  if (!in.alike) return;
+  // The names over everything, none over another: each point's by its marker, then each
+  // line's beside it.
+  NameTags tags(in.world.rect);
+  std::vector<std::vector<Vec2f>> shapes(now.size());
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    for (std::size_t j = 0; j < now[i].x.size(); ++j)
+      shapes[i].push_back(world(now[i].x[j], now[i].y[j]));
+    tags.Avoid(shapes[i], cw + 2.5f * k);
   }
-  for (int e : marks.moving_ends) {
-    if (!Inside(e, snap.x.size())) continue;
-    const Vec2f c = world(snap.x[e], snap.y[e]);
-    p.Disc(c, 9 * k, th.accent);
-    p.Disc(c, 4.5f * k, th.panel);
+  for (std::size_t q = 0; in.points && q < in.points->size(); ++q) {
+    const PointView& pt = (*in.points)[q];
+    if (pt.line < 0 || static_cast<std::size_t>(pt.line) >= now.size() ||
+        !Inside(pt.station, now[pt.line].x.size()))
+      continue;
+    const LineSnapshot& l = now[pt.line];
+    tags.AddPointName(p, pt.name, world(l.x[pt.station], l.y[pt.station]),
+                      0.5f * (in.world.rect.x0 + in.world.rect.x1), th.text_dim, th);
   }
-  for (int e : marks.free_ends) {
-    if (!Inside(e, snap.x.size())) continue;
-    const Vec2f c = world(snap.x[e], snap.y[e]);
-    p.Disc(c, 8.5f * k, th.marker_edge);
-    p.Disc(c, 7 * k, th.marker_fill);
-    p.Disc(c, 3.5f * k, th.panel);
-  }
+  for (std::size_t i = 0; i < now.size() && i < lines.size(); ++i)
+    tags.AddLineName(p, lines[i].label, shapes[i], LineColor(th, i), th);
 }
 
 }  // namespace cablefilm

@@ -5,7 +5,8 @@
 // line's ends by their role (fixed, moving, free), and the seabed when there is one (its line,
 // the ground below it shaded, so the part of a line resting on it shows as lying along the
 // line). The colour bar is drawn separately (colorbar_panel.h) in the space the layout leaves at
-// the panel's right.
+// the panel's right. Lines drawn alike (a system: SceneView::lines_alike) are each drawn as the
+// first is, with their marks, references and paths, and named beside their shapes.
 #include <string>
 #include <vector>
 
@@ -20,10 +21,22 @@
 
 namespace cablefilm {
 
+// How legends name the ends: "fixed end", ...; a system's line ends are its points ("fixed
+// point", "moved point", "free point").
+struct EndNames {
+  const char* fixed;
+  const char* moving;
+  const char* free;
+};
+EndNames EndLabels(const SceneView& scene);
+// The marks the legends name: the first line's, or every line's when they are drawn alike.
+StationMarks LegendMarks(const SceneView& scene);
+
 // The panel's title and legend: the lines' names when there are several, an entry per kind of
 // marker drawn (weights of any line, the first line's ends by role), the end path (named
 // `path_label`) and the dashed reference (ReferenceName), the seabed and the water surface when
 // the scene's sea has them. `swatch` colours the lines' entries (a mid colour of the map).
+// Lines drawn alike are named on the picture, not in the legend; their ends are points.
 PanelHead CablePanelHead(const SceneView& scene, const std::string& path_label, Rgba swatch,
                          const Theme& th);
 
@@ -45,6 +58,10 @@ struct CablePanelInput {
   // empty = none.
   const std::vector<double>* surface_x = nullptr;
   const std::vector<double>* surface_y = nullptr;
+  // Every line drawn alike (SceneView::lines_alike): each in full, with its marks, reference and
+  // paths, and its label beside it in LineColor; false: the lines after the first as overlays.
+  bool alike = false;
+  const std::vector<PointView>* points = nullptr;  // named by their markers; null = none
   // The axes' titles: the plane's (the plan and the elevation of lines in space have others).
   std::string x_label = "x [m]", y_label = "y [m]";
 };

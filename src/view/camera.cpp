@@ -44,7 +44,8 @@ OrbitCamera DefaultCamera(const SceneView& scene) {
   // Broadside (heading + 90) puts the start on the left; turning 35 degrees towards the end
   // shows the line's depth without hiding one end behind the other.
   camera.azimuth = heading + 90 - 35;
-  camera.elevation = 22;
+  // A system's spread reads from higher up: its lines apart in plan, not behind each other.
+  camera.elevation = scene.lines_alike && scene.lines.size() > 1 ? 35 : 22;
   return ClampCamera(camera);
 }
 

@@ -40,7 +40,8 @@ void DrawColorBar(Painter& p, const ColorBarInput& in, const Colormap& colormap,
     const float y = bar_y(now / kNewtonsPerKilonewton);
     const float step = static_cast<float>(10 * i);  // [design px]: each line's further left
     const float x0 = cb.x0 - (step + 10) * k, x1 = cb.x0 - (step + 1) * k;
-    p.Triangle({x0, y - 6 * k}, {x0, y + 6 * k}, {x1, y}, i == 0 ? th.text : th.overlay);
+    const Rgba c = in.alike ? LineColor(th, i) : i == 0 ? th.text : th.overlay;
+    p.Triangle({x0, y - 6 * k}, {x0, y + 6 * k}, {x1, y}, c);
   }
 }
 

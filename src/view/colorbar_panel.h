@@ -19,6 +19,7 @@ struct ColorBarInput {
   // The lines now: a mark left of the bar at each one's largest tension (the first's in the
   // text colour, each after it in the overlay colour, further left); null = none.
   const std::vector<LineSnapshot>* now = nullptr;
+  bool alike = false;  // lines drawn alike: each mark in its line's colour (LineColor)
 };
 
 void DrawColorBar(Painter& p, const ColorBarInput& in, const Colormap& colormap, const Theme& th);

@@ -8,6 +8,7 @@
 #include "core/cancel.h"
 #include "core/step.h"
 #include "core/error.h"
+#include "view/film_clock.h"
 #include "view/film_writer.h"
 #include "view/scene_view_builder.h"
 #include "view/time_trace.h"
@@ -61,31 +62,31 @@ void FindPeak(const std::vector<double>& t, const std::vector<double>& v, Pictur
 
 }  // namespace
 
-PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<const Run*>& runs,
+PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<RowMaxima>& rows,
                                     const std::string& out_dir, const std::string& shader_dir,
-                                    bool complete) {
+                                    bool complete, const std::string& what) {
   const std::string name = complete ? "max_tension.png" : "max_tension.partial.png";
-  // The time axis spans the rows of every run (all runs have the same output times).
+  // The time axis spans the rows of every series (all have the same output times).
   double t_end = 0;
-  for (const Run* run : runs) {
-    MaxTensionLog::Cursor c(run->row_max);
+  for (const RowMaxima& r : rows) {
+    MaxTensionLog::Cursor c(*r.rows);
     double t, v;
     while (c.Next(std::numeric_limits<double>::infinity(), &t, &v)) t_end = std::max(t_end, t);
   }
   std::vector<MaxTensionSeries> series;
   PictureReport report;
   std::string peak_label;
-  for (const Run* run : runs) {
+  for (const RowMaxima& r : rows) {
     ThinnedTrace trace(1, t_end > 0 ? t_end / 8192 : 0);
-    MaxTensionLog::Cursor c(run->row_max);
+    MaxTensionLog::Cursor c(*r.rows);
     double t, v;
     while (c.Next(std::numeric_limits<double>::infinity(), &t, &v)) trace.Add(t, v);
-    series.push_back({run->label, trace.times(), trace.values()});
+    series.push_back({r.label, trace.times(), trace.values()});
     const double before = report.peak;
     FindPeak(trace.times(), trace.values(), &report);
-    if (!(report.peak == before)) peak_label = run->label;
+    if (!(report.peak == before)) peak_label = r.label;
   }
-  std::string title = "Maximum tension along the cable: " + scene.title;
+  std::string title = "Maximum tension along " + what + ": " + scene.title;
   if (!complete) title += " (cut short)";
   try {
     WriteMaxTensionPng(out_dir + "/" + name, series, 1600, 900, title, shader_dir);
@@ -94,50 +95,44 @@ PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<con
   }
   std::printf("wrote %s/%s (maximum tension of every output row: peak %.6g N at t = %.4g s%s)\n",
               EscapeText(out_dir).c_str(), name.c_str(), report.peak, report.peak_t,
-              runs.size() > 1 ? (", " + peak_label).c_str() : "");
+              rows.size() > 1 ? (", " + EscapeText(peak_label)).c_str() : "");
   return report;
+}
+
+PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<const Run*>& runs,
+                                    const std::string& out_dir, const std::string& shader_dir,
+                                    bool complete) {
+  std::vector<RowMaxima> rows;
+  for (const Run* run : runs) rows.push_back({run->label, &run->row_max});
+  return WriteMaxTensionFigure(scene, rows, out_dir, shader_dir, complete, "the cable");
 }
 
 bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
                 const FilmRequest& request, const std::atomic<int>& stop, PictureReport* report) {
-  const double frame_interval = request.speed / request.fps;  // simulated seconds per frame
   const Run& main = *runs.front();
-  const double run_end = main.grid.end();
-  // Frames at k x frame_interval, and one at the run's end when it falls between two (so the
-  // film shows every row: its time plot ends where the run does).
-  const long whole = static_cast<long>(std::floor(run_end / frame_interval + 1e-9));
-  const long last = whole + (run_end - whole * frame_interval > 1e-9 * frame_interval ? 1 : 0);
-  auto frame_time = [&](long k) { return k <= whole ? k * frame_interval : run_end; };
-  // Every run steps again from its initial Data, on the frames' grid (in lockstep, so that a
-  // run can be drawn over another). When a frame is a whole number of output
-  // intervals (the default: a row a frame), that grid is the rows' and the run repeats its
-  // first pass step for step (deterministic), so a frame's cable is exactly the state of its
-  // row; otherwise the grid is the frames' own with the scheme's step rule.
-  const double rows_per_frame = std::round(frame_interval / main.grid.interval);
-  const bool on_rows = rows_per_frame >= 1 &&
-                       std::fabs(rows_per_frame * main.grid.interval - frame_interval) <=
-                           1e-9 * frame_interval;
+  // Every run steps again from its initial Data to the frames (film_clock.h), in lockstep so
+  // that a run can be drawn over another.
+  const FilmClock clock(request.speed, request.fps, main.grid);
+  const double frame_interval = clock.interval;
+  const long last = clock.last;
+  auto frame_time = [&](long k) { return clock.Time(k); };
   struct Stepper {
     TimeGrid grid;
     Inputs inputs;
     Data data;
-    MaxTensionLog::Cursor rows;
     Eigen::VectorXd row_min, row_max;  // on_rows: each link's envelope over the rows since the
                                        // last frame [N] (empty: none yet)
   };
   std::vector<Stepper> steppers;
   steppers.reserve(runs.size());
+  std::vector<MaxTensionLog::Cursor> cursors;  // each run's output rows
+  std::vector<std::string> names;
   for (const Run* run : runs) {
-    Stepper st{run->grid, run->inputs, run->initial, MaxTensionLog::Cursor(run->row_max), {}, {}};
+    Stepper st{clock.Grid(run->grid), run->inputs, run->initial, {}, {}};
     st.inputs.stop = &stop;
-    if (!on_rows) {
-      st.grid.steps_per_output =
-          std::max(1, static_cast<int>(std::ceil(frame_interval / run->grid.dt - 1e-9)));
-      st.grid.interval = frame_interval;
-      st.grid.dt = frame_interval / st.grid.steps_per_output;
-      st.grid.outputs = whole;
-    }
     steppers.push_back(std::move(st));
+    cursors.emplace_back(run->row_max);
+    names.push_back("the " + run->label + " run");
   }
   std::vector<RowStepper> row_steppers;
   for (std::size_t r = 0; r < runs.size(); ++r)
@@ -147,8 +142,8 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
   auto advance = [&](std::size_t r, long k) {
     Stepper& st = steppers[r];
     RowStepper& rows = row_steppers[r];
-    if (on_rows) {
-      const long target = k <= whole ? k * static_cast<long>(rows_per_frame) : st.grid.outputs;
+    if (clock.on_rows) {
+      const long target = clock.Row(k, st.grid.outputs);
       while (rows.row() < target) {
         rows.Next();
         const Eigen::VectorXd& T = st.data.tension();
@@ -161,13 +156,13 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
       }
       return;
     }
-    if (k <= whole) {
+    if (k <= clock.whole) {
       rows.Next();
       return;
     }
     // The shorter last frame, with the step rule of the run's own grid.
     const double span = frame_time(k) - frame_time(k - 1);
-    const int steps = std::max(1, static_cast<int>(std::ceil(span / runs[r]->grid.dt - 1e-9)));
+    const int steps = clock.LastFrameSteps(runs[r]->grid);
     for (int i = 0; i < steps; ++i) {
       ThrowIfCancelled(&stop, "the film");
       Step(runs[r]->model, st.data, st.inputs, span / steps);
@@ -221,19 +216,7 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
     // times, every run's largest tension at each.
     const double until = k == last ? std::numeric_limits<double>::infinity()
                                    : steppers[0].data.state.t + 1e-9 * frame_interval;
-    double t, v;
-    while (steppers[0].rows.Next(until, &t, &v)) {
-      snap.row_t.push_back(t);
-      snap.lines[0].row_max.push_back(v);
-    }
-    for (std::size_t r = 1; r < steppers.size(); ++r)
-      for (std::size_t i = 0; i < snap.row_t.size(); ++i) {
-        if (!steppers[r].rows.Next(until, &t, &v) || t != snap.row_t[i])
-          throw Error("film: the " + runs[r]->label +
-                      " run's output rows do not line up with the " + main.label +
-                      " run's at t = " + std::to_string(snap.row_t[i]) + " s");
-        snap.lines[r].row_max.push_back(v);
-      }
+    TakeRows(cursors, names, until, &snap);
     for (std::size_t r = 0; r < steppers.size(); ++r) {  // each link's envelope over those rows
       Stepper& st = steppers[r];
       if (st.row_min.size() != static_cast<Eigen::Index>(snap.lines[r].tension.size())) continue;

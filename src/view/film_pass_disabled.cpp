@@ -2,8 +2,29 @@
 #include <cstdio>
 
 #include "view/film_pass.h"
+#include "view/system_film.h"
 
 namespace cablefilm {
+
+PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<RowMaxima>&,
+                                    const std::string&, const std::string&, bool complete,
+                                    const std::string&) {
+  std::printf("%s: not drawn (this build has no renderer: CABLEFILM_RENDER=OFF)\n",
+              complete ? "max_tension.png" : "max_tension.partial.png");
+  return {};
+}
+
+PictureReport WriteSystemMaxTensionFigure(const SceneDef& scene, const SystemRun&,
+                                          const std::string& out_dir,
+                                          const std::string& shader_dir, bool complete) {
+  return WriteMaxTensionFigure(scene, std::vector<RowMaxima>{}, out_dir, shader_dir, complete, "");
+}
+
+bool RenderSystemFilm(const SceneDef&, const SystemRun&, const FilmRequest&,
+                      const std::atomic<int>&, PictureReport*) {
+  std::printf("film: not rendered (this build has no renderer: CABLEFILM_RENDER=OFF)\n");
+  return true;
+}
 
 PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<const Run*>&,
                                     const std::string&, const std::string&, bool complete) {

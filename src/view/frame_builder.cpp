@@ -34,7 +34,9 @@ Heads MakeHeads(const SceneView& scene, const History& history, Rgba swatch, con
   const char* path = history.following() ? "recent path" : "its path";
   h.cable = scene.space ? SpaceViewHead(scene, path, swatch, th)
                         : CablePanelHead(scene, path, swatch, th);
-  h.tension = TensionPanelHead(scene, named, band ? "min\u2013max so far" : "", th);
+  // Lines drawn alike have no band: one a line would hide the curves.
+  const bool lines_band = band && !scene.lines_alike;
+  h.tension = TensionPanelHead(scene, named, lines_band ? "min\u2013max so far" : "", th);
   h.time = TimePanelHead(scene, named, th);
   return h;
 }
@@ -57,6 +59,9 @@ std::string Subtitle(const SceneView& scene, const History& history) {
   on += range;
   if (history.range_locked()) on += " (locked)";
   if (!several) return "Link tension on " + on;
+  if (scene.lines_alike)
+    return std::to_string(scene.lines.size()) +
+           " lines, each named in its colour; link tension on " + on;
   std::string names = LineName(scene, 0) + " (thick) and ";
   for (std::size_t i = 1; i < scene.lines.size(); ++i)
     names += (i > 1 ? ", " : "") + LineName(scene, i);
@@ -90,6 +95,19 @@ void HeaderNote(const SceneView& scene, const History& history, double t, Header
 // each is named, when they all have names (no readout otherwise: the legend has no room).
 std::string TimeNote(const SceneView& scene, const History& history, const Snapshot& snap) {
   const std::size_t lines = snap.lines.size();
+  if (scene.lines_alike) {  // too many for a readout each: the largest now and the peak so far
+    std::size_t top = 0, peak = 0;
+    for (std::size_t i = 1; i < lines; ++i) {
+      if (LargestTension(snap.lines[i]) > LargestTension(snap.lines[top])) top = i;
+      if (history.has_peak(i) && !(history.peak(i) <= history.peak(peak))) peak = i;
+    }
+    std::string note = "largest now " + Kilonewtons(LargestTension(snap.lines[top])) + " kN (" +
+                       LineName(scene, top) + ")";
+    if (!history.following() && history.has_peak(peak))
+      note += ", peak " + Kilonewtons(history.peak(peak)) + " kN (" + LineName(scene, peak) +
+              ", t = " + FormatValue("%.2f", history.peak_t(peak)) + " s)";
+    return note;
+  }
   if (lines > 1 && !OverlaysNamed(scene)) return "";
   std::string note;
   for (std::size_t i = 0; i < lines; ++i) {
@@ -194,7 +212,6 @@ Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& 
   Painter p(&frame, L.scale);
   const double lo = history.range_min(), hi = history.range_max();
   const Heads heads = MakeHeads(scene, history, colormap.At(0.62), th);
-  const LineView& first = scene.lines.front();
 
   HeaderInput header;
   header.title = scene.title;
@@ -218,6 +235,8 @@ Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& 
     cable.lines = &scene.lines;
     cable.now = &snap.lines;
     cable.end_paths = &history.end_paths();
+    cable.alike = scene.lines_alike;
+    cable.points = &scene.points;
     if (scene.sea.seabed) cable.seabed_y = &scene.sea.seabed_y;
     if (scene.sea.surface && !snap.surface_x.empty()) {
       cable.surface_x = &snap.surface_x;
@@ -233,6 +252,7 @@ Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& 
   bar.tension_max = hi;
   if (history.range_locked()) bar.caption = "tension [kN], locked";
   bar.now = &snap.lines;
+  bar.alike = scene.lines_alike;
   DrawColorBar(p, bar, colormap, th);
 
   TensionPanelInput tension;
@@ -242,7 +262,8 @@ Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& 
   tension.lines = &scene.lines;
   tension.now = &snap.lines;
   tension.overlay_references = OverlaysNamed(scene);
-  if (history.count() > 0) {
+  tension.alike = scene.lines_alike;
+  if (history.count() > 0 && !scene.lines_alike) {
     tension.envelope_min = &history.link_min(0);
     tension.envelope_max = &history.link_max(0);
   }
@@ -256,9 +277,14 @@ Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& 
   time.note = TimeNote(scene, history, snap);
   time.times = &history.times();
   time.max_tension = &history.max_tension();
-  const std::vector<double>& reference = first.reference.tension;
-  if (!reference.empty())
-    time.equilibrium_max = *std::max_element(reference.begin(), reference.end());
+  time.alike = scene.lines_alike;
+  // The first line's largest reference tension; lines drawn alike: the largest of any line's.
+  for (std::size_t i = 0; i < (scene.lines_alike ? scene.lines.size() : 1); ++i) {
+    const std::vector<double>& reference = scene.lines[i].reference.tension;
+    if (reference.empty()) continue;
+    const double top = *std::max_element(reference.begin(), reference.end());
+    if (!(top <= time.equilibrium_max)) time.equilibrium_max = top;
+  }
   time.equilibrium_label = ReferenceName(scene);
   time.equilibrium_label_left = history.following();  // the newest samples are at the right
   time.markers = &history.markers();
@@ -301,17 +327,25 @@ Frame MakeMaxTensionFigure(const std::string& title, const std::vector<MaxTensio
   p.Rect(panel, th.panel);
   p.Text(title, {panel.x0 + 24 * k, panel.y0 + 44 * k}, 28 * k, th.text, HAlign::kLeft,
          VAlign::kBaseline, false, true);
+  std::vector<LegendEntry> legend;  // a colour a series: the lines' palette (8 apart)
+  for (std::size_t i = 0; i < series.size(); ++i)
+    legend.push_back({LegendEntry::kLine, LineColor(th, i), series[i].label});
+  // The legend beside the title when both fit, else on a row of its own under it (a system's
+  // names after a long title).
+  const float right = panel.x1 - 40 * k;
+  const bool own_row = panel.x0 + 24 * k + EstimateTextWidth(title, 28 * k, true) + 40 * k >
+                       right - LegendWidth(legend, k);
+  const float legend_baseline = panel.y0 + (own_row ? 80 : 44) * k;
   PlotMapping pm;
-  pm.rect = {panel.x0 + 100 * k, panel.y0 + 80 * k, panel.x1 - 40 * k, panel.y1 - 80 * k};
+  pm.rect = {panel.x0 + 100 * k, panel.y0 + (own_row ? 110 : 80) * k, right,
+             panel.y1 - 80 * k};
   pm.x_lo = 0;
   pm.x_hi = t_hi;
   pm.y_lo = v_lo;
   pm.y_hi = v_hi;
   DrawAxes(p, pm, "time [s]", "maximum tension along the cable [kN]", th, 10, 7);
-  static const std::uint32_t kPalette[] = {0x1f6fb4, 0xd9480f, 0x2b8a3e, 0x862e9c, 0x495057};
-  std::vector<LegendEntry> legend;
   for (std::size_t i = 0; i < series.size(); ++i) {
-    const Rgba c = Hex(kPalette[i % 5]);
+    const Rgba c = legend[i].color;
     std::vector<Vec2f> pts;
     int column = -1;
     for (std::size_t j = 0; j < series[i].t.size(); ++j) {
@@ -325,10 +359,11 @@ Frame MakeMaxTensionFigure(const std::string& title, const std::vector<MaxTensio
       column = col;
       pts.push_back(q);
     }
-    p.Polyline(pts, 2.4f * k, c);
-    legend.push_back({LegendEntry::kLine, c, series[i].label});
+    // Each series thinner than the one before, on top: where they coincide each shows as an
+    // edge of the one under it.
+    p.Polyline(pts, NestedWidth(i, series.size()) * k, c);
   }
-  DrawLegend(p, pm.rect.x1, panel.y0 + 44 * k, legend, th, th.panel);
+  DrawLegend(p, pm.rect.x1, legend_baseline, legend, th, th.panel);
   return frame;
 }
 

@@ -115,6 +115,7 @@ void DrawView(Painter& p, const FrameLayout& L, bool plan, const PlaneViewsInput
   const ElevationPlane& e = in.plane;
   std::vector<LineView> lines(scene.lines.size());
   for (std::size_t i = 0; i < lines.size(); ++i) {
+    lines[i].label = scene.lines[i].label;
     lines[i].marks = scene.lines[i].marks;
     if (!scene.lines[i].reference.x.empty())
       Project(scene.lines[i].reference, plan, e, &lines[i].reference);
@@ -137,6 +138,8 @@ void DrawView(Painter& p, const FrameLayout& L, bool plan, const PlaneViewsInput
   c.lines = &lines;
   c.now = &now;
   c.end_paths = &paths;
+  c.alike = scene.lines_alike;
+  if (plan) c.points = &scene.points;  // the plan shows the spread: the points apart
   c.x_label = plan ? "x [m]" : "horizontal distance from the start [m]";
   c.y_label = plan ? "z [m]" : "y [m]";
   std::vector<double> sx, sy;

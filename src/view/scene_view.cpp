@@ -56,6 +56,13 @@ void CheckSceneView(const SceneView& scene) {
                   std::to_string(r.tension.size()) + " tensions; the line has " +
                   std::to_string(n) + " stations and " + std::to_string(n - 1) + " links");
   }
+  for (const PointView& p : scene.points) {
+    if (p.line < 0 || static_cast<std::size_t>(p.line) >= scene.lines.size())
+      throw Error("frame: point \"" + p.name + "\" is on line " + std::to_string(p.line + 1) +
+                  " of " + std::to_string(scene.lines.size()));
+    CheckStations("point \"" + p.name + "\"", "station", {p.station},
+                  scene.lines[p.line].arc_length.size());
+  }
 }
 
 }  // namespace cablefilm

@@ -6,7 +6,9 @@
 // and the frame builder read it. A scene of several lines is just `lines` of several (e.g. the
 // compare command's elastic and inextensible runs of one cable): the first is drawn in full,
 // every line after it as an overlay (thinner, on the same colour range, with its own curves in
-// the plots, named by its label).
+// the plots, named by its label). A system of lines (several lines joined at points) sets
+// `lines_alike`: every line is then drawn in full, alike, each with a colour of its own in the
+// plots, and its points are named where they are.
 #include <array>
 #include <cstddef>
 #include <string>
@@ -44,6 +46,13 @@ struct LineView {
 // equilibrium: its tensions are those of the evenly stretched chord, zero when slack).
 inline constexpr char kStraightStateLabel[] = "initial state (straight)";
 
+// A point of a system of lines (an anchor, a fairlead, a clump weight, a buoy): it is where
+// line `line`'s station `station` is (a line end attached to it), and is named there.
+struct PointView {
+  std::string name;
+  int line = 0, station = 0;
+};
+
 struct SeaView {
   bool seabed = false;   // a flat seabed, drawn in the cable panel
   double seabed_y = 0;   // its elevation [m]
@@ -64,11 +73,18 @@ struct SceneView {
   // Drawn in space: a perspective view of the lines as lit tubes beside their plan and
   // elevation (scene/film_view.h says when); else in the plane z = 0, the paper's picture.
   bool space = false;
+  // Every line drawn alike (a system of lines): each in full on the one colour range, its ends
+  // marked by role, its reference and its moving ends' paths drawn, its name beside its shape
+  // and a curve of its own colour (LineColor) in each plot. false: the first line in full and
+  // the others as overlays (compare).
+  bool lines_alike = false;
+  std::vector<PointView> points;  // named on the picture (lines_alike); may be empty
 };
 
 // Throws Error (naming the line and the sizes or the value) unless the scene has a line and
 // every line at least 2 stations, a name per section or none, marked stations among its
-// stations, and a reference that is empty or of its sizes (tensions alone may be empty).
+// stations, a reference that is empty or of its sizes (tensions alone may be empty), and
+// points at stations of its lines.
 void CheckSceneView(const SceneView& scene);
 
 // How legends and messages name line i: its label, else "line <i + 1>".

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "view/cable_panel.h"
+#include "view/name_tag.h"
 #include "view/plot_layout.h"
 
 namespace cablefilm {
@@ -107,7 +108,7 @@ PanelHead SpaceViewHead(const SceneView& scene, const std::string& path_label, R
                         const Theme& th) {
   PanelHead head;
   head.title = scene.lines.size() > 1 ? "Lines in space (perspective)" : "Line in space (perspective)";
-  if (scene.lines.size() > 1) {
+  if (scene.lines.size() > 1 && !scene.lines_alike) {  // alike: named on the picture
     LegendGroup names{{LegendEntry::kCable, swatch, LineName(scene, 0) + " (thick)"}};
     for (std::size_t i = 1; i < scene.lines.size(); ++i)
       names.push_back({LegendEntry::kLine, swatch, LineName(scene, i) + " (thin)"});
@@ -115,15 +116,17 @@ PanelHead SpaceViewHead(const SceneView& scene, const std::string& path_label, R
   }
   bool weights = false;
   for (const LineView& line : scene.lines) weights = weights || !line.marks.weights.empty();
-  const StationMarks& first = scene.lines.front().marks;
+  const StationMarks first = LegendMarks(scene);
+  const EndNames ends = EndLabels(scene);
   LegendGroup marks;
   if (weights) marks.push_back({LegendEntry::kDiamond, th.marker_edge, "weight"});
-  if (!first.fixed_ends.empty()) marks.push_back({LegendEntry::kSquare, th.marker_edge, "fixed end"});
+  if (!first.fixed_ends.empty())
+    marks.push_back({LegendEntry::kSquare, th.marker_edge, ends.fixed});
   if (!first.moving_ends.empty()) {
-    marks.push_back({LegendEntry::kRing, th.accent, "moving end"});
+    marks.push_back({LegendEntry::kRing, th.accent, ends.moving});
     marks.push_back({LegendEntry::kLine, EndPathColor(th), path_label});
   }
-  if (!first.free_ends.empty()) marks.push_back({LegendEntry::kRing, th.marker_edge, "free end"});
+  if (!first.free_ends.empty()) marks.push_back({LegendEntry::kRing, th.marker_edge, ends.free});
   marks.push_back({LegendEntry::kLine, th.equilibrium, ReferenceName(scene)});
   head.groups.push_back(marks);
   LegendGroup sea;
@@ -200,7 +203,6 @@ ViewProjection DrawSpaceView(Painter& p, const SpaceViewInput& in, const Colorma
   }
 
   const LineState& reference = scene.lines.front().reference;
-  const LineSnapshot& first = now.lines.front();
   if (sea.seabed) {  // each line's shadow straight down on the bed: where it hangs over it
     for (const LineSnapshot& l : now.lines) {
       std::vector<Vec3f> shadow;
@@ -212,20 +214,26 @@ ViewProjection DrawSpaceView(Painter& p, const SpaceViewInput& in, const Colorma
       s.tubes.push_back(PlainTube(std::move(shadow), radius, Rgba{0, 0, 0, 0.28f}));
     }
   }
-  if (reference.x.size() == first.x.size()) {
+  // Drawn in full, with their ghosts, paths and ends: the first line, or all alike.
+  const std::size_t full = scene.lines_alike ? now.lines.size() : 1;
+  for (std::size_t i = 0; i < full && i < scene.lines.size(); ++i) {
+    const LineState& ref = scene.lines[i].reference;
+    if (ref.x.size() != now.lines[i].x.size()) continue;
     std::vector<Vec3f> ghost;
-    for (std::size_t j = 0; j < reference.x.size(); ++j) ghost.push_back(F(StationOf(reference, j)));
+    for (std::size_t j = 0; j < ref.x.size(); ++j) ghost.push_back(F(StationOf(ref, j)));
     s.tubes.push_back(PlainTube(std::move(ghost), 0.45f * radius, WithAlpha(th.equilibrium, 0.5f)));
   }
   if (in.end_paths)
     for (const EndPath& path : *in.end_paths) {
-      if (path.line != 0) continue;  // an overlay's end goes where the first line's does
+      // An overlay's end goes where the first line's does.
+      if (path.line < 0 || static_cast<std::size_t>(path.line) >= full) continue;
       for (const auto& piece : path.pieces)
         if (piece.size() >= 2) s.tubes.push_back(PlainTube(piece, 0.3f * radius, EndPathColor(th)));
     }
-  for (std::size_t i = 1; i < now.lines.size(); ++i)  // thinner: the first shows through them
+  for (std::size_t i = full; i < now.lines.size(); ++i)  // thinner: the first shows through them
     s.tubes.push_back(LineTube(now.lines[i], radius * in.overlay_width / in.cable_width, map, lo, hi));
-  s.tubes.push_back(LineTube(first, radius, map, lo, hi));
+  for (std::size_t i = 0; i < full; ++i)
+    s.tubes.push_back(LineTube(now.lines[i], radius, map, lo, hi));
 
   auto solid = [&](SolidKind kind, const Vec& at, float size, Rgba c) {
     s.solids.push_back({kind, F(at), {}, size, c});
@@ -233,15 +241,19 @@ ViewProjection DrawSpaceView(Painter& p, const SpaceViewInput& in, const Colorma
   for (std::size_t i = 0; i < now.lines.size() && i < scene.lines.size(); ++i)
     for (int w : scene.lines[i].marks.weights)
       if (w >= 0 && static_cast<std::size_t>(w) < now.lines[i].x.size())
-        solid(SolidKind::kOctahedron, StationOf(now.lines[i], w), px(i == 0 ? 10 : 7), th.marker_edge);
-  const StationMarks& marks = scene.lines.front().marks;
-  auto inside = [&](int j) { return j >= 0 && static_cast<std::size_t>(j) < first.x.size(); };
-  for (int e : marks.fixed_ends)
-    if (inside(e)) solid(SolidKind::kBox, StationOf(first, e), px(6.5f), th.marker_edge);
-  for (int e : marks.moving_ends)
-    if (inside(e)) solid(SolidKind::kSphere, StationOf(first, e), px(8), th.accent);
-  for (int e : marks.free_ends)
-    if (inside(e)) solid(SolidKind::kSphere, StationOf(first, e), px(7), th.marker_edge);
+        solid(SolidKind::kOctahedron, StationOf(now.lines[i], w), px(i < full ? 10 : 7),
+              th.marker_edge);
+  for (std::size_t i = 0; i < full && i < scene.lines.size(); ++i) {
+    const LineSnapshot& l = now.lines[i];
+    const StationMarks& marks = scene.lines[i].marks;
+    auto inside = [&](int j) { return j >= 0 && static_cast<std::size_t>(j) < l.x.size(); };
+    for (int e : marks.fixed_ends)
+      if (inside(e)) solid(SolidKind::kBox, StationOf(l, e), px(6.5f), th.marker_edge);
+    for (int e : marks.moving_ends)
+      if (inside(e)) solid(SolidKind::kSphere, StationOf(l, e), px(8), th.accent);
+    for (int e : marks.free_ends)
+      if (inside(e)) solid(SolidKind::kSphere, StationOf(l, e), px(7), th.marker_edge);
+  }
 
   // The current: an arrow near the top of the water, its speed beside its tip.
   const Vec current = HorizontalPart(now.current);
@@ -282,6 +294,27 @@ ViewProjection DrawSpaceView(Painter& p, const SpaceViewInput& in, const Colorma
     p.Text("seabed grid " + FormatValue("%g", s.sheets.front().grid) + " m",
            {in.view.x1 - 10 * k, in.view.y1 - 10 * k}, 13 * k, th.text_dim, HAlign::kRight,
            VAlign::kBottom);
+  if (scene.lines_alike) {  // the names over the scene, none over another: points by their
+    NameTags tags(in.view);  // markers, then lines beside them
+    std::vector<std::vector<Vec2f>> shapes(now.lines.size());
+    for (std::size_t i = 0; i < now.lines.size(); ++i) {
+      Vec2f q;
+      for (std::size_t j = 0; j < now.lines[i].x.size(); ++j)
+        if (v.ToPixel(StationOf(now.lines[i], j), &q)) shapes[i].push_back(q);
+      tags.Avoid(shapes[i], kTubeWidth * in.cable_width);
+    }
+    for (const PointView& pt : scene.points) {
+      if (pt.line < 0 || static_cast<std::size_t>(pt.line) >= now.lines.size()) continue;
+      const LineSnapshot& l = now.lines[pt.line];
+      Vec2f q;
+      if (pt.station < 0 || static_cast<std::size_t>(pt.station) >= l.x.size() ||
+          !v.ToPixel(StationOf(l, pt.station), &q))
+        continue;
+      tags.AddPointName(p, pt.name, q, 0.5f * (in.view.x0 + in.view.x1), th.text_dim, th);
+    }
+    for (std::size_t i = 0; i < now.lines.size() && i < scene.lines.size(); ++i)
+      tags.AddLineName(p, scene.lines[i].label, shapes[i], LineColor(th, i), th);
+  }
   DrawTriad(p, v, in.view);
   return v;
 }

@@ -6,6 +6,8 @@
 // shadows on it, the water surface now as a see-through sheet, the current as an arrow with
 // its speed, and a triad of the axes. Widths and markers are set in pixels at the distance of
 // the middle of the box, so the picture reads the same at any size; nearer parts look larger.
+// Lines drawn alike (a system) are each drawn as the first, with their ghosts, paths and ends,
+// and named beside their tubes; the points by their markers.
 #include <string>
 #include <vector>
 

@@ -19,12 +19,18 @@ bool PerLink(const std::vector<double>* v, std::size_t links) {
 PanelHead TensionPanelHead(const SceneView& scene, bool named, const std::string& envelope_label,
                            const Theme& th) {
   PanelHead head;
-  head.title = "Tension along the cable";
+  head.title = scene.lines_alike ? "Tension along each line" : "Tension along the cable";
   const std::string reference = ReferenceName(scene);
   const std::string first = LineName(scene, 0);
   const std::size_t lines = scene.lines.size();
   const bool band = !envelope_label.empty();
-  if (lines > 1 && named) {  // the curves now, then the references
+  if (scene.lines_alike) {  // a curve a line in its colour, the references dashed
+    LegendGroup names;
+    for (std::size_t i = 0; i < lines; ++i)
+      names.push_back({LegendEntry::kLine, LineColor(th, i), LineName(scene, i)});
+    head.groups.push_back(names);
+    head.groups.push_back({{LegendEntry::kDash, th.equilibrium, reference + " (each line's)"}});
+  } else if (lines > 1 && named) {  // the curves now, then the references
     LegendGroup now{{LegendEntry::kLine, th.current, first + " now"}};
     for (std::size_t i = 1; i < lines; ++i)
       now.push_back({LegendEntry::kLine, th.overlay, LineName(scene, i) + " now"});
@@ -67,13 +73,17 @@ void DrawTensionPanel(Painter& p, const TensionPanelInput& in, const Theme& th) 
   DrawPanelHead(p, in.panel, in.head, tm.rect.y0, th);
   DrawAxes(p, tm, "unstretched arc length from station 0 [m]", "tension [kN]", th, 8, 6);
 
-  const std::vector<double>& boundaries = first.section_boundaries;
+  // The first line's sections (lines drawn alike have each their own: none are marked).
+  static const std::vector<double> kNone;
+  const bool sections = !in.alike || lines.size() == 1;
+  const std::vector<double>& boundaries = sections ? first.section_boundaries : kNone;
   const std::vector<std::string>& names = first.section_names;
   for (double b : boundaries) {
     const float x = tm.PixelX(b);
     p.Dashed({{x, tm.rect.y0}, {x, tm.rect.y1}}, 1.2f * k, th.axis, 4 * k, 4 * k);
   }
-  if (names.size() == boundaries.size() + 1) {  // where they fit in their span, clear of the lines
+  // Where they fit in their span, clear of the lines.
+  if (sections && names.size() == boundaries.size() + 1) {
     const float font = 14 * k;
     for (std::size_t i = 0; i < names.size(); ++i) {
       const double a = i == 0 ? arc.front() : boundaries[i - 1];
@@ -111,6 +121,16 @@ void DrawTensionPanel(Painter& p, const TensionPanelInput& in, const Theme& th) 
       pts.push_back(PlotPoint(tm, mid(lines[i].arc_length, j), v[j] / kN));
     return pts;
   };
+  if (in.alike) {  // every line's reference, then every line now, each in its colour
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      if (drawable(i, lines[i].reference.tension))
+        p.Dashed(curve(i, lines[i].reference.tension), 1.6f * k,
+                 Mix(LineColor(th, i), th.panel, 0.55f), 7 * k, 5 * k);
+    for (std::size_t i = 0; i < now.size(); ++i)
+      if (drawable(i, now[i].tension))
+        p.Polyline(curve(i, now[i].tension), NestedWidth(i, now.size()) * k, LineColor(th, i));
+    return;
+  }
   if (PerLink(&first.reference.tension, links))
     p.Dashed(curve(0, first.reference.tension), 2 * k, th.equilibrium, 8 * k, 6 * k);
   for (std::size_t i = 1; in.overlay_references && i < lines.size(); ++i)

@@ -24,11 +24,14 @@ std::string Shorten(const std::string& s, std::size_t n) {
 
 PanelHead TimePanelHead(const SceneView& scene, bool note_row, const Theme& th) {
   PanelHead head;
-  head.title = "Maximum tension along the cable";
-  if (scene.lines.size() > 1) {
-    LegendGroup names{{LegendEntry::kLine, th.accent, LineName(scene, 0)}};
+  head.title =
+      scene.lines_alike ? "Maximum tension along each line" : "Maximum tension along the cable";
+  if (scene.lines.size() > 1 || scene.lines_alike) {
+    LegendGroup names{
+        {LegendEntry::kLine, scene.lines_alike ? LineColor(th, 0) : th.accent, LineName(scene, 0)}};
     for (std::size_t i = 1; i < scene.lines.size(); ++i)
-      names.push_back({LegendEntry::kLine, th.overlay, LineName(scene, i)});
+      names.push_back({LegendEntry::kLine, scene.lines_alike ? LineColor(th, i) : th.overlay,
+                       LineName(scene, i)});
     head.groups.push_back(names);
     head.note_row = note_row;
   }
@@ -122,14 +125,18 @@ void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
     p.Text(in.equilibrium_label, {x0, under ? y + 6 * k : y - 6 * k}, font, th.equilibrium, HAlign::kLeft,
            under ? VAlign::kTop : VAlign::kBaseline);
   }
-  p.Polyline(trace, 2.4f * k, th.accent);
+  // Lines drawn alike: each its colour, each thinner than the one before (NestedWidth); else
+  // the first thick, the others thinner on top, like the tension curves.
+  const Rgba first_color = in.alike ? LineColor(th, 0) : th.accent;
+  p.Polyline(trace, (in.alike ? NestedWidth(0, lines.size()) : 2.4f) * k, first_color);
   if (!ts.empty() && std::isfinite(vs.back()))
-    p.Disc(PlotPoint(mm, ts.back(), vs.back() / kN), 5 * k, th.accent);
-  for (std::size_t i = 1; i < lines.size(); ++i) {  // thinner, on top, like the tension curves
+    p.Disc(PlotPoint(mm, ts.back(), vs.back() / kN), 5 * k, first_color);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
     if (lines[i].size() != ts.size()) continue;
-    p.Polyline(overlays[i - 1], 1.8f * k, th.overlay);
+    const Rgba c = in.alike ? LineColor(th, i) : th.overlay;
+    p.Polyline(overlays[i - 1], (in.alike ? NestedWidth(i, lines.size()) : 1.8f) * k, c);
     if (!ts.empty() && std::isfinite(lines[i].back()))
-      p.Disc(PlotPoint(mm, ts.back(), lines[i].back() / kN), 4 * k, th.overlay);
+      p.Disc(PlotPoint(mm, ts.back(), lines[i].back() / kN), (in.alike ? 5 : 4) * k, c);
   }
   const Rgba veil{th.panel.r, th.panel.g, th.panel.b, 0.8f};
   if (veil_y1 > veil_y0) p.Rect({eq_box.x0 - 2 * k, veil_y0, eq_box.x1 + 2 * k, veil_y1}, veil);

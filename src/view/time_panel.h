@@ -3,7 +3,8 @@
 // line's trace thinned to pixel columns with a dot at its newest point (the lines after the
 // first thinner, on top), the first line's largest reference tension as a dashed reference, a
 // readout (the note), and vertical markers at given times with short labels (the live view's
-// control changes).
+// control changes). Lines drawn alike (a system) are each a trace of its own colour
+// (LineColor), each thinner than the one before (NestedWidth).
 #include <limits>
 #include <string>
 #include <vector>
@@ -41,6 +42,7 @@ struct TimePanelInput {
   std::string equilibrium_label = "equilibrium";  // or: initial state (straight)
   bool equilibrium_label_left = false;
   const std::vector<TimeMarker>* markers = nullptr;  // those inside the time axis are drawn
+  bool alike = false;  // every line drawn alike (SceneView::lines_alike)
 };
 
 void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th);
