@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "view/body_outline.h"
 #include "view/cable_style.h"
 #include "view/name_tag.h"
 #include "view/plot_axes.h"
@@ -115,6 +116,29 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
       p.Triangle(a1, {b.x, bottom}, {a.x, bottom}, wash);
     }
     p.Polyline(line, 2 * k, th.water);
+  }
+  // Beneath the lines: each body's outline through its points, faintly filled, named inside.
+  for (std::size_t b = 0; in.bodies && in.points && b < in.bodies->size(); ++b) {
+    const BodyView& body = (*in.bodies)[b];
+    std::vector<Vec2f> at;
+    for (int q : body.points) {
+      const PointView& pt = (*in.points)[q];
+      if (pt.line >= 0 && static_cast<std::size_t>(pt.line) < now.size() &&
+          Inside(pt.station, now[pt.line].x.size()))
+        at.push_back(world(now[pt.line].x[pt.station], now[pt.line].y[pt.station]));
+    }
+    const std::vector<Vec2f> outline = BodyOutline(at);
+    if (outline.empty()) continue;
+    Vec2f c{0, 0};
+    for (const Vec2f& q : at) c.x += q.x / at.size(), c.y += q.y / at.size();
+    const Rgba fill = Mix(th.text_dim, th.panel, 0.8f);
+    for (std::size_t i = 1; i < outline.size(); ++i) p.Triangle(c, outline[i - 1], outline[i], fill);
+    p.Polyline(outline, 2.5f * k, th.text_dim);
+    float x0 = c.x, x1 = c.x;
+    for (const Vec2f& q : at) x0 = std::min(x0, q.x), x1 = std::max(x1, q.x);
+    // Named inside when it is wide enough to hold its name; a small one is named by its points.
+    if (x1 - x0 > EstimateTextWidth(body.name, 12 * k) + 16 * k)
+      p.Text(body.name, c, 12 * k, th.text, HAlign::kCenter, VAlign::kMiddle);
   }
   // Drawn in full, with their marks, references and paths: the first line, or all alike.
   const std::size_t full = in.alike ? now.size() : 1;

@@ -62,6 +62,8 @@ struct CablePanelInput {
   // paths, and its label beside it in LineColor; false: the lines after the first as overlays.
   bool alike = false;
   const std::vector<PointView>* points = nullptr;  // named by their markers; null = none
+  // Outlined through their points (which `points` must be given with); null = none.
+  const std::vector<BodyView>* bodies = nullptr;
   // The axes' titles: the plane's (the plan and the elevation of lines in space have others).
   std::string x_label = "x [m]", y_label = "y [m]";
 };

@@ -237,6 +237,7 @@ Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& 
     cable.end_paths = &history.end_paths();
     cable.alike = scene.lines_alike;
     cable.points = &scene.points;
+    cable.bodies = &scene.bodies;
     if (scene.sea.seabed) cable.seabed_y = &scene.sea.seabed_y;
     if (scene.sea.surface && !snap.surface_x.empty()) {
       cable.surface_x = &snap.surface_x;

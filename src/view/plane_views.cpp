@@ -140,6 +140,7 @@ void DrawView(Painter& p, const FrameLayout& L, bool plan, const PlaneViewsInput
   c.end_paths = &paths;
   c.alike = scene.lines_alike;
   if (plan) c.points = &scene.points;  // the plan shows the spread: the points apart
+  if (plan) c.bodies = &scene.bodies;
   c.x_label = plan ? "x [m]" : "horizontal distance from the start [m]";
   c.y_label = plan ? "z [m]" : "y [m]";
   std::vector<double> sx, sy;

@@ -53,6 +53,12 @@ struct PointView {
   int line = 0, station = 0;
 };
 
+// A rigid body of a system: drawn as the outline through its points (its fairleads), named.
+struct BodyView {
+  std::string name;
+  std::vector<int> points;  // indices into SceneView::points
+};
+
 struct SeaView {
   bool seabed = false;   // a flat seabed, drawn in the cable panel
   double seabed_y = 0;   // its elevation [m]
@@ -79,12 +85,13 @@ struct SceneView {
   // the others as overlays (compare).
   bool lines_alike = false;
   std::vector<PointView> points;  // named on the picture (lines_alike); may be empty
+  std::vector<BodyView> bodies;   // outlined through their points; may be empty
 };
 
 // Throws Error (naming the line and the sizes or the value) unless the scene has a line and
 // every line at least 2 stations, a name per section or none, marked stations among its
-// stations, a reference that is empty or of its sizes (tensions alone may be empty), and
-// points at stations of its lines.
+// stations, a reference that is empty or of its sizes (tensions alone may be empty), points
+// at stations of its lines, and bodies through its points.
 void CheckSceneView(const SceneView& scene);
 
 // How legends and messages name line i: its label, else "line <i + 1>".

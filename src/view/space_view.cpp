@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "view/body_outline.h"
 #include "view/cable_panel.h"
 #include "view/name_tag.h"
 #include "view/plot_layout.h"
@@ -230,6 +231,17 @@ ViewProjection DrawSpaceView(Painter& p, const SpaceViewInput& in, const Colorma
       for (const auto& piece : path.pieces)
         if (piece.size() >= 2) s.tubes.push_back(PlainTube(piece, 0.3f * radius, EndPathColor(th)));
     }
+  for (const BodyView& body : scene.bodies) {  // each body's outline through its points
+    std::vector<Vec3f> at;
+    for (int q : body.points) {
+      const PointView& pt = scene.points[q];
+      if (pt.line >= 0 && static_cast<std::size_t>(pt.line) < now.lines.size() && pt.station >= 0 &&
+          static_cast<std::size_t>(pt.station) < now.lines[pt.line].x.size())
+        at.push_back(F(StationOf(now.lines[pt.line], pt.station)));
+    }
+    std::vector<Vec3f> outline = BodyOutline(std::move(at));
+    if (!outline.empty()) s.tubes.push_back(PlainTube(std::move(outline), 0.8f * radius, th.text_dim));
+  }
   for (std::size_t i = full; i < now.lines.size(); ++i)  // thinner: the first shows through them
     s.tubes.push_back(LineTube(now.lines[i], radius * in.overlay_width / in.cable_width, map, lo, hi));
   for (std::size_t i = 0; i < full; ++i)

@@ -28,8 +28,13 @@ SceneView MakeSystemFilmScene(const SceneDef& scene, const SystemRun& run,
   SceneView v = MakeSceneView(scene, sys.lines.front(), std::move(lines),
                               DrawsInSpace(scene, view));
   v.lines_alike = true;
-  for (const SystemPoint& p : sys.points)
-    if (!p.ends.empty()) v.points.push_back({p.name, p.ends[0].line, p.ends[0].station});
+  v.bodies.resize(sys.bodies.size());
+  for (std::size_t b = 0; b < sys.bodies.size(); ++b) v.bodies[b].name = sys.bodies[b].name;
+  for (const SystemPoint& p : sys.points) {
+    if (p.ends.empty()) continue;
+    if (p.on_body >= 0) v.bodies[p.on_body].points.push_back(static_cast<int>(v.points.size()));
+    v.points.push_back({p.name, p.ends[0].line, p.ends[0].station});
+  }
   return v;
 }
 
