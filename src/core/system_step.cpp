@@ -198,14 +198,18 @@ struct SystemStepper {
   double& Time() { return sd.t; }
   double& ProposedStep() { return sd.proposed_step; }
   long& Rejected() { return sd.stats.rejected; }
-  int WorstLink() const {
-    // The most stretched link of all lines (its index in its line).
+  int WorstLink() const { return WorstLinkOf(nullptr); }
+  // The most stretched link of all lines (its index in its line; its line in `line`).
+  int WorstLinkOf(int* line) const {
     int worst = 0;
     double stretch = 0;
     for (int i = 0; i < lines(); ++i) {
       const int k = cablefilm::WorstLink(sys.lines[i], sd.lines[i]);
       const double r = sd.lines[i].forces.geometry.length[k] / sys.lines[i].line.rest_length[k];
-      if (r > stretch) stretch = r, worst = k;
+      if (r > stretch) {
+        stretch = r, worst = k;
+        if (line) *line = i;
+      }
     }
     return worst;
   }
@@ -379,7 +383,13 @@ void StepSystem(const SystemModel& sys, SystemData& sd, const Inputs& in, double
     UpdateWater(sys.lines[i], in, sd.t + 0.5 * dt, &sd.lines[i].water);
   const StepOptions& o = sd.lines.empty() ? StepOptions{} : sd.lines[0].options;
   SystemStepper stepper{sys, sd, in, GeneralizedAlphaCoefficients(o.rho_inf)};
-  AdaptiveImplicitSteps(stepper, o.tolerance, in.stop, dt);
+  try {
+    AdaptiveImplicitSteps(stepper, o.tolerance, in.stop, dt);
+  } catch (const BlowUpError& e) {  // its link is the most stretched: name that link's line
+    int line = 0;
+    stepper.WorstLinkOf(&line);
+    throw BlowUpError("line \"" + sys.line_names[line] + "\": " + e.what(), e.time, e.station);
+  }
   for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i) {
     try {
       CheckStateSane(sys.lines[i], sd.lines[i].state, sd.lines[i].forces.geometry.length);

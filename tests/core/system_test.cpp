@@ -171,6 +171,32 @@ TEST(SystemDynamics, ClumpJunctionMovesAsTheLineWithAWeight) {
   EXPECT_EQ(sd.stats.steps, one.stats.steps);
 }
 
+TEST(SystemDynamics, ABlowUpNamesItsLine) {
+  // The fairlead shaken far faster than any step can follow: the step falls below its floor
+  // and the error says so, naming the line that holds the most stretched link.
+  std::vector<PointSpec> points(3);
+  points[0] = {"anchor", EndMotion::Fixed(kAnchor), {}};
+  points[1] = {"clump", EndMotion::Free(Vec(40.0, -45.0, 5.0)), Clump()};
+  points[2] = {"fairlead", EndMotion::Trochoid(kFairlead, Vec(30.0, 30.0, 0.0), Vec::Zero(),
+                                               2 * M_PI / 1e-3, 1e3), {}};
+  std::vector<LineSpec> lines(2);
+  lines[0] = {"lower", {Chain(60, 24)}, {}, LinkLaw::kElastic, 0, 1};
+  lines[1] = {"upper", {Chain(45, 18)}, {}, LinkLaw::kElastic, 1, 2};
+  const SystemModel sys = MakeSystem(lines, points, Water3D());
+  StepOptions o;
+  o.scheme = Scheme::kImplicit;
+  o.tolerance = 1e-4;
+  SystemData sd = MakeSystemData(sys, SceneInputs(sys.lines[0]), o, SolveSystemEquilibrium(sys));
+  try {
+    for (int k = 0; k < 10; ++k) StepSystem(sys, sd, SceneInputs(sys.lines[0]), 0.1);
+    FAIL() << "no blow-up";
+  } catch (const BlowUpError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("line \"upper\""), std::string::npos) << what;
+    RecordProperty("message", what);
+  }
+}
+
 // A buoy held down by three identical legs to anchors 120 degrees apart, pushed sideways by a
 // steady thrust: a spread mooring in its offset under a steady load.
 struct Spread {
