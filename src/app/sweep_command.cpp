@@ -102,7 +102,10 @@ std::vector<std::string> ChildRunOptions(const RunOptions& o) {
 // every value in range), the built model's limits, and the film's settings when on.
 void ValidateCase(const std::string& text, const std::string& path, const RunOptions& o) {
   const SceneDef scene = ParseScene(text, path);
-  CheckModelLimits(scene, BuildModel(scene));
+  if (scene.is_system())
+    BuildSystem(scene);  // its lines, points and bodies hold together
+  else
+    CheckModelLimits(scene, BuildModel(scene));
   if (o.film == 1) ResolveFilm(scene, o, kCommandLineNames);
 }
 

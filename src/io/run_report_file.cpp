@@ -44,10 +44,14 @@ void WriteRunReport(const std::string& path, const RunSummary& f) {
   std::fprintf(out, "peak_tension = %.10g         # [N], the largest tension_max of the %ld rows\n",
                f.peak, f.rows);
   std::fprintf(out, "peak_time = %.10g            # [s]\npeak_link = %d\n", f.peak_t, f.peak_link);
+  if (!f.peak_line.empty())  // a system's: the line of peak_link
+    std::fprintf(out, "peak_line = %s\n", TomlString(f.peak_line).c_str());
   std::fprintf(out, "min_tension = %.10g          # [N], the smallest tension of any link in the rows\n",
                f.min_tension);
   std::fprintf(out, "min_tension_time = %.10g     # [s]\nmin_tension_link = %d\n", f.min_tension_t,
                f.min_tension_link);
+  if (!f.min_tension_line.empty())
+    std::fprintf(out, "min_tension_line = %s\n", TomlString(f.min_tension_line).c_str());
   std::fprintf(out, "peak_converged = %s\n", f.peak_converged() ? "true" : "false");
   std::fprintf(out, "warnings = [");
   for (size_t i = 0; i < warnings.size(); ++i)
@@ -85,6 +89,8 @@ bool ReadRunReport(const std::string& path, RunSummary* s) {
   s->min_tension = number("min_tension", nan);
   s->min_tension_t = number("min_tension_time", nan);
   s->min_tension_link = static_cast<int>(whole("min_tension_link"));
+  s->peak_line = r["peak_line"].value<std::string>().value_or("");
+  s->min_tension_line = r["min_tension_line"].value<std::string>().value_or("");
   s->warnings.clear();
   if (const toml::array* w = r["warnings"].as_array())
     for (const toml::node& n : *w) s->warnings.push_back(n.value<std::string>().value_or(""));

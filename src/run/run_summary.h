@@ -27,6 +27,9 @@ struct RunSummary {
   double min_tension = std::numeric_limits<double>::quiet_NaN();     // [N]
   double min_tension_t = std::numeric_limits<double>::quiet_NaN();   // [s]
   int min_tension_link = -1;
+  // A system's: the lines holding the peak and the least tension (their links are the line's);
+  // empty for a single line.
+  std::string peak_line, min_tension_line;
   bool completed = false;         // every row; false: stopped, or a blow-up (`failure`)
   std::string failure;            // a blow-up's message
   std::vector<std::string> warnings;  // why the peak cannot be trusted (TrustWarnings)

@@ -141,12 +141,14 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
       s.peak = l.peak;
       s.peak_t = l.peak_t;
       s.peak_link = l.peak_link;
+      s.peak_line = run.sys.line_names[i];
       run.peak_line = i;
     }
     if (!(l.min_tension >= s.min_tension)) {
       s.min_tension = l.min_tension;
       s.min_tension_t = l.min_tension_t;
       s.min_tension_link = l.min_tension_link;
+      s.min_tension_line = run.sys.line_names[i];
     }
   }
   // Each line counts every iteration of the coupled solve: the system's are any line's.

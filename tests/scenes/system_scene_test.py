@@ -110,6 +110,23 @@ def body_tools(args, tmp):
         failures.append(f"body.csv has {len(body)} rows (601 expected); check said {eq}")
     elif not abs(float(body[0]["x"]) - (float(eq.group(1)) + 5.0)) <= 1e-4:  # check's 6 digits
         failures.append(f"body.csv starts at x = {body[0]['x']}, not the equilibrium + 5 m")
+    # The system's report names the line holding the peak: the line whose rows hold it.
+    tops = {line: max(float(r["tension_max"]) for r in
+                      table(tmp / "platform" / "lines" / line / "timeseries.csv"))
+            for line in ("leg1", "leg2", "leg3")}
+    named = re.search(r'^peak_line = "(\w+)"', (tmp / "platform" / "run_report.toml").read_text(), re.M)
+    if named is None or tops[named.group(1)] != max(tops.values()):
+        failures.append(f"run_report.toml's peak_line {named and named.group(1)}, the lines' peaks {tops}")
+    # A sweep of a system: each case is `cablefilm run` of its scene, its summary the system's
+    # run_report.toml: the case with the scene's own wind is the run above, to the digit.
+    done = cli("sweep", scene, "--set", "body[0].force[0]=1e5,2e5", "--out", tmp / "sweep")
+    cases = table(tmp / "sweep" / "sweep.csv") if done.returncode == 0 else []
+    if len(cases) != 2 or any(c["status"] != "ok" for c in cases):
+        failures.append(f"sweep of a system: exit {done.returncode}, {cases} {done.stderr[-300:]}")
+    elif float(cases[1]["peak_tension"]) != peak(tmp / "platform") or not (
+            float(cases[0]["peak_tension"]) < float(cases[1]["peak_tension"])):
+        failures.append(f"sweep peaks {[c['peak_tension'] for c in cases]}, the run's "
+                        f"{peak(tmp / 'platform')}: the same case differs, or less wind pulls harder")
     for words, expected in ((("stiffness", args.source_dir / "scenes" / "polachek1963.toml"),
                              "a single line has no body"),
                             (("offset", scene, "--body", "hull"), 'no body is named "hull"')):
