@@ -208,7 +208,20 @@ void ReadMaterials(TableReader& top, SceneDef& scene, bool elastic) {
     m.area = r.Positive("area", " in m^2", kMinArea, kMaxArea);
     m.mass_per_length =
         r.Positive("mass_per_length", " in kg/m", kMinMassPerLength, kMaxMassPerLength);
-    if (elastic) {
+    const toml::table* t = arr->get(i)->as_table();
+    if (t->contains("axial_stiffness")) {
+      // EA itself [N] (MoorDyn's EA, a rope's catalogue figure): E = EA / area, the area still
+      // setting the buoyancy.
+      if (t->contains("youngs_modulus"))
+        r.Fail(t->get("axial_stiffness"), "axial_stiffness",
+               "expected either youngs_modulus (Pa) or axial_stiffness (N, E times area), not both");
+      const double ea = r.Positive("axial_stiffness", " in N", kMinModulus * m.area,
+                                   kMaxModulus * m.area);
+      m.youngs_modulus = ea / m.area;
+    } else if (elastic) {
+      if (!t->contains("youngs_modulus"))
+        r.Fail(nullptr, "youngs_modulus",
+               "missing; expected youngs_modulus (Pa) or axial_stiffness (N, E times area)");
       m.youngs_modulus = r.Positive("youngs_modulus", " in Pa", kMinModulus, kMaxModulus);
     } else {
       m.youngs_modulus =

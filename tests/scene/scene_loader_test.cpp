@@ -962,6 +962,25 @@ std::string BodySystem() {
   return SystemWith("[[point]]\nname = \"fairlead\"\nposition = [70.0, 0.0, 10.0]", kBodyPoint);
 }
 
+TEST(SceneLoader, AxialStiffnessIsEATimesTheArea) {
+  // Material 1 of the base scene: E = 2e9 Pa on its area; written as EA instead, the same
+  // links (to round-off: E = EA / area).
+  const SceneDef base = ParseScene(kBase, kFile);
+  const double area = base.materials[1].area, E = base.materials[1].youngs_modulus;
+  const std::string ea = "axial_stiffness = " + FormatNumber(E * area);
+  const SceneDef s = ParseScene(With("youngs_modulus = 2.0e9", ea), kFile);
+  EXPECT_NEAR(s.materials[1].youngs_modulus, E, 1e-15 * E);
+  const Model a = BuildModel(base), b = BuildModel(s);
+  for (int j = 0; j < a.line.links; ++j)
+    EXPECT_NEAR(b.line.axial_stiffness[j], a.line.axial_stiffness[j], 1e-14 * a.line.axial_stiffness[j]);
+  ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = 2.0e9\n" + ea),
+              "material[1].axial_stiffness", {"not both"});
+  ExpectError(With("youngs_modulus = 2.0e9\n", ""), "material[1].youngs_modulus",
+              {"missing", "axial_stiffness"});
+  ExpectError(With("youngs_modulus = 2.0e9", "axial_stiffness = -3.0"),
+              "material[1].axial_stiffness", {"expected"});
+}
+
 TEST(SceneLoader, BodyLoads) {
   const SceneDef s = ParseScene(BodySystem(), kFile);
   ASSERT_EQ(s.bodies.size(), 1u);
