@@ -188,7 +188,7 @@ TEST(SystemDynamics, ABlowUpNamesItsLine) {
   o.tolerance = 1e-4;
   SystemData sd = MakeSystemData(sys, SceneInputs(sys.lines[0]), o, SolveSystemEquilibrium(sys));
   try {
-    for (int k = 0; k < 10; ++k) StepSystem(sys, sd, SceneInputs(sys.lines[0]), 0.1);
+    for (int k = 0; k < 10; ++k) StepSystem(sys, sd, SceneInputs(sys.lines[0]), 0.01);
     FAIL() << "no blow-up";
   } catch (const BlowUpError& e) {
     const std::string what = e.what();
