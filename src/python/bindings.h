@@ -64,6 +64,8 @@ pybind11::object SystemSceneEquilibrium(const SceneHandle& scene);
 // A SystemResult; a SystemResult or a scene argument (a Scene, a dict, a path) of a system.
 bool IsSystemResult(const pybind11::handle& obj);
 bool IsSystemRun(const pybind11::handle& obj);
+// The run of a SystemResult.
+const MemorySystemRun& SystemRunOf(const pybind11::object& result);
 #ifdef CABLEFILM_PYTHON_RENDER
 // The film of a SystemResult into the folder `out_dir` (system_bindings.cpp); false if
 // interrupted.

@@ -39,6 +39,7 @@
 #ifdef CABLEFILM_PYTHON_RENDER
 #include "view/film_pass.h"
 #include "view/memory_film.h"
+#include "view/memory_system_film.h"
 #endif
 
 namespace py = pybind11;
@@ -218,8 +219,8 @@ const MemoryRun& RunOf(const py::object& obj, py::object* holder) {
   if (py::isinstance<Result>(obj)) {
     // A line of a system moves with the others: the film pass cannot step it alone.
     if (obj.cast<Result&>().of_system)
-      throw py::value_error("a line of a system's run cannot be drawn alone: render_film takes "
-                            "the SystemResult (its lines together)");
+      throw py::value_error("a line of a system's run cannot be drawn alone: render_frame and "
+                            "render_film take the SystemResult (its lines together)");
     *holder = obj;
   } else {
     *holder = RunScene(SceneOf(obj, std::nullopt));
@@ -262,14 +263,19 @@ namespace {
 py::array RenderFrame(const py::object& obj, std::optional<double> t, std::optional<long> row,
                       int width, int height, std::optional<std::string> colormap,
                       std::optional<std::pair<double, double>> tension_range) {
-  if (IsSystemRun(obj))
-    throw py::value_error("render_frame draws a single line's run; a system's frames are not "
-                          "drawn one by one yet: render_film draws its whole film");
+  // A system's run (a SystemResult, or a system scene run here) or a line's.
   py::object holder;
-  const MemoryRun& run = RunOf(obj, &holder);
-  FilmRequest request = FilmOptions(run.scene, width, height, std::nullopt, std::nullopt, colormap,
-                                    tension_range, false);
-  const MemoryRows& rows = run.rows;
+  const MemorySystemRun* system = nullptr;
+  const MemoryRun* run = nullptr;
+  if (IsSystemRun(obj)) {
+    holder = IsSystemResult(obj) ? obj : RunSystemScene(SceneOf(obj, std::nullopt));
+    system = &SystemRunOf(holder);
+  } else {
+    run = &RunOf(obj, &holder);
+  }
+  FilmRequest request = FilmOptions(system ? system->scene : run->scene, width, height,
+                                    std::nullopt, std::nullopt, colormap, tension_range, false);
+  const MemoryRows& rows = system ? system->lines.front().rows : run->rows;
   long chosen = rows.rows - 1;
   if (row && t) throw py::value_error("give t or row, not both");
   if (row) {
@@ -284,7 +290,8 @@ py::array RenderFrame(const py::object& obj, std::optional<double> t, std::optio
   }
   CancelFlag cancel{0};
   const Image image = RunInterruptible(cancel, [&] {
-    return DrawMemoryRunFrame(run, chosen, request);
+    return system ? DrawMemorySystemFrame(*system, chosen, request)
+                  : DrawMemoryRunFrame(*run, chosen, request);
   });
   py::array_t<std::uint8_t> out({image.height, image.width, 3});
   std::uint8_t* dst = out.mutable_data();
@@ -681,13 +688,14 @@ as one array position [n, stations, 3], tension
         py::kw_only(), py::arg("row") = py::none(), py::arg("width") = 1280,
         py::arg("height") = 720, py::arg("colormap") = py::none(),
         py::arg("tension_range") = py::none(),
-        "The film's frame at the row nearest t [s] (or row; default the last) of a Result (a "
-        "scene is run first): an (height, width, 3) uint8 array, as the film draws it.");
+        "The film's frame at the row nearest t [s] (or row; default the last) of a Result or "
+        "a SystemResult (a scene is run first): an (height, width, 3) uint8 array, as the film draws it.");
   m.def("render_film", &RenderFilmTo, py::arg("run"), py::arg("path"), py::kw_only(),
         py::arg("width") = py::none(), py::arg("height") = py::none(), py::arg("fps") = py::none(),
         py::arg("speed") = py::none(), py::arg("colormap") = py::none(),
         py::arg("tension_range") = py::none(),
-        "The film of a Result (a scene is run first), as `cablefilm run` makes it: into PATH "
+        "The film of a Result or a SystemResult (a scene is run first), as `cablefilm run` "
+        "makes it: into PATH "
         "when it ends in .mp4, else PATH/film.mp4. The scene's [film] unless given. Returns "
         "the film's path.");
 #endif

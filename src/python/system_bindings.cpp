@@ -104,6 +104,8 @@ const MemorySystemRun& RunOf(const py::object& self) { return *self.cast<SystemR
 
 }  // namespace
 
+const MemorySystemRun& SystemRunOf(const py::object& result) { return RunOf(result); }
+
 py::object MakeSystemResult(std::shared_ptr<const MemorySystemRun> run, const SceneHandle& scene) {
   SystemResult r{run, py::cast(scene), py::dict()};
   for (size_t i = 0; i < run->lines.size(); ++i) {

@@ -366,15 +366,32 @@ class SystemScenes(unittest.TestCase):
 
     @unittest.skipUnless(hasattr(cablefilm, "render_film"), "built without the renderer")
     def test_pictures(self):
-        r = cablefilm.run(shortened(SPREAD, 1.0, "film")[0])
-        with self.assertRaisesRegex(ValueError, "render_film"):
-            cablefilm.render_frame(r)
+        # A frame is pixel for pixel the film's (cablefilm run --frames): the platform's rows
+        # are 0.1 s apart, at 10 frames a second a row a frame, frame 10 is t = 1 s.
+        from module_test import read_png
+        scene, path, out = shortened(PLATFORM, 2.0, "frames")
+        status, stdout, stderr = cli("run", path, "--frames", "--size", "320x180", "--fps", "10",
+                                     "--out", out)
+        self.assertEqual(status, 0, stdout + stderr)
+        r = cablefilm.run(scene)
+        frame = cablefilm.render_frame(r, 1.0, width=320, height=180)
+        self.assertEqual(frame.shape, (180, 320, 3))
+        self.assertGreater(len(np.unique(frame.reshape(-1, 3), axis=0)), 100)
+        png = read_png(os.path.join(out, "frames", "frame_%06d.png" % 10))[:, :, :3]
+        differ = np.count_nonzero(np.any(png != frame, axis=2))
+        self.assertEqual(differ, 0, "%d pixels differ from the film's frame 10" % differ)
+        self.assertTrue(np.any(cablefilm.render_frame(r, row=0, width=320, height=180) != frame))
+        # A line of a system cannot be drawn alone; the system's film is an MP4.
+        with self.assertRaisesRegex(ValueError, "SystemResult"):
+            cablefilm.render_frame(r.lines["leg2"])
         with self.assertRaisesRegex(ValueError, "SystemResult"):
             cablefilm.render_film(r.lines["leg2"], os.path.join(workdir("film"), "leg2.mp4"))
-        path = cablefilm.render_film(r, os.path.join(workdir("film"), "spread.mp4"),
-                                     width=320, height=180)
+        film_dir = workdir("film")
+        path = cablefilm.render_film(r, os.path.join(film_dir, "platform.mp4"), width=320,
+                                     height=180)
         with open(path, "rb") as f:
             self.assertEqual(f.read(12)[4:8], b"ftyp")
+        self.assertEqual(os.listdir(film_dir), ["platform.mp4"])
 
 
 if __name__ == "__main__":
