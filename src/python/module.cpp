@@ -587,9 +587,12 @@ the loader: a bad key or value raises SceneError and leaves the scene as it was.
       .def("__repr__", [](const SceneHandle& s) {
         const std::string head = "<cablefilm.Scene " + s.path() + ": \"" + s.def().title + "\", ";
         if (!s.is_system()) return head + std::to_string(s.model().line.links) + " links>";
-        return head + "a system of " + std::to_string(s.def().lines.size()) + " lines, " +
-               std::to_string(s.def().points.size()) + " points, " +
-               std::to_string(s.def().bodies.size()) + " bodies>";
+        auto count = [](std::size_t n, const char* one, const char* many) {
+          return std::to_string(n) + " " + (n == 1 ? one : many);
+        };
+        return head + "a system of " + count(s.def().lines.size(), "line", "lines") + ", " +
+               count(s.def().points.size(), "point", "points") + ", " +
+               count(s.def().bodies.size(), "body", "bodies") + ">";
       });
 
   m.def("load", &SceneOf, py::arg("source"), py::arg("name") = py::none(),
