@@ -33,18 +33,6 @@ int FindBody(const SceneDef& scene, const SystemModel& sys, const std::string& n
               names + ")");
 }
 
-// The shortest line with an end on body b [m].
-double ShortestLineOn(const SystemModel& sys, int b) {
-  double shortest = INFINITY;
-  for (const SystemPoint& p : sys.points)
-    if (p.on_body == b)
-      for (const LineEnd& e : p.ends)
-        shortest = std::min(shortest, sys.lines[e.line].line.total_length());
-  if (!std::isfinite(shortest))
-    throw Error("body \"" + sys.bodies[b].name + "\": no line ends on it");
-  return shortest;
-}
-
 SystemModel LoadSystem(const std::string& scene_path, SceneDef* scene) {
   *scene = LoadScene(scene_path);
   if (!scene->is_system())

@@ -1,7 +1,11 @@
 #include "core/body_statics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "core/error.h"
 
 namespace cablefilm {
 
@@ -64,6 +68,17 @@ std::vector<OffsetPoint> OffsetCurve(const SystemModel& sys, int b, const Vec6& 
     curve.push_back(std::move(p));
   }
   return curve;
+}
+
+double ShortestLineOn(const SystemModel& sys, int b) {
+  double shortest = INFINITY;
+  for (const SystemPoint& p : sys.points)
+    if (p.on_body == b)
+      for (const LineEnd& e : p.ends)
+        shortest = std::min(shortest, sys.lines[e.line].line.total_length());
+  if (!std::isfinite(shortest))
+    throw Error("body \"" + sys.bodies[b].name + "\": no line ends on it");
+  return shortest;
 }
 
 }  // namespace cablefilm

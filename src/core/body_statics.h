@@ -47,4 +47,9 @@ std::vector<OffsetPoint> OffsetCurve(const SystemModel& sys, int b, const Vec6& 
 // least 1 m: its size, as the stiffness's rotation steps use it.
 double BodySize(const SystemModel& sys, int b);
 
+// The unstretched length of the shortest line with an end on body b [m]: the scale of the
+// quasi-static tools' steps (stiffness: 1e-4 of it; the offset curve's default reach: 5 %).
+// Throws Error when no line ends on the body.
+double ShortestLineOn(const SystemModel& sys, int b);
+
 }  // namespace cablefilm

@@ -1,8 +1,10 @@
 // The Python module `cablefilm`: scenes loaded from a file or a dict and changed key by key,
 // runs as numpy arrays with no file written, the static equilibrium, the film and its frames,
 // sweeps over scene keys. Bindings only: the work is that of the program's libraries
-// (scene_loader, app/memory_run, app/film_pass, app/sweep_cases), called as the command line
-// calls them, so a run gives the very doubles of `cablefilm run`'s results.nc.
+// (scene_loader, run/memory_run, view/film_pass, run/sweep), called as the command line
+// calls them, so a run gives the very doubles of `cablefilm run`'s results.nc. A system of
+// lines goes to system_bindings.cpp (its run, its equilibrium, its film) and body_tools.cpp
+// (a body's stiffness and offset curve).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -22,12 +24,14 @@
 #include "scene/scene_loader.h"
 #include "run/initial_state.h"
 #include "run/memory_run.h"
+#include "run/memory_system_run.h"
 #include "run/run_summary.h"
 #include "run/sweep.h"
 #include "run/sweep_plan.h"
 #include "scene/scene_edit.h"
 #include "core/version.h"
 #include "core/equilibrium.h"
+#include "python/bindings.h"
 #include "python/interruptible.h"
 #include "python/scene_handle.h"
 #include "python/toml_values.h"
@@ -35,6 +39,7 @@
 #ifdef CABLEFILM_PYTHON_RENDER
 #include "view/film_pass.h"
 #include "view/memory_film.h"
+#include "view/memory_system_film.h"
 #endif
 
 namespace py = pybind11;
@@ -45,12 +50,7 @@ namespace {
 // cablefilm.BlowUpError, made with the module (a reference kept for the process's life).
 PyObject* g_blow_up_error = nullptr;
 
-// A run held by Python: its rows stay where the run wrote them, and the arrays handed out are
-// read-only views of them that keep the Result alive.
-struct Result {
-  std::shared_ptr<const MemoryRun> run;
-  py::object scene;  // the Scene it ran (a copy, unchanged by later edits)
-};
+}  // namespace
 
 SceneHandle SceneOf(const py::handle& source, const std::optional<std::string>& name) {
   if (py::isinstance<SceneHandle>(source)) return source.cast<SceneHandle>();
@@ -64,6 +64,15 @@ SceneHandle SceneOf(const py::handle& source, const std::optional<std::string>& 
   if (!py::isinstance<py::str>(path)) throw py::type_error("expected a path as text, got bytes");
   return SceneHandle::FromFile(path.cast<std::string>());
 }
+
+void RaiseBlowUp(const std::string& message, const py::object& result) {
+  py::object error = py::reinterpret_borrow<py::object>(g_blow_up_error)(py::str(message));
+  error.attr("result") = result;
+  PyErr_SetObject(g_blow_up_error, error.ptr());
+  throw py::error_already_set();
+}
+
+namespace {
 
 // The run of a scene, the GIL released. A scene with no initial state found is a SceneError
 // (as `check` reports it); a blow-up raises BlowUpError with the rows so far as its `result`.
@@ -86,17 +95,12 @@ py::object RunScene(const SceneHandle& scene) {
     throw SceneProblem(SceneErrorMessage(scene.path(), e.what()));
   }
   py::object result = MakeResult(run, scene);
-  if (!run->run.summary.failure.empty()) {
-    py::object error =
-        py::reinterpret_borrow<py::object>(g_blow_up_error)(py::str(run->run.summary.failure));
-    error.attr("result") = result;
-    PyErr_SetObject(g_blow_up_error, error.ptr());
-    throw py::error_already_set();
-  }
+  if (!run->run.summary.failure.empty()) RaiseBlowUp(run->run.summary.failure, result);
   return result;
 }
 
-// A read-only view of `data` (shape, strides in elements) kept alive by `owner`.
+}  // namespace
+
 py::array View(const py::object& owner, const double* data, std::vector<py::ssize_t> shape,
                std::vector<py::ssize_t> strides) {
   for (py::ssize_t& s : strides) s *= static_cast<py::ssize_t>(sizeof(double));
@@ -104,6 +108,8 @@ py::array View(const py::object& owner, const double* data, std::vector<py::ssiz
   a.attr("flags").attr("writeable") = false;
   return a;
 }
+
+namespace {
 
 // The positions along `axis` of every row [rows, stations] (station -1), or of the start (0) or
 // the end (1) station [rows]. The rows hold x, y, z station by station: an axis is every
@@ -124,11 +130,15 @@ py::array PositionVectors(const py::object& self) {
   return View(self, r.rows.x.data(), {r.rows.rows, stations, kDim}, {stations * kDim, kDim, 1});
 }
 
+}  // namespace
+
 py::array Copy(const Eigen::VectorXd& v) {
   py::array_t<double> a(v.size());
   std::memcpy(a.mutable_data(), v.data(), sizeof(double) * static_cast<std::size_t>(v.size()));
   return std::move(a);
 }
+
+namespace {
 
 py::array LinkMidpoints(const Model& m) {
   py::array_t<double> a(m.line.links);
@@ -151,15 +161,26 @@ py::dict StatsDict(const MemoryRun& r) {
   return d;
 }
 
-// The static equilibrium of a scene, whatever its [initial] state says.
-struct Equilibrium {
-  py::array x, y, z, tension, s, s_link;
-  py::array position;  // [stations, 3]: x, y, z
-  int iterations = 0;
-  double residual = 0;
-  bool fallback = false;
-};
+}  // namespace
 
+Equilibrium LineEquilibrium(const Model& m, const Points& x, const Eigen::VectorXd& tension) {
+  Equilibrium e;
+  e.x = Copy(x.row(0).transpose());
+  e.y = Copy(x.row(1).transpose());
+  e.z = Copy(x.row(2).transpose());
+  // column-major: station by station, x, y, z
+  py::array_t<double> position({static_cast<py::ssize_t>(x.cols()), py::ssize_t{kDim}});
+  std::memcpy(position.mutable_data(), x.data(), sizeof(double) * static_cast<std::size_t>(x.size()));
+  e.position = std::move(position);
+  e.tension = Copy(tension);
+  e.s = Copy(m.line.arc_length);
+  e.s_link = LinkMidpoints(m);
+  return e;
+}
+
+namespace {
+
+// The static equilibrium of a scene, whatever its [initial] state says.
 Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
   SceneDef def = scene.def();
   def.initial = InitialStateKind::kEquilibrium;
@@ -185,19 +206,7 @@ Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
   } catch (const Error& e) {
     throw SceneProblem(SceneErrorMessage(scene.path(), e.what()));
   }
-  Equilibrium e;
-  e.x = Copy(solved.state.x.row(0).transpose());
-  e.y = Copy(solved.state.x.row(1).transpose());
-  e.z = Copy(solved.state.x.row(2).transpose());
-  {
-    const Points& x = solved.state.x;  // column-major: station by station, x, y, z
-    py::array_t<double> position({static_cast<py::ssize_t>(x.cols()), py::ssize_t{kDim}});
-    std::memcpy(position.mutable_data(), x.data(), sizeof(double) * static_cast<std::size_t>(x.size()));
-    e.position = std::move(position);
-  }
-  e.tension = Copy(solved.tension);
-  e.s = Copy(m.line.arc_length);
-  e.s_link = LinkMidpoints(m);
+  Equilibrium e = LineEquilibrium(m, solved.state.x, solved.tension);
   e.iterations = solved.report.iterations;
   e.residual = solved.report.residual;
   e.fallback = solved.report.fallback;
@@ -208,6 +217,10 @@ Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
 // The run of a Result, or of a scene (run here; `holder` keeps it).
 const MemoryRun& RunOf(const py::object& obj, py::object* holder) {
   if (py::isinstance<Result>(obj)) {
+    // A line of a system moves with the others: the film pass cannot step it alone.
+    if (obj.cast<Result&>().of_system)
+      throw py::value_error("a line of a system's run cannot be drawn alone: render_frame and "
+                            "render_film take the SystemResult (its lines together)");
     *holder = obj;
   } else {
     *holder = RunScene(SceneOf(obj, std::nullopt));
@@ -215,9 +228,9 @@ const MemoryRun& RunOf(const py::object& obj, py::object* holder) {
   return *holder->cast<Result&>().run;
 }
 
-// The film's options: the scene's [film], with those given (each checked as the loader and the
-// command line check theirs); a whole film's frame count too.
-FilmRequest FilmOptions(const MemoryRun& run, std::optional<int> width, std::optional<int> height,
+}  // namespace
+
+FilmRequest FilmOptions(const SceneDef& scene, std::optional<int> width, std::optional<int> height,
                         std::optional<double> fps, std::optional<double> speed,
                         std::optional<std::string> colormap,
                         std::optional<std::pair<double, double>> tension_range, bool whole_film) {
@@ -226,8 +239,8 @@ FilmRequest FilmOptions(const MemoryRun& run, std::optional<int> width, std::opt
   };
   FilmOverrides o;
   if (width || height) {
-    o.width = width.value_or(run.scene.film.width);
-    o.height = height.value_or(run.scene.film.height);
+    o.width = width.value_or(scene.film.width);
+    o.height = height.value_or(scene.film.height);
     check(width ? "width" : "height", FilmSizeProblem(o.width, o.height));
   }
   if (fps) check("fps", FpsProblem(o.fps = *fps));
@@ -239,20 +252,30 @@ FilmRequest FilmOptions(const MemoryRun& run, std::optional<int> width, std::opt
   }
   o.frames = 0;
   try {
-    return MakeFilmRequest(ResolveFilm(run.scene, o, kPythonNames, whole_film), "", "");
+    return MakeFilmRequest(ResolveFilm(scene, o, kPythonNames, whole_film), "", "");
   } catch (const Error& e) {
     throw py::value_error(e.what());
   }
 }
 
+namespace {
+
 py::array RenderFrame(const py::object& obj, std::optional<double> t, std::optional<long> row,
                       int width, int height, std::optional<std::string> colormap,
                       std::optional<std::pair<double, double>> tension_range) {
+  // A system's run (a SystemResult, or a system scene run here) or a line's.
   py::object holder;
-  const MemoryRun& run = RunOf(obj, &holder);
-  FilmRequest request = FilmOptions(run, width, height, std::nullopt, std::nullopt, colormap,
-                                    tension_range, false);
-  const MemoryRows& rows = run.rows;
+  const MemorySystemRun* system = nullptr;
+  const MemoryRun* run = nullptr;
+  if (IsSystemRun(obj)) {
+    holder = IsSystemResult(obj) ? obj : RunSystemScene(SceneOf(obj, std::nullopt));
+    system = &SystemRunOf(holder);
+  } else {
+    run = &RunOf(obj, &holder);
+  }
+  FilmRequest request = FilmOptions(system ? system->scene : run->scene, width, height,
+                                    std::nullopt, std::nullopt, colormap, tension_range, false);
+  const MemoryRows& rows = system ? system->lines.front().rows : run->rows;
   long chosen = rows.rows - 1;
   if (row && t) throw py::value_error("give t or row, not both");
   if (row) {
@@ -267,7 +290,8 @@ py::array RenderFrame(const py::object& obj, std::optional<double> t, std::optio
   }
   CancelFlag cancel{0};
   const Image image = RunInterruptible(cancel, [&] {
-    return DrawMemoryRunFrame(run, chosen, request);
+    return system ? DrawMemorySystemFrame(*system, chosen, request)
+                  : DrawMemoryRunFrame(*run, chosen, request);
   });
   py::array_t<std::uint8_t> out({image.height, image.width, 3});
   std::uint8_t* dst = out.mutable_data();
@@ -285,9 +309,17 @@ std::string RenderFilmTo(const py::object& obj, const std::string& path,
                          std::optional<std::string> colormap,
                          std::optional<std::pair<double, double>> tension_range) {
   namespace fs = std::filesystem;
+  const bool system = IsSystemRun(obj);
   py::object holder;
-  const MemoryRun& run = RunOf(obj, &holder);
-  FilmRequest request = FilmOptions(run, width, height, fps, speed, colormap, tension_range, true);
+  const MemoryRun* run = nullptr;
+  FilmRequest request;
+  if (system) {
+    // The system's run (run here for a scene) is drawn after the folder is made.
+    holder = IsSystemResult(obj) ? obj : RunSystemScene(SceneOf(obj, std::nullopt));
+  } else {
+    run = &RunOf(obj, &holder);
+    request = FilmOptions(run->scene, width, height, fps, speed, colormap, tension_range, true);
+  }
   // PATH.mp4: the film itself, made in a folder of its own beside it, then renamed; else a
   // folder that gets film.mp4, as `cablefilm run --out PATH` does.
   const fs::path target(path);
@@ -306,7 +338,11 @@ std::string RenderFilmTo(const py::object& obj, const std::string& path,
   CancelFlag cancel{0};
   bool finished = false;
   try {
-    finished = RunInterruptible(cancel, [&] { return RenderMemoryRunFilm(run, request, cancel); });
+    finished = system ? RenderSystemResultFilm(holder, dir.string(), width, height, fps, speed,
+                                               colormap, tension_range)
+                      : RunInterruptible(cancel, [&] {
+                          return RenderMemoryRunFilm(*run, request, cancel);
+                        });
   } catch (...) {
     if (file) fs::remove_all(dir);
     throw;
@@ -413,16 +449,24 @@ py::list Sweep(const py::object& source, const py::dict& values, std::optional<p
   const int threads = jobs.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   // Each case's run, kept only with keep_results: a sweep of many cases holds their summaries.
   std::vector<std::shared_ptr<const MemoryRun>> kept(n);
+  std::vector<std::shared_ptr<const MemorySystemRun>> kept_systems(n);
   std::vector<CaseOutcome> outcomes(n);
   CancelFlag cancel{0};
   RunInterruptible(cancel, [&] {
     ThreadExecutor executor(threads, [&](std::size_t i, const CancelFlag* stop) {
       CaseOutcome o;
       try {
-        auto run = std::make_shared<const MemoryRun>(
-            RunInMemory(scenes[i].def(), scenes[i].model(), stop));
-        o = OutcomeOf(run->run.summary, *stop != 0);
-        if (keep_results) kept[i] = std::move(run);
+        if (scenes[i].is_system()) {
+          auto run = std::make_shared<const MemorySystemRun>(
+              RunSystemInMemory(scenes[i].def(), scenes[i].system(), stop));
+          o = OutcomeOf(run->run.summary, *stop != 0);
+          if (keep_results) kept_systems[i] = std::move(run);
+        } else {
+          auto run = std::make_shared<const MemoryRun>(
+              RunInMemory(scenes[i].def(), scenes[i].model(), stop));
+          o = OutcomeOf(run->run.summary, *stop != 0);
+          if (keep_results) kept[i] = std::move(run);
+        }
       } catch (const std::exception& e) {
         o.status = "error";
         o.message = SceneErrorMessage(scenes[i].path(), e.what());
@@ -441,7 +485,10 @@ py::list Sweep(const py::object& source, const py::dict& values, std::optional<p
     d["status"] = o.status;
     d["message"] = o.message;
     AddSummaryColumns(o, &d);
-    if (keep_results) d["result"] = kept[i] ? MakeResult(kept[i], scenes[i]) : py::none();
+    if (keep_results)
+      d["result"] = kept[i]           ? MakeResult(kept[i], scenes[i])
+                    : kept_systems[i] ? MakeSystemResult(kept_systems[i], scenes[i])
+                                      : py::none();
     rows.append(d);
   }
   return rows;
@@ -506,11 +553,46 @@ the loader: a bad key or value raises SceneError and leaves the scene as it was.
       .def_property_readonly("path", &SceneHandle::path,
                              "The file it came from (or the name given to a dict).")
       .def_property_readonly("title", [](const SceneHandle& s) { return s.def().title; })
-      .def_property_readonly("stations", [](const SceneHandle& s) { return s.model().stations(); })
-      .def_property_readonly("links", [](const SceneHandle& s) { return s.model().line.links; })
+      .def_property_readonly("is_system", &SceneHandle::is_system,
+                             "True for a system of lines ([[line]], [[point]], [[body]]).")
+      .def_property_readonly("lines", [](const SceneHandle& s) {
+        return s.is_system() ? s.system().line_names : std::vector<std::string>{};
+      }, "A system's line names (in the scene's order, line[0] first); [] for a single line.")
+      .def_property_readonly("points", [](const SceneHandle& s) {
+        std::vector<std::string> names;
+        for (const PointDef& p : s.def().points) names.push_back(p.name);
+        return names;
+      }, "A system's point names (point[0] first); [] for a single line.")
+      .def_property_readonly("bodies", [](const SceneHandle& s) {
+        std::vector<std::string> names;
+        for (const BodyDef& b : s.def().bodies) names.push_back(b.name);
+        return names;
+      }, "A system's body names (body[0] first); [] for none.")
+      .def_property_readonly("stations", [](const SceneHandle& s) -> py::object {
+        if (!s.is_system()) return py::int_(s.model().stations());
+        py::dict d;
+        const SystemModel& sys = s.system();
+        for (size_t i = 0; i < sys.lines.size(); ++i)
+          d[py::str(sys.line_names[i])] = sys.lines[i].stations();
+        return d;
+      }, "The stations of a line; of a system, a dict {line name: stations}.")
+      .def_property_readonly("links", [](const SceneHandle& s) -> py::object {
+        if (!s.is_system()) return py::int_(s.model().line.links);
+        py::dict d;
+        const SystemModel& sys = s.system();
+        for (size_t i = 0; i < sys.lines.size(); ++i)
+          d[py::str(sys.line_names[i])] = sys.lines[i].line.links;
+        return d;
+      }, "The links of a line; of a system, a dict {line name: links}.")
       .def("__repr__", [](const SceneHandle& s) {
-        return "<cablefilm.Scene " + s.path() + ": \"" + s.def().title + "\", " +
-               std::to_string(s.model().line.links) + " links>";
+        const std::string head = "<cablefilm.Scene " + s.path() + ": \"" + s.def().title + "\", ";
+        if (!s.is_system()) return head + std::to_string(s.model().line.links) + " links>";
+        auto count = [](std::size_t n, const char* one, const char* many) {
+          return std::to_string(n) + " " + (n == 1 ? one : many);
+        };
+        return head + "a system of " + count(s.def().lines.size(), "line", "lines") + ", " +
+               count(s.def().points.size(), "point", "points") + ", " +
+               count(s.def().bodies.size(), "body", "bodies") + ">";
       });
 
   m.def("load", &SceneOf, py::arg("source"), py::arg("name") = py::none(),
@@ -565,10 +647,15 @@ as one array position [n, stations, 3], tension
                FormatNumber(s.peak) + " N" + (s.completed ? "" : ", cut short") + ">";
       });
 
-  m.def("run", [](const py::object& scene) { return RunScene(SceneOf(scene, std::nullopt)); },
+  m.def("run",
+        [](const py::object& source) {
+          const SceneHandle scene = SceneOf(source, std::nullopt);
+          return scene.is_system() ? RunSystemScene(scene) : RunScene(scene);
+        },
         py::arg("scene"),
         "Runs a scene (a Scene, a path or a dict) from its initial state to its end, writing no "
-        "file; the GIL is released meanwhile. Returns a Result. BlowUpError on a numerical "
+        "file; the GIL is released meanwhile. Returns a Result (a SystemResult for a system of "
+        "lines). BlowUpError on a numerical "
         "blow-up (its .result: the rows so far); SceneError when no initial state is found.");
 
   py::class_<Equilibrium>(m, "Equilibrium",
@@ -589,26 +676,35 @@ as one array position [n, stations, 3], tension
         return py::iter(py::make_tuple(e.x, e.y, e.tension));
       });
   m.def("equilibrium",
-        [](const py::object& scene) { return SolveSceneEquilibrium(SceneOf(scene, std::nullopt)); },
+        [](const py::object& source) -> py::object {
+          const SceneHandle scene = SceneOf(source, std::nullopt);
+          if (scene.is_system()) return SystemSceneEquilibrium(scene);
+          return py::cast(SolveSceneEquilibrium(scene));
+        },
         py::arg("scene"),
         "The scene's static equilibrium with the ends at their t = 0 positions (the initial "
-        "state of a run with [initial] state = \"equilibrium\"), the GIL released.");
+        "state of a run with [initial] state = \"equilibrium\"), the GIL released. A "
+        "SystemEquilibrium for a system of lines (its free bodies at their equilibrium poses).");
 
 #ifdef CABLEFILM_PYTHON_RENDER
   m.def("render_frame", &RenderFrame, py::arg("run"), py::arg("t") = py::none(),
         py::kw_only(), py::arg("row") = py::none(), py::arg("width") = 1280,
         py::arg("height") = 720, py::arg("colormap") = py::none(),
         py::arg("tension_range") = py::none(),
-        "The film's frame at the row nearest t [s] (or row; default the last) of a Result (a "
-        "scene is run first): an (height, width, 3) uint8 array, as the film draws it.");
+        "The film's frame at the row nearest t [s] (or row; default the last) of a Result or "
+        "a SystemResult (a scene is run first): an (height, width, 3) uint8 array, as the film draws it.");
   m.def("render_film", &RenderFilmTo, py::arg("run"), py::arg("path"), py::kw_only(),
         py::arg("width") = py::none(), py::arg("height") = py::none(), py::arg("fps") = py::none(),
         py::arg("speed") = py::none(), py::arg("colormap") = py::none(),
         py::arg("tension_range") = py::none(),
-        "The film of a Result (a scene is run first), as `cablefilm run` makes it: into PATH "
+        "The film of a Result or a SystemResult (a scene is run first), as `cablefilm run` "
+        "makes it: into PATH "
         "when it ends in .mp4, else PATH/film.mp4. The scene's [film] unless given. Returns "
         "the film's path.");
 #endif
+
+  BindSystems(m);
+  BindBodyTools(m);
 
   m.def("sweep", &Sweep, py::arg("scene"), py::arg("values") = py::dict(), py::kw_only(),
         py::arg("cases") = py::none(), py::arg("jobs") = py::none(),

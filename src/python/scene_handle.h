@@ -3,12 +3,15 @@
 // is read by the same loader as `cablefilm check` (scene_loader.h, then the built model's
 // limits, scene_limits.h); a change of a value goes through the sweep's editing of scene keys
 // (scene/scene_edit.h) and is read again, so a bad value is refused with the loader's message
-// and the scene keeps its former text.
+// and the scene keeps its former text. A system of lines ([[line]], [[point]], [[body]]) is
+// built as `cablefilm run` builds it (BuildSystem); a single line as `check` builds it.
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/model.h"
+#include "core/system.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm::python {
@@ -30,7 +33,11 @@ class SceneHandle {
   const std::string& text() const { return text_; }
   const std::string& path() const { return path_; }
   const SceneDef& def() const { return def_; }
-  const Model& model() const { return model_; }
+  bool is_system() const { return def_.is_system(); }
+  // A single line's model; throws SceneProblem for a system (which has a model a line).
+  const Model& model() const;
+  // A system's; throws SceneProblem for a single line.
+  const SystemModel& system() const;
 
   // Sets keys[i] (dotted scene paths) to the TOML values values[i], all at once; on a problem
   // throws SceneProblem (or Error for a key that does not fit the scene) and changes nothing.
@@ -39,14 +46,16 @@ class SceneHandle {
   std::string ValueDocument(const std::string& key) const;
 
  private:
-  SceneHandle(std::string text, std::string path, SceneDef def, Model model)
+  SceneHandle(std::string text, std::string path, SceneDef def, std::optional<Model> model,
+              std::optional<SystemModel> system)
       : text_(std::move(text)), path_(std::move(path)), def_(std::move(def)),
-        model_(std::move(model)) {}
+        model_(std::move(model)), system_(std::move(system)) {}
   static SceneHandle Checked(std::string text, std::string path, SceneDef def);
   std::string text_;
   std::string path_;
   SceneDef def_;
-  Model model_;
+  std::optional<Model> model_;         // a single line's
+  std::optional<SystemModel> system_;  // a system's
 };
 
 }  // namespace cablefilm::python

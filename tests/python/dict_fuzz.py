@@ -270,6 +270,21 @@ def finite(name, a):
 REACHED = {"loaded": 0, "equilibrium": 0, "run": 0}  # calls that succeeded
 
 
+def finite_parts(what, result, line_names, system_names):
+    """A line's result: `line_names` finite. A system's (issue 20: a SystemResult or a
+    SystemEquilibrium): `system_names` and each line's `line_names` but the system's own."""
+    if not hasattr(result, "lines"):
+        for name in line_names:
+            finite(what + "." + name, getattr(result, name))
+        return
+    for name in system_names + (("peak_tension",) if what == "run" else ("residual",)):
+        finite(what + "." + name, getattr(result, name))
+    for line, part in result.lines.items():
+        for name in line_names:
+            if name not in ("residual", "peak_tension"):
+                finite("%s.lines[%s].%s" % (what, line, name), getattr(part, name))
+
+
 def run_case(case):
     """Returns None when the case passes, else what went wrong."""
     import cablefilm
@@ -292,15 +307,15 @@ def run_case(case):
             pass  # a table as a key the scene's getter does not take
         try:
             e = timed(cablefilm.equilibrium, scene)
-            for name in ("x", "y", "z", "tension", "residual"):
-                finite("equilibrium." + name, getattr(e, name))
+            finite_parts("equilibrium", e, ("x", "y", "z", "tension", "residual"),
+                         ("point_position", "point_force", "body_pose", "body_load"))
             REACHED["equilibrium"] += 1
         except allowed:
             pass
         try:
             r = timed(cablefilm.run, scene)
-            for name in ("time", "x", "y", "z", "tension", "peak_tension"):
-                finite("run." + name, getattr(r, name))
+            finite_parts("run", r, ("time", "x", "y", "z", "tension", "peak_tension"),
+                         ("time", "point_position", "point_force", "body_pose", "body_load"))
             REACHED["run"] += 1
         except allowed:
             pass
