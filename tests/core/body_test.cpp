@@ -18,26 +18,12 @@
 namespace cablefilm {
 namespace {
 
-std::string Figure(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
+using testing::Chain;
+using testing::Figure;
+
 
 constexpr double kRho = 1025, kG = 9.80665;
 
-SectionSpec Chain(double length, int segments) {
-  SectionSpec s;
-  s.length = length;
-  s.segments = segments;
-  s.diameter = 0.1;
-  s.area = 0.0078;
-  s.mass_per_length = 60.0;
-  s.youngs_modulus = 5e10;
-  s.drag_coefficient = 2.4;
-  s.added_mass_coefficient = 1.0;
-  return s;
-}
 
 EnvironmentSpec Water(double current) {
   EnvironmentSpec env;

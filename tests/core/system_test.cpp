@@ -19,25 +19,10 @@
 namespace cablefilm {
 namespace {
 
-// A measured figure as a test property (three significant digits).
-std::string Figure(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
+using testing::Chain;
+using testing::Figure;
 
-SectionSpec Chain(double length, int segments) {
-  SectionSpec s;
-  s.length = length;
-  s.segments = segments;
-  s.diameter = 0.1;
-  s.area = 0.0078;
-  s.mass_per_length = 60.0;
-  s.youngs_modulus = 5e10;
-  s.drag_coefficient = 2.4;
-  s.added_mass_coefficient = 1.0;
-  return s;
-}
+
 
 // A clump weight with its own buoyancy, added mass and drag.
 PrismSpec Clump() {

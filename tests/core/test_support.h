@@ -7,6 +7,8 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "core/data.h"
@@ -281,6 +283,27 @@ inline GroundedCatenary SolveGroundedCatenary(double L, double w, double EA, dou
   c.w = w;
   c.EA = EA;
   return c;
+}
+
+// A measured figure as a test property (three significant digits).
+inline std::string Figure(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+// The systems' tests' chain: 60 kg/m, 0.1 m, EA = 3.9e8 N, Cd 2.4, Ca 1.
+inline SectionSpec Chain(double length, int segments) {
+  SectionSpec s;
+  s.length = length;
+  s.segments = segments;
+  s.diameter = 0.1;
+  s.area = 0.0078;
+  s.mass_per_length = 60.0;
+  s.youngs_modulus = 5e10;
+  s.drag_coefficient = 2.4;
+  s.added_mass_coefficient = 1.0;
+  return s;
 }
 
 }  // namespace cablefilm::testing
