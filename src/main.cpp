@@ -206,6 +206,10 @@ void AddSweepOptions(CLI::App* cmd, cablefilm::SweepOptions* o) {
   });
   Flag(cmd, "--prepare", "write the case folders (scene.toml) and sweep.csv, run nothing",
        [o] { o->prepare = true; });
+  Flag(cmd, "--summary-only",
+       "run the cases in this process and write sweep.csv alone: no case folders, no per-case "
+       "files (the fastest for many short cases)",
+       [o] { o->summary_only = true; });
   AddRunOptions(cmd, &o->run, "sweep folder (default output/<scene name>_sweep)");
 }
 

@@ -191,7 +191,7 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
 
   const std::string series_path = out_dir + "/timeseries" + suffix + ".csv";
   const std::string partial_path = out_dir + "/timeseries" + suffix + ".partial.csv";
-  TimeseriesWriter series(series_path, m);
+  TimeseriesWriter series(series_path, m, run.inputs);
   const std::string nc_path = out_dir + "/results" + suffix + ".nc";
   const std::string nc_partial_path = out_dir + "/results" + suffix + ".partial.nc";
   NetcdfResultsWriter links(nc_path, MakeNetcdfInfo(scene, ModelName(m)), m, run.initial.state, T0);
@@ -219,6 +219,9 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
   std::printf("peak tension %.6g N at t = %.4g s in link %d (the largest tension_max of the "
               "%ld rows, one every %.4g s)\n",
               s.peak, s.peak_t, s.peak_link, s.rows, run.grid.interval);
+  std::printf("largest end loads %.6g N at the start (t = %.4g s), %.6g N at the end (t = %.4g s)"
+              " (fx..fz_start, fx..fz_end of the time series)\n",
+              s.start_load_max, s.start_load_t, s.end_load_max, s.end_load_t);
   std::printf("wrote %s\n", EscapeText(series_path).c_str());
   std::printf("wrote %s\n", EscapeText(nc_path).c_str());
   for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());

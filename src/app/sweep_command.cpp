@@ -25,7 +25,9 @@
 #include "io/out_dir_lock.h"
 #include "io/result_files.h"
 #include "io/run_report_file.h"
+#include "run/run.h"
 #include "run/sweep.h"
+#include "run/system_run.h"
 #include "scene/build_model.h"
 #include "scene/scene_edit.h"
 #include "scene/scene_limits.h"
@@ -107,6 +109,23 @@ void ValidateCase(const std::string& text, const std::string& path, const RunOpt
   else
     CheckModelLimits(scene, BuildModel(scene));
   if (o.film == 1) ResolveFilm(scene, o, kCommandLineNames);
+}
+
+// Case `path`'s scene text run in this process with no file written: its summary, as
+// `cablefilm run` would report it (a blow-up's ends the run with its failure).
+CaseOutcome RunCaseInProcess(const std::string& text, const std::string& path,
+                             const CancelFlag* stop) {
+  const SceneDef scene = ParseScene(text, path);
+  if (scene.is_system()) {
+    SystemRun run = PrepareSystemRun(scene, BuildSystem(scene), stop);
+    ExecuteSystemRun(run, std::vector<std::vector<RowSink*>>(run.sys.lines.size()), {});
+    return OutcomeOf(run.summary, *stop != 0);
+  }
+  const Model m = BuildModel(scene);
+  CheckModelLimits(scene, m);
+  Run run = PrepareRun(scene, m, LawName(m.line.law), stop);
+  ExecuteRun(run, {});
+  return OutcomeOf(run.summary, *stop != 0);
 }
 
 // Case folders of an earlier, larger sweep: emptied of what a sweep writes and removed, so that
@@ -305,9 +324,10 @@ class Sweep {
                   ec.message());
     lock_.Lock(dir_.string(), "sweep folder");  // one sweep at a time in it
     std::set<std::string> names;
-    for (std::size_t i = 0; i < n; ++i) names.insert(CaseFolderName(i, n));
+    if (!options_.summary_only)  // else no case folder: an earlier sweep's are all stale
+      for (std::size_t i = 0; i < n; ++i) names.insert(CaseFolderName(i, n));
     RemoveStaleCases(dir_, names);
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < n && !options_.summary_only; ++i) {
       const fs::path folder = dir_ / CaseFolderName(i, n);
       fs::create_directories(folder, ec);
       if (ec)
@@ -318,6 +338,11 @@ class Sweep {
       AtomicFile scene((folder / "scene.toml").string());
       std::fputs(scenes[i].c_str(), scene.stream());
       scene.Commit();
+    }
+    if (options_.summary_only) {
+      scenes_ = std::move(scenes);
+      for (std::size_t i = 0; i < n; ++i)
+        scene_paths_.push_back((dir_ / CaseFolderName(i, n) / "scene.toml").string());
     }
     outcomes_.assign(n, CaseOutcome());
     WriteSummary();
@@ -345,7 +370,10 @@ class Sweep {
     std::fprintf(f, "%s\n", SweepHeader(cases_).c_str());
     const std::size_t n = outcomes_.size();
     for (std::size_t i = 0; i < n; ++i)
-      std::fprintf(f, "%s\n", SweepRow(cases_, i, CaseFolderName(i, n), outcomes_[i]).c_str());
+      std::fprintf(f, "%s\n",
+                   SweepRow(cases_, i, options_.summary_only ? "" : CaseFolderName(i, n),
+                            outcomes_[i])
+                       .c_str());
     file.Commit();
   }
 
@@ -353,13 +381,20 @@ class Sweep {
     const std::size_t n = outcomes_.size();
     const int jobs = static_cast<int>(std::min<std::size_t>(
         n, static_cast<std::size_t>(options_.jobs > 0 ? options_.jobs : CoreCount())));
-    std::printf("running %d case%s at a time; each case's output in its folder's run.log\n",
-                jobs, jobs == 1 ? "" : "s");
+    if (options_.summary_only)
+      std::printf("running %d case%s at a time in this process; no case folders\n", jobs,
+                  jobs == 1 ? "" : "s");
+    else
+      std::printf("running %d case%s at a time; each case's output in its folder's run.log\n",
+                  jobs, jobs == 1 ? "" : "s");
     std::fflush(stdout);
 
+    // Processes: the signals blocked but while waiting (ProcessExecutor). Threads: they come
+    // through at any time, and their handler only raises the stop flag the cases poll.
     sigset_t blocked, original, waiting;
     sigemptyset(&blocked);
-    for (int s : {SIGINT, SIGTERM, SIGCHLD}) sigaddset(&blocked, s);
+    if (!options_.summary_only)
+      for (int s : {SIGINT, SIGTERM, SIGCHLD}) sigaddset(&blocked, s);
     ::sigprocmask(SIG_BLOCK, &blocked, &original);
     struct sigaction action {};
     action.sa_handler = OnSweepSignal;  // no SA_RESTART: the wait wakes
@@ -397,9 +432,16 @@ class Sweep {
                    SignalName(g_signal.load()), p.running, p.running == 1 ? "" : "s");
     };
     {
-      ProcessExecutor executor(dir_, n, options_.run, original, waiting);
+      std::unique_ptr<CaseExecutor> executor;
+      if (options_.summary_only)
+        executor = std::make_unique<ThreadExecutor>(
+            jobs, [this](std::size_t i, const CancelFlag* stop) {
+              return RunCaseInProcess(scenes_[i], scene_paths_[i], stop);
+            });
+      else
+        executor = std::make_unique<ProcessExecutor>(dir_, n, options_.run, original, waiting);
       RunCases(
-          executor, jobs, &g_signal, outcomes_,
+          *executor, jobs, &g_signal, outcomes_,
           [&](std::size_t i, const SweepProgress& p) {
             say_stop(p);
             const CaseOutcome& o = outcomes_[i];
@@ -470,6 +512,7 @@ class Sweep {
   fs::path dir_;
   OutDirLock lock_;
   std::vector<CaseOutcome> outcomes_;
+  std::vector<std::string> scenes_, scene_paths_;  // --summary-only: each case's scene
 };
 
 }  // namespace
@@ -477,6 +520,9 @@ class Sweep {
 int SweepCommand(const std::string& scene_path, const SweepOptions& options) {
   if (options.jobs < 0 || options.jobs > kMaxJobs)
     throw Error("--jobs: expected 1 to " + std::to_string(kMaxJobs));
+  if (options.summary_only && (options.run.film == 1 || options.prepare))
+    throw Error(std::string("--summary-only writes sweep.csv alone: ") +
+                (options.prepare ? "--prepare" : "a film") + " is not made with it");
   return Sweep(scene_path, options).Run();
 }
 

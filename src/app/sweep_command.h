@@ -15,6 +15,8 @@ struct SweepOptions {
   std::string cases_csv;       // --cases: empty for none
   int jobs = 0;                // cases at a time; 0: one per core
   bool prepare = false;        // write the case folders and sweep.csv ("not run"), run nothing
+  bool summary_only = false;   // run the cases on threads of this process and write sweep.csv
+                               // alone (no case folders, no per-case files)
   RunOptions run;              // out_dir: the sweep's folder; the rest goes to every case's run
 };
 

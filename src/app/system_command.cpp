@@ -11,6 +11,7 @@
 #include "io/bodies_file.h"
 #include "io/netcdf_results.h"
 #include "io/points_file.h"
+#include "io/system_netcdf.h"
 #include "io/result_files.h"
 #include "io/run_report_file.h"
 #include "run/system_run.h"
@@ -151,7 +152,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
     fs::create_directories(f.dir, ec);
     if (ec) throw Error("cannot create the folder " + EscapeText(f.dir) + ": " + ec.message());
     WriteEquilibriumCsv(f.dir + "/equilibrium.csv", m, d.state, d.tension());
-    f.series = std::make_unique<TimeseriesWriter>(f.dir + "/timeseries.csv", m);
+    f.series = std::make_unique<TimeseriesWriter>(f.dir + "/timeseries.csv", m, run.inputs);
     f.results = std::make_unique<NetcdfResultsWriter>(
         f.dir + "/results.nc", MakeNetcdfInfo(scene, "elastic"), m, d.state, d.tension());
     line_sinks[i] = {f.series.get(), f.results.get()};
@@ -160,8 +161,10 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
   std::unique_ptr<BodiesWriter> bodies;
   if (!sys.bodies.empty())
     bodies = std::make_unique<BodiesWriter>(out_dir + "/body.csv", sys, run.inputs);
+  SystemResultsWriter results(out_dir + "/results.nc", MakeNetcdfInfo(scene, "elastic"), sys,
+                              run.inputs);
   SystemProgress progress(run.grid.end());
-  std::vector<SystemRowSink*> sinks = {&points, &progress};
+  std::vector<SystemRowSink*> sinks = {&points, &results, &progress};
   if (bodies) sinks.push_back(bodies.get());
   ExecuteSystemRun(run, line_sinks, sinks);
   progress.Finish();
@@ -173,6 +176,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
       f.results->CommitPartial(f.dir + "/results.partial.nc");
     }
     points.CommitPartial(out_dir + "/points.partial.csv");
+    results.CommitPartial(out_dir + "/results.partial.nc");
     if (bodies) bodies->CommitPartial(out_dir + "/body.partial.csv");
     const std::string where = "the rows up to then are in " + EscapeText(out_dir) +
                               "/points.partial.csv and lines/*/timeseries.partial.csv";
@@ -196,6 +200,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
     f.results->Commit();
   }
   points.Commit();
+  results.Commit();
   if (bodies) bodies->Commit();
   for (int i = 0; i < nl; ++i) WriteRunReport(files[i].dir + "/run_report.toml", run.lines[i]);
   WriteRunReport(out_dir + "/run_report.toml", s);
@@ -207,9 +212,9 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
                 s.peak, s.peak_t, QuoteText(sys.line_names[run.peak_line]).c_str(), s.peak_link,
                 s.rows, run.grid.interval);
   for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());
-  std::printf("wrote %s/points.csv,%s %s/run_report.toml and lines/<name>/ for %d line(s)\n",
-              EscapeText(out_dir).c_str(), bodies ? " body.csv," : "",
-              EscapeText(out_dir).c_str(), nl);
+  std::printf("wrote %s/points.csv,%s results.nc, run_report.toml and lines/<name>/ for %d "
+              "line(s)\n",
+              EscapeText(out_dir).c_str(), bodies ? " body.csv," : "", nl);
   // Figure 1 from every row, film or not (a film cut short leaves it whole: it has every row).
   const PictureReport figure =
       WriteSystemMaxTensionFigure(scene, run, out_dir, options.shader_dir, true);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/end_loads.h"
 #include "core/error.h"
 #include "core/force_jacobian.h"
 #include "core/implicit_stages.h"
@@ -426,15 +427,13 @@ void PointLoads::Compute(const SystemModel& sys, const SystemData& sd, const Inp
       positions_.col(p) = d.state.x.col(j);
       const PointKind kind = sys.points[p].kind;
       if (kind == PointKind::kFree) {
-        const int k = e == 0 ? 0 : m.line.links - 1;  // the end link
-        const Vec pull = d.forces.tension[k] * d.forces.geometry.tangent.col(k);
-        forces_.col(p) += e == 0 ? pull : Vec(-pull);
+        forces_.col(p) += FreeEndPull(m, d.forces, e);
         continue;
       }
       Vec a = Vec::Zero();
       if (kind == PointKind::kMoved) a = EndAcceleration(m, in, j, d.state.t);
       if (kind == PointKind::kBody) a = d.a.col(j);
-      forces_.col(p) += f.col(j) - StationInertia(m, d.forces.geometry, j) * a;
+      forces_.col(p) += HeldEndLoad(m, d.forces.geometry, f, j, a);
     }
   }
   // The bodies: a free one's pose as stepped, a driven one's reference point as it moves.

@@ -1,7 +1,5 @@
 #include "io/netcdf_results.h"
 
-#include <H5public.h>
-#include <malloc.h>
 #include <netcdf.h>
 #include <pthread.h>
 #include <signal.h>
@@ -13,56 +11,9 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "io/netcdf_support.h"
 
 namespace cablefilm {
-namespace {
-
-// A failed call's message. HDF5 reports a full disk as "HDF error" (or, at nc_create, as
-// "Permission denied"): the system's own reason, left in errno by the write that failed, comes
-// first when it is a full disk or quota.
-void Check(int status, const std::string& file, const char* what) {
-  if (status == NC_NOERR) return;
-  std::string why = nc_strerror(status);
-  if (errno == ENOSPC || errno == EDQUOT) why = std::strerror(errno) + (" (" + why + ")");
-  throw Error("cannot write " + file + " (" + what + "): " + why);
-}
-
-void Text(int ncid, int var, const char* name, const std::string& value, const std::string& file) {
-  Check(nc_put_att_text(ncid, var, name, value.size(), value.data()), file, name);
-}
-
-// zlib allocates about 270 KiB of state for every chunk it deflates and frees it at once. With
-// glibc's default trim threshold (128 KiB) every free hands those pages back to the kernel and
-// the next chunk faults them in again, which on this machine cost several times the compression
-// itself (case P63: 0.2-0.35 s to close the file instead of 10 ms). Keeping up to 8 MiB free at
-// the top of a heap ends the churn; the rest of the program allocates nothing in its loops.
-void KeepFreedMemoryForTheCompressor() {
-#if defined(__GLIBC__)
-  static const bool once = [] {
-    mallopt(M_TOP_PAD, 1 << 20);
-    mallopt(M_TRIM_THRESHOLD, 8 << 20);
-    return true;
-  }();
-  (void)once;
-#endif
-}
-
-// A close that fails (a full disk: the last metadata cannot be written) leaves HDF5 1.10 with
-// a file ID whose file it has already freed (HDF5's H5F__dest frees it on failure too, fixed
-// only in 1.14.1). HDF5's own atexit handler then closes every ID still open and follows the
-// freed pointer: the program, having printed its error, died of SIGSEGV. Without that handler
-// nothing touches the stale ID: the process ends with its own status. Successful closes have
-// written and released everything already, so the handler has nothing else to do at exit.
-// H5dont_atexit() takes effect only before HDF5 starts, which the first nc_create does.
-void SkipHdf5CleanupAtExit() {
-  static const bool once = [] {
-    H5dont_atexit();
-    return true;
-  }();
-  (void)once;
-}
-
-}  // namespace
 
 NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
                                          const Model& m, const State& initial,
@@ -89,7 +40,7 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
   const std::string& f = temp_path_;
   errno = 0;  // Check reads it
   int created = -1;
-  Check(nc_create(f.c_str(), NC_NETCDF4 | NC_CLOBBER, &created), f, "create");
+  NetcdfCheck(nc_create(f.c_str(), NC_NETCDF4 | NC_CLOBBER, &created), f, "create");
   ncid_ = created;
   const int nc = ncid_;
 
@@ -101,36 +52,36 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
   const size_t rows = static_cast<size_t>(chunk_rows_);
 
   int dim_time = -1, dim_station = -1, dim_link = -1;
-  Check(nc_def_dim(nc, "time", NC_UNLIMITED, &dim_time), f, "time");
-  Check(nc_def_dim(nc, "station", static_cast<size_t>(stations_), &dim_station), f, "station");
-  Check(nc_def_dim(nc, "link", static_cast<size_t>(links_), &dim_link), f, "link");
+  NetcdfCheck(nc_def_dim(nc, "time", NC_UNLIMITED, &dim_time), f, "time");
+  NetcdfCheck(nc_def_dim(nc, "station", static_cast<size_t>(stations_), &dim_station), f, "station");
+  NetcdfCheck(nc_def_dim(nc, "link", static_cast<size_t>(links_), &dim_link), f, "link");
 
   // A variable with its units and long name, compressed; chunked when it has a time axis.
   auto define = [&](const char* name, nc_type type, std::vector<int> dims, const char* units,
                     const std::string& long_name) {
     int var = -1;
-    Check(nc_def_var(nc, name, type, static_cast<int>(dims.size()), dims.data(), &var), f, name);
+    NetcdfCheck(nc_def_var(nc, name, type, static_cast<int>(dims.size()), dims.data(), &var), f, name);
     if (dims[0] == dim_time) {
       std::vector<size_t> chunks{dims.size() == 1 ? rows * 16 : rows};
       if (dims.size() == 2) chunks.push_back(std::min(chunk_stations, static_cast<size_t>(links_)));
       if (dims.size() == 2 && dims[1] == dim_station) chunks[1] = chunk_stations;
-      Check(nc_def_var_chunking(nc, var, NC_CHUNKED, chunks.data()), f, name);
+      NetcdfCheck(nc_def_var_chunking(nc, var, NC_CHUNKED, chunks.data()), f, name);
       // A 2-D variable gets whole chunks, each written once: no cache, so each is deflated and
       // written as it comes (by the writer's thread) rather than all at the close. A 1-D one
       // gets a 16th of a chunk at a time: a cache of two chunks, the full one leaving it as the
       // next is begun.
       const size_t cache = dims.size() == 1 ? 2 * chunks[0] * sizeof(double) : 0;
-      Check(nc_set_var_chunk_cache(nc, var, cache, 101, 1.0f), f, name);
+      NetcdfCheck(nc_set_var_chunk_cache(nc, var, cache, 101, 1.0f), f, name);
     }
-    Check(nc_def_var_deflate(nc, var, 1, 1, 4), f, name);
-    Check(nc_def_var_fill(nc, var, NC_NOFILL, nullptr), f, name);  // every value is written
-    Text(nc, var, "units", units, f);
-    Text(nc, var, "long_name", long_name, f);
+    NetcdfCheck(nc_def_var_deflate(nc, var, 1, 1, 4), f, name);
+    NetcdfCheck(nc_def_var_fill(nc, var, NC_NOFILL, nullptr), f, name);  // every value is written
+    NetcdfText(nc, var, "units", units, f);
+    NetcdfText(nc, var, "long_name", long_name, f);
     return var;
   };
 
   var_time_ = define("time", NC_DOUBLE, {dim_time}, "s", "simulated time");
-  Text(nc, var_time_, "axis", "T", f);
+  NetcdfText(nc, var_time_, "axis", "T", f);
   const int var_station = define("station", NC_INT, {dim_station}, "1",
                                  "station index j, from 0 at the start to s at the end");
   const int var_link =
@@ -150,8 +101,8 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
                        std::string(axis_long[c]) + " of the station" + axis_note[c]);
   var_tension_ = define("tension", NC_DOUBLE, {dim_time, dim_link}, "N",
                         "tension of the link (0 when slack)");
-  for (int var : var_x_) Text(nc, var, "coordinates", "s", f);
-  Text(nc, var_tension_, "coordinates", "s_link", f);
+  for (int var : var_x_) NetcdfText(nc, var, "coordinates", "s", f);
+  NetcdfText(nc, var_tension_, "coordinates", "s_link", f);
 
   // x_start, y_start, z_start, x_end, y_end, z_end.
   for (int k = 0; k < 2 * kDim; ++k) {
@@ -174,37 +125,26 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
                        std::string(axis_long[c]) + " of the station, " + state);
   const int var_t_eq = define("tension_equilibrium", NC_DOUBLE, {dim_link}, "N",
                               "tension of the link, " + state);
-  for (int var : var_eq) Text(nc, var, "coordinates", "s", f);
-  Text(nc, var_t_eq, "coordinates", "s_link", f);
+  for (int var : var_eq) NetcdfText(nc, var, "coordinates", "s", f);
+  NetcdfText(nc, var_t_eq, "coordinates", "s_link", f);
 
-  Text(nc, NC_GLOBAL, "Conventions", "CF-1.8", f);
-  Text(nc, NC_GLOBAL, "title", info.title, f);
-  Text(nc, NC_GLOBAL, "source", "cablefilm " + info.version, f);
-  Text(nc, NC_GLOBAL, "references",
-       "Polachek, Walton, Mejia and Dawson (1963), Transient motion of an elastic cable "
-       "immersed in a fluid",
-       f);
-  Text(nc, NC_GLOBAL, "cablefilm_version", info.version, f);
-  Text(nc, NC_GLOBAL, "model", info.model, f);
-  Text(nc, NC_GLOBAL, "initial_state", info.initial_state, f);
-  Text(nc, NC_GLOBAL, "scene_file", info.scene_file, f);
-  Text(nc, NC_GLOBAL, "scene", info.scene, f);
-  Check(nc_enddef(nc), f, "enddef");
+  NetcdfGlobalAttributes(nc, info, f);
+  NetcdfCheck(nc_enddef(nc), f, "enddef");
 
   std::vector<int> index(static_cast<size_t>(stations_));
   for (int j = 0; j < stations_; ++j) index[static_cast<size_t>(j)] = j;
   std::vector<double> s_link(static_cast<size_t>(links_)), row(static_cast<size_t>(stations_));
   for (int j = 0; j < links_; ++j)
     s_link[static_cast<size_t>(j)] = 0.5 * (m.line.arc_length[j] + m.line.arc_length[j + 1]);
-  Check(nc_put_var_int(nc, var_station, index.data()), f, "station");
-  Check(nc_put_var_int(nc, var_link, index.data()), f, "link");
-  Check(nc_put_var_double(nc, var_s, m.line.arc_length.data()), f, "s");
-  Check(nc_put_var_double(nc, var_s_link, s_link.data()), f, "s_link");
+  NetcdfCheck(nc_put_var_int(nc, var_station, index.data()), f, "station");
+  NetcdfCheck(nc_put_var_int(nc, var_link, index.data()), f, "link");
+  NetcdfCheck(nc_put_var_double(nc, var_s, m.line.arc_length.data()), f, "s");
+  NetcdfCheck(nc_put_var_double(nc, var_s_link, s_link.data()), f, "s_link");
   for (int c = 0; c < kDim; ++c) {
     for (int j = 0; j < stations_; ++j) row[static_cast<size_t>(j)] = initial.x(c, j);
-    Check(nc_put_var_double(nc, var_eq[c], row.data()), f, "equilibrium");
+    NetcdfCheck(nc_put_var_double(nc, var_eq[c], row.data()), f, "equilibrium");
   }
-  Check(nc_put_var_double(nc, var_t_eq, initial_tension.data()), f, "tension_equilibrium");
+  NetcdfCheck(nc_put_var_double(nc, var_t_eq, initial_tension.data()), f, "tension_equilibrium");
 }
 
 void NetcdfResultsWriter::StartWriter() {
@@ -309,12 +249,12 @@ void NetcdfResultsWriter::Write(const Block& b) {
   const size_t start[2] = {static_cast<size_t>(b.first), 0};
   const size_t count_x[2] = {static_cast<size_t>(b.rows), static_cast<size_t>(stations_)};
   const size_t count_t[2] = {static_cast<size_t>(b.rows), static_cast<size_t>(links_)};
-  Check(nc_put_vara_double(ncid_, var_time_, start, count_x, b.time.data()), f, "time");
+  NetcdfCheck(nc_put_vara_double(ncid_, var_time_, start, count_x, b.time.data()), f, "time");
   for (int c = 0; c < kDim; ++c)
-    Check(nc_put_vara_double(ncid_, var_x_[c], start, count_x, b.x[c].data()), f, "positions");
-  Check(nc_put_vara_double(ncid_, var_tension_, start, count_t, b.tension.data()), f, "tension");
+    NetcdfCheck(nc_put_vara_double(ncid_, var_x_[c], start, count_x, b.x[c].data()), f, "positions");
+  NetcdfCheck(nc_put_vara_double(ncid_, var_tension_, start, count_t, b.tension.data()), f, "tension");
   for (int k = 0; k < 2 * kDim; ++k)
-    Check(nc_put_vara_double(ncid_, var_end_[k], start, count_x, b.ends[k].data()), f, "ends");
+    NetcdfCheck(nc_put_vara_double(ncid_, var_end_[k], start, count_x, b.ends[k].data()), f, "ends");
 }
 
 void NetcdfResultsWriter::StopWriter(bool drop) {
@@ -336,7 +276,7 @@ void NetcdfResultsWriter::Close() {
   const int id = ncid_;
   ncid_ = -1;
   errno = 0;
-  Check(nc_close(id), temp_path_, "close");
+  NetcdfCheck(nc_close(id), temp_path_, "close");
 }
 
 void NetcdfResultsWriter::Commit() { CommitPartial(path_); }

@@ -29,19 +29,10 @@
 
 #include "core/model.h"
 #include "core/data.h"
+#include "io/netcdf_support.h"
 #include "run/driver.h"
 
 namespace cablefilm {
-
-// The global attributes beside Conventions = "CF-1.8".
-struct NetcdfResultsInfo {
-  std::string title;          // the scene's title
-  std::string scene_file;     // its path, as given
-  std::string scene;          // its text
-  std::string version;        // the program's: "0.1 (git 1a2b3c4)"
-  std::string model;          // "elastic" or "inextensible"
-  std::string initial_state;  // "equilibrium" or "straight"
-};
 
 class NetcdfResultsWriter : public RowSink {
  public:

@@ -55,25 +55,34 @@ void RemoveEarlierResults(const std::string& out_dir) {
 }
 
 const char kTimeseriesHeader[] =
-    "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max\n";
+    "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max,"
+    "fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end\n";
 
-void WriteTimeseriesRow(std::FILE* f, const Model& m, const State& s,
-                        const Eigen::VectorXd& tension) {
+void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Inputs& in,
+                        EndLoads& ends) {
+  const State& s = d.state;
+  const Eigen::VectorXd& tension = d.tension();
   Eigen::Index link_max = 0;
   const double t_max = tension.maxCoeff(&link_max);
   const int end = m.line.links;
-  std::fprintf(f, "%.10g,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g,%d\n", s.t, s.x(0, end),
-               s.x(1, end), s.x(2, end), tension[0], tension[end - 1], t_max,
-               static_cast<int>(link_max));
+  ends.Compute(m, d, in);
+  const Vec& f0 = ends.at(0);
+  const Vec& f1 = ends.at(1);
+  std::fprintf(f,
+               "%.10g,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g,%d,"
+               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.8g,%.8g\n",
+               s.t, s.x(0, end), s.x(1, end), s.x(2, end), tension[0], tension[end - 1], t_max,
+               static_cast<int>(link_max), f0[0], f0[1], f0[2], f1[0], f1[1], f1[2],
+               ElevationDegrees(f0), ElevationDegrees(f1));
 }
 
-TimeseriesWriter::TimeseriesWriter(const std::string& path, const Model& m)
-    : file_(path), m_(m) {
+TimeseriesWriter::TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in)
+    : file_(path), m_(m), in_(in), ends_(m) {
   std::fputs(kTimeseriesHeader, file_.stream());
 }
 
 bool TimeseriesWriter::Row(const Data& d) {
-  WriteTimeseriesRow(file_.stream(), m_, d.state, d.tension());
+  WriteTimeseriesRow(file_.stream(), m_, d, in_, ends_);
   return true;
 }
 

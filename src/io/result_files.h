@@ -7,6 +7,7 @@
 
 #include "core/model.h"
 #include "core/data.h"
+#include "core/end_loads.h"
 #include "io/atomic_file.h"
 #include "run/driver.h"
 
@@ -23,15 +24,17 @@ void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& s
 void RemoveEarlierResults(const std::string& out_dir);
 
 // One row of timeseries.csv, and its header line (shared with the live view's /timeseries.csv).
+// `ends` holds the end loads of the row's Data (core/end_loads.h), computed here.
 extern const char kTimeseriesHeader[];  // with its newline
-void WriteTimeseriesRow(std::FILE* f, const Model& m, const State& state,
-                        const Eigen::VectorXd& tension);
+void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Inputs& in,
+                        EndLoads& ends);
 
-// timeseries.csv: t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max; a run's
+// timeseries.csv: t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max, then the
+// end loads fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end; a run's
 // rows as they come.
 class TimeseriesWriter : public RowSink {
  public:
-  TimeseriesWriter(const std::string& path, const Model& m);
+  TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in);
   bool Row(const Data& d) override;
   void Commit();                                  // the complete file, under its name
   void CommitPartial(const std::string& path);    // an incomplete run, under another name
@@ -39,6 +42,8 @@ class TimeseriesWriter : public RowSink {
  private:
   AtomicFile file_;
   const Model& m_;
+  const Inputs& in_;
+  EndLoads ends_;
 };
 
 }  // namespace cablefilm

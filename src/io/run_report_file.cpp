@@ -1,5 +1,6 @@
 #include "io/run_report_file.h"
 
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <toml++/toml.h>
@@ -52,6 +53,13 @@ void WriteRunReport(const std::string& path, const RunSummary& f) {
                f.min_tension_link);
   if (!f.min_tension_line.empty())
     std::fprintf(out, "min_tension_line = %s\n", TomlString(f.min_tension_line).c_str());
+  if (!std::isnan(f.start_load_max))  // a line's: the loads on what holds its ends
+    std::fprintf(out,
+                 "start_load_max = %.10g       # [N], the largest |force| of the line on its start"
+                 " (fx_start, fy_start, fz_start)\nstart_load_time = %.10g      # [s]\n"
+                 "end_load_max = %.10g         # [N], on its end (fx_end, fy_end, fz_end)\n"
+                 "end_load_time = %.10g        # [s]\n",
+                 f.start_load_max, f.start_load_t, f.end_load_max, f.end_load_t);
   std::fprintf(out, "peak_converged = %s\n", f.peak_converged() ? "true" : "false");
   std::fprintf(out, "warnings = [");
   for (size_t i = 0; i < warnings.size(); ++i)
@@ -91,6 +99,10 @@ bool ReadRunReport(const std::string& path, RunSummary* s) {
   s->min_tension_link = static_cast<int>(whole("min_tension_link"));
   s->peak_line = r["peak_line"].value<std::string>().value_or("");
   s->min_tension_line = r["min_tension_line"].value<std::string>().value_or("");
+  s->start_load_max = number("start_load_max", nan);
+  s->start_load_t = number("start_load_time", nan);
+  s->end_load_max = number("end_load_max", nan);
+  s->end_load_t = number("end_load_time", nan);
   s->warnings.clear();
   if (const toml::array* w = r["warnings"].as_array())
     for (const toml::node& n : *w) s->warnings.push_back(n.value<std::string>().value_or(""));

@@ -283,7 +283,7 @@ void LiveSession::RecordLocked() {
   SetLineState(sim_.state().x, sim_.tensions(), &state_.lines[0]);
   state_.current = TopCurrent(sim_.model(), sim_.water());
   history_.Add(state_);
-  rows_.Append(sim_.model(), sim_.state(), sim_.tensions());
+  rows_.Append(sim_.model(), sim_.data(), sim_.inputs());
 }
 
 void LiveSession::PublishLocked() {

@@ -70,6 +70,8 @@ class LiveSimulation {
 
   double t() const { return data_.state.t; }
   const State& state() const { return data_.state; }
+  const Data& data() const { return data_; }
+  const Inputs& inputs() const { return inputs_; }  // as the controls have ramped them
   const Eigen::VectorXd& tensions() const { return data_.tension(); }
   const Model& model() const { return model_; }
   const Wave& wave() const { return data_.water.wave; }  // the waves of the last step

@@ -27,8 +27,8 @@ void RowLog::Clear() {
   rows_ = 0;
 }
 
-void RowLog::Append(const Model& m, const State& s, const Eigen::VectorXd& tension) {
-  WriteTimeseriesRow(file_, m, s, tension);
+void RowLog::Append(const Model& m, const Data& d, const Inputs& in) {
+  WriteTimeseriesRow(file_, m, d, in, ends_);
   ++rows_;
 }
 

@@ -9,6 +9,8 @@
 
 #include "core/model.h"
 #include "core/data.h"
+#include "core/end_loads.h"
+#include "core/inputs.h"
 
 namespace cablefilm {
 
@@ -20,7 +22,7 @@ class RowLog {
   RowLog& operator=(const RowLog&) = delete;
 
   void Clear();  // a restart
-  void Append(const Model& m, const State& s, const Eigen::VectorXd& tension);
+  void Append(const Model& m, const Data& d, const Inputs& in);
   long rows() const { return rows_; }
   // The bytes written so far (flushed): call under the session's lock...
   long Flush();
@@ -31,6 +33,7 @@ class RowLog {
  private:
   std::FILE* file_ = nullptr;
   long rows_ = 0;
+  EndLoads ends_;  // the row's end loads' scratch
 };
 
 }  // namespace cablefilm

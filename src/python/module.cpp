@@ -123,6 +123,12 @@ py::array Positions(const py::object& self, int axis, int station) {
               {stations * kDim});
 }
 
+// The end load of end e (0: start, 1: end) of every row, [rows, 3] (N): a view.
+py::array EndLoadRows(const py::object& self, int e) {
+  const MemoryRows& r = self.cast<Result&>().run->rows;
+  return View(self, r.end_load.data() + e * kDim, {r.rows, kDim}, {2 * kDim, 1});
+}
+
 // Every station's position of every row as one array [rows, stations, 3] (x, y, z).
 py::array PositionVectors(const py::object& self) {
   const MemoryRun& r = *self.cast<Result&>().run;
@@ -603,7 +609,8 @@ the loader: a bad key or value raises SceneError and leaves the scene as it was.
 time [n] (s), x, y, z [n, stations] (m; y up, z = 0 for a cable in the x-y plane), the same
 as one array position [n, stations, 3], tension
 [n, links] (N, 0 when slack), the end motion x_start, y_start, z_start, x_end, y_end, z_end [n]
-(m), arc lengths s [stations], s_link [links] (m). The arrays are read-only views of the run.)")
+(m), the end loads load_start, load_end [n, 3] (N: the force the line exerts on what holds
+each end, timeseries.csv's fx_start ... fz_end), arc lengths s [stations], s_link [links] (m). The arrays are read-only views of the run.)")
       .def_property_readonly("time", [](const py::object& self) {
         const MemoryRows& r = self.cast<Result&>().run->rows;
         return View(self, r.time.data(), {r.rows}, {1});
@@ -624,6 +631,11 @@ as one array position [n, stations, 3], tension
       .def_property_readonly("x_end", [](const py::object& self) { return Positions(self, 0, 1); })
       .def_property_readonly("y_end", [](const py::object& self) { return Positions(self, 1, 1); })
       .def_property_readonly("z_end", [](const py::object& self) { return Positions(self, 2, 1); })
+      .def_property_readonly("load_start", [](const py::object& self) { return EndLoadRows(self, 0); },
+                             "the end load at the start [n, 3] (N): the force the line exerts on "
+                             "what holds station 0, as timeseries.csv's fx_start, fy_start, fz_start")
+      .def_property_readonly("load_end", [](const py::object& self) { return EndLoadRows(self, 1); },
+                             "the end load at the end [n, 3] (N), as fx_end, fy_end, fz_end")
       .def_property_readonly("s", [](const Result& r) { return Copy(r.run->run.model.line.arc_length); })
       .def_property_readonly("s_link", [](const Result& r) { return LinkMidpoints(r.run->run.model); })
       .def_property_readonly("scene", [](const Result& r) { return r.scene; })

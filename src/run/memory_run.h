@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/end_loads.h"
 #include "run/driver.h"
 #include "run/run.h"
 #include "scene/scene_def.h"
@@ -20,8 +21,16 @@ struct MemoryRows : RowSink {
                                   // station), so rows x stations x 3 and each axis alike are
                                   // views of it
   std::vector<double> tension;    // link tensions [N], rows x s (0 when slack)
+  std::vector<double> end_load;   // end loads [N], rows x 2 x kDim (core/end_loads.h: the
+                                  // force the line exerts on what holds its start, its end)
   bool Row(const Data& d) override;
-  void Reserve(long rows, int stations, int links);
+  // Rows for `m`, whose end loads are computed in `in` (both outlive the rows' filling).
+  void Reserve(const Model& m, const Inputs& in, long rows);
+
+ private:
+  const Model* model_ = nullptr;
+  const Inputs* inputs_ = nullptr;
+  EndLoads ends_;
 };
 
 struct MemoryRun {

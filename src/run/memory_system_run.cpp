@@ -55,7 +55,7 @@ MemorySystemRun Execute(const SceneDef& scene, SystemRun prepared, long rows) {
   for (size_t i = 0; i < nl; ++i) {
     out.lines.push_back(LineRun(scene, run, i));
     const Model& m = run.sys.lines[i];
-    out.lines[i].rows.Reserve(rows, m.stations(), m.line.links);
+    out.lines[i].rows.Reserve(m, run.inputs, rows);
   }
   for (size_t i = 0; i < nl; ++i) line_sinks[i] = {&out.lines[i].rows};
   const size_t n = static_cast<size_t>(rows);

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/end_loads.h"
 #include "run/initial_state.h"
 
 namespace cablefilm {
@@ -10,17 +11,20 @@ namespace {
 // The run's own record of every row.
 class RecordSink : public RowSink {
  public:
-  explicit RecordSink(Run& run) : run_(run) {}
+  explicit RecordSink(Run& run) : run_(run), ends_(run.model) {}
   bool Row(const Data& d) override {
     const Eigen::VectorXd& T = d.tension();
     run_.extent.Add(d.state, T);
     run_.row_max.Append(d.state.t, T.maxCoeff());
     run_.summary.AddRow(d.state.t, T);
+    ends_.Compute(run_.model, d, run_.inputs);
+    run_.summary.AddEndLoads(d.state.t, ends_.at(0), ends_.at(1));
     return true;
   }
 
  private:
   Run& run_;
+  EndLoads ends_;
 };
 
 }  // namespace

@@ -27,6 +27,18 @@ void RunSummary::AddRow(double t, const Eigen::VectorXd& tension) {
   }
 }
 
+void RunSummary::AddEndLoads(double t, const Vec& start, const Vec& end) {
+  const double f0 = start.norm(), f1 = end.norm();
+  if (!std::isnan(f0) && !(f0 <= start_load_max)) {
+    start_load_max = f0;
+    start_load_t = t;
+  }
+  if (!std::isnan(f1) && !(f1 <= end_load_max)) {
+    end_load_max = f1;
+    end_load_t = t;
+  }
+}
+
 const SummaryColumn kSummaryColumns[8] = {
     {SummaryColumn::Kind::kNumber, "peak_tension", [](const RunSummary& s) { return s.peak; }},
     {SummaryColumn::Kind::kNumber, "peak_time", [](const RunSummary& s) { return s.peak_t; }},

@@ -27,6 +27,13 @@ struct RunSummary {
   double min_tension = std::numeric_limits<double>::quiet_NaN();     // [N]
   double min_tension_t = std::numeric_limits<double>::quiet_NaN();   // [s]
   int min_tension_link = -1;
+  // The largest end load over the rows (|force| the line exerts on what holds its start,
+  // station 0, and its end, station s; core/end_loads.h) [N], and the first time of each [s].
+  // NaN where the rows held none (a system's summary).
+  double start_load_max = std::numeric_limits<double>::quiet_NaN();
+  double start_load_t = std::numeric_limits<double>::quiet_NaN();
+  double end_load_max = std::numeric_limits<double>::quiet_NaN();
+  double end_load_t = std::numeric_limits<double>::quiet_NaN();
   // A system's: the lines holding the peak and the least tension (their links are the line's);
   // empty for a single line.
   std::string peak_line, min_tension_line;
@@ -37,6 +44,8 @@ struct RunSummary {
 
   // One output row's tensions [N] at time t [s], taken into the peak and the least tension.
   void AddRow(double t, const Eigen::VectorXd& tension);
+  // One output row's end loads [N] at time t [s], taken into their largest.
+  void AddEndLoads(double t, const Vec& start, const Vec& end);
 };
 
 // Reasons the peak tension cannot be trusted (empty: none found): snaps within steps too long to

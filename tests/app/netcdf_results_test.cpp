@@ -175,7 +175,10 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
 
   const auto csv = ReadCsv(out / "timeseries.csv");
   ASSERT_EQ(csv[0], (std::vector<std::string>{"t", "x_end", "y_end", "z_end", "tension_start",
-                                              "tension_end", "tension_max", "link_max"}));
+                                              "tension_end", "tension_max", "link_max",
+                                              "fx_start", "fy_start", "fz_start", "fx_end",
+                                              "fy_end", "fz_end", "angle_start",
+                                              "angle_end"}));
   const size_t rows = csv.size() - 1;
   ASSERT_EQ(rows, 151u);  // 5 s at a row per film frame, 30 frames/s, and t = 0
 
@@ -256,7 +259,7 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   // last link; x_end, y_end, z_end the end's position, which is the last station's.
   for (size_t r = 0; r < rows; ++r) {
     const auto& c = csv[r + 1];
-    ASSERT_EQ(c.size(), 8u);
+    ASSERT_EQ(c.size(), 16u);  // the end loads after link_max (checked in core_end_loads_test)
     const double* row = tension.data() + r * 60;
     const auto max_at = std::max_element(row, row + 60);
     EXPECT_EQ(Format("%.10g", t[r]), c[0]) << "row " << r;

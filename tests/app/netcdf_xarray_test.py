@@ -3,7 +3,9 @@
 extra arguments, and its dimensions, units and values agree with timeseries.csv and
 equilibrium.csv, as those print them; z (issue 19) is 0 throughout for P63, in the x-y plane,
 and for P63 turned out of its plane by a current across it (heading 90 degrees) and a sway of
-its fairlead along z, z agrees with the CSV files and z_end is eq. (3)'s trochoid along z.
+its fairlead along z, z agrees with the CSV files and z_end is eq. (3)'s trochoid along z. A
+system's results.nc (scenes/floating_platform.toml cut to 5 s) holds its points.csv, body.csv
+and each line's timeseries.csv rows.
 
     /usr/bin/python3 tests/app/netcdf_xarray_test.py --cablefilm build/cablefilm \\
         --scene scenes/polachek1963.toml --out-dir /tmp/netcdf_xarray
@@ -182,6 +184,68 @@ def main():
               np.all(interior > 0) and interior.max() > 1.0, interior.min())
         check('3D: the end sways out of the plane', np.max(np.abs(ds.z_end.values)) > 0.4,
               np.max(np.abs(ds.z_end.values)))
+
+    # A system's results.nc (issue 20): the points, lines and bodies of
+    # scenes/floating_platform.toml cut to 5 s, against points.csv, body.csv and each line's
+    # timeseries.csv, as those print them.
+    platform = open(os.path.join(os.path.dirname(a.scene), 'floating_platform.toml')).read()
+    out_sys = run('platform_short', re.sub(r'^duration = .*$', 'duration = 5.0', platform,
+                                           flags=re.M))
+
+    def table(*path):
+        with open(os.path.join(out_sys, *path)) as f:
+            return list(csv.DictReader(f))
+
+    points = table('points.csv')
+    bodies = table('body.csv')
+    with xr.open_dataset(os.path.join(out_sys, 'results.nc')) as ds:
+        point_names = [str(v) for v in ds.point_name.values]
+        line_names = [str(v) for v in ds.line_name.values]
+        rows = len(points) // len(point_names)
+        check('system: dimensions', dict(ds.sizes) == {'time': rows, 'line': 3, 'point': 6,
+                                                         'body': 1}, dict(ds.sizes))
+        check('system: names', line_names == ['leg1', 'leg2', 'leg3'] and
+              point_names == [r['point'] for r in points[:len(point_names)]] and
+              [str(v) for v in ds.body_name.values] == ['platform'],
+              (line_names, point_names))
+        check('system: a long_name on every variable, units on every number',
+              all(ds[k].attrs.get('long_name') for k in ds.variables) and
+              all(ds[k].attrs.get('units') for k in ds.variables if ds[k].dtype != object),
+              [k for k in ds.variables if not ds[k].attrs.get('long_name')])
+        bad = []
+        for r, row in enumerate(points):
+            t, p = divmod(r, len(point_names))
+            want = tuple(row[k] for k in ('t', 'x', 'y', 'z', 'fx', 'fy', 'fz'))
+            have = (fmt10(ds.time.values[t]),) + tuple(
+                fmt12(ds[f'point_{c}'].values[t, p]) for c in 'xyz') + tuple(
+                fmt10(ds[f'point_f{c}'].values[t, p]) for c in 'xyz')
+            if want != have:
+                bad.append((r, want, have))
+        check('system: every row of points.csv', not bad, bad[:3])
+        bad = []
+        for i, line in enumerate(line_names):
+            series = table('lines', line, 'timeseries.csv')
+            end = int(ds.line_end_point.values[i])
+            for t, row in enumerate(series):
+                want = tuple(row[k] for k in ('tension_start', 'tension_end', 'tension_max',
+                                              'link_max', 'x_end', 'y_end', 'z_end'))
+                have = tuple(fmt10(ds[k].values[t, i]) for k in
+                             ('tension_start', 'tension_end', 'tension_max')) + (
+                    str(int(ds.link_max.values[t, i])),) + tuple(
+                    fmt12(ds[f'point_{c}'].values[t, end]) for c in 'xyz')
+                if want != have:
+                    bad.append((line, t, want, have))
+        check('system: each line\'s timeseries.csv, its end at its line_end_point', not bad,
+              bad[:3])
+        bad = []
+        for t, row in enumerate(bodies):
+            want = tuple(row[k] for k in ('x', 'y', 'z', 'rx', 'ry', 'rz', 'fx', 'fy', 'fz',
+                                          'mx', 'my', 'mz'))
+            have = tuple(fmt12(ds[f'body_{c}'].values[t, 0]) for c in 'xyz') + tuple(
+                fmt10(ds[f'body_{k}{c}'].values[t, 0]) for k in 'rfm' for c in 'xyz')
+            if want != have:
+                bad.append((t, want, have))
+        check('system: every row of body.csv', not bad, bad[:3])
 
     failed = 0
     for name, ok, detail in results:

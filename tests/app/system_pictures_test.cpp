@@ -32,14 +32,15 @@ std::vector<Row> ReadRows(const fs::path& p) {
   std::ifstream in(p);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max") << p;
+  EXPECT_EQ(line, "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max"
+            ",fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end") << p;
   std::vector<Row> rows;
   while (std::getline(in, line)) {
     std::vector<double> cells;
     std::stringstream ss(line);
     std::string cell;
     while (std::getline(ss, cell, ',')) cells.push_back(std::stod(cell));
-    if (cells.size() == 8) rows.push_back({cells[0], cells[6]});
+    if (cells.size() == 16) rows.push_back({cells[0], cells[6]});
   }
   return rows;
 }

@@ -159,7 +159,7 @@ Outcome RunModel(const SceneDef& scene, const std::string& suffix, const CancelF
     const std::string out = g_setup->out.string();
     WriteEquilibriumCsv(out + "/equilibrium" + suffix + ".csv", m, run.initial.state,
                         run.initial.tension());
-    TimeseriesWriter series(out + "/timeseries" + suffix + ".csv", m);
+    TimeseriesWriter series(out + "/timeseries" + suffix + ".csv", m, run.inputs);
     long outputs = 0;
     RowFunction enough([&](const Data&) { return outputs++ < kMaxOutputs; });
     ExecuteRun(run, {&series, &enough});
@@ -197,7 +197,8 @@ Outcome RunSystemModel(const SceneDef& scene, const CancelFlag* cancel) {
       const Data& d = run.initial.lines[i];
       const std::string name = out + "/line" + std::to_string(i);
       WriteEquilibriumCsv(name + "_equilibrium.csv", sys.lines[i], d.state, d.tension());
-      series[i] = std::make_unique<TimeseriesWriter>(name + "_timeseries.csv", sys.lines[i]);
+      series[i] = std::make_unique<TimeseriesWriter>(name + "_timeseries.csv", sys.lines[i],
+                                                   run.inputs);
       line_sinks[i] = {series[i].get()};
     }
     PointsWriter points(out + "/points.csv", sys, run.inputs);

@@ -154,7 +154,8 @@ def test_run(args):
         if film[4:8] != b"ftyp" or b"moov" not in film or b"avc1" not in film:
             fail("film.mp4 is not an H.264 MP4")
         header, rows = read_rows(os.path.join(results, "timeseries.csv"))
-        if header != "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max":
+        if header != ("t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max"
+                      ",fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end"):
             fail("timeseries.csv header " + header)
         expected = int(round(duration * P63_ROWS_PER_SECOND)) + 1
         if len(rows) != expected:

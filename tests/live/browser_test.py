@@ -53,7 +53,8 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
 READY = re.compile(r'live view at (https?://[^\s/]+)/?(\?token=[0-9a-f]+)?\s*$')
-CSV_HEADER = 't,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max'
+CSV_HEADER = ('t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max'
+              ',fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end')
 
 
 class Failure(Exception):

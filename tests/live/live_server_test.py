@@ -375,7 +375,8 @@ def run(args):
     def timeseries():
         _, headers, body = srv.get('/timeseries.csv')
         lines = body.decode().splitlines()
-        check(lines[0] == 't,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max',
+        check(lines[0] == ('t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max'
+              ',fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end'),
               f'CSV header {lines[0]}')
         ts = [float(line.split(',')[0]) for line in lines[1:] if line]
         check(len(ts) > 100 and all(a < b for a, b in zip(ts, ts[1:])),

@@ -137,6 +137,11 @@ class ThreeDimensions(unittest.TestCase):
         with open(os.path.join(out, "timeseries.csv")) as f:
             rows = list(csv.DictReader(f))
         self.assertEqual([r["z_end"] for r in rows], ["%.12g" % v for v in result.z_end])
+        # The end loads: the CSV's columns print the module's doubles (10 digits).
+        for k, axis in enumerate("xyz"):
+            for end, loads in (("start", result.load_start), ("end", result.load_end)):
+                self.assertEqual([r["f%s_%s" % (axis, end)] for r in rows],
+                                 ["%.10g" % v for v in loads[:, k]], "f%s_%s" % (axis, end))
         with open(os.path.join(out, "equilibrium.csv")) as f:
             stations = list(csv.DictReader(f))
         self.assertEqual([r["z"] for r in stations], ["%.12g" % v for v in eq.z])

@@ -169,7 +169,12 @@ def main():
                               max(float(lo["tension_max"]), float(up["tension_max"]))))
             worst_x = max(worst_x, *(abs(float(s[k]) - float(up[k]))
                                      for k in ("x_end", "y_end", "z_end")))
-        print(f"rows {len(single)}, peak {peak:.6g} N, largest tension difference "
+            # The end loads (the anchor's in the lower line, the fairlead's in the upper), as
+            # the tensions.
+            worst_t = max(worst_t, *(abs(float(s[f"f{c}_start"]) - float(lo[f"f{c}_start"]))
+                                     for c in "xyz"),
+                          *(abs(float(s[f"f{c}_end"]) - float(up[f"f{c}_end"])) for c in "xyz"))
+        print(f"rows {len(single)}, peak {peak:.6g} N, largest tension or end load difference "
               f"{worst_t / peak:.2g} of the peak, end position {worst_x:.2g} m")
         if len(lower) != len(single) or len(upper) != len(single):
             failures.append(f"rows: {len(single)} one line, {len(lower)}, {len(upper)} system")

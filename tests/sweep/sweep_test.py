@@ -291,6 +291,60 @@ def test_interrupt(work):
         print(output)
 
 
+def test_summary_only(work):
+    """--summary-only (issue 23): the cases run on threads of the sweep's own process and only
+    sweep.csv is written; its rows are those of the sweep with case folders (the same runs:
+    the same doubles), with an empty folder column, and an earlier sweep's case folders go.
+    A SIGINT stops it as it stops a sweep of processes."""
+    scene = os.path.join(ARGS.source_dir, 'scenes', 'polachek1963.toml')
+    out, folders = os.path.join(work, 'summary'), os.path.join(work, 'folders')
+    done = run(['sweep', scene, *sets(*SHORT, *SWEPT), '--out', folders], work)
+    check(done.returncode == 0, f'the sweep with case folders exits 0 ({done.seconds:.2f} s)')
+    with_folders = done.seconds
+    done = run(['sweep', scene, *sets(*SHORT, *SWEPT), '--out', folders, '--summary-only'], work)
+    if not check(done.returncode == 0, f'--summary-only exits 0 ({done.seconds:.2f} s, '
+                 f'{with_folders / done.seconds:.2g} times faster)'):
+        print(done.stdout, done.stderr)
+        return
+    left = sorted(os.listdir(folders))
+    check(left == ['sweep.csv'], f'--summary-only leaves sweep.csv alone: {left}')
+    done = run(['sweep', scene, *sets(*SHORT, *SWEPT), '--out', out], work)
+    _, rows_folders = read_csv(os.path.join(out, 'sweep.csv'))
+    _, rows_summary = read_csv(os.path.join(folders, 'sweep.csv'))
+    for a, b in zip(rows_folders, rows_summary):
+        a['folder'] = ''
+    check(rows_folders == rows_summary and len(rows_summary) == 9,
+          'every row as the sweep with case folders, the folder column empty')
+    refused_film = run(['sweep', scene, *sets(*SWEPT), '--summary-only', '--film', '--out', out],
+                       work)
+    check(refused_film.returncode == 1 and 'summary-only' in refused_film.stderr,
+          f'--summary-only with --film is refused: {refused_film.stderr.strip()}')
+
+    cases = os.path.join(work, 'cases.csv')
+    with open(cases, 'w', encoding='utf-8') as f:
+        f.write('simulation.integrator,simulation.duration\nimplicit,2\nexplicit,60\nimplicit,2\n')
+    stopped = os.path.join(work, 'stopped')
+    proc = subprocess.Popen([ARGS.cablefilm, 'sweep', scene, '--cases', cases, '--summary-only',
+                             *sets('cable.section[0].segments=300',
+                                   'cable.section[1].segments=300'),
+                             '--out', stopped, '--jobs', '1'],
+                            cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    seen = []
+    for line in proc.stdout:  # case 0 ends in a second or two; case 1 then runs for a while
+        seen.append(line)
+        if line.startswith('case 0 '):
+            break
+    time.sleep(1.0)
+    proc.send_signal(signal.SIGINT)
+    output, _ = proc.communicate(timeout=120)
+    _, rows = read_csv(os.path.join(stopped, 'sweep.csv'))
+    statuses = [r['status'] for r in rows]
+    check(proc.returncode == 130 and statuses == ['ok', 'interrupted', 'not run'],
+          f'SIGINT: exit {proc.returncode}, statuses {statuses}')
+    if failed:
+        print(''.join(seen), output)
+
+
 def test_dask(work):
     try:
         import dask.distributed  # noqa: F401
@@ -328,7 +382,7 @@ def test_dask(work):
 def main():
     global ARGS
     parser = argparse.ArgumentParser()
-    parser.add_argument('test', choices=['cross_product', 'refused', 'cases', 'interrupt', 'dask'])
+    parser.add_argument('test', choices=['cross_product', 'refused', 'cases', 'interrupt', 'summary_only', 'dask'])
     parser.add_argument('--cablefilm', required=True)
     parser.add_argument('--source-dir', required=True)
     parser.add_argument('--work-dir', required=True)
