@@ -424,12 +424,14 @@ class Sweep {
         unsaved = false;
       }
     };
-    auto say_stop = [&](const SweepProgress& p) {
+    // `ending`: said as a case ends (it was running when the stop came, and is no more).
+    auto say_stop = [&](const SweepProgress& p, int ending) {
       if (said_stop || !p.stopping) return;
       said_stop = true;
       clear_status();
+      const int running = p.running + ending;
       std::fprintf(stderr, "sweep: %s: stopping the %d running case%s; the finished ones stay\n",
-                   SignalName(g_signal.load()), p.running, p.running == 1 ? "" : "s");
+                   SignalName(g_signal.load()), running, running == 1 ? "" : "s");
     };
     {
       std::unique_ptr<CaseExecutor> executor;
@@ -443,7 +445,7 @@ class Sweep {
       RunCases(
           *executor, jobs, &g_signal, outcomes_,
           [&](std::size_t i, const SweepProgress& p) {
-            say_stop(p);
+            say_stop(p, 1);
             const CaseOutcome& o = outcomes_[i];
             clear_status();
             if (o.status == "ok")
@@ -461,7 +463,7 @@ class Sweep {
             save_when_due();
           },
           [&](const SweepProgress& p) {
-            say_stop(p);
+            say_stop(p, 0);
             save_when_due();
             if (!tty || p.stopping) return;
             const double elapsed =
