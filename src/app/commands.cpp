@@ -141,6 +141,10 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
                     grid.interval);
       break;
   }
+  std::vector<std::string> notes, warnings;
+  DescribeTables(scene, &notes, &warnings);
+  for (const std::string& n : notes) std::printf("  %s\n", n.c_str());
+  for (const std::string& w : warnings) std::printf("  warning: %s\n", w.c_str());
   const Vec a = m.ends.start.Position(0), b = m.ends.end.Position(0);
   if (m.line.law == LinkLaw::kElastic && m.ends.start.prescribed() && m.ends.end.prescribed() &&
       (b - a).norm() > m.line.total_length())

@@ -62,7 +62,11 @@ void PrintSystem(const SceneDef& scene, const SystemModel& sys) {
                 QuoteText(b.name).c_str(), kind, b.motion.rest()[0], b.motion.rest()[1],
                 b.motion.rest()[2]);
   }
+  std::vector<std::string> notes, warnings;
+  DescribeTables(scene, &notes, &warnings);
+  for (const std::string& n : notes) std::printf("  %s\n", n.c_str());
   for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
+  for (const std::string& w : warnings) std::printf("  warning: %s\n", w.c_str());
 }
 
 void PrintEquilibrium(const SystemModel& sys, const SystemEquilibriumReport& eq, double ms) {

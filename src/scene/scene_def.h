@@ -76,6 +76,7 @@ struct EndDef {
   double ramp_rate = 0;                   // nu [1/s]
   std::string table_file;                 // resolved path of the CSV (t, x, y[, z]), offsets
   std::vector<std::array<double, 4>> table;  // rows (t [s], dx, dy, dz [m])
+  TableInterpolation interpolation = TableInterpolation::kSpline;  // how the rows are joined
   // motion = "wave": the end follows the wave at its rest x through these response amplitude
   // operators, [ratio of the wave's amplitude (m/m), phase lead (deg)]; the loader turns them
   // into the trochoid of eq. (3) above (amplitudes, the wave's period and ramp).

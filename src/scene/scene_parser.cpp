@@ -411,6 +411,9 @@ std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const 
     } catch (const Error& e) {
       r.Fail(t->get("file"), "file", e.what());
     }
+    end.interpolation = r.Choice("interpolation", "spline", {"spline", "linear"}) == "linear"
+                            ? TableInterpolation::kLinear
+                            : TableInterpolation::kSpline;
   }
   return motion;
 }
