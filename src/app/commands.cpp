@@ -223,6 +223,11 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
   std::printf("peak tension %.6g N at t = %.4g s in link %d (the largest tension_max of the "
               "%ld rows, one every %.4g s)\n",
               s.peak, s.peak_t, s.peak_link, s.rows, run.grid.interval);
+  if (s.utilisation_link >= 0)
+    std::printf("peak utilisation %.4g %% (tension / minimum_breaking_load: %.6g N of %.6g N) at "
+                "t = %.4g s in link %d, material %s\n",
+                100 * s.utilisation, s.utilisation_tension, s.utilisation_mbl, s.utilisation_t,
+                s.utilisation_link, QuoteText(s.utilisation_material).c_str());
   std::printf("wrote %s\n", EscapeText(series_path).c_str());
   std::printf("wrote %s\n", EscapeText(nc_path).c_str());
   for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());

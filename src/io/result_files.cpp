@@ -57,23 +57,29 @@ void RemoveEarlierResults(const std::string& out_dir) {
 const char kTimeseriesHeader[] =
     "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max\n";
 
+const char kUtilisationColumn[] = ",utilisation_max";
+
 void WriteTimeseriesRow(std::FILE* f, const Model& m, const State& s,
-                        const Eigen::VectorXd& tension) {
+                        const Eigen::VectorXd& tension, bool utilisation) {
   Eigen::Index link_max = 0;
   const double t_max = tension.maxCoeff(&link_max);
   const int end = m.line.links;
-  std::fprintf(f, "%.10g,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g,%d\n", s.t, s.x(0, end),
+  std::fprintf(f, "%.10g,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g,%d", s.t, s.x(0, end),
                s.x(1, end), s.x(2, end), tension[0], tension[end - 1], t_max,
                static_cast<int>(link_max));
+  if (utilisation) std::fprintf(f, ",%.10g", MaxUtilisation(tension, m.line.breaking_load));
+  std::fputc('\n', f);
 }
 
 TimeseriesWriter::TimeseriesWriter(const std::string& path, const Model& m)
-    : file_(path), m_(m) {
-  std::fputs(kTimeseriesHeader, file_.stream());
+    : file_(path), m_(m), utilisation_(m.line.has_breaking_load()) {
+  std::string header = kTimeseriesHeader;
+  if (utilisation_) header.insert(header.size() - 1, kUtilisationColumn);
+  std::fputs(header.c_str(), file_.stream());
 }
 
 bool TimeseriesWriter::Row(const Data& d) {
-  WriteTimeseriesRow(file_.stream(), m_, d.state, d.tension());
+  WriteTimeseriesRow(file_.stream(), m_, d.state, d.tension(), utilisation_);
   return true;
 }
 

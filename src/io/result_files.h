@@ -23,12 +23,16 @@ void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& s
 void RemoveEarlierResults(const std::string& out_dir);
 
 // One row of timeseries.csv, and its header line (shared with the live view's /timeseries.csv).
+// With `utilisation` (a line some of whose materials have a minimum_breaking_load) the row
+// ends with utilisation_max, the largest T / MBL of those links, and the header with
+// kUtilisationColumn; the live view's rows never have it.
 extern const char kTimeseriesHeader[];  // with its newline
+extern const char kUtilisationColumn[];  // ",utilisation_max", no newline
 void WriteTimeseriesRow(std::FILE* f, const Model& m, const State& state,
-                        const Eigen::VectorXd& tension);
+                        const Eigen::VectorXd& tension, bool utilisation = false);
 
-// timeseries.csv: t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max; a run's
-// rows as they come.
+// timeseries.csv: t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max, and
+// utilisation_max when the line has a breaking load; a run's rows as they come.
 class TimeseriesWriter : public RowSink {
  public:
   TimeseriesWriter(const std::string& path, const Model& m);
@@ -39,6 +43,7 @@ class TimeseriesWriter : public RowSink {
  private:
   AtomicFile file_;
   const Model& m_;
+  bool utilisation_ = false;  // the utilisation_max column
 };
 
 }  // namespace cablefilm

@@ -46,6 +46,7 @@ struct MaterialDef {
   double added_mass_coefficient = 1.0; // k, normal virtual inertia
   double axial_damping = 0;            // internal axial damping BA [Pa s]: stress BA x strain rate
   double axial_damping_ratio = 0;      // or zeta, of critical for each link's axial mode
+  double minimum_breaking_load = 0;    // MBL [N]: utilisation = tension / MBL; 0 = not given
 };
 
 struct SectionDef {

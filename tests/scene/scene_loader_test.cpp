@@ -291,6 +291,22 @@ TEST_F(TableMotion, GoodTableLoads) {
   EXPECT_NEAR(m.ends.end.Position(1.0).x(), 80.5, 1e-12);  // offsets from the rest position
 }
 
+TEST(SceneLoader, MinimumBreakingLoad) {
+  // Optional: 0 (not given) by default; when given a positive force in N, on the link's model.
+  EXPECT_EQ(ParseScene(kBase, "s.toml").materials[1].minimum_breaking_load, 0.0);
+  const SceneDef s = ParseScene(
+      With("name = \"nylon\"", "name = \"nylon\"\nminimum_breaking_load = 2.5e5"), "s.toml");
+  EXPECT_EQ(s.materials[1].minimum_breaking_load, 2.5e5);
+  const Model m = BuildModel(s);
+  EXPECT_EQ(m.line.breaking_load[0], 0.0);                  // wire: none
+  EXPECT_EQ(m.line.breaking_load[m.line.links - 1], 2.5e5);  // nylon
+  EXPECT_TRUE(m.line.has_breaking_load());
+  for (const char* bad : {"0", "-1.0", "\"big\"", "1e16"})
+    ExpectError(With("name = \"nylon\"",
+                     std::string("name = \"nylon\"\nminimum_breaking_load = ") + bad),
+                "material[1].minimum_breaking_load", {"expected a positive number in N"});
+}
+
 TEST_F(TableMotion, InterpolationKey) {
   WriteFile("ship.csv", "t,x,y\n0,0,0\n1,0.5,0.1\n2,0.2,-0.3\n");
   const std::string table = "motion = \"table\"\nfile = \"ship.csv\"\n";
