@@ -125,6 +125,16 @@ inline double MaxUtilisation(const Eigen::VectorXd& tension, const Eigen::Vector
   return best;
 }
 
+// The line's one breaking load [N] when every link has the same (> 0), else NaN (none, or
+// several materials' that differ): what a tension plot can draw as a line.
+inline double SingleBreakingLoad(const Eigen::VectorXd& breaking_load) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (breaking_load.size() == 0 || !(breaking_load[0] > 0)) return nan;
+  for (Eigen::Index j = 1; j < breaking_load.size(); ++j)
+    if (breaking_load[j] != breaking_load[0]) return nan;
+  return breaking_load[0];
+}
+
 struct Environment {
   double gravity = 9.80665;       // g [m/s^2]
   double fluid_density = 0;       // rho [kg/m^3]

@@ -626,6 +626,10 @@ as one array position [n, stations, 3], tension
       .def_property_readonly("z_end", [](const py::object& self) { return Positions(self, 2, 1); })
       .def_property_readonly("s", [](const Result& r) { return Copy(r.run->run.model.line.arc_length); })
       .def_property_readonly("s_link", [](const Result& r) { return LinkMidpoints(r.run->run.model); })
+      .def_property_readonly("minimum_breaking_load",
+                             [](const Result& r) { return Copy(r.run->run.model.line.breaking_load); },
+                             "Each link's material's minimum_breaking_load [N] (0: not given), as "
+                             "results.nc has it: tension / minimum_breaking_load is the utilisation.")
       .def_property_readonly("scene", [](const Result& r) { return r.scene; })
       .def_property_readonly("completed", [](const Result& r) { return r.run->run.summary.completed; })
       .def_property_readonly("failure", [](const Result& r) { return r.run->run.summary.failure; })
