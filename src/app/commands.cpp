@@ -141,6 +141,10 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
                     grid.interval);
       break;
   }
+  std::vector<std::string> notes, warnings;
+  DescribeTables(scene, &notes, &warnings);
+  for (const std::string& n : notes) std::printf("  %s\n", n.c_str());
+  for (const std::string& w : warnings) std::printf("  warning: %s\n", w.c_str());
   const Vec a = m.ends.start.Position(0), b = m.ends.end.Position(0);
   if (m.line.law == LinkLaw::kElastic && m.ends.start.prescribed() && m.ends.end.prescribed() &&
       (b - a).norm() > m.line.total_length())
@@ -219,6 +223,11 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
   std::printf("peak tension %.6g N at t = %.4g s in link %d (the largest tension_max of the "
               "%ld rows, one every %.4g s)\n",
               s.peak, s.peak_t, s.peak_link, s.rows, run.grid.interval);
+  if (s.utilisation_link >= 0)
+    std::printf("peak utilisation %.4g %% (tension / minimum_breaking_load: %.6g N of %.6g N) at "
+                "t = %.4g s in link %d, material %s\n",
+                100 * s.utilisation, s.utilisation_tension, s.utilisation_mbl, s.utilisation_t,
+                s.utilisation_link, QuoteText(s.utilisation_material).c_str());
   std::printf("largest end loads %.6g N at the start (t = %.4g s), %.6g N at the end (t = %.4g s)"
               " (fx..fz_start, fx..fz_end of the time series)\n",
               s.start_load_max, s.start_load_t, s.end_load_max, s.end_load_t);

@@ -63,7 +63,11 @@ void PrintSystem(const SceneDef& scene, const SystemModel& sys) {
                 QuoteText(b.name).c_str(), kind, b.motion.rest()[0], b.motion.rest()[1],
                 b.motion.rest()[2]);
   }
+  std::vector<std::string> notes, warnings;
+  DescribeTables(scene, &notes, &warnings);
+  for (const std::string& n : notes) std::printf("  %s\n", n.c_str());
   for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
+  for (const std::string& w : warnings) std::printf("  warning: %s\n", w.c_str());
 }
 
 void PrintEquilibrium(const SystemModel& sys, const SystemEquilibriumReport& eq, double ms) {
@@ -211,6 +215,12 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
                 "every %.4g s)\n",
                 s.peak, s.peak_t, QuoteText(sys.line_names[run.peak_line]).c_str(), s.peak_link,
                 s.rows, run.grid.interval);
+  if (s.utilisation_link >= 0)
+    std::printf("peak utilisation %.4g %% (tension / minimum_breaking_load: %.6g N of %.6g N) at "
+                "t = %.4g s in line %s, link %d, material %s\n",
+                100 * s.utilisation, s.utilisation_tension, s.utilisation_mbl, s.utilisation_t,
+                QuoteText(s.utilisation_line).c_str(), s.utilisation_link,
+                QuoteText(s.utilisation_material).c_str());
   for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());
   std::printf("wrote %s/points.csv,%s results.nc, run_report.toml and lines/<name>/ for %d "
               "line(s)\n",

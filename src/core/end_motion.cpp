@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 
 #include "core/error.h"
 
@@ -34,12 +36,13 @@ EndMotion EndMotion::Trochoid(Vec rest, Vec cos_amplitudes, Vec sin_amplitudes, 
 }
 
 EndMotion EndMotion::Table(Vec rest, const std::vector<double>& times,
-                           const std::vector<Vec>& offsets) {
+                           const std::vector<Vec>& offsets, TableInterpolation interpolation) {
   if (times.size() < 2 || offsets.size() != times.size())
     throw Error("end motion table needs at least two rows, each a time and an offset");
   EndMotion m;
   m.kind_ = EndKind::kTable;
   m.rest_ = rest;
+  m.interpolation_ = interpolation;
   const size_t n = times.size();
   m.knot_t_.resize(n);
   m.knot_p_.resize(n);
@@ -51,6 +54,7 @@ EndMotion EndMotion::Table(Vec rest, const std::vector<double>& times,
       throw Error("end motion table: times must increase strictly (row " + std::to_string(i + 1) +
                   ")");
   }
+  if (interpolation == TableInterpolation::kLinear) return m;  // M_i = 0: straight segments
   // Natural cubic spline (zero second derivative at both ends): tridiagonal solve for the
   // second derivatives M_i, so position, velocity and acceleration are all continuous.
   std::vector<double> c_prime(n, 0.0);
@@ -143,16 +147,33 @@ Vec EndMotion::Evaluate(double t, int order, const SmoothSchedule& scale,
   return g[2] * q0 + 2 * g[1] * q1 + g[0] * q2;
 }
 
+double EndMotion::EndSpeed() const {
+  return kind_ == EndKind::kTable ? EvaluateTable(knot_t_.back(), 1).norm() : 0.0;
+}
+
+double EndMotion::NextKink(double t) const {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  if (kind_ != EndKind::kTable || interpolation_ != TableInterpolation::kLinear) return kNone;
+  const auto it = std::upper_bound(knot_t_.begin(), knot_t_.end(), t);
+  return it == knot_t_.end() ? kNone : *it;
+}
+
 Vec EndMotion::EvaluateTable(double t, int order) const {
   const size_t n = knot_t_.size();
-  if (t <= knot_t_.front()) return order == 0 ? Vec(rest_ + knot_p_.front()) : Vec::Zero();
-  if (t >= knot_t_.back()) return order == 0 ? Vec(rest_ + knot_p_.back()) : Vec::Zero();
-  const size_t i =
-      std::min<size_t>(n - 2, std::upper_bound(knot_t_.begin(), knot_t_.end(), t) - knot_t_.begin() - 1);
+  // Held strictly outside [t_first, t_last]; the rows themselves are the spline's (line's).
+  if (t < knot_t_.front()) return order == 0 ? Vec(rest_ + knot_p_.front()) : Vec::Zero();
+  if (t > knot_t_.back()) return order == 0 ? Vec(rest_ + knot_p_.back()) : Vec::Zero();
+  // The segment arriving at t: t_i < t <= t_{i+1} (the first segment at t_first). A step that
+  // ends on a row sees the velocity it arrives with; the next step, past the row, the next
+  // segment's.
+  const size_t i = std::min<size_t>(
+      n - 2, std::max<std::ptrdiff_t>(
+                 0, std::lower_bound(knot_t_.begin(), knot_t_.end(), t) - knot_t_.begin() - 1));
   const double h = knot_t_[i + 1] - knot_t_[i];
   const double A = (knot_t_[i + 1] - t) / h, B = (t - knot_t_[i]) / h;
   const Vec &p0 = knot_p_[i], &p1 = knot_p_[i + 1];
   const Vec &m0 = knot_m_[i], &m1 = knot_m_[i + 1];
+  // At a row A or B is exactly 0 or 1, so the position is the row's offset to round-off.
   if (order == 0)
     return rest_ + A * p0 + B * p1 + ((A * A * A - A) * m0 + (B * B * B - B) * m1) * (h * h / 6.0);
   if (order == 1)

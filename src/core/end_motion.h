@@ -13,7 +13,14 @@ enum class EndKind {
   kFixed,     // stays at its rest position
   kFree,      // an ordinary station with one link (a dangling or towed end)
   kTrochoid,  // eq. (3) of the paper
-  kTable,     // offsets (t, dx, dy) from a table, natural cubic spline in time
+  kTable,     // offsets (t, dx, dy) from a table, interpolated in time (TableInterpolation)
+};
+
+// How a table's rows are joined in time.
+enum class TableInterpolation {
+  kSpline,  // natural cubic spline: position, velocity and acceleration continuous
+  kLinear,  // piecewise linear: velocity the slope between rows (jumps at a row), no
+            // acceleration between rows
 };
 
 class EndMotion {
@@ -25,10 +32,15 @@ class EndMotion {
   // (a, c, e), `sin_amplitudes` = (b, d, f) [m].
   static EndMotion Trochoid(Vec rest, Vec cos_amplitudes, Vec sin_amplitudes, double omega,
                             double nu);
-  // Rows: times t [s], strictly increasing, at least two, and offsets [m] added to `rest`;
-  // before the first row and after the last the end holds still at that row.
+  // Rows: times t [s], strictly increasing, at least two, and offsets [m] added to `rest`,
+  // joined by `interpolation` on the closed span [t_first, t_last]: at a row the motion is the
+  // one arriving at it (the segment before it; the first row: the first segment), so the last
+  // row carries the motion's own end velocity. Strictly before the first row and strictly
+  // after the last the end holds still at that row (a jump in velocity there if the table
+  // starts or ends moving: EndSpeed()).
   static EndMotion Table(Vec rest, const std::vector<double>& times,
-                         const std::vector<Vec>& offsets);
+                         const std::vector<Vec>& offsets,
+                         TableInterpolation interpolation = TableInterpolation::kSpline);
 
   // The same motion about another rest position (a point of a body that moves as its
   // reference point does).
@@ -58,6 +70,16 @@ class EndMotion {
                const SmoothSchedule& clock) const;
   double period() const;  // 2 pi / omega_s of eq. (3) [s]; the table's span; 0 otherwise
 
+  // A table's: its interpolation, first and last row's times [s], and the speed [m/s] at its
+  // last row (what the end loses at once when a run goes on past it).
+  TableInterpolation interpolation() const { return interpolation_; }
+  double table_start() const { return knot_t_.empty() ? 0 : knot_t_.front(); }
+  double table_end() const { return knot_t_.empty() ? 0 : knot_t_.back(); }
+  double EndSpeed() const;
+  // The first time after `t` [s] at which the motion's velocity jumps (a linear table's rows,
+  // in the scene's clock), +infinity if none: where an adaptive step should land.
+  double NextKink(double t) const;
+
  private:
   Vec Evaluate(double t, int order) const;
   Vec EvaluateTrochoid(double t, int order) const;
@@ -71,7 +93,8 @@ class EndMotion {
   double nu_ = 0;                         // nu_s [1/s]
   // Table: knots and the spline's second derivatives at the knots.
   std::vector<double> knot_t_;
-  std::vector<Vec> knot_p_, knot_m_;
+  std::vector<Vec> knot_p_, knot_m_;  // offsets [m]; spline: d2/dt2 [m/s^2] (linear: 0)
+  TableInterpolation interpolation_ = TableInterpolation::kSpline;
 };
 
 }  // namespace cablefilm

@@ -40,7 +40,9 @@ int WorstLink(const Model& m, const Data& d);
 
 // The adaptive loop of an implicit step of dt [s], for one line or a system of them. `s`
 // gives: double& Time(), double& ProposedStep(), long& Rejected(), bool Solve(h),
-// double Error(h), void Accept(h) (settle and commit), int WorstLink().
+// double Error(h), void Accept(h) (settle and commit), int WorstLink(), and double
+// NextKink(t): the first time after t [s] where a prescribed motion's velocity jumps (a linear
+// table's rows; +infinity if none), on which a step is made to land rather than straddle it.
 template <class Stepper>
 void AdaptiveImplicitSteps(Stepper& s, double tolerance, const CancelFlag* stop, double dt) {
   constexpr int kMaxRejections = 40;
@@ -55,7 +57,11 @@ void AdaptiveImplicitSteps(Stepper& s, double tolerance, const CancelFlag* stop,
   const double smallest = kSmallestStepFraction * dt;
   while (t < t_end - 1e-12 * dt) {
     ThrowIfCancelled(stop, "the implicit step");
-    const double h = std::min(proposed, t_end - t);
+    double h = std::min(proposed, t_end - t);
+    // Land on a kink of a prescribed motion within reach (one closer than the smallest step
+    // is taken as passed: t may sit a rounding short of a row it has landed on).
+    const double kink = s.NextKink(t + smallest);
+    if (kink - t < h) h = kink - t;
     if (h < smallest && h < t_end - t) {
       std::ostringstream os;
       os << "the implicit step fell to " << h << " s at t = " << t << " s (below "

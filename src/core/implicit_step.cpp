@@ -1,6 +1,8 @@
 #include "core/implicit_step.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/implicit_stages.h"
 
@@ -19,6 +21,10 @@ struct LineStepper {
   long& Rejected() { return d.stats.rejected; }
   int WorstLink() const { return cablefilm::WorstLink(m, d); }
   double Error(double h) const { return LocalError(m, d, c, h); }
+  double NextKink(double t) const {
+    if (!ClockAsScene(in)) return std::numeric_limits<double>::infinity();
+    return std::min(m.ends.start.NextKink(t), m.ends.end.NextKink(t));
+  }
   void Accept(double h) {
     SettleLandings(m, d, h);
     Commit(m, d, h);

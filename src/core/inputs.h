@@ -26,6 +26,12 @@ struct Inputs {
                                      // when raised, Step throws CancelledError
 };
 
+// The driven ends' clock runs as the scene's (constant 1): their motions' times (a table's
+// rows) are the run's.
+inline bool ClockAsScene(const Inputs& in) {
+  return in.end_clock.constant() && in.end_clock.target() == 1.0;
+}
+
 // The model's own inputs: its current and waves, its ends as the scene moves them.
 Inputs SceneInputs(const Model& m);
 

@@ -70,6 +70,7 @@ Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<Pris
   m.link_mass.resize(s);
   m.link_net_weight.resize(s);
   m.link_section.resize(s);
+  m.breaking_load.resize(s);
   m.arc_length.resize(s + 1);
   m.arc_length[0] = 0;
   int j = 0;
@@ -85,6 +86,7 @@ Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<Pris
       m.link_mass[j] = sec.mass_per_length * l;
       m.link_net_weight[j] = (sec.mass_per_length - rho * sec.area) * l * g;
       m.link_section[j] = static_cast<int>(k);
+      m.breaking_load[j] = sec.minimum_breaking_load;
       // Accumulate by section so the boundaries fall exactly on the section lengths.
       m.arc_length[j + 1] = m.arc_length[j - i] + (i + 1) * l;
     }

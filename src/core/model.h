@@ -5,6 +5,7 @@
 // changes while it runs (the state, the schemes' memory) is in Data (data.h), what a control
 // changes (the current, the waves, the ends' motion) in Inputs (inputs.h).
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include "core/end_motion.h"
@@ -67,6 +68,9 @@ struct Line {
   Eigen::VectorXd link_mass;      // mu_{j+1/2} l_{j+1/2} [kg]
   Eigen::VectorXd link_net_weight;  // mu l g - rho g l sigma [N], weight less buoyancy
   std::vector<int> link_section;  // the scene section each link belongs to
+  Eigen::VectorXd breaking_load;  // MBL of the link's material [N]; 0 = not given (results
+                                  // only: the utilisation T / MBL; no force depends on it)
+  bool has_breaking_load() const { return breaking_load.size() > 0 && breaking_load.maxCoeff() > 0; }
 
   // Per station j (size s+1).
   Eigen::VectorXd arc_length;     // unstretched arc length from station 0 [m]
@@ -106,6 +110,31 @@ struct Line {
 };
 
 // The fluid and the ground the line lies in, as the scene gives them.
+// The largest utilisation T_j / MBL_j [1] over the links with a breaking load (MBL_j > 0) of
+// `tension` [N], its link in `link`; NaN (link -1) when no link has one.
+inline double MaxUtilisation(const Eigen::VectorXd& tension, const Eigen::VectorXd& breaking_load,
+                             int* link = nullptr) {
+  double best = std::numeric_limits<double>::quiet_NaN();
+  int at = -1;
+  for (Eigen::Index j = 0; j < breaking_load.size() && j < tension.size(); ++j) {
+    if (!(breaking_load[j] > 0)) continue;
+    const double u = tension[j] / breaking_load[j];
+    if (at < 0 || u > best) best = u, at = static_cast<int>(j);
+  }
+  if (link) *link = at;
+  return best;
+}
+
+// The line's one breaking load [N] when every link has the same (> 0), else NaN (none, or
+// several materials' that differ): what a tension plot can draw as a line.
+inline double SingleBreakingLoad(const Eigen::VectorXd& breaking_load) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (breaking_load.size() == 0 || !(breaking_load[0] > 0)) return nan;
+  for (Eigen::Index j = 1; j < breaking_load.size(); ++j)
+    if (breaking_load[j] != breaking_load[0]) return nan;
+  return breaking_load[0];
+}
+
 struct Environment {
   double gravity = 9.80665;       // g [m/s^2]
   double fluid_density = 0;       // rho [kg/m^3]
@@ -157,6 +186,7 @@ struct SectionSpec {
   double axial_damping = 0;          // BA [Pa s]: c = BA sigma / l
   double axial_damping_ratio = 0;    // zeta: c = 2 zeta sqrt((sigma E / l) m_ab), m_ab the
                                      // reduced mass of the link's two stations
+  double minimum_breaking_load = 0;  // MBL [N], for the utilisation T / MBL; 0 = not given
 };
 
 struct PrismSpec {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/end_loads.h"
@@ -200,6 +201,14 @@ struct SystemStepper {
   double& ProposedStep() { return sd.proposed_step; }
   long& Rejected() { return sd.stats.rejected; }
   int WorstLink() const { return WorstLinkOf(nullptr); }
+  double NextKink(double t) const {
+    double kink = std::numeric_limits<double>::infinity();
+    if (!ClockAsScene(in)) return kink;
+    for (const SystemPoint& p : sys.points)
+      if (p.kind == PointKind::kMoved) kink = std::min(kink, p.motion.NextKink(t));
+    for (const BodySpec& b : sys.bodies) kink = std::min(kink, b.motion.NextKink(t));
+    return kink;
+  }
   // The most stretched link of all lines (its index in its line; its line in `line`).
   int WorstLinkOf(int* line) const {
     int worst = 0;

@@ -127,6 +127,14 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
                               "tension of the link, " + state);
   for (int var : var_eq) NetcdfText(nc, var, "coordinates", "s", f);
   NetcdfText(nc, var_t_eq, "coordinates", "s_link", f);
+  // With a breaking load on any material: each link's (0: its material has none), so that
+  // tension / minimum_breaking_load is the utilisation.
+  const int var_mbl =
+      m.line.has_breaking_load()
+          ? define("minimum_breaking_load", NC_DOUBLE, {dim_link}, "N",
+                   "minimum breaking load of the link's material (0: not given)")
+          : -1;
+  if (var_mbl >= 0) NetcdfText(nc, var_mbl, "coordinates", "s_link", f);
 
   NetcdfGlobalAttributes(nc, info, f);
   NetcdfCheck(nc_enddef(nc), f, "enddef");
@@ -145,6 +153,9 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
     NetcdfCheck(nc_put_var_double(nc, var_eq[c], row.data()), f, "equilibrium");
   }
   NetcdfCheck(nc_put_var_double(nc, var_t_eq, initial_tension.data()), f, "tension_equilibrium");
+  if (var_mbl >= 0)
+    NetcdfCheck(nc_put_var_double(nc, var_mbl, m.line.breaking_load.data()), f,
+                "minimum_breaking_load");
 }
 
 void NetcdfResultsWriter::StartWriter() {

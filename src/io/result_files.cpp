@@ -58,8 +58,10 @@ const char kTimeseriesHeader[] =
     "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max,"
     "fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end\n";
 
+const char kUtilisationColumn[] = ",utilisation_max";
+
 void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Inputs& in,
-                        EndLoads& ends) {
+                        EndLoads& ends, bool utilisation) {
   const State& s = d.state;
   const Eigen::VectorXd& tension = d.tension();
   Eigen::Index link_max = 0;
@@ -70,19 +72,23 @@ void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Input
   const Vec& f1 = ends.at(1);
   std::fprintf(f,
                "%.10g,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g,%d,"
-               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.8g,%.8g\n",
+               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.8g,%.8g",
                s.t, s.x(0, end), s.x(1, end), s.x(2, end), tension[0], tension[end - 1], t_max,
                static_cast<int>(link_max), f0[0], f0[1], f0[2], f1[0], f1[1], f1[2],
                ElevationDegrees(f0), ElevationDegrees(f1));
+  if (utilisation) std::fprintf(f, ",%.10g", MaxUtilisation(tension, m.line.breaking_load));
+  std::fputc('\n', f);
 }
 
 TimeseriesWriter::TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in)
-    : file_(path), m_(m), in_(in), ends_(m) {
-  std::fputs(kTimeseriesHeader, file_.stream());
+    : file_(path), m_(m), in_(in), ends_(m), utilisation_(m.line.has_breaking_load()) {
+  std::string header = kTimeseriesHeader;
+  if (utilisation_) header.insert(header.size() - 1, kUtilisationColumn);
+  std::fputs(header.c_str(), file_.stream());
 }
 
 bool TimeseriesWriter::Row(const Data& d) {
-  WriteTimeseriesRow(file_.stream(), m_, d, in_, ends_);
+  WriteTimeseriesRow(file_.stream(), m_, d, in_, ends_, utilisation_);
   return true;
 }
 

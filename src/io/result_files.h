@@ -24,14 +24,18 @@ void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& s
 void RemoveEarlierResults(const std::string& out_dir);
 
 // One row of timeseries.csv, and its header line (shared with the live view's /timeseries.csv).
-// `ends` holds the end loads of the row's Data (core/end_loads.h), computed here.
+// `ends` holds the end loads of the row's Data (core/end_loads.h), computed here. With
+// `utilisation` (a line some of whose materials have a minimum_breaking_load) the row ends
+// with utilisation_max, the largest T / MBL of those links, and the header with
+// kUtilisationColumn; the live view's rows never have it.
 extern const char kTimeseriesHeader[];  // with its newline
+extern const char kUtilisationColumn[];  // ",utilisation_max", no newline
 void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Inputs& in,
-                        EndLoads& ends);
+                        EndLoads& ends, bool utilisation = false);
 
 // timeseries.csv: t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max, then the
-// end loads fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end; a run's
-// rows as they come.
+// end loads fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end, and
+// utilisation_max when the line has a breaking load; a run's rows as they come.
 class TimeseriesWriter : public RowSink {
  public:
   TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in);
@@ -44,6 +48,7 @@ class TimeseriesWriter : public RowSink {
   const Model& m_;
   const Inputs& in_;
   EndLoads ends_;
+  bool utilisation_ = false;  // the utilisation_max column
 };
 
 }  // namespace cablefilm

@@ -60,6 +60,19 @@ void WriteRunReport(const std::string& path, const RunSummary& f) {
                  "end_load_max = %.10g         # [N], on its end (fx_end, fy_end, fz_end)\n"
                  "end_load_time = %.10g        # [s]\n",
                  f.start_load_max, f.start_load_t, f.end_load_max, f.end_load_t);
+  if (f.utilisation_link >= 0) {  // some material has a minimum_breaking_load
+    std::fprintf(out, "utilisation_max = %.10g      # [1], the largest tension / minimum_breaking_load of the rows\n",
+                 f.utilisation);
+    std::fprintf(out, "utilisation_time = %.10g     # [s]\nutilisation_link = %d\n", f.utilisation_t,
+                 f.utilisation_link);
+    if (!f.utilisation_line.empty())
+      std::fprintf(out, "utilisation_line = %s\n", TomlString(f.utilisation_line).c_str());
+    std::fprintf(out, "utilisation_tension = %.10g  # [N], that link's tension then\n",
+                 f.utilisation_tension);
+    std::fprintf(out, "utilisation_breaking_load = %.10g  # [N], its material's MBL\n",
+                 f.utilisation_mbl);
+    std::fprintf(out, "utilisation_material = %s\n", TomlString(f.utilisation_material).c_str());
+  }
   std::fprintf(out, "peak_converged = %s\n", f.peak_converged() ? "true" : "false");
   std::fprintf(out, "warnings = [");
   for (size_t i = 0; i < warnings.size(); ++i)
@@ -103,6 +116,13 @@ bool ReadRunReport(const std::string& path, RunSummary* s) {
   s->start_load_t = number("start_load_time", nan);
   s->end_load_max = number("end_load_max", nan);
   s->end_load_t = number("end_load_time", nan);
+  s->utilisation = number("utilisation_max", nan);
+  s->utilisation_t = number("utilisation_time", nan);
+  s->utilisation_link = r.contains("utilisation_max") ? static_cast<int>(whole("utilisation_link")) : -1;
+  s->utilisation_tension = number("utilisation_tension", nan);
+  s->utilisation_mbl = number("utilisation_breaking_load", nan);
+  s->utilisation_material = r["utilisation_material"].value<std::string>().value_or("");
+  s->utilisation_line = r["utilisation_line"].value<std::string>().value_or("");
   s->warnings.clear();
   if (const toml::array* w = r["warnings"].as_array())
     for (const toml::node& n : *w) s->warnings.push_back(n.value<std::string>().value_or(""));

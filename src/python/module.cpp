@@ -638,6 +638,10 @@ each end, timeseries.csv's fx_start ... fz_end), arc lengths s [stations], s_lin
                              "the end load at the end [n, 3] (N), as fx_end, fy_end, fz_end")
       .def_property_readonly("s", [](const Result& r) { return Copy(r.run->run.model.line.arc_length); })
       .def_property_readonly("s_link", [](const Result& r) { return LinkMidpoints(r.run->run.model); })
+      .def_property_readonly("minimum_breaking_load",
+                             [](const Result& r) { return Copy(r.run->run.model.line.breaking_load); },
+                             "Each link's material's minimum_breaking_load [N] (0: not given), as "
+                             "results.nc has it: tension / minimum_breaking_load is the utilisation.")
       .def_property_readonly("scene", [](const Result& r) { return r.scene; })
       .def_property_readonly("completed", [](const Result& r) { return r.run->run.summary.completed; })
       .def_property_readonly("failure", [](const Result& r) { return r.run->run.summary.failure; })

@@ -16,7 +16,7 @@ class RecordSink : public RowSink {
     const Eigen::VectorXd& T = d.tension();
     run_.extent.Add(d.state, T);
     run_.row_max.Append(d.state.t, T.maxCoeff());
-    run_.summary.AddRow(d.state.t, T);
+    run_.summary.AddRow(d.state.t, T, run_.model.line.breaking_load);
     ends_.Compute(run_.model, d, run_.inputs);
     run_.summary.AddEndLoads(d.state.t, ends_.at(0), ends_.at(1));
     return true;
@@ -28,6 +28,13 @@ class RecordSink : public RowSink {
 };
 
 }  // namespace
+
+std::vector<std::string> SectionMaterials(const SceneDef& scene,
+                                          const std::vector<SectionDef>& sections) {
+  std::vector<std::string> names;
+  for (const SectionDef& s : sections) names.push_back(scene.materials.at(s.material).name);
+  return names;
+}
 
 const char* LawName(LinkLaw law) {
   return law == LinkLaw::kElastic ? "elastic" : "inextensible";
@@ -49,6 +56,7 @@ Run PrepareRun(const SceneDef& scene, Model model, std::string label, const Canc
   run.extent = RunExtent(initial);
   run.summary.scheme = SchemeName(m, run.grid.options);
   run.summary.tolerance = run.grid.automatic ? run.grid.options.tolerance : 0.0;
+  run.section_materials = SectionMaterials(scene, scene.sections);
   return run;
 }
 
@@ -68,6 +76,9 @@ void ExecuteRun(Run& run, const std::vector<RowSink*>& sinks) {
     s.failure = end.failure + " (" + s.scheme + ", time step " + std::to_string(run.grid.dt) +
                 " s)";
   s.warnings = TrustWarnings(run.model, s.stats);
+  if (s.utilisation_link >= 0)
+    s.utilisation_material =
+        run.section_materials.at(run.model.line.link_section[s.utilisation_link]);
 }
 
 }  // namespace cablefilm

@@ -30,7 +30,13 @@ struct Run {
   RunExtent extent;                // of every row: the film's colour range and world box
   MaxTensionLog row_max;           // the largest link tension of every row
   RunSummary summary;
+  std::vector<std::string> section_materials;  // each section's material name (the summary's
+                                               // utilisation_material)
 };
+
+// The name of each section's material.
+std::vector<std::string> SectionMaterials(const SceneDef& scene,
+                                          const std::vector<SectionDef>& sections);
 
 // The run of `model` as `scene` says: its time grid, its initial state (the static equilibrium
 // or the straight chord) and the Data it starts from. Throws Error when the equilibrium is not

@@ -9,8 +9,18 @@
 
 namespace cablefilm {
 
-void RunSummary::AddRow(double t, const Eigen::VectorXd& tension) {
+void RunSummary::AddRow(double t, const Eigen::VectorXd& tension,
+                        const Eigen::VectorXd& breaking_load) {
   ++rows;
+  int u_link = -1;
+  const double u = MaxUtilisation(tension, breaking_load, &u_link);
+  if (u_link >= 0 && !(u <= utilisation)) {  // the first row, or a larger one
+    utilisation = u;
+    utilisation_t = t;
+    utilisation_link = u_link;
+    utilisation_tension = tension[u_link];
+    utilisation_mbl = breaking_load[u_link];
+  }
   Eigen::Index link = 0;
   const double tmax = tension.maxCoeff(&link);  // the row's tension_max and link_max
   // The first row, or a larger tension (NaN peak: none yet); the first of equal ones stays.

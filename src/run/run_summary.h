@@ -37,13 +37,25 @@ struct RunSummary {
   // A system's: the lines holding the peak and the least tension (their links are the line's);
   // empty for a single line.
   std::string peak_line, min_tension_line;
+  // The largest utilisation T / MBL over the rows and the links whose material has a
+  // minimum_breaking_load (NaN: none has), the first row holding it: its time [s], link,
+  // tension [N], that link's MBL [N] and material's name (set by the run, which knows the
+  // scene); a system's also its line. Not at the peak tension when the materials differ.
+  double utilisation = std::numeric_limits<double>::quiet_NaN();          // [1]
+  double utilisation_t = std::numeric_limits<double>::quiet_NaN();        // [s]
+  double utilisation_tension = std::numeric_limits<double>::quiet_NaN();  // [N]
+  double utilisation_mbl = std::numeric_limits<double>::quiet_NaN();      // [N]
+  int utilisation_link = -1;
+  std::string utilisation_material, utilisation_line;
   bool completed = false;         // every row; false: stopped, or a blow-up (`failure`)
   std::string failure;            // a blow-up's message
   std::vector<std::string> warnings;  // why the peak cannot be trusted (TrustWarnings)
   bool peak_converged() const { return warnings.empty(); }
 
   // One output row's tensions [N] at time t [s], taken into the peak and the least tension.
-  void AddRow(double t, const Eigen::VectorXd& tension);
+  // With the links' breaking loads [N] (Line::breaking_load), the utilisation too.
+  void AddRow(double t, const Eigen::VectorXd& tension,
+              const Eigen::VectorXd& breaking_load = Eigen::VectorXd());
   // One output row's end loads [N] at time t [s], taken into their largest.
   void AddEndLoads(double t, const Vec& start, const Vec& end);
 };

@@ -5,6 +5,7 @@
 
 #include "core/cancel.h"
 #include "core/error.h"
+#include "run/run.h"
 
 namespace cablefilm {
 namespace {
@@ -75,6 +76,10 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
   run.initial = MakeSystemData(run.sys, run.inputs, run.grid.options, states);
   run.lines.resize(run.sys.lines.size());
   for (size_t i = 0; i < run.lines.size(); ++i) {
+    for (const LineDef& def : scene.lines)
+      if (def.name == run.sys.line_names[i])
+        run.section_materials.push_back(SectionMaterials(scene, def.sections));
+    if (run.section_materials.size() != i + 1) run.section_materials.emplace_back();
     run.lines[i].scheme = SchemeName(run.sys.lines[i], run.grid.options);
     run.extents.emplace_back(run.initial.lines[i].state);
     run.row_max.emplace_back();
@@ -93,7 +98,7 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
     for (int i = 0; i < nl; ++i) {
       const Data& d = sd.lines[i];
       const Eigen::VectorXd& T = d.tension();
-      run.lines[i].AddRow(d.state.t, T);
+      run.lines[i].AddRow(d.state.t, T, run.sys.lines[i].line.breaking_load);
       run.extents[i].Add(d.state, T);
       run.row_max[i].Append(d.state.t, T.maxCoeff());
       if (i < static_cast<int>(line_sinks.size()))
@@ -143,6 +148,19 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
       s.peak_link = l.peak_link;
       s.peak_line = run.sys.line_names[i];
       run.peak_line = i;
+    }
+    const std::vector<std::string>& materials = run.section_materials.at(i);
+    if (l.utilisation_link >= 0 && !materials.empty())
+      l.utilisation_material =
+          materials.at(run.sys.lines[i].line.link_section[l.utilisation_link]);
+    if (l.utilisation_link >= 0 && !(l.utilisation <= s.utilisation)) {  // the first largest
+      s.utilisation = l.utilisation;
+      s.utilisation_t = l.utilisation_t;
+      s.utilisation_link = l.utilisation_link;
+      s.utilisation_tension = l.utilisation_tension;
+      s.utilisation_mbl = l.utilisation_mbl;
+      s.utilisation_material = l.utilisation_material;
+      s.utilisation_line = run.sys.line_names[i];
     }
     if (!(l.min_tension >= s.min_tension)) {
       s.min_tension = l.min_tension;

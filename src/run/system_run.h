@@ -39,6 +39,7 @@ struct SystemRun {
                                        // pictures' time plots
   RunSummary summary;                // the system's: the peak of all lines, how it ended
   int peak_line = -1;                // the line holding summary.peak
+  std::vector<std::vector<std::string>> section_materials;  // each line's (run.h)
 };
 
 // Steps a SystemData from row to row of a grid, as RowStepper steps a line: the run and the

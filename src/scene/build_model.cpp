@@ -1,11 +1,14 @@
 #include "scene/build_model.h"
 
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
 
 #include "core/error.h"
+#include "scene/text_escape.h"
 
 namespace cablefilm {
-namespace {
 
 EndMotion MakeEndMotion(const EndDef& e) {
   const Vec rest(e.position[0], e.position[1], e.position[2]);
@@ -26,13 +29,64 @@ EndMotion MakeEndMotion(const EndDef& e) {
         times.push_back(r[0]);
         offsets.emplace_back(r[1], r[2], r[3]);
       }
-      return EndMotion::Table(rest, times, offsets);
+      return EndMotion::Table(rest, times, offsets, e.interpolation);
     }
   }
   throw Error("unknown end motion");
 }
 
+namespace {
+
+// A speed below this is taken as at rest [m/s] (a micrometre a second).
+constexpr double kRestSpeed = 1e-6;
+
+std::string Figure(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
+void DescribeTable(const std::string& what, const EndDef& e, double run_end,
+                   std::vector<std::string>* notes, std::vector<std::string>* warnings) {
+  if (e.motion != EndMotionKind::kTable) return;
+  const EndMotion m = MakeEndMotion(e);
+  const bool linear = m.interpolation() == TableInterpolation::kLinear;
+  const double first = m.Velocity(m.table_start()).norm(), last = m.EndSpeed();
+  if (notes)
+    notes->push_back(what + ": table " + EscapeText(std::filesystem::path(e.table_file).filename().string()) +
+                     ", " + std::to_string(e.table.size()) + " rows from t = " +
+                     Figure(m.table_start()) + " to " + Figure(m.table_end()) + " s, " +
+                     (linear ? "linear between rows" : "natural cubic spline") +
+                     " (interpolation = \"" + (linear ? "linear" : "spline") +
+                     "\"), speed " + Figure(first) + " m/s at its first row and " +
+                     Figure(last) + " m/s at its last; held still before and after");
+  if (warnings && run_end > m.table_end() && last > kRestSpeed)
+    warnings->push_back(what + ": the run goes on to t = " + Figure(run_end) +
+                        " s, past the table's last row at t = " + Figure(m.table_end()) +
+                        " s, where it still moves at " + Figure(last) +
+                        " m/s: after that row the end holds still, stopping dead (a jump in "
+                        "velocity no recorded motion has). End the run at the table's last row, "
+                        "or the table at rest");
+}
+
 }  // namespace
+
+void DescribeTables(const SceneDef& scene, std::vector<std::string>* notes,
+                    std::vector<std::string>* warnings) {
+  // The run's last row (run/time_grid.cpp, ChooseTimeGrid).
+  const double interval = scene.output.interval;
+  const double run_end =
+      interval > 0 ? std::floor(scene.simulation.duration / interval + 1e-9) * interval
+                   : scene.simulation.duration;
+  if (!scene.is_system()) {
+    DescribeTable("ends.start", scene.start, run_end, notes, warnings);
+    DescribeTable("ends.end", scene.end, run_end, notes, warnings);
+  }
+  for (const PointDef& p : scene.points)
+    DescribeTable("point " + QuoteText(p.name), p.motion, run_end, notes, warnings);
+  for (const BodyDef& b : scene.bodies)
+    DescribeTable("body " + QuoteText(b.name), b.motion, run_end, notes, warnings);
+}
 
 WaveSpec MakeWaveSpec(const SceneDef& scene) {
   WaveSpec w;
@@ -85,6 +139,7 @@ std::vector<SectionSpec> MakeSections(const SceneDef& scene, const std::vector<S
     s.added_mass_coefficient = mat.added_mass_coefficient;
     s.axial_damping = mat.axial_damping;
     s.axial_damping_ratio = mat.axial_damping_ratio;
+    s.minimum_breaking_load = mat.minimum_breaking_load;
     sections.push_back(s);
   }
   return sections;

@@ -12,6 +12,17 @@ Model BuildModel(const SceneDef& scene);
 // built (a free point no line holds, a line whose ends are both loose).
 SystemModel BuildSystem(const SceneDef& scene);
 
+// An end's (a point's, a body's) motion as the scene gives it.
+EndMotion MakeEndMotion(const EndDef& e);
+
+// What `check` and `run` say of the scene's table motions (ends, points, bodies), a line each
+// in `notes` (file, rows, span, interpolation, speed at the first and last rows), and in
+// `warnings` each table the run (to its last whole output.interval within simulation.duration)
+// goes past while the table still moves at its last row: after it the end holds still, a jump
+// in velocity no recorded motion has.
+void DescribeTables(const SceneDef& scene, std::vector<std::string>* notes,
+                    std::vector<std::string>* warnings);
+
 // The scene's [waves] for the core (phase in rad); not present without the table.
 WaveSpec MakeWaveSpec(const SceneDef& scene);
 

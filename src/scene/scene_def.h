@@ -46,6 +46,7 @@ struct MaterialDef {
   double added_mass_coefficient = 1.0; // k, normal virtual inertia
   double axial_damping = 0;            // internal axial damping BA [Pa s]: stress BA x strain rate
   double axial_damping_ratio = 0;      // or zeta, of critical for each link's axial mode
+  double minimum_breaking_load = 0;    // MBL [N]: utilisation = tension / MBL; 0 = not given
 };
 
 struct SectionDef {
@@ -76,6 +77,7 @@ struct EndDef {
   double ramp_rate = 0;                   // nu [1/s]
   std::string table_file;                 // resolved path of the CSV (t, x, y[, z]), offsets
   std::vector<std::array<double, 4>> table;  // rows (t [s], dx, dy, dz [m])
+  TableInterpolation interpolation = TableInterpolation::kSpline;  // how the rows are joined
   // motion = "wave": the end follows the wave at its rest x through these response amplitude
   // operators, [ratio of the wave's amplitude (m/m), phase lead (deg)]; the loader turns them
   // into the trochoid of eq. (3) above (amplitudes, the wave's period and ramp).

@@ -24,6 +24,7 @@ constexpr double kMinModulus = 1, kMaxModulus = 1e13;         // Pa
 constexpr double kMaxCoefficient = 1e3;     // drag and added-mass coefficients
 constexpr double kMaxAxialDamping = 1e15;   // Pa s (MoorDyn's BA)
 constexpr double kMaxDampingRatio = 100;    // of critical, the link's axial mode
+constexpr double kMinBreakingLoad = 1e-6, kMaxBreakingLoad = 1e15;  // N, a material's MBL
 constexpr double kMaxGravity = 1e3;         // m/s^2
 constexpr double kMaxFluidDensity = 1e5;    // kg/m^3
 constexpr double kMaxCurrent = 1e3;         // m/s, either way

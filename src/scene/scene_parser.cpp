@@ -236,6 +236,8 @@ void ReadMaterials(TableReader& top, SceneDef& scene, bool elastic) {
     if (m.axial_damping > 0 && m.axial_damping_ratio > 0)
       r.Fail(arr->get(i)->as_table()->get("axial_damping_ratio"), "axial_damping_ratio",
              "expected either axial_damping (Pa s) or axial_damping_ratio, not both");
+    m.minimum_breaking_load = r.OptionalPositive("minimum_breaking_load", 0.0, " in N",
+                                                 kMinBreakingLoad, kMaxBreakingLoad);
     r.Finish();
     scene.materials.push_back(m);
   }
@@ -411,6 +413,9 @@ std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const 
     } catch (const Error& e) {
       r.Fail(t->get("file"), "file", e.what());
     }
+    end.interpolation = r.Choice("interpolation", "spline", {"spline", "linear"}) == "linear"
+                            ? TableInterpolation::kLinear
+                            : TableInterpolation::kSpline;
   }
   return motion;
 }

@@ -81,7 +81,7 @@ PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<Row
     MaxTensionLog::Cursor c(*r.rows);
     double t, v;
     while (c.Next(std::numeric_limits<double>::infinity(), &t, &v)) trace.Add(t, v);
-    series.push_back({r.label, trace.times(), trace.values()});
+    series.push_back({r.label, trace.times(), trace.values(), r.breaking_load});
     const double before = report.peak;
     FindPeak(trace.times(), trace.values(), &report);
     if (!(report.peak == before)) peak_label = r.label;
@@ -103,7 +103,8 @@ PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<con
                                     const std::string& out_dir, const std::string& shader_dir,
                                     bool complete) {
   std::vector<RowMaxima> rows;
-  for (const Run* run : runs) rows.push_back({run->label, &run->row_max});
+  for (const Run* run : runs)
+    rows.push_back({run->label, &run->row_max, SingleBreakingLoad(run->model.line.breaking_load)});
   return WriteMaxTensionFigure(scene, rows, out_dir, shader_dir, complete, "the cable");
 }
 

@@ -68,6 +68,7 @@ FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>&
 struct RowMaxima {
   std::string label;
   const MaxTensionLog* rows = nullptr;
+  double breaking_load = std::numeric_limits<double>::quiet_NaN();  // the line's one MBL [N]
 };
 
 // <out_dir>/max_tension.png, or max_tension.partial.png when the rows are those of a run cut

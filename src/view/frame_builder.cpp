@@ -289,8 +289,31 @@ Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& 
   time.equilibrium_label = ReferenceName(scene);
   time.equilibrium_label_left = history.following();  // the newest samples are at the right
   time.markers = &history.markers();
+  // The lines' one minimum breaking load: on the plot when within its tension axis, else
+  // named in the readout with the peak's utilisation (the axis is not stretched to reach it).
+  double mbl = scene.lines.front().breaking_load;
+  for (const LineView& line : scene.lines)
+    if (!(line.breaking_load == mbl)) mbl = NAN;
+  double peak = NAN;  // [N], the largest so far of any line
+  for (std::size_t i = 0; i < scene.lines.size(); ++i)
+    if (history.has_peak(i) && !(history.peak(i) <= peak)) peak = history.peak(i);
+  if (std::isfinite(mbl) && std::isfinite(peak)) {
+    const std::string note = BreakingLoadNote(mbl, peak);
+    const double lo = std::min(time.plot.y_lo, time.plot.y_hi), hi = std::max(time.plot.y_lo, time.plot.y_hi);
+    if (mbl / kN >= lo && mbl / kN <= hi) {
+      time.breaking_load = mbl;
+      time.breaking_load_label = note;
+    } else {
+      time.note += (time.note.empty() ? "" : "    ") + note;
+    }
+  }
   DrawTimePanel(p, time, th);
   return frame;
+}
+
+std::string BreakingLoadNote(double breaking_load, double peak) {
+  return "MBL " + FormatValue("%.4g", breaking_load / kN) + " kN, peak utilisation " +
+         FormatValue("%.3g", 100 * peak / breaking_load) + " %";
 }
 
 Frame MakeMaxTensionFigure(const std::string& title, const std::vector<MaxTensionSeries>& series,
@@ -310,6 +333,16 @@ Frame MakeMaxTensionFigure(const std::string& title, const std::vector<MaxTensio
       v_hi = std::max(v_hi, s.tension[i] / kN);
     }
   }
+  // The series' one breaking load [kN], if they share one: on the axis when it is within a
+  // quarter of the traces' span of them, else only named (the peak's utilisation with it).
+  double mbl = series.empty() ? NAN : series.front().breaking_load / kN;
+  for (const auto& s : series)
+    if (!(s.breaking_load / kN == mbl)) mbl = NAN;
+  const bool traced = v_hi >= v_lo;
+  const double peak = v_hi * kN;  // [N]
+  const double reach = 0.25 * std::max(v_hi - v_lo, 1e-3 * std::max(1.0, std::fabs(v_hi)));
+  const bool mbl_line = traced && std::isfinite(mbl) && mbl >= v_lo - reach && mbl <= v_hi + reach;
+  if (mbl_line) v_lo = std::min(v_lo, mbl), v_hi = std::max(v_hi, mbl);
   if (!(v_hi >= v_lo)) v_lo = 0, v_hi = 1;
   const double pad = 0.05 * std::max(v_hi - v_lo, 1e-3 * std::max(1.0, std::fabs(v_hi)));
   v_lo -= pad;
@@ -345,6 +378,16 @@ Frame MakeMaxTensionFigure(const std::string& title, const std::vector<MaxTensio
   pm.y_lo = v_lo;
   pm.y_hi = v_hi;
   DrawAxes(p, pm, "time [s]", "maximum tension along the cable [kN]", th, 10, 7);
+  if (traced && std::isfinite(mbl)) {
+    const std::string note = BreakingLoadNote(mbl * kN, peak);
+    if (mbl_line) {  // dashed across the plot, labelled above it at the left
+      const float y = PlotPoint(pm, 0, mbl).y;
+      p.Dashed({{pm.rect.x0, y}, {pm.rect.x1, y}}, 1.6f * k, th.event, 8 * k, 6 * k);
+      p.Text(note, {pm.rect.x0 + 8 * k, y - 6 * k}, 15 * k, th.event, HAlign::kLeft);
+    } else {  // over the plot's top right corner
+      p.Text(note, {pm.rect.x1, pm.rect.y0 - 10 * k}, 15 * k, th.text_dim, HAlign::kRight);
+    }
+  }
   for (std::size_t i = 0; i < series.size(); ++i) {
     const Rgba c = legend[i].color;
     std::vector<Vec2f> pts;

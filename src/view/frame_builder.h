@@ -9,6 +9,7 @@
 // the live one the status and the peak so far, its colour bar whether the range is locked, its
 // time plot a rolling window with markers at the control changes. Also the still of the
 // maximum tension against time (the paper's Figure 1). Pure functions of their inputs.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -44,7 +45,15 @@ struct MaxTensionSeries {
   std::string label;            // e.g. "elastic", "inextensible"
   std::vector<double> t;        // [s]
   std::vector<double> tension;  // [N], same size as t
+  // The line's one minimum breaking load [N] (SingleBreakingLoad), NaN = none. When every
+  // series has the same, the figure shows it: a dashed line "MBL x kN" when it lies within a
+  // quarter of the plotted range above the peak (the axis then reaches it), else a note "MBL x
+  // kN, peak utilisation y %" over the plot (the axis is not stretched to a far MBL).
+  double breaking_load = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The text of the MBL's note or label: "MBL 12.5 kN, peak utilisation 61.2 %".
+std::string BreakingLoadNote(double breaking_load, double peak);
 // The still: every series on one pair of axes with a legend. Throws Error on mismatched sizes.
 Frame MakeMaxTensionFigure(const std::string& title, const std::vector<MaxTensionSeries>& series,
                            int width, int height, const Theme& theme = Theme::Light());

@@ -11,6 +11,7 @@
 // plots, and its points are named where they are.
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ struct LineView {
   StationMarks marks;
   // The initial state (t = 0), drawn dashed: empty = none; its tensions may be empty alone.
   LineState reference;
+  // The line's one minimum breaking load [N] (every link's, SingleBreakingLoad); NaN = none:
+  // the time plot's dashed "MBL" line, or its note when the MBL is off the plot.
+  double breaking_load = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The name of the reference when a run starts from the straight chord at rest (not an

@@ -33,6 +33,7 @@ LineView MakeLineView(const SceneDef& scene, const Model& model, const Points& i
     if (model.end_motion(j).kind() == EndKind::kFree) view.marks.free_ends.push_back(j);
   }
   SetLineState(initial_x, initial_tension, &view.reference);
+  view.breaking_load = SingleBreakingLoad(line.breaking_load);
   return view;
 }
 

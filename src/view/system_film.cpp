@@ -65,7 +65,8 @@ PictureReport WriteSystemMaxTensionFigure(const SceneDef& scene, const SystemRun
                                           const std::string& shader_dir, bool complete) {
   std::vector<RowMaxima> rows;
   for (std::size_t i = 0; i < run.row_max.size(); ++i)
-    rows.push_back({run.sys.line_names[i], &run.row_max[i]});
+    rows.push_back({run.sys.line_names[i], &run.row_max[i],
+                    SingleBreakingLoad(run.sys.lines[i].line.breaking_load)});
   return WriteMaxTensionFigure(scene, rows, out_dir, shader_dir, complete, "each line");
 }
 

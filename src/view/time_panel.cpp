@@ -125,6 +125,14 @@ void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th) {
     p.Text(in.equilibrium_label, {x0, under ? y + 6 * k : y - 6 * k}, font, th.equilibrium, HAlign::kLeft,
            under ? VAlign::kTop : VAlign::kBaseline);
   }
+  if (std::isfinite(in.breaking_load)) {  // under the traces, labelled at the left above it
+    const float y = PlotPoint(mm, mm.x_lo, in.breaking_load / kN).y;
+    if (y >= mm.rect.y0 && y <= mm.rect.y1) {
+      p.Dashed({{mm.rect.x0, y}, {mm.rect.x1, y}}, 1.6f * k, th.event, 8 * k, 6 * k);
+      p.Text(in.breaking_load_label, {mm.rect.x0 + 6 * k, y - 6 * k}, 14 * k, th.event,
+             HAlign::kLeft);
+    }
+  }
   // Lines drawn alike: each its colour, each thinner than the one before (NestedWidth); else
   // the first thick, the others thinner on top, like the tension curves.
   const Rgba first_color = in.alike ? LineColor(th, 0) : th.accent;

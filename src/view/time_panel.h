@@ -43,6 +43,10 @@ struct TimePanelInput {
   bool equilibrium_label_left = false;
   const std::vector<TimeMarker>* markers = nullptr;  // those inside the time axis are drawn
   bool alike = false;  // every line drawn alike (SceneView::lines_alike)
+  // A minimum breaking load [N] within the tension axis: a dashed line labelled
+  // `breaking_load_label` (NaN = none; one off the axis is the caller's note).
+  double breaking_load = std::numeric_limits<double>::quiet_NaN();
+  std::string breaking_load_label;
 };
 
 void DrawTimePanel(Painter& p, const TimePanelInput& in, const Theme& th);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "io/run_report_file.h"
 #include "run/driver.h"
 #include "run/initial_state.h"
 #include "run/time_grid.h"
@@ -456,6 +457,139 @@ TEST_F(NetcdfResultsTest, CompareWritesBothModelsAndEarlierResultsGo) {
                 csv[r + 1][6])
           << file << " row " << r;
   }
+}
+
+}  // namespace
+}  // namespace cablefilm
+
+namespace cablefilm {
+namespace {
+
+// The column of a CSV (header row first) by name; -1 if none.
+int Column(const std::vector<std::vector<std::string>>& rows, const std::string& name) {
+  const auto& h = rows.front();
+  const auto it = std::find(h.begin(), h.end(), name);
+  return it == h.end() ? -1 : static_cast<int>(it - h.begin());
+}
+
+// Issue 21 item 5: a material's minimum_breaking_load and the utilisation tension / MBL in the
+// result files. Case P63's line is 30 links of wire from the anchor, then 30 of nylon to the
+// fairlead, where the tension is largest; the wire given a small MBL (10 kN) and the nylon a
+// large one (100 kN), the largest utilisation is in the wire, not at the largest tension. The
+// truth is computed here from results.nc's tensions and the MBLs the test gave, not from
+// anything the run computed about utilisation.
+TEST_F(NetcdfResultsTest, UtilisationOfAMaterialMixAgainstTheResultFiles) {
+  const double mbl_wire = 10e3, mbl_nylon = 100e3;  // [N]
+  std::string text = ReadText(ShortP63("5.0"));
+  text = Replace(text, "name = \"wire\"", "name = \"wire\"\nminimum_breaking_load = 10e3");
+  text = Replace(text, "name = \"nylon\"", "name = \"nylon\"\nminimum_breaking_load = 100e3");
+  const fs::path scene = dir_ / "p63_mbl.toml";
+  std::ofstream(scene, std::ios::binary) << text;
+  RunOptions opt;
+  opt.out_dir = (dir_ / "out").string();
+  ASSERT_EQ(RunCommand(scene.string(), opt), 0);
+  const fs::path out = dir_ / "out";
+
+  const NcFile nc(out / "results.nc");
+  const size_t rows = nc.Dim("time"), links = nc.Dim("link");
+  ASSERT_EQ(links, 60u);
+  EXPECT_EQ(nc.Dims("minimum_breaking_load"), "link");
+  EXPECT_EQ(nc.Attr("minimum_breaking_load", "units"), "N");
+  const std::vector<double> mbl = nc.Values("minimum_breaking_load"), T = nc.Values("tension");
+  for (size_t j = 0; j < links; ++j) EXPECT_EQ(mbl[j], j < 30 ? mbl_wire : mbl_nylon) << j;
+
+  const auto csv = ReadCsv(out / "timeseries.csv");
+  const int col = Column(csv, "utilisation_max");
+  ASSERT_EQ(col, 8);  // the last column, after link_max
+  ASSERT_EQ(csv.size(), rows + 1);
+  double best = -1, best_t = 0;
+  size_t best_link = 0, best_row = 0;
+  size_t peak_link = 0;
+  double peak = -1;
+  for (size_t r = 0; r < rows; ++r) {
+    double u = -1;
+    for (size_t j = 0; j < links; ++j) {
+      const double tension = T[r * links + j];
+      const double uj = tension / (j < 30 ? mbl_wire : mbl_nylon);
+      if (uj > u) u = uj;
+      if (uj > best) best = uj, best_link = j, best_row = r;
+      if (tension > peak) peak = tension, peak_link = j;
+    }
+    // The CSV prints 10 significant digits: within 1e-9 of the value.
+    EXPECT_NEAR(std::stod(csv[r + 1][static_cast<size_t>(col)]), u, 1e-9 * u) << r;
+  }
+  best_t = std::stod(csv[best_row + 1][0]);
+  std::printf("largest utilisation %.6g (link %zu, t = %.4g s); largest tension %.6g N (link %zu, "
+              "utilisation %.4g)\n",
+              best, best_link, best_t, peak, peak_link, peak / mbl_nylon);
+  EXPECT_LT(best_link, 30u);   // in the wire
+  EXPECT_GE(peak_link, 30u);   // the largest tension in the nylon
+  EXPECT_GT(best, peak / mbl_nylon);
+
+  const std::string report = ReadText(out / "run_report.toml");
+  RunSummary s;
+  ASSERT_TRUE(ReadRunReport((out / "run_report.toml").string(), &s)) << report;
+  EXPECT_NEAR(s.utilisation, best, 1e-9 * best);
+  EXPECT_EQ(s.utilisation_link, static_cast<int>(best_link));
+  EXPECT_NEAR(s.utilisation_t, best_t, 1e-9);
+  EXPECT_NEAR(s.utilisation_tension, best * mbl_wire, 1e-9 * best * mbl_wire);
+  EXPECT_EQ(s.utilisation_mbl, mbl_wire);
+  EXPECT_EQ(s.utilisation_material, "wire");
+  EXPECT_EQ(s.peak_link, static_cast<int>(peak_link));
+
+  // Without a breaking load nothing changes: no column, no variable, no key.
+  const fs::path plain = dir_ / "plain";
+  opt.out_dir = plain.string();
+  ASSERT_EQ(RunCommand(ShortP63("1.0"), opt), 0);
+  EXPECT_EQ(Column(ReadCsv(plain / "timeseries.csv"), "utilisation_max"), -1);
+  const NcFile nc_plain(plain / "results.nc");
+  int var = -1;
+  EXPECT_NE(nc_inq_varid(nc_plain.id(), "minimum_breaking_load", &var), NC_NOERR);
+  EXPECT_EQ(ReadText(plain / "run_report.toml").find("utilisation"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cablefilm
+
+namespace cablefilm {
+namespace {
+
+// A system's run_report.toml gives the largest utilisation over its lines and which line: the
+// truth is the largest utilisation_max of every line's own timeseries.csv (spread_mooring's
+// four chain lines, MBL 6 MN, 10 s).
+TEST_F(NetcdfResultsTest, SystemUtilisationIsTheLargestOfItsLines) {
+  const double mbl = 6e6;  // [N]
+  std::string text = ReadText(fs::path(CABLEFILM_SOURCE_DIR) / "scenes/spread_mooring.toml");
+  text = Replace(text, "name = \"chain\"", "name = \"chain\"\nminimum_breaking_load = 6e6");
+  text = Replace(Replace(text, "duration = 60.0", "duration = 10.0"), "film = true", "film = false");
+  const fs::path scene = dir_ / "spread_mbl.toml";
+  std::ofstream(scene, std::ios::binary) << text;
+  RunOptions opt;
+  opt.out_dir = (dir_ / "out").string();
+  ASSERT_EQ(RunCommand(scene.string(), opt), 0);
+  const fs::path out = dir_ / "out";
+  double best = -1;
+  std::string best_line;
+  for (const char* line : {"leg1_lower", "leg1_upper", "leg2", "leg3"}) {
+    const auto csv = ReadCsv(out / "lines" / line / "timeseries.csv");
+    const int col = Column(csv, "utilisation_max"), tmax = Column(csv, "tension_max");
+    ASSERT_GE(col, 0) << line;
+    for (size_t r = 1; r < csv.size(); ++r) {
+      const double u = std::stod(csv[r][static_cast<size_t>(col)]);
+      // One material: the utilisation is the largest tension over the MBL (10 digits).
+      EXPECT_NEAR(u, std::stod(csv[r][static_cast<size_t>(tmax)]) / mbl, 1e-9 * u) << line << r;
+      if (u > best) best = u, best_line = line;
+    }
+  }
+  RunSummary s;
+  ASSERT_TRUE(ReadRunReport((out / "run_report.toml").string(), &s));
+  std::printf("system: largest utilisation %.6g in line %s (report: %.6g in %s)\n", best,
+              best_line.c_str(), s.utilisation, s.utilisation_line.c_str());
+  EXPECT_NEAR(s.utilisation, best, 1e-9 * best);
+  EXPECT_EQ(s.utilisation_line, best_line);
+  EXPECT_EQ(s.utilisation_material, "chain");
+  EXPECT_EQ(s.utilisation_mbl, mbl);
+  EXPECT_EQ(s.peak_line, best_line);  // one material: at the peak tension
 }
 
 }  // namespace

@@ -115,6 +115,71 @@ TEST(EndMotion, TableMovesAcrossTheLineToo) {
   EXPECT_LT(lin.Acceleration(1.7).norm(), 1e-13);
 }
 
+// A table's motion against its rows, both interpolations: the position at every row is the
+// row's offset exactly (A, B of the segment are exactly 0 and 1 there); between rows the linear
+// one is the straight line, its velocity the slope arriving at the point (at a row: the
+// segment's before it), no acceleration; the last row of either carries the motion's own end
+// velocity, not a standstill, and only strictly after it does the end hold still.
+TEST(EndMotion, TableMotionAgainstItsRows) {
+  const Vec rest(10.0, -2.0, 1.0);
+  const std::vector<double> t = {0.0, 0.5, 1.5, 2.0, 3.2};
+  const std::vector<Vec> p = {Vec(0, 0, 0), Vec(0.3, -0.1, 0.2), Vec(-0.2, 0.4, 0.0),
+                              Vec(0.1, 0.1, -0.3), Vec(0.6, -0.5, 0.1)};
+  for (TableInterpolation how : {TableInterpolation::kSpline, TableInterpolation::kLinear}) {
+    const EndMotion e = EndMotion::Table(rest, t, p, how);
+    EXPECT_EQ(e.interpolation(), how);
+    for (size_t i = 0; i < t.size(); ++i) EXPECT_EQ(e.Position(t[i]), Vec(rest + p[i])) << i;
+    EXPECT_EQ(e.table_start(), 0.0);
+    EXPECT_EQ(e.table_end(), 3.2);
+    // Held strictly outside.
+    EXPECT_EQ(e.Position(-0.1), Vec(rest + p.front()));
+    EXPECT_EQ(e.Position(3.2 + 1e-9), Vec(rest + p.back()));
+    EXPECT_EQ(e.Velocity(3.2 + 1e-9), Vec::Zero());
+    EXPECT_EQ(e.Acceleration(3.2 + 1e-9), Vec::Zero());
+    // The end velocity is the motion's own, the slope of the position arriving at the row
+    // (one-sided difference, h = 1e-7: truncation h |p''| / 2 < 1e-6 and round-off
+    // 1e-16 x 10 / h ~ 1e-8; for the linear table exact to round-off).
+    const double h = 1e-7;
+    const Vec v_fd = (e.Position(3.2) - e.Position(3.2 - h)) / h;
+    EXPECT_LT((e.Velocity(3.2) - v_fd).norm(), 1e-6);
+    EXPECT_GT(e.Velocity(3.2).norm(), 0.1);  // the table ends moving: not a standstill
+    EXPECT_NEAR(e.EndSpeed(), e.Velocity(3.2).norm(), 1e-15);
+  }
+  const EndMotion lin = EndMotion::Table(rest, t, p, TableInterpolation::kLinear);
+  for (size_t i = 0; i + 1 < t.size(); ++i) {
+    const Vec slope = (p[i + 1] - p[i]) / (t[i + 1] - t[i]);
+    for (double f : {0.0, 0.25, 0.5, 0.9, 1.0}) {
+      const double ti = t[i] + f * (t[i + 1] - t[i]);
+      if (f > 0 || i == 0) {  // at t_i itself the segment arriving at it (below)
+        EXPECT_LT((lin.Velocity(ti) - slope).norm(), 1e-14) << ti;
+        EXPECT_EQ(lin.Acceleration(ti), Vec::Zero()) << ti;
+      }
+      // Straight between rows: (1 - f) p_i + f p_i+1 (f = 0.25, 0.5 exact in binary).
+      // Round-off of the rest position (10 m): 2e-15 m a component.
+      EXPECT_LT((lin.Position(ti) - rest - ((1 - f) * p[i] + f * p[i + 1])).norm(), 1e-14) << ti;
+    }
+    // A step landing on row i + 1 sees the velocity it arrives with.
+    EXPECT_LT((lin.Velocity(t[i + 1]) - slope).norm(), 1e-14);
+    // Where the velocity jumps: at the rows, and only for the linear table.
+    EXPECT_EQ(lin.NextKink(t[i]), t[i + 1]);
+    EXPECT_EQ(lin.NextKink(0.5 * (t[i] + t[i + 1])), t[i + 1]);
+  }
+  EXPECT_TRUE(std::isinf(lin.NextKink(3.2)));
+  EXPECT_TRUE(std::isinf(EndMotion::Table(rest, t, p).NextKink(0.1)));
+}
+
+TEST(EndMotion, TableSplineEndVelocityByHand) {
+  // Knots (0,0), (1,1), (2,0), M1 = -3 (TableSplineHandValues): on the last piece
+  // p'(t) = (p2 - p1)/h + (-(3A^2 - 1) M1 + (3B^2 - 1) M2) h / 6, at t = 2 (A = 0, B = 1):
+  // -1 + (-3)/6 = -1.5, the mirror of p'(0) = 1.5. Before the fix the last row read 0.
+  const EndMotion e = testing::PlanarTable(InPlane(0, 0), {{0, 0, 0}, {1, 1, 2}, {2, 0, 0}});
+  EXPECT_NEAR(e.Velocity(2.0).x(), -1.5, 1e-14);
+  EXPECT_NEAR(e.Velocity(2.0).y(), -3.0, 1e-14);
+  EXPECT_NEAR(e.Velocity(0.0).x(), 1.5, 1e-14);  // the first row: the first piece's
+  EXPECT_NEAR(e.Acceleration(2.0).x(), 0.0, 1e-14);  // natural end
+  EXPECT_EQ(e.Velocity(2.0 + 1e-12), Vec::Zero());   // held after
+}
+
 TEST(EndMotion, TableRejectsBadRows) {
   EXPECT_THROW(testing::PlanarTable(InPlane(0, 0), {{0, 0, 0}}), Error);
   EXPECT_THROW(testing::PlanarTable(InPlane(0, 0), {{0, 0, 0}, {1, 0, 0}, {1, 1, 1}}), Error);

@@ -9,6 +9,7 @@ sweep.csv and `cablefilm check` messages, and a static balance of forces worked 
 the scene's numbers.
 """
 import atexit
+import csv
 import os
 import shutil
 import struct
@@ -233,6 +234,33 @@ class SceneErrors(unittest.TestCase):
         self.assertEqual(scene["environment.current"], 0.0)
         with self.assertRaises(KeyError):
             scene["environment.nothing"]
+
+
+class BreakingLoad(unittest.TestCase):
+    """A material's minimum_breaking_load per link, as results.nc has it (issue 21 item 5)."""
+
+    def test_mbl_per_link_and_utilisation(self):
+        with open(P63, encoding="utf-8") as f:
+            text = f.read()
+        text = text.replace('name = "wire"', 'name = "wire"\nminimum_breaking_load = 10e3', 1)
+        text = text.replace('name = "nylon"', 'name = "nylon"\nminimum_breaking_load = 100e3', 1)
+        text = text.replace("duration = 60.0", "duration = 2.0", 1)
+        path = os.path.join(workdir("mbl"), "p63_mbl.toml")
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
+        out = workdir("mbl_cli")
+        with cli_results(path, out) as ds:
+            result = cablefilm.run(cablefilm.load(path))
+            mbl = result.minimum_breaking_load
+            assert_same_bits(self, mbl, ds.variables["minimum_breaking_load"][:].data, "mbl")
+            self.assertEqual(list(mbl[:30]), [10e3] * 30)    # the wire's 30 links
+            self.assertEqual(list(mbl[30:]), [100e3] * 30)   # the nylon's
+            # The utilisation from the arrays against timeseries.csv's column (10 digits).
+            with open(os.path.join(out, "timeseries.csv"), encoding="utf-8") as f:
+                rows = list(csv.DictReader(f))
+            ours = (result.tension / mbl).max(axis=1)
+            theirs = np.array([float(r["utilisation_max"]) for r in rows])
+            np.testing.assert_allclose(theirs, ours, rtol=1e-9)
 
 
 class DictScenes(unittest.TestCase):

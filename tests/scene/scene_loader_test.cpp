@@ -291,6 +291,41 @@ TEST_F(TableMotion, GoodTableLoads) {
   EXPECT_NEAR(m.ends.end.Position(1.0).x(), 80.5, 1e-12);  // offsets from the rest position
 }
 
+TEST(SceneLoader, MinimumBreakingLoad) {
+  // Optional: 0 (not given) by default; when given a positive force in N, on the link's model.
+  EXPECT_EQ(ParseScene(kBase, "s.toml").materials[1].minimum_breaking_load, 0.0);
+  const SceneDef s = ParseScene(
+      With("name = \"nylon\"", "name = \"nylon\"\nminimum_breaking_load = 2.5e5"), "s.toml");
+  EXPECT_EQ(s.materials[1].minimum_breaking_load, 2.5e5);
+  const Model m = BuildModel(s);
+  EXPECT_EQ(m.line.breaking_load[0], 0.0);                  // wire: none
+  EXPECT_EQ(m.line.breaking_load[m.line.links - 1], 2.5e5);  // nylon
+  EXPECT_TRUE(m.line.has_breaking_load());
+  for (const char* bad : {"0", "-1.0", "\"big\"", "1e16"})
+    ExpectError(With("name = \"nylon\"",
+                     std::string("name = \"nylon\"\nminimum_breaking_load = ") + bad),
+                "material[1].minimum_breaking_load", {"expected a positive number in N"});
+}
+
+TEST_F(TableMotion, InterpolationKey) {
+  WriteFile("ship.csv", "t,x,y\n0,0,0\n1,0.5,0.1\n2,0.2,-0.3\n");
+  const std::string table = "motion = \"table\"\nfile = \"ship.csv\"\n";
+  EXPECT_EQ(ParseScene(TableScene("ship.csv"), scene_).end.interpolation,
+            TableInterpolation::kSpline);  // the default
+  const SceneDef s = ParseScene(
+      With(table, table + "interpolation = \"linear\"\n", TableScene("ship.csv")), scene_);
+  EXPECT_EQ(s.end.interpolation, TableInterpolation::kLinear);
+  // Built: straight between rows, 0.5 m/s of x from t = 0 to 1 s.
+  const Model m = BuildModel(s);
+  EXPECT_NEAR(m.ends.end.Position(0.5).x(), 80.25, 1e-12);
+  EXPECT_NEAR(m.ends.end.Velocity(0.5).x(), 0.5, 1e-12);
+  ExpectError(With(table, table + "interpolation = \"cubic\"\n", TableScene("ship.csv")),
+              "ends.end.interpolation", {"spline", "linear"}, scene_);
+  // Only a table has it.
+  ExpectError(With("motion = \"fixed\"\n", "motion = \"fixed\"\ninterpolation = \"linear\"\n"),
+              "ends.start.interpolation", {"unknown key"}, scene_);
+}
+
 TEST_F(TableMotion, MissingTable) {
   ExpectError(TableScene("nope.csv"), "ends.end.file", {"nope.csv", "cannot open"}, scene_);
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "core/error.h"
 #include "view/demo_cable.h"
@@ -262,6 +263,84 @@ TEST(MakeMaxTensionFigure, SeriesAndLegend) {
   EXPECT_THROW(MakeMaxTensionFigure("x", {bad}, 800, 450), Error);
 }
 
+
+// A material's minimum breaking load on the tension plots (issue 21 item 5): a labelled dashed
+// line when it lies within (or a quarter of the traces' span beyond) the plotted range, else
+// named in a note with the peak's utilisation, the axis not stretched to it.
+const TextItem* FindText(const Frame& f, const std::string& start) {
+  for (const TextItem& t : f.texts)
+    if (t.text.rfind(start, 0) == 0) return &t;
+  return nullptr;
+}
+
+TEST(MakeMaxTensionFigure, BreakingLoadNearThePeakIsALabelledLine) {
+  // Peak 3 kN, span 2 kN: an MBL of 3.4 kN is within a quarter of the span above it.
+  MaxTensionSeries s{"elastic", {0, 1, 2}, {1000, 3000, 2000}, 3400.0};
+  const Frame f = MakeMaxTensionFigure("Figure 1", {s}, 800, 450);
+  // 3000 / 3400 = 88.24 %: three digits.
+  const TextItem* label = FindText(f, "MBL 3.4 kN, peak utilisation 88.2 %");
+  ASSERT_NE(label, nullptr);
+  // Left in the plot, above the dashed line: inside the plot area (between the title and the
+  // time axis), and the axis reaches the MBL (a tick at 3.5 kN or above).
+  EXPECT_GT(label->pos.y, 80 * 0.5f);
+  EXPECT_LT(label->pos.y, 450 - 80 * 0.5f);
+  bool reaches = false;
+  for (const TextItem& t : f.texts) {
+    char* end = nullptr;
+    const double v = std::strtod(t.text.c_str(), &end);
+    if (end != t.text.c_str() && *end == '\0' && v >= 3.4) reaches = true;
+  }
+  EXPECT_TRUE(reaches);
+  // Different breaking loads (a material per series): none drawn.
+  MaxTensionSeries other = s;
+  other.breaking_load = 5000;
+  EXPECT_EQ(FindText(MakeMaxTensionFigure("Figure 1", {s, other}, 800, 450), "MBL"), nullptr);
+}
+
+TEST(MakeMaxTensionFigure, FarBreakingLoadIsANoteAndTheAxisStays) {
+  MaxTensionSeries s{"elastic", {0, 1, 2}, {1000, 3000, 2000}, 100e3};
+  const Frame f = MakeMaxTensionFigure("Figure 1", {s}, 800, 450);
+  const TextItem* note = FindText(f, "MBL 100 kN, peak utilisation 3 %");  // 3 kN of 100
+  ASSERT_NE(note, nullptr);
+  EXPECT_EQ(note->halign, HAlign::kRight);
+  for (const TextItem& t : f.texts) {  // no tick near 100 kN: the axis ends near the peak
+    char* end = nullptr;
+    const double v = std::strtod(t.text.c_str(), &end);
+    if (end != t.text.c_str() && *end == '\0') {
+      EXPECT_LT(v, 10.0) << t.text;
+    }
+  }
+}
+
+TEST(MakeFrame, TimePlotShowsTheBreakingLoad) {
+  // The straight scene's largest link tension is (kLinks - 0.5) / kLinks of kTensionMax, the
+  // time plot's axis 0 to kTensionMax.
+  const double peak = (testing::kLinks - 0.5) / testing::kLinks * testing::kTensionMax;
+  for (const double mbl : {0.8 * testing::kTensionMax, 10 * testing::kTensionMax}) {
+    SceneView scene = testing::StraightScene();
+    scene.lines[0].breaking_load = mbl;
+    const Snapshot snap = testing::StraightSnapshot(1.0);
+    History history(scene, testing::StraightPolicy());
+    history.Add(snap);
+    const FrameLayout L = MakeFrameLayout(scene, history, 1280, 720);
+    const Frame frame = MakeFrame(scene, history, snap, L, Colormap("viridis"));
+    const std::string expected = "MBL " + FormatValue("%.4g", mbl / 1000) +
+                                 " kN, peak utilisation " + FormatValue("%.3g", 100 * peak / mbl) +
+                                 " %";
+    const TextItem* found = nullptr;
+    for (const TextItem& t : frame.texts)
+      if (t.text.find(expected) != std::string::npos) found = &t;
+    ASSERT_NE(found, nullptr) << expected;
+    const PixelRect& plot = L.max_tension.rect;
+    if (mbl < testing::kTensionMax) {  // on the plot, above its dashed line at the MBL
+      EXPECT_EQ(found->text, expected);
+      EXPECT_NEAR(found->pos.y, L.max_tension.PixelY(mbl / 1000), 12.0f);
+      EXPECT_GT(found->pos.x, plot.x0);
+    } else {  // in the readout over the plot
+      EXPECT_LT(found->pos.y, plot.y0);
+    }
+  }
+}
 
 // ---- A second line (the compare film's inextensible run) ------------------------------------
 
