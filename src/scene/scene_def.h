@@ -46,6 +46,8 @@ struct MaterialDef {
   double added_mass_coefficient = 1.0; // k, normal virtual inertia
   double axial_damping = 0;            // internal axial damping BA [Pa s]: stress BA x strain rate
   double axial_damping_ratio = 0;      // or zeta, of critical for each link's axial mode
+  double tangential_drag_coefficient = 0;       // C^T, along the link on pi d l (MoorDyn's CdAx)
+  double tangential_added_mass_coefficient = 0; // k^t, along the link (MoorDyn's CaAx)
 };
 
 struct SectionDef {
