@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "app/material_summary.h"
 #include "app/progress.h"
 #include "app/run_support.h"
 #include "app/system_command.h"
@@ -51,6 +52,7 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
   std::printf("  mass %.6g kg (cable %.6g kg, %zu weight(s) %.6g kg), net weight in fluid %.6g N\n",
               cable_mass + weights, cable_mass, scene.weights.size(), weights,
               m.line.net_weight.sum());
+  PrintTangentialMaterials(scene);
   if (!m.env.current_profile.empty()) {
     const CurrentProfile& p = m.env.current_profile;
     const auto [lo, hi] = std::minmax_element(p.speed.begin(), p.speed.end());

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "app/material_summary.h"
 #include "app/progress.h"
 #include "app/run_support.h"
 #include "core/error.h"
@@ -51,6 +52,7 @@ void PrintSystem(const SceneDef& scene, const SystemModel& sys) {
                 m.line.link_mass.sum(), QuoteText(sys.points[sys.line_points[i][0]].name).c_str(),
                 QuoteText(sys.points[sys.line_points[i][1]].name).c_str());
   }
+  PrintTangentialMaterials(scene);
   for (const SystemPoint& p : sys.points)
     std::printf("  point %s: %s, %zu line end(s)%s\n", QuoteText(p.name).c_str(),
                 KindName(p.kind), p.ends.size(),

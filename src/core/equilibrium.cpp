@@ -363,11 +363,13 @@ bool PseudoTransient(const Model& m, const Water& water, Points& x, double tol_f
 double StaticForceScale(const Model& m) { return StaticForceScale(m, SceneWater(m)); }
 
 double StaticForceScale(const Model& m, const Water& water) {
-  // The cable's and prisms' net weights and the drag of the current on them (as if broadside),
+  // The cable's and prisms' net weights and the drag of the current on them (as if broadside,
+  // and as if along the links for their tangential drag),
   // and, for ends further apart than the cable is long, the tension of the stretched chord: a
   // weightless taut line has no other force scale (without it the tolerance would be 1e-18 N).
   const double current_load = 0.5 * MaxCurrent(m, water) * MaxCurrent(m, water) *
-                              (2.0 * m.line.drag_factor.sum() + m.line.prism_drag.colwise().sum().sum());
+                              (2.0 * (m.line.drag_factor.sum() + m.line.tangential_drag_factor.sum()) +
+                               m.line.prism_drag.colwise().sum().sum());
   double chord_tension = 0;
   if (m.ends.start.prescribed() && m.ends.end.prescribed()) {
     const double chord = (m.ends.end.Position(0) - m.ends.start.Position(0)).norm();

@@ -62,17 +62,18 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
     b.fb_dd = -b.fa_dd;
     // Normal drag on both stations, -(f^D / 2) |q| q, q = P w the part across the link of the
     // relative velocity w = mean velocity - c: through the orientation (P) and the velocity.
-    if (m.line.drag_factor[k] != 0 && !waves) {
+    // Tangential drag, -(f^T / 2) |p| p t, p = t . w: likewise.
+    const double f = m.line.drag_factor[k], ft = m.line.tangential_drag_factor[k];
+    if ((f != 0 || ft != 0) && !waves) {
       const double ymid = profile ? 0.5 * (g.elevation[k] + g.elevation[k + 1]) : 0.0;
       if (profile) current = CurrentAt(m, water, ymid);
       const Vec w = 0.5 * (v.col(k) + v.col(k + 1)) - current;
       const Vec q = w - t * t.dot(w);
-      const double f = m.line.drag_factor[k];
       // G = d(|q| q) / dq = |q| I + q q^T / |q|, and as q is across the link (q . t = 0),
       // G P = G - |q| t t^T and G t = |q| t: the products with P and with dq/dd below are
       // written out (3x3 products per link per Newton iteration were a tenth of its time).
       const double s = q.norm();
-      if (s > 0) {
+      if (f != 0 && s > 0) {
         const Mat GP = NormalDragDerivative(q) - s * tt;
         // G dq/dd, dq/dd = -((t . w) P + t q^T) / L (NormalPartDerivative).
         const Mat H = (0.5 * f / L) * (t.dot(w) * GP + (s * t) * q.transpose());
@@ -80,6 +81,17 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
         b.fb_dd += H;
         // d/dv_k (= d/dv_{k+1}): through w = mean velocity, dq/dv = P / 2.
         b.f_dv = (-0.25 * f) * GP;
+      }
+      const double p = t.dot(w);  // [m/s]
+      if (ft != 0 && p != 0) {
+        // d(|p| p t)/dd = |p| (2 t q^T + p P) / L (dt/dd = P / L, dp/dd = q^T / L, q = P w);
+        // d/dv_k: through dp/dv = t^T / 2, d(|p| p)/dp = 2 |p|.
+        const double c = -0.5 * ft * std::abs(p);  // [kg/s]
+        Mat Ht = (2.0 * c / L) * t * q.transpose() - (c * p / L) * tt;
+        Ht.diagonal().array() += c * p / L;
+        b.fa_dd += Ht;
+        b.fb_dd += Ht;
+        b.f_dv += c * tt;
       }
       // A current profile: w = mean velocity - c((y_k + y_{k+1})/2), so the force on either
       // station depends on y_k and y_{k+1} alike through dw/dy = -c'/2: dF/dy_i = 2 f_dv
@@ -157,11 +169,14 @@ void AddInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
   const int j0 = m.first_free(), j1 = m.last_free();
   for (int j = j0; j <= j1; ++j) system.diag[j - j0] += ka * StationInertia(m, g, j);
   // d/dd of (e/2) (I - t t^T) a_j for each station j of link k: (e/2) d(P a)/dd.
+  // The tangential added mass e^t t t^T / 2 = e^t (I - P) / 2 has the same derivative with the
+  // opposite sign: the two together are that of (e - e^t) P / 2.
   for (int k = 0; k < m.line.links; ++k) {
-    if (m.line.virtual_mass[k] == 0 || !(g.length[k] > 0)) continue;
+    const double en = m.line.virtual_mass[k], et = m.line.tangential_virtual_mass[k];
+    if ((en == 0 && et == 0) || !(g.length[k] > 0)) continue;
     const Vec t = g.tangent.col(k);
     // With waves the added mass is that of the link's wet fraction (wave_forces.h).
-    const double e = 0.5 * m.line.virtual_mass[k] *
+    const double e = 0.5 * (en - et) *
                      (m.has_waves() ? 0.5 * (g.sea.wet[k] + g.sea.wet[k + 1]) : 1.0);
     for (int j : {k, k + 1}) {
       if (j < j0 || j > j1) continue;

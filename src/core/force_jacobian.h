@@ -11,7 +11,7 @@ namespace cablefilm {
 
 // Adds  -dF/dx - kv dF/dv  to `system`, where F(x, v) is the station force of eq. (1): Hooke
 // tension with its slack switch (axial and geometric stiffness) and its axial damping, the
-// links' normal drag through
+// links' normal and tangential drag through
 // both their orientation and the relative velocity, and the prisms' drag. kv = dv/dx of the
 // time-stepping scheme (0 for statics). `g` and `tension` must be those of x.
 void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
@@ -19,7 +19,7 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
                       BlockTridiagonal& system);
 
 // Adds  ka M(x) + d(M(x) a)/dx  to `system`: the inertia of eq. (1) with the dependence of the
-// normal added mass on the links' orientation. ka = da/dx of the time-stepping scheme.
+// normal and tangential added mass on the links' orientation. ka = da/dx of the time-stepping scheme.
 void AddInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
                         double ka, BlockTridiagonal& system);
 

@@ -100,16 +100,26 @@ void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g
   const bool profile = !m.env.current_profile.empty();
   Vec current = CurrentAt(m, water, 0.0);  // c, or c(y) at the link's midpoint
   // Normal drag on each link, half to each of its stations: D = -f^D |q| q with q the normal
-  // part of the relative velocity (eq. (1)'s D n, n the normal in the plane of the motion).
+  // part of the relative velocity (eq. (1)'s D n, n the normal in the plane of the motion); and
+  // the tangential drag along it, D^t = -f^T |p| p t with p = t . (relative velocity).
   for (int j = 0; j < m.line.links; ++j) {
-    if (m.line.drag_factor[j] == 0) continue;
+    const double f = m.line.drag_factor[j], ft = m.line.tangential_drag_factor[j];
+    if (f == 0 && ft == 0) continue;
     if (profile) current = CurrentAt(m, water, 0.5 * (g.elevation[j] + g.elevation[j + 1]));
     const Vec t = g.tangent.col(j);
     const Vec rel = 0.5 * (v.col(j) + v.col(j + 1)) - current;  // relative velocity
-    const Vec q = rel - t * t.dot(rel);                          // q_{j+1/2} [m/s]
-    const Vec D = (-0.5 * m.line.drag_factor[j] * q.norm()) * q;  // D_{j+1/2} / 2 [N]
-    force.col(j) += D;
-    force.col(j + 1) += D;
+    if (f != 0) {
+      const Vec q = rel - t * t.dot(rel);          // q_{j+1/2} [m/s]
+      const Vec D = (-0.5 * f * q.norm()) * q;     // D_{j+1/2} / 2 [N]
+      force.col(j) += D;
+      force.col(j + 1) += D;
+    }
+    if (ft != 0) {
+      const double p = t.dot(rel);                       // p_{j+1/2} [m/s]
+      const Vec Dt = (-0.5 * ft * std::abs(p) * p) * t;  // D^t_{j+1/2} / 2 [N]
+      force.col(j) += Dt;
+      force.col(j + 1) += Dt;
+    }
   }
   for (int j = 0; j <= m.line.links; ++j) {
     force(kVertical, j) -= m.line.net_weight[j];  // W_j + W*_j
@@ -140,7 +150,7 @@ Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
   if (m.has_waves()) return WaveStationInertia(m, g, j);
   // m_j + m^x_j on the diagonal, plus half the entrained-fluid mass e of each adjoining link
   // across it, e (I - t t^T) / 2: the I, J and -K terms of eq. (1) (I - t t^T = n n^T in the
-  // plane).
+  // plane); and half its tangential added mass e^t along it, e^t t t^T / 2 (0 unless given).
   // Written out entry by entry (symmetric): this runs for every station in every Newton
   // iteration and explicit step, where Eigen's general expressions cost twice as much.
   double d0 = m.line.cable_mass[j] + m.line.prism_mass(0, j);
@@ -156,6 +166,14 @@ Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
     m01 -= e * tx * ty;
     m02 -= e * tx * tz;
     m12 -= e * ty * tz;
+    const double et = 0.5 * m.line.tangential_virtual_mass[k];
+    if (et == 0) continue;
+    d0 += et * tx * tx;
+    d1 += et * ty * ty;
+    d2 += et * tz * tz;
+    m01 += et * tx * ty;
+    m02 += et * tx * tz;
+    m12 += et * ty * tz;
   }
   Mat M;
   M << d0, m01, m02, m01, d1, m12, m02, m12, d2;

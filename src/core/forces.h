@@ -1,6 +1,7 @@
 #pragma once
 // The right-hand side of eq. (1): link tensions (eq. 2), weight and buoyancy, normal drag on the
-// links with the current, the prisms' drag, and the inertia tensor (I, J, K) of each station.
+// links with the current (and tangential drag along them when the material has it), the
+// prisms' drag, and the inertia tensor (I, J, K) of each station.
 // Every function is O(s) and allocates nothing once the Workspace is sized.
 #include <Eigen/Core>
 #include <cmath>
@@ -104,14 +105,16 @@ inline Vec SlidingDirection(const Vec& v, const SeabedSpec& bed) {
 void ComputeStationForces(const Model& m, const Water& water, const LinkGeometry& g,
                           const Eigen::VectorXd& tension, const Points& v, Points& force);
 
-// The external part (X_j, Y_j) only: drag, prism drag, weight and buoyancy, and the seabed's
+// The external part (X_j, Y_j) only: drag (normal, and tangential when given), prism drag,
+// weight and buoyancy, and the seabed's
 // reaction and friction (SeabedSpec) on the stations below it. With waves also the water's
 // velocity in the drag, its acceleration (Morison inertia) and the surface (wave_forces.h);
 // g.sea must then be filled (ComputeGeometry with the model and the time).
 void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g,
                        const Points& v, Points& force);
 
-// The inertia tensor of eq. (1) at station j ([[I_j, -K_j], [-K_j, J_j]] in the plane) [kg]. With waves the
+// The inertia tensor of eq. (1) at station j ([[I_j, -K_j], [-K_j, J_j]] in the plane) [kg],
+// with half of each adjoining link's tangential added mass along it when given. With waves the
 // added masses are those of the wet part (g.sea.wet; all wet if g.sea is empty).
 Mat StationInertia(const Model& m, const LinkGeometry& g, int j);
 

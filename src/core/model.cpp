@@ -66,6 +66,8 @@ Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<Pris
   m.axial_stiffness.resize(s);
   m.virtual_mass.resize(s);
   m.drag_factor.resize(s);
+  m.tangential_virtual_mass.resize(s);
+  m.tangential_drag_factor.resize(s);
   m.axial_damping = Eigen::VectorXd::Zero(s);
   m.link_mass.resize(s);
   m.link_net_weight.resize(s);
@@ -82,6 +84,10 @@ Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<Pris
       m.axial_stiffness[j] = sec.area * sec.youngs_modulus;
       m.virtual_mass[j] = rho * sec.added_mass_coefficient * l * sec.area;
       m.drag_factor[j] = 0.5 * rho * sec.drag_coefficient * l * sec.diameter;
+      // Along the link: the drag on its wetted surface pi d l, the added mass on its volume.
+      m.tangential_virtual_mass[j] = rho * sec.tangential_added_mass_coefficient * l * sec.area;
+      m.tangential_drag_factor[j] =
+          0.5 * rho * sec.tangential_drag_coefficient * M_PI * sec.diameter * l;
       m.axial_damping[j] = sec.axial_damping * sec.area / l;
       m.link_mass[j] = sec.mass_per_length * l;
       m.link_net_weight[j] = (sec.mass_per_length - rho * sec.area) * l * g;
@@ -120,7 +126,8 @@ Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<Pris
   m.weight_stations.erase(std::unique(m.weight_stations.begin(), m.weight_stations.end()),
                           m.weight_stations.end());
   // A damping ratio becomes a coefficient once the stations' masses are known (prisms too; the
-  // normal added mass does not act along the link).
+  // normal added mass does not act along the link, and the tangential one is left out as
+  // MoorDyn's negative BA leaves it out: its c uses the line's own mass).
   j = 0;
   for (const SectionSpec& sec : sections) {
     for (int i = 0; i < sec.segments; ++i, ++j) {

@@ -63,6 +63,9 @@ struct Line {
   Eigen::VectorXd axial_stiffness;  // sigma_{j+1/2} E_{j+1/2} [N]
   Eigen::VectorXd virtual_mass;   // e_{j+1/2} = rho k l sigma [kg], normal added mass of the link
   Eigen::VectorXd drag_factor;    // f^D_{j+1/2} = rho/2 C^D l d [kg/m]
+  // Along the link (not in the paper; 0 unless the scene asks, MoorDyn's CaAx and CdAx):
+  Eigen::VectorXd tangential_virtual_mass;  // e^t_{j+1/2} = rho k^t l sigma [kg], acting along t
+  Eigen::VectorXd tangential_drag_factor;   // f^T_{j+1/2} = rho/2 C^T pi d l [kg/m], drag along t
   Eigen::VectorXd axial_damping;  // c_{j+1/2} [N s/m]: a taut link's tension gains c dL/dt
                                   // (not in the paper; 0 unless the scene asks for it)
   Eigen::VectorXd link_mass;      // mu_{j+1/2} l_{j+1/2} [kg]
@@ -187,6 +190,8 @@ struct SectionSpec {
   double axial_damping_ratio = 0;    // zeta: c = 2 zeta sqrt((sigma E / l) m_ab), m_ab the
                                      // reduced mass of the link's two stations
   double minimum_breaking_load = 0;  // MBL [N], for the utilisation T / MBL; 0 = not given
+  double tangential_drag_coefficient = 0;       // C^T, on pi d l (MoorDyn's CdAx)
+  double tangential_added_mass_coefficient = 0; // k^t, on sigma l along the link (CaAx)
 };
 
 struct PrismSpec {

@@ -101,17 +101,28 @@ void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometr
     const double psi = LinkWet(sea, k);
     if (psi == 0) continue;  // in the air: no drag, no fluid inertia
     const Vec t = g.tangent.col(k);
-    Vec F = Vec::Zero();  // across the link, on each of its two stations [N]
-    if (m.line.drag_factor[k] != 0) {
+    Vec F = Vec::Zero();  // on each of the link's two stations [N]
+    const double f = m.line.drag_factor[k], ft = m.line.tangential_drag_factor[k];
+    if (f != 0 || ft != 0) {
       if (profile) current = CurrentAt(m, water, 0.5 * (g.elevation[k] + g.elevation[k + 1]));
       const Vec rel = 0.5 * (v.col(k) + v.col(k + 1) - sea.velocity.col(k) -
                              sea.velocity.col(k + 1)) -
                       current;
-      const Vec q = rel - t * t.dot(rel);  // q_{k+1/2} [m/s]
-      F += (-0.5 * psi * m.line.drag_factor[k] * q.norm()) * q;
+      if (f != 0) {
+        const Vec q = rel - t * t.dot(rel);  // q_{k+1/2} [m/s]
+        F += (-0.5 * psi * f * q.norm()) * q;
+      }
+      if (ft != 0) {  // along the link: -f^T |p| p t, p = t . rel [m/s]
+        const double p = t.dot(rel);
+        F += (-0.5 * psi * ft * std::abs(p) * p) * t;
+      }
     }
     const Vec A = 0.5 * (sea.acceleration.col(k) + sea.acceleration.col(k + 1));
     F += (0.5 * psi * m.line.link_fluid_mass[k]) * (A - t * t.dot(A));
+    // Along the link the tangential added mass e^t on the water's acceleration (no
+    // Froude-Krylov along it, as across it has: see model.md, Waves).
+    if (m.line.tangential_virtual_mass[k] != 0)
+      F += (0.5 * psi * m.line.tangential_virtual_mass[k] * t.dot(A)) * t;
     force.col(k) += F;
     force.col(k + 1) += F;
   }
@@ -142,6 +153,8 @@ Mat WaveStationInertia(const Model& m, const LinkGeometry& g, int j) {
     const double e = 0.5 * psi * m.line.virtual_mass[k];
     M -= (e * t) * t.transpose();
     M.diagonal().array() += e;
+    const double et = 0.5 * psi * m.line.tangential_virtual_mass[k];
+    if (et != 0) M += (et * t) * t.transpose();
   }
   return M;
 }
@@ -165,18 +178,28 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
     // either station's velocity.
     Mat Hd = Mat::Zero(), Ja = Mat::Zero(), Jc = Mat::Zero(), Jv = Mat::Zero();
     Vec F_dry = Vec::Zero();  // F / psi: the force of the link all wet
-    if (m.line.drag_factor[k] != 0) {
+    const double f = m.line.drag_factor[k], ft = m.line.tangential_drag_factor[k];
+    if (f != 0 || ft != 0) {
       const double ymid = 0.5 * (g.elevation[k] + g.elevation[k + 1]);
       if (profile) current = CurrentAt(m, water, ymid);
       const Vec w = 0.5 * (v.col(k) + v.col(k + 1) - sea.velocity.col(k) -
                            sea.velocity.col(k + 1)) -
                     current;
       const Vec q = w - t * t.dot(w);
-      const double f = m.line.drag_factor[k];
-      const Mat G = NormalDragDerivative(q);  // d(|q| q) / dq
-      F_dry += (-0.5 * f * q.norm()) * q;
-      Hd += (-0.5 * psi * f) * G * NormalPartDerivative(t, L, w, q);
-      Jv = (-0.25 * psi * f) * G * P;  // dF/dv of either station (dq/dv = P / 2)
+      if (f != 0) {
+        const Mat G = NormalDragDerivative(q);  // d(|q| q) / dq
+        F_dry += (-0.5 * f * q.norm()) * q;
+        Hd += (-0.5 * psi * f) * G * NormalPartDerivative(t, L, w, q);
+        Jv = (-0.25 * psi * f) * G * P;  // dF/dv of either station (dq/dv = P / 2)
+      }
+      if (ft != 0) {
+        // -(f^T / 2) |p| p t, p = t . w: d/dd = -(f^T / 2) |p| (2 t q^T + p P) / L, d/dv of
+        // either station -(f^T / 2) |p| t t^T (dp/dv = t^T / 2).
+        const double p = t.dot(w), c = -0.5 * ft * std::abs(p);  // [m/s], [kg/s]
+        F_dry += (c * p) * t;
+        Hd += (psi / L) * ((2.0 * c) * t * q.transpose() + (c * p) * P);
+        Jv += (psi * c) * (Mat::Identity() - P);
+      }
       // w = mean v - c(y_mid) - (U_k + U_{k+1}) / 2: dF/dx_i = 2 Jv dw/dx_i.
       Ja -= Jv * Gradient(sea.velocity_gradient, k);
       Jc -= Jv * Gradient(sea.velocity_gradient, k + 1);
@@ -195,6 +218,18 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
       const Mat across = (0.5 * psi * M) * P;  // dF/dA_i: A is the mean of the two stations'
       Ja += across * Gradient(sea.acceleration_gradient, k);
       Jc += across * Gradient(sea.acceleration_gradient, k + 1);
+    }
+    if (m.line.tangential_virtual_mass[k] != 0) {
+      // (e^t / 2) (t . A) t: through t, d/dd = (e^t / 2)((t . A) P + t (P A)^T) / L, the
+      // negative of the part across's; through A, (e^t / 2) t t^T on each station's half.
+      const double Mt = 0.5 * m.line.tangential_virtual_mass[k];
+      const Vec A = 0.5 * (sea.acceleration.col(k) + sea.acceleration.col(k + 1));
+      const Vec An = A - t * t.dot(A);
+      F_dry += (Mt * t.dot(A)) * t;
+      Hd -= (psi * Mt) * NormalPartDerivative(t, L, A, An);
+      const Mat along = (0.5 * psi * Mt) * (Mat::Identity() - P);
+      Ja += along * Gradient(sea.acceleration_gradient, k);
+      Jc += along * Gradient(sea.acceleration_gradient, k + 1);
     }
     // Through the wet fraction psi = (phi_k + phi_{k+1}) / 2.
     Ja += F_dry * dpsi_a.transpose();
@@ -247,12 +282,15 @@ void AddWaveInertiaJacobian(const Model& m, const LinkGeometry& g, const Points&
     AddBlock(m, j, j, Pa * sea.wet_gradient.col(j).transpose(), system);
   }
   // Links: (psi e / 2) (I - t t^T) a_j on stations j = k, k+1, psi = (phi_k + phi_{k+1}) / 2.
+  // And the tangential (psi e^t / 2) t t^T a_j.
   for (int k = 0; k < m.line.links; ++k) {
-    if (m.line.virtual_mass[k] == 0) continue;
+    const double et = 0.5 * m.line.tangential_virtual_mass[k];
+    if (m.line.virtual_mass[k] == 0 && et == 0) continue;
     const Vec t = g.tangent.col(k);
     const double e = 0.5 * m.line.virtual_mass[k];
     for (int j : {k, k + 1}) {
-      const Vec f = e * (a.col(j) - t * t.dot(a.col(j)));
+      Vec f = e * (a.col(j) - t * t.dot(a.col(j)));
+      if (et != 0) f += (et * t.dot(a.col(j))) * t;
       AddBlock(m, j, k, f * (0.5 * sea.wet_gradient.col(k)).transpose(), system);
       AddBlock(m, j, k + 1, f * (0.5 * sea.wet_gradient.col(k + 1)).transpose(), system);
     }

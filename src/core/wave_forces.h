@@ -11,8 +11,11 @@
 // with U, A the water's velocity and acceleration at the stations (waves.h). Per prism:
 //   drag      -phi u f (.) rel,  rel = v - c(y) e_x - U
 //   inertia   phi rho (V* + V^x, V* + V^y) (.) A
+// With the tangential coefficients (model.h) a link adds along itself
+//   drag      -psi f^T |p| p t,  p = t . (mean station velocity - c(y_mid) e_x - mean U)
+//   inertia   psi e^t (t . mean A) t                          (added mass only, no Froude-Krylov)
 // Buoyancy: a station loses (1 - phi_j) of its buoyancy B_j (its links' halves and V*). Added
-// masses in the inertia tensor: psi e for the links, phi rho V for the prisms.
+// masses in the inertia tensor: psi e (and psi e^t along) for the links, phi rho V for the prisms.
 //
 // The surface: phi_j = S((eta(x_j, t) - y_j) / l_j + 1/2), S(u) = 3u^2 - 2u^3 clamped to
 // [0, 1], with l_j the station's share of the line: the submerged fraction of a vertical

@@ -63,6 +63,10 @@ void WriteMaterial(const MoorDynLineType& t, MoorDynTomlOut* out) {
            name + "EA " + FormatNumber(t.ea) + " N / area, Pa");
   out->Key("drag_coefficient", TomlNumber(t.cd), "Cd, normal, on d l");
   out->Key("added_mass_coefficient", TomlNumber(t.ca), "Ca, normal");
+  if (t.cd_ax != 0)
+    out->Key("tangential_drag_coefficient", TomlNumber(t.cd_ax), "CdAx, along, on pi d l");
+  if (t.ca_ax != 0)
+    out->Key("tangential_added_mass_coefficient", TomlNumber(t.ca_ax), "CaAx, along");
   if (t.ba >= 0)
     out->Key("axial_damping", TomlNumber(t.ba / area),
              name + "BA " + FormatNumber(t.ba) + " N s / area, Pa s");
@@ -71,9 +75,6 @@ void WriteMaterial(const MoorDynLineType& t, MoorDynTomlOut* out) {
              name + "BA/-zeta " + FormatNumber(t.ba) + ": a fraction of critical damping");
   if (t.ei != 0)
     out->Warn(t.line, name + "EI " + FormatNumber(t.ei) + " N m^2: bending stiffness ignored");
-  if (t.cd_ax != 0 || t.ca_ax != 0)
-    out->Warn(t.line, name + "CdAx " + FormatNumber(t.cd_ax) + ", CaAx " + FormatNumber(t.ca_ax) +
-                          ": tangential drag / added mass not modelled yet");
   if (t.cl != 0)
     out->Warn(t.line,
               name + "Cl " + FormatNumber(t.cl) + ": vortex-induced vibration not modelled");

@@ -230,6 +230,10 @@ void ReadMaterials(TableReader& top, SceneDef& scene, bool elastic) {
     m.drag_coefficient = r.OptionalNonNegative("drag_coefficient", 1.2, "", kMaxCoefficient);
     m.added_mass_coefficient =
         r.OptionalNonNegative("added_mass_coefficient", 1.0, "", kMaxCoefficient);
+    m.tangential_drag_coefficient =
+        r.OptionalNonNegative("tangential_drag_coefficient", 0.0, "", kMaxCoefficient);
+    m.tangential_added_mass_coefficient =
+        r.OptionalNonNegative("tangential_added_mass_coefficient", 0.0, "", kMaxCoefficient);
     m.axial_damping = r.OptionalNonNegative("axial_damping", 0.0, " in Pa s", kMaxAxialDamping);
     m.axial_damping_ratio =
         r.OptionalNonNegative("axial_damping_ratio", 0.0, " (of critical)", kMaxDampingRatio);

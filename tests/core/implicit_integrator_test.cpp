@@ -558,9 +558,19 @@ TEST(ImplicitIntegrator, StepIndependentOfStations) {
 // `sea`: a seabed through the random configuration (stiff, damped, with friction regularised
 // over 1 m/s so its velocity derivative is of the size of the others) and a sheared current
 // profile whose points fall among the stations' elevations.
-Model JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = false) {
+// `axial`: tangential drag and added mass too, of the size of the normal ones but not equal to
+// them (C^T pi = 1.6 and 1.3 against C^D = 1.2 and 1.0; k^t = 0.6 and 1.3 against k = 1.0 and
+// 0.8), so that a term swapped between across and along shows.
+Model JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = false,
+                    bool axial = false) {
   SectionSpec a{6.0, 6, 0.05, 1e-3, 1.5, 1e6, 1.2, 1.0};   // EA = 1 kN
   SectionSpec b{4.0, 5, 0.03, 5e-4, 0.8, 4e6, 1.0, 0.8};   // EA = 2 kN
+  if (axial) {
+    a.tangential_drag_coefficient = 0.5;
+    a.tangential_added_mass_coefficient = 0.6;
+    b.tangential_drag_coefficient = 0.4;
+    b.tangential_added_mass_coefficient = 1.3;
+  }
   a.axial_damping_ratio = damping_ratio;
   b.axial_damping = 2e4 * damping_ratio;  // [Pa s]: c = BA sigma / l = 12.5 zeta N s/m
   PrismSpec p;
@@ -651,8 +661,8 @@ double RelativeError(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& fd)
 }
 
 void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = false,
-                                             bool waves = false) {
-  const Model m = JacobianModel(damping_ratio, sea, waves);
+                                             bool waves = false, bool axial = false) {
+  const Model m = JacobianModel(damping_ratio, sea, waves, axial);
   const double t = 2.0;  // [s]: the time of the sea (waves only)
   const int j0 = m.first_free(), j1 = m.last_free(), n = j1 - j0 + 1;
   ASSERT_EQ(j0, 1);
@@ -722,10 +732,11 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
     worst_ma = std::max(worst_ma, RelativeError(Dense(i0), dMadx));
     worst_m = std::max(worst_m, RelativeError(Dense(i1) - Dense(i0), M));
   }
-  std::printf("[ jacobian ] axial damping ratio %.2f%s: largest relative error over 5 random "
+  std::printf("[ jacobian ] axial damping ratio %.2f%s%s: largest relative error over 5 random "
               "states: dF/dx %.2e, dF/dv %.2e, d(M a)/dx %.2e, M %.2e\n",
               damping_ratio,
               waves ? ", waves and current profile" : sea ? ", seabed and current profile" : "",
+              axial ? ", tangential drag and added mass" : "",
               worst_x, worst_v, worst_ma, worst_m);
   // 1e-6: the finite differences are good to ~1e-9 (see above); a missing or wrong term is
   // O(1) of its block, and each kind of term is checked on its own scale.
@@ -767,6 +778,21 @@ TEST(ImplicitIntegrator, AnalyticJacobianWithSeabedAndCurrentProfileMatchesCentr
 // the wet fractions of stations in the surface's band (buoyancy, drag, inertia, added masses).
 TEST(ImplicitIntegrator, AnalyticJacobianWithWavesMatchesCentralDifferences) {
   ExpectJacobianMatchesCentralDifferences(0.2, false, true);
+}
+
+// With the tangential (axial) drag and added mass (issue 21): the drag along each link through
+// its direction and the relative velocity along it, the added mass along it through its
+// direction; in a uniform current, with a seabed and a current profile, and in waves (the
+// water's velocity along the link, its acceleration on the added mass along it, the wet
+// fractions).
+TEST(ImplicitIntegrator, AnalyticJacobianWithTangentialDragAndAddedMassMatchesCentralDifferences) {
+  ExpectJacobianMatchesCentralDifferences(0.2, false, false, true);
+}
+TEST(ImplicitIntegrator, AnalyticJacobianWithTangentialTermsSeabedAndProfileMatchesCentralDifferences) {
+  ExpectJacobianMatchesCentralDifferences(0.2, true, false, true);
+}
+TEST(ImplicitIntegrator, AnalyticJacobianWithTangentialTermsInWavesMatchesCentralDifferences) {
+  ExpectJacobianMatchesCentralDifferences(0.2, false, true, true);
 }
 }  // namespace
 }  // namespace cablefilm

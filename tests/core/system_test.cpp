@@ -51,29 +51,40 @@ EndMotion Ship() {
                              2 * M_PI / 8.0, 0.5);
 }
 
+// The chain, with its tangential (axial) drag and added mass when `axial` (MoorDyn's CdAx and
+// CaAx of a studless chain, 0.4 and 0.5).
+SectionSpec LegChain(double length, int segments, bool axial) {
+  SectionSpec s = Chain(length, segments);
+  if (axial) {
+    s.tangential_drag_coefficient = 0.4;
+    s.tangential_added_mass_coefficient = 0.5;
+  }
+  return s;
+}
+
 // Anchor -> 60 m -> clump -> 45 m -> fairlead: as two lines joined at a free point.
-SystemModel ClumpSystem() {
+SystemModel ClumpSystem(bool axial = false) {
   std::vector<PointSpec> points(3);
   points[0] = {"anchor", EndMotion::Fixed(kAnchor), {}};
   points[1] = {"clump", EndMotion::Free(Vec(40.0, -45.0, 5.0)), Clump()};
   points[2] = {"fairlead", Ship(), {}};
   std::vector<LineSpec> lines(2);
   lines[0].name = "lower";
-  lines[0].sections = {Chain(60, 24)};
+  lines[0].sections = {LegChain(60, 24, axial)};
   lines[0].start_point = 0;
   lines[0].end_point = 1;
   lines[1].name = "upper";
-  lines[1].sections = {Chain(45, 18)};
+  lines[1].sections = {LegChain(45, 18, axial)};
   lines[1].start_point = 1;
   lines[1].end_point = 2;
   return MakeSystem(lines, points, Water3D());
 }
 
 // The same as one line with the clump as a weight at its station 24.
-Model ClumpLine() {
+Model ClumpLine(bool axial = false) {
   PrismSpec clump = Clump();
   clump.station = 24;
-  return MakeModel({Chain(60, 24), Chain(45, 18)}, {clump}, Water3D(),
+  return MakeModel({LegChain(60, 24, axial), LegChain(45, 18, axial)}, {clump}, Water3D(),
                    EndMotion::Fixed(kAnchor), Ship(), LinkLaw::kElastic);
 }
 
@@ -111,24 +122,34 @@ TEST(SystemModel, RefusesWhatNothingHolds) {
   EXPECT_FALSE(ok.lines[0].ends.end.prescribed());
 }
 
-TEST(SystemEquilibrium, ClumpJunctionIsTheLineWithAWeight) {
-  const SystemModel sys = ClumpSystem();
+void ExpectClumpEquilibriumIsTheLine(bool axial) {
+  const SystemModel sys = ClumpSystem(axial);
   ASSERT_EQ(sys.shared_count(), 1);
   SystemEquilibriumReport report;
   const std::vector<State> states = SolveSystemEquilibrium(sys, &report);
-  const State one = SolveEquilibrium(ClumpLine());
+  const State one = SolveEquilibrium(ClumpLine(axial));
   // Both are solved to 1e-9 of the static load (about 60 kN here): a station's position then
   // differs by that force over the line's stiffness across it (T / l ~ 1e4 N/m): ~6e-9 m
   // (measured 4.6e-10 m).
-  RecordProperty("position_gap", Figure(PositionGap(states, one.x)));
+  ::testing::Test::RecordProperty("position_gap", Figure(PositionGap(states, one.x)));
+  std::printf("[ system ]%s equilibrium: stations %.2e m from the one line's\n",
+              axial ? " tangential terms:" : "", PositionGap(states, one.x));
   EXPECT_LT(PositionGap(states, one.x), 1e-7);
   EXPECT_LE(report.residual, 1e-9 * report.force_scale);
   EXPECT_GT(std::abs(states[0].x(2, 24) - 0.0), 0.5);  // the current bends it out of z = 0
 }
 
-TEST(SystemDynamics, ClumpJunctionMovesAsTheLineWithAWeight) {
-  const SystemModel sys = ClumpSystem();
-  const Model line = ClumpLine();
+TEST(SystemEquilibrium, ClumpJunctionIsTheLineWithAWeight) { ExpectClumpEquilibriumIsTheLine(false); }
+
+// With the tangential drag and added mass (issue 21) on both lines: the shared point's copies
+// carry each line's half link of them, as the one line's station does.
+TEST(SystemEquilibrium, ClumpJunctionWithTangentialTermsIsTheLineWithAWeight) {
+  ExpectClumpEquilibriumIsTheLine(true);
+}
+
+void ExpectClumpDynamicsIsTheLine(bool axial) {
+  const SystemModel sys = ClumpSystem(axial);
+  const Model line = ClumpLine(axial);
   const std::vector<State> rest = SolveSystemEquilibrium(sys);
   const State one_rest = SolveEquilibrium(line);
   StepOptions o;
@@ -149,11 +170,20 @@ TEST(SystemDynamics, ClumpJunctionMovesAsTheLineWithAWeight) {
   // the same stations); they differ by Newton's tolerance (1e-9 of a link length, 2.5e-9 m,
   // per step) and round-off, far below the step's own error (1e-4 m). A link's tension moves
   // by EA / l = 1.6e8 N/m times that, 0.4 N: 5e-6 of the 85 kN peak.
-  RecordProperty("gap", Figure(gap));
-  RecordProperty("tension_gap_of_peak", Figure(tension_gap / peak));
+  ::testing::Test::RecordProperty("gap", Figure(gap));
+  ::testing::Test::RecordProperty("tension_gap_of_peak", Figure(tension_gap / peak));
+  std::printf("[ system ]%s 20 s: stations %.2e m and tensions %.2e of the %.6g N peak from the "
+              "one line's, %ld steps\n",
+              axial ? " tangential terms:" : "", gap, tension_gap / peak, peak, sd.stats.steps);
   EXPECT_LT(gap, 1e-6);
   EXPECT_LT(tension_gap, 1e-5 * peak);
   EXPECT_EQ(sd.stats.steps, one.stats.steps);
+}
+
+TEST(SystemDynamics, ClumpJunctionMovesAsTheLineWithAWeight) { ExpectClumpDynamicsIsTheLine(false); }
+
+TEST(SystemDynamics, ClumpJunctionWithTangentialTermsMovesAsTheLineWithAWeight) {
+  ExpectClumpDynamicsIsTheLine(true);
 }
 
 TEST(SystemDynamics, ABlowUpNamesItsLine) {

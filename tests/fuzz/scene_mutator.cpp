@@ -379,6 +379,8 @@ constexpr KnownKey kKnownKeys[] = {
     {"material[]", "added_mass_coefficient", Kind::kNumber},
     {"material[]", "axial_damping", Kind::kNumber},
     {"material[]", "axial_damping_ratio", Kind::kNumber},
+    {"material[]", "tangential_drag_coefficient", Kind::kNumber},
+    {"material[]", "tangential_added_mass_coefficient", Kind::kNumber},
     {"cable", "model", Kind::kString},
     {"cable.section[]", "material", Kind::kString},
     {"cable.section[]", "length", Kind::kNumber},

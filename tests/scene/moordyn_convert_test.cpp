@@ -112,8 +112,14 @@ TEST(MoorDynConvert, ThreeLegSpreadFollowsTheMapping) {
   const double wire_area = M_PI * 0.076 * 0.076 / 4;
   EXPECT_NEAR(Num(wire["youngs_modulus"]), 5.6e8 / wire_area, kRel * 5.6e8 / wire_area);
   EXPECT_NEAR(Num(wire["axial_damping"]), 1.0e5 / wire_area, kRel * 1.0e5 / wire_area);
-  EXPECT_TRUE(HasWarning(c.warnings, "\"chain\": CdAx 0.4, CaAx 0.5: tangential drag / added "
-                                     "mass not modelled yet"));
+  // CdAx, CaAx -> the tangential drag and added mass coefficients as they are (both on the
+  // same d and pi d^2 / 4 as MoorDyn's), without a warning; 0 writes no key (the default).
+  EXPECT_EQ(Num(chain["tangential_drag_coefficient"]), 0.4);
+  EXPECT_EQ(Num(chain["tangential_added_mass_coefficient"]), 0.5);
+  EXPECT_FALSE(wire["tangential_drag_coefficient"]);
+  EXPECT_FALSE(wire["tangential_added_mass_coefficient"]);
+  EXPECT_FALSE(HasWarning(c.warnings, "CdAx"));
+  EXPECT_FALSE(HasWarning(c.warnings, "CaAx"));
 
   // Points: MoorDyn (x, y, z) -> cablefilm (x, z, -y).
   const auto anchor2 = Named(s, "point", "2");

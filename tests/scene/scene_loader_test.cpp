@@ -191,6 +191,33 @@ TEST(SceneLoader, AxialDamping) {
               "material[1].axial_damping_ratio", {"not both"});
 }
 
+// The tangential (axial) drag and added mass: 0 by default, read as given, refused negative or
+// above the coefficients' limit with the file, the key and what was expected.
+TEST(SceneLoader, TangentialDragAndAddedMass) {
+  const SceneDef plain = ParseScene(kBase, kFile);
+  for (const MaterialDef& m : plain.materials) {
+    EXPECT_EQ(m.tangential_drag_coefficient, 0.0);
+    EXPECT_EQ(m.tangential_added_mass_coefficient, 0.0);
+  }
+  const SceneDef s = ParseScene(
+      With("youngs_modulus = 2.0e9",
+           "youngs_modulus = 2.0e9\ntangential_drag_coefficient = 0.4\n"
+           "tangential_added_mass_coefficient = 0.5"),
+      kFile);
+  EXPECT_EQ(s.materials[1].tangential_drag_coefficient, 0.4);
+  EXPECT_EQ(s.materials[1].tangential_added_mass_coefficient, 0.5);
+  ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = 2.0e9\ntangential_drag_coefficient = -0.1"),
+              "material[1].tangential_drag_coefficient", {"expected a number >= 0"});
+  ExpectError(With("youngs_modulus = 2.0e9",
+                   "youngs_modulus = 2.0e9\ntangential_added_mass_coefficient = -1"),
+              "material[1].tangential_added_mass_coefficient", {"expected a number >= 0"});
+  ExpectError(With("youngs_modulus = 2.0e9",
+                   "youngs_modulus = 2.0e9\ntangential_added_mass_coefficient = 1e9"),
+              "material[1].tangential_added_mass_coefficient", {"1000"});
+  ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = 2.0e9\ntangential_drag_coefficient = nan"),
+              "material[1].tangential_drag_coefficient", {"non-finite"});
+}
+
 TEST(SceneLoader, NonFiniteNumbers) {
   ExpectError(With("length = 45.72", "length = nan"), "cable.section[0].length", {"non-finite"});
   ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = inf"),
