@@ -500,7 +500,7 @@ TEST_F(NetcdfResultsTest, UtilisationOfAMaterialMixAgainstTheResultFiles) {
 
   const auto csv = ReadCsv(out / "timeseries.csv");
   const int col = Column(csv, "utilisation_max");
-  ASSERT_EQ(col, 8);  // the last column, after link_max
+  ASSERT_EQ(col, 16);  // the last column, after link_max and the end loads
   ASSERT_EQ(csv.size(), rows + 1);
   double best = -1, best_t = 0;
   size_t best_link = 0, best_row = 0;

@@ -206,6 +206,7 @@ const std::vector<std::string>& Choices(const std::string& key) {
                                                     "plasma"};
   static const std::vector<std::string> view = {"auto", "2d", "3d"};
   static const std::vector<std::string> file = {"motion.csv", "ship_motion.csv"};
+  static const std::vector<std::string> interpolation = {"spline", "linear"};
   static const std::vector<std::string> none;
   if (key == "motion") return motion;
   if (key == "model") return model;
@@ -215,6 +216,7 @@ const std::vector<std::string>& Choices(const std::string& key) {
   if (key == "colormap") return colormap;
   if (key == "view") return view;
   if (key == "file") return file;
+  if (key == "interpolation") return interpolation;
   return none;
 }
 
@@ -381,6 +383,7 @@ constexpr KnownKey kKnownKeys[] = {
     {"material[]", "axial_damping_ratio", Kind::kNumber},
     {"material[]", "tangential_drag_coefficient", Kind::kNumber},
     {"material[]", "tangential_added_mass_coefficient", Kind::kNumber},
+    {"material[]", "minimum_breaking_load", Kind::kNumber},
     {"cable", "model", Kind::kString},
     {"cable.section[]", "material", Kind::kString},
     {"cable.section[]", "length", Kind::kNumber},
@@ -399,6 +402,7 @@ constexpr KnownKey kKnownKeys[] = {
     {"ends.start", "period", Kind::kNumber},
     {"ends.start", "ramp_rate", Kind::kNumber},
     {"ends.start", "file", Kind::kString},
+    {"ends.start", "interpolation", Kind::kString},
     {"ends.start", "x_rao", Kind::kVector},
     {"ends.start", "y_rao", Kind::kVector},
     {"ends.start", "z_rao", Kind::kVector},
@@ -410,6 +414,7 @@ constexpr KnownKey kKnownKeys[] = {
     {"ends.end", "period", Kind::kNumber},
     {"ends.end", "ramp_rate", Kind::kNumber},
     {"ends.end", "file", Kind::kString},
+    {"ends.end", "interpolation", Kind::kString},
     {"ends.end", "x_rao", Kind::kVector},
     {"ends.end", "y_rao", Kind::kVector},
     {"ends.end", "z_rao", Kind::kVector},
@@ -440,6 +445,7 @@ constexpr KnownKey kKnownKeys[] = {
     {"point[]", "period", Kind::kNumber},
     {"point[]", "ramp_rate", Kind::kNumber},
     {"point[]", "file", Kind::kString},
+    {"point[]", "interpolation", Kind::kString},
     {"point[]", "x_rao", Kind::kVector},
     {"point[]", "y_rao", Kind::kVector},
     {"point[]", "z_rao", Kind::kVector},
