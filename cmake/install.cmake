@@ -1,5 +1,7 @@
 # Issue 12: what `cmake --install` puts under the prefix, and the .deb that `cpack -G DEB` makes.
 #   bin/cablefilm                         the program (shaders and live page built in)
+#   lib/cablefilm/cablefilm_render.so     its films and live view, loaded when used
+#   lib/cablefilm/cablefilm_netcdf.so     its results.nc writer, loaded when used
 #   lib/libcablefilm_core.a               cablefilm::core (physics; Eigen only)
 #   include/cablefilm/core/*.h            its headers
 #   lib/cmake/cablefilm/                  cablefilmConfig.cmake, ...ConfigVersion.cmake, targets
@@ -12,6 +14,11 @@ include(GNUInstallDirs)  # CMAKE_INSTALL_DATADIR (share), CMAKE_INSTALL_DOCDIR (
 
 set(CABLEFILM_CMAKE_DIR lib/cmake/cablefilm)
 install(TARGETS cablefilm RUNTIME DESTINATION bin)
+# The modules the program loads on demand, where it looks for them: <bin>/../lib/cablefilm
+# (src/modules/module_loader.h).
+if(TARGET cablefilm_render)
+  install(TARGETS cablefilm_render cablefilm_netcdf_module LIBRARY DESTINATION lib/cablefilm)
+endif()
 # The Python module, when built (cmake/python.cmake): into the prefix's Python folder,
 # lib/python3.11/dist-packages on Debian.
 if(TARGET cablefilm_python)

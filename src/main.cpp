@@ -21,7 +21,7 @@
 #include "app/sweep_command.h"
 #include "core/version.h"
 #ifdef CABLEFILM_LIVE
-#include "live/http_server.h"
+#include "live/bind_address.h"
 #include "live/live_command.h"
 #endif
 #include "core/cancel.h"

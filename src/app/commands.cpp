@@ -17,7 +17,7 @@
 #include "app/run_support.h"
 #include "app/system_command.h"
 #include "core/version.h"
-#include "io/netcdf_results.h"
+#include "io/results_nc.h"
 #include "io/out_dir_lock.h"
 #include "io/result_files.h"
 #include "io/run_report_file.h"
@@ -27,6 +27,7 @@
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "scene/text_escape.h"
+#include "view/max_tension_figure.h"
 
 namespace cablefilm {
 namespace {
@@ -200,14 +201,15 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
   TimeseriesWriter series(series_path, m, run.inputs);
   const std::string nc_path = out_dir + "/results" + suffix + ".nc";
   const std::string nc_partial_path = out_dir + "/results" + suffix + ".partial.nc";
-  NetcdfResultsWriter links(nc_path, MakeNetcdfInfo(scene, ModelName(m)), m, run.initial.state, T0);
+  const std::unique_ptr<LineResultsNc> links =
+      OpenLineResultsNc(nc_path, MakeNetcdfInfo(scene, ModelName(m)), m, run.initial.state, T0);
   ProgressSink progress(std::string("simulating (") + run.label + ")", run.grid.end());
-  ExecuteRun(run, {&series, &links, &progress});
+  ExecuteRun(run, {&series, links.get(), &progress});
   progress.Finish();
   RunSummary& s = run.summary;
   if (!s.completed) {
     series.CommitPartial(partial_path);
-    links.CommitPartial(nc_partial_path);
+    links->CommitPartial(nc_partial_path);
     if (!s.failure.empty())
       s.failure += "; the rows up to then are in " + EscapeText(partial_path) + " and " +
                    EscapeText(nc_partial_path);
@@ -217,7 +219,7 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
     return run;
   }
   series.Commit();
-  links.Commit();
+  links->Commit();
   std::printf("simulated %.6g s in %.3g s of computer time: %s, %.3g station-steps/s\n",
               s.duration, s.wall, DescribeSteps(s.stats).c_str(),
               static_cast<double>(s.stats.steps) * m.stations() / s.wall);
@@ -247,11 +249,10 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
 // blow-up's message is thrown; a signal gives its exit status.
 int EndCutShort(const SceneDef& scene, const std::vector<const Run*>& runs,
                 const std::string& failure, const std::string& out_dir,
-                const RunOptions& options, RunReport* report) {
+                RunReport* report) {
   bool drawn = false;
   try {
-    const PictureReport figure = WriteMaxTensionFigure(scene, runs, out_dir, options.shader_dir,
-                                                       false);
+    const PictureReport figure = WriteMaxTensionFigure(scene, runs, out_dir, false);
     drawn = !std::isnan(figure.peak);
     if (report) report->figure = figure;
   } catch (const Error& e) {
@@ -298,10 +299,10 @@ int RunCommand(const std::string& scene_path, const RunOptions& options, RunRepo
   if (report) report->summary = run.summary;
   const std::vector<const Run*> runs{&run};
   if (!run.summary.completed)
-    return EndCutShort(scene, runs, run.summary.failure, out_dir, options, report);
+    return EndCutShort(scene, runs, run.summary.failure, out_dir, report);
   // Figure 1 from every row, film or not (a film cut short leaves it whole: it has every row).
   const PictureReport figure =
-      WriteMaxTensionFigure(scene, runs, out_dir, options.shader_dir, true);
+      WriteMaxTensionFigure(scene, runs, out_dir, true);
   if (report) report->figure = figure;
   if (!film) return 0;
   PictureReport shown;
@@ -326,17 +327,17 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
   const Run elastic = SimulateToFiles(scene, BuildModel(scene), out_dir, "");
   std::vector<const Run*> runs{&elastic};
   if (!elastic.summary.completed)
-    return EndCutShort(scene, runs, elastic.summary.failure, out_dir, options, nullptr);
+    return EndCutShort(scene, runs, elastic.summary.failure, out_dir, nullptr);
   scene.model = CableModelKind::kInextensible;
   const Run rigid = SimulateToFiles(scene, BuildModel(scene), out_dir, "_inextensible");
   runs.push_back(&rigid);
   if (!rigid.summary.completed)
-    return EndCutShort(scene, runs, rigid.summary.failure, out_dir, options, nullptr);
+    return EndCutShort(scene, runs, rigid.summary.failure, out_dir, nullptr);
   const RunSummary &e = elastic.summary, &r = rigid.summary;
   std::printf("peak tension: elastic %.6g N (t = %.4g s), inextensible %.6g N (t = %.4g s), "
               "ratio inextensible/elastic %.4g\n",
               e.peak, e.peak_t, r.peak, r.peak_t, r.peak / e.peak);
-  WriteMaxTensionFigure(scene, runs, out_dir, options.shader_dir, true);
+  WriteMaxTensionFigure(scene, runs, out_dir, true);
   if (!film) return 0;
   const bool finished =
       RenderFilm(scene, runs, MakeFilmRequest(look, out_dir, options.shader_dir), g_signal);

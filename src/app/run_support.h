@@ -5,7 +5,7 @@
 #include <string>
 
 #include "app/run_options.h"
-#include "io/netcdf_results.h"
+#include "io/results_nc.h"
 #include "io/out_dir_lock.h"
 #include "scene/scene_def.h"
 

@@ -10,9 +10,8 @@
 #include "app/run_support.h"
 #include "core/error.h"
 #include "io/bodies_file.h"
-#include "io/netcdf_results.h"
+#include "io/results_nc.h"
 #include "io/points_file.h"
-#include "io/system_netcdf.h"
 #include "io/result_files.h"
 #include "io/run_report_file.h"
 #include "run/system_run.h"
@@ -21,6 +20,7 @@
 #include "scene/film_settings.h"
 #include "scene/scene_loader.h"
 #include "scene/text_escape.h"
+#include "view/max_tension_figure.h"
 #include "view/system_film.h"
 
 namespace cablefilm {
@@ -103,7 +103,7 @@ class SystemProgress : public SystemRowSink {
 struct LineFiles {
   std::string dir;
   std::unique_ptr<TimeseriesWriter> series;
-  std::unique_ptr<NetcdfResultsWriter> results;
+  std::unique_ptr<LineResultsNc> results;
 };
 
 }  // namespace
@@ -159,18 +159,18 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
     if (ec) throw Error("cannot create the folder " + EscapeText(f.dir) + ": " + ec.message());
     WriteEquilibriumCsv(f.dir + "/equilibrium.csv", m, d.state, d.tension());
     f.series = std::make_unique<TimeseriesWriter>(f.dir + "/timeseries.csv", m, run.inputs);
-    f.results = std::make_unique<NetcdfResultsWriter>(
-        f.dir + "/results.nc", MakeNetcdfInfo(scene, "elastic"), m, d.state, d.tension());
+    f.results = OpenLineResultsNc(f.dir + "/results.nc", MakeNetcdfInfo(scene, "elastic"), m,
+                                  d.state, d.tension());
     line_sinks[i] = {f.series.get(), f.results.get()};
   }
   PointsWriter points(out_dir + "/points.csv", sys, run.inputs);
   std::unique_ptr<BodiesWriter> bodies;
   if (!sys.bodies.empty())
     bodies = std::make_unique<BodiesWriter>(out_dir + "/body.csv", sys, run.inputs);
-  SystemResultsWriter results(out_dir + "/results.nc", MakeNetcdfInfo(scene, "elastic"), sys,
-                              run.inputs);
+  const std::unique_ptr<SystemResultsNc> results =
+      OpenSystemResultsNc(out_dir + "/results.nc", MakeNetcdfInfo(scene, "elastic"), sys, run.inputs);
   SystemProgress progress(run.grid.end());
-  std::vector<SystemRowSink*> sinks = {&points, &results, &progress};
+  std::vector<SystemRowSink*> sinks = {&points, results.get(), &progress};
   if (bodies) sinks.push_back(bodies.get());
   ExecuteSystemRun(run, line_sinks, sinks);
   progress.Finish();
@@ -182,7 +182,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
       f.results->CommitPartial(f.dir + "/results.partial.nc");
     }
     points.CommitPartial(out_dir + "/points.partial.csv");
-    results.CommitPartial(out_dir + "/results.partial.nc");
+    results->CommitPartial(out_dir + "/results.partial.nc");
     if (bodies) bodies->CommitPartial(out_dir + "/body.partial.csv");
     const std::string where = "the rows up to then are in " + EscapeText(out_dir) +
                               "/points.partial.csv and lines/*/timeseries.partial.csv";
@@ -190,7 +190,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
     bool drawn = false;
     try {
       const PictureReport figure =
-          WriteSystemMaxTensionFigure(scene, run, out_dir, options.shader_dir, false);
+          WriteSystemMaxTensionFigure(scene, run, out_dir, false);
       drawn = !std::isnan(figure.peak);
       if (report) report->figure = figure;
     } catch (const Error& e) {
@@ -206,7 +206,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
     f.results->Commit();
   }
   points.Commit();
-  results.Commit();
+  results->Commit();
   if (bodies) bodies->Commit();
   for (int i = 0; i < nl; ++i) WriteRunReport(files[i].dir + "/run_report.toml", run.lines[i]);
   WriteRunReport(out_dir + "/run_report.toml", s);
@@ -229,7 +229,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
               EscapeText(out_dir).c_str(), bodies ? " body.csv," : "", nl);
   // Figure 1 from every row, film or not (a film cut short leaves it whole: it has every row).
   const PictureReport figure =
-      WriteSystemMaxTensionFigure(scene, run, out_dir, options.shader_dir, true);
+      WriteSystemMaxTensionFigure(scene, run, out_dir, true);
   if (report) report->figure = figure;
   if (!film) return 0;
   PictureReport shown;

@@ -10,6 +10,9 @@ namespace cablefilm {
 struct PngOptions {
   int compression_level = 6;
   bool keep_alpha = false;  // false: write RGB (frames are opaque), true: write RGBA
+  // Only the "up" row filter instead of libpng's trial of all five per row: on a flat figure
+  // (max_tension.png, level 4) as small a file in 40 % of the time.
+  bool up_filter_only = false;
 };
 
 // Writes `image` to `path` (a temporary file renamed on success). Throws Error with the path.

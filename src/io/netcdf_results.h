@@ -34,7 +34,7 @@
 
 namespace cablefilm {
 
-class NetcdfResultsWriter : public RowSink {
+class NetcdfResultsWriter : public LineResultsNc {
  public:
   static constexpr int kChunkRows = 64;            // rows of a chunk, at most
   static constexpr long kChunkBytes = 4L << 20;    // bytes of a chunk of x, at most (about)
@@ -44,20 +44,16 @@ class NetcdfResultsWriter : public RowSink {
   NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
                       const Model& m, const State& initial,
                       const Eigen::VectorXd& initial_tension);
-  ~NetcdfResultsWriter();  // uncommitted: the rows not yet written are dropped, the temporary
+  ~NetcdfResultsWriter() override;  // uncommitted: the rows not yet written are dropped, the
                            // file removed
   NetcdfResultsWriter(const NetcdfResultsWriter&) = delete;
   NetcdfResultsWriter& operator=(const NetcdfResultsWriter&) = delete;
 
   // One output row. Throws Error on a write error (of this row or of an earlier chunk).
-  void Append(const State& state, const Eigen::VectorXd& tension);
-  bool Row(const Data& d) override {
-    Append(d.state, d.tension());
-    return true;
-  }
+  void Append(const State& state, const Eigen::VectorXd& tension) override;
   // Writes the rows still waiting, closes and renames; throws Error on a write error.
-  void Commit();                                // the complete file, under its name
-  void CommitPartial(const std::string& path);  // an incomplete run, under another name
+  void Commit() override;                                // the complete file, under its name
+  void CommitPartial(const std::string& path) override;  // an incomplete run, another name
 
   long rows() const { return rows_; }
   int chunk_rows() const { return chunk_rows_; }

@@ -4,17 +4,9 @@
 // io/system_netcdf.h, a system's).
 #include <string>
 
-namespace cablefilm {
+#include "io/results_nc.h"  // NetcdfResultsInfo
 
-// The global attributes beside Conventions = "CF-1.8".
-struct NetcdfResultsInfo {
-  std::string title;          // the scene's title
-  std::string scene_file;     // its path, as given
-  std::string scene;          // its text
-  std::string version;        // the program's: "0.1 (git 1a2b3c4)"
-  std::string model;          // "elastic" or "inextensible"
-  std::string initial_state;  // "equilibrium" or "straight"
-};
+namespace cablefilm {
 
 // Throws Error naming `file` and `what` unless status is NC_NOERR (a full disk said as such).
 void NetcdfCheck(int status, const std::string& file, const char* what);

@@ -25,20 +25,20 @@
 
 namespace cablefilm {
 
-class SystemResultsWriter : public SystemRowSink {
+class SystemResultsWriter : public SystemResultsNc {
  public:
   static constexpr int kChunkRows = 256;
 
   // Creates `path`'s temporary file and writes what does not change. Throws Error.
   SystemResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
                       const SystemModel& sys, const Inputs& in);
-  ~SystemResultsWriter();  // uncommitted: the temporary file removed
+  ~SystemResultsWriter() override;  // uncommitted: the temporary file removed
   SystemResultsWriter(const SystemResultsWriter&) = delete;
   SystemResultsWriter& operator=(const SystemResultsWriter&) = delete;
 
   bool Row(const SystemData& sd) override;  // throws Error on a write error
-  void Commit();                                // the complete file, under its name
-  void CommitPartial(const std::string& path);  // an incomplete run, under another name
+  void Commit() override;                                // the complete file, under its name
+  void CommitPartial(const std::string& path) override;  // an incomplete run, another name
 
  private:
   // A time-dependent variable: its id, values per row, and the rows gathered.

@@ -366,16 +366,6 @@ std::string HostName(const std::string& authority) {
   return Lower(host);
 }
 
-bool IsIpv4(const std::string& s) {
-  in_addr a{};
-  return inet_pton(AF_INET, s.c_str(), &a) == 1;
-}
-
-bool IsIpv6(const std::string& s) {
-  in6_addr a{};
-  return inet_pton(AF_INET6, s.c_str(), &a) == 1;
-}
-
 bool ConstantTimeEqual(const std::string& a, const std::string& b) {
   if (a.size() != b.size()) return false;
   unsigned char diff = 0;
@@ -384,27 +374,6 @@ bool ConstantTimeEqual(const std::string& a, const std::string& b) {
 }
 
 }  // namespace
-
-std::string BindAddressProblem(const std::string& bind) {
-  if (bind == "localhost" || IsIpv4(bind)) return "";
-  std::string v6 = bind;
-  if (v6.size() > 2 && v6.front() == '[' && v6.back() == ']') v6 = v6.substr(1, v6.size() - 2);
-  if (IsIpv6(v6)) {
-    if (mg_check_feature(8)) return "";
-    return "--bind: this build's civetweb has no IPv6; expected an IPv4 address such as "
-           "127.0.0.1, got \"" + bind + "\"";
-  }
-  std::string shown = bind.substr(0, 80);
-  for (char& ch : shown)
-    if (static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) >= 0x7f) ch = '?';
-  return "--bind: expected an IPv4 address such as 127.0.0.1 (or localhost), got \"" + shown + "\"";
-}
-
-bool IsLoopbackAddress(const std::string& bind) {
-  if (bind == "localhost" || bind == "::1" || bind == "[::1]") return true;
-  in_addr a{};
-  return inet_pton(AF_INET, bind.c_str(), &a) == 1 && (ntohl(a.s_addr) >> 24) == 127;
-}
 
 std::string MakeToken() {
   std::ifstream in("/dev/urandom", std::ios::binary);
@@ -456,7 +425,7 @@ struct LiveServer::Impl {
     if (host == bound || host == "[" + bound + "]") return true;
     // Bound to every interface: any of the machine's addresses, so any address literal.
     if (bound == "0.0.0.0" || bound == "::" || bound == "[::]")
-      return IsIpv4(host) || (host.size() > 2 && host.front() == '[' && IsIpv6(host.substr(1, host.size() - 2)));
+      return IsIpv4Address(host) || (host.size() > 2 && host.front() == '[' && IsIpv6Address(host.substr(1, host.size() - 2)));
     return false;
   }
 
@@ -778,7 +747,7 @@ LiveServer::LiveServer(LiveSession& session, const ServerOptions& options)
     throw Error("live: " + why);
   mg_init_library(0);
   const std::string& address = impl_->listen_address;
-  const std::string ports = (IsIpv6(address) ? "[" + address + "]" : address) + ":" +
+  const std::string ports = (IsIpv6Address(address) ? "[" + address + "]" : address) + ":" +
                             std::to_string(options.port);
   const std::string threads = std::to_string(options.max_viewers + kSpareWorkers);
   // Nagle's algorithm would hold each frame's tail for ~25 ms: off. No CORS: civetweb's
@@ -812,7 +781,7 @@ int LiveServer::port() const { return impl_->port; }
 
 std::string LiveServer::url() const {
   const std::string& a = impl_->listen_address;
-  std::string u = "http://" + (IsIpv6(a) ? "[" + a + "]" : a) + ":" + std::to_string(impl_->port) + "/";
+  std::string u = "http://" + (IsIpv6Address(a) ? "[" + a + "]" : a) + ":" + std::to_string(impl_->port) + "/";
   if (!impl_->options.token.empty()) u += "?token=" + impl_->options.token;
   return u;
 }

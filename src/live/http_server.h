@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "live/bind_address.h"
 #include "live/live_session.h"
 
 namespace cablefilm {
@@ -23,11 +24,6 @@ struct ServerOptions {
   std::string token;               // empty: none asked (loopback); else every request needs it
 };
 
-// Why `bind` cannot be listened on ("" if it can): an IPv4 address or "localhost" (and an
-// IPv6 address where civetweb was built with IPv6). Checked before anything is loaded.
-std::string BindAddressProblem(const std::string& bind);
-// 127.0.0.0/8, ::1 and localhost: only this machine can connect.
-bool IsLoopbackAddress(const std::string& bind);
 // 128 bits from /dev/urandom as 32 hex digits; throws Error if it cannot be read.
 std::string MakeToken();
 

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "view/film_clock.h"
 #include "view/film_writer.h"
+#include "view/max_tension_figure.h"
 #include "view/scene_view_builder.h"
 #include "view/time_trace.h"
 #include "view/world_box.h"
@@ -47,65 +48,6 @@ FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>&
   policy.box =
       ShownBox({lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z()}, view.sea, run.model.env.wave);
   return policy;
-}
-
-namespace {
-
-// The largest finite value of a series and its time (NaN when none).
-void FindPeak(const std::vector<double>& t, const std::vector<double>& v, PictureReport* r) {
-  for (std::size_t i = 0; i < t.size() && i < v.size(); ++i)
-    if (std::isfinite(v[i]) && !(v[i] <= r->peak)) {
-      r->peak = v[i];
-      r->peak_t = t[i];
-    }
-}
-
-}  // namespace
-
-PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<RowMaxima>& rows,
-                                    const std::string& out_dir, const std::string& shader_dir,
-                                    bool complete, const std::string& what) {
-  const std::string name = complete ? "max_tension.png" : "max_tension.partial.png";
-  // The time axis spans the rows of every series (all have the same output times).
-  double t_end = 0;
-  for (const RowMaxima& r : rows) {
-    MaxTensionLog::Cursor c(*r.rows);
-    double t, v;
-    while (c.Next(std::numeric_limits<double>::infinity(), &t, &v)) t_end = std::max(t_end, t);
-  }
-  std::vector<MaxTensionSeries> series;
-  PictureReport report;
-  std::string peak_label;
-  for (const RowMaxima& r : rows) {
-    ThinnedTrace trace(1, t_end > 0 ? t_end / 8192 : 0);
-    MaxTensionLog::Cursor c(*r.rows);
-    double t, v;
-    while (c.Next(std::numeric_limits<double>::infinity(), &t, &v)) trace.Add(t, v);
-    series.push_back({r.label, trace.times(), trace.values(), r.breaking_load});
-    const double before = report.peak;
-    FindPeak(trace.times(), trace.values(), &report);
-    if (!(report.peak == before)) peak_label = r.label;
-  }
-  std::string title = "Maximum tension along " + what + ": " + scene.title;
-  if (!complete) title += " (cut short)";
-  try {
-    WriteMaxTensionPng(out_dir + "/" + name, series, 1600, 900, title, shader_dir);
-  } catch (const Error& e) {
-    throw Error(name + " could not be drawn with the off-screen (OSMesa) renderer: " + e.what());
-  }
-  std::printf("wrote %s/%s (maximum tension of every output row: peak %.6g N at t = %.4g s%s)\n",
-              EscapeText(out_dir).c_str(), name.c_str(), report.peak, report.peak_t,
-              rows.size() > 1 ? (", " + EscapeText(peak_label)).c_str() : "");
-  return report;
-}
-
-PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<const Run*>& runs,
-                                    const std::string& out_dir, const std::string& shader_dir,
-                                    bool complete) {
-  std::vector<RowMaxima> rows;
-  for (const Run* run : runs)
-    rows.push_back({run->label, &run->row_max, SingleBreakingLoad(run->model.line.breaking_load)});
-  return WriteMaxTensionFigure(scene, rows, out_dir, shader_dir, complete, "the cable");
 }
 
 bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,

@@ -63,33 +63,6 @@ SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& ru
 FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>& runs,
                            const FilmRequest& request, double duration);
 
-// One series of max_tension.png: its name and its rows' largest tensions (the run's or a
-// system's line's record, borrowed).
-struct RowMaxima {
-  std::string label;
-  const MaxTensionLog* rows = nullptr;
-  double breaking_load = std::numeric_limits<double>::quiet_NaN();  // the line's one MBL [N]
-};
-
-// <out_dir>/max_tension.png, or max_tension.partial.png when the rows are those of a run cut
-// short (`complete` false): every series on one pair of axes, thinned to the extremes of each
-// 1/8192 of the time axis (ThinnedTrace), so that the largest value drawn is the rows' peak
-// (reported, with the series holding it when there are several). `what` is what the title
-// names, e.g. "the cable". Throws Error when it cannot be drawn (e.g. no off-screen OSMesa
-// context), saying so.
-PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<RowMaxima>& series,
-                                    const std::string& out_dir, const std::string& shader_dir,
-                                    bool complete, const std::string& what);
-
-// <out_dir>/max_tension.png, or max_tension.partial.png when the rows are those of a run cut
-// short (`complete` false): every run's rows on one pair of axes, thinned to the extremes of
-// each 1/8192 of the time axis (ThinnedTrace), so that the largest value drawn is the rows'
-// peak. Only the runs' labels and row maxima are used. Throws Error when it cannot be drawn
-// (e.g. no off-screen OSMesa context), saying so.
-PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<const Run*>& runs,
-                                    const std::string& out_dir, const std::string& shader_dir,
-                                    bool complete);
-
 // Renders film.mp4 of the runs, a line each (MakeFilmScene): every run after the first drawn
 // over it on the same colour range. Frames are at k x speed / fps and, when the run's end is not on one, at its end.
 // Returns false if `stop` was raised (the film is then closed at the last frame drawn, as

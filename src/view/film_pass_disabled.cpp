@@ -2,22 +2,21 @@
 #include <cstdio>
 
 #include "view/film_pass.h"
+#include "view/max_tension_figure.h"
 #include "view/system_film.h"
 
 namespace cablefilm {
 
 PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<RowMaxima>&,
-                                    const std::string&, const std::string&, bool complete,
-                                    const std::string&) {
+                                    const std::string&, bool complete, const std::string&) {
   std::printf("%s: not drawn (this build has no renderer: CABLEFILM_RENDER=OFF)\n",
               complete ? "max_tension.png" : "max_tension.partial.png");
   return {};
 }
 
 PictureReport WriteSystemMaxTensionFigure(const SceneDef& scene, const SystemRun&,
-                                          const std::string& out_dir,
-                                          const std::string& shader_dir, bool complete) {
-  return WriteMaxTensionFigure(scene, std::vector<RowMaxima>{}, out_dir, shader_dir, complete, "");
+                                          const std::string& out_dir, bool complete) {
+  return WriteMaxTensionFigure(scene, std::vector<RowMaxima>{}, out_dir, complete, "");
 }
 
 bool RenderSystemFilm(const SceneDef&, const SystemRun&, const FilmRequest&,
@@ -27,7 +26,7 @@ bool RenderSystemFilm(const SceneDef&, const SystemRun&, const FilmRequest&,
 }
 
 PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<const Run*>&,
-                                    const std::string&, const std::string&, bool complete) {
+                                    const std::string&, bool complete) {
   std::printf("%s: not drawn (this build has no renderer: CABLEFILM_RENDER=OFF)\n",
               complete ? "max_tension.png" : "max_tension.partial.png");
   return {};

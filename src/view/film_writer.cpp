@@ -15,22 +15,10 @@
 #include "core/error.h"
 #include "encode/png_writer.h"
 #include "encode/video_encoder.h"
+#include "view/max_tension_figure.h"
 #include "view/renderer.h"
 
 namespace cablefilm {
-
-void WriteMaxTensionPng(const std::string& path, const std::vector<MaxTensionSeries>& series,
-                        int width, int height, const std::string& title,
-                        const std::string& shader_dir, const std::string& font_path) {
-  const Frame frame = MakeMaxTensionFigure(title, series, width, height);
-  RenderOptions ro;
-  ro.width = width;
-  ro.height = height;
-  ro.shader_dir = shader_dir;
-  ro.font_path = font_path;
-  Renderer renderer(ro);
-  WritePng(path, renderer.Draw(frame));
-}
 
 struct FilmWriter::Impl {
   FilmOptions options;
@@ -192,7 +180,7 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
                          scene.title.empty()
                              ? "Maximum tension along the cable"
                              : "Maximum tension along the cable \u2014 " + scene.title,
-                         options.shader_dir, options.font_path);
+                         options.font_path);
     }
   } catch (...) {
     SetError(std::current_exception());

@@ -71,11 +71,4 @@ class FilmWriter {
   std::unique_ptr<Impl> impl_;
 };
 
-// The paper's Figure 1 as a still: every series on one pair of axes (light theme, for print).
-// Renders in its own off-screen context; written whole or not at all. Throws Error.
-void WriteMaxTensionPng(const std::string& path, const std::vector<MaxTensionSeries>& series,
-                        int width = 1600, int height = 900,
-                        const std::string& title = "Maximum tension along the cable",
-                        const std::string& shader_dir = "", const std::string& font_path = "");
-
 }  // namespace cablefilm

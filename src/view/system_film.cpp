@@ -60,16 +60,6 @@ FixedPolicy MakeSystemFilmPolicy(const SceneView& view, const SystemRun& run,
   return policy;
 }
 
-PictureReport WriteSystemMaxTensionFigure(const SceneDef& scene, const SystemRun& run,
-                                          const std::string& out_dir,
-                                          const std::string& shader_dir, bool complete) {
-  std::vector<RowMaxima> rows;
-  for (std::size_t i = 0; i < run.row_max.size(); ++i)
-    rows.push_back({run.sys.line_names[i], &run.row_max[i],
-                    SingleBreakingLoad(run.sys.lines[i].line.breaking_load)});
-  return WriteMaxTensionFigure(scene, rows, out_dir, shader_dir, complete, "each line");
-}
-
 bool RenderSystemFilm(const SceneDef& scene, const SystemRun& run, const FilmRequest& request,
                       const std::atomic<int>& stop, PictureReport* report) {
   const SystemModel& sys = run.sys;

@@ -28,13 +28,6 @@ SceneView MakeSystemFilmScene(const SceneDef& scene, const SystemRun& run,
 FixedPolicy MakeSystemFilmPolicy(const SceneView& view, const SystemRun& run,
                                  const FilmRequest& request, double duration);
 
-// max_tension.png (max_tension.partial.png when not `complete`): each line's largest tension
-// of every row against time, a curve a line named by it; reports the largest of all and its
-// time. Throws Error when it cannot be drawn.
-PictureReport WriteSystemMaxTensionFigure(const SceneDef& scene, const SystemRun& run,
-                                          const std::string& out_dir,
-                                          const std::string& shader_dir, bool complete);
-
 // Renders film.mp4 of the system (frames as film_clock.h places them). Returns false if `stop`
 // was raised (the film then closed at the last frame drawn, as film.partial.mp4). `report`
 // (optional): the film's time plot at its last frame, over all the lines (its peak the largest

@@ -1,4 +1,5 @@
 #include "view/film_writer.h"
+#include "view/max_tension_figure.h"
 
 #include <gtest/gtest.h>
 

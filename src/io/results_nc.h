@@ -1,0 +1,61 @@
+#pragma once
+// results.nc (NetCDF-4) as the runs see it: a sink of rows, committed whole or under a partial
+// name. The writers (io/netcdf_results.h, a line's; io/system_netcdf.h, a system's) link
+// libnetcdf and HDF5, which take 25 ms to load: the program reaches them through a module it
+// loads when a run writes results.nc (src/modules/), the tests and the Python module directly
+// (io/results_nc_direct.cpp). Either way the Open functions below.
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+
+#include "core/data.h"
+#include "core/inputs.h"
+#include "core/model.h"
+#include "core/system.h"
+#include "run/driver.h"
+#include "run/system_run.h"
+
+namespace cablefilm {
+
+// The global attributes beside Conventions = "CF-1.8".
+struct NetcdfResultsInfo {
+  std::string title;          // the scene's title
+  std::string scene_file;     // its path, as given
+  std::string scene;          // its text
+  std::string version;        // the program's: "0.1 (git 1a2b3c4)"
+  std::string model;          // "elastic" or "inextensible"
+  std::string initial_state;  // "equilibrium" or "straight"
+};
+
+// A line's results.nc: every row's positions and tensions.
+class LineResultsNc : public RowSink {
+ public:
+  // One output row. Throws Error on a write error (of this row or of an earlier chunk).
+  virtual void Append(const State& state, const Eigen::VectorXd& tension) = 0;
+  bool Row(const Data& d) override {
+    Append(d.state, d.tension());
+    return true;
+  }
+  // Writes the rows still waiting, closes and renames; throws Error on a write error.
+  virtual void Commit() = 0;                                // the complete file, under its name
+  virtual void CommitPartial(const std::string& path) = 0;  // an incomplete run, another name
+};
+
+// A system's results.nc: points, lines' end tensions, bodies.
+class SystemResultsNc : public SystemRowSink {
+ public:
+  virtual void Commit() = 0;
+  virtual void CommitPartial(const std::string& path) = 0;
+};
+
+// Create `path`'s temporary file and write what does not change over time. Throw Error. The
+// objects keep references to `m`, `sys` and `in`, which must outlive them.
+std::unique_ptr<LineResultsNc> OpenLineResultsNc(const std::string& path,
+                                                 const NetcdfResultsInfo& info, const Model& m,
+                                                 const State& initial,
+                                                 const Eigen::VectorXd& initial_tension);
+std::unique_ptr<SystemResultsNc> OpenSystemResultsNc(const std::string& path,
+                                                     const NetcdfResultsInfo& info,
+                                                     const SystemModel& sys, const Inputs& in);
+
+}  // namespace cablefilm

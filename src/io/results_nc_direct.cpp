@@ -1,0 +1,23 @@
+// OpenLineResultsNc and OpenSystemResultsNc for what links the NetCDF writers directly (the
+// tests, the Python module, the NetCDF module itself); the program has its own, through the
+// module (src/modules/netcdf_client.cpp).
+#include "io/netcdf_results.h"
+#include "io/results_nc.h"
+#include "io/system_netcdf.h"
+
+namespace cablefilm {
+
+std::unique_ptr<LineResultsNc> OpenLineResultsNc(const std::string& path,
+                                                 const NetcdfResultsInfo& info, const Model& m,
+                                                 const State& initial,
+                                                 const Eigen::VectorXd& initial_tension) {
+  return std::make_unique<NetcdfResultsWriter>(path, info, m, initial, initial_tension);
+}
+
+std::unique_ptr<SystemResultsNc> OpenSystemResultsNc(const std::string& path,
+                                                     const NetcdfResultsInfo& info,
+                                                     const SystemModel& sys, const Inputs& in) {
+  return std::make_unique<SystemResultsWriter>(path, info, sys, in);
+}
+
+}  // namespace cablefilm

@@ -1,0 +1,29 @@
+// results.nc as the program opens it (io/results_nc.h): through cablefilm_netcdf.so, loaded on
+// the first file, so that a process that writes none never loads libnetcdf and HDF5.
+#include "modules/module_api.h"
+#include "modules/module_loader.h"
+
+namespace cablefilm {
+namespace {
+
+const NetcdfModuleApi& Netcdf() {
+  return *static_cast<const NetcdfModuleApi*>(
+      LoadModuleTable(kNetcdfModuleFile, kNetcdfModuleEntry, ModuleAbi(), "results.nc"));
+}
+
+}  // namespace
+
+std::unique_ptr<LineResultsNc> OpenLineResultsNc(const std::string& path,
+                                                 const NetcdfResultsInfo& info, const Model& m,
+                                                 const State& initial,
+                                                 const Eigen::VectorXd& initial_tension) {
+  return Netcdf().open_line(path, info, m, initial, initial_tension);
+}
+
+std::unique_ptr<SystemResultsNc> OpenSystemResultsNc(const std::string& path,
+                                                     const NetcdfResultsInfo& info,
+                                                     const SystemModel& sys, const Inputs& in) {
+  return Netcdf().open_system(path, info, sys, in);
+}
+
+}  // namespace cablefilm
