@@ -73,6 +73,13 @@ void WriteRunReport(const std::string& path, const RunSummary& f) {
                  f.utilisation_mbl);
     std::fprintf(out, "utilisation_material = %s\n", TomlString(f.utilisation_material).c_str());
   }
+  if (!f.refinement.empty()) {  // snaps unresolved: how far the peak moves when refined
+    std::fprintf(out, "refinement = %s\n", TomlString(f.refinement).c_str());
+    std::fprintf(out, "peak_refined = %.10g         # [N], the peak of the same run so refined\n",
+                 f.refined_peak);
+    std::fprintf(out, "peak_refined_change = %.6g   # [1], (peak_refined - peak_tension) / peak_tension\n",
+                 f.refined_peak_change);
+  }
   std::fprintf(out, "peak_converged = %s\n", f.peak_converged() ? "true" : "false");
   std::fprintf(out, "warnings = [");
   for (size_t i = 0; i < warnings.size(); ++i)
@@ -123,6 +130,9 @@ bool ReadRunReport(const std::string& path, RunSummary* s) {
   s->utilisation_mbl = number("utilisation_breaking_load", nan);
   s->utilisation_material = r["utilisation_material"].value<std::string>().value_or("");
   s->utilisation_line = r["utilisation_line"].value<std::string>().value_or("");
+  s->refinement = r["refinement"].value<std::string>().value_or("");
+  s->refined_peak = number("peak_refined", nan);
+  s->refined_peak_change = number("peak_refined_change", nan);
   s->warnings.clear();
   if (const toml::array* w = r["warnings"].as_array())
     for (const toml::node& n : *w) s->warnings.push_back(n.value<std::string>().value_or(""));

@@ -47,6 +47,12 @@ struct RunSummary {
   double utilisation_mbl = std::numeric_limits<double>::quiet_NaN();      // [N]
   int utilisation_link = -1;
   std::string utilisation_material, utilisation_line;
+  // Snaps unresolved in time (stats.record.unresolved_snaps): the same run made again with a
+  // stricter step control (`refinement`, e.g. "tolerance / 10"), its peak [N] and the relative
+  // change of the peak it gives [1]; NaN and empty when not made (nothing unresolved).
+  std::string refinement;
+  double refined_peak = std::numeric_limits<double>::quiet_NaN();
+  double refined_peak_change = std::numeric_limits<double>::quiet_NaN();
   bool completed = false;         // every row; false: stopped, or a blow-up (`failure`)
   std::string failure;            // a blow-up's message
   std::vector<std::string> warnings;  // why the peak cannot be trusted (TrustWarnings)
