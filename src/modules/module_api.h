@@ -37,6 +37,12 @@ inline std::string ModuleAbi() {
          std::to_string(sizeof(LiveCommandOptions));
 }
 
+// ModuleAbi() kept for the process's life: what a module's table points to.
+inline const char* ModuleAbiText() {
+  static const std::string abi = ModuleAbi();
+  return abi.c_str();
+}
+
 struct RenderModuleApi {
   const char* abi;  // ModuleAbi() of the module's build
   bool (*render_film)(const SceneDef&, const std::vector<const Run*>&, const FilmRequest&,
