@@ -190,22 +190,28 @@ void CheckPeakUnderRefinement(const SceneDef& scene, const Model& m, RunSummary*
     sim.safety_factor /= 4;
     how = "safety_factor / 4";
   }
-  Run r = PrepareRun(refined, m, "refined", &g_signal);
-  ProgressSink progress("checking the peak under refinement (" + how + ")", r.grid.end());
-  ExecuteRun(r, {&progress});
-  progress.Finish();
   s->refinement = how;
-  if (!r.summary.completed) {
-    s->refinement += r.summary.failure.empty() ? " (interrupted)"
-                                               : " (failed: " + r.summary.failure + ")";
+  RunSummary rs;
+  try {  // the run's own files are written: a failure here is reported, not thrown
+    Run r = PrepareRun(refined, m, "refined", &g_signal);
+    ProgressSink progress("checking the peak under refinement (" + how + ")", r.grid.end());
+    ExecuteRun(r, {&progress});
+    progress.Finish();
+    rs = r.summary;
+  } catch (const Error& e) {
+    rs.completed = false;
+    rs.failure = e.what();
+  }
+  if (!rs.completed) {
+    s->refinement += rs.failure.empty() ? " (interrupted)" : " (failed: " + rs.failure + ")";
     std::printf("snap check: the refined run (%s) did not finish\n", s->refinement.c_str());
     return;
   }
-  s->refined_peak = r.summary.peak;
-  s->refined_peak_change = (r.summary.peak - s->peak) / s->peak;
+  s->refined_peak = rs.peak;
+  s->refined_peak_change = (rs.peak - s->peak) / s->peak;
   std::printf("snap check: refined (%s: %ld steps against %ld), the peak is %.6g N at t = %.4g s, "
               "%+.3g %% from %.6g N\n",
-              how.c_str(), r.summary.stats.steps, s->stats.steps, r.summary.peak, r.summary.peak_t,
+              how.c_str(), rs.stats.steps, s->stats.steps, rs.peak, rs.peak_t,
               100 * s->refined_peak_change, s->peak);
 }
 
