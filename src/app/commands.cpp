@@ -83,8 +83,12 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
     if (damping_hi > damping_lo * (1 + 1e-9)) std::printf(" to %.4g", damping_hi);
     std::printf(" N s/m per m (%s), friction %.3g", m.env.seabed.damping < 0 ? "critical" : "given",
                 m.env.seabed.friction);
-    if (m.env.seabed.friction > 0)
-      std::printf(" (regularised over %.3g m/s)", m.env.seabed.friction_velocity);
+    if (m.env.seabed.friction > 0 && m.env.seabed.friction_model == FrictionModel::kSmoothed)
+      std::printf(" (smoothed over %.3g m/s)", m.env.seabed.friction_velocity);
+    else if (m.env.seabed.friction > 0)
+      std::printf(" (stick-slip, shear stiffness %.4g N/m per m)",
+                  m.env.seabed.friction_stiffness > 0 ? m.env.seabed.friction_stiffness
+                                                      : m.env.seabed.stiffness);
     std::printf("; a line resting on it sinks at most %.3g mm (station %d)\n", 1e3 * sink,
                 deepest);
   }

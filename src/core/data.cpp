@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/seabed_friction.h"
 #include "core/stability.h"
 
 namespace cablefilm {
@@ -13,6 +14,7 @@ Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, cons
   d.options = options;
   d.state = state;
   d.forces.Resize(links);
+  ResetFrictionAnchors(m, state.x, d.forces.geometry);  // the state starts at rest on the bed
   d.water = SceneWater(m);
   UpdateWater(m, in, state.t, &d.water);
   d.a = Points::Zero(kDim, n);
@@ -39,6 +41,7 @@ Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, cons
     case Scheme::kInextensible:
       w.constraints = ConstraintSolver(m);
       w.trial.Resize(links);
+      w.trial.geometry.friction_anchor = d.forces.geometry.friction_anchor;
       w.constraints.Accelerations(m, in, d.water, state.t, state.x, state.v, d.forces, d.a);
       break;
   }

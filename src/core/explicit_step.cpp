@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/cancel.h"
+#include "core/seabed_friction.h"
 
 namespace cablefilm {
 namespace {
@@ -97,6 +98,7 @@ void Commit(const Model& m, Data& d, const Inputs& in, double h) {
   }
   ComputeAccelerations(m, in, d.water, t1, s.x, w.v_pred, d.forces, d.a);
   for (int j = j0; j <= j1; ++j) s.v.col(j) += 0.5 * h * d.a.col(j);
+  UpdateFrictionAnchors(m, s.x, s.v, d.forces.geometry);
   s.t = t1;
   ++d.stats.steps;
   d.snaps.Observe(t1, h, d.forces.geometry.length);
@@ -123,6 +125,7 @@ void FixedStep(const Model& m, Data& d, const Inputs& in, double dt) {
   }
   ComputeAccelerations(m, in, d.water, t1, s.x, v_pred, d.forces, d.a);
   for (int j = j0; j <= j1; ++j) s.v.col(j) += 0.5 * dt * d.a.col(j);
+  UpdateFrictionAnchors(m, s.x, s.v, d.forces.geometry);
   s.t = t1;
   ++d.stats.steps;
   d.snaps.Observe(t1, dt, d.forces.geometry.length);

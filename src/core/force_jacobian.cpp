@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/seabed_friction.h"
 #include "core/wave_forces.h"
 
 namespace cablefilm {
@@ -136,7 +137,11 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
     //   -dF_h/dv_h = mu N dg/dv_h,
     //   dg/dv_h = sech^2(s) / v_f e e^T + tanh(s) / |v_h| (I_h - e e^T),  e = v_h / |v_h|,
     //   s = |v_h| / v_f (1 / v_f I_h at rest), I_h the identity on the horizontal axes.
+    // Stick-slip (seabed_friction.h): F_h = -K s - C v_h sticking, mu N u sliding;
+    //   -dF_h/dx_h - kv dF_h/dv_h = scale (K + kv C) across,  -dF_h/d(y, v_y) as above with
+    //   mu u in place of -mu g (sliding; nothing sticking).
     const SeabedSpec& bed = m.env.seabed;
+    const bool sticks = HasStickSlip(m);
     for (int j = j0; j <= j1; ++j) {
       const double p = bed.y - g.elevation[j];
       if (!(p > 0)) continue;
@@ -144,7 +149,13 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
       if (!(r.N > 0)) continue;
       Mat B = Mat::Zero();
       B(kVertical, kVertical) = r.dN_dp - kv * r.dN_dvy;
-      if (bed.friction > 0) {
+      if (bed.friction > 0 && sticks && g.stick.cols() > 0) {
+        const double K = m.line.friction_stiffness[j], C = m.line.friction_damping[j];
+        const StickSlipForce f = StickSlipFriction(bed.friction, r.N, K, C, g.stick.col(j),
+                                                   HorizontalPart(v.col(j)));
+        if (f.sliding) B.col(kVertical) += f.force / r.N * B(kVertical, kVertical);
+        B += (f.scale * (K + kv * C)) * f.across;
+      } else if (bed.friction > 0 && !sticks) {
         const Vec gj = SlidingDirection(v.col(j), bed);
         B.col(kVertical) -= bed.friction * B(kVertical, kVertical) * gj;
         Mat I_h = Mat::Identity();

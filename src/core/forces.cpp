@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/seabed_friction.h"
 #include "core/wave_forces.h"
 
 namespace cablefilm {
@@ -31,6 +32,7 @@ void ComputeGeometry(const Model& m, const Water& water, double t, const Points&
                      LinkGeometry& g) {
   ComputeGeometry(x, g);
   if (m.has_waves()) ComputeSea(m, water, t, x, g.sea);
+  ComputeStick(x, g);
 }
 
 
@@ -75,16 +77,26 @@ SeabedReaction SeabedNormal(const Model& m, int j, double p, double vy) {
 
 namespace {
 
-// The seabed on the stations below it: N up, -mu N tanh(|v_h| / v_f) v_h / |v_h| against the
-// sliding velocity v_h (force_jacobian.cpp differentiates the same expressions).
+// The seabed on the stations below it: N up, and the friction along it: stick-slip
+// (seabed_friction.h; none without anchors: a state at rest, statics) or smoothed,
+// -mu N tanh(|v_h| / v_f) v_h / |v_h| against the sliding velocity v_h (force_jacobian.cpp
+// differentiates the same expressions).
 void AddSeabedForces(const Model& m, const LinkGeometry& g, const Points& v, Points& force) {
   const SeabedSpec& bed = m.env.seabed;
+  const bool sticks = HasStickSlip(m);
   for (int j = 0; j <= m.line.links; ++j) {
     const double p = bed.y - g.elevation[j];  // penetration [m]
     if (!(p > 0)) continue;
     const double N = SeabedNormal(m, j, p, v(kVertical, j)).N;
     force(kVertical, j) += N;
-    if (bed.friction > 0) force.col(j) -= bed.friction * N * SlidingDirection(v.col(j), bed);
+    if (!(bed.friction > 0)) continue;
+    if (!sticks)
+      force.col(j) -= bed.friction * N * SlidingDirection(v.col(j), bed);
+    else if (g.stick.cols() > 0)
+      force.col(j) += StickSlipFriction(bed.friction, N, m.line.friction_stiffness[j],
+                                        m.line.friction_damping[j], g.stick.col(j),
+                                        HorizontalPart(v.col(j)))
+                          .force;
   }
 }
 

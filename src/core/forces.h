@@ -28,6 +28,11 @@ struct LinkGeometry {
   Eigen::VectorXd elevation;  // y_j of the stations [m] (size s+1): the seabed, the current
                               // profile
   SeaState sea;               // the waves' water at the stations (only with waves)
+  // The stick-slip friction (seabed_friction.h; empty without it, and in statics):
+  Points friction_anchor;  // a_j, where station j last slid on the bed [m] (kDim x s+1, y 0):
+                           // state, not geometry, carried here so that every force
+                           // evaluation of a Data sees it; moved only when a step is accepted
+  Points stick;            // x_h - a_j [m], the shear spring's stretch (kDim x s+1)
 };
 
 struct ForceWorkspace {
@@ -91,8 +96,8 @@ struct SeabedReaction {
 };
 SeabedReaction SeabedNormal(const Model& m, int j, double p, double vy);
 
-// The friction's direction and size without mu N: tanh(|v_h| / v_f) v_h / |v_h| for the
-// sliding velocity v_h = (v_x, 0, v_z) of a station on the bed (0 when it is at rest).
+// The smoothed friction's (FrictionModel::kSmoothed) direction and size without mu N:
+// tanh(|v_h| / v_f) v_h / |v_h| for the sliding velocity v_h = (v_x, 0, v_z) of a station on the bed (0 when it is at rest).
 inline Vec SlidingDirection(const Vec& v, const SeabedSpec& bed) {
   const Vec vh = HorizontalPart(v);
   const double speed = vh.norm();  // [m/s]

@@ -1,6 +1,7 @@
 #include "core/implicit_stages.h"
 
 #include "core/force_jacobian.h"
+#include "core/seabed_friction.h"
 
 namespace cablefilm {
 namespace {
@@ -154,6 +155,7 @@ void Commit(const Model& m, Data& d, double h) {
     d.a.col(j) = w.a.col(j);
     d.abar.col(j) = w.abar.col(j);
   }
+  UpdateFrictionAnchors(m, s.x, s.v, d.forces.geometry);
   s.t += h;
   ++d.stats.steps;
   d.snaps.Observe(s.t, h, d.forces.geometry.length);

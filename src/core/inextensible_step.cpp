@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/cancel.h"
+#include "core/seabed_friction.h"
 
 namespace cablefilm {
 namespace {
@@ -30,6 +31,7 @@ bool Trial(const Model& m, Data& d, const Inputs& in, double h) {
     w.v_pred.col(j) = w.v.col(j);
   }
   if (!w.constraints.ProjectPositions(m, w.x, 1e-13)) return false;
+  w.trial.geometry.friction_anchor = d.forces.geometry.friction_anchor;  // same size: no copy
   w.constraints.Accelerations(m, in, d.water, t1, w.x, w.v_pred, w.trial, w.a);
   for (int j = j0; j <= j1; ++j) w.v.col(j) += 0.5 * h * w.a.col(j);
   w.constraints.ProjectVelocities(m, w.x, w.v);
@@ -45,7 +47,7 @@ double LocalError(const Model& m, const Data& d, double h) {
 }
 
 // Makes the trial the state.
-void Accept(Data& d, double h) {
+void Accept(const Model& m, Data& d, double h) {
   Scratch& w = d.scratch;
   d.state.x.swap(w.x);
   d.state.v.swap(w.v);
@@ -54,6 +56,7 @@ void Accept(Data& d, double h) {
   d.forces.geometry.tangent.swap(w.trial.geometry.tangent);
   d.forces.tension.swap(w.trial.tension);
   d.forces.force.swap(w.trial.force);
+  UpdateFrictionAnchors(m, d.state.x, d.state.v, d.forces.geometry);
   d.state.t += h;
   ++d.stats.steps;
   d.snaps.ObserveStep(h);
@@ -82,11 +85,12 @@ double StableSubstep(const Model& m, const Data& d) {
     double gamma = 0;
     for (int j = m.first_free(); j <= m.last_free(); ++j) {
       const double mj = line.cable_mass[j] + m.SmallestPrismMass(j);
-      double stiffness = 2.0 * line.seabed_stiffness[j];  // at most twice the spring's (forces.cpp)
+      // At most twice the spring's (forces.cpp), or the friction's shear spring across it.
+      double stiffness = std::max(2.0 * line.seabed_stiffness[j], ShearStiffness(m, j));
       if (j > 0) stiffness += 2.0 * std::abs(T[j - 1]) / line.rest_length[j - 1];
       if (j < line.links) stiffness += 2.0 * std::abs(T[j]) / line.rest_length[j];
       lambda = std::max(lambda, stiffness / mj);
-      gamma = std::max(gamma, line.seabed_damping[j] / mj);
+      gamma = std::max(gamma, std::max(line.seabed_damping[j], ShearDamping(m, j)) / mj);
     }
     if (!(lambda > 0)) return std::numeric_limits<double>::infinity();
     const double omega = std::sqrt(lambda), zeta = gamma / (2.0 * omega);
@@ -111,7 +115,7 @@ void InextensibleStep(const Model& m, Data& d, const Inputs& in, double dt) {
            << " s: its ends are pulled further apart than the cable is long";
         throw BlowUpError(os.str(), s.t + h, m.line.links);
       }
-      Accept(d, h);
+      Accept(m, d, h);
     }
     s.t = t_end;
     CheckStateSane(m, s, d.forces.geometry.length);
@@ -130,7 +134,7 @@ void InextensibleStep(const Model& m, Data& d, const Inputs& in, double dt) {
     if (projected) {
       error = LocalError(m, d, h);
       if (error <= tolerance) {
-        Accept(d, h);
+        Accept(m, d, h);
         failures = 0;
         // A substep cut short says nothing about the size the error allows.
         if (!limited)

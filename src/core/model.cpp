@@ -145,6 +145,12 @@ Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<Pris
     // half the normal added mass of each link).
     m.seabed_stiffness = Eigen::VectorXd::Zero(s + 1);
     m.seabed_damping = Eigen::VectorXd::Zero(s + 1);
+    m.friction_stiffness = Eigen::VectorXd::Zero(s + 1);
+    m.friction_damping = Eigen::VectorXd::Zero(s + 1);
+    // The shear spring is the normal one unless the scene gives its own; its dashpot keeps the
+    // normal dashpot's ratio to critical (sqrt(K / k) times c_j).
+    const double shear = e.seabed.friction_stiffness > 0 ? e.seabed.friction_stiffness
+                                                         : e.seabed.stiffness;  // [N/m^2]
     m.seabed_rest_depth = Eigen::VectorXd::Zero(s + 1);
     m.seabed_landing_time = Eigen::VectorXd::Zero(s + 1);
     for (int i = 0; i <= s; ++i) {
@@ -159,6 +165,8 @@ Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<Pris
       m.seabed_damping[i] = e.seabed.damping >= 0
                                 ? e.seabed.damping * share
                                 : 2.0 * std::sqrt(m.seabed_stiffness[i] * mass);
+      m.friction_stiffness[i] = shear * share;
+      m.friction_damping[i] = m.seabed_damping[i] * std::sqrt(shear / e.seabed.stiffness);
       m.seabed_rest_depth[i] = std::max(std::abs(m.net_weight[i]) / m.seabed_stiffness[i], 1e-9);
       const bool critical = m.seabed_damping[i] >= 2.0 * std::sqrt(m.seabed_stiffness[i] * mass);
       m.seabed_landing_time[i] = critical ? std::sqrt(mass / m.seabed_stiffness[i])

@@ -34,8 +34,19 @@ struct CurrentProfile {
 // larger than the spring's: the reaction never pulls the line down, and it starts from 0 when
 // a falling station touches (a dashpot force c v from the first contact would be a jump that an
 // implicit step cannot land on), so 0 <= N_j <= 2 k l_j p_j. Coulomb friction against the
-// sliding velocity on the bed v_h = (v_x, 0, v_z), regularised: -mu N_j tanh(|v_h| / v_f) v_h / |v_h|. l_j is the station's share of the
-// unstretched line (half of each adjoining link).
+// sliding velocity on the bed v_h = (v_x, 0, v_z), by one of two laws (FrictionModel). l_j is
+// the station's share of the unstretched line (half of each adjoining link).
+enum class FrictionModel {
+  // Stick-slip (elastic-plastic, seabed_friction.h): a grounded station is held by a shear
+  // spring K l_j and dashpot C_j to the point a_j where it last slid, F_h = -K l_j (x_h - a_j)
+  // - C_j v_h, no larger than mu N_j; beyond it the station slides and a_j follows it. It holds
+  // a station at rest under a pull below mu N_j (no creep).
+  kStickSlip,
+  // Regularised Coulomb: -mu N_j tanh(|v_h| / v_f) v_h / |v_h|, a function of the velocity
+  // alone; a station held under a fraction r of mu N_j creeps at v_f atanh(r).
+  kSmoothed,
+};
+
 struct SeabedSpec {
   bool present = false;
   double y = 0;                  // elevation [m]
@@ -45,7 +56,12 @@ struct SeabedSpec {
                                  // times the diameter; negative: critical damping of each
                                  // station on its bed spring, c_j = 2 sqrt(k l_j m_j)
   double friction = 0;           // mu, Coulomb coefficient along the seabed
-  double friction_velocity = 0.01;  // v_f [m/s]: friction is mu N tanh(|v_h| / v_f)
+  FrictionModel friction_model = FrictionModel::kStickSlip;
+  double friction_velocity = 0.01;  // v_f [m/s], kSmoothed: friction is mu N tanh(|v_h| / v_f)
+  double friction_stiffness = -1;   // K [N/m per m of line = N/m^2], kStickSlip: the bed's
+                                    // shear stiffness under a sticking station (OrcaFlex's
+                                    // "shear stiffness"); negative: equal to `stiffness`. Its
+                                    // dashpot C_j is c_j sqrt(K / k): the normal one's ratio.
 };
 
 enum class LinkLaw {
@@ -91,6 +107,8 @@ struct Line {
   // On a seabed (environment.seabed.present; empty otherwise), per station (size s+1):
   Eigen::VectorXd seabed_stiffness;  // k l_j [N/m]
   Eigen::VectorXd seabed_damping;    // c_j [N s/m]
+  Eigen::VectorXd friction_stiffness;  // K l_j [N/m]: the stick-slip friction's shear spring
+  Eigen::VectorXd friction_damping;    // C_j [N s/m]: its dashpot
   Eigen::VectorXd seabed_rest_depth; // |W_j| / (k l_j) [m]: the penetration at which the
                                      // station's net weight rests on the bed (at least 1e-9 m)
   Eigen::VectorXd seabed_landing_time;  // sqrt(m_j / (k l_j)) [s]: the time a bed damped at

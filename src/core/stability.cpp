@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/seabed_friction.h"
+
 namespace cablefilm {
 
 StabilityLimit ComputeStabilityLimit(const Model& m) {
@@ -37,10 +39,11 @@ StabilityLimit ComputeStabilityLimit(const Model& m) {
     }
     // The seabed's spring and dashpot act on the station alone (the diagonal): any station
     // may come to rest on it, so every one counts. Its reaction is at most twice the spring's
-    // (forces.cpp), a stiffness of up to 2 k l_j.
+    // (forces.cpp), a stiffness of up to 2 k l_j; the stick-slip friction's shear spring K l_j
+    // and dashpot C_j act across it, on the horizontal axes (seabed_friction.h).
     if (m.env.seabed.present) {
-      row[0] += 2.0 * m.line.seabed_stiffness[j] / mj;
-      row[1] += m.line.seabed_damping[j] / mj;
+      row[0] += std::max(2.0 * m.line.seabed_stiffness[j], ShearStiffness(m, j)) / mj;
+      row[1] += std::max(m.line.seabed_damping[j], ShearDamping(m, j)) / mj;
     }
     if (row[0] > lambda_max) {
       lambda_max = row[0];

@@ -120,8 +120,22 @@ void ReadSeabed(TableReader& top, SceneDef& scene) {
   else
     r.Get("damping");
   b.friction = r.OptionalNonNegative("friction", 0.0, " (Coulomb coefficient)", kMaxFriction);
+  // Stick-slip unless the scene asks for the smoothed law, by name or by giving its
+  // friction_velocity (scenes written before the stick-slip law keep theirs).
+  const bool smoothed_asked = r.Has("friction_velocity");
   b.friction_velocity = r.OptionalPositive("friction_velocity", b.friction_velocity, " in m/s",
                                            kMinFrictionVelocity, kMaxFrictionVelocity);
+  b.friction_model =
+      r.Choice("friction_model", smoothed_asked ? "smoothed" : "stick_slip",
+               {"stick_slip", "smoothed"}) == "smoothed"
+          ? FrictionModel::kSmoothed
+          : FrictionModel::kStickSlip;
+  if (r.Has("friction_stiffness"))
+    b.friction_stiffness = r.OptionalPositive("friction_stiffness", b.stiffness,
+                                              " in N/m per m of line (N/m^2)",
+                                              kMinSeabedStiffness, kMaxSeabedStiffness);
+  else
+    r.Get("friction_stiffness");
   r.Finish();
 }
 

@@ -21,6 +21,7 @@
 #include "core/force_jacobian.h"
 #include "core/forces.h"
 #include "core/implicit_step.h"
+#include "core/seabed_friction.h"
 #include "core/step.h"
 #include "core/stability.h"
 #include "scene/build_model.h"
@@ -558,11 +559,14 @@ TEST(ImplicitIntegrator, StepIndependentOfStations) {
 // `sea`: a seabed through the random configuration (stiff, damped, with friction regularised
 // over 1 m/s so its velocity derivative is of the size of the others) and a sheared current
 // profile whose points fall among the stations' elevations.
+// `stick_slip`: the seabed's friction stick-slip instead (seabed_friction.h), with a shear
+// spring of the size of the links' stiffness and each station's anchor drawn at random within
+// 0.3 m, so that some grounded stations stick and others slide.
 // `axial`: tangential drag and added mass too, of the size of the normal ones but not equal to
 // them (C^T pi = 1.6 and 1.3 against C^D = 1.2 and 1.0; k^t = 0.6 and 1.3 against k = 1.0 and
 // 0.8), so that a term swapped between across and along shows.
 Model JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = false,
-                    bool axial = false) {
+                    bool axial = false, bool stick_slip = false) {
   SectionSpec a{6.0, 6, 0.05, 1e-3, 1.5, 1e6, 1.2, 1.0};   // EA = 1 kN
   SectionSpec b{4.0, 5, 0.03, 5e-4, 0.8, 4e6, 1.0, 0.8};   // EA = 2 kN
   if (axial) {
@@ -593,6 +597,8 @@ Model JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = fal
     env.seabed.damping = 150;    // [N s/m^2]
     env.seabed.friction = 0.6;
     env.seabed.friction_velocity = 1.0;
+    env.seabed.friction_model = stick_slip ? FrictionModel::kStickSlip : FrictionModel::kSmoothed;
+    env.seabed.friction_stiffness = 3e3;  // [N/m^2]: K l_j of 1.5 kN/m
   }
   if (waves) {
     // A steep short wave whose surface (0.5 +- 0.6 m) cuts through the random states' stations
@@ -661,8 +667,9 @@ double RelativeError(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& fd)
 }
 
 void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = false,
-                                             bool waves = false, bool axial = false) {
-  const Model m = JacobianModel(damping_ratio, sea, waves, axial);
+                                             bool waves = false, bool axial = false,
+                                             bool stick_slip = false) {
+  const Model m = JacobianModel(damping_ratio, sea, waves, axial, stick_slip);
   const double t = 2.0;  // [s]: the time of the sea (waves only)
   const int j0 = m.first_free(), j1 = m.last_free(), n = j1 - j0 + 1;
   ASSERT_EQ(j0, 1);
@@ -671,6 +678,7 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
   double worst_x = 0, worst_v = 0, worst_m = 0, worst_ma = 0;
   int grounded = 0;  // stations on the bed, over the trials
   int surface = 0;   // stations in the surface's band (partly wet), over the trials
+  int sticking = 0, sliding = 0;  // grounded stations of each friction branch (stick_slip)
   for (int trial = 0; trial < 5; ++trial) {
     Points x, v, a;
     RandomConfiguration(m, rng, x, v, a);
@@ -679,6 +687,26 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
       grounded += p > 0 && m.line.seabed_stiffness[j] * p > m.line.seabed_damping[j] * v(1, j);
     }
     ForceWorkspace ws(m.line.links);
+    if (stick_slip) {
+      std::uniform_real_distribution<double> u(-0.3, 0.3);
+      ws.geometry.friction_anchor = x;
+      for (int j = 0; j <= m.line.links; ++j) {
+        ws.geometry.friction_anchor(0, j) += u(rng);
+        ws.geometry.friction_anchor(1, j) = 0;
+        ws.geometry.friction_anchor(2, j) += u(rng);
+      }
+      ComputeGeometry(m, SceneWater(m), t, x, ws.geometry);
+      for (int j = j0; j <= j1; ++j) {
+        const double p = m.env.seabed.y - x(1, j);
+        if (!(p > 0)) continue;
+        const double N = SeabedNormal(m, j, p, v(1, j)).N;
+        if (!(N > 0)) continue;
+        const StickSlipForce f = StickSlipFriction(
+            m.env.seabed.friction, N, m.line.friction_stiffness[j], m.line.friction_damping[j],
+            ws.geometry.stick.col(j), HorizontalPart(v.col(j)));
+        (f.sliding ? sliding : sticking) += 1;
+      }
+    }
     if (waves) {
       ComputeGeometry(m, SceneWater(m), t, x, ws.geometry);
       for (int j = j0; j <= j1; ++j)
@@ -744,6 +772,12 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
     std::printf("[ jacobian ] %d of the 5 x %d free stations pressing on the bed\n", grounded, n);
     EXPECT_GT(grounded, 10);  // the bed's terms are exercised
   }
+  if (stick_slip) {
+    std::printf("[ jacobian ] stick-slip friction: %d grounded stations sticking, %d sliding\n",
+                sticking, sliding);
+    EXPECT_GE(sticking, 3);  // both branches are exercised
+    EXPECT_GE(sliding, 3);
+  }
   if (waves) {
     std::printf("[ jacobian ] %d of the 5 x %d free stations in the surface's band\n", surface, n);
     EXPECT_GT(surface, 5);  // the wet fraction's terms are exercised
@@ -776,6 +810,13 @@ TEST(ImplicitIntegrator, AnalyticJacobianWithSeabedAndCurrentProfileMatchesCentr
 // With waves (waves.h, wave_forces.h) and a current profile: the drag on the water's velocity
 // (its gradient), the Morison inertia on its acceleration (its gradient and the links' normal),
 // the wet fractions of stations in the surface's band (buoyancy, drag, inertia, added masses).
+// With the stick-slip seabed friction (seabed_friction.h): sticking, the shear spring and
+// dashpot on the station's horizontal position and velocity; sliding, mu N along the trial
+// force, through N on the elevation and vertical velocity too.
+TEST(ImplicitIntegrator, AnalyticJacobianWithStickSlipFrictionMatchesCentralDifferences) {
+  ExpectJacobianMatchesCentralDifferences(0.2, true, false, false, true);
+}
+
 TEST(ImplicitIntegrator, AnalyticJacobianWithWavesMatchesCentralDifferences) {
   ExpectJacobianMatchesCentralDifferences(0.2, false, true);
 }

@@ -34,10 +34,12 @@ namespace cablefilm {
 namespace {
 
 long AllocationsWhileStepping(Scheme kind, CableModelKind model, double dt,
-                              double error_tolerance, bool waves = false) {
-  SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml");
+                              double error_tolerance, bool waves = false,
+                              const char* scene_file = "polachek1963.toml") {
+  SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + scene_file);
   scene.model = model;
-  scene.environment.current = 0.5;  // every force term active: drag with current, prisms
+  if (!scene.seabed.present)
+    scene.environment.current = 0.5;  // every force term active: drag with current, prisms
   if (waves) {  // and the waves' terms, the surface 2.5 m above the moving end's rest
     scene.waves.present = true;
     scene.waves.height = 2;
@@ -97,6 +99,21 @@ TEST(NoAllocation, EverySchemeInWaves) {
             0);
   EXPECT_EQ(AllocationsWhileStepping(Scheme::kInextensible, CableModelKind::kInextensible,
                                      1.0 / 30, 1e-6, true),
+            0);
+}
+
+// On the seabed with the stick-slip friction (its anchors move as steps are accepted), in waves
+// and a sheared current: the grounded mooring scene.
+TEST(NoAllocation, EverySchemeOnTheSeabedWithStickSlipFriction) {
+  const char* grounded = "grounded_mooring.toml";
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kExplicit, CableModelKind::kElastic, 2e-4, 0,
+                                     false, grounded),
+            0);
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kImplicit, CableModelKind::kElastic, 1.0 / 30,
+                                     1e-4, false, grounded),
+            0);
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kInextensible, CableModelKind::kInextensible,
+                                     1.0 / 30, 1e-4, false, grounded),
             0);
 }
 

@@ -207,6 +207,7 @@ const std::vector<std::string>& Choices(const std::string& key) {
   static const std::vector<std::string> view = {"auto", "2d", "3d"};
   static const std::vector<std::string> file = {"motion.csv", "ship_motion.csv"};
   static const std::vector<std::string> interpolation = {"spline", "linear"};
+  static const std::vector<std::string> friction_model = {"stick_slip", "smoothed"};
   static const std::vector<std::string> none;
   if (key == "motion") return motion;
   if (key == "model") return model;
@@ -217,6 +218,7 @@ const std::vector<std::string>& Choices(const std::string& key) {
   if (key == "view") return view;
   if (key == "file") return file;
   if (key == "interpolation") return interpolation;
+  if (key == "friction_model") return friction_model;
   return none;
 }
 
@@ -365,6 +367,8 @@ constexpr KnownKey kKnownKeys[] = {
     {"seabed", "damping", Kind::kNumber},
     {"seabed", "friction", Kind::kNumber},
     {"seabed", "friction_velocity", Kind::kNumber},
+    {"seabed", "friction_model", Kind::kString},
+    {"seabed", "friction_stiffness", Kind::kNumber},
     {"waves", "height", Kind::kNumber},
     {"waves", "period", Kind::kNumber},
     {"waves", "depth", Kind::kNumber},

@@ -189,7 +189,8 @@ def strings_of(d):
 
 
 KNOWN_KEYS = ["gravity", "fluid_density", "current", "current_heading", "y", "stiffness",
-              "damping", "friction", "friction_velocity", "height", "period", "depth",
+              "damping", "friction", "friction_velocity", "friction_model", "friction_stiffness",
+              "height", "period", "depth",
               "surface_y", "phase", "heading", "ramp_rate", "name", "diameter", "area",
               "mass_per_length", "youngs_modulus", "drag_coefficient", "added_mass_coefficient",
               "axial_damping", "axial_damping_ratio", "tangential_drag_coefficient",

@@ -707,6 +707,8 @@ TEST(SceneLoader, SeabedLoadsWithDefaults) {
   EXPECT_LT(s.seabed.damping, 0);         // critical for each station
   EXPECT_EQ(s.seabed.friction, 0.0);
   EXPECT_EQ(s.seabed.friction_velocity, 0.01);
+  EXPECT_EQ(s.seabed.friction_model, FrictionModel::kStickSlip);
+  EXPECT_LT(s.seabed.friction_stiffness, 0);  // the normal stiffness
   const Model m = BuildModel(s);
   ASSERT_TRUE(m.env.seabed.present);
   // Station 1: half of each of its two links of 45.72 / 30 m.
@@ -721,7 +723,20 @@ TEST(SceneLoader, SeabedLoadsWithDefaults) {
   EXPECT_EQ(t.seabed.damping, 2e3);
   EXPECT_EQ(t.seabed.friction, 0.6);
   EXPECT_EQ(t.seabed.friction_velocity, 0.05);
+  // Giving friction_velocity asks for the smoothed law (scenes written before stick-slip).
+  EXPECT_EQ(t.seabed.friction_model, FrictionModel::kSmoothed);
   EXPECT_DOUBLE_EQ(BuildModel(t).line.seabed_damping[1], 2e3 * 45.72 / 30);
+  // Stick-slip by name, with its own shear stiffness: the spring per station is K l_j and the
+  // dashpot keeps the normal one's ratio to critical, c_j sqrt(K / k).
+  const SceneDef u = ParseScene(kBase + "\n[seabed]\ny = 0\nstiffness = 1e6\ndamping = 2e3\n"
+                                        "friction = 0.6\nfriction_velocity = 0.05\n"
+                                        "friction_model = \"stick_slip\"\n"
+                                        "friction_stiffness = 4e6\n",
+                                kFile);
+  EXPECT_EQ(u.seabed.friction_model, FrictionModel::kStickSlip);
+  const Model mu = BuildModel(u);
+  EXPECT_DOUBLE_EQ(mu.line.friction_stiffness[1], 4e6 * 45.72 / 30);
+  EXPECT_DOUBLE_EQ(mu.line.friction_damping[1], 2.0 * 2e3 * 45.72 / 30);
 }
 
 TEST(SceneLoader, SeabedErrors) {
@@ -741,6 +756,10 @@ TEST(SceneLoader, SeabedErrors) {
               {"Coulomb", "at most 10"});
   ExpectError(kBase + "\n[seabed]\ny = -1\nfriction_velocity = 0\n", "seabed.friction_velocity",
               {"m/s", "1e-9 to 1000"});
+  ExpectError(kBase + "\n[seabed]\ny = -1\nfriction_model = \"coulomb\"\n",
+              "seabed.friction_model", {"stick_slip", "smoothed"});
+  ExpectError(kBase + "\n[seabed]\ny = -1\nfriction_stiffness = 0\n", "seabed.friction_stiffness",
+              {"N/m per m of line", "from 1 to 1e12"});
   ExpectError(kBase + "\n[seabed]\ny = -1\nfrction = 0.5\n", "seabed.frction", {"unknown key"});
   ExpectError(kBase + "\n[seabed]\ny = \"deep\"\n", "seabed.y", {"elevation in m"});
   ExpectError("seabed = 3\n" + kBase, "seabed", {"expected a table"});
