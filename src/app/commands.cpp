@@ -87,8 +87,7 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
       std::printf(" (smoothed over %.3g m/s)", m.env.seabed.friction_velocity);
     else if (m.env.seabed.friction > 0)
       std::printf(" (stick-slip, shear stiffness %.4g N/m per m)",
-                  m.env.seabed.friction_stiffness > 0 ? m.env.seabed.friction_stiffness
-                                                      : m.env.seabed.stiffness);
+                  m.env.seabed.shear_stiffness());
     std::printf("; a line resting on it sinks at most %.3g mm (station %d)\n", 1e3 * sink,
                 deepest);
   }

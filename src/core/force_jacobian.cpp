@@ -149,7 +149,7 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
       if (!(r.N > 0)) continue;
       Mat B = Mat::Zero();
       B(kVertical, kVertical) = r.dN_dp - kv * r.dN_dvy;
-      if (bed.friction > 0 && sticks && g.stick.cols() > 0) {
+      if (sticks && g.stick.cols() > 0) {
         const double K = m.line.friction_stiffness[j], C = m.line.friction_damping[j];
         const StickSlipForce f = StickSlipFriction(bed.friction, r.N, K, C, g.stick.col(j),
                                                    HorizontalPart(v.col(j)));

@@ -89,14 +89,15 @@ void AddSeabedForces(const Model& m, const LinkGeometry& g, const Points& v, Poi
     if (!(p > 0)) continue;
     const double N = SeabedNormal(m, j, p, v(kVertical, j)).N;
     force(kVertical, j) += N;
-    if (!(bed.friction > 0)) continue;
-    if (!sticks)
+    if (sticks) {
+      if (g.stick.cols() > 0)  // no anchors, no friction: statics
+        force.col(j) += StickSlipFriction(bed.friction, N, m.line.friction_stiffness[j],
+                                          m.line.friction_damping[j], g.stick.col(j),
+                                          HorizontalPart(v.col(j)))
+                            .force;
+    } else if (bed.friction > 0) {
       force.col(j) -= bed.friction * N * SlidingDirection(v.col(j), bed);
-    else if (g.stick.cols() > 0)
-      force.col(j) += StickSlipFriction(bed.friction, N, m.line.friction_stiffness[j],
-                                        m.line.friction_damping[j], g.stick.col(j),
-                                        HorizontalPart(v.col(j)))
-                          .force;
+    }
   }
 }
 

@@ -97,7 +97,8 @@ struct SeabedReaction {
 SeabedReaction SeabedNormal(const Model& m, int j, double p, double vy);
 
 // The smoothed friction's (FrictionModel::kSmoothed) direction and size without mu N:
-// tanh(|v_h| / v_f) v_h / |v_h| for the sliding velocity v_h = (v_x, 0, v_z) of a station on the bed (0 when it is at rest).
+// tanh(|v_h| / v_f) v_h / |v_h| for the sliding velocity v_h = (v_x, 0, v_z) of a station on
+// the bed (0 when it is at rest).
 inline Vec SlidingDirection(const Vec& v, const SeabedSpec& bed) {
   const Vec vh = HorizontalPart(v);
   const double speed = vh.norm();  // [m/s]

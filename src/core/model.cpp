@@ -149,8 +149,7 @@ Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<Pris
     m.friction_damping = Eigen::VectorXd::Zero(s + 1);
     // The shear spring is the normal one unless the scene gives its own; its dashpot keeps the
     // normal dashpot's ratio to critical (sqrt(K / k) times c_j).
-    const double shear = e.seabed.friction_stiffness > 0 ? e.seabed.friction_stiffness
-                                                         : e.seabed.stiffness;  // [N/m^2]
+    const double shear = e.seabed.shear_stiffness();  // K [N/m^2]
     m.seabed_rest_depth = Eigen::VectorXd::Zero(s + 1);
     m.seabed_landing_time = Eigen::VectorXd::Zero(s + 1);
     for (int i = 0; i <= s; ++i) {

@@ -62,6 +62,9 @@ struct SeabedSpec {
                                     // shear stiffness under a sticking station (OrcaFlex's
                                     // "shear stiffness"); negative: equal to `stiffness`. Its
                                     // dashpot C_j is c_j sqrt(K / k): the normal one's ratio.
+  double shear_stiffness() const {  // K [N/m^2]: friction_stiffness, or the normal stiffness
+    return friction_stiffness > 0 ? friction_stiffness : stiffness;
+  }
 };
 
 enum class LinkLaw {
