@@ -34,6 +34,7 @@ Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, cons
       ComputeAccelerations(m, in, d.water, state.t, state.x, state.v, d.forces, d.a);
       d.abar = d.a;
       w.system.Resize(m.last_free() - m.first_free() + 1);
+      w.matrix_taut.assign(m.line.links, 0);
       // A displacement this small changes a link's tension by a negligible fraction of its
       // stiffness times its length: 1e-9 of the shortest link.
       w.newton_tolerance = 1e-9 * m.line.rest_length.minCoeff();

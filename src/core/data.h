@@ -67,6 +67,7 @@ struct Scratch {
   Points v_pred;            // explicit, inextensible: the predicted v_{n+1} of the drag [m/s]
   ForceWorkspace trial;     // inextensible: the forces of the trial step
   BlockTridiagonal system;  // implicit: Newton's matrix; its right-hand side
+  std::vector<char> matrix_taut;  // implicit: which links were taut when that matrix was made
   ConstraintSolver constraints;  // inextensible: the constraints' tridiagonal system
   // Constants of the model and the options, computed once:
   Eigen::VectorXd least_inertia;  // explicit: m_j + min(m^x_j, m^y_j), station j's least

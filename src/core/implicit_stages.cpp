@@ -39,7 +39,12 @@ void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlp
   }
 }
 
-void AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h) {
+bool KeepsNewtonMatrix(const Model& m) {
+  return !(m.env.seabed.present && m.env.seabed.friction > 0);
+}
+
+bool AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h,
+                    bool jacobian) {
   Scratch& w = d.scratch;
   ForceWorkspace& ws = d.forces;
   BlockTridiagonal& system = w.system;
@@ -52,23 +57,46 @@ void AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h
   ComputeGeometry(m, d.water, t1, w.x, ws.geometry);
   ComputeTensions(m, ws.geometry, w.v, ws.tension);
   ComputeStationForces(m, d.water, ws.geometry, ws.tension, w.v, ws.force);
-  system.SetZero();
-  AddInertiaJacobian(m, ws.geometry, w.a, ka, system);
-  AddForceJacobian(m, d.water, ws.geometry, ws.tension, w.v, kv, system);
+  // A link's axial stiffness is in the matrix while it is taut (force_jacobian.cpp).
+  bool same = true;
+  for (int k = 0; k < m.line.links; ++k) {
+    const char taut = ws.geometry.length[k] > m.line.rest_length[k] && ws.tension[k] > 0;
+    if (jacobian) w.matrix_taut[k] = taut;
+    else same = same && w.matrix_taut[k] == taut;
+  }
+  if (jacobian) {
+    system.SetZero();
+    AddInertiaJacobian(m, ws.geometry, w.a, ka, system);
+    AddForceJacobian(m, d.water, ws.geometry, ws.tension, w.v, kv, system);
+  }
   for (int j = j0; j <= j1; ++j)
     system.rhs[j - j0] = ws.force.col(j) - StationInertia(m, ws.geometry, j) * w.a.col(j);
+  return same;
 }
 
-double ApplyCorrection(const Model& m, Data& d) {
+double CorrectionSize(const Model& m, const Data& d) {
+  const std::vector<Vec>& dx = d.scratch.system.rhs;
+  double size = 0;
+  for (int j = 0; j <= m.last_free() - m.first_free(); ++j) {
+    const double s = dx[j].lpNorm<Eigen::Infinity>();
+    if (std::isnan(s)) return s;
+    size = std::max(size, s);
+  }
+  return size;
+}
+
+double ApplyCorrection(const Model& m, Data& d, bool* contact_changed) {
   Scratch& w = d.scratch;
   const BlockTridiagonal& system = w.system;
   const SeabedSpec& bed = m.env.seabed;
   const int j0 = m.first_free(), j1 = m.last_free();
   double dx_max = 0;
+  bool changed = false;
   for (int j = j0; j <= j1; ++j) {
     const bool above_bed = bed.present && w.x(1, j) >= bed.y;
     w.x.col(j) += system.rhs[j - j0];
     dx_max = std::max(dx_max, system.rhs[j - j0].lpNorm<Eigen::Infinity>());
+    if (bed.present && above_bed != (w.x(1, j) >= bed.y)) changed = true;
     // A station above the seabed that the iteration would drive into it (its linear model
     // knows nothing of the bed) lands at its resting penetration instead: otherwise the next
     // iteration, in the bed's stiff spring and dashpot, throws it back above and Newton
@@ -76,6 +104,7 @@ double ApplyCorrection(const Model& m, Data& d) {
     if (above_bed && w.x(1, j) < bed.y - m.line.seabed_rest_depth[j])
       w.x(1, j) = bed.y - m.line.seabed_rest_depth[j];
   }
+  if (contact_changed) *contact_changed = changed;
   return dx_max;
 }
 

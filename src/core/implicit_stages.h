@@ -15,6 +15,50 @@ namespace cablefilm {
 
 // Newton iterations a step may take before it is rejected (and retried shorter).
 constexpr int kMaxNewtonIterations = 12;
+// After the first iteration of a step Newton keeps its matrix (and its factors) while the
+// corrections contract at least this fast, and assembles it anew when they do not: within a
+// step the matrix changes by the tiny corrections only, so the kept one contracts by about
+// 1e-3 at a fraction of the cost (no Jacobian, no factoring: P63 at 60 and 600 links in half
+// the time). A station that crosses the seabed's level changes the matrix's contact: a fresh
+// one follows; and a correction of the kept matrix larger than the last is not applied (a new
+// matrix is made at the same iterate instead), since a contact it does not know can throw the
+// iterate far off (the spread mooring's touchdowns did: 2.5 times the rejected steps).
+constexpr double kFrozenJacobianRate = 0.1;
+
+// When Newton's corrections have converged: the last one below the tolerance, or, from the
+// second on, the error the iterations still leave below it. Newton contracts the error by
+// theta = |dx_k| / |dx_{k-1}| (the rate it shows), so what remains after correction k is at
+// most theta / (1 - theta) |dx_k| (Hairer & Wanner, Solving ODEs II, IV.8, eq. (8.10)); a rate
+// of 1 or more is no contraction. With the tolerance at 1e-9 of the shortest link the second
+// correction is typically 1e-7 m at a rate of 1e-3, so it leaves 1e-10 m: a third iteration
+// that would only confirm it (a third of Newton's work) is not done.
+class NewtonConvergence {
+ public:
+  explicit NewtonConvergence(double tolerance) : tolerance_(tolerance) {}
+  // The size of correction k [m] (k = 1, 2, ... in turn; not finite: not converged).
+  bool Converged(double dx) {
+    const double previous = last_;
+    last_ = dx;
+    ++corrections_;
+    theta_ = previous > 0 ? dx / previous : 0.0;
+    if (dx <= tolerance_) return true;
+    return previous > 0 && theta_ < 1 && theta_ / (1 - theta_) * dx <= tolerance_;
+  }
+  // Not converging: from the third correction on, one no smaller than the one before. A
+  // station at the seabed's contact can cycle (in the bed, thrown out, in again: the linear
+  // model sees the bed only where the iterate is): it never converges at this step, and the
+  // iterations up to kMaxNewtonIterations would be lost before the step is halved anyway.
+  bool Stalled() const { return corrections_ >= 3 && !(theta_ < 1); }
+  // The last correction's rate theta (0 after the first), and its size.
+  double rate() const { return theta_; }
+  double last() const { return last_; }
+
+ private:
+  double tolerance_;
+  double last_ = 0;    // the last correction's size [m]; 0 before the first
+  double theta_ = 0;   // the last rate
+  int corrections_ = 0;
+};
 
 // The trial step of size h: positions predicted with the pseudo-acceleration carried over,
 // prescribed ends at their positions and velocities at t + h.
@@ -22,11 +66,24 @@ void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlp
                  double h);
 // Newton's system at the trial positions: forces and tensions computed, the matrix
 // ka M + d(M a)/dx - dF/dx - kv dF/dv and the residual F - M a in d.scratch.system (rows: the
-// free stations).
-void AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h);
+// free stations). Without `jacobian` the residual alone, the matrix left as it was (and its
+// factors: a simplified Newton iteration, BlockTridiagonal::SolveFactored); false then when a
+// link went slack or taut since that matrix was made (its axial stiffness EA / l is in it or
+// not: the kept matrix no longer holds).
+bool AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h,
+                    bool jacobian = true);
+// Whether a line's Newton iterations may keep their matrix (kFrozenJacobianRate): not with
+// seabed friction, whose sticking stations hold by a shear spring far stiffer than the line
+// and let go of it when they slide: a kept matrix that still holds them converges along the
+// bed as slowly as that ratio, which the rate of the largest correction does not show (the
+// rotated grounded chain of rotational_invariance_test drifted by 2 % of its peak tension).
+bool KeepsNewtonMatrix(const Model& m);
+// The largest entry of the solution in d.scratch.system.rhs [m] (NaN if one is).
+double CorrectionSize(const Model& m, const Data& d);
 // Adds the solution in d.scratch.system.rhs to the trial positions; returns its largest entry
-// [m] (not finite if the solution is not).
-double ApplyCorrection(const Model& m, Data& d);
+// [m] (not finite if the solution is not). `contact_changed` (optional): set when a station
+// crossed the seabed's level (the matrix's contact then no longer holds).
+double ApplyCorrection(const Model& m, Data& d, bool* contact_changed = nullptr);
 // The converged trial step: its velocities, accelerations and tensions.
 void FinishSolve(const Model& m, Data& d, const GeneralizedAlpha& c, double h);
 // The local position error of the solved step [m].

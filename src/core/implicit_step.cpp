@@ -33,15 +33,33 @@ struct LineStepper {
   // converge.
   bool Solve(double h) {
     PredictStep(m, d, in, c, h);
+    NewtonConvergence newton(d.scratch.newton_tolerance);
+    BlockTridiagonal& system = d.scratch.system;
+    const bool keep = KeepsNewtonMatrix(m);
+    bool fresh = true;  // this iteration's matrix is assembled anew (else the last one's factors)
     for (int it = 1; it <= kMaxNewtonIterations; ++it) {
-      AssembleNewton(m, d, c, h);
-      if (!d.scratch.system.Solve()) return false;
-      const double dx_max = ApplyCorrection(m, d);
+      const bool holds = AssembleNewton(m, d, c, h, fresh);
+      if (fresh) {
+        if (!system.Solve()) return false;
+      } else {
+        if (holds) system.SolveFactored(system.rhs);
+        // The kept matrix no longer holds, or does not contract here: a new one at this
+        // iterate.
+        if (!holds || !(CorrectionSize(m, d) <= newton.last())) {
+          fresh = true;
+          --it;  // not an iteration: none was applied
+          continue;
+        }
+      }
+      bool contact_changed = false;
+      const double dx_max = ApplyCorrection(m, d, &contact_changed);
       if (!std::isfinite(dx_max)) return false;
-      if (dx_max <= d.scratch.newton_tolerance) {
+      if (newton.Converged(dx_max)) {
         FinishSolve(m, d, c, h);
         return true;
       }
+      if (fresh && newton.Stalled()) return false;
+      fresh = !keep || contact_changed || !(newton.rate() <= kFrozenJacobianRate);
     }
     return false;
   }

@@ -66,8 +66,9 @@ Vec CoupledCorrection(const SystemData& sd, const EndCoupling& c, const Map36& T
 
 // Line i's share of the dense system: its interior eliminated (A_II^-1 for the right-hand side
 // and for the columns coupling it to its coupled ends), the Schur complement rows of its
-// coupled ends added through their maps T. False when a pivot is singular.
-bool EliminateInterior(SystemData& sd, int i) {
+// coupled ends added through their maps T. False when a pivot is singular. Without `matrix`
+// the right-hand side alone, on the factors and columns of the last call with it.
+bool EliminateInterior(SystemData& sd, int i, bool matrix) {
   BlockTridiagonal& A = sd.lines[i].scratch.system;
   std::vector<Mat>& zs = sd.start_columns[i];
   std::vector<Mat>& ze = sd.end_columns[i];
@@ -78,29 +79,33 @@ bool EliminateInterior(SystemData& sd, int i) {
   const int f = P ? 1 : 0, l = Q ? n - 2 : n - 1;  // the interior rows
   const bool interior = f <= l;
   if (interior) {
-    if (!A.Factor(f, l)) return false;
+    if (matrix && !A.Factor(f, l)) return false;
     A.SolveFactored(A.rhs);
-    if (P) {
+    if (matrix && P) {
       for (int r = f; r <= l; ++r) zs[r].setZero();
       zs[f] = A.lower[f];
       A.SolveFactored(zs);
     }
-    if (Q) {
+    if (matrix && Q) {
       for (int r = f; r <= l; ++r) ze[r].setZero();
       ze[l] = A.upper[l];
       A.SolveFactored(ze);
     }
   }
   if (P) {  // row 0
-    AddCoupledBlock(sd, cP, TP, cP, TP, interior ? Mat(A.diag[0] - A.upper[0] * zs[f]) : A.diag[0]);
     AddCoupledRhs(sd, cP, TP, interior ? Vec(A.rhs[0] - A.upper[0] * A.rhs[f]) : A.rhs[0]);
-    if (Q) AddCoupledBlock(sd, cP, TP, cQ, TQ, interior ? Mat(-A.upper[0] * ze[f]) : A.upper[0]);
+    if (matrix) {
+      AddCoupledBlock(sd, cP, TP, cP, TP, interior ? Mat(A.diag[0] - A.upper[0] * zs[f]) : A.diag[0]);
+      if (Q) AddCoupledBlock(sd, cP, TP, cQ, TQ, interior ? Mat(-A.upper[0] * ze[f]) : A.upper[0]);
+    }
   }
   if (Q) {  // row n - 1
     const int e = n - 1;
-    AddCoupledBlock(sd, cQ, TQ, cQ, TQ, interior ? Mat(A.diag[e] - A.lower[e] * ze[l]) : A.diag[e]);
     AddCoupledRhs(sd, cQ, TQ, interior ? Vec(A.rhs[e] - A.lower[e] * A.rhs[l]) : A.rhs[e]);
-    if (P) AddCoupledBlock(sd, cQ, TQ, cP, TP, interior ? Mat(-A.lower[e] * zs[l]) : A.lower[e]);
+    if (matrix) {
+      AddCoupledBlock(sd, cQ, TQ, cQ, TQ, interior ? Mat(A.diag[e] - A.lower[e] * ze[l]) : A.diag[e]);
+      if (P) AddCoupledBlock(sd, cQ, TQ, cP, TP, interior ? Mat(-A.lower[e] * zs[l]) : A.lower[e]);
+    }
   }
   return true;
 }
@@ -138,9 +143,9 @@ Vec6 OwnLoad(const SystemModel& sys, const BodySpec& body, const Vec6& q) {
 
 // Free body k's own rows of the dense system at its trial pose: the matrix
 // ka M + kv dD/dv - dQ/dq and the residual Q + D - M a (its lines' rows come through their
-// ends).
+// ends); without `matrix` the residual alone.
 void AssembleBody(const SystemModel& sys, SystemData& sd, int k, const GeneralizedAlpha& c,
-                  double h, int offset) {
+                  double h, int offset, bool matrix) {
   BodyMotion& b = sd.bodies[k];
   const BodySpec& body = sys.bodies[sys.free_bodies[k]];
   BodyKinematics(b, c, h);
@@ -148,6 +153,8 @@ void AssembleBody(const SystemModel& sys, SystemData& sd, int k, const Generaliz
   const double kv = c.gamma / (c.beta * h);
   const Mat6 M = BodyMassMatrix(body, b.tq);
   const Vec6 Q = OwnLoad(sys, body, b.tq);
+  sd.schur_rhs.segment<6>(offset) += Q + BodyDampingLoad(body, b.tv) - M * b.ta;
+  if (!matrix) return;
   Mat6 K = ka * M;
   K.diagonal() += kv * (body.linear_damping +
                         2.0 * body.quadratic_damping.cwiseProduct(b.tv.cwiseAbs()));
@@ -158,26 +165,30 @@ void AssembleBody(const SystemModel& sys, SystemData& sd, int k, const Generaliz
     K.col(col) -= (OwnLoad(sys, body, d) - Q) / step;
   }
   sd.schur.block<6, 6>(offset, offset) += K;
-  sd.schur_rhs.segment<6>(offset) += Q + BodyDampingLoad(body, b.tv) - M * b.ta;
 }
 
 // Solves Newton's system of every line and free body, coupled at the shared stations and the
 // bodies, into each line's system.rhs and the bodies' corrections (sd.schur_x). False when a
-// pivot or the dense system is singular.
-bool SolveCoupled(const SystemModel& sys, SystemData& sd, const GeneralizedAlpha& c, double h) {
+// pivot or the dense system is singular. Without `matrix` (a simplified Newton iteration) on
+// the factors of the last call with it.
+bool SolveCoupled(const SystemModel& sys, SystemData& sd, const GeneralizedAlpha& c, double h,
+                  bool matrix) {
   if (sd.schur.rows() == 0) {
-    for (Data& d : sd.lines)
-      if (!d.scratch.system.Solve()) return false;
+    for (Data& d : sd.lines) {
+      BlockTridiagonal& A = d.scratch.system;
+      if (!matrix) A.SolveFactored(A.rhs);
+      else if (!A.Solve()) return false;
+    }
     return true;
   }
-  sd.schur.setZero();
+  if (matrix) sd.schur.setZero();
   sd.schur_rhs.setZero();
   for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i)
-    if (!EliminateInterior(sd, i)) return false;
+    if (!EliminateInterior(sd, i, matrix)) return false;
   const int body0 = kDim * sys.shared_count();
   for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k)
-    AssembleBody(sys, sd, k, c, h, body0 + 6 * k);
-  sd.schur_lu.compute(sd.schur);
+    AssembleBody(sys, sd, k, c, h, body0 + 6 * k, matrix);
+  if (matrix) sd.schur_lu.compute(sd.schur);
   sd.schur_x.noalias() = sd.schur_lu.solve(sd.schur_rhs);
   if (!sd.schur_x.allFinite()) return false;
   for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i) BackSubstitute(sd, i);
@@ -251,32 +262,69 @@ struct SystemStepper {
     sd.t += h;
     ++sd.stats.steps;
   }
+  // The largest correction that the solved system holds, over its tolerance (a line's, a
+  // body's), before it is applied.
+  double CorrectionSize() const {
+    double size = 0;
+    for (int i = 0; i < lines(); ++i)
+      size = std::max(size, cablefilm::CorrectionSize(sys.lines[i], sd.lines[i]) /
+                                sd.lines[i].scratch.newton_tolerance);
+    const int body0 = kDim * sys.shared_count();
+    for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k)
+      size = std::max(size, PoseSize(sd.schur_x.segment<6>(body0 + 6 * k), sd.bodies[k].arm) /
+                                sd.newton_tolerance);
+    return size;
+  }
   bool Solve(double h) {
     for (int i = 0; i < lines(); ++i) PredictStep(sys.lines[i], sd.lines[i], in, c, h);
     for (BodyMotion& b : sd.bodies) b.tq = b.q + h * b.v + 0.5 * h * h * b.abar;
     SyncCoupled(sys, sd, false);
     const int body0 = kDim * sys.shared_count();
+    // The corrections measured against their tolerances (a line's, a body's): converged at 1.
+    NewtonConvergence newton(1.0);
+    bool keep = true;
+    for (const Model& m : sys.lines) keep = keep && KeepsNewtonMatrix(m);
+    bool fresh = true;  // this iteration's matrix is assembled anew (else the last one's factors)
     for (int it = 1; it <= kMaxNewtonIterations; ++it) {
-      for (int i = 0; i < lines(); ++i) AssembleNewton(sys.lines[i], sd.lines[i], c, h);
-      if (!SolveCoupled(sys, sd, c, h)) return false;
-      bool converged = true;
+      bool holds = true;
+      for (int i = 0; i < lines(); ++i)
+        holds = AssembleNewton(sys.lines[i], sd.lines[i], c, h, fresh) && holds;
+      if (!fresh && !holds) {  // the kept matrix no longer holds: a new one at this iterate
+        fresh = true;
+        --it;  // not an iteration: none was applied
+        continue;
+      }
+      if (!SolveCoupled(sys, sd, c, h, fresh)) return false;
+      if (!fresh && !(CorrectionSize() <= newton.last())) {  // the kept matrix does not
+        fresh = true;                                         // contract here: a new one at
+        --it;                                                 // this iterate (and none was
+        continue;                                             // applied)
+      }
+      double correction = 0;  // the largest, over its tolerance
+      bool contact_changed = false;
       for (int i = 0; i < lines(); ++i) {
-        const double dx = ApplyCorrection(sys.lines[i], sd.lines[i]);
+        bool changed = false;
+        const double dx = ApplyCorrection(sys.lines[i], sd.lines[i], &changed);
+        contact_changed = contact_changed || changed;
         if (!std::isfinite(dx)) return false;
-        converged = converged && dx <= sd.lines[i].scratch.newton_tolerance;
+        correction = std::max(correction, dx / sd.lines[i].scratch.newton_tolerance);
       }
       for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k) {
         BodyMotion& b = sd.bodies[k];
         const Vec6 dq = sd.schur_x.segment<6>(body0 + 6 * k);
         b.tq += dq;
-        converged = converged && PoseSize(dq, b.arm) <= sd.newton_tolerance;
+        const double size = PoseSize(dq, b.arm);
+        if (!std::isfinite(size)) return false;
+        correction = std::max(correction, size / sd.newton_tolerance);
       }
       SyncCoupled(sys, sd, false);  // the seabed's landing clamp is the owner's
-      if (converged) {
+      if (newton.Converged(correction)) {
         for (int i = 0; i < lines(); ++i) FinishSolve(sys.lines[i], sd.lines[i], c, h);
         for (BodyMotion& b : sd.bodies) BodyKinematics(b, c, h);
         return true;
       }
+      if (fresh && newton.Stalled()) return false;
+      fresh = !keep || contact_changed || !(newton.rate() <= kFrozenJacobianRate);
     }
     return false;
   }
