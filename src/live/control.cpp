@@ -82,7 +82,7 @@ const std::vector<std::string>& ControlFields() {
 }
 
 const std::vector<std::string>& SystemControlFields() {
-  static const std::vector<std::string> fields{"offset_x", "offset_z"};
+  static const std::vector<std::string> fields{"offset_x", "offset_z", "force_x", "force_z"};
   return fields;
 }
 
@@ -90,7 +90,7 @@ bool ControlRequest::empty() const {
   return !pause && !step && !restart && !speed && !amplitude_scale && !period && !current &&
          !current_heading && !wave_height && !wave_period && !wave_heading && !colormap &&
          !lock_range && !reset_range && !tension_range && !record && !camera && !offset_x &&
-         !offset_z;
+         !offset_z && !force_x && !force_z;
 }
 
 ControlRequest ParseControl(const std::string& body, const ControlLimits& limits) {
@@ -158,6 +158,16 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
       (key == "offset_x" ? r.offset_x : r.offset_z) =
           ReadNumber(v, key.c_str(), -limits.offset_max, limits.offset_max,
                      " m (the vessel's offset from the scene's position)");
+    } else if (key == "force_x" || key == "force_z") {
+      if (!limits.system)
+        throw ControlError(key + ": a system's control (a scene of [[line]], [[point]] and "
+                           "[[body]] tables); this scene is a single line");
+      if (!limits.has_free_body)
+        throw ControlError(key + ": the system has no free body to push (offset_x and "
+                           "offset_z move a vessel that the scene moves)");
+      (key == "force_x" ? r.force_x : r.force_z) =
+          ReadNumber(v, key.c_str(), -limits.force_max, limits.force_max,
+                     " N (an extra steady force on the free bodies)");
     } else if (key == "colormap") {
       std::string names;
       for (const std::string& n : limits.colormaps) names += (names.empty() ? "" : ", ") + n;

@@ -29,6 +29,8 @@ struct ControlLimits {
   bool system = false;                      // a system of lines (no amplitude, no period)
   bool has_vessel = false;                  // a system whose vessel can be offset
   double offset_max = 0;                    // |offset_x|, |offset_z| [m]
+  bool has_free_body = false;               // a system with a free body: force_x, force_z
+  double force_max = 0;                     // |force_x|, |force_z| [N]
 };
 
 // The 3D view's camera as a viewer moves it: any of its fields (each a finite number, clamped
@@ -48,6 +50,7 @@ struct ControlRequest {
   std::optional<double> wave_period;                 // T [s]
   std::optional<double> wave_heading;                // the way they travel [deg] from +x to +z
   std::optional<double> offset_x, offset_z;          // a system's vessel offset [m] (y is up)
+  std::optional<double> force_x, force_z;            // on a system's free bodies [N]
   std::optional<std::string> colormap;
   std::optional<bool> lock_range;                    // freeze the colour range (or let it grow)
   bool reset_range = false;  // unlock the range and start it again from the tensions now

@@ -27,6 +27,8 @@ struct SeaTargets {
   double wave_heading = 0;     // the way the waves travel [deg] from +x towards +z; 0 without
   double offset_x = 0;         // a system's vessel offset from the scene's [m], along x...
   double offset_z = 0;         // ...and z (y is up); 0 for a line
+  double force_x = 0;          // a system's extra steady force on its free bodies [N], along x...
+  double force_z = 0;          // ...and z; 0 for a line
 };
 
 class LivePhysics {
@@ -51,6 +53,8 @@ class LivePhysics {
   virtual bool SetWaveHeading(double degrees) = 0;      // [deg from +x towards +z]
   virtual bool SetOffsetX(double /*metres*/) { return false; }  // a line has no vessel
   virtual bool SetOffsetZ(double /*metres*/) { return false; }
+  virtual bool SetForceX(double /*newtons*/) { return false; }  // a line has no free body
+  virtual bool SetForceZ(double /*newtons*/) { return false; }
 
   virtual const SeaTargets& scene_sea() const = 0;
   virtual double current_now() const = 0;          // [m/s]
@@ -61,6 +65,9 @@ class LivePhysics {
   virtual bool has_vessel() const { return false; }  // offset controls
   virtual Vec offset_now() const { return Vec::Zero(); }  // the vessel's acting now [m]
   virtual double offset_max() const { return 0; }       // the largest |offset| asked [m]
+  virtual bool has_free_body() const { return false; }  // force controls
+  virtual Vec force_now() const { return Vec::Zero(); }  // the extra force acting now [N]
+  virtual double force_max() const { return 0; }        // the largest |force| asked [N]
   virtual bool is_system() const { return false; }
   // A model of the scene's environment (a system: its first line's; all share the sea).
   virtual const Model& model() const = 0;

@@ -40,6 +40,8 @@ ControlLimits MakeLimits(const LivePhysics& sim) {
   l.system = sim.is_system();
   l.has_vessel = sim.has_vessel();
   l.offset_max = sim.offset_max();
+  l.has_free_body = sim.has_free_body();
+  l.force_max = sim.force_max();
   const SeaTargets& sea = sim.scene_sea();
   if (l.has_driven_end) {  // the clock of the motion between a tenth and ten times the scene's
     l.period_min = sea.period / 10;
@@ -171,6 +173,8 @@ void LiveSession::ApplyPending() {
       if (todo[k].wave_heading) todo[i].wave_heading.reset();
       if (todo[k].offset_x) todo[i].offset_x.reset();
       if (todo[k].offset_z) todo[i].offset_z.reset();
+      if (todo[k].force_x) todo[i].force_x.reset();
+      if (todo[k].force_z) todo[i].force_z.reset();
     }
   std::vector<TimeMarker> markers;
   std::uint64_t applied = 0;
@@ -209,9 +213,11 @@ void LiveSession::ApplyPending() {
           "%.4g", "\u00b0");
     apply(p.offset_x, &LivePhysics::SetOffsetX, left.offset_x, "offset x ", "%.3g", " m");
     apply(p.offset_z, &LivePhysics::SetOffsetZ, left.offset_z, "offset z ", "%.3g", " m");
+    apply(p.force_x, &LivePhysics::SetForceX, left.force_x, "force x ", "%.3g", " N");
+    apply(p.force_z, &LivePhysics::SetForceZ, left.force_z, "force z ", "%.3g", " N");
     if (left.amplitude_scale || left.period || left.current || left.current_heading ||
         left.wave_height || left.wave_period || left.wave_heading || left.offset_x ||
-        left.offset_z)
+        left.offset_z || left.force_x || left.force_z)
       deferred_.push_back(left);
     else if (deferred_.empty())  // in order: a control counts once those before it are in
       applied = std::max(applied, p.seq);
@@ -319,6 +325,9 @@ void LiveSession::PublishLocked() {
   const Vec offset = sim_->offset_now();
   offset_x_now_ = offset.x();
   offset_z_now_ = offset.z();
+  const Vec force = sim_->force_now();
+  force_x_now_ = force.x();
+  force_z_now_ = force.z();
   ++input_version_;  // the state's numbers change every frame: they go out at its pace, not each
   render_cv_.notify_one();
 }
@@ -544,6 +553,8 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     p.wave_heading = r.wave_heading;
     p.offset_x = r.offset_x;
     p.offset_z = r.offset_z;
+    p.force_x = r.force_x;
+    p.force_z = r.force_z;
     pending_.push_back(p);
     if (r.restart) {
       targets_ = sim_->scene_sea();
@@ -559,6 +570,8 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     if (r.wave_period && sim_->end_follows_wave()) targets_.period = *r.wave_period;
     if (r.offset_x) targets_.offset_x = *r.offset_x;
     if (r.offset_z) targets_.offset_z = *r.offset_z;
+    if (r.force_x) targets_.force_x = *r.force_x;
+    if (r.force_z) targets_.force_z = *r.force_z;
     if (r.pause) paused_ = *r.pause;
     if (r.step) {
       paused_ = true;
@@ -683,6 +696,12 @@ std::string LiveSession::StateJsonLocked() const {
     j["offset_x_now"] = Finite(offset_x_now_);
     j["offset_z_now"] = Finite(offset_z_now_);
     j["limits"]["offset"] = {-limits_.offset_max, limits_.offset_max};
+    j["has_force"] = limits_.has_free_body;
+    j["force_x"] = targets_.force_x;
+    j["force_z"] = targets_.force_z;
+    j["force_x_now"] = Finite(force_x_now_);
+    j["force_z_now"] = Finite(force_z_now_);
+    j["limits"]["force"] = {-limits_.force_max, limits_.force_max};
   }
   if (!error_.empty()) j["error"] = error_;
   if (!render_error_.empty()) j["render_error"] = render_error_;

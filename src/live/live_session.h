@@ -143,7 +143,7 @@ class LiveSession {
     std::uint64_t seq = 0;
     bool restart = false, step = false;
     std::optional<double> amplitude_scale, period, current, current_heading, wave_height,
-        wave_period, wave_heading, offset_x, offset_z;
+        wave_period, wave_heading, offset_x, offset_z, force_x, force_z;
   };
   std::vector<Pending> pending_;
   std::vector<Pending> deferred_;  // refused while too many ramps ran (simulation thread only)
@@ -164,6 +164,7 @@ class LiveSession {
   };
   std::vector<LineNumbers> lines_now_;
   double offset_x_now_ = 0, offset_z_now_ = 0;  // the vessel's offset acting now [m]
+  double force_x_now_ = 0, force_z_now_ = 0;    // the free bodies' extra force now [N]
   std::deque<std::pair<double, double>> progress_;  // (wall [s], simulated [s]) for real time
 
   // Frames (lock held).

@@ -1,18 +1,19 @@
 #pragma once
 // A scene's cable stepped on demand while the sea is changed between steps: the physics half of
-// the live view (no threads, no clock, no pictures). The model stays the scene's; the controls
-// change its Inputs (core/inputs.h): the driven end's amplitude and period, the current and the
-// waves, ramped along SmoothSchedule, so a change never jumps the prescribed end's position,
-// velocity or acceleration, and the current never jumps either.
+// the live view (no threads, no clock, no drawing: it only describes its line for the picture),
+// one of LivePhysics' two kinds (a system's: live_system_simulation.h). The model stays the
+// scene's; the controls change its Inputs (core/inputs.h): the driven end's amplitude and
+// period, the current and the waves, ramped along SmoothSchedule, so a change never jumps the
+// prescribed end's position, velocity or acceleration, and the current never jumps either.
 #include <Eigen/Core>
 
 #include "core/data.h"
 #include "core/inputs.h"
 #include "core/model.h"
-#include "core/smooth_schedule.h"
-#include "live/sea_ramps.h"
 #include "core/end_loads.h"
+#include "core/smooth_schedule.h"
 #include "live/live_physics.h"
+#include "live/sea_ramps.h"
 #include "run/time_grid.h"
 #include "scene/scene_def.h"
 

@@ -52,6 +52,7 @@ LiveSystemSimulation::LiveSystemSimulation(const SceneDef& scene)
     }
     centre += point.motion.rest();
   }
+  for (const BodySpec& b : sys.bodies) scene_forces_.push_back(b.force);
   scene_inputs_ = run_.inputs;
   scene_inputs_.stop = nullptr;
   // A change of the waves keeps their phase at the vessel (its points' middle), else at the
@@ -74,6 +75,8 @@ LiveSystemSimulation::LiveSystemSimulation(const SceneDef& scene)
 void LiveSystemSimulation::Restart() {
   data_ = run_.initial;  // a complete checkpoint, as a run's first row
   inputs_ = scene_inputs_;
+  force_x_ = force_z_ = SmoothSchedule(0);
+  for (std::size_t b = 0; b < scene_forces_.size(); ++b) run_.sys.bodies[b].force = scene_forces_[b];
 }
 
 void LiveSystemSimulation::Advance(double seconds) {
@@ -81,8 +84,15 @@ void LiveSystemSimulation::Advance(double seconds) {
   const TimeGrid& g = run_.grid;
   const double step = g.automatic ? g.interval : g.dt;
   const int steps = std::max(1, static_cast<int>(std::ceil(seconds / step - 1e-9)));
+  // The free bodies' extra force, held over the span at its middle (as the step holds the
+  // current); exactly the scene's force while none is asked (adding zero).
+  const double mid = t() + 0.5 * seconds;
+  const Vec extra(force_x_.ValueAt(mid), 0.0, force_z_.ValueAt(mid));
+  for (int b : run_.sys.free_bodies) run_.sys.bodies[b].force = scene_forces_[b] + extra;
   StepSystemSpan(run_.sys, data_, inputs_, seconds, steps);
   RetireRamps(inputs_, t());
+  force_x_.Retire(t());
+  force_z_.Retire(t());
 }
 
 bool LiveSystemSimulation::SetCurrent(double current) {
@@ -121,6 +131,8 @@ bool LiveSystemSimulation::SetOffsetZ(double metres) { return ChangeOffset(input
 SeaTargets LiveSystemSimulation::targets() const {
   SeaTargets s;
   SeaTargetsOf(inputs_, &s);
+  s.force_x = force_x_.target();
+  s.force_z = force_z_.target();
   return s;
 }
 
@@ -141,6 +153,26 @@ double LiveSystemSimulation::offset_max() const {
   return 0.1 * shortest;
 }
 
+bool LiveSystemSimulation::SetForceX(double newtons) {
+  if (!has_free_body() || !std::isfinite(newtons)) return false;
+  return force_x_.Change(t(), newtons, kForceRamp);
+}
+
+bool LiveSystemSimulation::SetForceZ(double newtons) {
+  if (!has_free_body() || !std::isfinite(newtons)) return false;
+  return force_z_.Change(t(), newtons, kForceRamp);
+}
+
+Vec LiveSystemSimulation::force_now() const {
+  return Vec(force_x_.ValueAt(t()), 0.0, force_z_.ValueAt(t()));
+}
+
+double LiveSystemSimulation::force_max() const {
+  double sum = 0;
+  for (const Data& d : run_.initial.lines) sum += d.tension().maxCoeff();
+  return sum;
+}
+
 SceneView LiveSystemSimulation::MakeView(const SceneDef& scene, const std::string& view) const {
   return MakeSystemFilmScene(scene, run_, view);  // every line, named, its points marked
 }
@@ -159,7 +191,7 @@ const PointLoads& LiveSystemSimulation::point_loads() {
 }
 
 std::string LiveSystemSimulation::timeseries_header() const {
-  std::string h = "t,current,current_heading,offset_x,offset_z";
+  std::string h = "t,current,current_heading,offset_x,offset_z,force_x,force_z";
   for (const std::string& n : run_.sys.line_names)
     h += ",tension_max_" + ColumnName(n) + ",link_max_" + ColumnName(n);
   for (const SystemPoint& p : run_.sys.points)
@@ -169,8 +201,9 @@ std::string LiveSystemSimulation::timeseries_header() const {
 
 void LiveSystemSimulation::WriteTimeseriesRow(std::FILE* f) {
   const Vec offset = offset_now();
-  std::fprintf(f, "%.10g,%.10g,%.10g,%.10g,%.10g", t(), current_now(), current_heading_now(),
-               offset.x(), offset.z());
+  const Vec force = force_now();
+  std::fprintf(f, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", t(), current_now(),
+               current_heading_now(), offset.x(), offset.z(), force.x(), force.z());
   for (const Data& d : data_.lines) {
     Eigen::Index link = 0;
     const double max = d.tension().maxCoeff(&link);

@@ -11,7 +11,9 @@
 // fairlead, and the points of a driven or held body) move by it as well as by their motion,
 // ramped along the same smootherstep (core/smooth_schedule.h) so that the fairleads' position,
 // velocity and acceleration never jump. A free body has no offset: the sea and its own loads
-// place it. The driven ends' amplitude and period are not a system's controls.
+// place it; its control is an extra steady force [N] along x and z on every free body (a wind
+// gust, a thrust), ramped as the current, held over each frame's step at its mid-step value
+// (as the current is). The driven ends' amplitude and period are not a system's controls.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -49,7 +51,13 @@ class LiveSystemSimulation : public LivePhysics {
   bool SetOffsetX(double metres) override;
   bool SetOffsetZ(double metres) override;
 
+  // The extra force on every free body [N], added to its scene's constant force, over
+  // kForceRamp. False without a free body.
+  bool SetForceX(double newtons) override;
+  bool SetForceZ(double newtons) override;
+
   static constexpr double kOffsetRamp = 5.0;   // shortest offset ramp [s]
+  static constexpr double kForceRamp = 5.0;    // force ramp [s], as the current's
   static constexpr double kOffsetSpeed = 2.0;  // the vessel's fastest ramped speed [m/s]
 
   const SeaTargets& scene_sea() const override { return scene_sea_; }
@@ -61,6 +69,10 @@ class LiveSystemSimulation : public LivePhysics {
   // A tenth of the shortest line: a few times a vessel's drift, about a leg's slack (more would
   // pull it taut and snap it).
   double offset_max() const override;
+  bool has_free_body() const override { return !run_.sys.free_bodies.empty(); }
+  Vec force_now() const override;
+  // The sum of the lines' largest tensions at the start: the order of what the mooring holds.
+  double force_max() const override;
   bool has_driven_end() const override { return false; }
   bool end_follows_wave() const override { return false; }
   bool has_vessel() const override { return !carried_.empty(); }
@@ -74,7 +86,8 @@ class LiveSystemSimulation : public LivePhysics {
   const Eigen::VectorXd& line_tensions(int line) const override {
     return data_.lines[line].tension();
   }
-  // Columns: t, current, current_heading, offset_x, offset_z (acting now), then per line
+  // Columns: t, current, current_heading, offset_x, offset_z, force_x, force_z (acting now),
+  // then per line
   // tension_max_<line>, link_max_<line>, then per point x_, y_, z_, fx_, fy_, fz_<point> (the
   // lines' load on it, as points.csv's). Names as the scene gives them, any character but a
   // letter, digit, '_', '-' or '.' as '_'.
@@ -96,6 +109,8 @@ class LiveSystemSimulation : public LivePhysics {
   Inputs scene_inputs_, inputs_;  // the scene's; those the controls ramp
   SeaTargets scene_sea_;
   std::vector<int> carried_;      // the points the vessel carries
+  std::vector<Vec> scene_forces_;  // each body's constant force as the scene gives it [N]
+  SmoothSchedule force_x_{0}, force_z_{0};  // the extra force on the free bodies [N]
   PointLoads loads_;
 };
 

@@ -509,7 +509,8 @@ def run(args):
         names = [l['name'] for l in st.get('lines', [])]
         check(st['system'] and names == ['leg1_lower', 'leg1_upper', 'leg2', 'leg3'],
               f'the system\'s lines: {names}')
-        check(st['has_offset'] and not st['has_period'] and st['limits']['offset'] == [-25, 25],
+        check(st['has_offset'] and not st['has_force'] and not st['has_period']
+              and st['limits']['offset'] == [-25, 25],
               f'a system\'s controls: {st}')
         check(all(l['max'] > 0 for l in st['lines']), 'a line with no tension')
         check(st['tension']['max'] == max(l['max'] for l in st['lines']),
@@ -521,7 +522,8 @@ def run(args):
                             ({'offset_z': [1, 2]}, 'offset_z: expected a number'),
                             (b'{"offset_x": 1e999}', 'control: malformed JSON'),  # overflows the parser
                             (b'{"offset_z": -1e308}', 'offset_z: expected a number'),
-                            ({'offset_x': None}, 'offset_x: expected a number')):
+                            ({'offset_x': None}, 'offset_x: expected a number'),
+                            ({'force_x': 1e5}, 'force_x: the system has no free body')):
             code, reply = srv4.control(body)
             check(code == 400 and reply.get('error', '').startswith(start),
                   f'{body!r} answered {code} {reply}')
@@ -547,8 +549,9 @@ def run(args):
         _, _, csv = srv4.get('/timeseries.csv')
         lines = csv.decode().splitlines()
         header = lines[0].split(',')
-        check(header[:6] == ['t', 'current', 'current_heading', 'offset_x', 'offset_z',
-                             'tension_max_leg1_lower'] and len(header) == 5 + 2 * 4 + 6 * 7,
+        check(header[:8] == ['t', 'current', 'current_heading', 'offset_x', 'offset_z',
+                             'force_x', 'force_z', 'tension_max_leg1_lower']
+              and len(header) == 7 + 2 * 4 + 6 * 7,
               f'the system\'s time series header: {lines[0][:200]}')
         last = lines[-1].split(',')
         check(len(last) == len(header) and float(last[3]) == 5.0,

@@ -167,8 +167,10 @@ TEST(LiveSystemSimulation, AnOffsetMovesTheFairleadsByItAfterItsRamp) {
   std::fclose(f);
   const auto fields = [](const std::string& s) { return std::count(s.begin(), s.end(), ',') + 1; };
   EXPECT_EQ(fields(header), fields(row));
-  EXPECT_EQ(fields(header), 5 + 2 * 4 + 6 * 7);  // 4 lines, 7 points
-  EXPECT_EQ(header.rfind("t,current,current_heading,offset_x,offset_z,tension_max_leg1_lower,", 0), 0u);
+  EXPECT_EQ(fields(header), 7 + 2 * 4 + 6 * 7);  // 4 lines, 7 points
+  EXPECT_EQ(header.rfind("t,current,current_heading,offset_x,offset_z,force_x,force_z,"
+                         "tension_max_leg1_lower,", 0),
+            0u);
 }
 
 TEST(LiveSystemSimulation, TheCurrentHeadingControlTurnsTheCurrent) {
@@ -207,6 +209,41 @@ TEST(LiveSystemSimulation, RefusesWhatASystemDoesNotHave) {
   EXPECT_TRUE(platform->is_system());
   EXPECT_FALSE(platform->has_vessel());
   EXPECT_FALSE(platform->SetOffsetX(1.0));
+  EXPECT_FALSE(spread.has_free_body());
+  EXPECT_FALSE(spread.SetForceX(1e5));
+}
+
+TEST(LiveSystemSimulation, AForcePushesAFreeBodyAlongIt) {
+  // The floating platform (a free body on three legs, released 5 m and 3 degrees from its
+  // equilibrium): with no control it repeats its run (the scene's force plus exactly zero);
+  // an extra force along +x moves it along +x against its legs, and along nothing else much.
+  SceneDef scene = Scene("floating_platform.toml");
+  scene.simulation.duration = 2.0;
+  const MemorySystemRun run = RunSystemInMemory(scene, BuildSystem(scene), nullptr);
+  LiveSystemSimulation sim(scene), still(scene);
+  ASSERT_TRUE(sim.has_free_body());
+  for (long r = 1; r < run.rows.rows; ++r) {
+    sim.Advance(0.1);
+    still.Advance(0.1);
+    for (int k = 0; k < 6; ++k)
+      ASSERT_NEAR(sim.data().bodies[0].q[k], run.rows.body_pose[r * 6 + k], 1e-12) << r;
+  }
+  // The force: up to the sum of the lines' largest tensions at the start.
+  EXPECT_GT(sim.force_max(), 1e5);
+  ASSERT_TRUE(sim.SetForceX(1e5));
+  for (int k = 0; k < 20 * 30; ++k) {
+    sim.Advance(1.0 / 30);
+    still.Advance(1.0 / 30);
+  }
+  EXPECT_EQ(sim.force_now().x(), 1e5);
+  EXPECT_EQ(sim.run().sys.bodies[0].force.x(), 2e5 + 1e5);  // the scene's 2e5 N wind and it
+  const Vec6 dq = sim.data().bodies[0].q - still.data().bodies[0].q;
+  std::printf("the platform moved %.3f m along x, %.3f m along z\n", dq[0], dq[2]);
+  EXPECT_GT(dq[0], 0.1);
+  EXPECT_LT(std::abs(dq[2]), 0.1 * dq[0]);
+  sim.Restart();
+  EXPECT_EQ(sim.force_now().x(), 0.0);
+  EXPECT_EQ(sim.run().sys.bodies[0].force.x(), 2e5);
 }
 
 TEST(LiveSystemControl, OffsetsAreASystemsAndAmplitudeIsNot) {
@@ -237,7 +274,17 @@ TEST(LiveSystemControl, OffsetsAreASystemsAndAmplitudeIsNot) {
   ControlLimits free_body = system;
   free_body.has_vessel = false;
   EXPECT_EQ(refusal(R"({"offset_x": 1})", free_body).rfind("offset_x: the system has no vessel", 0), 0u);
-  EXPECT_NE(refusal(R"({"ofset_x": 1})", system).find("camera, offset_x, offset_z"), std::string::npos);
+  EXPECT_NE(refusal(R"({"ofset_x": 1})", system).find("camera, offset_x, offset_z, force_x, force_z"),
+            std::string::npos);
+  EXPECT_EQ(refusal(R"({"force_x": 1})", system).rfind("force_x: the system has no free body", 0), 0u);
+  ControlLimits platform = free_body;
+  platform.has_free_body = true;
+  platform.force_max = 3e5;
+  EXPECT_EQ(*ParseControl(R"({"force_z": -2e5})", platform).force_z, -2e5);
+  EXPECT_EQ(refusal(R"({"force_x": 4e5})", platform),
+            "force_x: expected a number in [-300000, 300000] N (an extra steady force on the free "
+            "bodies), got 400000");
+  EXPECT_EQ(refusal(R"({"force_z": 1})", line).rfind("force_z: a system's control", 0), 0u);
 }
 
 }  // namespace

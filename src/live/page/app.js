@@ -40,6 +40,8 @@ const fmt = {
   wave_heading: degrees,
   offset_x: (v) => (v > 0 ? '+' : '') + v.toFixed(1) + ' m',
   offset_z: (v) => (v > 0 ? '+' : '') + v.toFixed(1) + ' m',
+  force_x: (v) => (v > 0 ? '+' : '') + (v / 1000).toFixed(0) + ' kN',
+  force_z: (v) => (v > 0 ? '+' : '') + (v / 1000).toFixed(0) + ' kN',
 };
 
 // ---- frames -----------------------------------------------------------------------------
@@ -177,8 +179,17 @@ function applyState(s) {
     $(id).disabled = !s.has_offset;
     if (s.has_offset) setSlider(id, s[id], L.offset);
   }
+  // A system's free bodies: an extra steady force along x and z (the slider's step a
+  // hundredth of its range).
+  for (const id of ['force_x', 'force_z']) {
+    $(id.replace('_', '-') + '-row').hidden = !s.has_force;
+    $(id).disabled = !s.has_force;
+    if (s.has_force && L.force) $(id).step = String((L.force[1] - L.force[0]) / 200);
+    if (s.has_force) setSlider(id, s[id], L.force);
+  }
   if (s.system) {
-    const parts = [s.has_offset && 'vessel', s.has_waves && 'waves', 'current'].filter(Boolean);
+    const parts = [s.has_offset && 'vessel', s.has_force && 'force', s.has_waves && 'waves',
+      'current'].filter(Boolean);
     const title = parts.length > 1 ? parts.slice(0, -1).join(', ') + ' and ' + parts.at(-1) : parts[0];
     $('sea-title').textContent = title[0].toUpperCase() + title.slice(1);
   }
