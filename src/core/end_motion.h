@@ -50,6 +50,16 @@ class EndMotion {
     return m;
   }
 
+  // The same motion, carried by the vessel the live view offsets (a ship's fairlead, a point
+  // of a driven or held body): its position, velocity and acceleration then add Inputs'
+  // offset (inputs.h), ramped. No run sets it: a run's ends move as the scene says.
+  EndMotion Carried() const {
+    EndMotion m = *this;
+    m.carried_ = true;
+    return m;
+  }
+  bool carried() const { return carried_; }
+
   EndKind kind() const { return kind_; }
   bool prescribed() const { return kind_ != EndKind::kFree; }
   bool moves() const { return kind_ == EndKind::kTrochoid || kind_ == EndKind::kTable; }
@@ -95,6 +105,7 @@ class EndMotion {
   std::vector<double> knot_t_;
   std::vector<Vec> knot_p_, knot_m_;  // offsets [m]; spline: d2/dt2 [m/s^2] (linear: 0)
   TableInterpolation interpolation_ = TableInterpolation::kSpline;
+  bool carried_ = false;  // moved by Inputs::offset_x, offset_z too
 };
 
 }  // namespace cablefilm

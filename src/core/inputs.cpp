@@ -93,16 +93,32 @@ double MaxCurrent(const Model& m, const Water& w) {
   return c;
 }
 
+namespace {
+
+// A prescribed end as the inputs move it, order 0, 1 or 2: the scene's motion (its amplitude
+// and clock scaled) and, for an end a vessel carries, the vessel's offset (its rate and its
+// second derivative for the velocity and acceleration: the ramps keep them continuous).
+Vec EndMotionAt(const Model& m, const Inputs& in, int j, double t, int order) {
+  const EndMotion& e = m.end_motion(j);
+  Vec x = e.Evaluate(t, order, in.end_scale, in.end_clock);
+  if (!e.carried()) return x;
+  const SmoothSchedule::Value ox = in.offset_x.At(t), oz = in.offset_z.At(t);
+  const double dx[3] = {ox.value, ox.rate, ox.rate2}, dz[3] = {oz.value, oz.rate, oz.rate2};
+  return x + Vec(dx[order], 0.0, dz[order]);
+}
+
+}  // namespace
+
 Vec EndPosition(const Model& m, const Inputs& in, int j, double t) {
-  return m.end_motion(j).Evaluate(t, 0, in.end_scale, in.end_clock);
+  return EndMotionAt(m, in, j, t, 0);
 }
 
 Vec EndVelocity(const Model& m, const Inputs& in, int j, double t) {
-  return m.end_motion(j).Evaluate(t, 1, in.end_scale, in.end_clock);
+  return EndMotionAt(m, in, j, t, 1);
 }
 
 Vec EndAcceleration(const Model& m, const Inputs& in, int j, double t) {
-  return m.end_motion(j).Evaluate(t, 2, in.end_scale, in.end_clock);
+  return EndMotionAt(m, in, j, t, 2);
 }
 
 }  // namespace cablefilm

@@ -22,6 +22,9 @@ struct Inputs {
                                        // phase [m]
   SmoothSchedule end_scale{1};     // the driven ends' orbit (or table) amplitude, times the scene's
   SmoothSchedule end_clock{1};     // the rate of their motion's clock, times real time
+  // The live view's horizontal offset of a system's vessel [m] (x, z; y is up), added to the
+  // ends it carries (EndMotion::carried): 0 and constant in a run.
+  SmoothSchedule offset_x{0}, offset_z{0};
   const CancelFlag* stop = nullptr;  // polled within a step (each substep, each Newton step):
                                      // when raised, Step throws CancelledError
 };
@@ -62,7 +65,7 @@ bool HasCurrent(const Model& m, const Water& w);    // anywhere non-zero
 double MaxCurrent(const Model& m, const Water& w);  // the largest |c(y)| over all y [m/s]
 
 // A prescribed end's position [m], velocity [m/s] and acceleration [m/s^2] at t [s] (j = 0 or
-// s), as the inputs move it.
+// s), as the inputs move it (a carried end with the offset's).
 Vec EndPosition(const Model& m, const Inputs& in, int j, double t);
 Vec EndVelocity(const Model& m, const Inputs& in, int j, double t);
 Vec EndAcceleration(const Model& m, const Inputs& in, int j, double t);

@@ -488,7 +488,9 @@ void PointLoads::Compute(const SystemModel& sys, const SystemData& sd, const Inp
         continue;
       }
       Vec a = Vec::Zero();
-      if (kind == PointKind::kMoved) a = EndAcceleration(m, in, j, d.state.t);
+      // A fixed point's is zero, unless the live view's offset carries it (inputs.h).
+      if (kind == PointKind::kMoved || kind == PointKind::kFixed)
+        a = EndAcceleration(m, in, j, d.state.t);
       if (kind == PointKind::kBody) a = d.a.col(j);
       forces_.col(p) += HeldEndLoad(m, d.forces.geometry, f, j, a);
     }

@@ -81,10 +81,16 @@ const std::vector<std::string>& ControlFields() {
   return fields;
 }
 
+const std::vector<std::string>& SystemControlFields() {
+  static const std::vector<std::string> fields{"offset_x", "offset_z", "force_x", "force_z"};
+  return fields;
+}
+
 bool ControlRequest::empty() const {
   return !pause && !step && !restart && !speed && !amplitude_scale && !period && !current &&
          !current_heading && !wave_height && !wave_period && !wave_heading && !colormap &&
-         !lock_range && !reset_range && !tension_range && !record && !camera;
+         !lock_range && !reset_range && !tension_range && !record && !camera && !offset_x &&
+         !offset_z && !force_x && !force_z;
 }
 
 ControlRequest ParseControl(const std::string& body, const ControlLimits& limits) {
@@ -115,6 +121,9 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
       r.speed = ReadNumber(v, "speed", limits.speed_min, limits.speed_max,
                            " (simulated seconds per second)");
     } else if (key == "amplitude_scale" || key == "period") {
+      if (limits.system)
+        throw ControlError(key + ": not a control of a system (its points move as the scene "
+                           "says; offset_x and offset_z move its vessel)");
       if (!limits.has_driven_end)
         throw ControlError(key + ": the scene has no driven end (an end with motion = \"trochoid\" or \"table\")");
       if (key == "period")
@@ -139,6 +148,26 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
       if (!limits.has_waves) throw ControlError("wave_heading: the scene has no [waves]");
       r.wave_heading = ReadNumber(v, "wave_heading", -limits.heading_max, limits.heading_max,
                                   " degrees from +x towards +z (the way the waves travel)");
+    } else if (key == "offset_x" || key == "offset_z") {
+      if (!limits.system)
+        throw ControlError(key + ": a system's control (a scene of [[line]], [[point]] and "
+                           "[[body]] tables); this scene is a single line");
+      if (!limits.has_vessel)
+        throw ControlError(key + ": the system has no vessel to move (no point with a motion, "
+                           "no driven or held body; a free body goes where its loads put it)");
+      (key == "offset_x" ? r.offset_x : r.offset_z) =
+          ReadNumber(v, key.c_str(), -limits.offset_max, limits.offset_max,
+                     " m (the vessel's offset from the scene's position)");
+    } else if (key == "force_x" || key == "force_z") {
+      if (!limits.system)
+        throw ControlError(key + ": a system's control (a scene of [[line]], [[point]] and "
+                           "[[body]] tables); this scene is a single line");
+      if (!limits.has_free_body)
+        throw ControlError(key + ": the system has no free body to push (offset_x and "
+                           "offset_z move a vessel that the scene moves)");
+      (key == "force_x" ? r.force_x : r.force_z) =
+          ReadNumber(v, key.c_str(), -limits.force_max, limits.force_max,
+                     " N (an extra steady force on the free bodies)");
     } else if (key == "colormap") {
       std::string names;
       for (const std::string& n : limits.colormaps) names += (names.empty() ? "" : ", ") + n;
@@ -174,6 +203,8 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
     } else {
       std::string names;
       for (const std::string& n : ControlFields()) names += (names.empty() ? "" : ", ") + n;
+      if (limits.system)
+        for (const std::string& n : SystemControlFields()) names += ", " + n;
       throw ControlError("unknown field " + Shown(Json(key)) + "; expected any of " + names);
     }
   }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <future>
 
+#include "core/data.h"
 #include "core/error.h"
 #include "encode/png_writer.h"
 #include "encode/video_encoder.h"
@@ -26,18 +27,21 @@ namespace {
 using Json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-// The live view's one line, as the film would draw it, with no name (a line alone needs none),
-// in space or in the plane as `view` says (empty: the scene's film.view).
-SceneView MakeLiveScene(const SceneDef& scene, const LiveSimulation& sim, const std::string& view) {
-  return MakeSceneView(scene, sim.model(),
-                       {MakeLineView(scene, sim.model(), sim.initial_state().x,
-                                     sim.initial_tensions(), "")},
-                       DrawsInSpace(scene, view.empty() ? scene.film.view : view));
+// The live view's lines as the film would draw them (a line alone with no name, a system's
+// named, its points marked), in space or in the plane as `view` says (empty: the scene's
+// film.view).
+SceneView MakeLiveScene(const SceneDef& scene, const LivePhysics& sim, const std::string& view) {
+  return sim.MakeView(scene, view.empty() ? scene.film.view : view);
 }
 
-ControlLimits MakeLimits(const LiveSimulation& sim) {
+ControlLimits MakeLimits(const LivePhysics& sim) {
   ControlLimits l;
   l.has_driven_end = sim.has_driven_end();
+  l.system = sim.is_system();
+  l.has_vessel = sim.has_vessel();
+  l.offset_max = sim.offset_max();
+  l.has_free_body = sim.has_free_body();
+  l.force_max = sim.force_max();
   const SeaTargets& sea = sim.scene_sea();
   if (l.has_driven_end) {  // the clock of the motion between a tenth and ten times the scene's
     l.period_min = sea.period / 10;
@@ -80,26 +84,29 @@ const char* EndKindName(const EndMotion& m) {
 LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
     : scene_(scene),
       options_(options),
-      sim_(scene),
-      view_(MakeLiveScene(scene, sim_, options.view)),
+      sim_(MakeLivePhysics(scene)),
+      view_(MakeLiveScene(scene, *sim_, options.view)),
       speed_(options.speed),
       colormap_(options.colormap.empty() ? scene.film.colormap : options.colormap),
-      history_(view_, FollowingPolicy{scene.simulation.duration, sim_.wave()}),
+      history_(view_, FollowingPolicy{scene.simulation.duration, sim_->wave()}),
+      rows_(sim_->timeseries_header()),
       start_(Clock::now()) {
   if (options_.width < 16 || options_.height < 16 || options_.width % 2 || options_.height % 2)
     throw Error("live: frame size must be even and at least 16x16, got " +
                 std::to_string(options_.width) + "x" + std::to_string(options_.height));
   if (!(options_.fps >= 1 && options_.fps <= 120))
     throw Error("live: --fps must be in [1, 120], got " + std::to_string(options_.fps));
-  limits_ = MakeLimits(sim_);
+  limits_ = MakeLimits(*sim_);
   limits_.space = view_.space;
   camera_ = DefaultCamera(view_);
   if (!(speed_ >= limits_.speed_min && speed_ <= limits_.speed_max))
     throw Error("live: --speed must be in [0.1, 10], got " + std::to_string(speed_));
   Colormap check(colormap_);  // an unknown name fails here, naming the known ones
-  targets_ = sim_.scene_sea();  // as a restart sets them (the simulation is at its start)
-  start_kind_ = EndKindName(sim_.model().end_motion(0));
-  end_kind_ = EndKindName(sim_.model().end_motion(sim_.model().line.links));
+  targets_ = sim_->scene_sea();  // as a restart sets them (the simulation is at its start)
+  if (!sim_->is_system()) {  // a system's ends are its points, named in the picture
+    start_kind_ = EndKindName(sim_->model().end_motion(0));
+    end_kind_ = EndKindName(sim_->model().end_motion(sim_->model().line.links));
+  }
   {
     std::lock_guard<std::mutex> lock(mu_);
     RecordLocked();
@@ -164,44 +171,53 @@ void LiveSession::ApplyPending() {
       if (todo[k].wave_height) todo[i].wave_height.reset();
       if (todo[k].wave_period) todo[i].wave_period.reset();
       if (todo[k].wave_heading) todo[i].wave_heading.reset();
+      if (todo[k].offset_x) todo[i].offset_x.reset();
+      if (todo[k].offset_z) todo[i].offset_z.reset();
+      if (todo[k].force_x) todo[i].force_x.reset();
+      if (todo[k].force_z) todo[i].force_z.reset();
     }
   std::vector<TimeMarker> markers;
   std::uint64_t applied = 0;
   bool restarted = false;
   for (const Pending& p : todo) {
     if (p.restart) {
-      sim_.Restart();
+      sim_->Restart();
       restarted = true;
       deferred_.clear();
       markers.clear();
     }
-    const double t = sim_.t();
+    const double t = sim_->t();
     Pending left;  // what the ramps could not take yet
     left.seq = p.seq;
     // A change the ramps take is marked on the time plot; one they refuse waits in `left`.
-    auto apply = [&](const std::optional<double>& wanted, bool (LiveSimulation::*set)(double),
+    auto apply = [&](const std::optional<double>& wanted, bool (LivePhysics::*set)(double),
                      std::optional<double>& refused, const char* label, const char* format,
                      const char* unit) {
       if (!wanted) return;
-      if ((sim_.*set)(*wanted))
+      if (((*sim_).*set)(*wanted))
         markers.push_back({t, label + Fixed(format, *wanted) + unit});
       else
         refused = wanted;
     };
-    apply(p.amplitude_scale, &LiveSimulation::SetAmplitudeScale, left.amplitude_scale,
+    apply(p.amplitude_scale, &LivePhysics::SetAmplitudeScale, left.amplitude_scale,
           "amplitude \u00d7", "%.2f", "");
-    apply(p.period, &LiveSimulation::SetPeriod, left.period, "period ", "%.3g", " s");
-    apply(p.current, &LiveSimulation::SetCurrent, left.current, "current ", "%.2f", " m/s");
-    apply(p.current_heading, &LiveSimulation::SetCurrentHeading, left.current_heading,
+    apply(p.period, &LivePhysics::SetPeriod, left.period, "period ", "%.3g", " s");
+    apply(p.current, &LivePhysics::SetCurrent, left.current, "current ", "%.2f", " m/s");
+    apply(p.current_heading, &LivePhysics::SetCurrentHeading, left.current_heading,
           "current heading ", "%.4g", "\u00b0");
-    apply(p.wave_height, &LiveSimulation::SetWaveHeight, left.wave_height, "wave height ", "%.2f",
+    apply(p.wave_height, &LivePhysics::SetWaveHeight, left.wave_height, "wave height ", "%.2f",
           " m");
-    apply(p.wave_period, &LiveSimulation::SetWavePeriod, left.wave_period, "wave period ", "%.3g",
+    apply(p.wave_period, &LivePhysics::SetWavePeriod, left.wave_period, "wave period ", "%.3g",
           " s");
-    apply(p.wave_heading, &LiveSimulation::SetWaveHeading, left.wave_heading, "wave heading ",
+    apply(p.wave_heading, &LivePhysics::SetWaveHeading, left.wave_heading, "wave heading ",
           "%.4g", "\u00b0");
+    apply(p.offset_x, &LivePhysics::SetOffsetX, left.offset_x, "offset x ", "%.3g", " m");
+    apply(p.offset_z, &LivePhysics::SetOffsetZ, left.offset_z, "offset z ", "%.3g", " m");
+    apply(p.force_x, &LivePhysics::SetForceX, left.force_x, "force x ", "%.3g", " N");
+    apply(p.force_z, &LivePhysics::SetForceZ, left.force_z, "force z ", "%.3g", " N");
     if (left.amplitude_scale || left.period || left.current || left.current_heading ||
-        left.wave_height || left.wave_period || left.wave_heading)
+        left.wave_height || left.wave_period || left.wave_heading || left.offset_x ||
+        left.offset_z || left.force_x || left.force_z)
       deferred_.push_back(left);
     else if (deferred_.empty())  // in order: a control counts once those before it are in
       applied = std::max(applied, p.seq);
@@ -256,7 +272,7 @@ void LiveSession::SimulationLoop() {
     if (!advance) continue;
     std::string blow_up;
     try {
-      sim_.Advance(chunk);
+      sim_->Advance(chunk);
     } catch (const BlowUpError& e) {
       blow_up = e.what();
     }
@@ -269,7 +285,7 @@ void LiveSession::SimulationLoop() {
     }
     ++steps_;  // one more frame of a film (live_session.h)
     RecordLocked();
-    progress_.emplace_back(Seconds(start_, Clock::now()), sim_.t());
+    progress_.emplace_back(Seconds(start_, Clock::now()), sim_->t());
     while (progress_.size() > 2 && progress_.back().first - progress_.front().first > 2.0)
       progress_.pop_front();
     PublishLocked();
@@ -277,26 +293,41 @@ void LiveSession::SimulationLoop() {
 }
 
 void LiveSession::RecordLocked() {
-  history_.SetWave(sim_.wave());
-  state_.t = sim_.t();
-  state_.lines.resize(1);
-  SetLineState(sim_.state().x, sim_.tensions(), &state_.lines[0]);
-  state_.current = TopCurrent(sim_.model(), sim_.water());
+  history_.SetWave(sim_->wave());
+  sim_->TakeSnapshot(&state_);
   history_.Add(state_);
-  rows_.Append(sim_.model(), sim_.data(), sim_.inputs());
+  rows_.Append([this](std::FILE* f) { sim_->WriteTimeseriesRow(f); });
 }
 
 void LiveSession::PublishLocked() {
-  t_ = sim_.t();
-  current_now_ = sim_.current_now();
-  current_heading_now_ = sim_.current_heading_now();
-  wave_heading_now_ = sim_.wave_heading_now();
-  const Eigen::VectorXd& T = sim_.tensions();
-  Eigen::Index link = 0;
-  tension_start_ = T[0];
-  tension_end_ = T[T.size() - 1];
-  tension_max_ = T.maxCoeff(&link);
-  link_max_ = static_cast<int>(link);
+  t_ = sim_->t();
+  current_now_ = sim_->current_now();
+  current_heading_now_ = sim_->current_heading_now();
+  wave_heading_now_ = sim_->wave_heading_now();
+  lines_now_.resize(sim_->line_count());
+  for (int i = 0; i < sim_->line_count(); ++i) {
+    const Eigen::VectorXd& T = sim_->line_tensions(i);
+    Eigen::Index link = 0;
+    LineNumbers& n = lines_now_[i];
+    n.start = T[0];
+    n.end = T[T.size() - 1];
+    n.max = T.maxCoeff(&link);
+    n.link_max = static_cast<int>(link);
+  }
+  // A line's numbers; a system's largest tension of any line (its start and end the first's).
+  const LineNumbers* top = &lines_now_.front();
+  for (const LineNumbers& n : lines_now_)
+    if (n.max > top->max) top = &n;
+  tension_start_ = lines_now_.front().start;
+  tension_end_ = lines_now_.front().end;
+  tension_max_ = top->max;
+  link_max_ = top->link_max;
+  const Vec offset = sim_->offset_now();
+  offset_x_now_ = offset.x();
+  offset_z_now_ = offset.z();
+  const Vec force = sim_->force_now();
+  force_x_now_ = force.x();
+  force_z_now_ = force.z();
   ++input_version_;  // the state's numbers change every frame: they go out at its pace, not each
   render_cv_.notify_one();
 }
@@ -520,9 +551,13 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     p.wave_height = r.wave_height;
     p.wave_period = r.wave_period;
     p.wave_heading = r.wave_heading;
+    p.offset_x = r.offset_x;
+    p.offset_z = r.offset_z;
+    p.force_x = r.force_x;
+    p.force_z = r.force_z;
     pending_.push_back(p);
     if (r.restart) {
-      targets_ = sim_.scene_sea();
+      targets_ = sim_->scene_sea();
       steps_requested_ = 0;
     }
     if (r.amplitude_scale) targets_.amplitude_scale = *r.amplitude_scale;
@@ -532,7 +567,11 @@ LiveSession::Reply LiveSession::Control(const std::string& body) {
     if (r.wave_heading) targets_.wave_heading = *r.wave_heading;
     if (r.wave_height) targets_.wave_height = *r.wave_height;
     if (r.wave_period) targets_.wave_period = *r.wave_period;
-    if (r.wave_period && sim_.end_follows_wave()) targets_.period = *r.wave_period;
+    if (r.wave_period && sim_->end_follows_wave()) targets_.period = *r.wave_period;
+    if (r.offset_x) targets_.offset_x = *r.offset_x;
+    if (r.offset_z) targets_.offset_z = *r.offset_z;
+    if (r.force_x) targets_.force_x = *r.force_x;
+    if (r.force_z) targets_.force_z = *r.force_z;
     if (r.pause) paused_ = *r.pause;
     if (r.step) {
       paused_ = true;
@@ -593,8 +632,8 @@ std::string LiveSession::StateJsonLocked() const {
       {"paused", paused_},
       {"speed", speed_},
       {"amplitude_scale", targets_.amplitude_scale},
-      {"period", sim_.has_driven_end() ? Json(targets_.period) : Json(nullptr)},
-      {"has_period", sim_.has_driven_end()},
+      {"period", sim_->has_driven_end() ? Json(targets_.period) : Json(nullptr)},
+      {"has_period", sim_->has_driven_end()},
       {"ends", {{"start", start_kind_}, {"end", end_kind_}}},
       {"current", targets_.current},
       {"current_now", Finite(current_now_)},
@@ -636,6 +675,34 @@ std::string LiveSession::StateJsonLocked() const {
                   {"wave_period", {limits_.wave_period_min, limits_.wave_period_max}},
                   {"wave_heading", {-limits_.heading_max, limits_.heading_max}}}},
   };
+  j["system"] = sim_->is_system();
+  if (sim_->is_system()) {  // each line's numbers now and its peak, the vessel's offset
+    Json lines = Json::array();
+    for (std::size_t i = 0; i < lines_now_.size() && i < view_.lines.size(); ++i) {
+      const LineNumbers& n = lines_now_[i];
+      lines.push_back({{"name", view_.lines[i].label}, {"start", Finite(n.start)},
+                       {"end", Finite(n.end)}, {"max", Finite(n.max)}, {"link_max", n.link_max},
+                       {"peak", Finite(history_.peak(i))}, {"peak_t", Finite(history_.peak_t(i))}});
+    }
+    j["lines"] = lines;
+    std::size_t top = 0;  // the peak of all lines so far, and its line
+    for (std::size_t i = 0; i < view_.lines.size(); ++i)
+      if (history_.has_peak(i) && !(history_.peak(i) <= history_.peak(top))) top = i;
+    j["peak"] = {{"value", Finite(history_.peak(top))}, {"t", history_.peak_t(top)},
+                 {"link", history_.peak_link(top)}, {"line", view_.lines[top].label}};
+    j["has_offset"] = limits_.has_vessel;
+    j["offset_x"] = targets_.offset_x;
+    j["offset_z"] = targets_.offset_z;
+    j["offset_x_now"] = Finite(offset_x_now_);
+    j["offset_z_now"] = Finite(offset_z_now_);
+    j["limits"]["offset"] = {-limits_.offset_max, limits_.offset_max};
+    j["has_force"] = limits_.has_free_body;
+    j["force_x"] = targets_.force_x;
+    j["force_z"] = targets_.force_z;
+    j["force_x_now"] = Finite(force_x_now_);
+    j["force_z_now"] = Finite(force_z_now_);
+    j["limits"]["force"] = {-limits_.force_max, limits_.force_max};
+  }
   if (!error_.empty()) j["error"] = error_;
   if (!render_error_.empty()) j["render_error"] = render_error_;
   if (!record_error_.empty()) j["record_error"] = record_error_;

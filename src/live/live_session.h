@@ -21,7 +21,7 @@
 
 #include "encode/image.h"
 #include "live/control.h"
-#include "live/live_simulation.h"
+#include "live/live_physics.h"
 #include "live/row_log.h"
 #include "scene/scene_def.h"
 #include "view/camera.h"
@@ -121,7 +121,8 @@ class LiveSession {
   const LiveOptions options_;
   std::string start_kind_, end_kind_;  // "fixed", "moving" or "free", as the film names them
   ControlLimits limits_;
-  LiveSimulation sim_;  // owned by the simulation thread once it runs
+  // A line's or a system's (live_physics.h); owned by the simulation thread once it runs.
+  const std::unique_ptr<LivePhysics> sim_;
   const SceneView view_;  // what the picture shows of the scene: read by both threads
 
   mutable std::mutex mu_;
@@ -142,7 +143,7 @@ class LiveSession {
     std::uint64_t seq = 0;
     bool restart = false, step = false;
     std::optional<double> amplitude_scale, period, current, current_heading, wave_height,
-        wave_period, wave_heading;
+        wave_period, wave_heading, offset_x, offset_z, force_x, force_z;
   };
   std::vector<Pending> pending_;
   std::vector<Pending> deferred_;  // refused while too many ramps ran (simulation thread only)
@@ -157,6 +158,13 @@ class LiveSession {
   double t_ = 0, current_now_ = 0, current_heading_now_ = 0, wave_heading_now_ = 0;
   double tension_start_ = 0, tension_end_ = 0, tension_max_ = 0;
   int link_max_ = 0;
+  struct LineNumbers {  // a system's line now [N], its most loaded link
+    double start = 0, end = 0, max = 0;
+    int link_max = 0;
+  };
+  std::vector<LineNumbers> lines_now_;
+  double offset_x_now_ = 0, offset_z_now_ = 0;  // the vessel's offset acting now [m]
+  double force_x_now_ = 0, force_z_now_ = 0;    // the free bodies' extra force now [N]
   std::deque<std::pair<double, double>> progress_;  // (wall [s], simulated [s]) for real time
 
   // Frames (lock held).

@@ -4,19 +4,16 @@
 #include <cmath>
 
 #include "core/step.h"
+#include "io/result_files.h"
 #include "run/initial_state.h"
 #include "scene/build_model.h"
+#include "scene/film_view.h"
+#include "view/scene_view_builder.h"
 
 namespace cablefilm {
 namespace {
 
 constexpr double kDegree = M_PI / 180.0;
-
-// The target [rad] a heading of `degrees` gives a schedule now at `target`: the same direction,
-// reached the short way round (at most half a turn either way).
-double NearestHeading(double target, double degrees) {
-  return target + std::remainder(degrees * kDegree - target, 2.0 * M_PI);
-}
 
 // The end whose period the controls show: the far end if it moves, else the start.
 const EndMotion* DrivenEnd(const Model& m) {
@@ -66,13 +63,9 @@ void LiveSimulation::Restart() {
 
 SeaTargets LiveSimulation::targets() const {
   SeaTargets s;
+  SeaTargetsOf(inputs_, &s);
   s.amplitude_scale = inputs_.end_scale.target();
   s.period = has_driven_end() ? base_period_ / inputs_.end_clock.target() : 0;
-  s.current = inputs_.current.target();
-  s.current_heading = inputs_.current_heading.target() / kDegree;
-  s.wave_height = inputs_.wave_height.target();
-  s.wave_period = inputs_.wave_period.target();
-  s.wave_heading = inputs_.wave_heading.target() / kDegree;
   return s;
 }
 
@@ -102,26 +95,21 @@ bool LiveSimulation::SetPeriod(double period) {
   return inputs_.end_clock.Change(t(), base_period_ / period, MotionRamp());
 }
 
-bool LiveSimulation::SetCurrent(double current) {
-  return inputs_.current.Change(t(), current, kCurrentRamp);
-}
+bool LiveSimulation::SetCurrent(double current) { return RampCurrent(inputs_, t(), current); }
 
 bool LiveSimulation::SetCurrentHeading(double degrees) {
-  if (!std::isfinite(degrees)) return false;
-  SmoothSchedule& s = inputs_.current_heading;
-  return s.Change(t(), NearestHeading(s.target(), degrees), kCurrentRamp);
+  return RampCurrentHeading(inputs_, t(), degrees);
 }
 
 bool LiveSimulation::SetWaveHeight(double height) {
   if (!model_.has_waves() || !(height >= 0)) return false;
-  const double ramp = std::clamp(data_.water.wave.spec.period, kMotionRamp, 30.0);
-  return inputs_.wave_height.Change(t(), height, ramp);
+  return RampWaveHeight(inputs_, t(), height, data_.water.wave.spec.period);
 }
 
 bool LiveSimulation::SetWavePeriod(double period) {
   if (!model_.has_waves() || !(period > 0)) return false;
-  const double ramp = std::clamp(inputs_.wave_period.ValueAt(t()), kMotionRamp, 30.0);
-  if (!inputs_.wave_period.Change(t(), period, ramp)) return false;
+  double ramp = 0;
+  if (!RampWavePeriod(inputs_, t(), period, &ramp)) return false;
   // The end that follows the wave: the same ramp of its clock (its rate is base / period).
   if (end_follows_wave_ && has_driven_end())
     inputs_.end_clock.Change(t(), base_period_ / period, ramp);
@@ -129,10 +117,8 @@ bool LiveSimulation::SetWavePeriod(double period) {
 }
 
 bool LiveSimulation::SetWaveHeading(double degrees) {
-  if (!model_.has_waves() || !std::isfinite(degrees)) return false;
-  const double ramp = std::clamp(inputs_.wave_period.ValueAt(t()), kMotionRamp, 30.0);
-  SmoothSchedule& s = inputs_.wave_heading;
-  return s.Change(t(), NearestHeading(s.target(), degrees), ramp);
+  if (!model_.has_waves()) return false;
+  return RampWaveHeading(inputs_, t(), degrees);
 }
 
 void LiveSimulation::Advance(double seconds) {
@@ -145,10 +131,26 @@ void LiveSimulation::Advance(double seconds) {
     Step(model_, data_, inputs_, dt);
     data_.state.t = t0 + (i + 1) * dt;  // no round-off drift
   }
-  for (SmoothSchedule* s : {&inputs_.end_scale, &inputs_.end_clock, &inputs_.current,
-                            &inputs_.current_heading, &inputs_.wave_height,
-                            &inputs_.wave_period, &inputs_.wave_heading})
-    s->Retire(t());
+  RetireRamps(inputs_, t());
+}
+
+SceneView LiveSimulation::MakeView(const SceneDef& scene, const std::string& view) const {
+  return MakeSceneView(scene, model_,
+                       {MakeLineView(scene, model_, initial_state().x, initial_tensions(), "")},
+                       DrawsInSpace(scene, view));
+}
+
+void LiveSimulation::TakeSnapshot(Snapshot* snapshot) const {
+  snapshot->t = t();
+  snapshot->lines.resize(1);
+  SetLineState(state().x, tensions(), &snapshot->lines[0]);
+  snapshot->current = TopCurrent(model_, water());
+}
+
+std::string LiveSimulation::timeseries_header() const { return kTimeseriesHeader; }
+
+void LiveSimulation::WriteTimeseriesRow(std::FILE* file) {
+  cablefilm::WriteTimeseriesRow(file, model_, data_, inputs_, row_ends_);
 }
 
 }  // namespace cablefilm

@@ -1,55 +1,49 @@
 #pragma once
 // A scene's cable stepped on demand while the sea is changed between steps: the physics half of
-// the live view (no threads, no clock, no pictures). The model stays the scene's; the controls
-// change its Inputs (core/inputs.h): the driven end's amplitude and period, the current and the
-// waves, ramped along SmoothSchedule, so a change never jumps the prescribed end's position,
-// velocity or acceleration, and the current never jumps either.
+// the live view (no threads, no clock, no drawing: it only describes its line for the picture),
+// one of LivePhysics' two kinds (a system's: live_system_simulation.h). The model stays the
+// scene's; the controls change its Inputs (core/inputs.h): the driven end's amplitude and
+// period, the current and the waves, ramped along SmoothSchedule, so a change never jumps the
+// prescribed end's position, velocity or acceleration, and the current never jumps either.
 #include <Eigen/Core>
 
 #include "core/data.h"
 #include "core/inputs.h"
 #include "core/model.h"
+#include "core/end_loads.h"
 #include "core/smooth_schedule.h"
+#include "live/live_physics.h"
+#include "live/sea_ramps.h"
 #include "run/time_grid.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {
 
-struct SeaTargets {
-  double amplitude_scale = 1;  // times the scene's end-motion amplitudes
-  double period = 0;           // of the driven end [s]; 0 when no end is driven
-  double current = 0;          // c [m/s], the uniform part, along current_heading
-  double current_heading = 0;  // the way the current flows [deg] from +x towards +z
-  double wave_height = 0;      // H [m] of the scene's [waves]; 0 without
-  double wave_period = 0;      // T [s] of the scene's [waves]; 0 without
-  double wave_heading = 0;     // the way the waves travel [deg] from +x towards +z; 0 without
-};
-
-class LiveSimulation {
+class LiveSimulation : public LivePhysics {
  public:
   // Builds the model and its static equilibrium (the initial state). Throws Error.
   explicit LiveSimulation(const SceneDef& scene);
 
   // Back to the scene's initial state and sea.
-  void Restart();
+  void Restart() override;
   // Advances by `seconds` of simulated time, in steps of the scene's scheme (the explicit one
   // below its stability limit, the implicit one with its error control); the current and the
   // waves held over it at its middle. Throws BlowUpError.
-  void Advance(double seconds);
+  void Advance(double seconds) override;
 
   // New targets, reached along a ramp that starts now (at t()): amplitude and period over one
   // period of the driven end (kMotionRamp at least), the current over kCurrentRamp. False when
   // too many changes are still ramping (then nothing changes; try again a moment later).
-  bool SetAmplitudeScale(double scale);
-  bool SetPeriod(double period);  // [s]
-  bool SetCurrent(double current);  // [m/s]
+  bool SetAmplitudeScale(double scale) override;
+  bool SetPeriod(double period) override;  // [s]
+  bool SetCurrent(double current) override;  // [m/s]
   // The current's direction [deg from +x towards +z], over kCurrentRamp as its speed; the whole
   // current turns (a profile too). It turns the short way round, through at most 180 degrees
   // (350 after 0 is -10), so any two headings 360 degrees apart are the same target.
-  bool SetCurrentHeading(double degrees);
+  bool SetCurrentHeading(double degrees) override;
   // The waves' height H [m], over one wave period (kMotionRamp to 30 s); false without waves.
   // The wave's amplitude is held over each step at its value mid-step, as the current is.
-  bool SetWaveHeight(double height);
+  bool SetWaveHeight(double height) override;
   // The waves' period T [s], over one wave period (kMotionRamp to 30 s); false without waves.
   // Each step takes the period at its middle, with the wave number of the new period and the
   // phase that keeps the wave's phase continuous at the driven end's x (where a ship would
@@ -57,38 +51,46 @@ class LiveSimulation {
   // An end that follows the wave (motion = "wave") changes its period along the same ramp. A
   // wave higher than its breaking height at the period of the moment is held at that height
   // (Miche's limit).
-  bool SetWavePeriod(double period);
+  bool SetWavePeriod(double period) override;
   // The way the waves travel [deg from +x towards +z], over one wave period (kMotionRamp to
   // 30 s), the short way round as the current's; false without waves. Each step takes the
   // heading at its middle, with the phase kept at the driven end's x as for the period (the
   // crests swing round that point). An end that follows the wave keeps its RAOs along x and z
   // (a ship's surge and sway as the scene gives them, not turned with the waves).
-  bool SetWaveHeading(double degrees);
+  bool SetWaveHeading(double degrees) override;
 
-  static constexpr double kMotionRamp = 2.0;   // shortest amplitude/period ramp [s]
-  static constexpr double kCurrentRamp = 5.0;  // current ramp [s]
+  static constexpr double kMotionRamp = kShortestMotionRamp;  // shortest amplitude/period ramp [s]
+  static constexpr double kCurrentRamp = kSeaCurrentRamp;     // current ramp [s]
 
-  double t() const { return data_.state.t; }
+  double t() const override { return data_.state.t; }
   const State& state() const { return data_.state; }
   const Data& data() const { return data_; }
   const Inputs& inputs() const { return inputs_; }  // as the controls have ramped them
   const Eigen::VectorXd& tensions() const { return data_.tension(); }
-  const Model& model() const { return model_; }
-  const Wave& wave() const { return data_.water.wave; }  // the waves of the last step
+  const Model& model() const override { return model_; }
+  const Wave& wave() const override { return data_.water.wave; }  // the waves of the last step
   const Water& water() const { return data_.water; }     // its current and waves
   const State& initial_state() const { return initial_.state; }
   const Eigen::VectorXd& initial_tensions() const { return initial_.tension(); }
-  const SeaTargets& scene_sea() const { return scene_sea_; }
+  const SeaTargets& scene_sea() const override { return scene_sea_; }
   SeaTargets targets() const;  // what the sea is ramping to (headings as the ramps hold
                                // them: turned the short way, 370 may be 10)
-  double current_now() const;  // the current acting now [m/s]
-  double current_heading_now() const;  // its direction now [deg], as the ramp turns it
+  double current_now() const override;  // the current acting now [m/s]
+  double current_heading_now() const override;  // its direction now [deg], as the ramp turns it
   double wave_height_now() const;  // H acting now [m]
   double wave_period_now() const;  // T acting now [s]
-  double wave_heading_now() const;  // the waves' heading now [deg], as the ramp turns it
-  bool has_driven_end() const { return base_period_ > 0; }
-  bool end_follows_wave() const { return end_follows_wave_; }  // set once, at construction
+  double wave_heading_now() const override;  // the waves' heading now [deg], as the ramp turns it
+  bool has_driven_end() const override { return base_period_ > 0; }
+  bool end_follows_wave() const override { return end_follows_wave_; }  // set once, at construction
   StepStats stats() const { return data_.step_stats(); }
+
+  // The live session's view of it: the one line, unnamed (a line alone needs no name); the
+  // time series as a run's timeseries.csv.
+  SceneView MakeView(const SceneDef& scene, const std::string& view) const override;
+  void TakeSnapshot(Snapshot* snapshot) const override;
+  const Eigen::VectorXd& line_tensions(int) const override { return tensions(); }
+  std::string timeseries_header() const override;
+  void WriteTimeseriesRow(std::FILE* file) override;
 
  private:
   double MotionRamp() const;  // [s]
@@ -102,6 +104,7 @@ class LiveSimulation {
   SeaTargets scene_sea_;
   double base_period_ = 0;        // the driven end's period in the scene [s]
   bool end_follows_wave_ = false; // the driven end's motion is the wave's (motion = "wave")
+  EndLoads row_ends_;             // a time series row's end loads' scratch
 };
 
 }  // namespace cablefilm

@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <utility>
 
-#include "io/result_files.h"
 #include "core/error.h"
 
 namespace cablefilm {
 
-RowLog::RowLog() : file_(std::tmpfile()) {
+RowLog::RowLog(std::string header) : file_(std::tmpfile()), header_(std::move(header)) {
   if (!file_) throw Error(std::string("live: cannot create a temporary file for the time series: ") +
                           std::strerror(errno));
   Clear();
@@ -23,12 +23,12 @@ void RowLog::Clear() {
   std::fflush(file_);
   if (ftruncate(fileno(file_), 0) != 0) { /* the rewind below still restarts the rows */ }
   std::rewind(file_);
-  std::fputs(kTimeseriesHeader, file_);
+  std::fputs(header_.c_str(), file_);
   rows_ = 0;
 }
 
-void RowLog::Append(const Model& m, const Data& d, const Inputs& in) {
-  WriteTimeseriesRow(file_, m, d, in, ends_);
+void RowLog::Append(const std::function<void(std::FILE*)>& write) {
+  write(file_);
   ++rows_;
 }
 

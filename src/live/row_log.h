@@ -7,22 +7,21 @@
 #include <functional>
 #include <string>
 
-#include "core/model.h"
-#include "core/data.h"
-#include "core/end_loads.h"
-#include "core/inputs.h"
 
 namespace cablefilm {
 
 class RowLog {
  public:
-  RowLog();  // throws Error if no temporary file can be made
+  // `header`: the CSV's first line, with its newline. Throws Error if no temporary file can be
+  // made.
+  explicit RowLog(std::string header);
   ~RowLog();
   RowLog(const RowLog&) = delete;
   RowLog& operator=(const RowLog&) = delete;
 
   void Clear();  // a restart
-  void Append(const Model& m, const Data& d, const Inputs& in);
+  // One row: `write` prints it, with its newline.
+  void Append(const std::function<void(std::FILE*)>& write);
   long rows() const { return rows_; }
   // The bytes written so far (flushed): call under the session's lock...
   long Flush();
@@ -32,8 +31,8 @@ class RowLog {
 
  private:
   std::FILE* file_ = nullptr;
+  std::string header_;
   long rows_ = 0;
-  EndLoads ends_;  // the row's end loads' scratch
 };
 
 }  // namespace cablefilm

@@ -30,11 +30,20 @@ TimeGrid SystemGrid(const SceneDef& scene, const SystemModel& sys) {
 
 }  // namespace
 
-void SystemRowStepper::Next() {
-  for (int k = 0; k < grid_.steps_per_output; ++k) {
-    ThrowIfCancelled(in_.stop, "the simulation");
-    StepSystem(sys_, sd_, in_, grid_.dt);
+void StepSystemSpan(const SystemModel& sys, SystemData& sd, const Inputs& in, double seconds,
+                    int steps) {
+  const double t0 = sd.t, dt = seconds / steps;
+  for (int k = 0; k < steps; ++k) {
+    ThrowIfCancelled(in.stop, "the simulation");
+    StepSystem(sys, sd, in, dt);
   }
+  sd.t = t0 + seconds;
+  for (Data& d : sd.lines) d.state.t = sd.t;
+}
+
+void SystemRowStepper::Next() {
+  // grid.dt is interval / steps_per_output (time_grid.cpp): the same steps as ever.
+  StepSystemSpan(sys_, sd_, in_, grid_.interval, grid_.steps_per_output);
   // Each row at exactly row x interval (no round-off drift over long runs).
   sd_.t = ++row_ * grid_.interval;
   for (Data& d : sd_.lines) d.state.t = sd_.t;

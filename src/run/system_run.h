@@ -42,6 +42,13 @@ struct SystemRun {
   std::vector<std::vector<std::string>> section_materials;  // each line's (run.h)
 };
 
+// Advances the system by `seconds` [s] in `steps` equal steps (each adaptive within itself when
+// the grid's tolerance asks), polling in.stop; its time (every line's) then exactly t0 +
+// seconds. What a row of SystemRowStepper takes, and a frame of the live view. Throws
+// BlowUpError, CancelledError.
+void StepSystemSpan(const SystemModel& sys, SystemData& sd, const Inputs& in, double seconds,
+                    int steps);
+
 // Steps a SystemData from row to row of a grid, as RowStepper steps a line: the run and the
 // film's second pass step alike, so that the film repeats the run step for step.
 class SystemRowStepper {

@@ -28,7 +28,7 @@ SceneView Scene() {
 }
 
 Points StraightLine(double end_y) {
-  Points x(kDim, 11);
+  Points x = Points::Zero(kDim, 11);  // z = 0: the comma initializer below sets x and y only
   for (int j = 0; j <= 10; ++j) x.col(j) << j, end_y * j / 10.0;
   return x;
 }

@@ -499,6 +499,81 @@ def run(args):
         if srv3.proc.poll() is None:
             srv3.proc.kill()
 
+    # A system of lines (scenes/spread_mooring.toml: four lines, three anchors, a clump weight,
+    # three fairleads on a ship in surge and heave), at 5x real time.
+    srv4 = Server(args.cablefilm, os.path.join(os.path.dirname(os.path.abspath(args.scene)),
+                                               'spread_mooring.toml'), out_dir)
+
+    def system():
+        st = srv4.state()
+        names = [l['name'] for l in st.get('lines', [])]
+        check(st['system'] and names == ['leg1_lower', 'leg1_upper', 'leg2', 'leg3'],
+              f'the system\'s lines: {names}')
+        check(st['has_offset'] and not st['has_force'] and not st['has_period']
+              and st['limits']['offset'] == [-25, 25],
+              f'a system\'s controls: {st}')
+        check(all(l['max'] > 0 for l in st['lines']), 'a line with no tension')
+        check(st['tension']['max'] == max(l['max'] for l in st['lines']),
+              'the maximum is not the largest of the lines\'')
+        # Controls that are not a system's, and hostile ones: 400 naming the field.
+        for body, start in (({'amplitude_scale': 2}, 'amplitude_scale: not a control of a system'),
+                            ({'period': 10}, 'period: not a control of a system'),
+                            ({'offset_x': 26}, 'offset_x: expected a number in [-25, 25]'),
+                            ({'offset_z': [1, 2]}, 'offset_z: expected a number'),
+                            (b'{"offset_x": 1e999}', 'control: malformed JSON'),  # overflows the parser
+                            (b'{"offset_z": -1e308}', 'offset_z: expected a number'),
+                            ({'offset_x': None}, 'offset_x: expected a number'),
+                            ({'force_x': 1e5}, 'force_x: the system has no free body')):
+            code, reply = srv4.control(body)
+            check(code == 400 and reply.get('error', '').startswith(start),
+                  f'{body!r} answered {code} {reply}')
+        code, st = srv4.control({'offset_x': 5, 'offset_z': -2, 'current_heading': 90, 'speed': 5})
+        check(code == 200 and st['offset_x'] == 5 and st['offset_z'] == -2,
+              f'the offset answered {code} {st}')
+        st0 = srv4.wait(lambda s: s['seq_applied'] >= st['seq'], 'the offset to be applied')
+        # The ramps: 5 s (15/8 x 5 m at 2 m/s is less), the current's 5 s; at 5x.
+        st1 = srv4.wait(lambda s: s['t'] > st0['t'] + 5.5, 'the vessel to move', timeout=60)
+        check(st1['offset_x_now'] == 5 and st1['offset_z_now'] == -2,
+              f'the vessel is offset by {st1["offset_x_now"]}, {st1["offset_z_now"]} m')
+        check(abs(st1['current_heading_now'] - 90) < 1e-9,
+              f'the current turned to {st1["current_heading_now"]} degrees, not 90')
+        _, headers, png = srv4.get('/snapshot.png')
+        check(png[:8] == b'\x89PNG\r\n\x1a\n' and headers['Content-Type'] == 'image/png',
+              'the snapshot is not a PNG')
+        width, height = struct.unpack('>II', png[16:24])
+        check((width, height) == (WIDTH, HEIGHT), f'the snapshot is {width}x{height}')
+        with open(os.path.join(out_dir, 'system_snapshot.png'), 'wb') as f:
+            f.write(png)
+        _, _, jpeg = srv4.get('/frame.jpg')
+        check(jpeg_size(jpeg) == (WIDTH, HEIGHT), 'the system\'s frame is not a JPEG of the size')
+        _, _, csv = srv4.get('/timeseries.csv')
+        lines = csv.decode().splitlines()
+        header = lines[0].split(',')
+        check(header[:8] == ['t', 'current', 'current_heading', 'offset_x', 'offset_z',
+                             'force_x', 'force_z', 'tension_max_leg1_lower']
+              and len(header) == 7 + 2 * 4 + 6 * 7,
+              f'the system\'s time series header: {lines[0][:200]}')
+        last = lines[-1].split(',')
+        check(len(last) == len(header) and float(last[3]) == 5.0,
+              f'the last row: {lines[-1][:200]}')
+        # Pause, step one frame, restart (the scene's vessel and current again).
+        code, st = srv4.control({'pause': True})
+        stp = srv4.wait(lambda s: s['paused'] and s['seq_applied'] >= st['seq'], 'the pause')
+        code, st = srv4.control({'step': True})
+        st2 = srv4.wait(lambda s: s['t'] > stp['t'], 'a step')
+        check(abs(st2['t'] - stp['t'] - 5 / 30) < 1e-6, f'a step advanced {st2["t"] - stp["t"]} s')
+        code, st = srv4.control({'restart': True})
+        check(code == 200 and st['offset_x'] == 0 and st['offset_z'] == 0, f'restart: {st}')
+        srv4.wait(lambda s: s['seq_applied'] >= st['seq'] and s['t'] == 0, 'the restart')
+        check(srv4.stop() == 0, 'SIGTERM exit status')
+
+    try:
+        step('a system: its lines, its vessel offset, its controls, snapshot and time series',
+             system)
+    finally:
+        if srv4.proc.poll() is None:
+            srv4.proc.kill()
+
     failed = sum(1 for _, e in results if e)
     print(f'{len(results) - failed} passed, {failed} failed')
     return 1 if failed else 0

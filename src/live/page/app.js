@@ -38,6 +38,10 @@ const fmt = {
   wave_height: (v) => v.toFixed(2) + ' m',
   wave_period: (v) => v.toFixed(1) + ' s',
   wave_heading: degrees,
+  offset_x: (v) => (v > 0 ? '+' : '') + v.toFixed(1) + ' m',
+  offset_z: (v) => (v > 0 ? '+' : '') + v.toFixed(1) + ' m',
+  force_x: (v) => (v > 0 ? '+' : '') + (v / 1000).toFixed(0) + ' kN',
+  force_z: (v) => (v > 0 ? '+' : '') + (v / 1000).toFixed(0) + ' kN',
 };
 
 // ---- frames -----------------------------------------------------------------------------
@@ -129,9 +133,24 @@ function applyState(s) {
   $('t-end').textContent = kN(T.end);
   $('t-max').textContent = kN(T.max);
   $('t-max-link').textContent = T.link_max == null ? '' : 'in link ' + T.link_max;
+  if (s.system && s.lines) {
+    // A system: its two most loaded lines now in the end boxes, the largest of all in Maximum.
+    const top = s.lines.slice().sort((a, b) => b.max - a.max);
+    $('start-label').textContent = top[0] ? top[0].name : 'Line';
+    $('t-start').textContent = top[0] ? kN(top[0].max) : '–';
+    $('start-label').title = 'the most loaded line now: its largest link tension';
+    $('end-label').textContent = top[1] ? top[1].name : '';
+    $('t-end').textContent = top[1] ? kN(top[1].max) : '';
+    $('end-label').title = 'the second most loaded line now';
+    $('t-start-sub').textContent = 'most loaded line now';
+    $('t-end-sub').textContent = top[1] ? 'next most loaded' : '';
+    const line = top[0] ? ' of ' + top[0].name : '';
+    $('t-max-link').textContent = T.link_max == null ? '' : 'link ' + T.link_max + line;
+  }
   const P = s.peak || {};
   $('peak').textContent = kN(P.value);
-  $('peak-where').textContent = P.t == null ? '' : 'at ' + P.t.toFixed(1) + ' s · link ' + P.link;
+  $('peak-where').textContent = P.t == null ? ''
+    : 'at ' + P.t.toFixed(1) + ' s · link ' + P.link + (P.line ? ' of ' + P.line : '');
   const delivered = fpsTimes.length > 1
     ? (fpsTimes.length - 1) * 1000 / (fpsTimes[fpsTimes.length - 1] - fpsTimes[0]) : 0;
   $('fps').textContent = (s.paused ? 0 : delivered).toFixed(1);
@@ -156,6 +175,26 @@ function applyState(s) {
   $('period-row').hidden = !s.has_period;
   $('period').disabled = !s.has_period;
   if (s.has_period) setSlider('period', s.period, L.period);
+  // A system's vessel: its offset along x and z.
+  for (const id of ['offset_x', 'offset_z']) {
+    $(id.replace('_', '-') + '-row').hidden = !s.has_offset;
+    $(id).disabled = !s.has_offset;
+    if (s.has_offset) setSlider(id, s[id], L.offset);
+  }
+  // A system's free bodies: an extra steady force along x and z (the slider's step a
+  // hundredth of its range).
+  for (const id of ['force_x', 'force_z']) {
+    $(id.replace('_', '-') + '-row').hidden = !s.has_force;
+    $(id).disabled = !s.has_force;
+    if (s.has_force && L.force) $(id).step = String((L.force[1] - L.force[0]) / 200);
+    if (s.has_force) setSlider(id, s[id], L.force);
+  }
+  if (s.system) {
+    const parts = [s.has_offset && 'vessel', s.has_force && 'force', s.has_waves && 'waves',
+      'current'].filter(Boolean);
+    const title = parts.length > 1 ? parts.slice(0, -1).join(', ') + ' and ' + parts.at(-1) : parts[0];
+    $('sea-title').textContent = title[0].toUpperCase() + title.slice(1);
+  }
   $('wave-height-row').hidden = !s.has_waves;
   $('wave_height').disabled = !s.has_waves;
   if (s.has_waves) setSlider('wave_height', s.wave_height, L.wave_height);
