@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "core/inputs.h"
 #include "core/model.h"
 #include "core/waves.h"
 #include "scene/scene_def.h"
@@ -57,9 +58,10 @@ class LivePhysics {
   virtual bool SetForceZ(double /*newtons*/) { return false; }
 
   virtual const SeaTargets& scene_sea() const = 0;
-  virtual double current_now() const = 0;          // [m/s]
-  virtual double current_heading_now() const = 0;  // [deg]
-  virtual double wave_heading_now() const = 0;     // [deg]
+  virtual const Inputs& inputs() const = 0;  // as the controls have ramped them
+  double current_now() const;          // the current acting now [m/s]
+  double current_heading_now() const;  // its direction now [deg], as the ramp turns it
+  double wave_heading_now() const;     // the waves' heading now [deg], as the ramp turns it
   virtual bool has_driven_end() const = 0;         // amplitude and period controls
   virtual bool end_follows_wave() const = 0;
   virtual bool has_vessel() const { return false; }  // offset controls

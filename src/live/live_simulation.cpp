@@ -13,8 +13,6 @@
 namespace cablefilm {
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
-
 // The end whose period the controls show: the far end if it moves, else the start.
 const EndMotion* DrivenEnd(const Model& m) {
   if (m.ends.end.moves()) return &m.ends.end;
@@ -69,13 +67,6 @@ SeaTargets LiveSimulation::targets() const {
   return s;
 }
 
-double LiveSimulation::current_now() const { return inputs_.current.ValueAt(t()); }
-double LiveSimulation::current_heading_now() const {
-  return inputs_.current_heading.ValueAt(t()) / kDegree;
-}
-double LiveSimulation::wave_heading_now() const {
-  return inputs_.wave_heading.ValueAt(t()) / kDegree;
-}
 double LiveSimulation::wave_height_now() const { return inputs_.wave_height.ValueAt(t()); }
 double LiveSimulation::wave_period_now() const { return inputs_.wave_period.ValueAt(t()); }
 

@@ -65,7 +65,7 @@ class LiveSimulation : public LivePhysics {
   double t() const override { return data_.state.t; }
   const State& state() const { return data_.state; }
   const Data& data() const { return data_; }
-  const Inputs& inputs() const { return inputs_; }  // as the controls have ramped them
+  const Inputs& inputs() const override { return inputs_; }
   const Eigen::VectorXd& tensions() const { return data_.tension(); }
   const Model& model() const override { return model_; }
   const Wave& wave() const override { return data_.water.wave; }  // the waves of the last step
@@ -75,11 +75,8 @@ class LiveSimulation : public LivePhysics {
   const SeaTargets& scene_sea() const override { return scene_sea_; }
   SeaTargets targets() const;  // what the sea is ramping to (headings as the ramps hold
                                // them: turned the short way, 370 may be 10)
-  double current_now() const override;  // the current acting now [m/s]
-  double current_heading_now() const override;  // its direction now [deg], as the ramp turns it
   double wave_height_now() const;  // H acting now [m]
   double wave_period_now() const;  // T acting now [s]
-  double wave_heading_now() const override;  // the waves' heading now [deg], as the ramp turns it
   bool has_driven_end() const override { return base_period_ > 0; }
   bool end_follows_wave() const override { return end_follows_wave_; }  // set once, at construction
   StepStats stats() const { return data_.step_stats(); }

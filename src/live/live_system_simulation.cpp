@@ -12,8 +12,6 @@
 namespace cablefilm {
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
-
 // A name as a CSV column takes it: no comma, quote or space to split it.
 std::string ColumnName(const std::string& name) {
   std::string s = name;
@@ -136,13 +134,6 @@ SeaTargets LiveSystemSimulation::targets() const {
   return s;
 }
 
-double LiveSystemSimulation::current_now() const { return inputs_.current.ValueAt(t()); }
-double LiveSystemSimulation::current_heading_now() const {
-  return inputs_.current_heading.ValueAt(t()) / kDegree;
-}
-double LiveSystemSimulation::wave_heading_now() const {
-  return inputs_.wave_heading.ValueAt(t()) / kDegree;
-}
 Vec LiveSystemSimulation::offset_now() const {
   return Vec(inputs_.offset_x.ValueAt(t()), 0.0, inputs_.offset_z.ValueAt(t()));
 }

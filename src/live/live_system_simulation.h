@@ -62,9 +62,6 @@ class LiveSystemSimulation : public LivePhysics {
 
   const SeaTargets& scene_sea() const override { return scene_sea_; }
   SeaTargets targets() const;
-  double current_now() const override;
-  double current_heading_now() const override;
-  double wave_heading_now() const override;
   Vec offset_now() const override;  // the vessel's offset acting now [m] (y 0)
   // A tenth of the shortest line: a few times a vessel's drift, about a leg's slack (more would
   // pull it taut and snap it).
@@ -96,7 +93,7 @@ class LiveSystemSimulation : public LivePhysics {
 
   const SystemRun& run() const { return run_; }  // its model (carried ends marked), grid
   const SystemData& data() const { return data_; }
-  const Inputs& inputs() const { return inputs_; }
+  const Inputs& inputs() const override { return inputs_; }
   const std::vector<int>& carried_points() const { return carried_; }
   // The points' positions [m] and loads [N] now (PointLoads of the state now).
   const PointLoads& point_loads();

@@ -6,8 +6,6 @@
 namespace cablefilm {
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
-
 // The target [rad] a heading of `degrees` gives a schedule now at `target`: the same direction,
 // reached the short way round (at most half a turn either way).
 double NearestHeading(double target, double degrees) {

@@ -8,6 +8,7 @@
 
 namespace cablefilm {
 
+constexpr double kDegree = 3.14159265358979323846 / 180.0;  // [rad]: the controls' headings are degrees
 constexpr double kShortestMotionRamp = 2.0;  // [s]
 constexpr double kLongestMotionRamp = 30.0;  // [s]
 constexpr double kSeaCurrentRamp = 5.0;      // [s]
