@@ -25,8 +25,8 @@ constexpr int kMaxNewtonIterations = 12;
 // iterate far off (the spread mooring's touchdowns did: 2.5 times the rejected steps).
 constexpr double kFrozenJacobianRate = 0.1;
 
-// When Newton's corrections have converged: the last one below the tolerance, or, from the
-// second on, the error the iterations still leave below it. Newton contracts the error by
+// When Newton's corrections have converged: the last one below the tolerance (whatever the
+// rate, as before), or, from the second on, the error the iterations still leave below it. Newton contracts the error by
 // theta = |dx_k| / |dx_{k-1}| (the rate it shows), so what remains after correction k is at
 // most theta / (1 - theta) |dx_k| (Hairer & Wanner, Solving ODEs II, IV.8, eq. (8.10)); a rate
 // of 1 or more is no contraction. With the tolerance at 1e-9 of the shortest link the second
