@@ -111,6 +111,11 @@ struct BodyDef {
   EndDef motion;                          // the reference point's position and motion
   bool free = false;                      // motion = "free"
   std::array<double, 3> orientation{};    // [about x, y, z] [deg], turned in that order
+  // Drawn only: its hull as a box of these sizes along its x, y, z axes [m] about box_center
+  // (in its axes, from its reference point [m]); has_box false: the outline through its points.
+  bool has_box = false;
+  std::array<double, 3> box{};
+  std::array<double, 3> box_center{};
   double mass = 0;                        // free: [kg]
   std::array<double, 3> center_of_gravity{};   // free: local [m]
   double volume = 0;                      // free: displaced at rest [m^3]

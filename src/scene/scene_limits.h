@@ -38,6 +38,7 @@ constexpr double kMinWavePeriod = 1e-3, kMaxWavePeriod = 1e6;  // s
 constexpr double kMinWaveDepth = 1e-3;      // m (below it the dispersion relation underflows)
 constexpr double kWaveDepthTolerance = 1e-6;  // waves.depth against surface_y - seabed.y,
                                               // relative to the larger
+constexpr double kMaxBodyBox = 1e4;         // m: a body's drawn box, each size
 constexpr double kMaxPhase = 360;           // deg, either way
 constexpr double kMaxRao = 1e3;             // m of motion per m of wave amplitude
 constexpr double kMaxWeightMass = 1e9;      // kg

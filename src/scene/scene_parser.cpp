@@ -524,6 +524,27 @@ std::array<double, 6> ReadSix(TableReader& r, const std::string& key, bool non_n
   return out;
 }
 
+// Exactly three numbers (along x, y, z), each within [0, limit] (non_negative) or
+// [-limit, limit]; `fallback` when the key is absent.
+std::array<double, 3> ReadThree(TableReader& r, const std::string& key,
+                                std::array<double, 3> fallback, bool non_negative,
+                                const std::string& units, double limit) {
+  const toml::node* n = r.Get(key);
+  if (!n) return fallback;
+  const std::string what = "an array of three " +
+                           std::string(non_negative ? "numbers >= 0" : "numbers") + " " + units +
+                           " up to " + TableReader::Fmt(limit);
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != 3) r.Fail(n, key, "expected " + what);
+  std::array<double, 3> out{};
+  for (size_t i = 0; i < 3; ++i) {
+    out[i] = r.Number(key, a->get(i), what);
+    if (!(std::abs(out[i]) <= limit) || (non_negative && out[i] < 0))
+      r.Fail(n, key, "expected " + what + ", got " + TableReader::Fmt(out[i]));
+  }
+  return out;
+}
+
 // [[body]]: the rigid bodies of a system.
 void ReadBodies(TableReader& top, SceneDef& scene, const std::string& file) {
   const toml::array* arr = top.TableArray("body", false);
@@ -538,6 +559,12 @@ void ReadBodies(TableReader& top, SceneDef& scene, const std::string& file) {
     b.orientation = r.Triple("orientation", {0, 0, 0}, false, false,
                              " in degrees, about x, y and z", kMaxPhase,
                              TableReader::TwoValues::kZeroZ);
+    b.has_box = t->contains("box");  // drawn only, whatever its motion
+    b.box = ReadThree(r, "box", {0, 0, 0}, true,
+                      "(length along x, height along y, width along z, in m)", kMaxBodyBox);
+    b.box_center = ReadThree(r, "box_center", {0, 0, 0}, false,
+                             "(x, y, z in m, in the body's axes from its reference point)",
+                             kMaxLength);
     if (b.free) {
       b.mass = r.OptionalNonNegative("mass", 0.0, " in kg", kMaxBodyMass);
       b.center_of_gravity = r.Triple("center_of_gravity", {0, 0, 0}, false, false,

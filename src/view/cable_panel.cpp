@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "view/body_outline.h"
 #include "view/cable_style.h"
@@ -117,9 +118,25 @@ void DrawCablePanel(Painter& p, const CablePanelInput& in, const Colormap& color
     }
     p.Polyline(line, 2 * k, th.water);
   }
-  // Beneath the lines: each body's outline through its points, faintly filled, named inside.
-  for (std::size_t b = 0; in.bodies && in.points && b < in.bodies->size(); ++b) {
+  // Beneath the lines: each body's box, its 12 edges, else its outline through its points,
+  // faintly filled; named inside.
+  for (std::size_t b = 0; in.bodies && b < in.bodies->size(); ++b) {
     const BodyView& body = (*in.bodies)[b];
+    if (in.body_boxes && b < in.body_boxes->size() && !(*in.body_boxes)[b].empty()) {
+      const std::vector<PanelEdge>& edges = (*in.body_boxes)[b];
+      Vec2f c{0, 0};
+      float x0 = std::numeric_limits<float>::max(), x1 = -x0;
+      for (const PanelEdge& e : edges) {
+        const Vec2f a = world(e.x0, e.y0), z = world(e.x1, e.y1);
+        p.Line(a, z, 2.5f * k, th.text_dim);
+        c.x += (a.x + z.x) / (2 * edges.size()), c.y += (a.y + z.y) / (2 * edges.size());
+        x0 = std::min({x0, a.x, z.x}), x1 = std::max({x1, a.x, z.x});
+      }
+      if (x1 - x0 > EstimateTextWidth(body.name, 12 * k) + 16 * k)
+        p.Text(body.name, c, 12 * k, th.text, HAlign::kCenter, VAlign::kMiddle);
+      continue;
+    }
+    if (!in.points) continue;
     std::vector<Vec2f> at;
     for (int q : body.points) {
       const PointView& pt = (*in.points)[q];

@@ -41,6 +41,10 @@ PanelHead CablePanelHead(const SceneView& scene, const std::string& path_label, 
                          const Theme& th);
 
 // Borrowed for one call: the pointers are not kept.
+struct PanelEdge {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // its ends in a panel's world coordinates [m]
+};
+
 struct CablePanelInput {
   PixelRect panel;                  // the whole panel [px]
   PlotMapping world;                // its axes: world [m] -> pixels, equal scale in x and y
@@ -64,6 +68,10 @@ struct CablePanelInput {
   const std::vector<PointView>* points = nullptr;  // named by their markers; null = none
   // Outlined through their points (which `points` must be given with); null = none.
   const std::vector<BodyView>* bodies = nullptr;
+  // As `bodies`: each body's box edges in the panel's (x, y) [m] (body_fit.h's, projected),
+  // drawn instead of its outline; empty for a body without a box; null = none. A body with a
+  // box is drawn without `points` too (the elevation).
+  const std::vector<std::vector<PanelEdge>>* body_boxes = nullptr;
   // The axes' titles: the plane's (the plan and the elevation of lines in space have others).
   std::string x_label = "x [m]", y_label = "y [m]";
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "view/body_fit.h"
 #include "view/cable_panel.h"
 #include "view/colorbar_panel.h"
 #include "view/header_panel.h"
@@ -238,6 +239,12 @@ Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& 
     cable.alike = scene.lines_alike;
     cable.points = &scene.points;
     cable.bodies = &scene.bodies;
+    std::vector<std::vector<PanelEdge>> boxes;  // in the plane z = 0: (x, y)
+    for (const auto& edges : BodyBoxesNow(scene, snap.lines)) {
+      boxes.emplace_back();
+      for (const auto& e : edges) boxes.back().push_back({e[0].x(), e[0].y(), e[1].x(), e[1].y()});
+    }
+    cable.body_boxes = &boxes;
     if (scene.sea.seabed) cable.seabed_y = &scene.sea.seabed_y;
     if (scene.sea.surface && !snap.surface_x.empty()) {
       cable.surface_x = &snap.surface_x;

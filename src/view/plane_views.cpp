@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "view/body_fit.h"
 #include "view/cable_panel.h"
 
 namespace cablefilm {
@@ -140,7 +141,20 @@ void DrawView(Painter& p, const FrameLayout& L, bool plan, const PlaneViewsInput
   c.end_paths = &paths;
   c.alike = scene.lines_alike;
   if (plan) c.points = &scene.points;  // the plan shows the spread: the points apart
-  if (plan) c.bodies = &scene.bodies;
+  // The bodies' boxes in both views (the elevation draws no outlines: its points overlap).
+  std::vector<std::vector<PanelEdge>> boxes;
+  for (const auto& edges : BodyBoxesNow(scene, in.now->lines)) {
+    boxes.emplace_back();
+    for (const auto& edge : edges) {  // as ProjectPoint, in double
+      const Vec &a = edge[0], &b = edge[1];
+      if (plan)
+        boxes.back().push_back({a.x(), a.z(), b.x(), b.z()});
+      else
+        boxes.back().push_back({e.Along(a.x(), a.z()), a.y(), e.Along(b.x(), b.z()), b.y()});
+    }
+  }
+  c.bodies = &scene.bodies;
+  c.body_boxes = &boxes;
   c.x_label = plan ? "x [m]" : "horizontal distance from the start [m]";
   c.y_label = plan ? "z [m]" : "y [m]";
   std::vector<double> sx, sy;

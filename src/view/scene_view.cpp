@@ -63,11 +63,15 @@ void CheckSceneView(const SceneView& scene) {
     CheckStations("point \"" + p.name + "\"", "station", {p.station},
                   scene.lines[p.line].arc_length.size());
   }
-  for (const BodyView& b : scene.bodies)
+  for (const BodyView& b : scene.bodies) {
+    if (!b.local.empty() && b.local.size() != b.points.size())
+      throw Error("frame: body \"" + b.name + "\" has " + std::to_string(b.local.size()) +
+                  " local positions for " + std::to_string(b.points.size()) + " points");
     for (int q : b.points)
       if (q < 0 || static_cast<std::size_t>(q) >= scene.points.size())
         throw Error("frame: body \"" + b.name + "\" has point " + std::to_string(q + 1) +
                     " of " + std::to_string(scene.points.size()));
+  }
 }
 
 }  // namespace cablefilm

@@ -57,10 +57,18 @@ struct PointView {
   int line = 0, station = 0;
 };
 
-// A rigid body of a system: drawn as the outline through its points (its fairleads), named.
+// A rigid body of a system: drawn as the outline through its points (its fairleads), named;
+// or, with a box, as the box's 12 edges at its pose, which its points' places give (body_fit.h).
 struct BodyView {
   std::string name;
   std::vector<int> points;  // indices into SceneView::points
+  // Each point's position in the body's axes [m] (as `points`; empty: none known) and the
+  // body's rest angles [rad] (about x, then y, then z): its pose from where its points are.
+  std::vector<std::array<double, 3>> local;
+  std::array<double, 3> rest_angles{};
+  bool has_box = false;                // drawn as a box, not the outline
+  std::array<double, 3> box{};         // its sizes along the body's x, y, z [m]
+  std::array<double, 3> box_center{};  // in the body's axes from its reference point [m]
 };
 
 struct SeaView {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "view/body_fit.h"
 #include "view/body_outline.h"
 #include "view/cable_panel.h"
 #include "view/name_tag.h"
@@ -231,7 +232,14 @@ ViewProjection DrawSpaceView(Painter& p, const SpaceViewInput& in, const Colorma
       for (const auto& piece : path.pieces)
         if (piece.size() >= 2) s.tubes.push_back(PlainTube(piece, 0.3f * radius, EndPathColor(th)));
     }
-  for (const BodyView& body : scene.bodies) {  // each body's outline through its points
+  const std::vector<std::vector<std::array<Vec, 2>>> boxes = BodyBoxesNow(scene, now.lines);
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {  // its box, else its outline
+    const BodyView& body = scene.bodies[b];
+    if (!boxes[b].empty()) {
+      for (const auto& edge : boxes[b])
+        s.tubes.push_back(PlainTube({F(edge[0]), F(edge[1])}, 0.8f * radius, th.text_dim));
+      continue;
+    }
     std::vector<Vec3f> at;
     for (int q : body.points) {
       const PointView& pt = scene.points[q];

@@ -29,10 +29,23 @@ SceneView MakeSystemFilmScene(const SceneDef& scene, const SystemRun& run,
                               DrawsInSpace(scene, view));
   v.lines_alike = true;
   v.bodies.resize(sys.bodies.size());
-  for (std::size_t b = 0; b < sys.bodies.size(); ++b) v.bodies[b].name = sys.bodies[b].name;
+  for (std::size_t b = 0; b < sys.bodies.size(); ++b) {
+    BodyView& body = v.bodies[b];
+    body.name = sys.bodies[b].name;
+    const Vec& a = sys.bodies[b].angles;
+    body.rest_angles = {a.x(), a.y(), a.z()};
+    if (b < scene.bodies.size() && scene.bodies[b].has_box) {  // the scene's bodies, in order
+      body.has_box = true;
+      body.box = scene.bodies[b].box;
+      body.box_center = scene.bodies[b].box_center;
+    }
+  }
   for (const SystemPoint& p : sys.points) {
     if (p.ends.empty()) continue;
-    if (p.on_body >= 0) v.bodies[p.on_body].points.push_back(static_cast<int>(v.points.size()));
+    if (p.on_body >= 0) {
+      v.bodies[p.on_body].points.push_back(static_cast<int>(v.points.size()));
+      v.bodies[p.on_body].local.push_back({p.local.x(), p.local.y(), p.local.z()});
+    }
     v.points.push_back({p.name, p.ends[0].line, p.ends[0].station});
   }
   return v;

@@ -1094,5 +1094,48 @@ TEST(SceneLoader, BodyErrors) {
               "body[0].added_mass", {"unknown key", "motion = \"fixed\""});
 }
 
+TEST(SceneLoader, BodyBox) {
+  // Drawn only, for any motion: its sizes and centre in the body's axes; none by default.
+  const SceneDef none = ParseScene(BodySystem(), kFile);
+  EXPECT_FALSE(none.bodies[0].has_box);
+  const std::string boxed = With("mass = 2.0e4", "mass = 2.0e4\nbox = [4.0, 2.5, 3.0]\n"
+                                 "box_center = [0.5, -1.0, 0.0]", BodySystem());
+  const SceneDef s = ParseScene(boxed, kFile);
+  ASSERT_TRUE(s.bodies[0].has_box);
+  EXPECT_EQ(s.bodies[0].box[1], 2.5);
+  EXPECT_EQ(s.bodies[0].box_center[1], -1.0);
+  // No number of the model changes with it: the body's rest pose and loads are the same.
+  const SystemModel a = BuildSystem(none), b = BuildSystem(s);
+  EXPECT_EQ(a.bodies[0].mass, b.bodies[0].mass);
+  EXPECT_EQ((a.points[2].motion.rest() - b.points[2].motion.rest()).norm(), 0.0);
+  // A held body takes it too.
+  EXPECT_TRUE(ParseScene(With("motion = \"free\"\nposition = [70.0, 0.0, 10.0]",
+                              "position = [70.0, 0.0, 10.0]\nbox = [1.0, 1.0, 1.0]",
+                              With("mass = 2.0e4\nvolume = 30.0\ninertia = [1.0e5, 2.0e5]\n"
+                                   "added_mass = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]\n"
+                                   "initial_offset = [1.0, 0.0, 0.0, 0.0, 0.0, 10.0]\n",
+                                   "", BodySystem())),
+                         kFile)
+                  .bodies[0]
+                  .has_box);
+}
+
+TEST(SceneLoader, BodyBoxErrors) {
+  auto box = [](const std::string& line) {
+    return With("mass = 2.0e4", "mass = 2.0e4\n" + line, BodySystem());
+  };
+  // Negative, too large, two or four numbers, not numbers, not an array: refused, named.
+  ExpectError(box("box = [4.0, -2.0, 3.0]"), "body[0].box", {"expected", "three", ">= 0", "-2"});
+  ExpectError(box("box = [4.0, 2.0, 2e4]"), "body[0].box", {"expected", "up to 10000", "got 20000"});
+  ExpectError(box("box = [4.0, 2.0]"), "body[0].box", {"expected an array of three"});
+  ExpectError(box("box = [4.0, 2.0, 3.0, 1.0]"), "body[0].box", {"expected an array of three"});
+  ExpectError(box("box = [4.0, \"x\", 3.0]"), "body[0].box", {"expected"});
+  ExpectError(box("box = 4.0"), "body[0].box", {"expected an array of three"});
+  ExpectError(box("box = [4.0, 2.0, 3.0]\nbox_center = [0.0, 1.0]"), "body[0].box_center",
+              {"expected an array of three"});
+  ExpectError(box("box = [4.0, 2.0, 3.0]\nbox_center = [0.0, true, 1.0]"), "body[0].box_center",
+              {"expected"});
+}
+
 }  // namespace
 }  // namespace cablefilm

@@ -209,6 +209,78 @@ TEST_F(SystemFrameTest, EveryLineIsDrawnInFullWithItsEndsAndIsNamed) {
   }));
 }
 
+// The two fairleads on a body with a box 2 m x 2 m x 16 m about the middle of the fairleads
+// (two points give its place at its rest turn, none here): the plan and the elevation draw its
+// edges (in the outline's colour, th.text_dim) instead of today's outline, the segment through
+// the fairleads at x = 20; the 3D view draws them as tubes.
+TEST(SystemFrameBody, ABoxIsDrawnByItsEdgesInsteadOfTheOutline) {
+  constexpr int kW = 1920, kH = 1080;
+  const Colormap map("viridis");
+  const Theme th = Theme::Dark();
+  FixedPolicy policy;
+  policy.duration = 10;
+  policy.tension_min = 0;
+  policy.tension_max = kMax;
+  policy.box = {-1, 23, -3, 3, -3, 15};
+  auto draw = [&](bool box, FrameLayout* layout) {
+    SceneView scene = SystemScene();
+    BodyView body;
+    body.name = "barge";
+    body.points = {1, 3};  // the fairleads, at (20, 0, 0) and (20, 0, 12)
+    body.local = {{0, 0, -6}, {0, 0, 6}};
+    body.has_box = box;
+    body.box = {2, 2, 16};  // x 19 to 21, y -1 to 1, z -2 to 14
+    scene.bodies.push_back(body);
+    History history(scene, policy);
+    const Snapshot snap = SystemSnapshot(scene, 0);
+    history.Add(snap);
+    *layout = MakeFrameLayout(scene, history, kW, kH);
+    RenderOptions options;
+    options.width = kW;
+    options.height = kH;
+    Renderer renderer(options);
+    return renderer.Draw(MakeFrame(scene, history, snap, *layout, map, th));
+  };
+  FrameLayout L, L0;
+  const Image image = draw(true, &L), outline = draw(false, &L0);
+  WritePng(testing::OutputDir("system") + "/system_frame_box_1920x1080.png", image);
+  // Within 2 px of a point (the edge is 2.5 k px wide, anti-aliased): a pixel of the body's
+  // colour (within 24/255: its edges are opaque, the panel shows only at their rim).
+  auto body_near = [&](const Image& im, const PlotMapping& m, double x, double y) {
+    const Vec2f c = m.ToPixel(x, y);
+    double best = 1e9;
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx)
+        best = std::min(best, Distance(PixelAt(im, c.x + dx, c.y + dy), th.text_dim));
+    return best < 24;
+  };
+  // The plan (x, z): the box's four corners and the middle of its long sides; not the outline.
+  for (double x : {19.0, 21.0})
+    for (double z : {-2.0, 6.0, 14.0})
+      EXPECT_TRUE(body_near(image, L.plan, x, z)) << x << ", " << z;
+  EXPECT_FALSE(body_near(image, L.plan, 20.0, 6.0)) << "the outline drawn with a box";
+  EXPECT_TRUE(body_near(outline, L0.plan, 20.0, 6.0)) << "no outline without a box";
+  EXPECT_FALSE(body_near(outline, L0.plan, 19.0, 6.0)) << "a box drawn without one";
+  // The elevation (along the first line's ends, x here; y up): its corners and sides.
+  for (double x : {19.0, 21.0})
+    for (double y : {-1.0, -0.5, 0.5, 1.0})  // not at 0: the lines cover it there
+      EXPECT_TRUE(body_near(image, L.elevation, x, y)) << x << ", " << y;
+  EXPECT_TRUE(body_near(image, L.elevation, 20.0, 1.0));
+  // The 3D view: more pixels of the body's colour in some light with the box's 12 tubes than
+  // with the outline's one.
+  auto lit = [&](const Image& im, const FrameLayout& layout) {
+    int n = 0;
+    const PixelRect& r = layout.space_view;
+    for (int y = static_cast<int>(r.y0); y < static_cast<int>(r.y1); ++y)
+      for (int x = static_cast<int>(r.x0); x < static_cast<int>(r.x1); ++x) {
+        const Rgb q = PixelAt(im, x, y);
+        n += Luma(q) > 40 && ShadedDistance(q, th.text_dim) < 6;
+      }
+    return n;
+  };
+  EXPECT_GT(lit(image, L), lit(outline, L0) + 200);
+}
+
 TEST(SystemScene, PointsMustBeOnStationsOfTheirLines) {
   SceneView scene = SystemScene();
   scene.points.push_back({"lost", 1, kLinks + 1});
