@@ -130,6 +130,10 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
                     "position error estimate kept below it (the error a step adds, not the "
                     "run's total)\n",
                     grid.options.rho_inf, grid.dt, grid.dt / grid.limit.time_step, grid.options.tolerance);
+      if (grid.automatic && grid.options.start_end > 0)
+        std::printf("  while the motion starts, until t = %.4g s: tolerance %.3g m (the start's "
+                    "free oscillations carry their phase error on)\n",
+                    grid.options.start_end, grid.options.start_tolerance);
       else
         std::printf("  integrator implicit (generalized-alpha, rho_inf %.2f), time step %.4g s "
                     "(given) = %.0f x the explicit limit, %ld steps\n",

@@ -31,6 +31,15 @@ struct StepOptions {
   double tolerance = 0;        // implicit, inextensible: local position error per step [m];
                                // 0: the steps asked of Step() (inextensible: split below the
                                // transverse-wave limit)
+  // Implicit, with a tolerance: the stricter one [m] that holds while the motion starts, until
+  // start_end [s] (the run layer's StartDuration): the start excites the line's free axial
+  // oscillations, whose phase error accumulates cycle after cycle, where the forced motion's
+  // does not (docs/model.md, "Start-up"). 0: the tolerance throughout.
+  double start_tolerance = 0;
+  double start_end = 0;
+  double ToleranceAt(double t) const {
+    return tolerance > 0 && start_tolerance > 0 && t < start_end ? start_tolerance : tolerance;
+  }
   double safety_factor = 0;    // explicit: > 0, automatic substeps of at most this fraction of
                                // the stability limit, refined where links snap
                                // (explicit_step.h); 0: the steps asked, as they are

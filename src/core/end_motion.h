@@ -79,6 +79,7 @@ class EndMotion {
   Vec Evaluate(double t, int order, const SmoothSchedule& scale,
                const SmoothSchedule& clock) const;
   double period() const;  // 2 pi / omega_s of eq. (3) [s]; the table's span; 0 otherwise
+  double ramp_rate() const { return kind_ == EndKind::kTrochoid ? nu_ : 0.0; }  // nu_s [1/s]
 
   // A table's: its interpolation, first and last row's times [s], and the speed [m/s] at its
   // last row (what the end loses at once when a run goes on past it).

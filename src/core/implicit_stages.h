@@ -100,8 +100,11 @@ int WorstLink(const Model& m, const Data& d);
 // double Error(h), void Accept(h) (settle and commit), int WorstLink(), and double
 // NextKink(t): the first time after t [s] where a prescribed motion's velocity jumps (a linear
 // table's rows; +infinity if none), on which a step is made to land rather than straddle it.
+// The error is held below `options`' tolerance at the step's start (StepOptions::ToleranceAt;
+// 0: the steps asked, uncontrolled).
 template <class Stepper>
-void AdaptiveImplicitSteps(Stepper& s, double tolerance, const CancelFlag* stop, double dt) {
+void AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelFlag* stop,
+                           double dt) {
   constexpr int kMaxRejections = 40;
   constexpr double kSmallestStepFraction = 1e-9;  // of the interval asked of Step()
   double& t = s.Time();
@@ -114,6 +117,7 @@ void AdaptiveImplicitSteps(Stepper& s, double tolerance, const CancelFlag* stop,
   const double smallest = kSmallestStepFraction * dt;
   while (t < t_end - 1e-12 * dt) {
     ThrowIfCancelled(stop, "the implicit step");
+    const double tolerance = options.ToleranceAt(t);
     double h = std::min(proposed, t_end - t);
     // Land on a kink of a prescribed motion within reach (one closer than the smallest step
     // is taken as passed: t may sit a rounding short of a row it has landed on).

@@ -78,7 +78,7 @@ GeneralizedAlpha GeneralizedAlphaCoefficients(double rho_inf) {
 
 void ImplicitStep(const Model& m, Data& d, const Inputs& in, double dt) {
   LineStepper stepper{m, d, in, GeneralizedAlphaCoefficients(d.options.rho_inf)};
-  AdaptiveImplicitSteps(stepper, d.options.tolerance, in.stop, dt);
+  AdaptiveImplicitSteps(stepper, d.options, in.stop, dt);
   CheckStateSane(m, d.state, d.forces.geometry.length);
 }
 

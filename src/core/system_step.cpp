@@ -442,7 +442,7 @@ void StepSystem(const SystemModel& sys, SystemData& sd, const Inputs& in, double
   const StepOptions& o = sd.lines.empty() ? StepOptions{} : sd.lines[0].options;
   SystemStepper stepper{sys, sd, in, GeneralizedAlphaCoefficients(o.rho_inf)};
   try {
-    AdaptiveImplicitSteps(stepper, o.tolerance, in.stop, dt);
+    AdaptiveImplicitSteps(stepper, o, in.stop, dt);
   } catch (const BlowUpError& e) {  // its link is the most stretched: name that link's line
     int line = 0;
     stepper.WorstLinkOf(&line);

@@ -32,6 +32,9 @@ void WriteRunReport(const std::string& path, const RunSummary& f) {
   std::fprintf(out, "scheme = %s\n", TomlString(f.scheme).c_str());
   std::fprintf(out, "tolerance = %.17g            # local position error per step [m]; 0: fixed steps\n",
                f.tolerance);
+  std::fprintf(out, "start_tolerance = %.17g      # the same while the motion starts [m]; 0: none\n",
+               f.start_tolerance);
+  std::fprintf(out, "start_end = %.17g            # the start's end [s]\n", f.start_end);
   std::fprintf(out, "duration = %.17g             # simulated [s]\n", f.duration);
   std::fprintf(out, "computer_time = %.6g        # [s]\n", f.wall);
   std::fprintf(out, "steps = %ld\nrejected_steps = %ld\nnewton_iterations = %ld\n", f.stats.steps,
@@ -101,6 +104,8 @@ bool ReadRunReport(const std::string& path, RunSummary* s) {
   auto whole = [&](const char* key) { return r[key].value<long>().value_or(-1); };
   s->scheme = r["scheme"].value<std::string>().value_or("");
   s->tolerance = number("tolerance", 0);
+  s->start_tolerance = number("start_tolerance", 0);
+  s->start_end = number("start_end", 0);
   s->duration = number("duration", 0);
   s->wall = number("computer_time", 0);
   s->stats.steps = whole("steps");

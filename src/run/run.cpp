@@ -56,6 +56,10 @@ Run PrepareRun(const SceneDef& scene, Model model, std::string label, const Canc
   run.extent = RunExtent(initial);
   run.summary.scheme = SchemeName(m, run.grid.options);
   run.summary.tolerance = run.grid.automatic ? run.grid.options.tolerance : 0.0;
+  if (run.grid.automatic && run.grid.options.start_end > 0) {
+    run.summary.start_tolerance = run.grid.options.start_tolerance;
+    run.summary.start_end = run.grid.options.start_end;
+  }
   run.section_materials = SectionMaterials(scene, scene.sections);
   return run;
 }

@@ -15,6 +15,8 @@ namespace cablefilm {
 struct RunSummary {
   std::string scheme;             // the scheme's name (core/data.h, SchemeName)
   double tolerance = 0;           // local position error per step [m]; 0: fixed steps
+  double start_tolerance = 0;     // the stricter one while the motion starts [m]; 0: none
+  double start_end = 0;           // until then [s]
   double duration = 0;            // simulated: the time reached [s]
   double wall = 0;                // computer time of the stepping [s]
   StepStats stats;

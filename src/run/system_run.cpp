@@ -15,16 +15,20 @@ namespace {
 // line's would make a short pendant set the steps of the whole mooring).
 TimeGrid SystemGrid(const SceneDef& scene, const SystemModel& sys) {
   TimeGrid grid;
-  double longest = -1, tolerance = 0;
+  double longest = -1, tolerance = 0, start_tolerance = 0, start_end = 0;
   for (size_t i = 0; i < sys.lines.size(); ++i) {
     const TimeGrid g = ChooseTimeGrid(sys.lines[i], scene.simulation, scene.output.interval);
     if (i == 0 || g.dt < grid.dt) grid = g;
     if (sys.lines[i].line.total_length() > longest) {
       longest = sys.lines[i].line.total_length();
       tolerance = g.options.tolerance;
+      start_tolerance = g.options.start_tolerance;
     }
+    start_end = std::max(start_end, g.options.start_end);  // every line's moving ends
   }
   grid.options.tolerance = tolerance;
+  grid.options.start_tolerance = start_tolerance;
+  grid.options.start_end = start_end;
   return grid;
 }
 
@@ -95,6 +99,10 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
   }
   run.summary.scheme = run.lines[0].scheme;
   run.summary.tolerance = run.grid.automatic ? run.grid.options.tolerance : 0.0;
+  if (run.grid.automatic && run.grid.options.start_end > 0) {
+    run.summary.start_tolerance = run.grid.options.start_tolerance;
+    run.summary.start_end = run.grid.options.start_end;
+  }
   return run;
 }
 

@@ -5,6 +5,18 @@
 
 namespace cablefilm {
 
+double StartDuration(const Model& m) {
+  constexpr double kRampsToStart = 5;  // nu t at which R(t) = 1 - 6 exp(-5) = 0.96
+  const auto start = [&](double ramp_rate, double period) {
+    return ramp_rate > 0 ? kRampsToStart / ramp_rate : period;
+  };
+  double end = 0;
+  for (const EndMotion* e : {&m.ends.start, &m.ends.end})
+    if (e->kind() == EndKind::kTrochoid) end = std::max(end, start(e->ramp_rate(), e->period()));
+  if (m.has_waves()) end = std::max(end, start(m.env.wave.spec.ramp_rate, m.env.wave.spec.period));
+  return end;
+}
+
 TimeGrid ChooseTimeGrid(const Model& m, const SimulationDef& sim, double interval) {
   TimeGrid g;
   StepOptions& o = g.options;
@@ -28,6 +40,11 @@ TimeGrid ChooseTimeGrid(const Model& m, const SimulationDef& sim, double interva
     wanted = interval;
     o.tolerance =
         sim.tolerance > 0 ? sim.tolerance : kDefaultRelativeTolerance * m.line.total_length();
+    if (o.scheme == Scheme::kImplicit) {
+      o.start_end = sim.start_duration >= 0 ? sim.start_duration : StartDuration(m);
+      o.start_tolerance =
+          sim.start_tolerance > 0 ? sim.start_tolerance : o.tolerance / kStartToleranceDivisor;
+    }
   }
   g.steps_per_output = std::max(1, static_cast<int>(std::ceil(interval / wanted - 1e-9)));
   g.dt = interval / g.steps_per_output;

@@ -15,6 +15,19 @@ namespace cablefilm {
 // pendulum over its first second (see tests/core/inextensible_test.cpp).
 constexpr double kDefaultRelativeTolerance = 1e-6;
 
+// While the motion starts, the implicit scheme's default tolerance is divided by this: case
+// P63's start excites the 0.5 s axial ringing of its weight on the nylon, and at the default
+// tolerance its phase drifts to 0.5 % of the peak by t = 2.5 s (the step at the 1/30 s rows);
+// a twentieth keeps every row within 0.08 % of the converged, low-passed explicit run at 60 and
+// 600 links for 24 % more steps (docs/validation.md, "Start-up accuracy"). Dividing it throughout cost
+// 2.2 and 2.9 times the steps there and on the grounded mooring, for nothing after the start.
+constexpr double kStartToleranceDivisor = 20;
+
+// How long the motion takes to start [s]: the longest of the ramps of eq. (3) (the ends' and
+// the waves') to within 4 % of their amplitude, R(t) = 1 - (1 + nu t) exp(-nu t) at nu t = 5;
+// a motion without a ramp (nu = 0) starts in one period. 0 when nothing moves.
+double StartDuration(const Model& m);
+
 struct TimeGrid {
   StepOptions options;       // the scheme and its settings
   double interval = 0;       // between outputs [s]

@@ -154,6 +154,10 @@ struct SimulationDef {
   double tolerance = 0;          // implicit, auto step: local position error per step [m];
                                  // 0 = 1e-6 of the cable's length
   double safety_factor = 0.8;    // fraction of the stability limit used by "auto"
+  // Implicit, auto step: the tolerance while the motion starts [m] (0 = tolerance / 20) and how
+  // long the start lasts [s] (negative = "auto": the ramps of eq. (3) and of the waves).
+  double start_tolerance = 0;
+  double start_duration = -1;
 };
 
 struct OutputDef {

@@ -700,6 +700,22 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
     }
     scene.simulation.tolerance =
         r.OptionalPositive("tolerance", 0.0, " in m (local error per step)", 0, kMaxLength);
+    scene.simulation.start_tolerance = r.OptionalPositive(
+        "start_tolerance", 0.0, " in m (local error per step while the motion starts)", 0,
+        kMaxLength);
+    if (const toml::node* n = r.Get("start_duration")) {
+      constexpr const char* kExpected = "\"auto\" or a number of seconds from 0 to 1e9";
+      if (n->is_string()) {
+        if (n->value<std::string>().value() != "auto")
+          r.Fail(n, "start_duration", std::string("expected ") + kExpected + ", got " +
+                                          Quote(n->value<std::string>().value()));
+      } else {
+        const double s = r.Number("start_duration", n, kExpected);
+        if (!(s >= 0 && s <= kMaxTime))
+          r.Fail(n, "start_duration", std::string("expected ") + kExpected + ", got " + TableReader::Fmt(s));
+        scene.simulation.start_duration = s;
+      }
+    }
     scene.simulation.safety_factor = r.OptionalPositive(
         "safety_factor", 0.8, " (fraction of the stability limit)", 0, 1.0);
     scene.simulation.integrator =

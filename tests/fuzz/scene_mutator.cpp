@@ -428,6 +428,8 @@ constexpr KnownKey kKnownKeys[] = {
     {"simulation", "time_step", Kind::kNumber},
     {"simulation", "tolerance", Kind::kNumber},
     {"simulation", "rho_infinity", Kind::kNumber},
+    {"simulation", "start_tolerance", Kind::kNumber},
+    {"simulation", "start_duration", Kind::kNumber},
     {"simulation", "safety_factor", Kind::kNumber},
     {"film", "width", Kind::kInteger},
     {"film", "height", Kind::kInteger},

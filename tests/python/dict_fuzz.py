@@ -199,6 +199,7 @@ KNOWN_KEYS = ["gravity", "fluid_density", "current", "current_heading", "y", "st
               "at", "mass", "volume", "added_volume", "drag_area", "position", "motion",
               "x_amplitudes", "y_amplitudes", "z_amplitudes", "file", "x_rao", "y_rao", "state",
               "duration", "integrator", "time_step", "tolerance", "rho_infinity",
+              "start_tolerance", "start_duration",
               "safety_factor", "width", "height", "fps", "speed", "crf", "colormap",
               "tension_range", "view", "interval", "film", "frames", "start", "end", "force",
               "seabed", "waves", "title", "point", "line"]

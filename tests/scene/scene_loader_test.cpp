@@ -153,6 +153,25 @@ TEST(SceneLoader, SectionWithoutSegments) {
               "cable.section", {"expected"});
 }
 
+TEST(SceneLoader, StartToleranceKeys) {
+  const auto with = [](const std::string& lines) {
+    return With("time_step = \"auto\"", "time_step = \"auto\"\n" + lines);
+  };
+  SimulationDef s = ParseScene(with("start_duration = \"auto\"\nstart_tolerance = 1e-6"), kFile).simulation;
+  EXPECT_LT(s.start_duration, 0);  // auto
+  EXPECT_EQ(s.start_tolerance, 1e-6);
+  EXPECT_EQ(ParseScene(with("start_duration = 4.5"), kFile).simulation.start_duration, 4.5);
+  EXPECT_EQ(ParseScene(with("start_duration = 0"), kFile).simulation.start_duration, 0.0);
+  EXPECT_LT(ParseScene(kBase, kFile).simulation.start_duration, 0);
+  ExpectError(with("start_duration = \"soon\""), "simulation.start_duration",
+              {"expected \"auto\" or a number of seconds from 0 to 1e9"});
+  ExpectError(with("start_duration = -1.0"), "simulation.start_duration", {"expected \"auto\""});
+  ExpectError(with("start_duration = 2e9"), "simulation.start_duration", {"expected \"auto\""});
+  ExpectError(with("start_duration = true"), "simulation.start_duration", {"expected \"auto\""});
+  ExpectError(with("start_tolerance = 0.0"), "simulation.start_tolerance", {"expected a positive number"});
+  ExpectError(with("start_tolerance = \"auto\""), "simulation.start_tolerance", {"expected"});
+}
+
 TEST(SceneLoader, NonPositiveQuantities) {
   ExpectError(With("segments = 30\n\n[[cable.weight]]", "segments = 30\n\n[[cable.weight]]",
                    With("length = 45.72\nsegments = 30\n\n[[cable.weight]]",
