@@ -15,6 +15,8 @@ namespace cablefilm {
 
 // The font file fontconfig picks for a pattern such as "DejaVu Sans:style=Book". Throws Error.
 std::string FindFontFile(const std::string& pattern);
+// The files of several patterns, fontconfig's configuration loaded once. Throws Error.
+std::vector<std::string> FindFontFiles(const std::vector<std::string>& patterns);
 std::u32string DecodeUtf8(const std::string& text);  // invalid bytes become U+FFFD
 
 struct GlyphQuad {
