@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <new>
 
 #include "core/error.h"
 
@@ -79,7 +80,10 @@ std::string FtError(FT_Error e) {
 }  // namespace
 
 FontAtlas::FontAtlas(const std::string& font_path, int atlas_size)
-    : size_(atlas_size), pixels_(static_cast<std::size_t>(atlas_size) * atlas_size, 0) {
+    : size_(atlas_size),
+      pixels_(static_cast<std::uint8_t*>(
+          std::calloc(static_cast<std::size_t>(atlas_size) * atlas_size, 1))) {
+  if (!pixels_) throw std::bad_alloc();
   if (font_path.empty()) {
     const std::vector<std::string> files =
         FindFontFiles({"DejaVu Sans:style=Book", "DejaVu Sans:weight=bold"});

@@ -3,6 +3,7 @@
 // glyphs rasterised on demand (anti-aliased, 8-bit coverage) into one CPU-side atlas that the
 // renderer uploads as a texture, and the layout of a TextItem into positioned glyph quads.
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <string>
@@ -42,7 +43,7 @@ class FontAtlas {
   float MeasureWidth(const std::string& text, float size, bool bold = false);
 
   int atlas_size() const { return size_; }
-  const std::vector<std::uint8_t>& pixels() const { return pixels_; }  // size x size, R8
+  const std::uint8_t* pixels() const { return pixels_.get(); }  // size x size, R8
   bool dirty() const { return dirty_; }
   void ClearDirty() { dirty_ = false; }
   const std::string& regular_path() const { return paths_[0]; }
@@ -57,8 +58,14 @@ class FontAtlas {
   const Glyph& GetGlyph(char32_t code, int pixel_size, bool bold);
   Face& SizedFace(int pixel_size, bool bold);
 
+  struct Free {
+    void operator()(std::uint8_t* p) const { std::free(p); }
+  };
   int size_;
-  std::vector<std::uint8_t> pixels_;
+  // calloc's zeros: a block this large is mapped afresh, its pages zero until written, so only
+  // the rows the glyphs take are ever touched (max_tension.png uses a few dozen of the 1024: a
+  // vector's zeros cost 256 page faults, about 5 ms on the test machine).
+  std::unique_ptr<std::uint8_t[], Free> pixels_;
   bool dirty_ = true;
   int shelf_x_ = 1, shelf_y_ = 1, shelf_h_ = 0;
   std::string paths_[2];
