@@ -345,7 +345,7 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
 // close: the file grows while it is open).
 TEST_F(NetcdfResultsTest, DeflatedOnlyWhenLarge) {
   const SceneDef scene = LoadScene(ShortP63("1.0"));
-  const Run run = PrepareRun(scene, BuildModel(scene), "elastic", nullptr);
+  const cablefilm::Run run = PrepareRun(scene, BuildModel(scene), "elastic", nullptr);
   const int stations = run.model.stations(), links = run.model.line.links;
   const double row_bytes = 8.0 * (3 * stations + links + 7);
   const long small_rows = 200, large_rows = static_cast<long>(kDeflateAboveBytes / row_bytes) + 1;
@@ -393,7 +393,9 @@ TEST_F(NetcdfResultsTest, DeflatedOnlyWhenLarge) {
       ASSERT_EQ(nc_inq_var_deflate(f.id(), f.Var(var), &shuffle, &deflate, &level), NC_NOERR);
       EXPECT_EQ(deflate, rows == large_rows ? 1 : 0) << var << " " << rows;
       EXPECT_EQ(shuffle, rows == large_rows ? 1 : 0) << var << " " << rows;
-      if (rows == large_rows) EXPECT_EQ(level, 1) << var;
+      if (rows == large_rows) {
+        EXPECT_EQ(level, 1) << var;
+      }
     }
     EXPECT_EQ(f.Dim("time"), static_cast<size_t>(small_rows));
     values.push_back(f.Values("y"));
