@@ -56,7 +56,8 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
   NetcdfCheck(nc_def_dim(nc, "station", static_cast<size_t>(stations_), &dim_station), f, "station");
   NetcdfCheck(nc_def_dim(nc, "link", static_cast<size_t>(links_), &dim_link), f, "link");
 
-  // A variable with its units and long name, compressed; chunked when it has a time axis.
+  // A variable with its units and long name; chunked when it has a time axis, and then deflated
+  // when the file is large.
   struct Cache {
     int var;
     size_t bytes;
@@ -74,7 +75,7 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
       if (dims.size() == 2) chunks.push_back(std::min(chunk_stations, static_cast<size_t>(links_)));
       if (dims.size() == 2 && dims[1] == dim_station) chunks[1] = chunk_stations;
       NetcdfCheck(nc_def_var_chunking(nc, var, NC_CHUNKED, chunks.data()), f, name);
-      // A 2-D variable gets whole chunks, each written once: no cache, so each is deflated and
+      // A 2-D variable gets whole chunks, each written once: no cache, so each is (deflated and)
       // written as it comes (by the writer's thread) rather than all at the close. A 1-D one
       // gets a 16th of a chunk at a time: a cache of two chunks, the full one leaving it as the
       // next is begun. Set after nc_enddef (below): netCDF applies a variable's cache when it

@@ -59,7 +59,8 @@ void SystemResultsWriter::Define(const NetcdfResultsInfo& info) {
 
   // A row: time, the points' 6 series, the lines' 4, the bodies' 12.
   const bool deflate = DeflateResults(
-      info, sizeof(double) * (1 + kPointSeries * points + kLineSeries * lines + kBodySeries * bodies));
+      info, sizeof(double) *
+                (1 + kPointSeries * points + kLineSeries * lines + kBodySeries * bodies));
   // A variable with its units and long name; over time: chunked by kChunkRows rows and, when
   // the file is large (DeflateResults), deflated (level 1, shuffle), as a line's results.nc.
   auto define = [&](const char* name, nc_type type, std::vector<int> dims, const char* units,
