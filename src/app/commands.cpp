@@ -253,7 +253,8 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
   const std::string nc_path = out_dir + "/results" + suffix + ".nc";
   const std::string nc_partial_path = out_dir + "/results" + suffix + ".partial.nc";
   const std::unique_ptr<LineResultsNc> links =
-      OpenLineResultsNc(nc_path, MakeNetcdfInfo(scene, ModelName(m)), m, run.initial.state, T0);
+      OpenLineResultsNc(nc_path, MakeNetcdfInfo(scene, ModelName(m), run.grid.outputs + 1), m,
+                        run.initial.state, T0);
   ProgressSink progress(std::string("simulating (") + run.label + ")", run.grid.end());
   ExecuteRun(run, {&series, links.get(), &progress});
   progress.Finish();

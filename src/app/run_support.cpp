@@ -31,7 +31,7 @@ void InstallSignalHandlers() {
 int InterruptedExitStatus() { return 128 + (g_signal != 0 ? g_signal.load() : SIGINT); }
 
 // results.nc's attributes: the scene (its path and text) and the program's version.
-NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model) {
+NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model, long rows) {
   NetcdfResultsInfo info;
   info.title = scene.title;
   info.scene_file = EscapeText(scene.path);
@@ -43,6 +43,7 @@ NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model) {
   if (*kGitDescribe) info.version += std::string(" (git ") + kGitDescribe + ")";
   info.model = model;
   info.initial_state = scene.initial == InitialStateKind::kEquilibrium ? "equilibrium" : "straight";
+  info.rows = rows;
   return info;
 }
 

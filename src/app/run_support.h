@@ -19,8 +19,8 @@ void InstallSignalHandlers();
 int InterruptedExitStatus();
 
 // results.nc's attributes: the scene (its path and text), the model's name ("elastic"), the
-// program's version.
-NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model);
+// program's version; and the rows a complete run writes (its storage: DeflateResults).
+NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model, long rows);
 
 // The run's output folder (options.out_dir, or output/<scene name>), created and locked
 // (`lock` holds it until the run ends: one run at a time in a folder), with the results of an

@@ -148,6 +148,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
   const SystemModel& sys = run.sys;
   const int nl = static_cast<int>(sys.lines.size());
   std::vector<LineFiles> files(nl);
+  const long rows = run.grid.outputs + 1;  // of a complete run
   std::vector<std::vector<RowSink*>> line_sinks(nl);
   for (int i = 0; i < nl; ++i) {
     const Model& m = sys.lines[i];
@@ -159,8 +160,8 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
     if (ec) throw Error("cannot create the folder " + EscapeText(f.dir) + ": " + ec.message());
     WriteEquilibriumCsv(f.dir + "/equilibrium.csv", m, d.state, d.tension());
     f.series = std::make_unique<TimeseriesWriter>(f.dir + "/timeseries.csv", m, run.inputs);
-    f.results = OpenLineResultsNc(f.dir + "/results.nc", MakeNetcdfInfo(scene, "elastic"), m,
-                                  d.state, d.tension());
+    f.results = OpenLineResultsNc(f.dir + "/results.nc", MakeNetcdfInfo(scene, "elastic", rows),
+                                  m, d.state, d.tension());
     line_sinks[i] = {f.series.get(), f.results.get()};
   }
   PointsWriter points(out_dir + "/points.csv", sys, run.inputs);
@@ -168,7 +169,8 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
   if (!sys.bodies.empty())
     bodies = std::make_unique<BodiesWriter>(out_dir + "/body.csv", sys, run.inputs);
   const std::unique_ptr<SystemResultsNc> results =
-      OpenSystemResultsNc(out_dir + "/results.nc", MakeNetcdfInfo(scene, "elastic"), sys, run.inputs);
+      OpenSystemResultsNc(out_dir + "/results.nc", MakeNetcdfInfo(scene, "elastic", rows), sys,
+                          run.inputs);
   SystemProgress progress(run.grid.end());
   std::vector<SystemRowSink*> sinks = {&points, results.get(), &progress};
   if (bodies) sinks.push_back(bodies.get());

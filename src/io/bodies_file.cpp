@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "io/csv_line.h"
+
 namespace cablefilm {
 
 BodiesWriter::BodiesWriter(const std::string& path, const SystemModel& sys, const Inputs& in)
@@ -16,11 +18,13 @@ bool BodiesWriter::Row(const SystemData& sd) {
     const Vec6& q = loads_.body_poses()[b];
     const Vec6& f = loads_.body_loads()[b];
     // Body names are plain (letters, digits, _ - .): no CSV quoting needed.
-    std::fprintf(file_.stream(),
-                 "%.10g,%s,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-                 "%.10g\n",
-                 sd.t, sys_.bodies[b].name.c_str(), q[0], q[1], q[2], q[3] * deg, q[4] * deg,
-                 q[5] * deg, f[0], f[1], f[2], f[3], f[4], f[5]);
+    // "%.10g,%s,%.12g,%.12g,%.12g,%.10g x 9\n"
+    CsvLine line(file_.stream());
+    line.G(sd.t, 10).Comma().Text(sys_.bodies[b].name);
+    for (int k = 0; k < 3; ++k) line.Comma().G(q[k], 12);
+    for (int k = 3; k < 6; ++k) line.Comma().G(q[k] * deg, 10);
+    for (int k = 0; k < 6; ++k) line.Comma().G(f[k], 10);
+    line.Char('\n');
   }
   return true;
 }

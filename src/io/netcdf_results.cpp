@@ -56,7 +56,16 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
   NetcdfCheck(nc_def_dim(nc, "station", static_cast<size_t>(stations_), &dim_station), f, "station");
   NetcdfCheck(nc_def_dim(nc, "link", static_cast<size_t>(links_), &dim_link), f, "link");
 
-  // A variable with its units and long name, compressed; chunked when it has a time axis.
+  // A variable with its units and long name; chunked when it has a time axis, and then deflated
+  // when the file is large.
+  struct Cache {
+    int var;
+    size_t bytes;
+  };
+  std::vector<Cache> caches;  // of the variables over time
+  // A row: x, y, z of every station, the tension of every link, time and the ends' 6.
+  const bool deflate =
+      DeflateResults(info, sizeof(double) * (kDim * stations_ + links_ + 1 + 2 * kDim));
   auto define = [&](const char* name, nc_type type, std::vector<int> dims, const char* units,
                     const std::string& long_name) {
     int var = -1;
@@ -66,16 +75,17 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
       if (dims.size() == 2) chunks.push_back(std::min(chunk_stations, static_cast<size_t>(links_)));
       if (dims.size() == 2 && dims[1] == dim_station) chunks[1] = chunk_stations;
       NetcdfCheck(nc_def_var_chunking(nc, var, NC_CHUNKED, chunks.data()), f, name);
-      // A 2-D variable gets whole chunks, each written once: no cache, so each is deflated and
+      // A 2-D variable gets whole chunks, each written once: no cache, so each is (deflated and)
       // written as it comes (by the writer's thread) rather than all at the close. A 1-D one
       // gets a 16th of a chunk at a time: a cache of two chunks, the full one leaving it as the
-      // next is begun.
-      const size_t cache = dims.size() == 1 ? 2 * chunks[0] * sizeof(double) : 0;
-      NetcdfCheck(nc_set_var_chunk_cache(nc, var, cache, 101, 1.0f), f, name);
+      // next is begun. Set after nc_enddef (below): netCDF applies a variable's cache when it
+      // opens the HDF5 dataset, and a cache set in define mode is not applied to the dataset
+      // nc_enddef creates: every chunk stayed in the default cache and was deflated at the close.
+      caches.push_back({var, dims.size() == 1 ? 2 * chunks[0] * sizeof(double) : 0});
     }
-    // Level 1: on P63 1 % larger than level 4 (2.10 against 2.07 MB) and the run 13 ms of CPU
-    // less (0.233 against 0.246 s); at 6000 links 2 % larger (162 against 159 MB), 1.1 s less.
-    NetcdfCheck(nc_def_var_deflate(nc, var, 1, 1, 1), f, name);
+    // Level 1 when deflated: at 6000 links 2 % larger than level 4 (162 against 159 MB) and
+    // 1.1 s less CPU. A file of under kDeflateAboveBytes is not (DeflateResults).
+    if (deflate) NetcdfCheck(nc_def_var_deflate(nc, var, 1, 1, 1), f, name);
     NetcdfCheck(nc_def_var_fill(nc, var, NC_NOFILL, nullptr), f, name);  // every value is written
     NetcdfText(nc, var, "units", units, f);
     NetcdfText(nc, var, "long_name", long_name, f);
@@ -140,6 +150,8 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
 
   NetcdfGlobalAttributes(nc, info, f);
   NetcdfCheck(nc_enddef(nc), f, "enddef");
+  for (const Cache& c : caches)
+    NetcdfCheck(nc_set_var_chunk_cache(nc, c.var, c.bytes, 101, 1.0f), f, "chunk cache");
 
   std::vector<int> index(static_cast<size_t>(stations_));
   for (int j = 0; j < stations_; ++j) index[static_cast<size_t>(j)] = j;

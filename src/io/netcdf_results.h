@@ -12,12 +12,13 @@
 //   the initial state
 // (z is 0 throughout for a cable in the x-y plane: a 2D scene.)
 //
-// Time-dependent variables are deflated (level 4, with the shuffle filter) and chunked by time:
-// a chunk is up to kChunkRows rows of all stations (fewer for a cable whose row is large). The
-// rows are gathered a chunk at a time and handed to a thread of the writer's own, which alone
-// calls the library (deflating doubles costs about as much as simulating a 60-link cable, and
-// the other core is idle during the simulation); at most kQueuedChunks wait for it, so memory
-// stays a few chunks however long the run, and a run that outpaces the disk waits for it.
+// Time-dependent variables are chunked by time: a chunk is up to kChunkRows rows of all
+// stations (fewer for a cable whose row is large); deflated (level 1, with the shuffle filter)
+// when the file is large (DeflateResults, io/netcdf_support.h). The rows are gathered a chunk
+// at a time and handed to a thread of the writer's own, which alone calls the library and
+// writes each chunk as it comes (deflating doubles costs about as much as simulating a 60-link
+// cable, and the other core is idle during the simulation); at most kQueuedChunks wait for it,
+// so memory stays a few chunks however long the run, and a run that outpaces the disk waits.
 #include <Eigen/Core>
 #include <condition_variable>
 #include <deque>

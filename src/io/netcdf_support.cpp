@@ -25,6 +25,10 @@ void NetcdfText(int ncid, int var, const char* name, const std::string& value, c
   NetcdfCheck(nc_put_att_text(ncid, var, name, value.size(), value.data()), file, name);
 }
 
+bool DeflateResults(const NetcdfResultsInfo& info, double row_bytes) {
+  return info.rows <= 0 || static_cast<double>(info.rows) * row_bytes > kDeflateAboveBytes;
+}
+
 // zlib allocates about 270 KiB of state for every chunk it deflates and frees it at once. With
 // glibc's default trim threshold (128 KiB) every free hands those pages back to the kernel and
 // the next chunk faults them in again, which on this machine cost several times the compression

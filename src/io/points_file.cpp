@@ -1,5 +1,7 @@
 #include "io/points_file.h"
 
+#include "io/csv_line.h"
+
 
 namespace cablefilm {
 
@@ -12,11 +14,15 @@ bool PointsWriter::Row(const SystemData& sd) {
   loads_.Compute(sys_, sd, in_);
   const Points& x = loads_.positions();
   const Points& f = loads_.forces();
-  for (int p = 0; p < static_cast<int>(sys_.points.size()); ++p)
+  // "%.10g,%s,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g\n"
+  CsvLine line(file_.stream());
+  for (int p = 0; p < static_cast<int>(sys_.points.size()); ++p) {
     // Point names are plain (letters, digits, _ - .): no CSV quoting needed.
-    std::fprintf(file_.stream(), "%.10g,%s,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g\n", sd.t,
-                 sys_.points[p].name.c_str(), x(0, p), x(1, p), x(2, p), f(0, p), f(1, p),
-                 f(2, p));
+    line.G(sd.t, 10).Comma().Text(sys_.points[p].name);
+    for (int c = 0; c < 3; ++c) line.Comma().G(x(c, p), 12);
+    for (int c = 0; c < 3; ++c) line.Comma().G(f(c, p), 10);
+    line.Char('\n');
+  }
   return true;
 }
 

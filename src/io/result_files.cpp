@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/csv_line.h"
 
 namespace cablefilm {
 
@@ -11,12 +12,14 @@ void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& s
                          const Eigen::VectorXd& tension) {
   AtomicFile file(path);
   std::FILE* f = file.stream();
-  std::fprintf(f, "j,s,x,y,z,tension\n");
+  std::fputs("j,s,x,y,z,tension\n", f);
   for (int j = 0; j <= m.line.links; ++j) {
-    std::fprintf(f, "%d,%.10g,%.12g,%.12g,%.12g,", j, m.line.arc_length[j], state.x(0, j),
-                 state.x(1, j), state.x(2, j));
-    if (j < m.line.links) std::fprintf(f, "%.10g", tension[j]);
-    std::fprintf(f, "\n");
+    // "%d,%.10g,%.12g,%.12g,%.12g,%.10g\n" (written when `line` goes)
+    CsvLine line(f);
+    line.Int(j).Comma().G(m.line.arc_length[j], 10).Comma();
+    for (int c = 0; c < kDim; ++c) line.G(state.x(c, j), 12).Comma();
+    if (j < m.line.links) line.G(tension[j], 10);
+    line.Char('\n');
   }
   file.Commit();
 }
@@ -70,14 +73,17 @@ void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Input
   ends.Compute(m, d, in);
   const Vec& f0 = ends.at(0);
   const Vec& f1 = ends.at(1);
-  std::fprintf(f,
-               "%.10g,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g,%d,"
-               "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.8g,%.8g",
-               s.t, s.x(0, end), s.x(1, end), s.x(2, end), tension[0], tension[end - 1], t_max,
-               static_cast<int>(link_max), f0[0], f0[1], f0[2], f1[0], f1[1], f1[2],
-               ElevationDegrees(f0), ElevationDegrees(f1));
-  if (utilisation) std::fprintf(f, ",%.10g", MaxUtilisation(tension, m.line.breaking_load));
-  std::fputc('\n', f);
+  // "%.10g,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g,%d,%.10g x 6,%.8g,%.8g[,%.10g]"
+  CsvLine line(f);
+  line.G(s.t, 10);
+  for (int c = 0; c < kDim; ++c) line.Comma().G(s.x(c, end), 12);
+  line.Comma().G(tension[0], 10).Comma().G(tension[end - 1], 10).Comma().G(t_max, 10);
+  line.Comma().Int(static_cast<int>(link_max));
+  for (int c = 0; c < kDim; ++c) line.Comma().G(f0[c], 10);
+  for (int c = 0; c < kDim; ++c) line.Comma().G(f1[c], 10);
+  line.Comma().G(ElevationDegrees(f0), 8).Comma().G(ElevationDegrees(f1), 8);
+  if (utilisation) line.Comma().G(MaxUtilisation(tension, m.line.breaking_load), 10);
+  line.Char('\n');
 }
 
 TimeseriesWriter::TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in)

@@ -25,6 +25,9 @@ struct NetcdfResultsInfo {
   std::string version;        // the program's: "0.1 (git 1a2b3c4)"
   std::string model;          // "elastic" or "inextensible"
   std::string initial_state;  // "equilibrium" or "straight"
+  // Not an attribute: the rows a complete run writes (0: not known), which decide whether the
+  // variables over time are deflated (DeflateResults, io/netcdf_support.h).
+  long rows = 0;
 };
 
 // A line's results.nc: every row's positions and tensions.

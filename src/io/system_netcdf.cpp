@@ -57,8 +57,12 @@ void SystemResultsWriter::Define(const NetcdfResultsInfo& info) {
   if (bodies > 0)
     NetcdfCheck(nc_def_dim(nc, "body", static_cast<size_t>(bodies), &dim_body), f, "body");
 
-  // A variable with its units and long name; over time: chunked by kChunkRows rows and
-  // deflated (level 1, shuffle), as a line's results.nc.
+  // A row: time, the points' 6 series, the lines' 4, the bodies' 12.
+  const bool deflate = DeflateResults(
+      info, sizeof(double) *
+                (1 + kPointSeries * points + kLineSeries * lines + kBodySeries * bodies));
+  // A variable with its units and long name; over time: chunked by kChunkRows rows and, when
+  // the file is large (DeflateResults), deflated (level 1, shuffle), as a line's results.nc.
   auto define = [&](const char* name, nc_type type, std::vector<int> dims, const char* units,
                     const std::string& long_name) {
     int var = -1;
@@ -69,7 +73,7 @@ void SystemResultsWriter::Define(const NetcdfResultsInfo& info) {
       if (dims.size() == 2) NetcdfCheck(nc_inq_dimlen(nc, dims[1], &width), f, name);
       const size_t chunks[2] = {static_cast<size_t>(kChunkRows), width};
       NetcdfCheck(nc_def_var_chunking(nc, var, NC_CHUNKED, chunks), f, name);
-      NetcdfCheck(nc_def_var_deflate(nc, var, 1, 1, 1), f, name);
+      if (deflate) NetcdfCheck(nc_def_var_deflate(nc, var, 1, 1, 1), f, name);
     }
     if (units[0] != '\0') NetcdfText(nc, var, "units", units, f);
     NetcdfText(nc, var, "long_name", long_name, f);

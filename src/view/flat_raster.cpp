@@ -132,7 +132,7 @@ void DrawGlyph(const GlyphQuad& q, const FontAtlas& font, const Color8& c, float
   const float det = du.x * dv.y - du.y * dv.x;
   if (det == 0) return;
   const int n = font.atlas_size();
-  const std::uint8_t* atlas = font.pixels().data();
+  const std::uint8_t* atlas = font.pixels();
   float x0 = o.x, x1 = o.x, y0 = o.y, y1 = o.y;
   for (const Vec2f& k : q.corner) {
     x0 = std::fmin(x0, k.x), x1 = std::fmax(x1, k.x);

@@ -273,7 +273,7 @@ void Renderer::Draw(const Frame& frame, Image* out) {
     if (m.font->dirty()) {
       const int n = m.font->atlas_size();
       glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n, n, GL_RED, GL_UNSIGNED_BYTE, m.font->pixels().data());
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n, n, GL_RED, GL_UNSIGNED_BYTE, m.font->pixels());
       m.font->ClearDirty();
     }
     m.text_program->Use();

@@ -8,33 +8,44 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <new>
 
 #include "core/error.h"
 
 namespace cablefilm {
 
-std::string FindFontFile(const std::string& pattern) {
+std::vector<std::string> FindFontFiles(const std::vector<std::string>& patterns) {
+  // One configuration for all the patterns: loading it (its XML files and the font caches) is
+  // most of the cost, about 3 ms each time.
   FcConfig* config = FcInitLoadConfigAndFonts();
   if (!config) throw Error("fontconfig: cannot load its configuration");
-  FcPattern* pat = FcNameParse(reinterpret_cast<const FcChar8*>(pattern.c_str()));
-  std::string file;
-  if (pat) {
-    FcConfigSubstitute(config, pat, FcMatchPattern);
-    FcDefaultSubstitute(pat);
-    FcResult result = FcResultNoMatch;
-    FcPattern* match = FcFontMatch(config, pat, &result);
-    FcChar8* path = nullptr;
-    if (match && FcPatternGetString(match, FC_FILE, 0, &path) == FcResultMatch && path)
-      file = reinterpret_cast<const char*>(path);
-    if (match) FcPatternDestroy(match);
-    FcPatternDestroy(pat);
+  std::vector<std::string> files;
+  for (const std::string& pattern : patterns) {
+    FcPattern* pat = FcNameParse(reinterpret_cast<const FcChar8*>(pattern.c_str()));
+    std::string file;
+    if (pat) {
+      FcConfigSubstitute(config, pat, FcMatchPattern);
+      FcDefaultSubstitute(pat);
+      FcResult result = FcResultNoMatch;
+      FcPattern* match = FcFontMatch(config, pat, &result);
+      FcChar8* path = nullptr;
+      if (match && FcPatternGetString(match, FC_FILE, 0, &path) == FcResultMatch && path)
+        file = reinterpret_cast<const char*>(path);
+      if (match) FcPatternDestroy(match);
+      FcPatternDestroy(pat);
+    }
+    if (file.empty()) {
+      FcConfigDestroy(config);
+      throw Error("fontconfig found no font for '" + pattern +
+                  "' (install fonts-dejavu-core or give a font path)");
+    }
+    files.push_back(file);
   }
   FcConfigDestroy(config);
-  if (file.empty())
-    throw Error("fontconfig found no font for '" + pattern +
-                "' (install fonts-dejavu-core or give a font path)");
-  return file;
+  return files;
 }
+
+std::string FindFontFile(const std::string& pattern) { return FindFontFiles({pattern})[0]; }
 
 std::u32string DecodeUtf8(const std::string& s) {
   std::u32string out;
@@ -69,10 +80,15 @@ std::string FtError(FT_Error e) {
 }  // namespace
 
 FontAtlas::FontAtlas(const std::string& font_path, int atlas_size)
-    : size_(atlas_size), pixels_(static_cast<std::size_t>(atlas_size) * atlas_size, 0) {
+    : size_(atlas_size),
+      pixels_(static_cast<std::uint8_t*>(
+          std::calloc(static_cast<std::size_t>(atlas_size) * atlas_size, 1))) {
+  if (!pixels_) throw std::bad_alloc();
   if (font_path.empty()) {
-    paths_[0] = FindFontFile("DejaVu Sans:style=Book");
-    paths_[1] = FindFontFile("DejaVu Sans:weight=bold");
+    const std::vector<std::string> files =
+        FindFontFiles({"DejaVu Sans:style=Book", "DejaVu Sans:weight=bold"});
+    paths_[0] = files[0];
+    paths_[1] = files[1];
   } else {
     paths_[0] = paths_[1] = font_path;
   }

@@ -3,6 +3,7 @@
 // glyphs rasterised on demand (anti-aliased, 8-bit coverage) into one CPU-side atlas that the
 // renderer uploads as a texture, and the layout of a TextItem into positioned glyph quads.
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <string>
@@ -15,6 +16,8 @@ namespace cablefilm {
 
 // The font file fontconfig picks for a pattern such as "DejaVu Sans:style=Book". Throws Error.
 std::string FindFontFile(const std::string& pattern);
+// The files of several patterns, fontconfig's configuration loaded once. Throws Error.
+std::vector<std::string> FindFontFiles(const std::vector<std::string>& patterns);
 std::u32string DecodeUtf8(const std::string& text);  // invalid bytes become U+FFFD
 
 struct GlyphQuad {
@@ -40,7 +43,7 @@ class FontAtlas {
   float MeasureWidth(const std::string& text, float size, bool bold = false);
 
   int atlas_size() const { return size_; }
-  const std::vector<std::uint8_t>& pixels() const { return pixels_; }  // size x size, R8
+  const std::uint8_t* pixels() const { return pixels_.get(); }  // size x size, R8
   bool dirty() const { return dirty_; }
   void ClearDirty() { dirty_ = false; }
   const std::string& regular_path() const { return paths_[0]; }
@@ -55,8 +58,14 @@ class FontAtlas {
   const Glyph& GetGlyph(char32_t code, int pixel_size, bool bold);
   Face& SizedFace(int pixel_size, bool bold);
 
+  struct Free {
+    void operator()(std::uint8_t* p) const { std::free(p); }
+  };
   int size_;
-  std::vector<std::uint8_t> pixels_;
+  // calloc's zeros: a block this large is mapped afresh, its pages zero until written, so only
+  // the rows the glyphs take are ever touched (max_tension.png uses a few dozen of the 1024: a
+  // vector's zeros cost 256 page faults, about 5 ms on the test machine).
+  std::unique_ptr<std::uint8_t[], Free> pixels_;
   bool dirty_ = true;
   int shelf_x_ = 1, shelf_y_ = 1, shelf_h_ = 0;
   std::string paths_[2];

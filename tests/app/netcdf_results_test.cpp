@@ -19,9 +19,12 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "io/netcdf_support.h"
+#include "io/results_nc.h"
 #include "io/run_report_file.h"
 #include "run/driver.h"
 #include "run/initial_state.h"
+#include "run/run.h"
 #include "run/time_grid.h"
 #include "core/stability.h"
 #include "scene/build_model.h"
@@ -236,13 +239,13 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   EXPECT_EQ(nc.Attr(NC_GLOBAL, "model"), "elastic");
   EXPECT_EQ(nc.Attr(NC_GLOBAL, "initial_state"), "equilibrium");
 
-  // Compressed (deflate 1, shuffle), chunked by time: many rows of all stations a chunk.
+  // Chunked by time (many rows of all stations a chunk); not deflated, the file being small
+  // (DeflatedOnlyWhenLarge).
   for (const char* var : {"x", "y", "z", "tension"}) {
-    int shuffle = 0, deflate = 0, level = 0, storage = -1;
+    int shuffle = -1, deflate = -1, level = -1, storage = -1;
     ASSERT_EQ(nc_inq_var_deflate(nc.id(), nc.Var(var), &shuffle, &deflate, &level), NC_NOERR);
-    EXPECT_EQ(shuffle, 1) << var;
-    EXPECT_EQ(deflate, 1) << var;
-    EXPECT_EQ(level, 1) << var;
+    EXPECT_EQ(shuffle, 0) << var;
+    EXPECT_EQ(deflate, 0) << var;
     size_t chunks[2] = {0, 0};
     ASSERT_EQ(nc_inq_var_chunking(nc.id(), nc.Var(var), &storage, chunks), NC_NOERR);
     EXPECT_EQ(storage, NC_CHUNKED) << var;
@@ -334,6 +337,72 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   // The first row is the initial state.
   for (int j = 0; j <= 60; ++j) EXPECT_EQ(x[static_cast<size_t>(j)], x_eq[static_cast<size_t>(j)]);
   EXPECT_DOUBLE_EQ(s_link[0], 45.72 / 30 / 2);
+}
+
+// The variables over time are deflated (level 1, shuffle) when the rows a complete run writes
+// would make more than kDeflateAboveBytes of them, stored as they are below it; the values
+// read back are the same either way, and each chunk is written as it comes (not kept for the
+// close: the file grows while it is open).
+TEST_F(NetcdfResultsTest, DeflatedOnlyWhenLarge) {
+  const SceneDef scene = LoadScene(ShortP63("1.0"));
+  const cablefilm::Run run = PrepareRun(scene, BuildModel(scene), "elastic", nullptr);
+  const int stations = run.model.stations(), links = run.model.line.links;
+  const double row_bytes = 8.0 * (3 * stations + links + 7);
+  const long small_rows = 200, large_rows = static_cast<long>(kDeflateAboveBytes / row_bytes) + 1;
+  auto info_of = [](long rows) {
+    NetcdfResultsInfo info;
+    info.model = "elastic";
+    info.initial_state = "equilibrium";
+    info.rows = rows;
+    return info;
+  };
+  EXPECT_FALSE(DeflateResults(info_of(large_rows - 1), row_bytes));
+  EXPECT_TRUE(DeflateResults(info_of(large_rows), row_bytes));
+  EXPECT_TRUE(DeflateResults(info_of(0), row_bytes));  // rows not known
+  std::vector<std::vector<double>> values;
+  for (const long rows : {small_rows, large_rows}) {
+    State state = run.initial.state;
+    Eigen::VectorXd tension = run.initial.tension();
+    const fs::path path = dir_ / ("rows_" + std::to_string(rows) + ".nc");
+    std::unique_ptr<LineResultsNc> nc = OpenLineResultsNc(path.string(), info_of(rows),
+                                                          run.model, run.initial.state, tension);
+    std::uintmax_t open_size = 0;
+    for (int r = 0; r < small_rows; ++r) {
+      state.t = 0.1 * r;
+      state.x(1, stations / 2) += 1e-3 * r;
+      tension[r % links] += r;
+      nc->Append(state, tension);
+      if (r == small_rows - 1 && rows == small_rows) {
+        // 3 chunks of 64 rows handed to the writer's thread: written before the close (more
+        // than 2 chunks of x's 64 x 61 doubles in the file), not held in a cache until then.
+        const std::uintmax_t two_chunks = 2 * 64 * 8 * static_cast<std::uintmax_t>(stations);
+        for (int wait = 0; wait < 300 && open_size <= two_chunks; ++wait) {
+          std::error_code ec;
+          for (const auto& e : fs::directory_iterator(dir_))
+            if (e.path().filename().string().rfind(path.filename().string() + ".tmp", 0) == 0)
+              open_size = fs::file_size(e.path(), ec);
+          if (open_size <= two_chunks) ::usleep(10000);
+        }
+        EXPECT_GT(open_size, two_chunks);
+      }
+    }
+    nc->Commit();
+    const NcFile f(path);
+    for (const char* var : {"x", "y", "z", "tension"}) {
+      int shuffle = -1, deflate = -1, level = -1;
+      ASSERT_EQ(nc_inq_var_deflate(f.id(), f.Var(var), &shuffle, &deflate, &level), NC_NOERR);
+      EXPECT_EQ(deflate, rows == large_rows ? 1 : 0) << var << " " << rows;
+      EXPECT_EQ(shuffle, rows == large_rows ? 1 : 0) << var << " " << rows;
+      if (rows == large_rows) {
+        EXPECT_EQ(level, 1) << var;
+      }
+    }
+    EXPECT_EQ(f.Dim("time"), static_cast<size_t>(small_rows));
+    values.push_back(f.Values("y"));
+    values.push_back(f.Values("tension"));
+  }
+  EXPECT_EQ(values[0], values[2]);
+  EXPECT_EQ(values[1], values[3]);
 }
 
 // Case P63 turned out of its plane (issue 19): a current of 0.5 m/s along +z (heading 90
