@@ -129,6 +129,10 @@ TEST(TurningMotion, SceneScheduleIsThePlainMotion) {
                                      : point.Acceleration(t);
       EXPECT_EQ(point.Evaluate(t, order, one, one), plain) << t << " " << order;
     }
+  // Carried by the live view's vessel (inputs.h adds its offset): still the same turn.
+  const EndMotion carried = point.Carried();
+  EXPECT_TRUE(carried.carried() && carried.turns());
+  EXPECT_EQ(carried.Acceleration(4.5), point.Acceleration(4.5));
   // At t = 0 the trochoid's ramp is 0: the point is at its rest position, still.
   EXPECT_LT((point.Position(0.0) - point.rest()).norm(), 1e-15);
   EXPECT_EQ(point.Velocity(0.0), Vec::Zero());
