@@ -4,11 +4,14 @@ angle at any time is known by hand). Checks that
 - every fairlead in points.csv is where the turn puts it, R(theta(t)) p with theta the rest
   orientation plus the table's angle at t, to 1e-9 m (points.csv prints 12 digits: 1e-10 m at
   these 20 m; the step puts a prescribed end exactly at its motion), and body.csv's ry column is
-  that angle (to 1e-8 degrees: it prints 10 digits of about 14);
+  that angle (to 1e-8 degrees: it prints 10 digits of 10 to 14 degrees, rounding by up to
+  5e-9);
 - the yaw moves the fairleads and changes the legs' pull on them (against the same run with the
   body still);
 - a table without angles (four columns) and one with angle columns of zeros give the same
-  results to the byte: a table with no turn is the old motion."""
+  results to the byte: a table with no turn is the old motion;
+- the same for eq. (3) turning the platform (rx_amplitudes, ry_amplitudes, by hand) and for a
+  splined 7-column table turning it about all three axes (a natural spline solved here)."""
 import argparse
 import csv
 import io
@@ -39,6 +42,79 @@ def turned(local, yaw_deg):
     c, s = math.cos(math.radians(yaw_deg)), math.sin(math.radians(yaw_deg))
     x, y, z = local
     return (x * c + z * s, y, -x * s + z * c)
+
+
+def rotation(angles_deg):
+    """R = Rz Ry Rx (body.h: about x, then y, then z, fixed axes) as rows."""
+    ax, ay, az = (math.radians(a) for a in angles_deg)
+    cx, sx, cy, sy, cz, sz = (math.cos(ax), math.sin(ax), math.cos(ay), math.sin(ay),
+                              math.cos(az), math.sin(az))
+    Rx = ((1, 0, 0), (0, cx, -sx), (0, sx, cx))
+    Ry = ((cy, 0, sy), (0, 1, 0), (-sy, 0, cy))
+    Rz = ((cz, -sz, 0), (sz, cz, 0), (0, 0, 1))
+    mul = lambda A, B: tuple(tuple(sum(A[i][k] * B[k][j] for k in range(3)) for j in range(3))
+                             for i in range(3))
+    return mul(Rz, mul(Ry, Rx))
+
+
+def natural_spline(ts, ys):
+    """The natural cubic spline through (ts, ys) as a function of t (held outside), solved
+    here as a dense linear system for the second derivatives (zero at both ends)."""
+    n = len(ts)
+    A = [[0.0] * n for _ in range(n)]
+    b = [0.0] * n
+    A[0][0] = A[-1][-1] = 1.0
+    for i in range(1, n - 1):
+        h0, h1 = ts[i] - ts[i - 1], ts[i + 1] - ts[i]
+        A[i][i - 1], A[i][i], A[i][i + 1] = h0, 2 * (h0 + h1), h1
+        b[i] = 6 * ((ys[i + 1] - ys[i]) / h1 - (ys[i] - ys[i - 1]) / h0)
+    for c in range(n):  # Gaussian elimination (the system is diagonally dominant)
+        for r in range(c + 1, n):
+            f = A[r][c] / A[c][c]
+            for k in range(c, n):
+                A[r][k] -= f * A[c][k]
+            b[r] -= f * b[c]
+    m = [0.0] * n
+    for r in range(n - 1, -1, -1):
+        m[r] = (b[r] - sum(A[r][k] * m[k] for k in range(r + 1, n))) / A[r][r]
+
+    def at(t):
+        if t <= ts[0]:
+            return ys[0]
+        if t >= ts[-1]:
+            return ys[-1]
+        i = max(k for k in range(n - 1) if ts[k] <= t)
+        h = ts[i + 1] - ts[i]
+        a, bb = (ts[i + 1] - t) / h, (t - ts[i]) / h
+        return (a * ys[i] + bb * ys[i + 1] +
+                ((a ** 3 - a) * m[i] + (bb ** 3 - bb) * m[i + 1]) * h * h / 6)
+    return at
+
+
+def check_poses(out, pose, label):
+    """Every fairlead in points.csv at r + R(theta) p and body.csv's pose, `pose(t)` giving
+    (r [m], theta [deg]). Bounds as the module's docstring says."""
+    failures = []
+    worst = 0.0
+    points = table(out / "points.csv")
+    for r in points:
+        if r["point"] not in LOCAL:
+            continue
+        ref, angles = pose(float(r["t"]))
+        R = rotation(angles)
+        want = [ref[i] + sum(R[i][k] * LOCAL[r["point"]][k] for k in range(3)) for i in range(3)]
+        worst = max(worst, *(abs(float(r[k]) - w) for k, w in zip("xyz", want)))
+    worst_angle = 0.0
+    for r in table(out / "body.csv"):
+        ref, angles = pose(float(r["t"]))
+        worst_angle = max(worst_angle, *(abs(float(r[k]) - a) for k, a in zip(("rx", "ry", "rz"), angles)))
+    print(f"{label}: fairleads at most {worst:.3g} m from r + R(theta) p, body.csv's angles "
+          f"{worst_angle:.3g} deg from theta")
+    if not worst <= 1e-9:
+        failures.append(f"{label}: a fairlead {worst:.3g} m from r + R(theta) p")
+    if not worst_angle <= 1e-8:
+        failures.append(f"{label}: body.csv's angles {worst_angle:.3g} deg off")
+    return failures
 
 
 def run(cablefilm, scene, out):
@@ -114,6 +190,34 @@ def main():
             failures.append(f"fairlead1 moved {moved} m, not the 4-degree chord {expected} m")
         if not pull >= 1e-3 * scale:
             failures.append(f"the yaw changed the legs' pull by only {pull} N")
+        # Eq. (3) turning it too: surge 1 m and turns about x and y, ramped; by hand.
+        troch = (tmp / f"{SCENE}.toml").read_text().replace(
+            f'motion = "table"\nfile = "{SCENE}.csv"\ninterpolation = "linear"',
+            'motion = "trochoid"\nx_amplitudes = [1.0, 0.0]\nrx_amplitudes = [0.5, 0.0]\n'
+            'ry_amplitudes = [0.0, 3.0]\nperiod = 6.0\nramp_rate = 0.8')
+        (tmp / "troch.toml").write_text(troch)
+        run(args.cablefilm, tmp / "troch.toml", tmp / "troch")
+        w, nu = 2 * math.pi / 6.0, 0.8
+
+        def troch_pose(t):
+            ramp = 1 - (1 + nu * t) * math.exp(-nu * t) if t > 0 else 0.0
+            c, s = math.cos(w * t), math.sin(w * t)
+            return (ramp * c, 0.0, 0.0), (0.5 * ramp * c, REST_YAW + 3.0 * ramp * s, 0.0)
+        failures += check_poses(tmp / "troch", troch_pose, "trochoid")
+
+        # A splined table turning about all three axes, against a natural spline solved here.
+        ts = [0.0, 1.0, 3.0, 4.5, 7.0, 10.0]
+        turns = [(0, 0, 0), (0, 0, 0), (1.0, 3.0, -0.5), (-0.5, 4.0, 0.8), (0.2, 2.0, 0.0),
+                 (0.0, 2.0, 0.0)]
+        rows = "".join(f"{t},0,0,0,{a},{b},{c}\n" for t, (a, b, c) in zip(ts, turns))
+        spline = variant(tmp, source, "spline", "t,x,y,z,rx,ry,rz\n" + rows)
+        spline.write_text(spline.read_text().replace('interpolation = "linear"\n', ""))
+        run(args.cablefilm, spline, tmp / "spline")
+        splines = [natural_spline(ts, [row[k] for row in turns]) for k in range(3)]
+
+        def spline_pose(t):
+            return (0.0, 0.0, 0.0), (splines[0](t), REST_YAW + splines[1](t), splines[2](t))
+        failures += check_poses(tmp / "spline", spline_pose, "spline table")
     for f in failures:
         print("FAIL:", f)
     print("FAIL" if failures else "ok")
