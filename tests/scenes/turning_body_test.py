@@ -11,7 +11,9 @@ angle at any time is known by hand). Checks that
 - a table without angles (four columns) and one with angle columns of zeros give the same
   results to the byte: a table with no turn is the old motion;
 - the same for eq. (3) turning the platform (rx_amplitudes, ry_amplitudes, by hand) and for a
-  splined 7-column table turning it about all three axes (a natural spline solved here)."""
+  splined 7-column table turning it about all three axes (a natural spline solved here);
+- the loads at the turning fairleads (which take their accelerations) are those of fairleads
+  moved by tables of the same paths (same_paths_as_tables)."""
 import argparse
 import csv
 import io
@@ -117,6 +119,50 @@ def check_poses(out, pose, label):
     return failures
 
 
+def same_paths_as_tables(args, tmp, scene, pose):
+    """The turning body's velocity and acceleration, through the whole step: the same scene
+    with the body gone and each fairlead a point moved by a table of its path r + R(theta) p
+    sampled here every 5 ms (splined), both at a fixed step of 10 ms (the same steps). The
+    fairleads' loads in points.csv (their end stations' force less their inertia, m a: 225 kg
+    each) must agree to 1e-6 of the largest: the spline's own error in acceleration, h^2/12
+    |x| ~ 2e-6 m/s^2 at h = 5 ms (|x| ~ 20 m x (1 rad/s)^4 x 0.05 rad), is 5e-4 N
+    there, 2e-8 of the 3e4 N loads; the measured difference is 3e-3 N (8e-8). Leaving out only
+    the centripetal part of R'' (the rates squared) puts them 13 N apart (tried: 4e-4)."""
+    fixed = scene.replace("[simulation]\nduration = 8.0", "[simulation]\nduration = 8.0\ntime_step = 0.01")
+    (tmp / "turn_fixed.toml").write_text(fixed)
+    tables = fixed[:fixed.index("[[body]]")] + fixed[fixed.index("[[point]]"):]
+    dt = 0.005
+    for name, p in LOCAL.items():
+        rows = ["t,x,y,z"]
+        for i in range(int(round(9.0 / dt)) + 1):
+            r, angles = pose(i * dt)
+            R = rotation(angles)
+            x = [r[k] + sum(R[k][j] * p[j] for j in range(3)) for k in range(3)]
+            rows.append(f"{i * dt:.6f},{x[0]:.17g},{x[1]:.17g},{x[2]:.17g}")
+        (tmp / f"{name}.csv").write_text("\n".join(rows) + "\n")
+        placed = f'name = "{name}"\nbody = "platform"\nposition = [{p[0]}, {p[1]}, {p[2]}]'
+        if placed not in tables:
+            return [f"same_paths_as_tables: no {placed!r} in the scene"]
+        tables = tables.replace(placed, f'name = "{name}"\nposition = [0.0, 0.0, 0.0]\n'
+                                f'motion = "table"\nfile = "{name}.csv"')
+    (tmp / "turn_tables.toml").write_text(tables)
+    run(args.cablefilm, tmp / "turn_fixed.toml", tmp / "turn_fixed")
+    run(args.cablefilm, tmp / "turn_tables.toml", tmp / "turn_tables")
+    a = {(r["t"], r["point"]): r for r in table(tmp / "turn_fixed" / "points.csv")}
+    b = {(r["t"], r["point"]): r for r in table(tmp / "turn_tables" / "points.csv")}
+    keys = [k for k in a if k[1] in LOCAL]
+    if len(keys) != 99 or any(k not in b for k in keys):
+        return [f"turning body and tables: {len(keys)} fairlead rows, or rows missing"]
+    loads = ("fx", "fy", "fz")
+    worst = max(abs(float(a[k][c]) - float(b[k][c])) for k in keys for c in loads)
+    largest = max(abs(float(a[k][c])) for k in keys for c in loads)
+    print(f"turning body against its points' paths as tables: loads {worst:.3g} N apart "
+          f"(of {largest:.4g} N)")
+    if not worst <= 1e-6 * largest:
+        return [f"turning body and tables: loads {worst:.3g} N apart, more than 1e-6 of {largest:.4g} N"]
+    return []
+
+
 def run(cablefilm, scene, out):
     done = subprocess.run([cablefilm, "run", str(scene), "--no-film", "--out", str(out)],
                           capture_output=True, text=True, timeout=600)
@@ -218,6 +264,7 @@ def main():
         def spline_pose(t):
             return (0.0, 0.0, 0.0), (splines[0](t), REST_YAW + splines[1](t), splines[2](t))
         failures += check_poses(tmp / "spline", spline_pose, "spline table")
+        failures += same_paths_as_tables(args, tmp, troch, troch_pose)
     for f in failures:
         print("FAIL:", f)
     print("FAIL" if failures else "ok")
