@@ -68,6 +68,8 @@ namespace {
 
 // A speed below this is taken as at rest [m/s] (a micrometre a second).
 constexpr double kRestSpeed = 1e-6;
+// A rate of turn below this is taken as at rest [rad/s] (a micrometre a second at 1 m).
+constexpr double kRestTurnRate = 1e-6;
 
 std::string Figure(double v) {
   char text[32];
@@ -110,7 +112,7 @@ void DescribeTurn(const std::string& what, const EndDef& e, double run_end,
   if (notes)
     notes->push_back(what + ": its table turns it too, at " + Figure(first) +
                      " deg/s at its first row and " + Figure(last) + " deg/s at its last");
-  if (warnings && run_end > m.table_end() && last * M_PI / 180.0 > kRestSpeed)
+  if (warnings && run_end > m.table_end() && m.EndSpeed() > kRestTurnRate)
     warnings->push_back(what + ": the run goes on to t = " + Figure(run_end) +
                         " s, past the table's last row at t = " + Figure(m.table_end()) +
                         " s, where it still turns at " + Figure(last) +

@@ -1262,6 +1262,24 @@ TEST_F(TableMotion, BodyTableWithAngles) {
   WriteFile("far.csv", "0,0,0,0,0,0,0\n1,0,0,0,0,400,0\n");
   ExpectError(DrivenBodySystem(troch, With("turn.csv", "far.csv", table)), "body[0].file",
               {"far.csv:2", "expected angles rx, ry, rz from -360 to 360 degrees"}, scene_);
+  // check and run describe the turn, and warn of a run past a table still turning at its last
+  // row: here linear, its first segment (1, -2, 3) degrees in 2 s, sqrt(14) / 2 = 1.871 deg/s,
+  // its last (-1, 7, -3) degrees in 2 s, sqrt(59) / 2 = 3.841 deg/s.
+  std::vector<std::string> notes, warnings;
+  DescribeTables(ParseScene(DrivenBodySystem(troch, table + "\ninterpolation = \"linear\"") +
+                                "\n[simulation]\nduration = 6.0\n",
+                            scene_),
+                 &notes, &warnings);
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_NE(notes[1].find("body \"ship\": its table turns it too, at 1.871 deg/s at its first row "
+                          "and 3.841 deg/s at its last"),
+            std::string::npos)
+      << notes[1];
+  ASSERT_EQ(warnings.size(), 2u);  // its reference point still moves too (0.25 m/s)
+  EXPECT_NE(warnings[1].find("past the table's last row at t = 4 s, where it still turns at "
+                             "3.841 deg/s"),
+            std::string::npos)
+      << warnings[1];
   // An end's table does not turn.
   ExpectError(TableScene("turn.csv"), "ends.end.file",
               {"turn.csv:1", "seven columns t,x,y,z,rx,ry,rz turn a body"}, scene_);
