@@ -58,7 +58,9 @@ void PrintSystem(const SceneDef& scene, const SystemModel& sys) {
                 KindName(p.kind), p.ends.size(),
                 p.shared >= 0 ? ", where lines meet (solved with them)" : "");
   for (const BodySpec& b : sys.bodies) {
+    const bool turns = b.kind == BodyKind::kDriven && b.turn.moves();
     const char* kind = b.kind == BodyKind::kFree     ? "free"
+                       : turns                       ? "driven, turning"
                        : b.kind == BodyKind::kDriven ? "driven"
                                                      : "held";
     std::printf("  body %s: %s, reference point at (%.6g, %.6g, %.6g) m\n",

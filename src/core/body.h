@@ -7,7 +7,9 @@
 // from its reference point) is at r + R(theta) p.
 //
 // A held body stays at its pose; a driven body's reference point moves as an end does
-// (end_motion.h: eq. (3), a table, the waves) at its rest orientation; a free body is where
+// (end_motion.h: eq. (3), a table, the waves) and its angles as `turn` says (the same kinds of
+// motion over the three angles; none: its rest orientation), each of its points at
+// r(t) + R(theta(t)) p with exact velocity and acceleration (rotation_rates.h); a free body is where
 // the loads on it balance: its lines', its weight at its centre of gravity, its buoyancy at
 // its centre of buoyancy, the waterplane's restoring terms and a constant force and moment
 // (a steady wind, a thrust).
@@ -31,6 +33,9 @@ struct BodySpec {
   // guess) and the rest angles theta [rad].
   EndMotion motion = EndMotion::Fixed(Vec::Zero());
   Vec angles = Vec::Zero();
+  // A driven body's angles in time [rad]: a trochoid or a table over the three angles about
+  // x, y, z, its rest() `angles`; fixed (the default): it keeps its rest orientation.
+  EndMotion turn = EndMotion::Fixed(Vec::Zero());
   // A free body's own loads.
   double mass = 0;                           // [kg]
   Vec center_of_gravity = Vec::Zero();       // local [m]

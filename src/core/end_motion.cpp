@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/rotation_rates.h"
 
 namespace cablefilm {
 
@@ -72,9 +73,31 @@ EndMotion EndMotion::Table(Vec rest, const std::vector<double>& times,
   return m;
 }
 
-Vec EndMotion::Position(double t) const { return Evaluate(t, 0); }
-Vec EndMotion::Velocity(double t) const { return Evaluate(t, 1); }
-Vec EndMotion::Acceleration(double t) const { return Evaluate(t, 2); }
+EndMotion EndMotion::WithTurn(const EndMotion& angles, const Vec& local) const {
+  if (angles.turns()) throw Error("end motion: the angles' motion of a turning point turns itself");
+  EndMotion m = *this;
+  m.angles_ = std::make_shared<const EndMotion>(angles);
+  m.local_ = local;
+  m.rest_turn_ = RotationInTime(angles.rest(), Vec::Zero(), Vec::Zero()).R * local;
+  return m;
+}
+
+Vec EndMotion::Position(double t) const { return At(t, 0); }
+Vec EndMotion::Velocity(double t) const { return At(t, 1); }
+Vec EndMotion::Acceleration(double t) const { return At(t, 2); }
+
+Vec EndMotion::At(double t, int order) const {
+  if (!angles_) return Evaluate(t, order);
+  return Evaluate(t, order) + TurnPart(angles_->Evaluate(t, 0), angles_->Evaluate(t, 1),
+                                       angles_->Evaluate(t, 2), order);
+}
+
+Vec EndMotion::TurnPart(const Vec& theta, const Vec& rate, const Vec& rate2, int order) const {
+  const RotationRates r = RotationInTime(theta, rate, rate2);
+  if (order == 0) return r.R * local_ - rest_turn_;
+  if (order == 1) return r.dR * local_;
+  return r.d2R * local_;
+}
 
 double EndMotion::period() const {
   if (kind_ == EndKind::kTrochoid) return omega_ > 0 ? 2 * 3.14159265358979323846 / omega_ : 0;
@@ -113,9 +136,17 @@ Vec EndMotion::EvaluateTrochoid(double t, int order) const {
 
 Vec EndMotion::Evaluate(double t, int order, const SmoothSchedule& scale,
                         const SmoothSchedule& clock) const {
+  if (!angles_) return Translation(t, order, scale, clock);
+  return Translation(t, order, scale, clock) +
+         TurnPart(angles_->Evaluate(t, 0, scale, clock), angles_->Evaluate(t, 1, scale, clock),
+                  angles_->Evaluate(t, 2, scale, clock), order);
+}
+
+Vec EndMotion::Translation(double t, int order, const SmoothSchedule& scale,
+                           const SmoothSchedule& clock) const {
   const bool as_scene = scale.constant() && clock.constant() && scale.target() == 1.0 &&
                         clock.target() == 1.0;
-  if (as_scene || !moves()) return Evaluate(t, order);
+  if (as_scene || !translates()) return Evaluate(t, order);
   if (kind_ == EndKind::kTrochoid && t <= 0) return order == 0 ? rest_ : Vec::Zero();
   // offset(t) = G(t) P(tau(t)), G = scale x the ramp R of eq. (3) (1 for a table), tau the
   // motion's clock (tau' = rate); the derivatives by the product and chain rules.
@@ -148,10 +179,15 @@ Vec EndMotion::Evaluate(double t, int order, const SmoothSchedule& scale,
 }
 
 double EndMotion::EndSpeed() const {
-  return kind_ == EndKind::kTable ? EvaluateTable(knot_t_.back(), 1).norm() : 0.0;
+  return kind_ == EndKind::kTable ? At(knot_t_.back(), 1).norm() : 0.0;
 }
 
 double EndMotion::NextKink(double t) const {
+  const double own = OffsetKink(t);
+  return angles_ ? std::min(own, angles_->OffsetKink(t)) : own;  // the offsets' and the angles'
+}
+
+double EndMotion::OffsetKink(double t) const {
   constexpr double kNone = std::numeric_limits<double>::infinity();
   if (kind_ != EndKind::kTable || interpolation_ != TableInterpolation::kLinear) return kNone;
   const auto it = std::upper_bound(knot_t_.begin(), knot_t_.end(), t);

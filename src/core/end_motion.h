@@ -2,6 +2,7 @@
 // How an end of the cable (station 0 or s) moves. A prescribed end's position, velocity and
 // acceleration are exact functions of time, evaluated at every stage of every step: a
 // piecewise-constant end velocity would shake the stiff axial modes.
+#include <memory>
 #include <vector>
 
 #include "core/smooth_schedule.h"
@@ -50,6 +51,18 @@ class EndMotion {
     return m;
   }
 
+  // The same motion for a point of a body that also turns (a driven body's, body.h): the point
+  // at local position `local` [m] in the body's axes, the body's angles theta [rad] moving as
+  // `angles` does (a trochoid or a table over the three angles about x, y, z; its rest() the
+  // body's rest angles theta_0; it must not turn itself). The point is then at
+  // rest() + offset(t) + (R(theta(t)) - R(theta_0)) local, its velocity and acceleration adding
+  // R' local and R'' local (rotation_rates.h); rest() stays the point's rest position. The
+  // live view's scale and clock apply to the angles as to the offsets.
+  EndMotion WithTurn(const EndMotion& angles, const Vec& local) const;
+  bool turns() const { return angles_ != nullptr; }
+  // The angles' motion [rad] (turns() only).
+  const EndMotion& angles() const { return *angles_; }
+
   // The same motion, carried by the vessel the live view offsets (a ship's fairlead, a point
   // of a driven or held body): its position, velocity and acceleration then add Inputs'
   // offset (inputs.h), ramped. No run sets it: a run's ends move as the scene says.
@@ -62,7 +75,7 @@ class EndMotion {
 
   EndKind kind() const { return kind_; }
   bool prescribed() const { return kind_ != EndKind::kFree; }
-  bool moves() const { return kind_ == EndKind::kTrochoid || kind_ == EndKind::kTable; }
+  bool moves() const { return translates() || turns(); }
   const Vec& rest() const { return rest_; }
 
   // The motion as the scene gives it.
@@ -86,13 +99,21 @@ class EndMotion {
   TableInterpolation interpolation() const { return interpolation_; }
   double table_start() const { return knot_t_.empty() ? 0 : knot_t_.front(); }
   double table_end() const { return knot_t_.empty() ? 0 : knot_t_.back(); }
-  double EndSpeed() const;
+  double EndSpeed() const;  // a turning point's: its own speed there, the turn's part included
   // The first time after `t` [s] at which the motion's velocity jumps (a linear table's rows,
   // in the scene's clock), +infinity if none: where an adaptive step should land.
   double NextKink(double t) const;
 
  private:
-  Vec Evaluate(double t, int order) const;
+  bool translates() const { return kind_ == EndKind::kTrochoid || kind_ == EndKind::kTable; }
+  double OffsetKink(double t) const;  // NextKink of the offsets alone
+  Vec At(double t, int order) const;  // as the scene gives it, the turn included
+  Vec Evaluate(double t, int order) const;  // the offsets' part (no turn)
+  Vec Translation(double t, int order, const SmoothSchedule& scale,
+                  const SmoothSchedule& clock) const;
+  // The turn's part, order 0, 1, 2, from the angles theta [rad] and their rates [rad/s],
+  // [rad/s^2]: (R(theta) - R(theta_0)) local [m], R' local [m/s], R'' local [m/s^2].
+  Vec TurnPart(const Vec& theta, const Vec& rate, const Vec& rate2, int order) const;
   Vec EvaluateTrochoid(double t, int order) const;
   Vec EvaluateTable(double t, int order) const;
 
@@ -107,6 +128,10 @@ class EndMotion {
   std::vector<Vec> knot_p_, knot_m_;  // offsets [m]; spline: d2/dt2 [m/s^2] (linear: 0)
   TableInterpolation interpolation_ = TableInterpolation::kSpline;
   bool carried_ = false;  // moved by Inputs::offset_x, offset_z too
+  // A point of a turning body: the angles' motion [rad], the point's local position [m] and
+  // R(theta_0) local [m]. Shared: the angles' motion is never changed in place.
+  std::shared_ptr<const EndMotion> angles_;
+  Vec local_ = Vec::Zero(), rest_turn_ = Vec::Zero();
 };
 
 }  // namespace cablefilm

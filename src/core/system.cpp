@@ -30,6 +30,7 @@ SystemPoint OnBody(const PointSpec& p, const BodySpec& body) {
   if (body.kind == BodyKind::kFree) point.kind = PointKind::kBody;
   if (body.kind == BodyKind::kDriven) {
     point.motion = body.motion.WithRest(x);
+    if (body.turn.moves()) point.motion = point.motion.WithTurn(body.turn, p.local);
     point.kind = KindOf(point.motion);
   }
   return point;
@@ -135,15 +136,21 @@ void PlaceBody(SystemModel& sys, int b, const Vec6& pose) {
   if (body.kind != BodyKind::kFree) {
     body.motion = body.motion.WithRest(pose.head<3>());
     body.angles = pose.tail<3>();
+    body.turn = body.turn.WithRest(body.angles);
   }
+  // A turning point's turn is about the new rest angles.
+  auto place = [&](const EndMotion& m, const Vec& local) {
+    const EndMotion moved = m.WithRest(BodyPoint(pose, local));
+    return m.turns() ? moved.WithTurn(body.turn, local) : moved;
+  };
   for (SystemPoint& p : sys.points)
-    if (p.on_body == b) p.motion = p.motion.WithRest(BodyPoint(pose, p.local));
+    if (p.on_body == b) p.motion = place(p.motion, p.local);
   for (int i = 0; i < static_cast<int>(sys.lines.size()); ++i)
     for (int e = 0; e < 2; ++e) {
       const SystemPoint& p = sys.points[sys.line_points[i][e]];
       if (p.on_body != b) continue;
       EndMotion& end = e == 0 ? sys.lines[i].ends.start : sys.lines[i].ends.end;
-      end = end.WithRest(p.motion.rest());
+      end = place(end, p.local);
     }
 }
 
@@ -151,6 +158,7 @@ SystemModel HoldBody(const SystemModel& sys, int b, const Vec6& pose) {
   SystemModel held = sys;
   held.bodies[b].kind = BodyKind::kHeld;
   held.bodies[b].motion = EndMotion::Fixed(pose.head<3>());
+  held.bodies[b].turn = EndMotion::Fixed(pose.tail<3>());
   for (SystemPoint& p : held.points)
     if (p.on_body == b) {
       p.kind = PointKind::kFixed;

@@ -217,7 +217,8 @@ struct SystemStepper {
     if (!ClockAsScene(in)) return kink;
     for (const SystemPoint& p : sys.points)
       if (p.kind == PointKind::kMoved) kink = std::min(kink, p.motion.NextKink(t));
-    for (const BodySpec& b : sys.bodies) kink = std::min(kink, b.motion.NextKink(t));
+    for (const BodySpec& b : sys.bodies)
+      kink = std::min({kink, b.motion.NextKink(t), b.turn.NextKink(t)});
     return kink;
   }
   // The most stretched link of all lines (its index in its line; its line in `line`).
@@ -495,11 +496,13 @@ void PointLoads::Compute(const SystemModel& sys, const SystemData& sd, const Inp
       forces_.col(p) += HeldEndLoad(m, d.forces.geometry, f, j, a);
     }
   }
-  // The bodies: a free one's pose as stepped, a driven one's reference point as it moves.
+  // The bodies: a free one's pose as stepped, a driven one's reference point and angles as
+  // they move [m, rad].
   for (int b = 0; b < static_cast<int>(sys.bodies.size()); ++b) {
     const BodySpec& body = sys.bodies[b];
-    if (body.kind == BodyKind::kDriven)
-      body_poses_[b].head<3>() = body.motion.Position(sd.t);
+    if (body.kind != BodyKind::kDriven) continue;
+    body_poses_[b].head<3>() = body.motion.Position(sd.t);
+    if (body.turn.moves()) body_poses_[b].tail<3>() = body.turn.Position(sd.t);
   }
   for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k)
     body_poses_[sys.free_bodies[k]] = sd.bodies[k].q;

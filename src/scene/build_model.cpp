@@ -35,10 +35,41 @@ EndMotion MakeEndMotion(const EndDef& e) {
   throw Error("unknown end motion");
 }
 
+EndMotion MakeTurnMotion(const EndDef& e, const Vec& rest_angles) {
+  const double deg = M_PI / 180.0;
+  switch (e.motion) {
+    case EndMotionKind::kTrochoid: {
+      const Vec cos_amplitudes(e.rx_amplitudes[0], e.ry_amplitudes[0], e.rz_amplitudes[0]);
+      const Vec sin_amplitudes(e.rx_amplitudes[1], e.ry_amplitudes[1], e.rz_amplitudes[1]);
+      if (cos_amplitudes.isZero(0) && sin_amplitudes.isZero(0)) break;
+      return EndMotion::Trochoid(rest_angles, cos_amplitudes * deg, sin_amplitudes * deg,
+                                 2.0 * M_PI / e.period, e.ramp_rate);
+    }
+    case EndMotionKind::kTable: {
+      std::vector<double> times;
+      std::vector<Vec> angles;  // [rad]
+      bool turns = false;
+      for (const auto& r : e.table) {
+        times.push_back(r[0]);
+        angles.emplace_back(Vec(r[4], r[5], r[6]) * deg);
+        turns = turns || r[4] != 0 || r[5] != 0 || r[6] != 0;
+      }
+      if (!turns) break;
+      return EndMotion::Table(rest_angles, times, angles, e.interpolation);
+    }
+    case EndMotionKind::kFixed:
+    case EndMotionKind::kFree:
+      break;
+  }
+  return EndMotion::Fixed(rest_angles);
+}
+
 namespace {
 
 // A speed below this is taken as at rest [m/s] (a micrometre a second).
 constexpr double kRestSpeed = 1e-6;
+// A rate of turn below this is taken as at rest [rad/s] (a micrometre a second at 1 m).
+constexpr double kRestTurnRate = 1e-6;
 
 std::string Figure(double v) {
   char text[32];
@@ -69,6 +100,26 @@ void DescribeTable(const std::string& what, const EndDef& e, double run_end,
                         "or the table at rest");
 }
 
+// A body's table that turns it: its rates of turn [deg/s] at the first and last rows, and the
+// same warning for a turn still going at the last row.
+void DescribeTurn(const std::string& what, const EndDef& e, double run_end,
+                  std::vector<std::string>* notes, std::vector<std::string>* warnings) {
+  if (e.motion != EndMotionKind::kTable) return;
+  const EndMotion m = MakeTurnMotion(e, Vec::Zero());
+  if (!m.moves()) return;
+  const double deg = 180.0 / M_PI;
+  const double first = m.Velocity(m.table_start()).norm() * deg, last = m.EndSpeed() * deg;
+  if (notes)
+    notes->push_back(what + ": its table turns it too, at " + Figure(first) +
+                     " deg/s at its first row and " + Figure(last) + " deg/s at its last");
+  if (warnings && run_end > m.table_end() && m.EndSpeed() > kRestTurnRate)
+    warnings->push_back(what + ": the run goes on to t = " + Figure(run_end) +
+                        " s, past the table's last row at t = " + Figure(m.table_end()) +
+                        " s, where it still turns at " + Figure(last) +
+                        " deg/s: after that row it holds still, stopping dead. End the run at "
+                        "the table's last row, or the table at rest");
+}
+
 }  // namespace
 
 void DescribeTables(const SceneDef& scene, std::vector<std::string>* notes,
@@ -84,8 +135,10 @@ void DescribeTables(const SceneDef& scene, std::vector<std::string>* notes,
   }
   for (const PointDef& p : scene.points)
     DescribeTable("point " + QuoteText(p.name), p.motion, run_end, notes, warnings);
-  for (const BodyDef& b : scene.bodies)
+  for (const BodyDef& b : scene.bodies) {
     DescribeTable("body " + QuoteText(b.name), b.motion, run_end, notes, warnings);
+    DescribeTurn("body " + QuoteText(b.name), b.motion, run_end, notes, warnings);
+  }
 }
 
 WaveSpec MakeWaveSpec(const SceneDef& scene) {
@@ -200,6 +253,7 @@ SystemModel BuildSystem(const SceneDef& scene) {
                     : d.motion.motion == EndMotionKind::kFixed ? BodyKind::kHeld : BodyKind::kDriven;
     b.motion = MakeEndMotion(d.motion);
     b.angles = ToVec(d.orientation) * deg;
+    if (b.kind == BodyKind::kDriven) b.turn = MakeTurnMotion(d.motion, b.angles);
     b.mass = d.mass;
     b.center_of_gravity = ToVec(d.center_of_gravity);
     b.volume = d.volume;

@@ -12,8 +12,11 @@ Model BuildModel(const SceneDef& scene);
 // built (a free point no line holds, a line whose ends are both loose).
 SystemModel BuildSystem(const SceneDef& scene);
 
-// An end's (a point's, a body's) motion as the scene gives it.
+// An end's (a point's, a body's reference point's) motion as the scene gives it.
 EndMotion MakeEndMotion(const EndDef& e);
+// A driven body's angles in time [rad] about `rest_angles` [rad] (its orientation): the
+// trochoid's or the table's angles; fixed at rest_angles when none of them moves.
+EndMotion MakeTurnMotion(const EndDef& e, const Vec& rest_angles);
 
 // What `check` and `run` say of the scene's table motions (ends, points, bodies), a line each
 // in `notes` (file, rows, span, interpolation, speed at the first and last rows), and in

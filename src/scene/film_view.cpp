@@ -18,6 +18,17 @@ bool EndIsPlanar(const EndDef& end) {
   return true;
 }
 
+// A driven body turning about x or y takes its points out of the plane z = 0; about z it keeps
+// them in it.
+bool BodyStaysInPlane(const BodyDef& b) {
+  const EndDef& m = b.motion;
+  for (const auto* a : {&m.rx_amplitudes, &m.ry_amplitudes})
+    if ((*a)[0] != 0 || (*a)[1] != 0) return false;
+  for (const auto& row : m.table)
+    if (row[4] != 0 || row[5] != 0) return false;
+  return true;
+}
+
 }  // namespace
 
 const std::vector<std::string>& FilmViewNames() {
@@ -29,6 +40,8 @@ bool SceneIsPlanar(const SceneDef& scene) {
   if (!scene.is_system() && (!EndIsPlanar(scene.start) || !EndIsPlanar(scene.end))) return false;
   for (const PointDef& p : scene.points)  // a system's points: where its lines' ends are
     if (!EndIsPlanar(p.motion) || p.force[2] != 0) return false;
+  for (const BodyDef& b : scene.bodies)
+    if (!b.free && !BodyStaysInPlane(b)) return false;
   const EnvironmentDef& env = scene.environment;
   const bool current = env.current != 0 || !env.current_profile.empty();
   if (current && std::fabs(env.current_direction.z()) > kAcross) return false;

@@ -77,8 +77,15 @@ struct EndDef {
   std::array<double, 2> z_amplitudes{};   // [e, f] [m], eq. (3) in 3D
   double period = 0;                      // 2 pi / omega [s]
   double ramp_rate = 0;                   // nu [1/s]
-  std::string table_file;                 // resolved path of the CSV (t, x, y[, z]), offsets
-  std::vector<std::array<double, 4>> table;  // rows (t [s], dx, dy, dz [m])
+  // A body's angles, about x, y and z [deg]: eq. (3)'s [cos, sin] amplitudes (same period and
+  // ramp as the offsets), added to its orientation.
+  std::array<double, 2> rx_amplitudes{};
+  std::array<double, 2> ry_amplitudes{};
+  std::array<double, 2> rz_amplitudes{};
+  std::string table_file;                 // resolved path of the CSV (t, x, y[, z[, rx, ry, rz]])
+  // Rows (t [s], dx, dy, dz [m], drx, dry, drz [deg]); the angles (a body's only) 0 unless the
+  // table gives them.
+  std::vector<std::array<double, 7>> table;
   TableInterpolation interpolation = TableInterpolation::kSpline;  // how the rows are joined
   // motion = "wave": the end follows the wave at its rest x through these response amplitude
   // operators, [ratio of the wave's amplitude (m/m), phase lead (deg)]; the loader turns them
@@ -87,6 +94,10 @@ struct EndDef {
   std::array<double, 2> x_rao{};
   std::array<double, 2> y_rao{};
   std::array<double, 2> z_rao{};
+  // A body's angles about x, y, z: [deg per m of the wave's amplitude, phase lead (deg)].
+  std::array<double, 2> rx_rao{};
+  std::array<double, 2> ry_rao{};
+  std::array<double, 2> rz_rao{};
 };
 
 // [[point]]: where the lines of a system end (a mooring: anchors, fairleads, clump weights,

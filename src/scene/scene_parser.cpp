@@ -356,13 +356,15 @@ void ReadCable(TableReader& top, SceneDef& scene) {
   r.Finish();
 }
 
-// motion = "wave": [ratio, phase in degrees], the ratio at most kMaxRao.
-std::array<double, 2> ReadRao(TableReader& r, const std::string& key) {
-  const std::array<double, 2> rao =
-      r.Pair(key, {0, 0}, false, false, " ([amplitude ratio in m/m, phase in degrees])", kMaxRao);
+// motion = "wave": [ratio, phase in degrees], the ratio at most kMaxRao; `unit` the ratio's
+// (m/m for an offset, deg/m for a body's angle).
+std::array<double, 2> ReadRao(TableReader& r, const std::string& key,
+                              const std::string& unit = "m/m") {
+  const std::array<double, 2> rao = r.Pair(
+      key, {0, 0}, false, false, " ([amplitude ratio in " + unit + ", phase in degrees])", kMaxRao);
   if (!(rao[0] >= 0) || !(std::abs(rao[1]) <= kMaxPhase))
     r.Fail(r.Get(key), key,
-           "expected [amplitude ratio from 0 to " + TableReader::Fmt(kMaxRao) +
+           "expected [amplitude ratio in " + unit + " from 0 to " + TableReader::Fmt(kMaxRao) +
                ", phase in degrees from " + TableReader::Fmt(-kMaxPhase) + " to " +
                TableReader::Fmt(kMaxPhase) + "], got [" + TableReader::Fmt(rao[0]) + ", " +
                TableReader::Fmt(rao[1]) + "]");
@@ -379,21 +381,24 @@ void FollowWave(const WavesDef& w, double gravity, EndDef& end) {
   // theta at the end's rest point: k e . x0 with e the heading's direction.
   const Vec e = Horizontal(w.heading * deg);
   const double along = e.x() * end.position[0] + e.z() * end.position[2];
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::array<double, 2>& rao = axis == 0 ? end.x_rao : axis == 1 ? end.y_rao : end.z_rao;
+  // The offsets [m] and a body's angles [deg], each from its RAO [m/m or deg/m].
+  const std::array<double, 2>* raos[6] = {&end.x_rao,  &end.y_rao,  &end.z_rao,
+                                          &end.rx_rao, &end.ry_rao, &end.rz_rao};
+  std::array<double, 2>* amps[6] = {&end.x_amplitudes,  &end.y_amplitudes,  &end.z_amplitudes,
+                                    &end.rx_amplitudes, &end.ry_amplitudes, &end.rz_amplitudes};
+  for (int axis = 0; axis < 6; ++axis) {
+    const std::array<double, 2>& rao = *raos[axis];
     const double beta = k * along + (w.phase + rao[1]) * deg;
-    std::array<double, 2>& amp =
-        axis == 0 ? end.x_amplitudes : axis == 1 ? end.y_amplitudes : end.z_amplitudes;
-    amp = {rao[0] * A * std::cos(beta), rao[0] * A * std::sin(beta)};
+    *amps[axis] = {rao[0] * A * std::cos(beta), rao[0] * A * std::sin(beta)};
   }
   end.period = w.period;
   end.ramp_rate = w.ramp_rate;
 }
 
-// An end's (or a point's) position and motion from its table `t` read by `r`; returns the
-// motion's name. The caller finishes the reader.
+// An end's (or a point's, or a body's: `body`, whose angles may move too) position and motion
+// from its table `t` read by `r`; returns the motion's name. The caller finishes the reader.
 std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const std::string& file,
-                       const SceneDef& scene) {
+                       const SceneDef& scene, bool body = false) {
   end.position = r.Triple("position", {0, 0, 0}, true, false, " in m ([x, y] or [x, y, z])",
                           kMaxLength, TableReader::TwoValues::kZeroZ);
   const std::string motion =
@@ -407,6 +412,11 @@ std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const 
     end.x_rao = ReadRao(r, "x_rao");
     end.y_rao = ReadRao(r, "y_rao");
     end.z_rao = ReadRao(r, "z_rao");
+    if (body) {
+      end.rx_rao = ReadRao(r, "rx_rao", "deg/m");
+      end.ry_rao = ReadRao(r, "ry_rao", "deg/m");
+      end.rz_rao = ReadRao(r, "rz_rao", "deg/m");
+    }
     FollowWave(scene.waves, scene.environment.gravity, end);
   }
   if (motion == "fixed") end.motion = EndMotionKind::kFixed;
@@ -416,6 +426,12 @@ std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const 
     end.x_amplitudes = r.Pair("x_amplitudes", {0, 0}, false, false, " in m", kMaxLength);
     end.y_amplitudes = r.Pair("y_amplitudes", {0, 0}, false, false, " in m", kMaxLength);
     end.z_amplitudes = r.Pair("z_amplitudes", {0, 0}, false, false, " in m", kMaxLength);
+    if (body) {
+      const std::string deg = " in degrees";
+      end.rx_amplitudes = r.Pair("rx_amplitudes", {0, 0}, false, false, deg, kMaxPhase);
+      end.ry_amplitudes = r.Pair("ry_amplitudes", {0, 0}, false, false, deg, kMaxPhase);
+      end.rz_amplitudes = r.Pair("rz_amplitudes", {0, 0}, false, false, deg, kMaxPhase);
+    }
     end.period = r.Positive("period", " in s", kMinPeriod, kMaxPeriod);
     end.ramp_rate = r.Positive("ramp_rate", " in 1/s", 0, kMaxRampRate);
   }
@@ -423,11 +439,13 @@ std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const 
     end.motion = EndMotionKind::kTable;
     const std::string name = r.String("file", "", true);
     if (name.empty() || name.find('\0') != std::string::npos)
-      r.Fail(t->get("file"), "file", "expected the name of a CSV file t,x,y, got " + Quote(name));
+      r.Fail(t->get("file"), "file",
+             std::string("expected the name of a CSV file t,x,y") +
+                 (body ? " (or t,x,y,z,rx,ry,rz)" : "") + ", got " + Quote(name));
     const std::filesystem::path base = std::filesystem::path(file).parent_path();
     end.table_file = (base / name).string();
     try {
-      end.table = ReadMotionTable(end.table_file);
+      end.table = ReadMotionTable(end.table_file, body);
     } catch (const Error& e) {
       r.Fail(t->get("file"), "file", e.what());
     }
@@ -554,7 +572,7 @@ void ReadBodies(TableReader& top, SceneDef& scene, const std::string& file) {
     BodyDef b;
     b.name = ReadName(r, t);
     CheckUnique(r, t, b.name, scene.bodies, "bodies");
-    const std::string motion = ReadMotion(r, t, b.motion, file, scene);
+    const std::string motion = ReadMotion(r, t, b.motion, file, scene, true);
     b.free = motion == "free";
     b.orientation = r.Triple("orientation", {0, 0, 0}, false, false,
                              " in degrees, about x, y and z", kMaxPhase,

@@ -18,6 +18,7 @@ namespace {
 
 constexpr char kHeader[] = "t,x,y";      // a table in the plane (z = 0)
 constexpr char kHeader3D[] = "t,x,y,z";
+constexpr char kHeaderTurn[] = "t,x,y,z,rx,ry,rz";  // a body's, its angles too
 
 bool IsBlank(char c) { return c == ' ' || c == '\t'; }
 
@@ -51,8 +52,8 @@ bool ParseDecimal(const std::string& cell, double* value) {
   return true;
 }
 
-// `columns` (3 or 4) decimal numbers separated by commas, nothing else.
-bool ParseRow(const std::string& line, int columns, std::array<double, 4>& row) {
+// `columns` (3, 4 or 7) decimal numbers separated by commas, nothing else.
+bool ParseRow(const std::string& line, int columns, std::array<double, 7>& row) {
   std::size_t from = 0;
   row = {};
   for (int i = 0; i < columns; ++i) {
@@ -78,7 +79,7 @@ struct FileCloser {
 
 }  // namespace
 
-std::vector<std::array<double, 4>> ReadMotionTable(const std::string& path) {
+std::vector<std::array<double, 7>> ReadMotionTable(const std::string& path, bool angles) {
   const std::string name = EscapeText(path);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
@@ -87,14 +88,21 @@ std::vector<std::array<double, 4>> ReadMotionTable(const std::string& path) {
   if (!file)
     throw Error(name + ": cannot open the motion table: " + std::strerror(errno));
 
-  std::vector<std::array<double, 4>> rows;
-  bool header = false;      // the first row was the header "t,x,y" or "t,x,y,z"
+  std::vector<std::array<double, 7>> rows;
+  bool header = false;      // the first row was the header "t,x,y", "t,x,y,z" or a body's
   bool first = true;        // no row (header or data) seen yet
-  int columns = 3;          // t,x,y or t,x,y,z: the header's, or the first row's
+  int columns = 3;          // t,x,y, t,x,y,z or t,x,y,z,rx,ry,rz: the header's, or the first row's
   long number = 0;          // line number
   std::uintmax_t bytes = 0;
   auto where = [&] { return name + ":" + std::to_string(number) + ": "; };
-  auto names = [&] { return std::string(columns == 4 ? "t,x,y,z" : "t,x,y"); };
+  auto names = [&] {
+    return std::string(columns == 7 ? kHeaderTurn : columns == 4 ? kHeader3D : kHeader);
+  };
+  auto units = [&] { return std::string(columns == 7 ? "in s, m and degrees" : "in s and m"); };
+  const std::string forms = angles ? "\"t,x,y\", \"t,x,y,z\" or \"t,x,y,z,rx,ry,rz\""
+                                   : "\"t,x,y\" or \"t,x,y,z\"";
+  const std::string number_forms =
+      angles ? "t,x,y, t,x,y,z or t,x,y,z,rx,ry,rz in s, m and degrees" : "t,x,y or t,x,y,z in s and m";
   auto which = [&] {
     return header ? " (after the header row \"" + names() + "\")"
                   : " (this table has no header row \"" + names() + "\")";
@@ -103,22 +111,27 @@ std::vector<std::array<double, 4>> ReadMotionTable(const std::string& path) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#') return;  // blank or comment
-    std::array<double, 4> row{};
-    if (first && (line == kHeader || line == kHeader3D)) {
+    std::array<double, 7> row{};
+    const long commas = std::count(line.begin(), line.end(), ',');
+    if (first && !angles && (line == kHeaderTurn || commas == 6))
+      throw Error(where() + "seven columns t,x,y,z,rx,ry,rz turn a body; an end's or a point's "
+                  "table has rows t,x,y or t,x,y,z (in s and m), got " + Shown(line));
+    if (first && (line == kHeader || line == kHeader3D || line == kHeaderTurn)) {
       header = true;
       first = false;
-      columns = line == kHeader3D ? 4 : 3;
+      columns = line == kHeaderTurn ? 7 : line == kHeader3D ? 4 : 3;
       return;
     }
-    if (first && std::count(line.begin(), line.end(), ',') == 3) columns = 4;
+    if (first && commas == 3) columns = 4;
+    if (first && commas == 6) columns = 7;
     if (!ParseRow(line, columns, row)) {
       if (first)
-        throw Error(where() + "expected a header row exactly \"t,x,y\" or \"t,x,y,z\", or "
-                    "numbers t,x,y or t,x,y,z in s and m (finite decimals, separated by "
-                    "commas), got " + Shown(line));
-      throw Error(where() + "expected " + std::string(columns == 3 ? "three" : "four") + " numbers " + names() +
-                  " in s and m (finite decimals, separated by commas)" + which() + ", got " +
-                  Shown(line));
+        throw Error(where() + "expected a header row exactly " + forms + ", or numbers " +
+                    number_forms + " (finite decimals, separated by commas), got " + Shown(line));
+      throw Error(where() + "expected " +
+                  std::string(columns == 3 ? "three" : columns == 4 ? "four" : "seven") +
+                  " numbers " + names() + " " + units() +
+                  " (finite decimals, separated by commas)" + which() + ", got " + Shown(line));
     }
     first = false;
     for (double v : row)
@@ -131,6 +144,10 @@ std::vector<std::array<double, 4>> ReadMotionTable(const std::string& path) {
           std::abs(row[3]) <= kMaxLength))
       throw Error(where() + "expected offsets from -" + FormatNumber(kMaxLength) + " to " +
                   FormatNumber(kMaxLength) + " m, got " + Shown(line));
+    if (!(std::abs(row[4]) <= kMaxPhase && std::abs(row[5]) <= kMaxPhase &&
+          std::abs(row[6]) <= kMaxPhase))
+      throw Error(where() + "expected angles rx, ry, rz from -" + FormatNumber(kMaxPhase) +
+                  " to " + FormatNumber(kMaxPhase) + " degrees, got " + Shown(line));
     if (!rows.empty() && !(row[0] > rows.back()[0]))
       throw Error(where() + "expected the time to increase, got " + FormatNumber(row[0]) +
                   " after " + FormatNumber(rows.back()[0]));

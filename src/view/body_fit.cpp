@@ -32,7 +32,7 @@ BodyPlacement FitBodyPlacement(const std::vector<Vec>& local, const std::vector<
 }
 
 std::vector<std::vector<std::array<Vec, 2>>> BodyBoxesNow(
-    const SceneView& scene, const std::vector<LineSnapshot>& lines) {
+    const SceneView& scene, const std::vector<LineSnapshot>& lines, double t) {
   std::vector<std::vector<std::array<Vec, 2>>> out(scene.bodies.size());
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const BodyView& body = scene.bodies[b];
@@ -50,7 +50,10 @@ std::vector<std::vector<std::array<Vec, 2>>> BodyBoxesNow(
       world.push_back(Vec(l.x[j], l.y[j], j < l.z.size() ? l.z[j] : 0.0));
     }
     if (world.empty()) continue;
-    const Vec rest(body.rest_angles[0], body.rest_angles[1], body.rest_angles[2]);
+    // Too few points for the turn: the body's angles now (a driven body's), else at rest.
+    const std::array<double, 3> a =
+        body.angles_at ? body.angles_at(t) : body.rest_angles;
+    const Vec rest(a[0], a[1], a[2]);
     const BodyPlacement at = FitBodyPlacement(local, world, BodyRotation(rest));
     const BoxEdges edges =
         BodyBoxEdges(at.r, at.R, Vec(body.box[0], body.box[1], body.box[2]),

@@ -24,8 +24,9 @@ BodyPlacement FitBodyPlacement(const std::vector<Vec>& local, const std::vector<
                                const Mat& rest);
 
 // Each body's box edges where its points are in `lines` (a line's z empty: 0), as the scene's
-// bodies; empty for a body without a box, without local positions or without its points.
+// bodies; empty for a body without a box, without local positions or without its points. `t`
+// [s]: the snapshot's time, for a driven body's angles (BodyView::angles_at).
 std::vector<std::vector<std::array<Vec, 2>>> BodyBoxesNow(
-    const SceneView& scene, const std::vector<LineSnapshot>& lines);
+    const SceneView& scene, const std::vector<LineSnapshot>& lines, double t = 0);
 
 }  // namespace cablefilm

@@ -240,7 +240,7 @@ Frame MakeFrame(const SceneView& scene, const History& history, const Snapshot& 
     cable.points = &scene.points;
     cable.bodies = &scene.bodies;
     std::vector<std::vector<PanelEdge>> boxes;  // in the plane z = 0: (x, y)
-    for (const auto& edges : BodyBoxesNow(scene, snap.lines)) {
+    for (const auto& edges : BodyBoxesNow(scene, snap.lines, snap.t)) {
       boxes.emplace_back();
       for (const auto& e : edges) boxes.back().push_back({e[0].x(), e[0].y(), e[1].x(), e[1].y()});
     }

@@ -143,7 +143,7 @@ void DrawView(Painter& p, const FrameLayout& L, bool plan, const PlaneViewsInput
   if (plan) c.points = &scene.points;  // the plan shows the spread: the points apart
   // The bodies' boxes in both views (the elevation draws no outlines: its points overlap).
   std::vector<std::vector<PanelEdge>> boxes;
-  for (const auto& edges : BodyBoxesNow(scene, in.now->lines)) {
+  for (const auto& edges : BodyBoxesNow(scene, in.now->lines, in.now->t)) {
     boxes.emplace_back();
     for (const auto& edge : edges) {  // as ProjectPoint, in double
       const Vec &a = edge[0], &b = edge[1];

@@ -11,6 +11,7 @@
 // plots, and its points are named where they are.
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -66,6 +67,9 @@ struct BodyView {
   // body's rest angles [rad] (about x, then y, then z): its pose from where its points are.
   std::vector<std::array<double, 3>> local;
   std::array<double, 3> rest_angles{};
+  // A driven body that turns: its angles at time t [s] in rad (as its motion gives them), the
+  // turn of a box whose points are too few to give it; empty: its rest angles.
+  std::function<std::array<double, 3>(double t)> angles_at;
   bool has_box = false;                // drawn as a box, not the outline
   std::array<double, 3> box{};         // its sizes along the body's x, y, z [m]
   std::array<double, 3> box_center{};  // in the body's axes from its reference point [m]

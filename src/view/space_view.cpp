@@ -232,7 +232,7 @@ ViewProjection DrawSpaceView(Painter& p, const SpaceViewInput& in, const Colorma
       for (const auto& piece : path.pieces)
         if (piece.size() >= 2) s.tubes.push_back(PlainTube(piece, 0.3f * radius, EndPathColor(th)));
     }
-  const std::vector<std::vector<std::array<Vec, 2>>> boxes = BodyBoxesNow(scene, now.lines);
+  const std::vector<std::vector<std::array<Vec, 2>>> boxes = BodyBoxesNow(scene, now.lines, now.t);
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {  // its box, else its outline
     const BodyView& body = scene.bodies[b];
     if (!boxes[b].empty()) {

@@ -34,6 +34,11 @@ SceneView MakeSystemFilmScene(const SceneDef& scene, const SystemRun& run,
     body.name = sys.bodies[b].name;
     const Vec& a = sys.bodies[b].angles;
     body.rest_angles = {a.x(), a.y(), a.z()};
+    if (sys.bodies[b].kind == BodyKind::kDriven && sys.bodies[b].turn.moves())
+      body.angles_at = [turn = sys.bodies[b].turn](double t) {
+        const Vec now = turn.Position(t);  // [rad]
+        return std::array<double, 3>{now.x(), now.y(), now.z()};
+      };
     if (b < scene.bodies.size() && scene.bodies[b].has_box) {  // the scene's bodies, in order
       body.has_box = true;
       body.box = scene.bodies[b].box;

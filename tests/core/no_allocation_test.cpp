@@ -35,7 +35,8 @@ namespace {
 
 long AllocationsWhileStepping(Scheme kind, CableModelKind model, double dt,
                               double error_tolerance, bool waves = false,
-                              const char* scene_file = "polachek1963.toml") {
+                              const char* scene_file = "polachek1963.toml",
+                              bool turning_end = false) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + scene_file);
   scene.model = model;
   if (!scene.seabed.present)
@@ -48,7 +49,11 @@ long AllocationsWhileStepping(Scheme kind, CableModelKind model, double dt,
     scene.waves.surface_y = 33;
     scene.waves.ramp_rate = 0.5;
   }
-  const Model m = BuildModel(scene);
+  Model m = BuildModel(scene);
+  if (turning_end)  // its far end a point 3 m from a driven body's reference point, turning
+    m.ends.end = m.ends.end.WithTurn(
+        EndMotion::Trochoid(Vec::Zero(), Vec(0.05, 0.1, 0.0), Vec(0.0, 0.05, 0.1), 0.6, 0.5),
+        Vec(3.0, 0.0, 0.0));
   State s = SolveEquilibrium(m);  // the elastic equilibrium: a fine start for either model
   auto integrator = testing::MakeStepper(kind, m, 0.5, error_tolerance);
   integrator->Initialize(m, s);
@@ -76,6 +81,14 @@ TEST(NoAllocation, ImplicitStepFixedAndAdaptive) {
   EXPECT_EQ(
       AllocationsWhileStepping(Scheme::kImplicit, CableModelKind::kElastic, 1.0 / 30, 1e-5),
       0);
+}
+
+// A driven body's turning point (issue 20): its turn is evaluated at every stage, still
+// without allocating.
+TEST(NoAllocation, ImplicitStepWithATurningEnd) {
+  EXPECT_EQ(AllocationsWhileStepping(Scheme::kImplicit, CableModelKind::kElastic, 1.0 / 30, 1e-5,
+                                     false, "polachek1963.toml", true),
+            0);
 }
 
 TEST(NoAllocation, InextensibleStep) {

@@ -52,6 +52,17 @@ std::vector<std::string> ScenesWithEveryKey() {
                    "\n[[line]]\nname = \"riser\"\nmodel = \"elastic\"\nstart = \"buoy\"\n"
                    "end = \"fairlead1\"\n[[line.section]]\nmaterial = \"chain\"\nlength = 20.0\n"
                    "segments = 4\n[[line.weight]]\nat = 10.0\nmass = 50.0\n");
+  // Driven bodies that turn (issue 20): a trochoid's angles, a wave's angle RAOs.
+  const std::string spread = Read(src + "/scenes/spread_mooring.toml");
+  scenes.push_back(spread +
+                   "\n[[body]]\nname = \"ship\"\nmotion = \"trochoid\"\nposition = [0.0, 0.0, 0.0]\n"
+                   "x_amplitudes = [1.0, 0.0]\nrx_amplitudes = [1.0, 0.0]\n"
+                   "ry_amplitudes = [0.0, 2.0]\nrz_amplitudes = [0.5, 0.5]\nperiod = 10.0\n"
+                   "ramp_rate = 0.5\n");
+  scenes.push_back(spread + "\n[waves]\nheight = 1.0\nperiod = 8.0\nsurface_y = 0.0\n"
+                   "\n[[body]]\nname = \"ship\"\nmotion = \"wave\"\nposition = [0.0, 0.0, 0.0]\n"
+                   "x_rao = [1.0, 90.0]\nrx_rao = [2.0, 0.0]\nry_rao = [1.0, 10.0]\n"
+                   "rz_rao = [3.0, -90.0]\n");
   return scenes;
 }
 
@@ -71,6 +82,8 @@ TEST(SceneKeys, EveryKeyTheLoaderAcceptsIsInTheManual) {
   EXPECT_EQ(keys.count("environment.current"), 1u);
   EXPECT_EQ(keys.count("cable.section.length"), 1u);
   EXPECT_EQ(keys.count("ends.end.x_rao"), 1u);
+  EXPECT_EQ(keys.count("body.rz_amplitudes"), 1u);
+  EXPECT_EQ(keys.count("body.ry_rao"), 1u);
   EXPECT_EQ(manual.find("`environment.no_such_key`"), std::string::npos);
 }
 

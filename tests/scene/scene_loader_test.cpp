@@ -1156,5 +1156,155 @@ TEST(SceneLoader, BodyBoxErrors) {
               {"expected"});
 }
 
+// A driven body that turns (issue 20): the fairlead on a ship whose trochoid turns it too.
+const std::string kDrivenBody = R"([[body]]
+name = "ship"
+motion = "trochoid"
+position = [70.0, 0.0, 10.0]
+orientation = [0.0, 30.0, 0.0]
+x_amplitudes = [1.0, 0.0]
+rx_amplitudes = [2.0, 0.0]
+ry_amplitudes = [0.0, 3.0]
+period = 10.0
+ramp_rate = 0.5
+
+[[point]]
+name = "fairlead"
+body = "ship"
+position = [2.0, -1.0, 0.5])";
+
+std::string DrivenBodySystem(const std::string& from = "", const std::string& to = "") {
+  const std::string text = SystemWith(
+      "[[point]]\nname = \"fairlead\"\nposition = [70.0, 0.0, 10.0]", kDrivenBody);
+  return from.empty() ? text : With(from, to, text);
+}
+
+TEST(SceneLoader, DrivenBodyTurnsByItsTrochoid) {
+  const SceneDef s = ParseScene(DrivenBodySystem(), kFile);
+  EXPECT_EQ(s.bodies[0].motion.rx_amplitudes[0], 2.0);
+  EXPECT_EQ(s.bodies[0].motion.ry_amplitudes[1], 3.0);
+  EXPECT_EQ(s.bodies[0].motion.rz_amplitudes[0], 0.0);
+  const SystemModel sys = BuildSystem(s);
+  ASSERT_TRUE(sys.bodies[0].turn.moves());
+  const EndMotion& fairlead = sys.points[2].motion;
+  ASSERT_TRUE(fairlead.turns());
+  EXPECT_EQ(sys.points[2].kind, PointKind::kMoved);
+  // Eq. (3) by hand for the reference point and the angles [deg], then r + R(theta) p.
+  const double deg = M_PI / 180.0, w = 2 * M_PI / 10.0, nu = 0.5;
+  for (double t : {0.0, 1.3, 7.9}) {
+    const double ramp = 1 - (1 + nu * t) * std::exp(-nu * t);
+    const Vec r(70.0 + ramp * std::cos(w * t), 0.0, 10.0);
+    const Vec theta = Vec(2.0 * ramp * std::cos(w * t), 30.0 + 3.0 * ramp * std::sin(w * t), 0.0) * deg;
+    Vec6 pose;
+    pose << r, theta;
+    // Round-off of 70 m: 1e-13.
+    EXPECT_LT((fairlead.Position(t) - BodyPoint(pose, Vec(2.0, -1.0, 0.5))).norm(), 1e-13) << t;
+  }
+  // Without angle amplitudes nothing turns: the point's motion is the reference point's.
+  const SystemModel plain = BuildSystem(ParseScene(
+      DrivenBodySystem("rx_amplitudes = [2.0, 0.0]\nry_amplitudes = [0.0, 3.0]\n", ""), kFile));
+  EXPECT_FALSE(plain.bodies[0].turn.moves());
+  EXPECT_FALSE(plain.points[2].motion.turns());
+}
+
+TEST(SceneLoader, DrivenBodyTurnErrors) {
+  ExpectError(DrivenBodySystem("rx_amplitudes = [2.0, 0.0]", "rx_amplitudes = [400.0, 0.0]"),
+              "body[0].rx_amplitudes", {"expected", "in degrees", "360"});
+  ExpectError(DrivenBodySystem("rx_amplitudes = [2.0, 0.0]", "rx_amplitudes = [2.0]"),
+              "body[0].rx_amplitudes", {"expected an array of two"});
+  // An end's or a point's motion does not turn: the keys are unknown there.
+  ExpectError(SystemWith("position = [70.0, 0.0, 10.0]",
+                         "position = [70.0, 0.0, 10.0]\nmotion = \"trochoid\"\nperiod = 10.0\n"
+                         "ramp_rate = 0.5\nrz_amplitudes = [1.0, 0.0]"),
+              "point[2].rz_amplitudes", {"unknown key"});
+  // A fixed body has no motion keys.
+  ExpectError(DrivenBodySystem("motion = \"trochoid\"", "motion = \"fixed\""), "body[0].",
+              {"unknown key", "motion = \"fixed\" uses only the keys it needs"});
+}
+
+TEST(SceneLoader, WaveFollowingBodyTurnsThroughItsRaos) {
+  const std::string waves = "\n[waves]\nheight = 2.0\nperiod = 8.0\ndepth = 60.0\n";
+  const std::string wave_motion =
+      "motion = \"wave\"\nposition = [70.0, 0.0, 10.0]\nry_rao = [1.5, 30.0]\nrz_rao = [0.5, 0.0]";
+  const std::string troch =
+      "motion = \"trochoid\"\nposition = [70.0, 0.0, 10.0]\norientation = [0.0, 30.0, 0.0]\n"
+      "x_amplitudes = [1.0, 0.0]\nrx_amplitudes = [2.0, 0.0]\nry_amplitudes = [0.0, 3.0]\n"
+      "period = 10.0\nramp_rate = 0.5";
+  const SceneDef s = ParseScene(DrivenBodySystem(troch, wave_motion) + waves, kFile);
+  const EndDef& m = s.bodies[0].motion;
+  // A response r A cos(k x0 - omega t + p): [cos, sin] amplitudes r A (cos beta, sin beta),
+  // beta = k x0 + p, A = 1 m; in degrees.
+  const double k = WaveNumber(2 * M_PI / 8.0, 9.80665, 60.0);
+  const double beta = k * 70.0 + 30.0 * M_PI / 180.0;
+  EXPECT_NEAR(m.ry_amplitudes[0], 1.5 * std::cos(beta), 1e-12);
+  EXPECT_NEAR(m.ry_amplitudes[1], 1.5 * std::sin(beta), 1e-12);
+  EXPECT_NEAR(m.rz_amplitudes[0], 0.5 * std::cos(k * 70.0), 1e-12);
+  EXPECT_EQ(m.rx_amplitudes[0], 0.0);
+  EXPECT_TRUE(BuildSystem(s).points[2].motion.turns());
+  ExpectError(DrivenBodySystem(troch, "motion = \"wave\"\nposition = [70.0, 0.0, 10.0]\n"
+                                      "rx_rao = [-1.0, 0.0]") + waves,
+              "body[0].rx_rao", {"expected [amplitude ratio in deg/m from 0 to 1000", "got [-1, 0]"});
+}
+
+// A body's table of seven columns: its angles too.
+TEST_F(TableMotion, BodyTableWithAngles) {
+  WriteFile("turn.csv", "t,x,y,z,rx,ry,rz\n0,0,0,0,0,0,0\n2,0.5,0,0,1,-2,3\n4,0,0,0,0,5,0\n");
+  const std::string troch =
+      "motion = \"trochoid\"\nposition = [70.0, 0.0, 10.0]\norientation = [0.0, 30.0, 0.0]\n"
+      "x_amplitudes = [1.0, 0.0]\nrx_amplitudes = [2.0, 0.0]\nry_amplitudes = [0.0, 3.0]\n"
+      "period = 10.0\nramp_rate = 0.5";
+  const std::string table = "motion = \"table\"\nposition = [70.0, 0.0, 10.0]\n"
+                            "orientation = [0.0, 30.0, 0.0]\nfile = \"turn.csv\"";
+  const SceneDef s = ParseScene(DrivenBodySystem(troch, table), scene_);
+  ASSERT_EQ(s.bodies[0].motion.table.size(), 3u);
+  EXPECT_EQ(s.bodies[0].motion.table[1][6], 3.0);
+  EXPECT_EQ(s.bodies[0].motion.table[2][5], 5.0);
+  const SystemModel sys = BuildSystem(s);
+  // At a row the spline is the row: the pose (70.5, 0, 10), (1, 28, 3) degrees at t = 2.
+  const double deg = M_PI / 180.0;
+  Vec6 pose;
+  pose << 70.5, 0.0, 10.0, 1.0 * deg, 28.0 * deg, 3.0 * deg;
+  EXPECT_LT((sys.points[2].motion.Position(2.0) - BodyPoint(pose, Vec(2.0, -1.0, 0.5))).norm(),
+            1e-12);
+  // Headerless seven columns too; four columns turn nothing.
+  WriteFile("bare.csv", "0,0,0,0,0,0,0\n1,0,0,0,0,1,0\n");
+  EXPECT_TRUE(BuildSystem(ParseScene(DrivenBodySystem(troch, With("turn.csv", "bare.csv", table)),
+                                     scene_)).points[2].motion.turns());
+  WriteFile("four.csv", "t,x,y,z\n0,0,0,0\n1,0.5,0,0\n");
+  EXPECT_FALSE(BuildSystem(ParseScene(DrivenBodySystem(troch, With("turn.csv", "four.csv", table)),
+                                      scene_)).points[2].motion.turns());
+  // The errors name the file, its line, the key and what was expected.
+  WriteFile("short.csv", "t,x,y,z,rx,ry,rz\n0,0,0,0,0,0,0\n1,0,0,0,0,1\n");
+  ExpectError(DrivenBodySystem(troch, With("turn.csv", "short.csv", table)), "body[0].file",
+              {"short.csv:3", "expected seven numbers t,x,y,z,rx,ry,rz in s, m and degrees"},
+              scene_);
+  WriteFile("far.csv", "0,0,0,0,0,0,0\n1,0,0,0,0,400,0\n");
+  ExpectError(DrivenBodySystem(troch, With("turn.csv", "far.csv", table)), "body[0].file",
+              {"far.csv:2", "expected angles rx, ry, rz from -360 to 360 degrees"}, scene_);
+  // check and run describe the turn, and warn of a run past a table still turning at its last
+  // row: here linear, its first segment (1, -2, 3) degrees in 2 s, sqrt(14) / 2 = 1.871 deg/s,
+  // its last (-1, 7, -3) degrees in 2 s, sqrt(59) / 2 = 3.841 deg/s.
+  std::vector<std::string> notes, warnings;
+  DescribeTables(ParseScene(DrivenBodySystem(troch, table + "\ninterpolation = \"linear\"") +
+                                "\n[simulation]\nduration = 6.0\n",
+                            scene_),
+                 &notes, &warnings);
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_NE(notes[1].find("body \"ship\": its table turns it too, at 1.871 deg/s at its first row "
+                          "and 3.841 deg/s at its last"),
+            std::string::npos)
+      << notes[1];
+  ASSERT_EQ(warnings.size(), 2u);  // its reference point still moves too (0.25 m/s)
+  EXPECT_NE(warnings[1].find("past the table's last row at t = 4 s, where it still turns at "
+                             "3.841 deg/s"),
+            std::string::npos)
+      << warnings[1];
+  // An end's table does not turn.
+  ExpectError(TableScene("turn.csv"), "ends.end.file",
+              {"turn.csv:1", "seven columns t,x,y,z,rx,ry,rz turn a body"}, scene_);
+  ExpectError(TableScene("bare.csv"), "ends.end.file",
+              {"bare.csv:1", "seven columns t,x,y,z,rx,ry,rz turn a body"}, scene_);
+}
+
 }  // namespace
 }  // namespace cablefilm

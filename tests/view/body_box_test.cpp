@@ -135,5 +135,39 @@ TEST(BodyFit, BoxesNowFollowThePointsOfABodyWithABox) {
   EXPECT_LT((hi - Vec(11, 6, 8)).norm(), kTol);
 }
 
+// A driven body that turns (issue 20), with one point: too few for the fit, so the box takes
+// the body's angles at the snapshot's time from its motion.
+TEST(BodyFit, ABoxOfTooFewPointsTurnsWithItsDrivenAngles) {
+  SceneView scene;
+  LineView l;
+  l.arc_length = {0, 1};
+  scene.lines.push_back(l);
+  scene.points.push_back({"fairlead", 0, 1});
+  BodyView b;
+  b.points = {0};
+  b.local = {{1, 0, 0}};
+  b.has_box = true;
+  b.box = {2, 2, 2};
+  b.angles_at = [](double t) { return std::array<double, 3>{0.0, 0.25 * t, 0.0}; };  // [rad]
+  scene.bodies.push_back(b);
+  LineSnapshot now;
+  now.x = {0, 11};
+  now.y = {0, 5};
+  now.z = {0, 7};
+  const auto boxes = BodyBoxesNow(scene, {now}, 2.0);  // at t = 2 s: a yaw of 0.5 rad
+  ASSERT_EQ(boxes[0].size(), 12u);
+  // Its corners at r + R p, R the yaw of 0.5 rad, r where the point puts it: every corner of
+  // the box (+-1, +-1, +-1) is one of the edges' ends.
+  const Mat R = BodyRotation(Vec(0, 0.5, 0));
+  const Vec r = Vec(11, 5, 7) - R * Vec(1, 0, 0);
+  for (int c = 0; c < 8; ++c) {
+    const Vec corner = r + R * Vec(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1);
+    double nearest = 1e300;
+    for (const auto& e : boxes[0])
+      for (const Vec& q : e) nearest = std::min(nearest, (q - corner).norm());
+    EXPECT_LT(nearest, kTol) << c;
+  }
+}
+
 }  // namespace
 }  // namespace cablefilm

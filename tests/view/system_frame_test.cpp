@@ -318,6 +318,22 @@ TEST(SystemScene, AutoViewFollowsThePoints) {
   std::string pushed = text;
   pushed.replace(pushed.find("mass = 3000.0"), 13, "mass = 3000.0\nforce = [0.0, 0.0, 50.0]");
   EXPECT_TRUE(DrawsInSpace(ParseScene(pushed, path), "auto"));
+  // The fairlead on a driven body (issue 20): turning about z keeps it in the plane, about x
+  // or y takes it out.
+  std::string on_body = text;
+  const std::string fairlead =
+      "name = \"fairlead\"\nposition = [70.0, 0.0, 0.0]\nmotion = \"trochoid\"\n"
+      "x_amplitudes = [1.5, 0.0]\ny_amplitudes = [0.8, 0.6]\nz_amplitudes = [0.0, 0.0]\n"
+      "period = 8.0\nramp_rate = 0.5\n";
+  ASSERT_NE(on_body.find(fairlead), std::string::npos);
+  on_body.replace(on_body.find(fairlead), fairlead.size(),
+                  "name = \"fairlead\"\nbody = \"ship\"\nposition = [2.0, 0.0, 0.0]\n\n"
+                  "[[body]]\nname = \"ship\"\nposition = [68.0, 0.0, 0.0]\nmotion = \"trochoid\"\n"
+                  "period = 8.0\nramp_rate = 0.5\nrz_amplitudes = [2.0, 0.0]\n");
+  EXPECT_TRUE(SceneIsPlanar(ParseScene(on_body, path))) << on_body;
+  std::string tilted = on_body;
+  tilted.replace(tilted.find("rz_amplitudes"), 13, "rx_amplitudes");
+  EXPECT_FALSE(SceneIsPlanar(ParseScene(tilted, path)));
 }
 
 }  // namespace
