@@ -31,7 +31,6 @@ import argparse
 import csv
 import gzip
 import io
-import os
 import pathlib
 import re
 import subprocess

@@ -5,24 +5,13 @@ closed forms and MoorDyn). Checks the scene's reading ([[point]] and [[line]], t
 mass, buoyancy, added mass and drag), the system's statics and step, and the files it writes
 (lines/<name>/, points.csv); and a free body's files and quasi-static tools."""
 import argparse
-import csv
-import io
 import pathlib
 import re
 import subprocess
 import sys
 import tempfile
 
-
-def run(cablefilm, scene, out):
-    done = subprocess.run([cablefilm, "run", str(scene), "--no-film", "--out", str(out)],
-                          capture_output=True, text=True, timeout=600)
-    if done.returncode != 0:
-        raise SystemExit(f"FAIL: {scene.name}: exit {done.returncode}: {done.stderr[-400:]}")
-
-
-def table(path):
-    return list(csv.DictReader(io.StringIO(path.read_text())))
+from scene_runs import report, run, table
 
 
 def peak(folder):
@@ -192,10 +181,7 @@ def main():
         failures += moordyn_file(args, pathlib.Path(tmp))
         failures += default_accuracy(args, pathlib.Path(tmp))
         failures += body_tools(args, pathlib.Path(tmp))
-    for f in failures:
-        print("FAIL:", f)
-    print("FAIL" if failures else "ok")
-    return 1 if failures else 0
+    return report(failures)
 
 
 if __name__ == "__main__":

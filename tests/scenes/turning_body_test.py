@@ -15,14 +15,13 @@ angle at any time is known by hand). Checks that
 - the loads at the turning fairleads (which take their accelerations) are those of fairleads
   moved by tables of the same paths (same_paths_as_tables)."""
 import argparse
-import csv
-import io
 import math
 import pathlib
 import shutil
-import subprocess
 import sys
 import tempfile
+
+from scene_runs import report, run, table
 
 SCENE = "turning_platform"
 REST_YAW = 10.0  # the scene's orientation about y [deg]
@@ -163,17 +162,6 @@ def same_paths_as_tables(args, tmp, scene, pose):
     return []
 
 
-def run(cablefilm, scene, out):
-    done = subprocess.run([cablefilm, "run", str(scene), "--no-film", "--out", str(out)],
-                          capture_output=True, text=True, timeout=600)
-    if done.returncode != 0:
-        raise SystemExit(f"FAIL: {scene.name}: exit {done.returncode}: {done.stderr[-600:]}")
-
-
-def table(path):
-    return list(csv.DictReader(io.StringIO(path.read_text())))
-
-
 def variant(tmp, source, name, csv_text):
     """The scene with its table file replaced by `csv_text`."""
     (tmp / f"{name}.csv").write_text(csv_text)
@@ -265,10 +253,7 @@ def main():
             return (0.0, 0.0, 0.0), (splines[0](t), REST_YAW + splines[1](t), splines[2](t))
         failures += check_poses(tmp / "spline", spline_pose, "spline table")
         failures += same_paths_as_tables(args, tmp, troch, troch_pose)
-    for f in failures:
-        print("FAIL:", f)
-    print("FAIL" if failures else "ok")
-    return 1 if failures else 0
+    return report(failures)
 
 
 if __name__ == "__main__":

@@ -102,28 +102,43 @@ TEST(BodyFit, FewerOrCollinearPointsKeepTheRestTurn) {
   EXPECT_LT((one.r - r).norm(), kTol);
 }
 
-TEST(BodyFit, BoxesNowFollowThePointsOfABodyWithABox) {
-  // A scene view of one line whose end is a body's point; the box follows it, and a body
-  // without a box gets none.
+// A scene view of one line whose end is the point "fairlead" (at (11, 5, 7) in OneSnapshot),
+// the point of a body with a 2 m cube at local (1, 0, 0).
+SceneView OneLineScene() {
   SceneView scene;
   LineView l;
   l.arc_length = {0, 1};
   scene.lines.push_back(l);
   scene.points.push_back({"fairlead", 0, 1});
+  return scene;
+}
+
+BodyView CubeOnThePoint() {
   BodyView b;
-  b.name = "buoy";
   b.points = {0};
   b.local = {{1, 0, 0}};
   b.has_box = true;
   b.box = {2, 2, 2};
-  scene.bodies.push_back(b);
-  b.has_box = false;
-  scene.bodies.push_back(b);
+  return b;
+}
+
+LineSnapshot OneSnapshot() {
   LineSnapshot now;
   now.x = {0, 11};
   now.y = {0, 5};
   now.z = {0, 7};
-  const auto boxes = BodyBoxesNow(scene, {now});
+  return now;
+}
+
+TEST(BodyFit, BoxesNowFollowThePointsOfABodyWithABox) {
+  // The box follows the body's point, and a body without a box gets none.
+  SceneView scene = OneLineScene();
+  BodyView b = CubeOnThePoint();
+  b.name = "buoy";
+  scene.bodies.push_back(b);
+  b.has_box = false;
+  scene.bodies.push_back(b);
+  const auto boxes = BodyBoxesNow(scene, {OneSnapshot()});
   ASSERT_EQ(boxes.size(), 2u);
   ASSERT_EQ(boxes[0].size(), 12u);
   EXPECT_TRUE(boxes[1].empty());
@@ -138,23 +153,11 @@ TEST(BodyFit, BoxesNowFollowThePointsOfABodyWithABox) {
 // A driven body that turns (issue 20), with one point: too few for the fit, so the box takes
 // the body's angles at the snapshot's time from its motion.
 TEST(BodyFit, ABoxOfTooFewPointsTurnsWithItsDrivenAngles) {
-  SceneView scene;
-  LineView l;
-  l.arc_length = {0, 1};
-  scene.lines.push_back(l);
-  scene.points.push_back({"fairlead", 0, 1});
-  BodyView b;
-  b.points = {0};
-  b.local = {{1, 0, 0}};
-  b.has_box = true;
-  b.box = {2, 2, 2};
+  SceneView scene = OneLineScene();
+  BodyView b = CubeOnThePoint();
   b.angles_at = [](double t) { return std::array<double, 3>{0.0, 0.25 * t, 0.0}; };  // [rad]
   scene.bodies.push_back(b);
-  LineSnapshot now;
-  now.x = {0, 11};
-  now.y = {0, 5};
-  now.z = {0, 7};
-  const auto boxes = BodyBoxesNow(scene, {now}, 2.0);  // at t = 2 s: a yaw of 0.5 rad
+  const auto boxes = BodyBoxesNow(scene, {OneSnapshot()}, 2.0);  // at t = 2 s: a yaw of 0.5 rad
   ASSERT_EQ(boxes[0].size(), 12u);
   // Its corners at r + R p, R the yaw of 0.5 rad, r where the point puts it: every corner of
   // the box (+-1, +-1, +-1) is one of the edges' ends.
