@@ -17,6 +17,9 @@ checks, waiting on the page's body dataset (frames, lastFrame, t, states) rather
   4c. waves: on scenes/grounded_mooring.toml (waves, an end that follows them: every sea
      control shown) the wave heading's dial reaches /state and the waves and the current turn;
      a refused wave heading shows the server's error; the layout checks of 7 hold
+  4d. system: on scenes/spread_mooring.toml (four lines, a vessel) the vessel's offsets shown
+     and the controls it has not hidden; the offset reaches /state and moves the vessel; a
+     refused offset shows the server's error; the layout checks of 7 hold
   5. keyboard: Space pauses and resumes, R restarts
   6. record: a film is recorded and its download link works
   7. layout: at 1400x900 and 1000x700 nothing overlaps or overflows sideways, and at 1000x700
@@ -32,6 +35,7 @@ Prints one line per check and `N passed, M failed`; exits 1 on any failure.
 """
 import argparse
 import base64
+import contextlib
 import json
 import os
 import queue
@@ -368,18 +372,36 @@ class BrowserTest:
         return 'dial 270 -> /state; -45 shown as 315°; refused: "%s"' % message
 
     # 4c
-    def check_waves(self):
-        """The fullest panel: scenes/grounded_mooring.toml (waves, an end that follows them):
-        the wave heading's dial reaches /state and turns the waves; a refused heading says why;
-        every control fits at 1000x700 and 1400x900."""
-        scene = os.path.join(os.path.dirname(os.path.abspath(self.args.scene)), 'grounded_mooring.toml')
-        server = Server(self.args, scene, os.path.join(self.args.out_dir, 'waves'), 'server-waves.log')
+    @contextlib.contextmanager
+    def on_scene(self, name, label):
+        """The page of another shipped scene's server (scenes/`name`, its files and log under
+        `label`) at 1400x900 for the checks inside the `with`; then the main server's page."""
+        scene = os.path.join(os.path.dirname(os.path.abspath(self.args.scene)), name)
+        server = Server(self.args, scene, os.path.join(self.args.out_dir, label),
+                        'server-%s.log' % label)
         origin = self.origin
         try:
             self.origin = server.origin
             self.driver.set_window_size(1400, 900)
             self.driver.get(server.origin + '/')
             self.wait(lambda: self.num('frames') >= 1 and self.ds('transport') == 'websocket', 'the page')
+            yield server
+        finally:
+            self.origin = origin
+            self.driver.get('about:blank')
+            server.stop()
+            self.driver.set_window_size(1400, 900)
+            self.driver.get(self.origin + '/')
+            self.wait(lambda: self.num('frames') >= 1 and self.ds('transport') == 'websocket', 'the main page again')
+
+    def shown(self, id_):
+        return self.driver.find_element(By.ID, id_).is_displayed()
+
+    def check_waves(self):
+        """The fullest panel: scenes/grounded_mooring.toml (waves, an end that follows them):
+        the wave heading's dial reaches /state and turns the waves; a refused heading says why;
+        every control fits at 1000x700 and 1400x900."""
+        with self.on_scene('grounded_mooring.toml', 'waves'):
             for id_ in ('current_heading', 'wave_height', 'wave_period', 'wave_heading'):
                 if not self.driver.find_element(By.ID, id_).is_displayed():
                     raise Failure('the %s control is hidden on a scene with waves' % id_)
@@ -406,13 +428,46 @@ class BrowserTest:
                 raise Failure('a refused wave heading changed it')
             self.screenshot('04c-waves')
             return 'wave heading 30 -> /state and turned; refused: "%s"; %s' % (message, layout)
-        finally:
-            self.origin = origin
-            self.driver.get('about:blank')
-            server.stop()
-            self.driver.set_window_size(1400, 900)
-            self.driver.get(self.origin + '/')
-            self.wait(lambda: self.num('frames') >= 1 and self.ds('transport') == 'websocket', 'the main page again')
+
+    # 4d
+    def check_system(self):
+        """A system (scenes/spread_mooring.toml: four lines, the vessel's fairleads in eq.
+        (3)'s orbit, no free body): the vessel's offsets shown, an end's amplitude and period,
+        the bodies' force and the waves' controls hidden; the offset slider reaches /state and
+        the vessel moves there; a refused offset shows the server's error and changes nothing;
+        the layout checks of 7 hold."""
+        with self.on_scene('spread_mooring.toml', 'system'):
+            s = self.state()
+            names = [line['name'] for line in s.get('lines', [])]
+            if not s.get('system') or names != ['leg1_lower', 'leg1_upper', 'leg2', 'leg3']:
+                raise Failure('/state: system %r, lines %r' % (s.get('system'), names))
+            for id_ in ('offset_x', 'offset_z'):
+                if not self.shown(id_):
+                    raise Failure('the %s control is hidden on a system with a vessel' % id_)
+            for id_ in ('amplitude', 'period', 'force_x', 'force_z', 'wave_height', 'wave_heading'):
+                if self.shown(id_):
+                    raise Failure('the %s control is shown on a system without it' % id_)
+            if self.text('sea-title').lower() != 'vessel and current':  # shown in capitals
+                raise Failure('the panel is titled %r' % self.text('sea-title'))
+            self.driver.execute_script(
+                'const e = document.getElementById("offset_x"); e.value = arguments[0];'
+                'e.dispatchEvent(new Event("change", {bubbles: true}));', -6)
+            self.wait(lambda: self.state()['offset_x'] == -6, '/state offset_x = -6')
+            self.wait(lambda: self.text('offset_x-out') == '-6.0 m', 'the page to show -6.0 m')
+            # The offset ramps over 5 s of simulated time (at most 2 m/s), at 5x real time.
+            self.driver.execute_script('window.cablefilm.control({speed: 5})')
+            self.wait(lambda: self.state()['offset_x_now'] == -6, 'the vessel at -6 m',
+                      timeout=max(self.timeout, 60))
+            layout = self._layout('04d-system-layout')
+            limit = s['limits']['offset'][1]
+            self.driver.execute_script('window.cablefilm.control({offset_x: arguments[0]})', limit + 1)
+            self.wait(lambda: 'offset_x' in self.text('message'), 'the error about the offset')
+            message = self.text('message')
+            if self.state()['offset_x'] != -6:
+                raise Failure('a refused offset changed it')
+            self.screenshot('04d-system')
+            return 'lines %s; offset -6 m -> /state and the vessel; refused: "%s"; %s' % (
+                ', '.join(names), message, layout)
 
     # 5
     def check_keyboard(self):
@@ -683,6 +738,7 @@ def main():
         checks = [('load', test.check_load), ('frames change', test.check_frames_change),
                   ('pause', test.check_pause), ('amplitude', test.check_amplitude),
                   ('heading', test.check_heading), ('waves', test.check_waves),
+                  ('system', test.check_system),
                   ('keyboard', test.check_keyboard), ('record', test.check_record), ('layout', test.check_layout),
                   ('ends and range', test.check_ends_and_range), ('errors', test.check_errors),
                   ('token', test.check_token),

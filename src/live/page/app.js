@@ -142,7 +142,7 @@ function applyState(s) {
     $('end-label').textContent = top[1] ? top[1].name : '';
     $('t-end').textContent = top[1] ? kN(top[1].max) : '';
     $('end-label').title = 'the second most loaded line now';
-    $('t-start-sub').textContent = 'most loaded line now';
+    $('t-start-sub').textContent = 'most loaded now';
     $('t-end-sub').textContent = top[1] ? 'next most loaded' : '';
     const line = top[0] ? ' of ' + top[0].name : '';
     $('t-max-link').textContent = T.link_max == null ? '' : 'link ' + T.link_max + line;
