@@ -88,8 +88,10 @@ Vec EndMotion::Acceleration(double t) const { return At(t, 2); }
 
 Vec EndMotion::At(double t, int order) const {
   if (!angles_) return Evaluate(t, order);
-  return Evaluate(t, order) + TurnPart(angles_->Evaluate(t, 0), angles_->Evaluate(t, 1),
-                                       angles_->Evaluate(t, 2), order);
+  // The angles' rates only as far as the order asked needs them (R p needs none).
+  const Vec rate = order >= 1 ? angles_->Evaluate(t, 1) : Vec::Zero();
+  const Vec rate2 = order >= 2 ? angles_->Evaluate(t, 2) : Vec::Zero();
+  return Evaluate(t, order) + TurnPart(angles_->Evaluate(t, 0), rate, rate2, order);
 }
 
 Vec EndMotion::TurnPart(const Vec& theta, const Vec& rate, const Vec& rate2, int order) const {
@@ -137,9 +139,10 @@ Vec EndMotion::EvaluateTrochoid(double t, int order) const {
 Vec EndMotion::Evaluate(double t, int order, const SmoothSchedule& scale,
                         const SmoothSchedule& clock) const {
   if (!angles_) return Translation(t, order, scale, clock);
+  const Vec rate = order >= 1 ? angles_->Evaluate(t, 1, scale, clock) : Vec::Zero();
+  const Vec rate2 = order >= 2 ? angles_->Evaluate(t, 2, scale, clock) : Vec::Zero();
   return Translation(t, order, scale, clock) +
-         TurnPart(angles_->Evaluate(t, 0, scale, clock), angles_->Evaluate(t, 1, scale, clock),
-                  angles_->Evaluate(t, 2, scale, clock), order);
+         TurnPart(angles_->Evaluate(t, 0, scale, clock), rate, rate2, order);
 }
 
 Vec EndMotion::Translation(double t, int order, const SmoothSchedule& scale,
