@@ -64,17 +64,6 @@ void UpdateWater(const Model& m, const Inputs& in, double t, Water* water) {
   wave.amplitude = 0.5 * wave.spec.height;
 }
 
-Vec CurrentAt(const Model& m, const Water& w, double y) {
-  const CurrentProfile& p = m.env.current_profile;
-  const double c = w.current * w.current_scale;
-  return (p.empty() ? c : c + p.At(y, w.current_scale)) * w.current_direction;
-}
-
-Vec CurrentSlope(const Model& m, const Water& w, double y) {
-  const CurrentProfile& p = m.env.current_profile;
-  return (p.empty() ? 0.0 : p.Slope(y, w.current_scale)) * w.current_direction;
-}
-
 bool HasCurrent(const Model& m, const Water& w) {
   const CurrentProfile& p = m.env.current_profile;
   const double c = w.current * w.current_scale;

@@ -59,8 +59,16 @@ Water SceneWater(const Model& m, double current_scale = 1.0);
 void UpdateWater(const Model& m, const Inputs& in, double t, Water* water);
 
 // The current's velocity at elevation y [m/s] and its y-derivative [1/s].
-Vec CurrentAt(const Model& m, const Water& w, double y);
-Vec CurrentSlope(const Model& m, const Water& w, double y);
+// Inline, as CurrentProfile's.
+inline Vec CurrentAt(const Model& m, const Water& w, double y) {
+  const CurrentProfile& p = m.env.current_profile;
+  const double c = w.current * w.current_scale;
+  return (p.empty() ? c : c + p.At(y, w.current_scale)) * w.current_direction;
+}
+inline Vec CurrentSlope(const Model& m, const Water& w, double y) {
+  const CurrentProfile& p = m.env.current_profile;
+  return (p.empty() ? 0.0 : p.Slope(y, w.current_scale)) * w.current_direction;
+}
 bool HasCurrent(const Model& m, const Water& w);    // anywhere non-zero
 double MaxCurrent(const Model& m, const Water& w);  // the largest |c(y)| over all y [m/s]
 

@@ -8,33 +8,6 @@
 #include "core/error.h"
 
 namespace cablefilm {
-namespace {
-
-// The piece [y_i, y_{i+1}) holding `elevation`: i in 0..n-2, or -1 below the first point and
-// n-1 at or above the last.
-int Piece(const std::vector<double>& y, double elevation) {
-  const auto it = std::upper_bound(y.begin(), y.end(), elevation);
-  return static_cast<int>(it - y.begin()) - 1;
-}
-
-}  // namespace
-
-double CurrentProfile::At(double elevation, double scale) const {
-  const int n = static_cast<int>(y.size());
-  const int i = Piece(y, elevation);
-  if (i < 0) return speed.front() * scale;
-  if (i >= n - 1) return speed.back() * scale;
-  const double f = (elevation - y[i]) / (y[i + 1] - y[i]);
-  const double a = speed[i] * scale, b = speed[i + 1] * scale;
-  return a + f * (b - a);
-}
-
-double CurrentProfile::Slope(double elevation, double scale) const {
-  const int n = static_cast<int>(y.size());
-  const int i = Piece(y, elevation);
-  if (i < 0 || i >= n - 1) return 0.0;
-  return (speed[i + 1] * scale - speed[i] * scale) / (y[i + 1] - y[i]);
-}
 
 Model MakeModel(const std::vector<SectionSpec>& sections, const std::vector<PrismSpec>& prisms,
                 const EnvironmentSpec& env, EndMotion start, EndMotion end, LinkLaw law) {

@@ -45,11 +45,11 @@ void SyncCoupled(const SystemModel& sys, SystemData& sd, bool motion) {
     }
 }
 
-// Adds T_a^T S T_b to the dense system's block of the unknowns of ends a and b.
-void AddCoupledBlock(SystemData& sd, const EndCoupling& ca, const Map36& Ta,
+// Adds T_a^T S T_b to `schur`'s block of the unknowns of ends a and b.
+void AddCoupledBlock(Eigen::MatrixXd& schur, const EndCoupling& ca, const Map36& Ta,
                      const EndCoupling& cb, const Map36& Tb, const Mat& S) {
   const Mat6 block = Ta.transpose() * S * Tb;
-  sd.schur.block(ca.offset, cb.offset, ca.size, cb.size) += block.topLeftCorner(ca.size, cb.size);
+  schur.block(ca.offset, cb.offset, ca.size, cb.size) += block.topLeftCorner(ca.size, cb.size);
 }
 
 void AddCoupledRhs(SystemData& sd, const EndCoupling& c, const Map36& T, const Vec& r) {
@@ -66,8 +66,9 @@ Vec CoupledCorrection(const SystemData& sd, const EndCoupling& c, const Map36& T
 
 // Line i's share of the dense system: its interior eliminated (A_II^-1 for the right-hand side
 // and for the columns coupling it to its coupled ends), the Schur complement rows of its
-// coupled ends added through their maps T. False when a pivot is singular. Without `matrix`
-// the right-hand side alone, on the factors and columns of the last call with it.
+// coupled ends (into sd.line_schur[i]) added through their maps T. False when a pivot is
+// singular. Without `matrix` the right-hand side alone, on the factors, columns and share of
+// the last call with it.
 bool EliminateInterior(SystemData& sd, int i, bool matrix) {
   BlockTridiagonal& A = sd.lines[i].scratch.system;
   std::vector<Mat>& zs = sd.start_columns[i];
@@ -78,6 +79,8 @@ bool EliminateInterior(SystemData& sd, int i, bool matrix) {
   const bool P = cP.size > 0, Q = cQ.size > 0;
   const int f = P ? 1 : 0, l = Q ? n - 2 : n - 1;  // the interior rows
   const bool interior = f <= l;
+  Eigen::MatrixXd& S = sd.line_schur[i];
+  if (matrix) S.setZero();
   if (interior) {
     if (matrix && !A.Factor(f, l)) return false;
     A.SolveFactored(A.rhs);
@@ -95,16 +98,16 @@ bool EliminateInterior(SystemData& sd, int i, bool matrix) {
   if (P) {  // row 0
     AddCoupledRhs(sd, cP, TP, interior ? Vec(A.rhs[0] - A.upper[0] * A.rhs[f]) : A.rhs[0]);
     if (matrix) {
-      AddCoupledBlock(sd, cP, TP, cP, TP, interior ? Mat(A.diag[0] - A.upper[0] * zs[f]) : A.diag[0]);
-      if (Q) AddCoupledBlock(sd, cP, TP, cQ, TQ, interior ? Mat(-A.upper[0] * ze[f]) : A.upper[0]);
+      AddCoupledBlock(S, cP, TP, cP, TP, interior ? Mat(A.diag[0] - A.upper[0] * zs[f]) : A.diag[0]);
+      if (Q) AddCoupledBlock(S, cP, TP, cQ, TQ, interior ? Mat(-A.upper[0] * ze[f]) : A.upper[0]);
     }
   }
   if (Q) {  // row n - 1
     const int e = n - 1;
     AddCoupledRhs(sd, cQ, TQ, interior ? Vec(A.rhs[e] - A.lower[e] * A.rhs[l]) : A.rhs[e]);
     if (matrix) {
-      AddCoupledBlock(sd, cQ, TQ, cQ, TQ, interior ? Mat(A.diag[e] - A.lower[e] * ze[l]) : A.diag[e]);
-      if (P) AddCoupledBlock(sd, cQ, TQ, cP, TP, interior ? Mat(-A.lower[e] * zs[l]) : A.lower[e]);
+      AddCoupledBlock(S, cQ, TQ, cQ, TQ, interior ? Mat(A.diag[e] - A.lower[e] * ze[l]) : A.diag[e]);
+      if (P) AddCoupledBlock(S, cQ, TQ, cP, TP, interior ? Mat(-A.lower[e] * zs[l]) : A.lower[e]);
     }
   }
   return true;
@@ -154,7 +157,7 @@ void AssembleBody(const SystemModel& sys, SystemData& sd, int k, const Generaliz
   const Mat6 M = BodyMassMatrix(body, b.tq);
   const Vec6 Q = OwnLoad(sys, body, b.tq);
   sd.schur_rhs.segment<6>(offset) += Q + BodyDampingLoad(body, b.tv) - M * b.ta;
-  if (!matrix) return;
+  if (!matrix) return;  // its rows in sd.body_schur stay
   Mat6 K = ka * M;
   K.diagonal() += kv * (body.linear_damping +
                         2.0 * body.quadratic_damping.cwiseProduct(b.tv.cwiseAbs()));
@@ -164,31 +167,38 @@ void AssembleBody(const SystemModel& sys, SystemData& sd, int k, const Generaliz
     d[col] += step;
     K.col(col) -= (OwnLoad(sys, body, d) - Q) / step;
   }
-  sd.schur.block<6, 6>(offset, offset) += K;
+  sd.body_schur.block<6, 6>(offset, offset) += K;
 }
 
 // Solves Newton's system of every line and free body, coupled at the shared stations and the
 // bodies, into each line's system.rhs and the bodies' corrections (sd.schur_x). False when a
-// pivot or the dense system is singular. Without `matrix` (a simplified Newton iteration) on
-// the factors of the last call with it.
+// pivot or the dense system is singular. A line whose `fresh` is 0 (a simplified Newton
+// iteration) solves on the factors and share of the dense system of its last fresh one; the
+// bodies' rows and the dense system's factors are made anew when any line's are.
 bool SolveCoupled(const SystemModel& sys, SystemData& sd, const GeneralizedAlpha& c, double h,
-                  bool matrix) {
+                  const std::vector<char>& fresh) {
+  const int nl = static_cast<int>(sd.lines.size());
   if (sd.schur.rows() == 0) {
-    for (Data& d : sd.lines) {
-      BlockTridiagonal& A = d.scratch.system;
-      if (!matrix) A.SolveFactored(A.rhs);
+    for (int i = 0; i < nl; ++i) {
+      BlockTridiagonal& A = sd.lines[i].scratch.system;
+      if (!fresh[i]) A.SolveFactored(A.rhs);
       else if (!A.Solve()) return false;
     }
     return true;
   }
-  if (matrix) sd.schur.setZero();
+  const bool matrix = std::find(fresh.begin(), fresh.end(), 1) != fresh.end();
   sd.schur_rhs.setZero();
-  for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i)
-    if (!EliminateInterior(sd, i, matrix)) return false;
+  for (int i = 0; i < nl; ++i)
+    if (!EliminateInterior(sd, i, fresh[i])) return false;
   const int body0 = kDim * sys.shared_count();
+  if (matrix) sd.body_schur.setZero();
   for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k)
     AssembleBody(sys, sd, k, c, h, body0 + 6 * k, matrix);
-  if (matrix) sd.schur_lu.compute(sd.schur);
+  if (matrix) {
+    sd.schur = sd.body_schur;
+    for (int i = 0; i < nl; ++i) sd.schur += sd.line_schur[i];
+    sd.schur_lu.compute(sd.schur);
+  }
   sd.schur_x.noalias() = sd.schur_lu.solve(sd.schur_rhs);
   if (!sd.schur_x.allFinite()) return false;
   for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i) BackSubstitute(sd, i);
@@ -283,32 +293,40 @@ struct SystemStepper {
     const int body0 = kDim * sys.shared_count();
     // The corrections measured against their tolerances (a line's, a body's): converged at 1.
     NewtonConvergence newton(1.0);
-    bool keep = true;
-    for (const Model& m : sys.lines) keep = keep && KeepsNewtonMatrix(m);
-    bool fresh = true;  // this iteration's matrix is assembled anew (else the last one's factors)
+    // Per line: whether this iteration's matrix is assembled anew (else its last one's factors
+    // and share of the dense system), and its last correction over its tolerance. Each line
+    // keeps its own: a touchdown or a snap on one leg made every leg's matrix anew (a quarter
+    // of a spread mooring's fresh matrices).
+    std::vector<char>& fresh = sd.fresh;
+    std::vector<double>& last = sd.last_correction;
+    std::fill(fresh.begin(), fresh.end(), 1);
+    std::fill(last.begin(), last.end(), 0.0);
+    auto all_fresh = [&] { return std::find(fresh.begin(), fresh.end(), 0) == fresh.end(); };
     for (int it = 1; it <= kMaxNewtonIterations; ++it) {
-      bool holds = true;
       for (int i = 0; i < lines(); ++i)
-        holds = AssembleNewton(sys.lines[i], sd.lines[i], c, h, fresh) && holds;
-      if (!fresh && !holds) {  // the kept matrix no longer holds: a new one at this iterate
-        fresh = true;
-        --it;  // not an iteration: none was applied
-        continue;
-      }
+        if (!AssembleNewton(sys.lines[i], sd.lines[i], c, h, fresh[i])) {
+          fresh[i] = 1;  // its kept matrix no longer holds (a link slack or taut): a new one
+          AssembleNewton(sys.lines[i], sd.lines[i], c, h, true);
+        }
       if (!SolveCoupled(sys, sd, c, h, fresh)) return false;
-      if (!fresh && !(CorrectionSize() <= newton.last())) {  // the kept matrix does not
-        fresh = true;                                         // contract here: a new one at
-        --it;                                                 // this iterate (and none was
-        continue;                                             // applied)
+      if (!all_fresh() && !(CorrectionSize() <= newton.last())) {  // the kept matrices do not
+        std::fill(fresh.begin(), fresh.end(), 1);                   // contract here: new ones
+        --it;                                                       // at this iterate (and
+        continue;                                                   // none was applied)
       }
+      const bool was_fresh = all_fresh();
       double correction = 0;  // the largest, over its tolerance
-      bool contact_changed = false;
       for (int i = 0; i < lines(); ++i) {
         bool changed = false;
         const double dx = ApplyCorrection(sys.lines[i], sd.lines[i], &changed);
-        contact_changed = contact_changed || changed;
         if (!std::isfinite(dx)) return false;
-        correction = std::max(correction, dx / sd.lines[i].scratch.newton_tolerance);
+        const double size = dx / sd.lines[i].scratch.newton_tolerance;
+        correction = std::max(correction, size);
+        // A new matrix next unless its corrections contract (or are within its tolerance)
+        // and no station crossed the seabed's level.
+        const bool contracts = size <= 1 || size <= kFrozenJacobianRate * last[i] || last[i] == 0;
+        fresh[i] = !KeepsNewtonMatrix(sys.lines[i]) || changed || !contracts;
+        last[i] = size;
       }
       for (int k = 0; k < static_cast<int>(sd.bodies.size()); ++k) {
         BodyMotion& b = sd.bodies[k];
@@ -324,8 +342,11 @@ struct SystemStepper {
         for (BodyMotion& b : sd.bodies) BodyKinematics(b, c, h);
         return true;
       }
-      if (fresh && newton.Stalled()) return false;
-      fresh = !keep || contact_changed || !(newton.rate() <= kFrozenJacobianRate);
+      if (was_fresh && newton.Stalled()) return false;
+      // The whole system's corrections not contracting (a body's, say): every matrix anew.
+      if (newton.Stalled() || !(newton.rate() <= kFrozenJacobianRate))
+        if (std::find(fresh.begin(), fresh.end(), 1) == fresh.end())
+          std::fill(fresh.begin(), fresh.end(), 1);
     }
     return false;
   }
@@ -391,7 +412,10 @@ SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOp
     sd.bodies.push_back(m);
   }
   const int ns = kDim * sys.shared_count() + 6 * static_cast<int>(sys.free_bodies.size());
-  sd.schur = Eigen::MatrixXd::Zero(ns, ns);
+  sd.schur = sd.body_schur = Eigen::MatrixXd::Zero(ns, ns);
+  sd.line_schur.assign(nl, Eigen::MatrixXd::Zero(ns, ns));
+  sd.fresh.assign(nl, 1);
+  sd.last_correction.assign(nl, 0.0);
   sd.schur_rhs = sd.schur_x = Eigen::VectorXd::Zero(ns);
   sd.schur_lu = Eigen::PartialPivLU<Eigen::MatrixXd>(ns);
   SyncCoupled(sys, sd, false);  // the maps T at the rest poses

@@ -53,6 +53,12 @@ struct SystemData {
   // Scratch of the coupled solve, sized once.
   std::vector<std::vector<Mat>> start_columns, end_columns;  // per line: A_II^-1 A_IB
   Eigen::MatrixXd schur;      // the shared stations' system (kDim per shared point)
+  // Each line's share of `schur` and the free bodies' own rows, as last assembled: a line whose
+  // kept matrix still serves keeps its share while another's is made anew.
+  std::vector<Eigen::MatrixXd> line_schur;
+  Eigen::MatrixXd body_schur;
+  std::vector<char> fresh;              // per line: its Newton matrix made anew this iteration
+  std::vector<double> last_correction;  // per line: its last correction over its tolerance
   Eigen::VectorXd schur_rhs, schur_x;
   Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu;
 };
