@@ -618,7 +618,8 @@ State SolveEquilibrium(const Model& m, const Points& guess,
 }
 
 
-State SolveInextensibleEquilibrium(const Model& m, EquilibriumReport* report) {
+State SolveInextensibleEquilibrium(const Model& m, EquilibriumReport* report,
+                                  const CancelFlag* cancel) {
   if (m.ends.start.prescribed() && m.ends.end.prescribed()) {
     const double chord = (m.ends.end.Position(0) - m.ends.start.Position(0)).norm();
     if (chord >= m.line.total_length()) {
@@ -635,10 +636,14 @@ State SolveInextensibleEquilibrium(const Model& m, EquilibriumReport* report) {
   Model stiff = m;
   stiff.line.law = LinkLaw::kElastic;
   stiff.line.axial_stiffness.setConstant(1e6 * load);
+  // Both solves poll the run's cancel flag (a fuzzed scene's stop at 0.3 s could not reach them:
+  // a seed ran 11 s under the sanitizers).
+  EquilibriumOptions options;
+  options.cancel = cancel;
   EquilibriumReport first;
-  const State soft = SolveEquilibrium(stiff, &first);
+  const State soft = SolveEquilibrium(stiff, &first, options);
   stiff.line.axial_stiffness *= 2.0;
-  State hard = SolveEquilibrium(stiff, soft.x, report);
+  State hard = SolveEquilibrium(stiff, soft.x, report, options);
   if (report) report->iterations += first.iterations;
   hard.x = 2.0 * hard.x - soft.x;  // the limit EA -> infinity, error O(1/EA^2)
   ConstraintSolver solver(m);

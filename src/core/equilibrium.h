@@ -60,6 +60,7 @@ State SolveEquilibrium(const Model& m, EquilibriumReport* report = nullptr,
 // Static equilibrium of the inextensible cable: the elastic equilibrium with a stiffness so
 // high that the stretch is negligible, extrapolated to infinite stiffness, projected exactly
 // onto the rest lengths. Throws Error if the ends are further apart than the cable is long.
-State SolveInextensibleEquilibrium(const Model& m, EquilibriumReport* report);
+State SolveInextensibleEquilibrium(const Model& m, EquilibriumReport* report,
+                                  const CancelFlag* cancel = nullptr);
 
 }  // namespace cablefilm

@@ -84,7 +84,7 @@ State MakeInitialState(const SceneDef& scene, const Model& m, EquilibriumReport*
   options.cancel = cancel;
   State s;
   if (scene.initial == InitialStateKind::kEquilibrium) {
-    s = m.line.law == LinkLaw::kInextensible ? SolveInextensibleEquilibrium(m, report)
+    s = m.line.law == LinkLaw::kInextensible ? SolveInextensibleEquilibrium(m, report, cancel)
                                              : SolveEquilibrium(m, report, options);
   } else {
     s.x = StraightChord(m);
