@@ -65,9 +65,24 @@ Vec6 GeneralizedLoad(const Vec6& pose, const Vec6& load) {
   return q;
 }
 
-Vec6 BodyDampingLoad(const BodySpec& body, const Vec6& rate) {
-  return -(body.linear_damping.cwiseProduct(rate) +
-           body.quadratic_damping.cwiseProduct(rate.cwiseAbs().cwiseProduct(rate)));
+namespace {
+// The water's velocity relative to the body per degree of freedom (no flow turns).
+Vec6 RelativeFlow(const Vec6& rate, const Vec& flow) {
+  Vec6 u = -rate;
+  u.head<3>() += flow;
+  return u;
+}
+}  // namespace
+
+Vec6 BodyDampingLoad(const BodySpec& body, const Vec6& rate, const Vec& flow) {
+  const Vec6 u = RelativeFlow(rate, flow);
+  return body.quadratic_damping.cwiseProduct(u.cwiseAbs().cwiseProduct(u)) -
+         body.linear_damping.cwiseProduct(rate);
+}
+
+Vec6 BodyDampingSlope(const BodySpec& body, const Vec6& rate, const Vec& flow) {
+  return -(body.linear_damping +
+           2.0 * body.quadratic_damping.cwiseProduct(RelativeFlow(rate, flow).cwiseAbs()));
 }
 
 Vec6 RestPose(const BodySpec& body) {

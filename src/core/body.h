@@ -50,7 +50,8 @@ struct BodySpec {
   Vec moment = Vec::Zero();                  // constant, about the reference point [N m]
   // A free body's motion in time: its moments of inertia about its centre of gravity, in its
   // axes [kg m^2]; added mass, linear and quadratic damping per degree of freedom (x, y, z:
-  // [kg], [N s/m], [N s^2/m^2]; the turns: [kg m^2], [N m s], [N m s^2]), on its own velocity.
+  // [kg], [N s/m], [N s^2/m^2]; the turns: [kg m^2], [N m s], [N m s^2]): the linear on its own
+  // velocity, the quadratic on the water's relative to it (BodyDampingLoad).
   Vec inertia = Vec::Zero();
   Vec6 added_mass = Vec6::Zero();
   Vec6 linear_damping = Vec6::Zero();
@@ -82,8 +83,14 @@ Vec6 GeneralizedLoad(const Vec6& pose, const Vec6& load);
 // axes. The velocity-squared (gyroscopic) terms are left out: slow turns.
 Mat6 BodyMassMatrix(const BodySpec& body, const Vec6& pose);
 
-// Its damping load at velocity `rate` (d(pose)/dt) [N, N m]: linear and quadratic.
-Vec6 BodyDampingLoad(const BodySpec& body, const Vec6& rate);
+// Its damping load at velocity `rate` (d(pose)/dt) in water moving at `flow` [m/s] at its
+// reference point (the current, the waves) [N, N m]: the linear part -B_1 v on its own
+// velocity (a radiation damping's); the quadratic part B_2 u abs(u) on the water's velocity
+// relative to it, u = flow - v in translation and -v in the turns (a drag, MoorDyn's
+// 0.5 rho CdA: a body held in a current is pushed along it).
+Vec6 BodyDampingLoad(const BodySpec& body, const Vec6& rate, const Vec& flow);
+// Its derivative with respect to `rate`: diagonal, -(B_1 + 2 B_2 abs(u)).
+Vec6 BodyDampingSlope(const BodySpec& body, const Vec6& rate, const Vec& flow);
 
 // The pose at rest: the reference point's rest position and the rest angles.
 Vec6 RestPose(const BodySpec& body);

@@ -64,6 +64,12 @@ void UpdateWater(const Model& m, const Inputs& in, double t, Water* water) {
   wave.amplitude = 0.5 * wave.spec.height;
 }
 
+Vec WaterVelocityAt(const Model& m, const Water& w, const Vec& position, double t) {
+  Vec u = CurrentAt(m, w, position[kVertical]);
+  if (m.has_waves()) u += KinematicsAt(w.wave, position, t).velocity;
+  return u;
+}
+
 bool HasCurrent(const Model& m, const Water& w) {
   const CurrentProfile& p = m.env.current_profile;
   const double c = w.current * w.current_scale;

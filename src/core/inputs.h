@@ -69,6 +69,9 @@ inline Vec CurrentSlope(const Model& m, const Water& w, double y) {
   const CurrentProfile& p = m.env.current_profile;
   return (p.empty() ? 0.0 : p.Slope(y, w.current_scale)) * w.current_direction;
 }
+// The water's velocity at `position` [m] and time t [s]: the current at its elevation and,
+// with waves, their orbital velocity there (held at the surface's above it) [m/s].
+Vec WaterVelocityAt(const Model& m, const Water& w, const Vec& position, double t);
 bool HasCurrent(const Model& m, const Water& w);    // anywhere non-zero
 double MaxCurrent(const Model& m, const Water& w);  // the largest |c(y)| over all y [m/s]
 

@@ -127,11 +127,20 @@ class HeldLines {
         continue;
       }
       const Vec6 pose = X.segment<6>(g.offset);
+      const BodySpec& body = sys_.bodies[g.body];
       R.segment<6>(g.offset) =
           LinesLoad(sys_, models_, states_, g.body, pose) +
-          BodyOwnLoads(sys_.bodies[g.body], pose, sys_.env.fluid_density, sys_.env.gravity);
+          BodyOwnLoads(body, pose, sys_.env.fluid_density, sys_.env.gravity) + CurrentDrag(body, pose);
     }
     return R;
+  }
+
+  // The current's drag on a body held at `pose` (its quadratic damping at rest in the flow,
+  // as in time) [N].
+  Vec6 CurrentDrag(const BodySpec& body, const Vec6& pose) const {
+    if (models_.empty()) return Vec6::Zero();
+    const Model& m = models_[0];
+    return BodyDampingLoad(body, Vec6::Zero(), CurrentAt(m, SceneWater(m), pose[kVertical]));
   }
 
   const std::vector<State>& states() const { return states_; }

@@ -156,11 +156,14 @@ void AssembleBody(const SystemModel& sys, SystemData& sd, int k, const Generaliz
   const double kv = c.gamma / (c.beta * h);
   const Mat6 M = BodyMassMatrix(body, b.tq);
   const Vec6 Q = OwnLoad(sys, body, b.tq);
-  sd.schur_rhs.segment<6>(offset) += Q + BodyDampingLoad(body, b.tv) - M * b.ta;
+  // The water at its reference point at the step's end (the lines' water of this step).
+  const Vec flow = sd.lines.empty() ? Vec::Zero()
+                                    : WaterVelocityAt(sys.lines[0], sd.lines[0].water,
+                                                      b.tq.head<3>(), sd.t + h);
+  sd.schur_rhs.segment<6>(offset) += Q + BodyDampingLoad(body, b.tv, flow) - M * b.ta;
   if (!matrix) return;  // its rows in sd.body_schur stay
   Mat6 K = ka * M;
-  K.diagonal() += kv * (body.linear_damping +
-                        2.0 * body.quadratic_damping.cwiseProduct(b.tv.cwiseAbs()));
+  K.diagonal() -= kv * BodyDampingSlope(body, b.tv, flow);
   for (int col = 0; col < 6; ++col) {  // -dQ/dq by forward differences (a cheap closed form)
     Vec6 d = b.tq;
     const double step = 1e-7 * (col < 3 ? std::max(1.0, b.tq.head<3>().norm()) : 1.0);
@@ -441,6 +444,9 @@ SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOp
     const BodySpec& body = sys.bodies[sys.free_bodies[k]];
     Mat6 M = BodyMassMatrix(body, b.q);
     Vec6 Q = OwnLoad(sys, body, b.q);
+    if (nl > 0)  // at rest in the water: the current's drag (the statics hold it)
+      Q += BodyDampingLoad(body, b.v,
+                           WaterVelocityAt(sys.lines[0], sd.lines[0].water, b.q.head<3>(), sd.t));
     for (int i = 0; i < nl; ++i)
       for (int e = 0; e < 2; ++e) {
         if (sd.couplings[i][e].body != k) continue;

@@ -31,16 +31,13 @@ void WriteFreeBody(const MoorDynBody& b, double rho, MoorDynTomlOut* out) {
            Array({rho * b.ca[0] * b.volume, rho * b.ca[2] * b.volume, rho * b.ca[1] * b.volume,
                   0.0, 0.0, 0.0}),
            "rho Ca V, kg");
-  // MoorDyn's drag 0.5 rho CdA |u| u on the body's velocity through the water: here on its
-  // own velocity (the current does not load a body).
+  // MoorDyn's drag 0.5 rho CdA |u_k| u_k per axis on the water's velocity relative to the
+  // body: cablefilm's quadratic damping is that law.
   const double h = 0.5 * rho;
   out->Key("quadratic_damping",
            Array({h * b.cda[0], h * b.cda[2], h * b.cda[1], h * b.cda[3], h * b.cda[5],
                   h * b.cda[4]}),
            "0.5 rho CdA");
-  if (b.cda[0] != 0 || b.cda[1] != 0 || b.cda[2] != 0)
-    out->Warn(b.line, "BODIES row " + std::to_string(b.id) +
-                          ": CdA acts on the body's own velocity, not through the current");
 }
 
 }  // namespace
