@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "run/coarse_guess.h"
 #include "scene/scene_limits.h"
 #include "scene/text_escape.h"
 
@@ -84,8 +85,16 @@ State MakeInitialState(const SceneDef& scene, const Model& m, EquilibriumReport*
   options.cancel = cancel;
   State s;
   if (scene.initial == InitialStateKind::kEquilibrium) {
-    s = m.line.law == LinkLaw::kInextensible ? SolveInextensibleEquilibrium(m, report, cancel)
-                                             : SolveEquilibrium(m, report, options);
+    if (m.line.law == LinkLaw::kInextensible) {
+      s = SolveInextensibleEquilibrium(m, report, cancel);
+    } else if (const std::optional<Points> guess = CoarseEquilibriumGuess(scene, m, cancel)) {
+      // Near the answer, in the full current: Newton from it directly (the continuation from
+      // still water only if that fails).
+      options.warm_start = true;
+      s = SolveEquilibrium(m, *guess, report, options);
+    } else {
+      s = SolveEquilibrium(m, report, options);
+    }
   } else {
     s.x = StraightChord(m);
     s.v = Points::Zero(kDim, m.stations());
