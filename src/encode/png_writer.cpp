@@ -41,6 +41,7 @@ bool WritePngStream(std::FILE* file, const Image& image, const PngOptions& optio
   }
   png_init_io(png, file);
   png_set_compression_level(png, options.compression_level);
+  png_set_compression_mem_level(png, options.memory_level);
   if (options.up_filter_only) png_set_filter(png, 0, PNG_FILTER_UP);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
                static_cast<png_uint_32>(image.height), 8,

@@ -13,6 +13,7 @@ struct PngOptions {
   // Only the "up" row filter instead of libpng's trial of all five per row: on a flat figure
   // (max_tension.png, level 4) as small a file in 40 % of the time.
   bool up_filter_only = false;
+  int memory_level = 8;  // zlib's memLevel 1..9 (its hash table and block size), 8 its default
 };
 
 // Writes `image` to `path` (a temporary file renamed on success). Throws Error with the path.
