@@ -249,7 +249,7 @@ Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& ou
 
   const std::string series_path = out_dir + "/timeseries" + suffix + ".csv";
   const std::string partial_path = out_dir + "/timeseries" + suffix + ".partial.csv";
-  TimeseriesWriter series(series_path, m, run.inputs);
+  TimeseriesWriter series(series_path, m, run.inputs, &run.row_ends);
   const std::string nc_path = out_dir + "/results" + suffix + ".nc";
   const std::string nc_partial_path = out_dir + "/results" + suffix + ".partial.nc";
   const std::unique_ptr<LineResultsNc> links =

@@ -63,14 +63,15 @@ const char kTimeseriesHeader[] =
 
 const char kUtilisationColumn[] = ",utilisation_max";
 
-void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Inputs& in,
-                        EndLoads& ends, bool utilisation) {
+namespace {
+
+// A row whose end loads are known.
+void WriteRow(std::FILE* f, const Model& m, const Data& d, const EndLoads& ends, bool utilisation) {
   const State& s = d.state;
   const Eigen::VectorXd& tension = d.tension();
   Eigen::Index link_max = 0;
   const double t_max = tension.maxCoeff(&link_max);
   const int end = m.line.links;
-  ends.Compute(m, d, in);
   const Vec& f0 = ends.at(0);
   const Vec& f1 = ends.at(1);
   // "%.10g,%.12g,%.12g,%.12g,%.10g,%.10g,%.10g,%d,%.10g x 6,%.8g,%.8g[,%.10g]"
@@ -86,15 +87,28 @@ void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Input
   line.Char('\n');
 }
 
-TimeseriesWriter::TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in)
-    : file_(path), m_(m), in_(in), ends_(m), utilisation_(m.line.has_breaking_load()) {
+}  // namespace
+
+void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Inputs& in,
+                        EndLoads& ends, bool utilisation) {
+  ends.Compute(m, d, in);
+  WriteRow(f, m, d, ends, utilisation);
+}
+
+TimeseriesWriter::TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in,
+                                   const EndLoads* row_ends)
+    : file_(path), m_(m), in_(in), ends_(m), row_ends_(row_ends),
+      utilisation_(m.line.has_breaking_load()) {
   std::string header = kTimeseriesHeader;
   if (utilisation_) header.insert(header.size() - 1, kUtilisationColumn);
   std::fputs(header.c_str(), file_.stream());
 }
 
 bool TimeseriesWriter::Row(const Data& d) {
-  WriteTimeseriesRow(file_.stream(), m_, d, in_, ends_, utilisation_);
+  if (row_ends_)
+    WriteRow(file_.stream(), m_, d, *row_ends_, utilisation_);
+  else
+    WriteTimeseriesRow(file_.stream(), m_, d, in_, ends_, utilisation_);
   return true;
 }
 

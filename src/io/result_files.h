@@ -35,10 +35,13 @@ void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Input
 
 // timeseries.csv: t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max, then the
 // end loads fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end, and
-// utilisation_max when the line has a breaking load; a run's rows as they come.
+// utilisation_max when the line has a breaking load; a run's rows as they come. With
+// `row_ends`, each row's end loads as a sink before this one computed them (Run::row_ends):
+// they cost as much as a tenth of the simulation, and are not computed twice.
 class TimeseriesWriter : public RowSink {
  public:
-  TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in);
+  TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in,
+                   const EndLoads* row_ends = nullptr);
   bool Row(const Data& d) override;
   void Commit();                                  // the complete file, under its name
   void CommitPartial(const std::string& path);    // an incomplete run, under another name
@@ -47,7 +50,8 @@ class TimeseriesWriter : public RowSink {
   AtomicFile file_;
   const Model& m_;
   const Inputs& in_;
-  EndLoads ends_;
+  EndLoads ends_;                       // computed here, without row_ends
+  const EndLoads* row_ends_ = nullptr;  // else these
   bool utilisation_ = false;  // the utilisation_max column
 };
 

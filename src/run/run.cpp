@@ -11,20 +11,20 @@ namespace {
 // The run's own record of every row.
 class RecordSink : public RowSink {
  public:
-  explicit RecordSink(Run& run) : run_(run), ends_(run.model) {}
+  explicit RecordSink(Run& run) : run_(run) { run_.row_ends = EndLoads(run.model); }
   bool Row(const Data& d) override {
     const Eigen::VectorXd& T = d.tension();
     run_.extent.Add(d.state, T);
     run_.row_max.Append(d.state.t, T.maxCoeff());
     run_.summary.AddRow(d.state.t, T, run_.model.line.breaking_load);
-    ends_.Compute(run_.model, d, run_.inputs);
-    run_.summary.AddEndLoads(d.state.t, ends_.at(0), ends_.at(1));
+    EndLoads& ends = run_.row_ends;
+    ends.Compute(run_.model, d, run_.inputs);
+    run_.summary.AddEndLoads(d.state.t, ends.at(0), ends.at(1));
     return true;
   }
 
  private:
   Run& run_;
-  EndLoads ends_;
 };
 
 }  // namespace

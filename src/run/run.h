@@ -7,6 +7,7 @@
 
 #include "core/cancel.h"
 #include "core/data.h"
+#include "core/end_loads.h"
 #include "core/equilibrium.h"
 #include "core/inputs.h"
 #include "core/model.h"
@@ -30,6 +31,7 @@ struct Run {
   RunExtent extent;                // of every row: the film's colour range and world box
   MaxTensionLog row_max;           // the largest link tension of every row
   RunSummary summary;
+  EndLoads row_ends;               // of the row the sinks are given (ExecuteRun's record, first)
   std::vector<std::string> section_materials;  // each section's material name (the summary's
                                                // utilisation_material)
 };
@@ -44,7 +46,8 @@ std::vector<std::string> SectionMaterials(const SceneDef& scene,
 Run PrepareRun(const SceneDef& scene, Model model, std::string label, const CancelFlag* stop);
 
 // Steps a copy of run.initial through the grid (run/driver.h), every row to `sinks` and to the
-// run's own record (extent, row maxima, summary: how it ended, its steps, its warnings).
+// run's own record (extent, row maxima, summary: how it ended, its steps, its warnings). The
+// record sees each row first: `sinks` may read its end loads, run.row_ends.
 void ExecuteRun(Run& run, const std::vector<RowSink*>& sinks);
 
 // The name of a link law, as runs are labelled: "elastic", "inextensible".

@@ -27,7 +27,8 @@ struct GlyphQuad {
 
 class FontAtlas {
  public:
-  // `font_path` empty: DejaVu Sans (Book and Bold) through fontconfig; else that file for both.
+  // `font_path` empty: DejaVu Sans (Book and Bold), Debian's files or through fontconfig; else
+  // that file for both.
   explicit FontAtlas(const std::string& font_path = "", int atlas_size = 1024);
   ~FontAtlas();
   FontAtlas(const FontAtlas&) = delete;

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 
 #include "core/error.h"
@@ -53,6 +56,44 @@ TEST(PngWriter, OpaqueRgbFileDropsTheAlphaByte) {
   const Image back = ReadPng(path);
   for (std::size_t i = 0; i < back.rgba.size(); ++i)
     EXPECT_EQ(back.rgba[i], i % 4 == 3 ? 255 : image.rgba[i]) << "byte " << i;
+}
+
+// Written a band of rows at a time, the file is the one WritePng writes of the whole image.
+TEST(PngWriter, RowWriterInBandsWritesTheSameFile) {
+  const Image image = RandomImage(37, 21, /*opaque=*/true, 4);
+  PngOptions options;
+  options.compression_level = 3;
+  options.up_filter_only = true;
+  options.memory_level = 5;
+  const std::string whole = TempDir() + "/whole.png", banded = TempDir() + "/banded.png";
+  WritePng(whole, image, options);
+  std::filesystem::remove(banded);  // an earlier run's
+  PngRowWriter writer(banded, 37, 21, options);
+  for (int y0 = 0; y0 < 21; y0 += 8) {
+    Image band(37, std::min(8, 21 - y0));
+    std::copy(image.row(y0), image.row(y0) + band.rgba.size(), band.rgba.begin());
+    writer.Write(band);
+  }
+  EXPECT_FALSE(std::filesystem::exists(banded));  // not before the commit
+  writer.Commit();
+  auto bytes = [](const std::string& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(banded), bytes(whole));
+}
+
+// A row writer given too many rows, or committed before its last row, throws and leaves no file.
+TEST(PngWriter, RowWriterRefusesRowsThatDoNotFitAndLeavesNothing) {
+  const std::string path = TempDir() + "/short.png";
+  std::filesystem::remove(path);
+  {
+    PngRowWriter writer(path, 8, 4);
+    EXPECT_THROW(writer.Write(Image(8, 5)), Error);
+    writer.Write(Image(8, 3));
+    EXPECT_THROW(writer.Commit(), Error);
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
 }
 
 TEST(PngWriter, UnwritablePathThrowsAndLeavesNothing) {

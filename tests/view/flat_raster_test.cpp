@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -109,6 +110,33 @@ TEST(FlatRaster, EveryShapeKindAndTextMatchTheGlRenderer) {
   EXPECT_LE(d.max, 2);  // as above
   EXPECT_LT(d.above_1, 1e-3);
   EXPECT_LT(d.mean, 0.05);
+}
+
+// Drawn in bands of rows (max_tension.png), the frame is the whole one byte for byte: every
+// shape and glyph crossing a band's edge drawn in both bands, each pixel once.
+TEST(FlatRaster, BandsOfRowsGiveTheWholeFrame) {
+  std::vector<MaxTensionSeries> series(1);
+  for (int i = 0; i <= 300; ++i) {
+    series[0].t.push_back(0.1 * i);
+    series[0].tension.push_back(4e5 + 2.5e5 * std::sin(0.7 * 0.1 * i));
+  }
+  series[0].label = "elastic";
+  const Frame frame = MakeMaxTensionFigure("Maximum tension: bands", series, 640, 360);
+  FontAtlas font;
+  Image whole;
+  DrawFlatFrame(frame, &font, &whole);
+  const FlatFrameRaster raster(frame, &font);
+  for (const int rows : {1, 7, 64, 360}) {
+    Image joined(640, 360);
+    for (int y0 = 0; y0 < 360; y0 += rows) {
+      Image band(640, std::min(rows, 360 - y0));
+      raster.DrawRows(y0, &band);
+      std::copy(band.rgba.begin(), band.rgba.end(), joined.row(y0));
+    }
+    EXPECT_EQ(joined.rgba, whole.rgba) << "bands of " << rows << " rows";
+  }
+  Image outside(640, 8);
+  EXPECT_THROW(raster.DrawRows(356, &outside), Error);
 }
 
 TEST(FlatRaster, RefusesA3dScene) {
