@@ -13,8 +13,8 @@
 #include "core/data.h"
 #include "core/error.h"
 #include "encode/png_writer.h"
+#include "encode/tiled_jpeg.h"
 #include "encode/video_encoder.h"
-#include "encode/jpeg_encoder.h"
 #include "view/colormap.h"
 #include "view/frame_builder.h"
 #include "view/renderer.h"
@@ -343,14 +343,15 @@ std::string LiveSession::StatusLocked() const {
 
 void LiveSession::RenderLoop() {
   std::unique_ptr<Renderer> renderer;
-  std::unique_ptr<JpegEncoder> jpeg;
+  std::unique_ptr<TiledJpegEncoder> jpeg;
   try {
     RenderOptions ro;
     ro.width = options_.width;
     ro.height = options_.height;
     ro.shader_dir = options_.shader_dir;
+    ro.redraw_changes = true;  // from one frame to the next, little of the picture changes
     renderer = std::make_unique<Renderer>(ro);
-    jpeg = std::make_unique<JpegEncoder>(options_.jpeg_quality);
+    jpeg = std::make_unique<TiledJpegEncoder>(options_.jpeg_quality);
   } catch (const std::exception& e) {
     std::lock_guard<std::mutex> lock(mu_);
     render_error_ = std::string("live: cannot start the renderer: ") + e.what();
@@ -371,6 +372,7 @@ void LiveSession::RenderLoop() {
   // Drawn into, then published as the newest still (for /snapshot.png); the still it replaces
   // becomes the next canvas unless a reader still holds it: no copy of the image per frame.
   std::shared_ptr<Image> canvas = std::make_shared<Image>();
+  std::size_t message_bytes = 0;  // the last frame's: the next one's about as long
   auto finish_recording = [&]() {
     if (!video) return;
     try {
@@ -476,7 +478,7 @@ void LiveSession::RenderLoop() {
       out->number = ++number;
       out->t = shown.t;
       out->seq = seq;
-      const std::string bytes = jpeg->Encode(*canvas);
+      out->message.reserve(LiveFrame::kHeaderBytes + message_bytes + message_bytes / 4);
       out->message.resize(LiveFrame::kHeaderBytes);
       for (int i = 0; i < 8; ++i) {  // little-endian, whatever the machine
         std::uint64_t t_bits;
@@ -485,7 +487,10 @@ void LiveSession::RenderLoop() {
         out->message[8 + i] = static_cast<char>((t_bits >> (8 * i)) & 0xff);
         out->message[16 + i] = static_cast<char>((out->seq >> (8 * i)) & 0xff);
       }
-      out->message += bytes;
+      // Only the tiles that changed encoded again, looked for where the renderer drew.
+      jpeg->Encode(*canvas, &out->message,
+                   renderer->redrawn() < 1 ? &renderer->redrawn_rects() : nullptr);
+      message_bytes = out->message.size();
       if (video) {
         // The steps since the last picture show it (the first picture starts the film); this
         // one shows from its own step on. A redraw with no step between (a view control) has

@@ -6,8 +6,8 @@
 namespace cablefilm {
 
 std::uint64_t HashBytes(const void* data, std::size_t size, std::uint64_t h) {
-  // Eight bytes a step (a vertex is 20 or 36 bytes): byte-wise FNV was a tenth of a live frame's
-  // work on this thread.
+  // Eight bytes a step (a vertex is 20 or 36 bytes): byte-wise FNV took 2 % of the live view's
+  // CPU (perf).
   const auto* p = static_cast<const unsigned char*>(data);
   std::size_t i = 0;
   for (; i + 8 <= size; i += 8) {
