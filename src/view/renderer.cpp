@@ -124,6 +124,7 @@ struct Renderer::Impl {
   std::vector<std::size_t> item_first;
   bool previous_valid = false;  // the framebuffer holds previous_items drawn, and only them
   double redrawn = 1;           // the share of the frame the last Draw drew
+  bool read_whole_or_changes = false;  // the last read back finished
   Rgba background;
   std::unique_ptr<Damage> damage;
   std::vector<ImageRect> rects;
@@ -306,6 +307,36 @@ int Renderer::width() const { return impl_->options.width; }
 int Renderer::height() const { return impl_->options.height; }
 std::string Renderer::Describe() const { return impl_->context->Describe(); }
 
+void Renderer::DrawOnto(const Frame& frame, Image* picture) {
+  Render(frame);
+  ReadBack(picture, true);
+}
+
+// GL's row 0 is the frame's top row (see shape.vert): read back as is, all of it or only what
+// the last Draw drew again.
+void Renderer::ReadBack(Image* out, bool changes_only) {
+  Impl& m = *impl_;
+  const int w = m.options.width, h = m.options.height;
+  if (out->width != w || out->height != h || out->rgba.size() != static_cast<std::size_t>(w) * h * 4) {
+    *out = Image(w, h);
+    changes_only = false;
+  }
+  const bool last_read = m.read_whole_or_changes;
+  m.read_whole_or_changes = false;  // until this read is done (a failed one leaves it unknown)
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  if (changes_only && last_read && m.redrawn < 1) {
+    glPixelStorei(GL_PACK_ROW_LENGTH, w);
+    for (const ImageRect& r : m.rects)
+      glReadPixels(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   out->row(r.y0) + 4 * static_cast<std::size_t>(r.x0));
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  } else {
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, out->rgba.data());
+  }
+  CheckGl("reading back the frame");
+  m.read_whole_or_changes = true;
+}
+
 Image Renderer::Draw(const Frame& frame) {
   Image image;
   Draw(frame, &image);
@@ -313,6 +344,11 @@ Image Renderer::Draw(const Frame& frame) {
 }
 
 void Renderer::Draw(const Frame& frame, Image* out) {
+  Render(frame);
+  ReadBack(out, false);
+}
+
+void Renderer::Render(const Frame& frame) {
   Impl& m = *impl_;
   const int w = m.options.width, h = m.options.height;
   if (frame.width != w || frame.height != h)
@@ -426,13 +462,6 @@ void Renderer::Draw(const Frame& frame, Image* out) {
   m.background = bg;
   m.previous_valid = frame.scenes.empty();
   std::swap(m.previous_items, m.items);
-
-  // GL's row 0 is the frame's top row (see shape.vert): read back as is.
-  if (out->width != w || out->height != h || out->rgba.size() != static_cast<std::size_t>(w) * h * 4)
-    *out = Image(w, h);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, out->rgba.data());
-  CheckGl("reading back the frame");
 }
 
 }  // namespace cablefilm

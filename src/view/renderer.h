@@ -3,7 +3,8 @@
 // from one buffer (anti-aliased in the fragment shader, no MSAA) in runs around the frame's 3D
 // scenes (space_renderer.h: lit, depth-tested, multisampled), then all glyphs in one draw call
 // (an atlas texture), then one glReadPixels; or, with redraw_changes, only the rectangles
-// where the frame differs from the last. Use a Renderer on the thread that created it.
+// where the frame differs from the last (and with DrawOnto only they are read back). Use a
+// Renderer on the thread that created it.
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ class Renderer {
 
   // Draws `frame` (its size must be the renderer's) into `out` (resized as needed).
   void Draw(const Frame& frame, Image* out);
+  // The same into `picture`, which holds the last frame this renderer drew (by Draw or
+  // DrawOnto, unchanged since): only what was drawn again is read back into it, not the whole
+  // frame (8 MB at 1080p). Any other picture must go through Draw.
+  void DrawOnto(const Frame& frame, Image* picture);
   Image Draw(const Frame& frame);
 
   // The share of the frame's pixels the last Draw drew again: 1 for a whole frame, 0 when
@@ -45,6 +50,8 @@ class Renderer {
   std::string Describe() const;  // GL version and renderer
 
  private:
+  void Render(const Frame& frame);  // into the framebuffer only
+  void ReadBack(Image* out, bool changes_only);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

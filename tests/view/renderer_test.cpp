@@ -298,10 +298,11 @@ TEST(RendererLive, LiveFrameAt720p) {
   }
 }
 
-// Redrawing only what changed gives the very pixels of drawing each frame whole: a live view
-// of the demo cable, its time window filling (t < 60 s: the cable, the newest samples and the
-// clock change), then rolling (t > 60 s: the time plot's axis moves too), a frame with nothing
-// changed, and a change of colour map (the cable and the colour bar change colour).
+// Redrawing only what changed (and reading back only that) gives the very pixels of drawing
+// each frame whole: a live view of the demo cable, its time window filling (t < 60 s: the
+// cable, the newest samples and the clock change), then rolling (t > 60 s: the time plot's
+// axis moves too), a frame with nothing changed, and a change of colour map (the cable and the
+// colour bar change colour).
 TEST(RendererChanges, SamePixelsAsWholeFrames) {
   const SceneView scene = MakeDemoScene();
   History history(scene, FollowingPolicy{60, {}});
@@ -343,7 +344,7 @@ TEST(RendererChanges, SamePixelsAsWholeFrames) {
     const Frame frame = MakeFrame(scene, history, history.now(), layout, Colormap(s.map),
                                   Theme::Dark(), status);
     whole.Draw(frame, &a);
-    changes.Draw(frame, &b);
+    changes.DrawOnto(frame, &b);  // b: the last frame, only what changed read back into it
     ASSERT_EQ(a.rgba.size(), b.rgba.size());
     std::size_t differ = 0;
     for (std::size_t i = 0; i < a.rgba.size(); ++i) differ += a.rgba[i] != b.rgba[i];
