@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libtomlplusplus-dev libcli11-dev libgtest-dev libbenchmark-dev
   libosmesa6-dev libpng-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libfreetype-dev libfontconfig-dev fonts-dejavu-core
-  libcivetweb-dev libturbojpeg0-dev nlohmann-json3-dev libnetcdf-dev
+  libcivetweb-dev libjpeg62-turbo-dev nlohmann-json3-dev libnetcdf-dev
   pybind11-dev python3-dev python3-numpy   # the Python module (src/python) and its arrays
 )
 if [ "${1:-}" = "--tests" ]; then

@@ -7,6 +7,11 @@
 
 namespace cablefilm {
 
+// A rectangle of an image's pixels: [x0, x1) x [y0, y1), rows from the top.
+struct ImageRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
 struct Image {
   int width = 0;
   int height = 0;

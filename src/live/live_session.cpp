@@ -13,8 +13,8 @@
 #include "core/data.h"
 #include "core/error.h"
 #include "encode/png_writer.h"
+#include "encode/tiled_jpeg.h"
 #include "encode/video_encoder.h"
-#include "encode/jpeg_encoder.h"
 #include "view/colormap.h"
 #include "view/frame_builder.h"
 #include "view/renderer.h"
@@ -343,14 +343,15 @@ std::string LiveSession::StatusLocked() const {
 
 void LiveSession::RenderLoop() {
   std::unique_ptr<Renderer> renderer;
-  std::unique_ptr<JpegEncoder> jpeg;
+  std::unique_ptr<TiledJpegEncoder> jpeg;
   try {
     RenderOptions ro;
     ro.width = options_.width;
     ro.height = options_.height;
     ro.shader_dir = options_.shader_dir;
+    ro.redraw_changes = true;  // from one frame to the next, little of the picture changes
     renderer = std::make_unique<Renderer>(ro);
-    jpeg = std::make_unique<JpegEncoder>(options_.jpeg_quality);
+    jpeg = std::make_unique<TiledJpegEncoder>(options_.jpeg_quality);
   } catch (const std::exception& e) {
     std::lock_guard<std::mutex> lock(mu_);
     render_error_ = std::string("live: cannot start the renderer: ") + e.what();
@@ -366,11 +367,19 @@ void LiveSession::RenderLoop() {
   // states this thread skips (it draws only the newest) or however late it draws the last, no
   // frame is missing, only pictures are repeated.
   std::uint64_t film_first_step = 0;
-  std::shared_ptr<const Image> film_picture;  // the newest picture drawn for the film
+  Image film_picture;  // the newest picture drawn for the film (empty: none yet)
   std::uint64_t drawn_input = 0, drawn_view = ~0ull, number = 0;
-  // Drawn into, then published as the newest still (for /snapshot.png); the still it replaces
-  // becomes the next canvas unless a reader still holds it: no copy of the image per frame.
-  std::shared_ptr<Image> canvas = std::make_shared<Image>();
+  // The frame as drawn, kept: each frame only what was drawn again is read back into it. A
+  // copy is published as the still (/snapshot.png) only when one is asked for.
+  Image canvas;
+  // Publishes a copy of the canvas for SnapshotPng, if one was asked for (lock held).
+  auto publish_still = [&]() {
+    if (still_done_ == still_wanted_) return;
+    image_ = std::make_shared<const Image>(canvas);
+    still_done_ = still_wanted_;
+    frame_cv_.notify_all();
+  };
+  std::size_t message_bytes = 0;  // the last frame's: the next one's about as long
   auto finish_recording = [&]() {
     if (!video) return;
     try {
@@ -381,9 +390,9 @@ void LiveSession::RenderLoop() {
         current.t_end = record_end_t_;
       }
       // The steps after the last picture, up to the stop, show it.
-      if (film_picture)
+      if (!film_picture.rgba.empty())
         while (video->frames_added() <= static_cast<long>(end_step) - static_cast<long>(film_first_step))
-          video->AddFrame(*film_picture);
+          video->AddFrame(film_picture);
       video->Finish();
       std::lock_guard<std::mutex> lock(mu_);
       current.frames = video->frames_added();
@@ -395,7 +404,7 @@ void LiveSession::RenderLoop() {
       record_error_ = e.what();
     }
     video.reset();
-    film_picture.reset();
+    film_picture = Image();
     std::lock_guard<std::mutex> lock(mu_);
     recording_ = false;
     ++state_version_;
@@ -418,10 +427,14 @@ void LiveSession::RenderLoop() {
         return fresh_wanted_ != fresh_done_ ||
                (watching && (input_version_ != drawn_input || view_version_ != drawn_view));
       };
-      render_cv_.wait(lock, [&] { return stop_ || changed() || record_wanted_ != recording_; });
+      render_cv_.wait(lock, [&] {
+        return stop_ || changed() || record_wanted_ != recording_ ||
+               (still_wanted_ != still_done_ && frame_);
+      });
       if (stop_) break;
       want_record = record_wanted_;
       const bool redraw = changed();
+      if (!redraw) publish_still();  // the newest frame drawn is the state now
       if (!redraw && want_record == recording_) continue;
       drawn_input = input_version_;
       drawn_view = view_version_;
@@ -465,18 +478,17 @@ void LiveSession::RenderLoop() {
     } else if (!want_record && video) {
       finish_recording();
     }
-    if (!canvas) canvas = std::make_shared<Image>();
     try {
       const Snapshot& shown = picture.now();
       const FrameLayout layout = MakeFrameLayout(view_, picture, options_.width, options_.height);
       const Frame frame = MakeFrame(view_, picture, shown, layout, Colormap(colormap),
                                     Theme::Dark(), status, &camera);
-      renderer->Draw(frame, canvas.get());
+      renderer->DrawOnto(frame, &canvas);
       auto out = std::make_shared<LiveFrame>();
       out->number = ++number;
       out->t = shown.t;
       out->seq = seq;
-      const std::string bytes = jpeg->Encode(*canvas);
+      out->message.reserve(LiveFrame::kHeaderBytes + message_bytes + message_bytes / 4);
       out->message.resize(LiveFrame::kHeaderBytes);
       for (int i = 0; i < 8; ++i) {  // little-endian, whatever the machine
         std::uint64_t t_bits;
@@ -485,16 +497,20 @@ void LiveSession::RenderLoop() {
         out->message[8 + i] = static_cast<char>((t_bits >> (8 * i)) & 0xff);
         out->message[16 + i] = static_cast<char>((out->seq >> (8 * i)) & 0xff);
       }
-      out->message += bytes;
+      // Only the tiles that changed encoded again, looked for where the renderer drew.
+      jpeg->Encode(canvas, &out->message,
+                   renderer->redrawn() < 1 ? &renderer->redrawn_rects() : nullptr);
+      message_bytes = out->message.size();
       if (video) {
         // The steps since the last picture show it (the first picture starts the film); this
         // one shows from its own step on. A redraw with no step between (a view control) has
         // its frame written already.
         const long at = static_cast<long>(step) - static_cast<long>(film_first_step);
-        while (video->frames_added() < at) video->AddFrame(film_picture ? *film_picture : *canvas);
-        if (video->frames_added() == at) video->AddFrame(*canvas);
+        while (video->frames_added() < at)
+          video->AddFrame(film_picture.rgba.empty() ? canvas : film_picture);
+        if (video->frames_added() == at) video->AddFrame(canvas);
+        film_picture = canvas;  // its storage reused
       }
-      std::shared_ptr<const Image> previous;
       const double now = Seconds(start_, Clock::now());
       {
         std::lock_guard<std::mutex> lock(mu_);
@@ -503,21 +519,17 @@ void LiveSession::RenderLoop() {
         frame_view_ = drawn_view;
         space_view_ = layout.space ? layout.space_view : PixelRect{};
         if (fresh > fresh_done_) fresh_done_ = fresh;
-        previous = std::move(image_);
-        image_ = std::move(canvas);
-        if (video) film_picture = image_;
+        publish_still();
         frame_times_.push_back(now);
         while (!frame_times_.empty() && frame_times_.front() < now - 1.0) frame_times_.pop_front();
         render_error_.clear();
         frame_cv_.notify_all();
       }
-      // No reader can take `previous` any more (image_ moved on): reuse it if none holds it.
-      canvas = previous && previous.use_count() == 1 ? std::const_pointer_cast<Image>(previous)
-                                                     : std::make_shared<Image>();
     } catch (const std::exception& e) {
       std::lock_guard<std::mutex> lock(mu_);
       render_error_ = e.what();
       if (fresh > fresh_done_) fresh_done_ = fresh;  // the asker gets the newest there is
+      publish_still();
       ++state_version_;
       frame_cv_.notify_all();
     }
@@ -749,8 +761,12 @@ std::shared_ptr<const LiveFrame> LiveSession::FreshFrame(std::chrono::millisecon
 std::string LiveSession::SnapshotPng() {
   FreshFrame(std::chrono::milliseconds(2000));
   std::shared_ptr<const Image> image;
-  {
-    std::lock_guard<std::mutex> lock(mu_);
+  {  // the render thread copies out its newest frame
+    std::unique_lock<std::mutex> lock(mu_);
+    const std::uint64_t want = ++still_wanted_;
+    render_cv_.notify_all();
+    frame_cv_.wait_for(lock, std::chrono::milliseconds(2000),
+                       [&] { return stop_ || still_done_ >= want; });
     image = image_;
   }
   if (!image) throw Error("live: no frame drawn yet");

@@ -169,7 +169,8 @@ class LiveSession {
 
   // Frames (lock held).
   std::shared_ptr<const LiveFrame> frame_;
-  std::shared_ptr<const Image> image_;
+  std::shared_ptr<const Image> image_;  // the still last asked for (SnapshotPng)
+  std::uint64_t still_wanted_ = 0, still_done_ = 0;  // stills asked for, published
   std::deque<double> frame_times_;  // wall [s] of the frames of the last second
   std::string render_error_;
   PixelRect space_view_;        // where the last frame drew its 3D view [px] (none: empty)

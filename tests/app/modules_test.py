@@ -12,7 +12,7 @@ import shutil
 import subprocess
 import sys
 
-HEAVY = ('libOSMesa', 'libLLVM', 'libavcodec', 'libavformat', 'libswscale', 'libturbojpeg',
+HEAVY = ('libOSMesa', 'libLLVM', 'libavcodec', 'libavformat', 'libswscale', 'libjpeg',
          'libnetcdf', 'libhdf5')  # what takes 25-200 ms to load
 failures = []
 

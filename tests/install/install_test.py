@@ -243,7 +243,7 @@ def test_deb(args):
         print("Depends: " + depends)
         names = [re.split(r"[ (]", alt.strip())[0]
                  for dep in depends.split(",") for alt in dep.split("|")]
-        for want in ["libosmesa6", "libavcodec59", "libturbojpeg0", "fonts-dejavu-core"]:
+        for want in ["libosmesa6", "libavcodec59", "libjpeg62-turbo", "fonts-dejavu-core"]:
             if want not in names:
                 fail("Depends lacks " + want)
         for name in names:  # every one a Debian package this machine knows

@@ -298,6 +298,66 @@ TEST(RendererLive, LiveFrameAt720p) {
   }
 }
 
+// Redrawing only what changed (and reading back only that) gives the very pixels of drawing
+// each frame whole: a live view of the demo cable, its time window filling (t < 60 s: the
+// cable, the newest samples and the clock change), then rolling (t > 60 s: the time plot's
+// axis moves too), a frame with nothing changed, and a change of colour map (the cable and the
+// colour bar change colour).
+TEST(RendererChanges, SamePixelsAsWholeFrames) {
+  const SceneView scene = MakeDemoScene();
+  History history(scene, FollowingPolicy{60, {}});
+  RenderOptions options;
+  options.width = 960;
+  options.height = 540;
+  Renderer whole(options);
+  options.redraw_changes = true;
+  Renderer changes(options);
+  Image a, b;
+  struct Step {
+    double t;
+    const char* map;
+    double redrawn_max;  // the share of the frame drawn again, at most
+  };
+  // The first frame is drawn whole; then a sample more changes the cable, the tension curve,
+  // the clock and the time plot's newest segment: a quarter of the frame in 32 px tiles
+  // (measured 0.26), under 0.3. The same frame again: nothing. A new colour map: the cable
+  // and the colour bar as well (measured 0.27), under 0.3. Past 60 s the time plot's axis
+  // rolls with the clock: about half the frame (measured 0.47), under 0.6 (beyond, the whole
+  // frame is drawn in one pass).
+  const Step steps[] = {{20.0, "viridis", 1},        {20.0 + 1 / 30.0, "viridis", 0.3},
+                        {20.0 + 2 / 30.0, "viridis", 0.3}, {20.0 + 2 / 30.0, "viridis", 0},
+                        {20.0 + 3 / 30.0, "magma", 0.3},   {70.0, "magma", 1},
+                        {70.0 + 1 / 30.0, "magma", 0.6},   {70.0 + 2 / 30.0, "magma", 0.6}};
+  // Every digit in the header's regular and bold text first (t = 0.0 s to 0.9 s): a glyph new to
+  // the atlas redraws the whole frame (its texture changed), which would hide what this test is
+  // about.
+  const std::string status = "live \u00b7 1.0x 0123456789";
+  std::vector<Step> all;
+  for (int k = 0; k < 10; ++k) all.push_back({0.1 * k, "viridis", 1});
+  all.insert(all.end(), std::begin(steps), std::end(steps));
+  double t_added = -1;
+  for (const Step& s : all) {
+    for (int i = static_cast<int>(std::floor(t_added * 30)) + 1; i <= std::lround(s.t * 30); ++i)
+      history.Add(MakeDemoSnapshot(scene, i / 30.0));
+    t_added = s.t;
+    const FrameLayout layout = MakeFrameLayout(scene, history, 960, 540);
+    const Frame frame = MakeFrame(scene, history, history.now(), layout, Colormap(s.map),
+                                  Theme::Dark(), status);
+    whole.Draw(frame, &a);
+    changes.DrawOnto(frame, &b);  // b: the last frame, only what changed read back into it
+    ASSERT_EQ(a.rgba.size(), b.rgba.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i) differ += a.rgba[i] != b.rgba[i];
+    EXPECT_EQ(differ, 0u) << "t = " << s.t;
+    EXPECT_EQ(whole.redrawn(), 1);
+    EXPECT_LE(changes.redrawn(), s.redrawn_max) << "t = " << s.t;
+    if (s.redrawn_max == 0) {
+      EXPECT_EQ(changes.redrawn(), 0) << "t = " << s.t;
+    }
+    std::printf("t = %.3f s %s: redrawn %.3f of the frame\n", s.t, s.map, changes.redrawn());
+  }
+}
+
 TEST(ShaderProgram, DirectoryFromOptionThenEnvironmentThenBuiltIn) {
   EXPECT_EQ(ResolveShaderDir("/some/dir"), "/some/dir");
   ::setenv("CABLEFILM_SHADERS", "/from/env", 1);
