@@ -78,6 +78,9 @@ void PrintEquilibrium(const SystemModel& sys, const SystemEquilibriumReport& eq,
   std::printf("equilibrium: %d Newton iteration(s) on the shared points and free bodies, "
               "out-of-balance %.3g N (of %.4g N), %.2f ms\n",
               eq.iterations, eq.residual, eq.force_scale, ms);
+  if (eq.chains > 0)
+    std::printf("  first guess: %d chain(s) of lines through their joints solved as one line\n",
+                eq.chains);
   for (int b : sys.free_bodies) {
     const Vec6& q = eq.body_poses[b];
     std::printf("  body %s at (%.6g, %.6g, %.6g) m, turned (%.6g, %.6g, %.6g) deg about x, y, "

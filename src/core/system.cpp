@@ -43,6 +43,8 @@ SystemModel MakeSystem(const std::vector<LineSpec>& lines, const std::vector<Poi
   SystemModel sys;
   sys.env = env;
   sys.bodies = bodies;
+  sys.line_specs = lines;
+  sys.point_specs = points;
   const int np = static_cast<int>(points.size());
   const int nb = static_cast<int>(bodies.size());
   for (const PointSpec& p : points) {

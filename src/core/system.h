@@ -74,6 +74,9 @@ struct SystemModel {
   // Each body's pose at the start [m, rad]: its rest pose, or where PlaceBody put it (a free
   // body's equilibrium). A free body's waterplane keeps its scene's rest as its reference.
   std::vector<Vec6> body_poses;
+  // What it was made from (chain_guess.h solves a chain of lines as one line from them).
+  std::vector<LineSpec> line_specs;
+  std::vector<PointSpec> point_specs;
 
   int shared_count() const { return static_cast<int>(shared_points.size()); }
   // The line end that owns point p (its first).

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/chain_guess.h"
 #include "core/error.h"
 #include "core/forces.h"
 
@@ -231,12 +232,22 @@ std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibr
     const Model& m = sys.lines[o.line];
     X.segment<kDim>(g.offset) = (o.station == 0 ? m.ends.start : m.ends.end).rest();
   }
+  // Chains of lines through joints, each solved as one line: their joints where that puts
+  // them, their lines' shapes the first guesses (chain_guess.h).
+  const ChainGuess chains = GuessChains(sys, options.cancel);
+  for (const Unknowns::Group& g : u.groups) {
+    if (g.point < 0) continue;
+    const int shared = sys.points[g.point].shared;
+    if (chains.guessed[shared]) X.segment<kDim>(g.offset) = chains.shared_positions.col(shared);
+  }
   HeldLines lines(sys, u, options);
+  lines.Restore(chains.states);
   lines.Solve(X, HeldLines::kAll);
   double scale = 0;
   for (const Model& m : sys.lines) scale += StaticForceScale(m);
   SystemEquilibriumReport r;
   r.force_scale = scale;
+  r.chains = chains.chains;
   Eigen::VectorXd R = lines.Residual(X);
   // The out-of-balance measure: forces [N], and a body's moments over its size [N].
   Eigen::VectorXd weight = Eigen::VectorXd::Ones(n);

@@ -16,6 +16,7 @@ namespace cablefilm {
 
 struct SystemEquilibriumReport {
   int iterations = 0;         // Newton iterations on the shared points and free bodies
+  int chains = 0;             // chains of lines solved as one line first (chain_guess.h)
   double residual = 0;        // the largest out-of-balance force on a shared point or body at
                               // the end [N] (a body's moment divided by its size [m])
   double force_scale = 0;     // the load it is measured against: the lines' (StaticForceScale)
