@@ -193,6 +193,20 @@ Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
   return M;
 }
 
+Vec StationInertiaTimes(const Model& m, const LinkGeometry& g, int j, const Vec& a) {
+  if (m.has_waves()) return WaveStationInertia(m, g, j) * a;
+  // (m_j + m^x_j) a on the diagonal; each adjoining link's e (a - t (t . a)) / 2 across it and
+  // e^t t (t . a) / 2 along it.
+  Vec f = (m.line.cable_mass[j] + m.line.prism_mass.col(j).array()).matrix().cwiseProduct(a);
+  for (int k = std::max(j - 1, 0); k <= std::min(j, m.line.links - 1); ++k) {
+    const Vec t = g.tangent.col(k);
+    const double ta = t.dot(a);
+    const double e = 0.5 * m.line.virtual_mass[k], et = 0.5 * m.line.tangential_virtual_mass[k];
+    f += e * a + ((et - e) * ta) * t;
+  }
+  return f;
+}
+
 void ComputeAccelerations(const Model& m, const Inputs& in, const Water& water, double t,
                           const Points& x, const Points& v, ForceWorkspace& ws, Points& a) {
   ComputeGeometry(m, water, t, x, ws.geometry);

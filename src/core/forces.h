@@ -123,6 +123,9 @@ void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g
 // with half of each adjoining link's tangential added mass along it when given. With waves the
 // added masses are those of the wet part (g.sea.wet; all wet if g.sea is empty).
 Mat StationInertia(const Model& m, const LinkGeometry& g, int j);
+// StationInertia(m, g, j) * a without the matrix (the implicit scheme's residual, every
+// station every Newton iteration) [N].
+Vec StationInertiaTimes(const Model& m, const LinkGeometry& g, int j, const Vec& a);
 
 // Accelerations of the stations whose motion is computed (free stations) in `water`; prescribed
 // ends get their exact acceleration (as the inputs move them). Fills ws.geometry, ws.tension and
