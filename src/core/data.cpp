@@ -35,6 +35,8 @@ Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, cons
       d.abar = d.a;
       w.system.Resize(m.last_free() - m.first_free() + 1);
       w.matrix_taut.assign(m.line.links, 0);
+      w.snapping.assign(m.line.links, 0);
+      w.residual.assign(w.system.size(), Vec::Zero());
       // A displacement this small changes a link's tension by a negligible fraction of its
       // stiffness times its length: 1e-9 of the shortest link.
       w.newton_tolerance = 1e-9 * m.line.rest_length.minCoeff();

@@ -77,6 +77,10 @@ struct Scratch {
   ForceWorkspace trial;     // inextensible: the forces of the trial step
   BlockTridiagonal system;  // implicit: Newton's matrix; its right-hand side
   std::vector<char> matrix_taut;  // implicit: which links were taut when that matrix was made
+  std::vector<char> snapping;     // implicit: slack links that Newton's model takes as taut
+                                  // (implicit_stages.h, FindSnappingLinks): 1 marked, 2 in
+                                  // the matrix
+  std::vector<Vec> residual;      // implicit: the residual of the iterate, kept for re-solves
   ConstraintSolver constraints;  // inextensible: the constraints' tridiagonal system
   // Constants of the model and the options, computed once:
   Eigen::VectorXd least_inertia;  // explicit: m_j + min(m^x_j, m^y_j), station j's least

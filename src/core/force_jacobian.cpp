@@ -14,6 +14,9 @@ namespace {
 struct LinkBlocks {
   Mat fa_dd = Mat::Zero(), fb_dd = Mat::Zero();
   Mat f_dv = Mat::Zero();  // same for both stations and both velocities
+  // Through a current profile, the y column of the negated derivative of either force with
+  // respect to y_k and y_{k+1} alike: added to all four blocks.
+  Vec slope_column = Vec::Zero();
 };
 
 void Scatter(const Model& m, int k, const LinkBlocks& b, double kv, BlockTridiagonal& s) {
@@ -21,7 +24,8 @@ void Scatter(const Model& m, int k, const LinkBlocks& b, double kv, BlockTridiag
   const int a = k, c = k + 1;
   const bool fa = a >= j0 && a <= j1, fc = c >= j0 && c <= j1;
   // -dF_a/dx_a = dfa_dd - kv f_dv, -dF_a/dx_c = -dfa_dd - kv f_dv, and likewise for c.
-  const Mat v = kv * b.f_dv;
+  Mat v = kv * b.f_dv;
+  v.col(kVertical) -= b.slope_column;
   if (fa) s.diag[a - j0] += b.fa_dd - v;
   if (fa && fc) s.upper[a - j0] += -b.fa_dd - v;
   if (fa && fc) s.lower[c - j0] += b.fb_dd - v;
@@ -97,16 +101,9 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
       // A current profile: w = mean velocity - c((y_k + y_{k+1})/2), so the force on either
       // station depends on y_k and y_{k+1} alike through dw/dy = -c'/2: dF/dy_i = 2 f_dv
       // (-c'/2) = -f_dv c'. Stored negated, in the y column.
-      const Vec slope = profile ? CurrentSlope(m, water, ymid) : Vec::Zero();
-      if (!slope.isZero()) {
-        Mat C = Mat::Zero();
-        C.col(kVertical) = b.f_dv * slope;
-        const int a = k, c = k + 1;
-        if (free(a)) system.diag[a - j0] += C;
-        if (free(a) && free(c)) system.upper[a - j0] += C;
-        if (free(a) && free(c)) system.lower[c - j0] += C;
-        if (free(c)) system.diag[c - j0] += C;
-      }
+      // The same in all four blocks, as kv f_dv is with the opposite sign: Scatter adds it
+      // with that term (four block sums per link fewer).
+      if (profile) b.slope_column = b.f_dv * CurrentSlope(m, water, ymid);
     }
     Scatter(m, k, b, kv, system);
   }

@@ -79,6 +79,54 @@ bool AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h
   return same;
 }
 
+bool FindSnappingLinks(const Model& m, Data& d) {
+  Scratch& w = d.scratch;
+  const std::vector<Vec>& dx = w.system.rhs;
+  const LinkGeometry& g = d.forces.geometry;
+  const int j0 = m.first_free(), j1 = m.last_free();
+  auto step = [&](int j) { return j >= j0 && j <= j1 ? dx[j - j0] : Vec::Zero(); };
+  bool found = false;
+  for (int k = 0; k < m.line.links; ++k) {
+    if (w.snapping[k] || !(g.length[k] < m.line.rest_length[k])) continue;
+    const Vec stepped = g.length[k] * g.tangent.col(k) + step(k + 1) - step(k);
+    if (stepped.norm() > m.line.rest_length[k]) w.snapping[k] = found = true;
+  }
+  return found;
+}
+
+void ClearSnappingLinks(Data& d) {
+  std::fill(d.scratch.snapping.begin(), d.scratch.snapping.end(), 0);
+}
+
+void KeepResidual(Data& d) { d.scratch.residual = d.scratch.system.rhs; }
+
+void RestoreResidual(Data& d) { d.scratch.system.rhs = d.scratch.residual; }
+
+void AddSnappingLinks(const Model& m, Data& d) {
+  Scratch& w = d.scratch;
+  BlockTridiagonal& s = w.system;
+  const LinkGeometry& g = d.forces.geometry;
+  const int j0 = m.first_free(), j1 = m.last_free();
+  RestoreResidual(d);
+  for (int k = 0; k < m.line.links; ++k) {
+    if (!w.snapping[k]) continue;
+    const Vec t = g.tangent.col(k);
+    const double EA = m.line.axial_stiffness[k], l = m.line.rest_length[k];  // [N], [m]
+    const Vec pull = (EA * (g.length[k] - l) / l) * t;  // [N] on station k; minus on k + 1
+    const int a = k, c = k + 1;
+    const bool fa = a >= j0 && a <= j1, fc = c >= j0 && c <= j1;
+    if (fa) s.rhs[a - j0] += pull;
+    if (fc) s.rhs[c - j0] -= pull;
+    if (w.snapping[k] == 2) continue;  // its stiffness is in the matrix already
+    w.snapping[k] = 2;
+    w.matrix_taut[k] = 1;  // the matrix holds its taut stiffness: kept while it stays taut
+    const Mat B = (EA / l) * (t * t.transpose());  // -dF_k/dx_k, as force_jacobian.cpp's
+    if (fa) s.diag[a - j0] += B;
+    if (fa && fc) s.upper[a - j0] -= B, s.lower[c - j0] -= B;
+    if (fc) s.diag[c - j0] += B;
+  }
+}
+
 double CorrectionSize(const Model& m, const Data& d) {
   const std::vector<Vec>& dx = d.scratch.system.rhs;
   double size = 0;

@@ -40,12 +40,18 @@ struct LineStepper {
     for (int it = 1; it <= kMaxNewtonIterations; ++it) {
       const bool holds = AssembleNewton(m, d, c, h, fresh);
       if (fresh) {
+        ClearSnappingLinks(d);
+        KeepResidual(d);
         if (!system.Solve()) return false;
+        for (int pass = 0; pass < kSnappingPasses && FindSnappingLinks(m, d); ++pass) {
+          AddSnappingLinks(m, d);
+          if (!system.Solve()) return false;
+        }
       } else {
         if (holds) system.SolveFactored(system.rhs);
-        // The kept matrix no longer holds, or does not contract here: a new one at this
-        // iterate.
-        if (!holds || !(CorrectionSize(m, d) <= newton.last())) {
+        // The kept matrix no longer holds, does not contract here, or its step snaps a slack
+        // link taut that it does not hold as taut: a new one at this iterate.
+        if (!holds || !(CorrectionSize(m, d) <= newton.last()) || FindSnappingLinks(m, d)) {
           fresh = true;
           --it;  // not an iteration: none was applied
           continue;

@@ -311,11 +311,29 @@ struct SystemStepper {
           fresh[i] = 1;  // its kept matrix no longer holds (a link slack or taut): a new one
           AssembleNewton(sys.lines[i], sd.lines[i], c, h, true);
         }
+      for (int i = 0; i < lines(); ++i) {
+        if (fresh[i]) ClearSnappingLinks(sd.lines[i]);
+        KeepResidual(sd.lines[i]);
+      }
       if (!SolveCoupled(sys, sd, c, h, fresh)) return false;
-      if (!all_fresh() && !(CorrectionSize() <= newton.last())) {  // the kept matrices do not
-        std::fill(fresh.begin(), fresh.end(), 1);                   // contract here: new ones
-        --it;                                                       // at this iterate (and
-        continue;                                                   // none was applied)
+      bool kept_snaps = false;  // a kept matrix's step snaps a slack link taut
+      for (int i = 0; i < lines(); ++i)
+        if (!fresh[i] && FindSnappingLinks(sys.lines[i], sd.lines[i])) kept_snaps = true;
+      if (!all_fresh() && (kept_snaps || !(CorrectionSize() <= newton.last()))) {
+        std::fill(fresh.begin(), fresh.end(), 1);  // the kept matrices do not contract here
+        --it;                                      // (or miss a snap): new ones at this
+        continue;                                  // iterate (and none was applied)
+      }
+      for (int pass = 0; pass < kSnappingPasses; ++pass) {
+        bool found = false;
+        for (int i = 0; i < lines(); ++i)
+          if (fresh[i] && FindSnappingLinks(sys.lines[i], sd.lines[i])) found = true;
+        if (!found) break;
+        for (int i = 0; i < lines(); ++i) {
+          if (fresh[i]) AddSnappingLinks(sys.lines[i], sd.lines[i]);
+          else RestoreResidual(sd.lines[i]);
+        }
+        if (!SolveCoupled(sys, sd, c, h, fresh)) return false;
       }
       const bool was_fresh = all_fresh();
       double correction = 0;  // the largest, over its tolerance
