@@ -101,6 +101,9 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
       ro.height = options.height;
       ro.shader_dir = options.shader_dir;
       ro.font_path = options.font_path;
+      // A film's frames differ where the lines, the newest samples and the clock move: the rest
+      // is kept from the frame before (the same pixels as drawing it whole, renderer.h).
+      ro.redraw_changes = true;
       renderer = std::make_unique<Renderer>(ro);
     }
     if (options.write_film) {
@@ -138,7 +141,7 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
       history->Add(snapshot);
       if (draw) {
         const Frame frame = MakeFrame(scene, *history, snapshot, layout, colormap);
-        renderer->Draw(frame, &image);
+        renderer->DrawOnto(frame, &image);  // `image` holds the frame before: its changes
         if (encoder) encoder->AddFrame(image);
         if (options.write_frames) {
           char name[64];
