@@ -6,7 +6,6 @@ extern "C" {
 #include <libavutil/imgutils.h>
 #include <libavutil/opt.h>
 #include <libavutil/pixdesc.h>
-#include <libswscale/swscale.h>
 }
 
 #include <algorithm>
@@ -16,6 +15,7 @@ extern "C" {
 #include <fstream>
 
 #include "core/error.h"
+#include "encode/yuv_converter.h"
 
 namespace cablefilm {
 namespace {
@@ -36,7 +36,7 @@ struct VideoEncoder::Impl {
   AVStream* stream = nullptr;
   AVFrame* frame = nullptr;
   AVPacket* packet = nullptr;
-  SwsContext* sws = nullptr;
+  std::unique_ptr<YuvConverter> yuv;
   long frames = 0;
   bool header_written = false;
   bool finished = false;
@@ -59,8 +59,7 @@ struct VideoEncoder::Impl {
   }
 
   void Release() {
-    sws_freeContext(sws);
-    sws = nullptr;
+    yuv.reset();
     av_frame_free(&frame);
     av_packet_free(&packet);
     avcodec_free_context(&codec);
@@ -131,12 +130,7 @@ VideoEncoder::VideoEncoder(const std::string& path, const VideoOptions& options)
     ret = av_frame_get_buffer(m.frame, 0);
     if (ret < 0) m.Fail("cannot allocate a frame", ret);
 
-    // Same size, so the scaler only converts colours; BT.709 coefficients, limited range.
-    m.sws = sws_getContext(c->width, c->height, AV_PIX_FMT_RGBA, c->width, c->height,
-                           AV_PIX_FMT_YUV420P, SWS_POINT, nullptr, nullptr, nullptr);
-    if (!m.sws) m.Fail("cannot create the RGBA -> yuv420p converter", 0);
-    const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-    sws_setColorspaceDetails(m.sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
+    m.yuv = std::make_unique<YuvConverter>(c->width, c->height);
 
     ret = avio_open(&m.format->pb, m.temp_path.c_str(), AVIO_FLAG_WRITE);
     if (ret < 0) m.Fail("cannot create " + m.temp_path, ret);
@@ -166,19 +160,18 @@ VideoEncoder::~VideoEncoder() {
 
 const std::string& VideoEncoder::partial_path() const { return impl_->temp_path; }
 
-void VideoEncoder::AddFrame(const Image& image) {
+void VideoEncoder::AddFrame(const Image& image, const std::vector<ImageRect>* changed) {
   Impl& m = *impl_;
   if (m.finished) throw Error("video " + m.path + ": frame added after Finish()");
   if (image.width != m.codec->width || image.height != m.codec->height)
     throw Error("video " + m.path + ": frame is " + std::to_string(image.width) + "x" +
                 std::to_string(image.height) + ", film is " + std::to_string(m.codec->width) +
                 "x" + std::to_string(m.codec->height));
-  // The encoder may still hold a reference to the previous frame's buffers.
+  // The encoder may still hold a reference to the previous frame's buffers (then new ones
+  // are made with a copy of their bytes: they still hold the previous frame).
   int ret = av_frame_make_writable(m.frame);
   if (ret < 0) m.Fail("cannot make the frame writable", ret);
-  const std::uint8_t* src[1] = {image.rgba.data()};
-  const int src_stride[1] = {static_cast<int>(image.stride())};
-  sws_scale(m.sws, src, src_stride, 0, image.height, m.frame->data, m.frame->linesize);
+  m.yuv->Convert(image, m.frame->data, m.frame->linesize, m.frames > 0 ? changed : nullptr);
   m.frame->pts = m.frames;
   ret = avcodec_send_frame(m.codec, m.frame);
   if (ret < 0) m.Fail("cannot send frame " + std::to_string(m.frames), ret);

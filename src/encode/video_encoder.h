@@ -1,12 +1,14 @@
 #pragma once
 // H.264 in MP4 through libavcodec/libavformat, in process, following the send-frame /
 // receive-packet loop of FFmpeg's doc/examples/mux.c. RGBA frames are converted to yuv420p
-// (BT.709, limited range) with libswscale. Until Finish() the film is a fragmented MP4 under a
-// ".partial.mp4" name, which plays up to its last frame whatever stops the program; Finish()
-// remuxes it to its final name with the moov atom at the start (+faststart) so it streams.
+// (BT.709, limited range) with libswscale, only where they changed when the caller says where
+// (yuv_converter.h). Until Finish() the film is a fragmented MP4 under a ".partial.mp4" name,
+// which plays up to its last frame whatever stops the program; Finish() remuxes it to its
+// final name with the moov atom at the start (+faststart) so it streams.
 // Not thread-safe: one thread feeds one encoder.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "encode/image.h"
 
@@ -30,7 +32,9 @@ class VideoEncoder {
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
   // Encodes one frame; its size must match the options. Frames get consecutive timestamps.
-  void AddFrame(const Image& image);
+  // With `changed`, the frame differs from the one added before only within those rectangles
+  // (the renderer redrew only them): only there is it converted to yuv420p again.
+  void AddFrame(const Image& image, const std::vector<ImageRect>* changed = nullptr);
   // Flushes the encoder (null frame), closes the partial film and remuxes it into the final
   // one (index first). Idempotent. With no frame added it still writes a valid (empty) file.
   void Finish();

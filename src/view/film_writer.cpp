@@ -142,7 +142,8 @@ void FilmWriter::Impl::Run(std::promise<void>* ready) {
       if (draw) {
         const Frame frame = MakeFrame(scene, *history, snapshot, layout, colormap);
         renderer->DrawOnto(frame, &image);  // `image` holds the frame before: its changes
-        if (encoder) encoder->AddFrame(image);
+        if (encoder)
+          encoder->AddFrame(image, renderer->redrawn() < 1 ? &renderer->redrawn_rects() : nullptr);
         if (options.write_frames) {
           char name[64];
           std::snprintf(name, sizeof name, "/frames/frame_%06ld.png", done);
