@@ -72,7 +72,7 @@ void YuvConverter::Convert(const Image& image, std::uint8_t* const planes[3],
     }
   }
   converted_ = changed ? static_cast<double>(marked) / marked_.size() : 1.0;
-  // Most of the picture: one call over all of it costs less than the tiles' calls.
+  // Most of the picture: one call over all of it, rather than hundreds of tiles.
   if (converted_ > 0.6) {
     converted_ = 1;
     ConvertRect(image, 0, 0, width_, height_, planes, linesize);
