@@ -355,7 +355,7 @@ class SystemScenes(unittest.TestCase):
         import signal
         import threading
         import time
-        # An hour of simulation (about 5 s of work on a quiet machine, far more than the 0.3 s
+        # An hour of simulation (some 20 s of work on a quiet machine, far more than the 0.3 s
         # before the signal: the scene's own 60 s now run in about 0.3 s, and a signal that
         # came after the run would interrupt the next test instead).
         scene = cablefilm.load(SPREAD)
