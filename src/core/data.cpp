@@ -32,7 +32,7 @@ Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, cons
       break;
     case Scheme::kImplicit:
       ComputeAccelerations(m, in, d.water, state.t, state.x, state.v, d.forces, d.a);
-      d.abar = d.a;
+      d.abar = d.abar_before = d.a;
       w.system.Resize(m.last_free() - m.first_free() + 1);
       w.matrix_taut.assign(m.line.links, 0);
       w.snapping.assign(m.line.links, 0);

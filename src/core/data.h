@@ -97,6 +97,10 @@ struct Data {
   // The scheme's memory.
   Points a;               // a_n [m/s^2]
   Points abar;            // implicit: generalized-alpha's pseudo-acceleration abar_n [m/s^2]
+  Points abar_before;     // implicit: abar_{n-1}, for the predictor's slope [m/s^2]
+  double last_step = 0;   // implicit: h_{n-1}, the last step taken (0: none yet) [s]
+  bool smooth = false;    // implicit: at the last step's end every link had tension and no
+                          // station touched the seabed (the predictor's slope holds)
   double proposed_step = 0;  // adaptive schemes: the next step to try [s]
   int refinement = 0;     // explicit, automatic: k, steps asked are cut into 2^k substeps
   double quiet_time = 0;  // explicit, automatic: since a link last went slack or taut [s]

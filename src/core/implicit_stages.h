@@ -60,8 +60,9 @@ class NewtonConvergence {
   int corrections_ = 0;
 };
 
-// The trial step of size h: positions predicted with the pseudo-acceleration carried over,
-// prescribed ends at their positions and velocities at t + h.
+// The trial step of size h: positions predicted with the pseudo-acceleration carried over
+// (and its change over the last step while the line is taut), prescribed ends at their
+// positions and velocities at t + h.
 void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlpha& c,
                  double h);
 // Newton's system at the trial positions: forces and tensions computed, the matrix
