@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/version.h"
 #include "io/result_files.h"
+#include "scene/film_view.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
@@ -44,6 +45,7 @@ NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model, long 
   info.model = model;
   info.initial_state = scene.initial == InitialStateKind::kEquilibrium ? "equilibrium" : "straight";
   info.rows = rows;
+  info.planar = SceneIsPlanar(scene);
   return info;
 }
 

@@ -28,6 +28,9 @@ struct NetcdfResultsInfo {
   // Not an attribute: the rows a complete run writes (0: not known), which decide whether the
   // variables over time are deflated (DeflateResults, io/netcdf_support.h).
   long rows = 0;
+  // Not an attribute: the scene stays in the plane z = 0, so z is zeros throughout (the one
+  // variable along the cable that deflates for next to nothing, DeflateResults).
+  bool planar = false;
 };
 
 // A line's results.nc: every row's positions and tensions.
