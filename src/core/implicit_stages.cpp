@@ -33,16 +33,16 @@ void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlp
   const State& s = d.state;
   Scratch& w = d.scratch;
   const double t1 = s.t + h;
-  // Predictor: the pseudo-acceleration carried over, and its rate of change over the last
-  // step too. The step sets x_{n+1} - (x_n + h v_n + h^2/2 abar_n) = h^2 beta (abar_{n+1} -
-  // abar_n), so a linear extrapolation of abar leaves Newton's first correction the curvature
-  // of abar alone: on P63 at 6000 links 1e-6 m instead of 1e-5, whose smaller turn of the
-  // links lets the kept matrix converge at once (2.3 Newton iterations a step instead of 4.1,
-  // 0.6 of the time; at 60 links 2.0 either way). Only while the line is taut and clear of the
-  // seabed (Data::smooth): where links go slack and taut or stations land, the accelerations
-  // jump, and on the spread mooring a slope cost 7 % more iterations; and only after a step no
-  // shorter than this one (a slope over a shorter step is mostly the scheme's damped ringing,
-  // which the longer step multiplies: rejected steps doubled).
+  // Predictor: the pseudo-acceleration carried over, and its rate of change over the last step
+  // too. The step sets x_{n+1} - (x_n + h v_n + h^2/2 abar_n) = h^2 beta (abar_{n+1} - abar_n),
+  // so a linear extrapolation of abar leaves Newton's first correction the curvature of abar
+  // alone: on P63 at 6000 links 1e-6 m instead of 1e-5, whose smaller turn of the links lets
+  // the kept matrix converge at once (2.3 Newton iterations a step instead of 4.1, 0.6 of the
+  // time; at 600 links 2.0 instead of 2.4, at 60 links 2.0 either way). Only while the line is
+  // taut and clear of the seabed (Data::smooth): where links go slack and taut or stations
+  // land, the accelerations jump, and on the spread mooring a slope cost 7 % more iterations;
+  // and only after a step no shorter than this one (a slope over a shorter step is mostly the
+  // scheme's damped ringing, which the longer step multiplies: rejected steps doubled).
   w.x = s.x;
   const bool slope = d.smooth && d.last_step > 0 && h <= d.last_step;
   const double r = slope ? c.beta * h * h * h / d.last_step : 0.0;  // [s^2]

@@ -86,8 +86,8 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
     // Level 1 when deflated: at 6000 links 2 % larger than level 4 (162 against 159 MB) and
     // 1.1 s less CPU. A file of under kDeflateAboveBytes is not (DeflateResults). Along the
     // cable only z in the plane is: positions and tensions keep most of their bits, so deflate
-    // saved a quarter of their bytes at 100 MB/s of one core, a tenth of the disk's speed (P63 at
-    // 6000 links: 3.2 s of CPU for 97 MB, more than its simulation); zeros deflate at 700 MB/s
+    // saved a quarter to a third of their bytes at 100 MB/s of one core, a tenth of the disk's
+    // speed (P63 at 6000 links: 3.2 s of CPU to save 97 MB of 259); zeros deflate at 700 MB/s
     // to nothing.
     const bool along_cable = dims.size() == 2;
     if (deflate && (!along_cable || (info.planar && std::strcmp(name, "z") == 0)))
