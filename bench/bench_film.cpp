@@ -118,6 +118,11 @@ int main(int argc, char** argv) {
   const int frames = argc > 1 ? std::atoi(argv[1]) : 240;
   const std::string preset = argc > 2 ? argv[2] : "veryfast";
   const int crf = argc > 3 ? std::atoi(argv[3]) : 20;
+  if (argc > 4 || frames < 1 || frames > 100000 || crf < 0 || crf > 51) {
+    std::fprintf(stderr, "usage: bench_film [frames=240, 1 to 100000] [preset=veryfast] "
+                         "[crf=20, 0 to 51]\n");
+    return 2;
+  }
   const std::string dir =
       (std::filesystem::temp_directory_path() / "cablefilm_bench_film").string();
   std::filesystem::create_directories(dir);
