@@ -44,7 +44,7 @@ void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlp
   // and only after a step no shorter than this one (a slope over a shorter step is mostly the
   // scheme's damped ringing, which the longer step multiplies: rejected steps doubled).
   w.x = s.x;
-  const bool slope = d.smooth && d.last_step > 0 && h <= d.last_step;
+  const bool slope = d.smooth && h <= d.last_step;  // (not smooth before the first step)
   const double r = slope ? c.beta * h * h * h / d.last_step : 0.0;  // [s^2]
   for (int j = m.first_free(); j <= m.last_free(); ++j) {
     w.x.col(j) += h * s.v.col(j) + 0.5 * h * h * d.abar.col(j);
