@@ -66,8 +66,9 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
   // A row: x, y, z of every station, the tension of every link, time and the ends' 6.
   const bool deflate =
       DeflateResults(info, sizeof(double) * (kDim * stations_ + links_ + 1 + 2 * kDim));
+  // `zeros`: a variable along the cable known to hold zeros only (z in the plane).
   auto define = [&](const char* name, nc_type type, std::vector<int> dims, const char* units,
-                    const std::string& long_name) {
+                    const std::string& long_name, bool zeros = false) {
     int var = -1;
     NetcdfCheck(nc_def_var(nc, name, type, static_cast<int>(dims.size()), dims.data(), &var), f, name);
     if (dims[0] == dim_time) {
@@ -90,7 +91,7 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
     // speed (P63 at 6000 links: 3.2 s of CPU to save 97 MB of 259); zeros deflate at 700 MB/s
     // to nothing.
     const bool along_cable = dims.size() == 2;
-    if (deflate && (!along_cable || (info.planar && std::strcmp(name, "z") == 0)))
+    if (deflate && (!along_cable || zeros))
       NetcdfCheck(nc_def_var_deflate(nc, var, 1, 1, 1), f, name);
     NetcdfCheck(nc_def_var_fill(nc, var, NC_NOFILL, nullptr), f, name);  // every value is written
     NetcdfText(nc, var, "units", units, f);
@@ -116,7 +117,8 @@ void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
   const char* axis_note[kDim] = {"", " (up; gravity along -y)", " (across the x-y plane)"};
   for (int c = 0; c < kDim; ++c)
     var_x_[c] = define(axis_names[c], NC_DOUBLE, {dim_time, dim_station}, "m",
-                       std::string(axis_long[c]) + " of the station" + axis_note[c]);
+                       std::string(axis_long[c]) + " of the station" + axis_note[c],
+                       c == 2 && info.planar);
   var_tension_ = define("tension", NC_DOUBLE, {dim_time, dim_link}, "N",
                         "tension of the link (0 when slack)");
   for (int var : var_x_) NetcdfText(nc, var, "coordinates", "s", f);
