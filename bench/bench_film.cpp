@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -114,7 +115,7 @@ void RenderAndEncode(Size size, int frames, const std::string& preset, int crf,
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int Bench(int argc, char** argv) {
   const int frames = argc > 1 ? std::atoi(argv[1]) : 240;
   const std::string preset = argc > 2 ? argv[2] : "veryfast";
   const int crf = argc > 3 ? std::atoi(argv[3]) : 20;
@@ -149,4 +150,13 @@ int main(int argc, char** argv) {
   }
   std::filesystem::remove_all(dir);
   return 0;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return Bench(argc, argv);
+  } catch (const std::exception& e) {  // a preset x264 does not know, a renderer that fails
+    std::fprintf(stderr, "bench_film: %s\n", e.what());
+    return 1;
+  }
 }
