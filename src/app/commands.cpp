@@ -181,8 +181,9 @@ class ProgressSink : public RowSink {
 // Snaps unresolved in time make the peak depend on where the steps fall (SnapMonitor): the
 // run made again, in memory, with its step control four to ten times stricter, says by how
 // much (issue 21, item 4). Implicit with the automatic step: the tolerance / 10 (the local
-// error grows as h^3: steps about 2.2 times shorter); a fixed step: / 4; the explicit "auto":
-// its safety factor / 4. Sets summary's refinement, refined_peak, refined_peak_change.
+// error grows as h^3: steps about 2.2 times shorter), and the safety factor / 4 of its
+// explicit steps through snaps if it took any; a fixed step: / 4; the explicit "auto": its
+// safety factor / 4. Sets summary's refinement, refined_peak, refined_peak_change.
 void CheckPeakUnderRefinement(const SceneDef& scene, const Model& m, RunSummary* s) {
   SceneDef refined = scene;
   SimulationDef& sim = refined.simulation;
@@ -193,6 +194,10 @@ void CheckPeakUnderRefinement(const SceneDef& scene, const Model& m, RunSummary*
   } else if (s->tolerance > 0) {
     sim.tolerance = s->tolerance / 10;
     how = "tolerance / 10";
+    if (s->stats.snap_windows > 0) {  // and its explicit steps through snaps
+      sim.safety_factor /= 4;
+      how += ", safety_factor / 4";
+    }
   } else {
     sim.safety_factor /= 4;
     how = "safety_factor / 4";

@@ -3,16 +3,32 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/explicit_snaps.h"
 #include "core/seabed_friction.h"
 #include "core/stability.h"
 
 namespace cablefilm {
+
+namespace {
+
+// The explicit scheme's constants (explicit_step.h).
+void PrepareExplicitSteps(const Model& m, const StepOptions& options, Scratch& w) {
+  const int n = m.stations();
+  w.least_inertia.resize(n);
+  for (int j = 0; j < n; ++j)
+    w.least_inertia[j] = m.line.cable_mass[j] + m.line.prism_mass.col(j).minCoeff();
+  if (options.safety_factor > 0)
+    w.max_substep = options.safety_factor * ComputeStabilityLimit(m).time_step;
+}
+
+}  // namespace
 
 Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, const State& state) {
   const int n = m.stations(), links = m.line.links;
   Data d;
   d.options = options;
   d.state = state;
+  d.start_time = state.t;
   d.forces.Resize(links);
   ResetFrictionAnchors(m, state.x, d.forces.geometry);  // the state starts at rest on the bed
   d.water = SceneWater(m);
@@ -24,11 +40,7 @@ Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, cons
   switch (options.scheme) {
     case Scheme::kExplicit:
       ComputeAccelerations(m, in, d.water, state.t, state.x, state.v, d.forces, d.a);
-      w.least_inertia.resize(n);
-      for (int j = 0; j < n; ++j)
-        w.least_inertia[j] = m.line.cable_mass[j] + m.line.prism_mass.col(j).minCoeff();
-      if (options.safety_factor > 0)
-        w.max_substep = options.safety_factor * ComputeStabilityLimit(m).time_step;
+      PrepareExplicitSteps(m, options, w);
       break;
     case Scheme::kImplicit:
       ComputeAccelerations(m, in, d.water, state.t, state.x, state.v, d.forces, d.a);
@@ -40,6 +52,10 @@ Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, cons
       // A displacement this small changes a link's tension by a negligible fraction of its
       // stiffness times its length: 1e-9 of the shortest link.
       w.newton_tolerance = 1e-9 * m.line.rest_length.minCoeff();
+      if (options.explicit_snaps) {
+        PrepareExplicitSteps(m, options, w);
+        w.snap_window = SnapWindow(d.snaps);
+      }
       break;
     case Scheme::kInextensible:
       w.constraints = ConstraintSolver(m);

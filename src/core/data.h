@@ -42,7 +42,11 @@ struct StepOptions {
   }
   double safety_factor = 0;    // explicit: > 0, automatic substeps of at most this fraction of
                                // the stability limit, refined where links snap
-                               // (explicit_step.h); 0: the steps asked, as they are
+                               // (explicit_step.h); 0: the steps asked, as they are; implicit
+                               // with explicit_snaps: the same, for the steps through snaps
+  // Implicit, one line: a step that snaps a link taut too fast for it is left to explicit steps
+  // (explicit_snaps.h; needs safety_factor > 0).
+  bool explicit_snaps = false;
 };
 
 struct State {
@@ -56,6 +60,8 @@ struct StepStats {
   long rejected = 0;           // steps rejected and retried shorter (explicit: refined)
   long newton_iterations = 0;  // in all (the implicit scheme)
   int finest_refinement = 0;   // explicit, automatic: the finest k of 2^k substeps a step
+  long snap_windows = 0;       // implicit: times it left a snap to explicit steps
+  long explicit_steps = 0;     // ... and the explicit steps taken in those windows (in steps)
   StepRecord record;           // step range, and links snapping taut (elastic schemes)
 };
 
@@ -85,7 +91,9 @@ struct Scratch {
   // Constants of the model and the options, computed once:
   Eigen::VectorXd least_inertia;  // explicit: m_j + min(m^x_j, m^y_j), station j's least
                                   // inertia in any direction [kg]
-  double max_substep = 0;         // explicit, automatic: safety x the stability limit [s]
+  double max_substep = 0;         // explicit, automatic (and implicit's steps through snaps):
+                                  // safety x the stability limit [s]
+  double snap_window = 0;         // implicit, explicit_snaps: the window after a snap [s]
   double newton_tolerance = 0;    // implicit: Newton has converged when |dx| is below it [m]
 };
 
@@ -104,6 +112,9 @@ struct Data {
   double proposed_step = 0;  // adaptive schemes: the next step to try [s]
   int refinement = 0;     // explicit, automatic: k, steps asked are cut into 2^k substeps
   double quiet_time = 0;  // explicit, automatic: since a link last went slack or taut [s]
+  double start_time = 0;  // the state's time when the Data was made [s]
+  double explicit_until = -1;  // implicit: explicit steps through a snap until then [s]
+                               // (explicit_snaps.h); below the time: none
   SnapMonitor snaps;      // which links are taut; the steps' record
   StepStats stats;
   Scratch scratch;

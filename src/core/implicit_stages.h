@@ -122,14 +122,18 @@ int WorstLink(const Model& m, const Data& d);
 
 // The adaptive loop of an implicit step of dt [s], for one line or a system of them. `s`
 // gives: double& Time(), double& ProposedStep(), long& Rejected(), bool Solve(h),
-// double Error(h), void Accept(h) (settle and commit), int WorstLink(), and double
+// double Error(h), void Accept(h) (settle and commit), int WorstLink(), double
 // NextKink(t): the first time after t [s] where a prescribed motion's velocity jumps (a linear
-// table's rows; +infinity if none), on which a step is made to land rather than straddle it.
-// The error is held below `options`' tolerance at the step's start (StepOptions::ToleranceAt;
-// 0: the steps asked, uncontrolled).
+// table's rows; +infinity if none), on which a step is made to land rather than straddle it,
+// and bool HandsOff(h): whether a solved step within the tolerance is to be left to another
+// scheme (explicit_snaps.h) instead of taken. The error is held below `options`' tolerance at
+// the step's start (StepOptions::ToleranceAt; 0: the steps asked, uncontrolled). Returns true
+// when dt is done, false when a step was handed off (the time then at that step's start).
+// `largest` [s]: the longest step (the interval asked of Step(), of which dt may be the rest;
+// 0: dt).
 template <class Stepper>
-void AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelFlag* stop,
-                           double dt) {
+bool AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelFlag* stop,
+                           double dt, double largest = 0) {
   constexpr int kMaxRejections = 40;
   constexpr double kSmallestStepFraction = 1e-9;  // of the interval asked of Step()
   // The next step is this fraction of the one that would just meet the tolerance (the error
@@ -140,12 +144,13 @@ void AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelF
   double& t = s.Time();
   double& proposed = s.ProposedStep();
   const double t_end = t + dt;
-  if (!(proposed > 0) || proposed > dt) proposed = dt;
+  if (!(largest > 0)) largest = dt;
+  if (!(proposed > 0) || proposed > largest) proposed = largest;
   int failures = 0;  // consecutive rejections
   // A step this much smaller than the one asked for makes no useful progress: the motion (an
   // end's acceleration, a snap) is faster than any step can follow; say so rather than crawl.
-  const double smallest = kSmallestStepFraction * dt;
-  while (t < t_end - 1e-12 * dt) {
+  const double smallest = kSmallestStepFraction * largest;
+  while (t < t_end - 1e-12 * largest) {
     ThrowIfCancelled(stop, "the implicit step");
     const double tolerance = options.ToleranceAt(t);
     double h = std::min(proposed, t_end - t);
@@ -159,7 +164,7 @@ void AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelF
     if (h < smallest && h < t_end - t) {
       std::ostringstream os;
       os << "the implicit step fell to " << h << " s at t = " << t << " s (below "
-         << kSmallestStepFraction << " of the " << dt << " s asked for, " << s.Rejected()
+         << kSmallestStepFraction << " of the " << largest << " s asked for, " << s.Rejected()
          << " steps rejected in all): the motion is faster than the scheme can follow (an "
             "end's motion too violent, or an unresolvable snap)";
       throw BlowUpError(os.str(), t, s.WorstLink());
@@ -186,6 +191,7 @@ void AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelF
       proposed = error > 0 ? h * std::max(0.2, kStepSafety * std::cbrt(tolerance / error)) : 0.5 * h;
       continue;
     }
+    if (s.HandsOff(h)) return false;
     s.Accept(h);
     failures = 0;
     if (truncated) continue;  // a short last piece says nothing about the step size
@@ -195,9 +201,10 @@ void AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelF
     // A step that would shrink by less than a tenth is kept: a dead band, or every row of P63
     // that its error fills above half the tolerance ends in a sliver (323 steps in its first
     // 10 s against the rows' 300).
-    proposed = std::min(dt, h * (growth >= 0.9 && growth < 1 ? 1.0 : growth));
+    proposed = std::min(largest, h * (growth >= 0.9 && growth < 1 ? 1.0 : growth));
   }
   t = t_end;
+  return true;
 }
 
 }  // namespace cablefilm

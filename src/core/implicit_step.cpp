@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/explicit_snaps.h"
 #include "core/implicit_stages.h"
 
 namespace cablefilm {
@@ -24,6 +25,12 @@ struct LineStepper {
   double NextKink(double t) const {
     if (!ClockAsScene(in)) return std::numeric_limits<double>::infinity();
     return std::min(m.ends.start.NextKink(t), m.ends.end.NextKink(t));
+  }
+  double handed_off = 0;  // the step it left to explicit ones [s]
+  bool HandsOff(double h) {
+    if (!StepsThroughSnaps(d) || !SnapsUnresolved(m, d, h)) return false;
+    handed_off = h;
+    return true;
   }
   void Accept(double h) {
     SettleLandings(m, d, h);
@@ -84,7 +91,20 @@ GeneralizedAlpha GeneralizedAlphaCoefficients(double rho_inf) {
 
 void ImplicitStep(const Model& m, Data& d, const Inputs& in, double dt) {
   LineStepper stepper{m, d, in, GeneralizedAlphaCoefficients(d.options.rho_inf)};
-  AdaptiveImplicitSteps(stepper, d.options, in.stop, dt);
+  const double t_end = d.state.t + dt;
+  // Implicit steps, and explicit ones through the snaps they hand off (explicit_snaps.h).
+  double rest = dt;  // [s] (dt itself unless a window took part of it: t + dt - t is not dt)
+  for (;;) {
+    if (d.state.t < d.explicit_until) {
+      StepExplicitWindow(m, d, in, t_end);
+      if (!(d.state.t < t_end)) break;
+      rest = t_end - d.state.t;
+    }
+    if (AdaptiveImplicitSteps(stepper, d.options, in.stop, rest, dt)) break;
+    EnterExplicitWindow(m, d, in, stepper.handed_off);
+    rest = t_end - d.state.t;
+  }
+  d.state.t = t_end;
   CheckStateSane(m, d.state, d.forces.geometry.length);
 }
 

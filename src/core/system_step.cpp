@@ -225,6 +225,7 @@ struct SystemStepper {
   double& ProposedStep() { return sd.proposed_step; }
   long& Rejected() { return sd.stats.rejected; }
   int WorstLink() const { return WorstLinkOf(nullptr); }
+  bool HandsOff(double) const { return false; }  // a system's snaps: implicit steps
   double NextKink(double t) const {
     double kink = std::numeric_limits<double>::infinity();
     if (!ClockAsScene(in)) return kink;

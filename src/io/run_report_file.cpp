@@ -1,5 +1,6 @@
 #include "io/run_report_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -39,6 +40,10 @@ void WriteRunReport(const std::string& path, const RunSummary& f) {
   std::fprintf(out, "computer_time = %.6g        # [s]\n", f.wall);
   std::fprintf(out, "steps = %ld\nrejected_steps = %ld\nnewton_iterations = %ld\n", f.stats.steps,
                f.stats.rejected, f.stats.newton_iterations);
+  std::fprintf(out, "snap_windows = %ld           # times the implicit steps left a snap to explicit ones\n",
+               f.stats.snap_windows);
+  std::fprintf(out, "explicit_steps = %ld         # ... the explicit steps among `steps`\n",
+               f.stats.explicit_steps);
   std::fprintf(out, "smallest_step = %.17g        # [s]\nlargest_step = %.17g         # [s]\n",
                f.stats.record.smallest_step, f.stats.record.largest_step);
   std::fprintf(out, "snaps = %ld                  # links going from slack to taut\n",
@@ -111,6 +116,8 @@ bool ReadRunReport(const std::string& path, RunSummary* s) {
   s->stats.steps = whole("steps");
   s->stats.rejected = whole("rejected_steps");
   s->stats.newton_iterations = whole("newton_iterations");
+  s->stats.snap_windows = std::max(0L, whole("snap_windows"));  // (absent before they were)
+  s->stats.explicit_steps = std::max(0L, whole("explicit_steps"));
   s->stats.record.smallest_step = number("smallest_step", 0);
   s->stats.record.largest_step = number("largest_step", 0);
   s->stats.record.snaps = whole("snaps");

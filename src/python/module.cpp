@@ -162,6 +162,8 @@ py::dict StatsDict(const MemoryRun& r) {
   d["newton_iterations"] = s.stats.newton_iterations;
   d["snaps"] = s.stats.record.snaps;
   d["unresolved_snaps"] = s.stats.record.unresolved_snaps;
+  d["snap_windows"] = s.stats.snap_windows;
+  d["explicit_steps"] = s.stats.explicit_steps;
   d["equilibrium_iterations"] = r.run.equilibrium.iterations;
   d["equilibrium_residual"] = r.run.equilibrium.residual;
   return d;

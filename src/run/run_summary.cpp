@@ -113,6 +113,9 @@ std::string DescribeSteps(const StepStats& stats) {
     os << ", " << static_cast<double>(stats.newton_iterations) / std::max(1L, stats.steps)
        << " Newton iterations per step";
   }
+  if (stats.snap_windows > 0)
+    os << "; " << stats.explicit_steps << " of the steps explicit, through "
+       << stats.snap_windows << (stats.snap_windows == 1 ? " snap" : " snaps");
   return os.str();
 }
 

@@ -41,6 +41,9 @@ TimeGrid ChooseTimeGrid(const Model& m, const SimulationDef& sim, double interva
     o.tolerance =
         sim.tolerance > 0 ? sim.tolerance : kDefaultRelativeTolerance * m.line.total_length();
     if (o.scheme == Scheme::kImplicit) {
+      // Snaps that the steps would jump over: explicit steps through them (explicit_snaps.h).
+      o.explicit_snaps = sim.explicit_snaps;
+      o.safety_factor = sim.safety_factor;
       o.start_end = sim.start_duration >= 0 ? sim.start_duration : StartDuration(m);
       o.start_tolerance =
           sim.start_tolerance > 0 ? sim.start_tolerance : o.tolerance / kStartToleranceDivisor;

@@ -164,7 +164,10 @@ struct SimulationDef {
   double time_step = 0.0;        // [s]; 0 = "auto" (from the stability limit)
   double tolerance = 0;          // implicit, auto step: local position error per step [m];
                                  // 0 = 1e-6 of the cable's length
-  double safety_factor = 0.8;    // fraction of the stability limit used by "auto"
+  double safety_factor = 0.8;    // fraction of the stability limit used by "auto" (and by
+                                 // the implicit scheme's explicit steps through snaps)
+  bool explicit_snaps = true;    // implicit, auto step: snaps it would jump over stepped
+                                 // explicitly (snap_steps = "explicit" or "implicit")
   // Implicit, auto step: the tolerance while the motion starts [m] (0 = tolerance / 20) and how
   // long the start lasts [s] (negative = "auto": the ramps of eq. (3) and of the waves).
   double start_tolerance = 0;

@@ -741,6 +741,8 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
             ? IntegratorChoice::kExplicit
             : IntegratorChoice::kImplicit;
     scene.simulation.rho_infinity = r.Ranged("rho_infinity", 0.5, false, 0.0, 1.0, "");
+    scene.simulation.explicit_snaps =
+        r.Choice("snap_steps", "explicit", {"explicit", "implicit"}) == "explicit";
     r.Finish();
   }
   if (const toml::table* t = top.SubTable("film", false)) {

@@ -1,0 +1,96 @@
+#include "core/explicit_snaps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/explicit_step.h"
+
+namespace cablefilm {
+
+double SnapWindow(const SnapMonitor& snaps) {
+  double crossing = 0, rise = 0;  // [s]
+  for (double tau : snaps.snap_times()) {
+    if (!std::isfinite(tau)) continue;
+    crossing += std::sqrt(2.0) * tau / M_PI;
+    rise = std::max(rise, tau);
+  }
+  return kSnapWindowCrossings * crossing + kSnapWindowRises * rise;
+}
+
+bool StepsThroughSnaps(const Data& d) {
+  return d.options.explicit_snaps && d.scratch.max_substep > 0 && d.scratch.snap_window > 0;
+}
+
+bool SnapsUnresolved(const Model& m, const Data& d, double h) {
+  const State& s = d.state;
+  const Scratch& w = d.scratch;
+  const LinkGeometry& g = d.forces.geometry;  // the trial step's end
+  const Eigen::VectorXd& tau = d.snaps.snap_times();
+  const double floor = kSnapLoadFraction * d.forces.tension.maxCoeff();  // [N]
+  for (int k = 0; k < m.line.links; ++k) {
+    const double l = m.line.rest_length[k];  // [m]
+    if (!(g.length[k] > l) || !(h > kResolvedSnapFraction * tau[k])) continue;
+    const Vec d0 = s.x.col(k + 1) - s.x.col(k);
+    if (d0.squaredNorm() > l * l) continue;  // taut already at the step's start
+    // The closing speed along the link [m/s], at the step's start or its end, whichever is
+    // larger (a link at rest yanked taut closes within the step).
+    const double L0 = d0.norm();
+    const Vec t1 = g.tangent.col(k);
+    double u = (w.v.col(k + 1) - w.v.col(k)).dot(t1);
+    if (L0 > 0) u = std::max(u, (s.v.col(k + 1) - s.v.col(k)).dot(d0) / L0);
+    const double K = m.line.axial_stiffness[k] / l;  // [N/m]
+    if (u * K * tau[k] / M_PI > floor) return true;
+  }
+  return false;
+}
+
+void EnterExplicitWindow(const Model& m, Data& d, const Inputs& in, double h) {
+  State& s = d.state;
+  // The forces of the state (the trial step left its own in d.forces), and its accelerations,
+  // which the explicit step carries.
+  ComputeAccelerations(m, in, d.water, s.t, s.x, s.v, d.forces, d.a);
+  d.explicit_until = s.t + h + d.scratch.snap_window;
+  // What the run has cost so far against what the explicit scheme would have, in explicit
+  // steps: when snaps come so often that the windows and the implicit steps between them cost
+  // more, the explicit steps go on to the run's end (never dearer than the explicit scheme by
+  // more than the run's cost up to here).
+  const double explicit_alone = (s.t - d.start_time) / d.scratch.max_substep;
+  const double spent = static_cast<double>(d.stats.explicit_steps) +
+                       kNewtonIterationCost * static_cast<double>(d.stats.newton_iterations);
+  if (spent > explicit_alone) d.explicit_until = std::numeric_limits<double>::infinity();
+  d.refinement = 0;
+  d.quiet_time = 0;
+  ++d.stats.snap_windows;
+}
+
+void StepExplicitWindow(const Model& m, Data& d, const Inputs& in, double t_end) {
+  State& s = d.state;
+  // A window ending a rounding short of t_end is taken to it (no sliver of an implicit step).
+  if (d.explicit_until < t_end && t_end - d.explicit_until < 1e-9 * d.scratch.snap_window)
+    d.explicit_until = t_end;
+  const double stop = std::min(t_end, d.explicit_until);
+  const double span = stop - s.t;
+  const long before = d.stats.steps;
+  if (span > 0) {
+    // Steps as the explicit scheme's time grid cuts an interval: equal ones of at most its
+    // substep (ExplicitStep refines them where links go slack or taut).
+    const long pieces = std::max(1L, static_cast<long>(std::ceil(span / d.scratch.max_substep - 1e-9)));
+    const double t0 = s.t, h = span / static_cast<double>(pieces);
+    for (long i = 1; i <= pieces; ++i) {
+      ExplicitStep(m, d, in, h);
+      s.t = i == pieces ? stop : t0 + static_cast<double>(i) * h;
+    }
+  }
+  d.stats.explicit_steps += d.stats.steps - before;
+  if (s.t < d.explicit_until) return;
+  // The implicit scheme starts afresh from the state, as at t = 0 (MakeData): its acceleration
+  // memory the state's true accelerations (the explicit step's a is at its predicted velocity).
+  ComputeAccelerations(m, in, d.water, s.t, s.x, s.v, d.forces, d.a);
+  d.abar = d.abar_before = d.a;
+  d.last_step = 0;
+  d.smooth = false;
+  d.explicit_until = -1;
+}
+
+}  // namespace cablefilm
