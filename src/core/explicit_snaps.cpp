@@ -27,7 +27,7 @@ bool SnapsUnresolved(const Model& m, const Data& d, double h) {
   const Scratch& w = d.scratch;
   const LinkGeometry& g = d.forces.geometry;  // the trial step's end
   const Eigen::VectorXd& tau = d.snaps.snap_times();
-  const double floor = kSnapLoadFraction * d.forces.tension.maxCoeff();  // [N]
+  double floor = -1;  // kSnapLoadFraction of the largest tension [N], once a snap needs it
   for (int k = 0; k < m.line.links; ++k) {
     const double l = m.line.rest_length[k];  // [m]
     if (!(g.length[k] > l) || !(h > kResolvedSnapFraction * tau[k])) continue;
@@ -40,6 +40,7 @@ bool SnapsUnresolved(const Model& m, const Data& d, double h) {
     double u = (w.v.col(k + 1) - w.v.col(k)).dot(t1);
     if (L0 > 0) u = std::max(u, (s.v.col(k + 1) - s.v.col(k)).dot(d0) / L0);
     const double K = m.line.axial_stiffness[k] / l;  // [N/m]
+    if (floor < 0) floor = kSnapLoadFraction * d.forces.tension.maxCoeff();
     if (u * K * tau[k] / M_PI > floor) return true;
   }
   return false;
