@@ -76,7 +76,8 @@ void StepExplicitWindow(const Model& m, Data& d, const Inputs& in, double t_end)
   if (span > 0) {
     // Steps as the explicit scheme's time grid cuts an interval: equal ones of at most its
     // substep (ExplicitStep refines them where links go slack or taut).
-    const long pieces = std::max(1L, static_cast<long>(std::ceil(span / d.scratch.max_substep - 1e-9)));
+    const double substeps = std::ceil(span / d.scratch.max_substep - 1e-9);
+    const long pieces = std::max(1L, static_cast<long>(substeps));
     const double t0 = s.t, h = span / static_cast<double>(pieces);
     for (long i = 1; i <= pieces; ++i) {
       ExplicitStep(m, d, in, h);

@@ -6,12 +6,13 @@
 // a clump weight the default's peak was 18.5 kN against the explicit scheme's 23.9 kN, and no
 // shorter implicit step closed the gap (docs/validation.md). So such a step is not taken:
 // from its start the line goes on with the explicit scheme's automatic steps (explicit_step.h,
-// on the snap's own rise time, refined where links change between slack and taut) for a
-// window of two axial crossings of the line after the snap (the snap's wave down the line and
-// back) and two rise times (SnapWindow), and then the implicit scheme takes over again from the state the
-// explicit steps reached. The explicit steps cost what the explicit scheme would cost over
-// the windows alone; a run whose snaps come so often that windows and implicit steps together
-// cost more than the explicit scheme would have goes on with explicit steps to its end.
+// on the snap's own rise time, refined where links change between slack and taut) over that
+// step and a window after it of two axial crossings of the line (the snap's wave down the line
+// and back) and two rise times (SnapWindow); then the implicit scheme takes over again from the
+// state the explicit steps reached. The explicit steps cost what the explicit scheme would
+// cost over the windows alone; a run whose snaps come so often that windows and implicit steps
+// together cost more than the explicit scheme would have goes on with explicit steps to its
+// end.
 //
 // Only snaps whose load matters: the snap load of a link closing at speed u between its two
 // stations is u sqrt(K m_r) = u K tau / pi (K = EA / l, m_r the stations' reduced mass), and
@@ -45,8 +46,8 @@ bool StepsThroughSnaps(const Data& d);
 
 // After an implicit trial step of h [s] from the state (its end in d.scratch, its link
 // lengths and tensions in d.forces): a link that was slack at the state and is taut at the
-// step's end, within a step longer than kResolvedSnapFraction of its tau, with a snap load above
-// kSnapLoadFraction of the largest tension.
+// step's end, within a step longer than kResolvedSnapFraction of its tau, with a snap load
+// above kSnapLoadFraction of the largest tension.
 bool SnapsUnresolved(const Model& m, const Data& d, double h);
 
 // Leaves the implicit step of h [s] that snapped: the state's forces and (true) accelerations
