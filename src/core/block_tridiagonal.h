@@ -1,8 +1,11 @@
 #pragma once
 // A linear system whose matrix is block tridiagonal with kDim x kDim blocks, one block row per station:
 //   lower_i x_{i-1} + diag_i x_i + upper_i x_{i+1} = rhs_i.
-// Solved by block Gaussian elimination without pivoting (the block Thomas algorithm) in O(n);
-// fine for the systems here, which are block diagonally dominant or symmetric definite.
+// Solved by block Gaussian elimination without pivoting in O(n), from both ends towards the
+// middle row (a twisted block Thomas algorithm: the two chains of dependent 3x3 inverses and
+// products run side by side in the processor, where one chain from the top waits on each
+// inverse in turn); fine for the systems here, which are block diagonally dominant or
+// symmetric definite.
 // A range of its rows (the interior of a line whose end stations are shared with other lines,
 // system_step.h) may be factored once and then solved for several right-hand sides.
 #include "core/vec.h"
@@ -38,7 +41,8 @@ class BlockTridiagonal {
   void SolveRange(std::vector<Block>& b) const;
 
   int first_ = 0, last_ = -1;  // the factored range
-  std::vector<Mat> c_prime_;   // eliminated upper blocks
+  int middle_ = 0;             // its row where the eliminations from both ends meet
+  std::vector<Mat> c_prime_;   // eliminated upper blocks above the middle row, lower below it
   std::vector<Mat> inverse_;   // inverses of the eliminated pivots
 };
 

@@ -159,13 +159,19 @@ void ComputeStationForces(const Model& m, const Water& water, const LinkGeometry
   AddExternalForces(m, water, g, v, force);
 }
 
-Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
-  if (m.has_waves()) return WaveStationInertia(m, g, j);
+void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scale, Mat& block) {
+  if (m.has_waves()) {
+    block += scale * WaveStationInertia(m, g, j);
+    return;
+  }
   // m_j + m^x_j on the diagonal, plus half the entrained-fluid mass e of each adjoining link
   // across it, e (I - t t^T) / 2: the I, J and -K terms of eq. (1) (I - t t^T = n n^T in the
   // plane); and half its tangential added mass e^t along it, e^t t t^T / 2 (0 unless given).
   // Written out entry by entry (symmetric): this runs for every station in every Newton
-  // iteration and explicit step, where Eigen's general expressions cost twice as much.
+  // iteration and explicit step, where Eigen's general expressions cost twice as much; and
+  // added to the block entry by entry, not returned as a matrix that the caller reads two
+  // entries at a time (entries stored one by one and loaded in pairs stall the store
+  // forwarding: a sixth of the Newton matrix's inertia part).
   double d0 = m.line.cable_mass[j] + m.line.prism_mass(0, j);
   double d1 = m.line.cable_mass[j] + m.line.prism_mass(1, j);
   double d2 = m.line.cable_mass[j] + m.line.prism_mass(2, j);
@@ -188,8 +194,20 @@ Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
     m02 += et * tx * tz;
     m12 += et * ty * tz;
   }
-  Mat M;
-  M << d0, m01, m02, m01, d1, m12, m02, m12, d2;
+  block(0, 0) += scale * d0;
+  block(1, 0) += scale * m01;
+  block(2, 0) += scale * m02;
+  block(0, 1) += scale * m01;
+  block(1, 1) += scale * d1;
+  block(2, 1) += scale * m12;
+  block(0, 2) += scale * m02;
+  block(1, 2) += scale * m12;
+  block(2, 2) += scale * d2;
+}
+
+Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
+  Mat M = Mat::Zero();
+  AddStationInertia(m, g, j, 1.0, M);
   return M;
 }
 

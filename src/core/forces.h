@@ -123,6 +123,8 @@ void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g
 // with half of each adjoining link's tangential added mass along it when given. With waves the
 // added masses are those of the wet part (g.sea.wet; all wet if g.sea is empty).
 Mat StationInertia(const Model& m, const LinkGeometry& g, int j);
+// block += scale StationInertia(m, g, j), entry by entry (the Newton matrix's diagonal blocks).
+void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scale, Mat& block);
 // StationInertia(m, g, j) * a without the matrix (the implicit scheme's residual, every
 // station every Newton iteration) [N].
 Vec StationInertiaTimes(const Model& m, const LinkGeometry& g, int j, const Vec& a);
