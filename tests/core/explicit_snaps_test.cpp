@@ -78,7 +78,8 @@ TEST(ExplicitSnaps, WindowCoversTheSnap) {
 }
 
 struct SceneRun {
-  double peak;  // the largest tension of the rows [N]
+  double peak;      // the largest tension of the rows [N]
+  double snap_rms;  // the RMS of the rows' largest tensions from 7 s on, where it snaps [N]
   StepStats stats;
 };
 
@@ -90,12 +91,14 @@ SceneRun RunSnappingLine(IntegratorChoice integrator) {
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
   State state = SolveEquilibrium(m);
   auto stepper = testing::MakeStepper(m, grid);
-  double peak = 0;
-  testing::Simulate(m, *stepper, state, grid, [&](const State&, const Eigen::VectorXd& T) {
+  double peak = 0, squares = 0;
+  int rows = 0;
+  testing::Simulate(m, *stepper, state, grid, [&](const State& s, const Eigen::VectorXd& T) {
     peak = std::max(peak, T.maxCoeff());
+    if (s.t >= 7.0) squares += T.maxCoeff() * T.maxCoeff(), ++rows;
     return true;
   });
-  return {peak, stepper->stats()};
+  return {peak, std::sqrt(squares / std::max(rows, 1)), stepper->stats()};
 }
 
 // The shipped snapping line with the defaults (implicit, "auto"): its snap loads are of the
@@ -107,17 +110,21 @@ TEST(ExplicitSnaps, SnappingLineDefaultAgainstTheExplicitScheme) {
   // kNewtonIterationCost each.
   const double work = static_cast<double>(fallback.stats.explicit_steps) +
                       kNewtonIterationCost * static_cast<double>(fallback.stats.newton_iterations);
-  std::printf("[ snaps ] snapping line: default peak %.1f N (%ld steps, %ld explicit through %ld "
-              "snaps, %ld Newton iterations: %.0f explicit steps' work), explicit %.1f N (%ld "
-              "steps)\n",
-              fallback.peak, fallback.stats.steps, fallback.stats.explicit_steps,
-              fallback.stats.snap_windows, fallback.stats.newton_iterations, work,
-              reference.peak, reference.stats.steps);
+  std::printf("[ snaps ] snapping line: default peak %.1f N, snaps' RMS %.1f N (%ld steps, %ld "
+              "explicit through %ld snaps, %ld Newton iterations: %.0f explicit steps' work); "
+              "explicit %.1f N, %.1f N (%ld steps)\n",
+              fallback.peak, fallback.snap_rms, fallback.stats.steps,
+              fallback.stats.explicit_steps, fallback.stats.snap_windows,
+              fallback.stats.newton_iterations, work, reference.peak, reference.snap_rms,
+              reference.stats.steps);
   EXPECT_GT(fallback.stats.snap_windows, 0);
-  // Snap loads of a line without damping are not converged at 0.05 s rows: the explicit
-  // scheme's own peak moves 15 % between safety factors 0.8 and 0.2 (5620 and 6444 N,
-  // docs/validation.md). Within 25 % of it; the implicit steps alone gave 1845 N (-67 %).
-  EXPECT_NEAR(fallback.peak, reference.peak, 0.25 * reference.peak);
+  // A single snap peak of a line without damping is chaotic: a change of round-off in the
+  // statics moved the explicit scheme's from 5620 to 4860 N and the default's from 4808 to
+  // 4944 N. Over the 60 rows of its snaps (7-10 s) the RMS of the largest tension is steady:
+  // the explicit scheme's 1888, 2007 and 1790 N at safety factors 0.8, 0.4 and 0.2 (6 %); the
+  // default's 1643 and 1581 N in two builds whose round-off differs (0.84-0.87 of it: the
+  // ringing after each window is damped); the implicit steps alone 336 N (0.18). Within 25 %.
+  EXPECT_NEAR(fallback.snap_rms, reference.snap_rms, 0.25 * reference.snap_rms);
   // The cost guard: no more work than the explicit scheme's steps (measured 0.73 of them).
   EXPECT_LE(work, static_cast<double>(reference.stats.steps));
 }
