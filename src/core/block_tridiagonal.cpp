@@ -27,6 +27,22 @@ namespace {
   return true;
 }
 
+// pivot = D - A B, entry by entry in scalars (as the inverse: no entry stored alone and then
+// loaded in a pair).
+[[gnu::always_inline]] inline void EliminatedPivot(const Mat& D, const Mat& A, const Mat& B,
+                                                   Mat& pivot) {
+  for (int c = 0; c < kDim; ++c)
+    for (int r = 0; r < kDim; ++r)
+      pivot(r, c) = D(r, c) - (A(r, 0) * B(0, c) + A(r, 1) * B(1, c) + A(r, 2) * B(2, c));
+}
+
+// C = A B, likewise.
+[[gnu::always_inline]] inline void Product(const Mat& A, const Mat& B, Mat& C) {
+  for (int c = 0; c < kDim; ++c)
+    for (int r = 0; r < kDim; ++r)
+      C(r, c) = A(r, 0) * B(0, c) + A(r, 1) * B(1, c) + A(r, 2) * B(2, c);
+}
+
 }  // namespace
 
 void BlockTridiagonal::Resize(int n) {
@@ -45,22 +61,6 @@ void BlockTridiagonal::SetZero() {
     upper[i].setZero();
     rhs[i].setZero();
   }
-}
-
-// pivot = D - A B, entry by entry in scalars (as the inverse: no entry stored alone and then
-// loaded in a pair).
-[[gnu::always_inline]] inline void EliminatedPivot(const Mat& D, const Mat& A, const Mat& B,
-                                                   Mat& pivot) {
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r)
-      pivot(r, c) = D(r, c) - (A(r, 0) * B(0, c) + A(r, 1) * B(1, c) + A(r, 2) * B(2, c));
-}
-
-// C = A B, likewise.
-[[gnu::always_inline]] inline void Product(const Mat& A, const Mat& B, Mat& C) {
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r)
-      C(r, c) = A(r, 0) * B(0, c) + A(r, 1) * B(1, c) + A(r, 2) * B(2, c);
 }
 
 bool BlockTridiagonal::Factor(int first, int last) {

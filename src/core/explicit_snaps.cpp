@@ -30,9 +30,9 @@ bool SnapsUnresolved(const Model& m, const Data& d, double h) {
   double floor = -1;  // kSnapLoadFraction of the largest tension [N], once a snap needs it
   for (int k = 0; k < m.line.links; ++k) {
     const double l = m.line.rest_length[k];  // [m]
-    if (!(g.length[k] > l) || !(h > kResolvedSnapFraction * tau[k])) continue;
+    // Slack at the step's start (as the snap monitor saw the state), taut at its end.
+    if (d.snaps.taut(k) || !(g.length[k] > l) || !(h > kResolvedSnapFraction * tau[k])) continue;
     const Vec d0 = s.x.col(k + 1) - s.x.col(k);
-    if (d0.squaredNorm() > l * l) continue;  // taut already at the step's start
     // The closing speed along the link [m/s], at the step's start or its end, whichever is
     // larger (a link at rest yanked taut closes within the step).
     const double L0 = d0.norm();

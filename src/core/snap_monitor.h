@@ -39,6 +39,8 @@ class SnapMonitor {
   // Only the step's length (a scheme without slack links: the inextensible one).
   void ObserveStep(double h);
   const StepRecord& record() const { return record_; }
+  // Whether link j was taut (stretched beyond its rest length) at the last state observed.
+  bool taut(int j) const { return taut_[j]; }
   // tau_{j+1/2} [s] of every link (infinite for a link of zero stiffness).
   const Eigen::VectorXd& snap_times() const { return tau_; }
 
