@@ -67,6 +67,7 @@ bool BlockTridiagonal::Factor(int first, int last) {
   first_ = first;
   last_ = last;
   middle_ = first + (last - first) / 2;
+  if (last < first) return true;  // no rows (a line whose stations are all prescribed)
   const int p = middle_;
   // Row s from the top (i) and row s from the bottom (k) in one pass: two chains that do not
   // wait for each other.
@@ -95,6 +96,7 @@ bool BlockTridiagonal::Factor(int first, int last) {
 template <class Block>
 void BlockTridiagonal::SolveRange(std::vector<Block>& b) const {
   const int first = first_, last = last_, p = middle_;
+  if (last < first) return;
   for (int s = 0;; ++s) {  // eliminated towards the middle row from both ends
     const int i = first + s, k = last - s;
     const bool top = i < p, bottom = k > p;

@@ -83,6 +83,14 @@ TEST(BlockTridiagonal, RangeWithMatrixRightHandSidesMatchesDenseSolve) {
   for (int i : {0, 1, 10, 11}) EXPECT_EQ(b[i], Mat::Zero()) << i;  // rows outside untouched
 }
 
+// No rows (a line whose stations are all prescribed): nothing to do, and nothing read (the
+// fuzzer's regression: the middle row of an empty range was read).
+TEST(BlockTridiagonal, EmptySystemSolves) {
+  BlockTridiagonal sys(0);
+  EXPECT_TRUE(sys.Solve());
+  EXPECT_TRUE(sys.rhs.empty());
+}
+
 TEST(BlockTridiagonal, ReportsSingularPivot) {
   BlockTridiagonal sys(2);
   sys.SetZero();
