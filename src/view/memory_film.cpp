@@ -37,29 +37,40 @@ Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& requ
   const FixedPolicy policy = MakeFilmPolicy(scene, {&run.run}, request, run.run.grid.end());
   const Colormap colormap(request.colormap);
   History history(scene, policy);
-  const Eigen::Index stations = model.stations();
-  const Eigen::Index links = model.line.links;
-  Points x(kDim, stations);
   Snapshot snap;
   snap.lines.resize(1);
-  LineSnapshot& line = snap.lines[0];
   for (long r = 0; r <= row; ++r) {
-    // Each row a snapshot carrying itself: the time plot and the envelope cover every row.
-    x = Eigen::Map<const Points>(rows.x.data() + r * stations * kDim, kDim, stations);
-    const Eigen::Map<const Eigen::VectorXd> T(rows.tension.data() + r * links, links);
     snap.t = rows.time[r];
-    SetLineState(x, T, &line);
-    snap.row_t.assign(1, snap.t);
-    line.row_max.assign(1, T.maxCoeff());
-    line.row_link_min = line.tension;
-    line.row_link_max = line.tension;
-    if (scene.sea.surface) {
-      AddWaterSurface(model.env.wave, policy.box, &snap);
-      snap.wave = model.env.wave;
-    }
-    snap.current = current;
-    history.Add(snap);
+    SetRowLine(rows, r, model, &snap.lines[0]);
+    AddRowSnapshot(scene, policy, model.env.wave, current, &snap, &history);
   }
+  return DrawRowFrame(scene, history, snap, request, colormap);
+}
+
+void SetRowLine(const MemoryRows& rows, long r, const Model& model, LineSnapshot* line) {
+  const Eigen::Index stations = model.stations(), links = model.line.links;
+  const Points x = Eigen::Map<const Points>(rows.x.data() + r * stations * kDim, kDim, stations);
+  const Eigen::Map<const Eigen::VectorXd> T(rows.tension.data() + r * links, links);
+  SetLineState(x, T, line);
+  line->row_max.assign(1, T.maxCoeff());
+  line->row_link_min = line->tension;
+  line->row_link_max = line->tension;
+}
+
+void AddRowSnapshot(const SceneView& scene, const FixedPolicy& policy, const Wave& wave,
+                    const Vec& current, Snapshot* snap, History* history) {
+  // Each row a snapshot carrying itself: the time plot and the envelope cover every row.
+  snap->row_t.assign(1, snap->t);
+  if (scene.sea.surface) {
+    AddWaterSurface(wave, policy.box, snap);
+    snap->wave = wave;
+  }
+  snap->current = current;
+  history->Add(*snap);
+}
+
+Image DrawRowFrame(const SceneView& scene, const History& history, const Snapshot& snap,
+                   const FilmRequest& request, const Colormap& colormap) {
   const FrameLayout layout = MakeFrameLayout(scene, history, request.width, request.height);
   RenderOptions options;
   options.width = request.width;

@@ -3,9 +3,13 @@
 // run` (film_pass.h): the whole film, or one of its frames as an image.
 #include <atomic>
 
-#include "view/film_pass.h"
-#include "run/memory_run.h"
 #include "encode/image.h"
+#include "run/memory_run.h"
+#include "view/colormap.h"
+#include "view/film_pass.h"
+#include "view/history.h"
+#include "view/scene_view.h"
+#include "view/snapshot.h"
 
 namespace cablefilm {
 
@@ -20,5 +24,16 @@ bool RenderMemoryRunFilm(const MemoryRun& run, const FilmRequest& request,
 // the cable at that row, the time plot and the tension envelope over every row up to it, on
 // the colour range and the world box of the whole run, as the film draws it. Throws Error.
 Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& request);
+
+// The steps of such a frame, shared with a system's (memory_system_film.h):
+// `line` as held rows r of `rows` (a run of `model`) show it;
+void SetRowLine(const MemoryRows& rows, long r, const Model& model, LineSnapshot* line);
+// `snap` (its time and lines set) added to the history as a row of its own, with the sea and
+// the current;
+void AddRowSnapshot(const SceneView& scene, const FixedPolicy& policy, const Wave& wave,
+                    const Vec& current, Snapshot* snap, History* history);
+// and the frame of the last snapshot drawn over that history.
+Image DrawRowFrame(const SceneView& scene, const History& history, const Snapshot& snap,
+                   const FilmRequest& request, const Colormap& colormap);
 
 }  // namespace cablefilm

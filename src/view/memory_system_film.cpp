@@ -4,14 +4,11 @@
 
 #include "core/error.h"
 #include "view/colormap.h"
-#include "view/frame_builder.h"
-#include "view/history.h"
-#include "view/renderer.h"
+#include "view/memory_film.h"
 #include "view/scene_view.h"
 #include "view/scene_view_builder.h"
 #include "view/snapshot.h"
 #include "view/system_film.h"
-#include "view/world_box.h"
 
 namespace cablefilm {
 
@@ -31,36 +28,12 @@ Image DrawMemorySystemFrame(const MemorySystemRun& run, long row, const FilmRequ
   Snapshot snap;
   snap.lines.resize(nl);
   for (long r = 0; r <= row; ++r) {
-    // Each row a snapshot carrying itself (every line's), as a line's frame is drawn
-    // (memory_film.cpp): the time plot and the envelope cover every row.
     snap.t = run.lines.front().rows.time[r];
-    snap.row_t.assign(1, snap.t);
-    for (std::size_t i = 0; i < nl; ++i) {
-      const MemoryRows& m = run.lines[i].rows;
-      const Eigen::Index stations = sys.lines[i].stations();
-      const Eigen::Index links = sys.lines[i].line.links;
-      const Points x = Eigen::Map<const Points>(m.x.data() + r * stations * kDim, kDim, stations);
-      const Eigen::Map<const Eigen::VectorXd> T(m.tension.data() + r * links, links);
-      LineSnapshot& line = snap.lines[i];
-      SetLineState(x, T, &line);
-      line.row_max.assign(1, T.maxCoeff());
-      line.row_link_min = line.tension;
-      line.row_link_max = line.tension;
-    }
-    if (scene.sea.surface) {
-      AddWaterSurface(any.env.wave, policy.box, &snap);
-      snap.wave = any.env.wave;
-    }
-    snap.current = current;
-    history.Add(snap);
+    for (std::size_t i = 0; i < nl; ++i)
+      SetRowLine(run.lines[i].rows, r, sys.lines[i], &snap.lines[i]);
+    AddRowSnapshot(scene, policy, any.env.wave, current, &snap, &history);
   }
-  const FrameLayout layout = MakeFrameLayout(scene, history, request.width, request.height);
-  RenderOptions options;
-  options.width = request.width;
-  options.height = request.height;
-  options.shader_dir = request.shader_dir;
-  Renderer renderer(options);
-  return renderer.Draw(MakeFrame(scene, history, snap, layout, colormap));
+  return DrawRowFrame(scene, history, snap, request, colormap);
 }
 
 }  // namespace cablefilm
