@@ -18,7 +18,11 @@ namespace {
 // make the initial state, naming the key at fault: the heaviest weight's mass when the weights
 // weigh more than the cable in the fluid and the cable alone would not stretch the link that
 // far, else the stretched link's material's youngs_modulus.
-void CheckInitialStretch(const SceneDef& scene, const Model& m, const State& s) {
+// `line` is "" for the scene's one cable (keys cable.weight[k]), else "line[i]" (a system's),
+// `which` then " of line[i] (\"its name\")".
+void CheckInitialStretch(const SceneDef& scene, const std::string& line, const std::string& which,
+                         const std::vector<SectionDef>& sections,
+                         const std::vector<WeightDef>& weights, const Model& m, const State& s) {
   if (m.line.law != LinkLaw::kElastic) return;
   int worst = -1;
   double stretch = 0;
@@ -31,11 +35,11 @@ void CheckInitialStretch(const SceneDef& scene, const Model& m, const State& s) 
   }
   if (worst < 0 || stretch <= kMaxStartStretch) return;
   const double g = scene.environment.gravity, rho = scene.environment.fluid_density;
-  double weights = 0, heaviest_weight = 0;
+  double weights_net = 0, heaviest_weight = 0;  // [N]
   int heaviest = -1;
-  for (std::size_t k = 0; k < scene.weights.size(); ++k) {
-    const double w = (scene.weights[k].mass - rho * scene.weights[k].volume) * g;
-    weights += std::max(0.0, w);
+  for (std::size_t k = 0; k < weights.size(); ++k) {
+    const double w = (weights[k].mass - rho * weights[k].volume) * g;
+    weights_net += std::max(0.0, w);
     if (w > heaviest_weight) {
       heaviest_weight = w;
       heaviest = static_cast<int>(k);
@@ -43,7 +47,7 @@ void CheckInitialStretch(const SceneDef& scene, const Model& m, const State& s) 
   }
   const double cable = std::max(0.0, m.line.link_net_weight.sum());
   const int section = m.line.link_section[static_cast<std::size_t>(worst)];
-  const int material_index = scene.sections[static_cast<std::size_t>(section)].material;
+  const int material_index = sections[static_cast<std::size_t>(section)].material;
   const MaterialDef& material = scene.materials[static_cast<std::size_t>(material_index)];
   const std::string modulus_key = "material[" + std::to_string(material_index) + "].youngs_modulus";
   const std::string modulus = modulus_key + " = " + FormatNumber(material.youngs_modulus) +
@@ -55,12 +59,12 @@ void CheckInitialStretch(const SceneDef& scene, const Model& m, const State& s) 
   // The weights are at fault when they outweigh the cable and the cable's own net weight, hung
   // from this link, would not stretch it past the limit.
   const bool weights_at_fault =
-      heaviest >= 0 && weights > cable && 1.0 + cable / ea <= kMaxStartStretch;
+      heaviest >= 0 && weights_net > cable && 1.0 + cable / ea <= kMaxStartStretch;
   std::string key, cure;
   if (weights_at_fault) {
-    key = "cable.weight[" + std::to_string(heaviest) + "].mass";
+    key = (line.empty() ? "cable" : line) + ".weight[" + std::to_string(heaviest) + "].mass";
     cure = "a lighter weight (" + key + " = " +
-           FormatNumber(scene.weights[static_cast<std::size_t>(heaviest)].mass) +
+           FormatNumber(weights[static_cast<std::size_t>(heaviest)].mass) +
            " kg, its net weight " + FormatNumber(heaviest_weight) + " N) or a stiffer material (" +
            modulus + ")";
   } else {
@@ -69,7 +73,8 @@ void CheckInitialStretch(const SceneDef& scene, const Model& m, const State& s) 
   }
   throw Error(EscapeText(scene.path) + ": " + key + ": " + start + " stretches link " +
               std::to_string(worst) + " (stations " + std::to_string(worst) + "-" +
-              std::to_string(worst + 1) + ", section " + std::to_string(section) + ") to " +
+              std::to_string(worst + 1) + ", section " + std::to_string(section) + ")" + which +
+              " to " +
               FormatNumber(stretch) + " times its rest length under its load (tension " +
               FormatNumber(ea * (stretch - 1.0)) + " N, EA = " + FormatNumber(ea) +
               " N); expected at most " + FormatNumber(kMaxStartStretch) +
@@ -78,6 +83,18 @@ void CheckInitialStretch(const SceneDef& scene, const Model& m, const State& s) 
 }
 
 }  // namespace
+
+void CheckSystemInitialStretch(const SceneDef& scene, const SystemModel& sys,
+                               const std::vector<State>& states) {
+  for (std::size_t i = 0; i < sys.lines.size(); ++i)
+    for (std::size_t k = 0; k < scene.lines.size(); ++k)
+      if (scene.lines[k].name == sys.line_names[i]) {
+        const std::string line = "line[" + std::to_string(k) + "]";
+        CheckInitialStretch(scene, line, " of " + line + " (" + QuoteText(scene.lines[k].name) + ")",
+                            scene.lines[k].sections, scene.lines[k].weights, sys.lines[i],
+                            states[i]);
+      }
+}
 
 State MakeInitialState(const SceneDef& scene, const Model& m, EquilibriumReport* report,
                        const CancelFlag* cancel) {
@@ -99,7 +116,7 @@ State MakeInitialState(const SceneDef& scene, const Model& m, EquilibriumReport*
     s.x = StraightChord(m);
     s.v = Points::Zero(kDim, m.stations());
   }
-  CheckInitialStretch(scene, m, s);
+  CheckInitialStretch(scene, "", "", scene.sections, scene.weights, m, s);
   return s;
 }
 

@@ -4,6 +4,7 @@
 #include "core/cancel.h"
 #include "core/data.h"
 #include "core/equilibrium.h"
+#include "core/system.h"
 #include "run/time_grid.h"
 #include "scene/scene_def.h"
 
@@ -13,5 +14,11 @@ namespace cablefilm {
 // Throws Error when the equilibrium is not found, CancelledError when `cancel` is raised.
 State MakeInitialState(const SceneDef& scene, const Model& m, EquilibriumReport* report,
                        const CancelFlag* cancel = nullptr);
+
+// Throws Error naming the key at fault when a system's static equilibrium (`states`, a line
+// each) stretches a link beyond kMaxStartStretch, as MakeInitialState does for one line: the
+// integrators would stop at t = 0 with a numerical blow-up.
+void CheckSystemInitialStretch(const SceneDef& scene, const SystemModel& sys,
+                               const std::vector<State>& states);
 
 }  // namespace cablefilm

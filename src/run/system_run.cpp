@@ -5,6 +5,7 @@
 
 #include "core/cancel.h"
 #include "core/error.h"
+#include "run/initial_state.h"
 #include "run/run.h"
 
 namespace cablefilm {
@@ -84,6 +85,7 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
       throw Error(scene.path + ": with the bodies at their initial offsets: " + e.what());
     }
   }
+  CheckSystemInitialStretch(scene, run.sys, states);
   run.equilibrium_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   run.initial = MakeSystemData(run.sys, run.inputs, run.grid.options, states);

@@ -466,7 +466,7 @@ TEST_F(CommandLine, TwoRunsIntoOneFolder) {
 
 // Issue 22 item 5: the line's own load stretching a link past twice its rest length in the
 // static equilibrium: `check` said ok and `run` stopped at t = 0 with a blow-up naming no key.
-// Both refuse it now, alike, naming the key at fault.
+// Both refuse it now, alike, naming the key at fault; a system's line too.
 TEST_F(CommandLine, EquilibriumStretchedPastTwiceIsRefusedByCheckAndRun) {
   auto edited = [&](const char* scene, const std::string& from, const std::string& to,
                     const char* name) {
@@ -478,9 +478,41 @@ TEST_F(CommandLine, EquilibriumStretchedPastTwiceIsRefusedByCheckAndRun) {
          "heavy.toml");
   // P63's wire with E = 16 Pa: the material's modulus (the weight is the same as ever).
   edited("polachek1963.toml", "youngs_modulus = 9.0e10", "youngs_modulus = 16", "soft.toml");
+  // A system's line (a MoorDyn file's soft spring, found so): 200 kg on 1 m of EA = 1 kN in
+  // vacuum stretches it to 1 + 200 x 9.81 / 1000 = 2.96 times.
+  std::ofstream(dir_ / "spring.toml", std::ios::binary) << R"([environment]
+gravity = 9.81
+fluid_density = 0.0
+[[material]]
+name = "spring"
+diameter = 0.01
+area = 1e-4
+mass_per_length = 0.001
+youngs_modulus = 1e7
+[[point]]
+name = "top"
+position = [0.0, 0.0, 0.0]
+motion = "fixed"
+[[point]]
+name = "bob"
+position = [0.0, -1.0, 0.0]
+motion = "free"
+mass = 200.0
+[[line]]
+name = "spring"
+start = "top"
+end = "bob"
+[[line.section]]
+material = "spring"
+length = 1.0
+segments = 4
+)";
   const std::vector<std::pair<std::string, std::string>> cases{
       {"heavy.toml", "heavy.toml: cable.weight[0].mass: the static equilibrium at t = 0 "
                      "stretches link 0 (stations 0-1, section 0) to 2.96"},
+      {"spring.toml", "spring.toml: material[0].youngs_modulus: the static equilibrium at t = 0 "
+                      "stretches link 0 (stations 0-1, section 0) of line[0] (\"spring\") to "
+                      "2.96"},
       {"soft.toml", "soft.toml: material[0].youngs_modulus: the static equilibrium at t = 0 "
                     "stretches link "}};
   for (const auto& [scene, message] : cases) {
