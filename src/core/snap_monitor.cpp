@@ -19,7 +19,8 @@ SnapMonitor::SnapMonitor(const Model& m)
 }
 
 void SnapMonitor::Start(const Eigen::VectorXd& length) {
-  for (Eigen::Index j = 0; j < taut_.size(); ++j) taut_[j] = length[j] > rest_length_[j];
+  for (Eigen::Index j = 0; j < taut_.size(); ++j)
+    taut_[j] = !(length[j] < (1.0 - kSlackStrain) * rest_length_[j]);
 }
 
 void SnapMonitor::ObserveStep(double h) {
@@ -43,7 +44,8 @@ void SnapMonitor::Observe(double t_end, double h, const Eigen::VectorXd& length)
         ++record_.unresolved_snaps;
       }
     }
-    taut_[j] = taut;
+    if (taut) taut_[j] = true;
+    else if (length[j] < (1.0 - kSlackStrain) * rest_length_[j]) taut_[j] = false;
   }
 }
 

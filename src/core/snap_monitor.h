@@ -16,6 +16,11 @@ namespace cablefilm {
 
 // A snap is resolved when the step is at most this fraction of the link's tau.
 constexpr double kResolvedSnapFraction = 0.1;
+// A link is slack (a snap may follow) once it is shorter than its rest length by more than
+// this strain; within it, a link at zero tension flips between taut and slack on round-off
+// alone, with no load to speak of (a closing speed of that order gives at most 1e-9 EA): a
+// line of a MoorDyn file lying at zero strain warned of 9 unresolved snaps of 1e-11 N.
+constexpr double kSlackStrain = 1e-9;
 
 struct StepRecord {
   double smallest_step = 0;      // [s], of the steps taken (0: none yet)
@@ -31,15 +36,17 @@ class SnapMonitor {
  public:
   SnapMonitor() = default;
   explicit SnapMonitor(const Model& m);
-  // The state the steps start from: which links are taut (stretched beyond their rest length;
-  // with axial damping a stretched link's tension can be 0 for a moment).
+  // The state the steps start from: which links are taut (stretched beyond their rest length,
+  // or short of it by no more than kSlackStrain; with axial damping a stretched link's tension
+  // can be 0 for a moment).
   void Start(const Eigen::VectorXd& length);
   // A step of h [s] taken, ending at t_end [s] with these link lengths [m].
   void Observe(double t_end, double h, const Eigen::VectorXd& length);
   // Only the step's length (a scheme without slack links: the inextensible one).
   void ObserveStep(double h);
   const StepRecord& record() const { return record_; }
-  // Whether link j was taut (stretched beyond its rest length) at the last state observed.
+  // Whether link j was taut at the last state observed: stretched beyond its rest length, or
+  // within kSlackStrain of it since it last was.
   bool taut(int j) const { return taut_[j]; }
   // tau_{j+1/2} [s] of every link (infinite for a link of zero stiffness).
   const Eigen::VectorXd& snap_times() const { return tau_; }

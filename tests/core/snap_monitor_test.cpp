@@ -72,6 +72,32 @@ TEST(SnapMonitor, CoarseStepIsReportedUnresolved) {
   EXPECT_FALSE(TrustWarnings(snap.model, integrator->stats()).empty());
 }
 
+// A link at zero strain flips between taut and slack on round-off (a line of a MoorDyn file
+// at rest, 1e-11 N): no snap. One that was slack by more than kSlackStrain snaps when taut,
+// once, however it wavers within round-off of its rest length on the way.
+TEST(SnapMonitor, RoundOffAtRestLengthIsNoSnap) {
+  OneLinkSnap snap;
+  SnapMonitor monitor(snap.model);
+  const double l = snap.l;
+  Eigen::VectorXd length(1);
+  length[0] = l * (1 - 1e-15);
+  monitor.Start(length);
+  for (int k = 0; k < 20; ++k) {
+    length[0] = l * (1 + (k % 2 ? 1e-15 : -1e-15));
+    monitor.Observe(0.1 * (k + 1), 0.1, length);
+  }
+  EXPECT_EQ(monitor.record().snaps, 0);
+  length[0] = 0.9 * l;  // slack
+  monitor.Observe(2.1, 0.1, length);
+  EXPECT_FALSE(monitor.taut(0));
+  for (const double strain : {-1e-15, 1e-15, -1e-15, 1e-3}) {
+    length[0] = l * (1 + strain);
+    monitor.Observe(2.2, 0.1, length);
+  }
+  EXPECT_EQ(monitor.record().snaps, 1);  // at the first length beyond l
+  EXPECT_TRUE(monitor.taut(0));
+}
+
 StepStats RunScene(const std::string& name, double duration = 0) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + name);
   if (duration > 0) scene.simulation.duration = duration;
