@@ -282,10 +282,24 @@ std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibr
   differences();
   while (norm(R) > options.tolerance * scale) {
     if (++r.iterations > options.max_iterations) {
+      // Name the one most out of balance, and what usually causes it.
+      const Unknowns::Group* worst = &u.groups.front();
+      double worst_force = -1;
+      for (const Unknowns::Group& g : u.groups) {
+        const double f = R.segment(g.offset, g.size).cwiseProduct(weight.segment(g.offset, g.size))
+                             .lpNorm<Eigen::Infinity>();
+        if (f > worst_force) worst_force = f, worst = &g;
+      }
+      const bool body = worst->body >= 0;
       std::ostringstream os;
       os << "the shared points and free bodies of the system do not balance after "
          << options.max_iterations << " Newton iterations: out-of-balance force " << norm(R)
-         << " N against a load of " << scale << " N";
+         << " N on " << (body ? "body " : "point ")
+         << '"' << (body ? sys.bodies[worst->body].name : sys.points[worst->point].name) << '"'
+         << " (the lines' own loads are " << scale << " N); a free "
+         << (body ? "body's" : "point's") << " given position is only the first guess of its "
+         << "equilibrium, which may not be reached from one far from it (a body or point given "
+         << "above the anchor it hangs below, say): give one nearer where it comes to rest";
       throw Error(os.str());
     }
     ThrowIfCancelled(options.cancel, "the system's static equilibrium");
