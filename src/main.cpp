@@ -290,9 +290,11 @@ int main(int argc, char** argv) {
   app.get_formatter()->column_width(27);
 
   std::string scene;
-  auto add_command = [&](const std::string& name, const std::string& help) {
+  auto add_command = [&](const std::string& name, const std::string& help,
+                         const std::string& what = "the scene file (TOML, or a MoorDyn v2 input "
+                                                   "file)") {
     CLI::App* cmd = app.add_subcommand(name, help);
-    cmd->add_option("SCENE", scene, "the scene file (TOML)")->type_name("")->required();
+    cmd->add_option("SCENE", scene, what)->type_name("")->required();
     cmd->allow_extras();  // unknown options and a second scene: reported below, by name
     return cmd;
   };
@@ -304,7 +306,8 @@ int main(int argc, char** argv) {
   CLI::App* check = add_command("check", "validate a scene, print stations, mass, time step");
   std::string convert_out;
   CLI::App* convert =
-      add_command("convert", "write a MoorDyn v2 input file as the equivalent scene (TOML)");
+      add_command("convert", "write a MoorDyn v2 input file as the equivalent scene (TOML)",
+                  "the MoorDyn v2 input file");
   convert->add_option("-o,--out", convert_out, "the scene file to write (default: standard output)")
       ->type_name("FILE");
   convert->footer(

@@ -91,7 +91,11 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
     std::printf("; a line resting on it sinks at most %.3g mm (station %d)\n", 1e3 * sink,
                 deepest);
   }
-  if (m.has_waves()) {
+  if (m.has_waves() && m.env.wave.spec.height == 0) {
+    std::printf("  still water with its surface at y = %.6g m (waves.height = 0): no buoyancy, "
+                "drag or added mass above it\n",
+                m.env.wave.spec.surface_y);
+  } else if (m.has_waves()) {
     const Wave& w = m.env.wave;
     const double kh = w.k * w.spec.depth;
     std::printf("  waves (linear Airy, along %s): height %.4g m, period %.4g s, depth %.6g m, "

@@ -49,7 +49,8 @@ void CheckSystem(const MoorDynSystem& system, const std::string& file) {
   CheckMoorDynReferences(file, &copy);
 }
 
-void WriteMaterial(const MoorDynLineType& t, MoorDynTomlOut* out) {
+// `used`: a line of LINES is of this type (what a type no line uses has does not matter).
+void WriteMaterial(const MoorDynLineType& t, bool used, MoorDynTomlOut* out) {
   const double area = M_PI * t.diameter * t.diameter / 4;  // m^2
   const std::string name = "LINE TYPES \"" + t.name + "\": ";
   out->text << "\n[[material]]                      # "
@@ -73,6 +74,7 @@ void WriteMaterial(const MoorDynLineType& t, MoorDynTomlOut* out) {
   else
     out->Key("axial_damping_ratio", TomlNumber(-t.ba),
              name + "BA/-zeta " + FormatNumber(t.ba) + ": a fraction of critical damping");
+  if (!used) return;
   if (t.ei != 0)
     out->Warn(t.line, name + "EI " + FormatNumber(t.ei) + " N m^2: bending stiffness ignored");
   if (t.cl != 0)
@@ -166,7 +168,11 @@ std::string MoorDynToToml(const MoorDynSystem& system, std::vector<std::string>*
   out.file = EscapeText(system.file);
   CheckSystem(system, out.file);
   WriteMoorDynEnvironment(system, &out);
-  for (const MoorDynLineType& t : system.line_types) WriteMaterial(t, &out);
+  for (const MoorDynLineType& t : system.line_types) {
+    bool used = false;
+    for (const MoorDynLine& l : system.lines) used = used || l.type == t.name;
+    WriteMaterial(t, used, &out);
+  }
   WriteMoorDynBodies(system, MoorDynDensity(system), &out);
   for (const MoorDynPoint& p : system.points) WritePoint(system, p, &out);
   for (const MoorDynLine& l : system.lines) WriteLine(l, &out);

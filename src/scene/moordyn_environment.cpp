@@ -83,15 +83,19 @@ const MoorDynLineType& SeabedLineType(const MoorDynSystem& system, MoorDynTomlOu
   return type;
 }
 
-void WriteEnvironment(const MoorDynSystem& system, MoorDynTomlOut* out) {
+// Returns g [m/s^2] and its source.
+Sourced WriteEnvironment(const MoorDynSystem& system, MoorDynTomlOut* out) {
   const Sourced g = OptionOr(system, MoorDynOptionKind::kGravity, kDefaultGravity, "g");
   const Sourced rho = OptionOr(system, MoorDynOptionKind::kDensity, kDefaultDensity, "rho");
   out->text << "\n[environment]\n";
   out->Key("gravity", TomlNumber(g.value), "m/s^2; " + g.source);
   out->Key("fluid_density", TomlNumber(rho.value), "kg/m^3; " + rho.source);
+  return g;
 }
 
-void WriteSeabed(const MoorDynSystem& system, MoorDynTomlOut* out) {
+// Returns the seabed's depth below the still water level [m] (-1 without a seabed) and its
+// source.
+Sourced WriteSeabed(const MoorDynSystem& system, MoorDynTomlOut* out) {
   const Sourced k = OptionOr(system, MoorDynOptionKind::kBottomStiffness, kDefaultKBot, "kBot");
   const Sourced c = OptionOr(system, MoorDynOptionKind::kBottomDamping, kDefaultCBot, "cBot");
   const Sourced mu =
@@ -100,7 +104,7 @@ void WriteSeabed(const MoorDynSystem& system, MoorDynTomlOut* out) {
     out->Warn(k.line, "kBot 0: MoorDyn's seabed has no stiffness; the scene has no seabed");
     out->text << "\n";
     out->Comment("No [seabed]: " + k.source + " is 0.");
-    return;
+    return {-1.0, k.source, k.line};
   }
   const Sourced depth = SeabedDepth(system, out);
   const MoorDynLineType& type = SeabedLineType(system, out);
@@ -112,6 +116,37 @@ void WriteSeabed(const MoorDynSystem& system, MoorDynTomlOut* out) {
   out->Key("damping", TomlNumber(c.value * type.diameter),
            "N s/m per m: cBot " + FormatNumber(c.value) + " Pa s/m" + d + "; " + c.source);
   out->Key("friction", TomlNumber(mu.value), mu.source);
+  return depth;
+}
+
+// MoorDyn's still water surface at z = 0: a line's segments above it have no buoyancy, drag or
+// added mass (Line.cpp, the submerged fraction of each segment, waves or not). In cablefilm a
+// surface comes with [waves]; height 0 is still water. Without it the fluid would fill all
+// space and a float at the surface would rise out of the water with its full buoyancy.
+void WriteStillSurface(const MoorDynSystem& system, const Sourced& gravity, double rho,
+                       const Sourced& seabed, MoorDynTomlOut* out) {
+  constexpr double kSomePeriod = 10.0;  // s: any; still water has none
+  if (rho == 0) return;  // vacuum: no fluid to have a surface
+  if (!(gravity.value > 0)) {
+    out->Warn(gravity.line, "g = 0: the scene has no water surface (cablefilm's needs gravity): the fluid "
+                 "fills all space, above z = 0 too");
+    return;
+  }
+  if (seabed.value >= 0 && seabed.value < 1e-3) {
+    out->Warn(seabed.line, "the seabed is at the still water level (z = 0): the scene has no water "
+                 "surface, the fluid fills all space");
+    return;
+  }
+  out->text << "\n[waves]                           # MoorDyn's still water surface at z = 0\n";
+  out->Key("height", "0.0", "m: still water; above the surface a line has no buoyancy, drag "
+                            "or added mass, as MoorDyn's");
+  out->Key("period", TomlNumber(kSomePeriod), "s: none in still water (a period is required)");
+  if (seabed.value < 0) {  // no seabed: the waves' depth alone (any: still water)
+    double depth = 1.0;
+    for (const MoorDynPoint& p : system.points)
+      depth = std::max(depth, -MoorDynPointPosition(system, p)[2]);
+    out->Key("depth", TomlNumber(depth), "m: no seabed; the deepest point's depth");
+  }
 }
 
 // The options not mapped above: a comment (returned) for the hints and the initial-condition
@@ -132,8 +167,8 @@ std::string NoteOption(const std::string& name, const MoorDynOption& option,
       const bool waves = MoorDynOptionKindOf(name) == MoorDynOptionKind::kWaveKin;
       if (MoorDynOptionValue(option) != 0)
         out->Warn(option.line, given + ": " + (waves ? "waves" : "currents") +
-                                   " are not imported (their files are not read): the scene's "
-                                   "water is still");
+                                   " are not imported (MoorDyn takes them from its files or "
+                                   "its calling program): the scene's water is still");
       return "";
     }
     case MoorDynOptionKind::kOther: out->Warn(option.line, given + ": ignored"); return "";
@@ -162,8 +197,9 @@ double MoorDynDensity(const MoorDynSystem& system) {
 }
 
 void WriteMoorDynEnvironment(const MoorDynSystem& system, MoorDynTomlOut* out) {
-  WriteEnvironment(system, out);
-  WriteSeabed(system, out);
+  const Sourced gravity = WriteEnvironment(system, out);
+  const Sourced seabed = WriteSeabed(system, out);
+  WriteStillSurface(system, gravity, MoorDynDensity(system), seabed, out);
   NoteOptions(system, out);
 }
 

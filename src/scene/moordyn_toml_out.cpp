@@ -22,7 +22,8 @@ void MoorDynTomlOut::Comment(const std::string& comment) {
 }
 
 void MoorDynTomlOut::Warn(int line, const std::string& message) {
-  warnings.push_back(file + ":" + std::to_string(line) + ": " + EscapeText(message));
+  warnings.push_back(file + (line > 0 ? ":" + std::to_string(line) : "") + ": " +
+                     EscapeText(message));
 }
 
 }  // namespace cablefilm

@@ -20,7 +20,7 @@ struct MoorDynTomlOut {
   void Key(const std::string& key, const std::string& value, const std::string& comment = "");
   // A "# ..." line (escaped).
   void Comment(const std::string& comment);
-  // "file:line: " + message (escaped), as a warning.
+  // "file:line: " + message (escaped), as a warning ("file: " for line 0: a default's).
   void Warn(int line, const std::string& message);
 };
 

@@ -43,12 +43,25 @@ bool IsMoorDynText(const std::string& text) {
 }
 
 std::string MoorDynSceneText(const std::string& path, std::vector<std::string>* warnings) {
-  return MoorDynToToml(ReadMoorDynText(ReadSceneFile(path), path), warnings);
+  const MoorDynSystem system = ReadMoorDynText(ReadSceneFile(path), path);
+  // The reader's warnings first, then the conversion's (as LoadScene and the scene's header).
+  if (warnings) warnings->insert(warnings->end(), system.warnings.begin(), system.warnings.end());
+  return MoorDynToToml(system, warnings);
 }
 
 SceneDef LoadScene(const std::string& path) {
   std::string text = ReadSceneFile(path);
-  if (!IsMoorDynText(text)) return ParseScene(text, path);
+  if (!IsMoorDynText(text)) {
+    try {
+      return ParseScene(text, path);
+    } catch (const Error&) {
+      // A MoorDyn file's name (.txt, .dat) that is neither: what the MoorDyn reader finds wrong
+      // with it, as `cablefilm convert` says, rather than a TOML syntax error at its line 1.
+      const std::string ext = std::filesystem::path(path).extension().string();
+      if (ext == ".txt" || ext == ".dat") ReadMoorDynText(text, path);
+      throw;
+    }
+  }
   SceneDef scene;
   std::vector<std::string> warnings;
   const MoorDynSystem system = ReadMoorDynText(text, path);

@@ -11,6 +11,8 @@
 
 #include "core/body.h"
 #include "core/error.h"
+#include "core/forces.h"
+#include "core/system_equilibrium.h"
 #include "scene/moordyn_axes.h"
 #include "scene/build_model.h"
 #include "scene/moordyn_convert.h"
@@ -300,7 +302,12 @@ euler tScheme
   const Converted c = Convert(ReadMoorDynText(text, "sys.txt"));
   EXPECT_EQ(Num(c.scene["seabed"]["y"]), -160.0);
   EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:9: point 1 lies below the seabed of WtrDpth 150 m"));
-  EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:17: OPTIONS WaveKin = 1: waves are not imported"));
+  EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:17: OPTIONS WaveKin = 1: waves are not imported "
+                                     "(MoorDyn takes them from its files or its calling program)"));
+  // MoorDyn's still water surface at z = 0, the depth that of the seabed.
+  EXPECT_EQ(Num(c.scene["waves"]["height"]), 0.0);
+  EXPECT_FALSE(c.scene["waves"]["depth"]);
+  EXPECT_FALSE(c.scene["waves"]["surface_y"]);  // 0, the default
   EXPECT_FALSE(HasWarning(c.warnings, "Currents"));
   EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:19: OPTIONS tScheme = euler: ignored"));
   EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:5: LINE TYPES \"chain\": EI 10000 N m^2: bending "
@@ -316,6 +323,7 @@ euler tScheme
 
   const Converted flat = Convert(ReadMoorDynText(text + "0 kBot\n", "sys.txt"));
   EXPECT_FALSE(flat.scene["seabed"]);
+  EXPECT_EQ(Num(flat.scene["waves"]["depth"]), 160.0);  // no seabed: the deepest point's
   EXPECT_TRUE(HasWarning(flat.warnings, "sys.txt:20: kBot 0: MoorDyn's seabed has no stiffness"));
 }
 
@@ -368,8 +376,51 @@ void ExpectSameScene(const std::string& moordyn, const std::string& shipped) {
     ExpectNear(Vec(point["position"]), end.position, 0);
     EXPECT_FALSE(point["mass"]) << which;  // a free end is a station with no weight
   }
-  // MoorDyn's seabed, which the scenes do not have, lies far below the line.
+  // MoorDyn's seabed, which the scenes do not have, lies far below the line; in vacuum no
+  // water surface.
   EXPECT_LE(Num(s["seabed"]["y"]), -100.0);
+  EXPECT_FALSE(s["waves"]);
+}
+
+// MoorDyn's lines have no buoyancy above the still water level (the submerged fraction of each
+// segment): a buoyant line anchored D = 10 m down and 20 m long floats with half its length at
+// the surface. Hydrostatics: the anchor holds the net buoyancy of the submerged length alone,
+// (rho pi d^2 / 4 - m) g D = (1025 x 0.070686 - 20) 9.81 x 10 = 5145 N, give or take the
+// stations at the surface (a link of 0.5 m either way: 5 %); without the surface the whole line
+// would pull, twice that.
+TEST(MoorDynConvert, LinesFloatAtTheStillWaterSurface) {
+  const std::string text = R"(A buoyant line
+---------------------- LINE TYPES -----------------------
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
+float 0.3 20.0 1e7 -0.5 0 1.2 1 0 0
+---------------------- POINTS ---------------------------
+ID Attachment X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Fixed 0 0 -10 0 0 0 0
+2 Free 3 0 0 0 0 0 0
+---------------------- LINES ----------------------------
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 float 1 2 20 40 -
+---------------------- OPTIONS --------------------------
+10 WtrDpth
+)";
+  const Converted c = Convert(ReadMoorDynText(text, "float.txt"));
+  const SystemModel sys = BuildSystem(ParseScene(c.text, "float.toml"));
+  const std::vector<State> states = SolveSystemEquilibrium(sys);
+  ASSERT_EQ(states.size(), 1u);
+  const Model& m = sys.lines[0];
+  Eigen::VectorXd tension(m.line.links);
+  LinkGeometry g;
+  g.length.resize(m.line.links);
+  g.tangent.resize(kDim, m.line.links);
+  ComputeGeometry(states[0].x, g);
+  ComputeHookeTensions(m, g, tension);
+  const double net = (1025.0 * M_PI * 0.3 * 0.3 / 4 - 20.0) * 9.81 * 10.0;  // [N]
+  EXPECT_NEAR(tension[0], net, 0.05 * net);
+  // Nothing rises above the surface by more than the line's diameter.
+  EXPECT_LE(states[0].x.row(kVertical).maxCoeff(), 0.3);
 }
 
 TEST(MoorDynConvert, ShippedScenesAsMoorDynFiles) {

@@ -328,6 +328,26 @@ class TableMotion : public ::testing::Test {
   std::string scene_;
 };
 
+// A file named as MoorDyn's are (.txt) that is neither a scene nor a MoorDyn file: the MoorDyn
+// reader's complaint, as `cablefilm convert` gives it, not a TOML syntax error at its line 1
+// (a tab-separated table of numbers was so reported).
+TEST_F(TableMotion, TextFileThatIsNeitherSaysWhatMoorDynNeeds) {
+  WriteFile("table.txt", "t\tx\n0\t4\n1\t5\n");
+  try {
+    LoadScene((dir_ / "table.txt").string());
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("no LINES section"), std::string::npos) << e.what();
+  }
+  WriteFile("table.toml", "t\tx\n0\t4\n");  // a scene's name: TOML's complaint
+  try {
+    LoadScene((dir_ / "table.toml").string());
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not valid TOML"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(TableMotion, GoodTableLoads) {
   WriteFile("ship.csv", "t,x,y\n0,0,0\n1,0.5,0.1\n2,0.2,-0.3\n");
   const SceneDef s = ParseScene(TableScene("ship.csv"), scene_);

@@ -44,7 +44,9 @@ def moordyn_file(args, tmp):
     converted = tmp / "three_leg_spread.toml"
     done = subprocess.run([args.cablefilm, "convert", str(source), "-o", str(converted)],
                           capture_output=True, text=True, timeout=60)
-    if done.returncode != 0 or "writeLog = 1: ignored" not in done.stderr:
+    # The reader's warnings (its OUTPUTS) as well as the conversion's.
+    if (done.returncode != 0 or "writeLog = 1: ignored" not in done.stderr
+            or "OUTPUTS not read" not in done.stderr):
         return [f"convert: exit {done.returncode}, warnings {done.stderr[-300:]!r}"]
     run(args.cablefilm, source, tmp / "md")
     run(args.cablefilm, converted, tmp / "toml")
