@@ -81,6 +81,10 @@ void PrintEquilibrium(const SystemModel& sys, const SystemEquilibriumReport& eq,
   if (eq.chains > 0)
     std::printf("  first guess: %d chain(s) of lines through their joints solved as one line\n",
                 eq.chains);
+  if (eq.relaxed > 0)
+    std::printf("  not reached from the scene's positions: found from where %.3g s of the "
+                "system's own motion, damped by its fluid, brought it\n",
+                eq.relaxed);
   for (int b : sys.free_bodies) {
     const Vec6& q = eq.body_poses[b];
     std::printf("  body %s at (%.6g, %.6g, %.6g) m, turned (%.6g, %.6g, %.6g) deg about x, y, "

@@ -218,36 +218,68 @@ Vec6 LinesLoadOnBody(const SystemModel& sys, const std::vector<State>& states, i
   return LinesLoad(sys, sys.lines, states, b, pose);
 }
 
-std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibriumReport* report,
-                                          const SystemEquilibriumOptions& options) {
-  const Unknowns u(sys);
-  const int n = u.size;
-  Eigen::VectorXd X(n);
+namespace {
+
+// The unknowns' first guess and the lines held there (their warm starts): the points and
+// bodies where the scene puts them, the joints of chains where the chains solved as one line
+// put them; or where options.guess, a state of the lines, has them.
+Eigen::VectorXd FirstGuess(const SystemModel& sys, const Unknowns& u,
+                           const SystemEquilibriumOptions& options, HeldLines& lines,
+                           int* chain_count) {
+  Eigen::VectorXd X(u.size);
   for (const Unknowns::Group& g : u.groups) {
     if (g.body >= 0) {
-      X.segment<6>(g.offset) = sys.body_poses[g.body];
+      X.segment<6>(g.offset) = options.guess ? options.guess_poses[g.body] : sys.body_poses[g.body];
       continue;
     }
     const LineEnd& o = sys.owner(g.point);
     const Model& m = sys.lines[o.line];
-    X.segment<kDim>(g.offset) = (o.station == 0 ? m.ends.start : m.ends.end).rest();
+    X.segment<kDim>(g.offset) = options.guess ? Vec((*options.guess)[o.line].x.col(o.station))
+                                              : (o.station == 0 ? m.ends.start : m.ends.end).rest();
   }
-  // Chains of lines through joints, each solved as one line: their joints where that puts
-  // them, their lines' shapes the first guesses (chain_guess.h).
-  const ChainGuess chains = GuessChains(sys, options.cancel);
-  for (const Unknowns::Group& g : u.groups) {
-    if (g.point < 0) continue;
-    const int shared = sys.points[g.point].shared;
-    if (chains.guessed[shared]) X.segment<kDim>(g.offset) = chains.shared_positions.col(shared);
+  if (options.guess) {
+    lines.Restore(*options.guess);
+  } else {
+    // Chains of lines through joints, each solved as one line: their joints where that puts
+    // them, their lines' shapes the first guesses (chain_guess.h).
+    const ChainGuess chains = GuessChains(sys, options.cancel);
+    for (const Unknowns::Group& g : u.groups) {
+      if (g.point < 0) continue;
+      const int shared = sys.points[g.point].shared;
+      if (chains.guessed[shared]) X.segment<kDim>(g.offset) = chains.shared_positions.col(shared);
+    }
+    lines.Restore(chains.states);
+    *chain_count = chains.chains;
   }
-  HeldLines lines(sys, u, options);
-  lines.Restore(chains.states);
   lines.Solve(X, HeldLines::kAll);
+  return X;
+}
+
+}  // namespace
+
+SystemFirstGuess HoldAtFirstGuess(const SystemModel& sys, const SystemEquilibriumOptions& options) {
+  const Unknowns u(sys);
+  HeldLines lines(sys, u, options);
+  int chains = 0;
+  const Eigen::VectorXd X = FirstGuess(sys, u, options, lines, &chains);
+  SystemFirstGuess guess{lines.states(), sys.body_poses};
+  for (const Unknowns::Group& g : u.groups)
+    if (g.body >= 0) guess.body_poses[g.body] = X.segment<6>(g.offset);
+  return guess;
+}
+
+std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibriumReport* report,
+                                          const SystemEquilibriumOptions& options) {
+  const Unknowns u(sys);
+  const int n = u.size;
+  HeldLines lines(sys, u, options);
+  int chain_count = 0;
+  Eigen::VectorXd X = FirstGuess(sys, u, options, lines, &chain_count);
   double scale = 0;
   for (const Model& m : sys.lines) scale += StaticForceScale(m);
   SystemEquilibriumReport r;
   r.force_scale = scale;
-  r.chains = chains.chains;
+  r.chains = chain_count;
   Eigen::VectorXd R = lines.Residual(X);
   // The out-of-balance measure: forces [N], and a body's moments over its size [N].
   Eigen::VectorXd weight = Eigen::VectorXd::Ones(n);

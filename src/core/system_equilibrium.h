@@ -22,13 +22,30 @@ struct SystemEquilibriumReport {
   double force_scale = 0;     // the load it is measured against: the lines' (StaticForceScale)
   std::vector<EquilibriumReport> lines;  // each line's last solve
   std::vector<Vec6> body_poses;          // each body's pose (a free body's as solved)
+  double relaxed = 0;  // s of the system's damped motion it took to get near enough for Newton
+                       // (system_relaxation.h); 0: none, from the scene's first guess
 };
 
 struct SystemEquilibriumOptions {
   int max_iterations = 100;   // Newton iterations on the shared points
   double tolerance = 1e-9;    // converged when residual <= tolerance * force_scale
   const CancelFlag* cancel = nullptr;
+  // A state of the lines to start from (a line each: the shared points where their end
+  // stations are, the lines' shapes their warm starts) and every body's pose [m, rad], in
+  // place of the scene's positions and the chains' guesses; null: those.
+  const std::vector<State>* guess = nullptr;
+  const Vec6* guess_poses = nullptr;
 };
+
+// The lines held at the first guess the statics start from (each in its own equilibrium with
+// its ends there) and the bodies' poses: a state of the whole system, not yet balanced at its
+// shared points and free bodies.
+struct SystemFirstGuess {
+  std::vector<State> states;
+  std::vector<Vec6> body_poses;
+};
+SystemFirstGuess HoldAtFirstGuess(const SystemModel& sys,
+                                  const SystemEquilibriumOptions& options = {});
 
 // Each line's state at rest (t = 0). Throws Error naming the line that has no equilibrium, or
 // the points and bodies when they do not balance.

@@ -5,6 +5,7 @@
 
 #include "core/cancel.h"
 #include "core/error.h"
+#include "core/system_relaxation.h"
 #include "run/initial_state.h"
 #include "run/run.h"
 
@@ -64,7 +65,9 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
   SystemEquilibriumOptions options;
   options.cancel = stop;
   const auto t0 = std::chrono::steady_clock::now();
-  std::vector<State> states = SolveSystemEquilibrium(run.sys, &run.equilibrium, options);
+  std::vector<State> states = SolveSystemEquilibriumRelaxing(run.sys, run.inputs,
+                                                             run.grid.options, &run.equilibrium,
+                                                             options);
   // A free body given an initial offset starts there, its lines in equilibrium with it held
   // (a decay test); the others at their equilibrium.
   SystemModel held = run.sys;

@@ -12,7 +12,10 @@
 #include "core/body.h"
 #include "core/error.h"
 #include "core/forces.h"
+#include "core/inputs.h"
+#include "core/step.h"
 #include "core/system_equilibrium.h"
+#include "core/system_relaxation.h"
 #include "scene/moordyn_axes.h"
 #include "scene/build_model.h"
 #include "scene/moordyn_convert.h"
@@ -421,6 +424,56 @@ ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
   EXPECT_NEAR(tension[0], net, 0.05 * net);
   // Nothing rises above the surface by more than the line's diameter.
   EXPECT_LE(states[0].x.row(kVertical).maxCoeff(), 0.3);
+}
+
+// A free body given above the anchor it hangs below (MoorDyn runs such a file from where it
+// puts things, TmaxIC = 0): Newton from there cannot balance it (its one link passes through
+// the anchor on the way); the system's damped motion brings it near enough
+// (system_relaxation.h). Hand values: the body weighs (20 - 1025 x 0.004) 9.81 = 155.9 N in
+// water, the line (4 m of 8 kg/m, d 0.05 m) (8 - 1025 pi 0.05^2 / 4) 9.81 = 58.78 N/m, half of
+// it lumped at the body's station: the one link holds T = 155.9 + 2 x 58.78 = 273.5 N and is
+// 4 (1 + T / EA) = 4.547 m long (EA = 2000 N), straight down from the anchor.
+TEST(MoorDynConvert, BodyGivenAboveItsAnchorHangsBelowIt) {
+  const std::string text = R"(A body given above its anchor
+---------------------- LINE TYPES -----------------------
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
+rope 0.05 8.0 2000 -0.4 0 1.2 1 0 0
+---------------------- BODIES ---------------------------
+ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
+(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
+1 Free 0 0 0 0 0 0 20 0 2 0.004 0.5 1
+---------------------- POINTS ---------------------------
+ID Attachment X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Body1 0 0 0 0 0 0 0
+2 Fixed 0 0 -5 0 0 0 0
+---------------------- LINES ----------------------------
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 rope 1 2 4 1 -
+---------------------- OPTIONS --------------------------
+70 WtrDpth
+)";
+  const Converted c = Convert(ReadMoorDynText(text, "above.txt"));
+  const SystemModel sys = BuildSystem(ParseScene(c.text, "above.toml"));
+  EXPECT_THROW(SolveSystemEquilibrium(sys), Error);  // what made this needed
+  StepOptions step;
+  step.scheme = Scheme::kImplicit;
+  step.tolerance = 1e-6 * 4.0;  // the default: 1e-6 of the line's length [m]
+  SystemEquilibriumReport report;
+  const std::vector<State> states =
+      SolveSystemEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, &report, {});
+  EXPECT_GT(report.relaxed, 0.0);
+  const double wet_line = (8.0 - 1025.0 * M_PI * 0.05 * 0.05 / 4) * 9.81;  // [N/m]
+  const double body = (20.0 - 1025.0 * 0.004) * 9.81;                      // [N]
+  const double below = 4.0 * (1 + (body + 2.0 * wet_line) / 2000.0);       // [m]
+  const Vec6& pose = report.body_poses[0];
+  // Statics to 1e-9 of the load: T to 3e-7 N, the length to 1e-9 m; 1e-6 m.
+  EXPECT_NEAR(pose[kVertical], -5.0 - below, 1e-6);
+  EXPECT_NEAR(pose[0], 0.0, 1e-6);
+  EXPECT_NEAR(pose[2], 0.0, 1e-6);
+  ASSERT_EQ(states.size(), 1u);
 }
 
 TEST(MoorDynConvert, ShippedScenesAsMoorDynFiles) {

@@ -1,0 +1,68 @@
+#include "core/system_relaxation.h"
+
+#include <string>
+
+#include "core/cancel.h"
+#include "core/error.h"
+#include "core/system_step.h"
+
+namespace cablefilm {
+namespace {
+
+constexpr double kSpan = 0.1;    // s of motion between looks at the clock [s]
+constexpr double kTry = 5.0;     // s of motion between tries of Newton [s]
+constexpr double kLongest = 60.0;  // s of motion at most [s]: a mooring's slowest swings
+                                   // (tens of seconds) damped a few times over
+
+}  // namespace
+
+std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const Inputs& in,
+                                                  const StepOptions& step,
+                                                  SystemEquilibriumReport* report,
+                                                  const SystemEquilibriumOptions& options) {
+  try {
+    return SolveSystemEquilibrium(sys, report, options);
+  } catch (const CancelledError&) {
+    throw;
+  } catch (const Error& first) {
+    try {
+      const SystemFirstGuess guess = HoldAtFirstGuess(sys, options);
+      SystemModel let_go = sys;  // its free bodies start where the first guess has them
+      let_go.body_poses = guess.body_poses;
+      SystemData sd = MakeSystemData(let_go, in, step, guess.states);
+      std::vector<State> states(sys.lines.size());
+      std::vector<Vec6> poses = guess.body_poses;
+      for (int span = 1; span * kSpan <= kLongest + 1e-9; ++span) {
+        ThrowIfCancelled(options.cancel, "the system's static equilibrium");
+        StepSystem(let_go, sd, in, kSpan);
+        // The clock back to t = 0: the ends and the sea as the statics have them.
+        sd.t = 0;
+        for (Data& d : sd.lines) d.state.t = 0;
+        if (span % static_cast<int>(kTry / kSpan + 0.5) != 0) continue;
+        for (std::size_t i = 0; i < states.size(); ++i) states[i] = sd.lines[i].state;
+        for (std::size_t k = 0; k < sys.free_bodies.size(); ++k)
+          poses[sys.free_bodies[k]] = sd.bodies[k].q;
+        SystemEquilibriumOptions from_here = options;
+        from_here.guess = &states;
+        from_here.guess_poses = poses.data();
+        try {
+          std::vector<State> rest = SolveSystemEquilibrium(sys, report, from_here);
+          if (report) report->relaxed = span * kSpan;
+          return rest;
+        } catch (const CancelledError&) {
+          throw;
+        } catch (const Error&) {
+          // More motion, and again.
+        }
+      }
+    } catch (const CancelledError&) {
+      throw;
+    } catch (const Error&) {
+      // The motion itself failed (a blow-up): the first error says what matters.
+    }
+    throw Error(std::string(first.what()) + "; nor after " + std::to_string(int(kLongest)) +
+                " s of the system's own motion, damped by its fluid, from there");
+  }
+}
+
+}  // namespace cablefilm

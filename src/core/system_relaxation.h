@@ -1,0 +1,26 @@
+#pragma once
+// A system's static equilibrium that Newton's method (system_equilibrium.h) does not reach
+// from the scene's first guess: a float at the water's surface, whose lumped stations float
+// and sink one at a time; a body given above the anchor it hangs below. Found then from where
+// the system's own motion brings it when let go at the first guess, damped by its fluid (as
+// MoorDyn finds its initial state, by "dynamic relaxation"), Newton tried again every few
+// seconds of that motion. The scene's clock stands still meanwhile: its ends and bodies where
+// they are at t = 0, its sea calm.
+#include <vector>
+
+#include "core/inputs.h"
+#include "core/step.h"
+#include "core/system_equilibrium.h"
+
+namespace cablefilm {
+
+// SolveSystemEquilibrium's answer; when it throws Error, the relaxation's (report->relaxed
+// says how many seconds of motion it took). Throws the first Error when the relaxation finds
+// none either (or the motion blows up), CancelledError when options.cancel is raised.
+// `step`: the implicit scheme's options (MakeSystemData).
+std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const Inputs& in,
+                                                  const StepOptions& step,
+                                                  SystemEquilibriumReport* report,
+                                                  const SystemEquilibriumOptions& options);
+
+}  // namespace cablefilm
