@@ -18,9 +18,11 @@ namespace cablefilm {
 constexpr double kResolvedSnapFraction = 0.1;
 // A link is slack (a snap may follow) once it is shorter than its rest length by more than
 // this strain; within it, a link at zero tension flips between taut and slack on round-off
-// alone, with no load to speak of (a closing speed of that order gives at most 1e-9 EA): a
-// line of a MoorDyn file lying at zero strain warned of 9 unresolved snaps of 1e-11 N.
-constexpr double kSlackStrain = 1e-9;
+// and Newton's tolerance (1e-9 of the shortest link, on each station) alone, with no load to
+// speak of (an axial wobble of that amplitude closes at most at 1e-6 l omega, a snap load of
+// 1e-6 EA): a line of a MoorDyn file lying at zero strain warned of 9 unresolved snaps of
+// 1e-11 N, a float's slack links at the surface of one at 1e-9.
+constexpr double kSlackStrain = 1e-6;
 
 struct StepRecord {
   double smallest_step = 0;      // [s], of the steps taken (0: none yet)
