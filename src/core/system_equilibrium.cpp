@@ -312,8 +312,13 @@ std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibr
     fresh = true;
   };
   differences();
+  double best = norm(R);  // the smallest out-of-balance load so far, and when it fell by 1 %
+  int improved = 0;
   while (norm(R) > options.tolerance * scale) {
-    if (++r.iterations > options.max_iterations) {
+    if (norm(R) < 0.99 * best) best = norm(R), improved = r.iterations;
+    const bool stalled =
+        options.stall_iterations > 0 && r.iterations - improved >= options.stall_iterations;
+    if (++r.iterations > options.max_iterations || stalled) {
       // Name the one most out of balance, and what usually causes it.
       const Unknowns::Group* worst = &u.groups.front();
       double worst_force = -1;
@@ -325,7 +330,11 @@ std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibr
       const bool body = worst->body >= 0;
       std::ostringstream os;
       os << "the shared points and free bodies of the system do not balance after "
-         << options.max_iterations << " Newton iterations: out-of-balance force " << norm(R)
+         << r.iterations - 1 << " Newton iterations"
+         << (stalled ? " (the last " + std::to_string(options.stall_iterations) +
+                           " gained less than 1 %)"
+                     : std::string())
+         << ": out-of-balance force " << norm(R)
          << " N on " << (body ? "body " : "point ")
          << '"' << (body ? sys.bodies[worst->body].name : sys.points[worst->point].name) << '"'
          << " (the lines' own loads are " << scale << " N); a free "

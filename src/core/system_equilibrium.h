@@ -28,6 +28,7 @@ struct SystemEquilibriumReport {
 
 struct SystemEquilibriumOptions {
   int max_iterations = 100;   // Newton iterations on the shared points
+  int stall_iterations = 0;   // given up when so many in a row gain less than 1 % (0: never)
   double tolerance = 1e-9;    // converged when residual <= tolerance * force_scale
   const CancelFlag* cancel = nullptr;
   // A state of the lines to start from (a line each: the shared points where their end

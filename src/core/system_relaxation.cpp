@@ -1,5 +1,6 @@
 #include "core/system_relaxation.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/cancel.h"
@@ -13,6 +14,13 @@ constexpr double kSpan = 0.1;    // s of motion between looks at the clock [s]
 constexpr double kTry = 5.0;     // s of motion between tries of Newton [s]
 constexpr double kLongest = 60.0;  // s of motion at most [s]: a mooring's slowest swings
                                    // (tens of seconds) damped a few times over
+// Newton's iterations from a state the motion has brought near: it converges in a few or the
+// motion is not near yet (the last try has them all). Each failed try costs as much as the
+// first failure did otherwise, and there are twelve.
+constexpr int kNearIterations = 20;
+// The first Newton from the scene's guess gives way to the motion once this many iterations
+// in a row gain less than 1 % (a stall: Broyden's steps cannot get out of where it is).
+constexpr int kStallIterations = 20;
 
 }  // namespace
 
@@ -20,8 +28,10 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
                                                   const StepOptions& step,
                                                   SystemEquilibriumReport* report,
                                                   const SystemEquilibriumOptions& options) {
+  SystemEquilibriumOptions first_try = options;
+  first_try.stall_iterations = kStallIterations;
   try {
-    return SolveSystemEquilibrium(sys, report, options);
+    return SolveSystemEquilibrium(sys, report, first_try);
   } catch (const CancelledError&) {
     throw;
   } catch (const Error& first) {
@@ -43,6 +53,8 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
         for (std::size_t k = 0; k < sys.free_bodies.size(); ++k)
           poses[sys.free_bodies[k]] = sd.bodies[k].q;
         SystemEquilibriumOptions from_here = options;
+        if ((span + 1) * kSpan <= kLongest + 1e-9)
+          from_here.max_iterations = std::min(options.max_iterations, kNearIterations);
         from_here.guess = &states;
         from_here.guess_poses = poses.data();
         try {
