@@ -97,6 +97,7 @@ py::dict SystemStats(const MemorySystemRun& r) {
   d["unresolved_snaps"] = s.stats.record.unresolved_snaps;
   d["equilibrium_iterations"] = r.run.equilibrium.iterations;
   d["equilibrium_residual"] = r.run.equilibrium.residual;
+  d["equilibrium_relaxed"] = r.run.equilibrium.relaxed;
   return d;
 }
 
