@@ -19,8 +19,13 @@ constexpr double kLongest = 60.0;  // s of motion at most [s]: a mooring's slowe
 // first failure did otherwise, and there are twelve.
 constexpr int kNearIterations = 20;
 // The first Newton from the scene's guess gives way to the motion once this many iterations
-// in a row gain less than 1 % (a stall: Broyden's steps cannot get out of where it is).
+// in a row gain less than 1 % (a stall: Broyden's steps cannot get out of where it is); so do
+// the tries from the motion's states.
 constexpr int kStallIterations = 20;
+// The motion's steps at most: a motion that needs more (a float's stations slapping the
+// surface, snaps) is not settling, and the statics should fail in seconds, not minutes (20
+// runs' worth of steps at the rows' 1/30 s; a MoorDyn float of 30 links settled in 25 800).
+constexpr long kMostSteps = 36000;
 
 }  // namespace
 
@@ -45,6 +50,7 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
       for (int span = 1; span * kSpan <= kLongest + 1e-9; ++span) {
         ThrowIfCancelled(options.cancel, "the system's static equilibrium");
         StepSystem(let_go, sd, in, kSpan);
+        if (sd.stats.steps > kMostSteps) break;
         // The clock back to t = 0: the ends and the sea as the statics have them.
         sd.t = 0;
         for (Data& d : sd.lines) d.state.t = 0;
@@ -53,6 +59,7 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
         for (std::size_t k = 0; k < sys.free_bodies.size(); ++k)
           poses[sys.free_bodies[k]] = sd.bodies[k].q;
         SystemEquilibriumOptions from_here = options;
+        from_here.stall_iterations = kStallIterations;
         if ((span + 1) * kSpan <= kLongest + 1e-9)
           from_here.max_iterations = std::min(options.max_iterations, kNearIterations);
         from_here.guess = &states;
@@ -72,8 +79,9 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
     } catch (const Error&) {
       // The motion itself failed (a blow-up): the first error says what matters.
     }
-    throw Error(std::string(first.what()) + "; nor after " + std::to_string(int(kLongest)) +
-                " s of the system's own motion, damped by its fluid, from there");
+    throw Error(std::string(first.what()) + "; nor from where the system's own motion, damped "
+                "by its fluid, brought it (at most " + std::to_string(int(kLongest)) + " s, " +
+                std::to_string(kMostSteps) + " steps)");
   }
 }
 
