@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <cmath>
 
 #include <algorithm>
 #include <cstdlib>
@@ -526,6 +527,71 @@ segments = 4
   }
   EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.partial.csv"));
+}
+
+// The statics' relaxation (system_relaxation.h) as a user meets it, with every default: a
+// MoorDyn file whose free body is given above the anchor it hangs below. Newton from there
+// cannot balance it; `check` and `run` say where the equilibrium was found from, and the run
+// starts at rest in it. Hand values (moordyn_convert_test, BodyGivenAboveItsAnchorHangsBelowIt):
+// the body weighs (20 - 1025 x 0.004) 9.81 = 155.9 N in water, the rope 4 m of
+// (8 - 1025 pi 0.05^2 / 4) 9.81 = 58.78 N/m, half of it at the body's station: the one link
+// holds T = 155.9 + 2 x 58.78 = 273.5 N, 4 (1 + T / 2000) m long straight down from the anchor.
+TEST_F(CommandLine, BodyGivenAboveItsAnchorIsRelaxedIntoEquilibrium) {
+  std::ofstream(dir_ / "above.txt", std::ios::binary) << R"(A body given above its anchor
+---------------------- LINE TYPES -----------------------
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
+rope 0.05 8.0 2000 -0.4 0 1.2 1 0 0
+---------------------- BODIES ---------------------------
+ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
+(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
+1 Free 0 0 0 0 0 0 20 0 2 0.004 0.5 1
+---------------------- POINTS ---------------------------
+ID Attachment X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Body1 0 0 0 0 0 0 0
+2 Fixed 0 0 -5 0 0 0 0
+---------------------- LINES ----------------------------
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 rope 1 2 4 1 -
+---------------------- OPTIONS --------------------------
+70 WtrDpth
+)";
+  const double T = (20.0 - 1025.0 * 0.004) * 9.81 +
+                   2.0 * (8.0 - 1025.0 * M_PI * 0.05 * 0.05 / 4) * 9.81;  // [N]
+  const double y = -5.0 - 4.0 * (1.0 + T / 2000.0);                         // [m]
+  for (const std::string command : {"check", "run --no-film --out out"}) {
+    const Outcome o = Run(command + " above.txt");
+    ASSERT_EQ(o.status, 0) << command << ": " << o.out << o.err;
+    EXPECT_NE(o.out.find("not reached from the scene's positions: found from where"),
+              std::string::npos)
+        << o.out;
+  }
+  // Every row of the body's track at the hand position: the run starts in the equilibrium and
+  // stays there. Statics to 1e-9 of the load put it within 1e-8 m; the file's 12 digits and the
+  // hand value's g (9.81 in both) leave 1e-6 m.
+  std::istringstream rows(ReadText(dir_ / "out" / "body.csv"));
+  std::string row;
+  std::getline(rows, row);  // the header
+  int count = 0;
+  while (std::getline(rows, row)) {
+    std::vector<std::string> cells;
+    std::istringstream fields(row);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    ASSERT_GE(cells.size(), 5u) << row;
+    EXPECT_NEAR(std::stod(cells[3]), y, 1e-6) << row;
+    ++count;
+  }
+  EXPECT_EQ(count, 1801);  // 60 s (the converter's duration), a row every 1/30 s
+  // The tension at rest: the report's peak and least alike, T (statics to 1e-9 of it; the
+  // hand value is the same arithmetic: 1e-6 N).
+  const std::string report = ReadText(dir_ / "out" / "run_report.toml");
+  for (const char* key : {"peak_tension = ", "min_tension = "}) {
+    const size_t at = report.find(key);
+    ASSERT_NE(at, std::string::npos) << key;
+    EXPECT_NEAR(std::stod(report.substr(at + std::string(key).size())), T, 1e-6) << key;
+  }
 }
 
 }  // namespace
