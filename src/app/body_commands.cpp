@@ -8,6 +8,7 @@
 #include "core/body_statics.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "run/system_run.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "scene/text_escape.h"
@@ -41,6 +42,22 @@ SystemModel LoadSystem(const std::string& scene_path, SceneDef* scene) {
   return BuildSystem(*scene);
 }
 
+// The system's equilibrium as `run` finds it (run/system_run.h); `options` then start each
+// held pose's statics from it.
+struct Equilibrium {
+  SystemEquilibriumReport report;
+  std::vector<State> states;
+  SystemEquilibriumOptions options;
+};
+
+void FindEquilibrium(const SceneDef& scene, const SystemModel& sys, Equilibrium& e) {
+  InstallSignalHandlers();
+  e.states = SystemStatics(scene, sys, &e.report, &g_signal);
+  e.options.cancel = &g_signal;
+  e.options.guess = &e.states;
+  e.options.guess_poses = e.report.body_poses.data();
+}
+
 void PrintPose(const char* what, const Vec6& pose) {
   std::printf("%s: x %.6g m, y %.6g m, z %.6g m, about x %.6g deg, about y %.6g deg, about z "
               "%.6g deg\n",
@@ -54,12 +71,11 @@ int StiffnessCommand(const std::string& scene_path, const std::string& body) {
   SceneDef scene;
   const SystemModel sys = LoadSystem(scene_path, &scene);
   const int b = FindBody(scene, sys, body);
-  InstallSignalHandlers();
-  SystemEquilibriumOptions options;
-  options.cancel = &g_signal;
-  const Vec6 pose = EquilibriumPose(sys, b, options);
+  Equilibrium e;
+  FindEquilibrium(scene, sys, e);
+  const Vec6 pose = e.report.body_poses[b];
   const double step = 1e-4 * ShortestLineOn(sys, b);
-  const Mat6 K = MooringStiffness(sys, b, pose, step, options);
+  const Mat6 K = MooringStiffness(sys, b, pose, step, e.options);
   std::printf("body %s\n", QuoteText(sys.bodies[b].name).c_str());
   PrintPose("pose at equilibrium", pose);
   std::printf("mooring stiffness K = -dF/dq at that pose (central differences of %.3g m):\n"
@@ -77,16 +93,15 @@ int OffsetCommand(const std::string& scene_path, const OffsetOptions& o) {
   SceneDef scene;
   const SystemModel sys = LoadSystem(scene_path, &scene);
   const int b = FindBody(scene, sys, o.body);
-  InstallSignalHandlers();
-  SystemEquilibriumOptions options;
-  options.cancel = &g_signal;
-  const Vec6 pose = EquilibriumPose(sys, b, options);
+  Equilibrium e;
+  FindEquilibrium(scene, sys, e);
+  const Vec6 pose = e.report.body_poses[b];
   const double most = o.max_offset >= 0 ? o.max_offset : 0.05 * ShortestLineOn(sys, b);
   std::vector<double> offsets;
   for (int k = 0; k < o.points; ++k)
     offsets.push_back(o.points > 1 ? most * k / (o.points - 1) : most);
   const std::vector<OffsetPoint> curve =
-      OffsetCurve(sys, b, pose, o.heading * M_PI / 180.0, offsets, options);
+      OffsetCurve(sys, b, pose, o.heading * M_PI / 180.0, offsets, e.options);
   std::ostringstream csv;
   csv.precision(10);
   csv << "offset,restoring,fx,fy,fz,mx,my,mz";

@@ -48,7 +48,7 @@ Mat6 MooringStiffness(const SystemModel& sys, int b, const Vec6& pose, double st
     d[k] = h;
     const Vec6 plus = LoadAtPose(sys, b, pose + d, options).load;
     const Vec6 minus = LoadAtPose(sys, b, pose - d, options).load;
-    K.col(k) = -(plus - minus) / (2 * h);
+    K.col(k) = (minus - plus) / (2 * h);  // (not -(plus - minus): no -0 where they are equal)
   }
   return K;
 }

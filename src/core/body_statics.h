@@ -10,9 +10,6 @@
 
 namespace cablefilm {
 
-// Body b's pose at the system's equilibrium: a free body's as solved, another's at rest.
-Vec6 EquilibriumPose(const SystemModel& sys, int b, const SystemEquilibriumOptions& options = {});
-
 struct MooringLoad {
   Vec6 load = Vec6::Zero();  // the lines' force [N] and moment about the reference point [N m]
   // Per line: the load at its end on the body (the end station's force: its end link's tension
@@ -21,7 +18,12 @@ struct MooringLoad {
   std::vector<State> states;  // the lines' equilibrium
 };
 
-// The moorings' load on body b held at `pose`.
+// Body b's pose at the system's equilibrium (Newton's from the scene's positions: the tools
+// take run/system_run.h's SystemStatics, which relaxes where Newton fails).
+Vec6 EquilibriumPose(const SystemModel& sys, int b, const SystemEquilibriumOptions& options = {});
+
+// The moorings' load on body b held at `pose` (its statics from options.guess when given: the
+// system's equilibrium, say, which the scene's positions may not reach).
 MooringLoad LoadAtPose(const SystemModel& sys, int b, const Vec6& pose,
                        const SystemEquilibriumOptions& options = {});
 

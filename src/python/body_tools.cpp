@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "python/bindings.h"
 #include "python/interruptible.h"
+#include "run/system_run.h"
 #include "scene/scene_loader.h"
 
 namespace py = pybind11;
@@ -49,13 +50,21 @@ py::array Vector6(const Vec6& v) {
 }
 
 // Core work with the GIL released and Ctrl-C polled; an Error is a SceneError of the scene.
+// `work` is given body b's pose at the system's equilibrium as `run` finds it
+// (run/system_run.h) and options that start each held pose's statics from that equilibrium.
 template <class Work>
-auto Statics(const SceneHandle& scene, Work&& work) {
+auto Statics(const SceneHandle& scene, int b, Work&& work) {
   CancelFlag cancel{0};
-  SystemEquilibriumOptions options;
-  options.cancel = &cancel;
   try {
-    return RunInterruptible(cancel, [&] { return work(options); });
+    return RunInterruptible(cancel, [&] {
+      SystemEquilibriumReport report;
+      const std::vector<State> states = SystemStatics(scene.def(), scene.system(), &report, &cancel);
+      SystemEquilibriumOptions options;
+      options.cancel = &cancel;
+      options.guess = &states;
+      options.guess_poses = report.body_poses.data();
+      return work(report.body_poses[b], options);
+    });
   } catch (const CancelledError&) {
     throw;
   } catch (const Error& e) {
@@ -71,9 +80,9 @@ py::tuple Stiffness(const py::object& source, const std::optional<std::string>& 
     Vec6 pose;
     Mat6 K;
   };
-  const Out out = Statics(scene, [&](const SystemEquilibriumOptions& options) {
+  const Out out = Statics(scene, b, [&](const Vec6& pose, const SystemEquilibriumOptions& options) {
     Out o;
-    o.pose = EquilibriumPose(sys, b, options);
+    o.pose = pose;
     o.K = MooringStiffness(sys, b, o.pose, 1e-4 * ShortestLineOn(sys, b), options);
     return o;
   });
@@ -98,9 +107,9 @@ py::dict Offset(const py::object& source, const std::optional<std::string>& body
     Vec6 pose;
     std::vector<OffsetPoint> curve;
   };
-  const Out out = Statics(scene, [&](const SystemEquilibriumOptions& options) {
+  const Out out = Statics(scene, b, [&](const Vec6& pose, const SystemEquilibriumOptions& options) {
     Out o;
-    o.pose = EquilibriumPose(sys, b, options);
+    o.pose = pose;
     std::vector<double> offsets;
     if (given) {
       offsets = *given;

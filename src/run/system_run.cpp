@@ -55,6 +55,16 @@ void SystemRowStepper::Next() {
   for (Data& d : sd_.lines) d.state.t = sd_.t;
 }
 
+std::vector<State> SystemStatics(const SceneDef& scene, const SystemModel& sys,
+                                 SystemEquilibriumReport* report, const CancelFlag* stop) {
+  if (sys.lines.empty()) throw Error(scene.path + ": a system needs at least one [[line]]");
+  Inputs in = SceneInputs(sys.lines[0]);
+  in.stop = stop;
+  SystemEquilibriumOptions options;
+  options.cancel = stop;
+  return SolveSystemEquilibriumRelaxing(sys, in, SystemGrid(scene, sys).options, report, options);
+}
+
 SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop) {
   SystemRun run;
   run.sys = std::move(sys);
@@ -65,9 +75,7 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
   SystemEquilibriumOptions options;
   options.cancel = stop;
   const auto t0 = std::chrono::steady_clock::now();
-  std::vector<State> states = SolveSystemEquilibriumRelaxing(run.sys, run.inputs,
-                                                             run.grid.options, &run.equilibrium,
-                                                             options);
+  std::vector<State> states = SystemStatics(scene, run.sys, &run.equilibrium, stop);
   // A free body given an initial offset starts there, its lines in equilibrium with it held
   // (a decay test); the others at their equilibrium.
   SystemModel held = run.sys;

@@ -70,6 +70,13 @@ class SystemRowStepper {
   long row_ = 0;
 };
 
+// The system's static equilibrium as its run starts from it (each line's state; the bodies'
+// poses in `report`): Newton's, or where Newton fails from the scene's positions, the
+// relaxation's (core/system_relaxation.h) with the run's step options. Throws Error when the
+// system has none, CancelledError when `stop` is raised.
+std::vector<State> SystemStatics(const SceneDef& scene, const SystemModel& sys,
+                                 SystemEquilibriumReport* report, const CancelFlag* stop);
+
 // Throws Error when the system has no equilibrium, CancelledError when `stop` is raised.
 SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop);
 

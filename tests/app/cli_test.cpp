@@ -529,15 +529,14 @@ segments = 4
   EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.partial.csv"));
 }
 
-// The statics' relaxation (system_relaxation.h) as a user meets it, with every default: a
-// MoorDyn file whose free body is given above the anchor it hangs below. Newton from there
-// cannot balance it; `check` and `run` say where the equilibrium was found from, and the run
-// starts at rest in it. Hand values (moordyn_convert_test, BodyGivenAboveItsAnchorHangsBelowIt):
-// the body weighs (20 - 1025 x 0.004) 9.81 = 155.9 N in water, the rope 4 m of
-// (8 - 1025 pi 0.05^2 / 4) 9.81 = 58.78 N/m, half of it at the body's station: the one link
-// holds T = 155.9 + 2 x 58.78 = 273.5 N, 4 (1 + T / 2000) m long straight down from the anchor.
-TEST_F(CommandLine, BodyGivenAboveItsAnchorIsRelaxedIntoEquilibrium) {
-  std::ofstream(dir_ / "above.txt", std::ios::binary) << R"(A body given above its anchor
+// A MoorDyn file whose free body is given above the anchor it hangs below: Newton from there
+// cannot balance it (its one link passes through the anchor on the way); the statics' relaxation
+// (system_relaxation.h) finds the equilibrium. Hand values (moordyn_convert_test,
+// BodyGivenAboveItsAnchorHangsBelowIt): the body weighs (20 - 1025 x 0.004) 9.81 = 155.9 N in
+// water, the rope 4 m of (8 - 1025 pi 0.05^2 / 4) 9.81 = 58.78 N/m, half of it at the body's
+// station: the one link holds T = 155.9 + 2 x 58.78 = 273.5 N, 4 (1 + T / 2000) m long straight
+// down from the anchor.
+const char* const kBodyAboveAnchor = R"(A body given above its anchor
 ---------------------- LINE TYPES -----------------------
 TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
 (name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
@@ -558,9 +557,16 @@ ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
 ---------------------- OPTIONS --------------------------
 70 WtrDpth
 )";
-  const double T = (20.0 - 1025.0 * 0.004) * 9.81 +
-                   2.0 * (8.0 - 1025.0 * M_PI * 0.05 * 0.05 / 4) * 9.81;  // [N]
-  const double y = -5.0 - 4.0 * (1.0 + T / 2000.0);                         // [m]
+const double kBodyWetWeight = (20.0 - 1025.0 * 0.004) * 9.81;  // [N]
+const double kBodyLinkTension =
+    kBodyWetWeight + 2.0 * (8.0 - 1025.0 * M_PI * 0.05 * 0.05 / 4) * 9.81;  // T [N]
+const double kBodyLinkLength = 4.0 * (1.0 + kBodyLinkTension / 2000.0);     // L [m]
+
+// The relaxation as a user meets it, with every default: `check` and `run` say where the
+// equilibrium was found from, and the run starts at rest in it.
+TEST_F(CommandLine, BodyGivenAboveItsAnchorIsRelaxedIntoEquilibrium) {
+  std::ofstream(dir_ / "above.txt", std::ios::binary) << kBodyAboveAnchor;
+  const double T = kBodyLinkTension, y = -5.0 - kBodyLinkLength;  // [N], [m]
   for (const std::string command : {"check", "run --no-film --out out"}) {
     const Outcome o = Run(command + " above.txt");
     ASSERT_EQ(o.status, 0) << command << ": " << o.out << o.err;
@@ -592,6 +598,51 @@ ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
     ASSERT_NE(at, std::string::npos) << key;
     EXPECT_NEAR(std::stod(report.substr(at + std::string(key).size())), T, 1e-6) << key;
   }
+}
+
+// The body tools start where `run` does: from the relaxed equilibrium (they said "do not balance
+// after 100 Newton iterations" where `run` ran). At that pose the one link pivots about the
+// anchor: horizontal stiffness T / L, vertical EA / l = 2000 / 4 N/m, no moment (the line ends at
+// the reference point). Held at an offset d along x the link is L' = sqrt(L^2 + d^2) long and
+// restores EA (L' - 4) / 4 d / L'.
+TEST_F(CommandLine, BodyToolsStartFromTheRelaxedEquilibrium) {
+  std::ofstream(dir_ / "above.txt", std::ios::binary) << kBodyAboveAnchor;
+  const Outcome k = Run("stiffness above.txt");
+  ASSERT_EQ(k.status, 0) << k.out << k.err;
+  std::istringstream lines(k.out);
+  std::vector<std::vector<double>> K;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream row(line);
+    std::vector<double> values;
+    for (double v; row >> v;) values.push_back(v);
+    if (values.size() == 6 && row.eof()) K.push_back(values);
+  }
+  ASSERT_EQ(K.size(), 6u) << k.out;
+  // Central differences of 4e-4 m of statics to 1e-9 of the 273 N load: 1e-3 N/m.
+  EXPECT_NEAR(K[0][0], kBodyLinkTension / kBodyLinkLength, 1e-3) << k.out;
+  EXPECT_NEAR(K[1][1], 2000.0 / 4.0, 1e-3) << k.out;
+  EXPECT_NEAR(K[2][2], kBodyLinkTension / kBodyLinkLength, 1e-3) << k.out;
+  EXPECT_NEAR(K[3][3], 0.0, 1e-3) << k.out;
+  EXPECT_EQ(k.out.find("-0.0"), std::string::npos) << "a zero printed negative: " << k.out;
+
+  const Outcome o = Run("offset above.txt --points 3");
+  ASSERT_EQ(o.status, 0) << o.out << o.err;
+  std::istringstream rows(o.out);
+  std::string row;
+  std::getline(rows, row);  // the header
+  int count = 0;
+  while (std::getline(rows, row)) {
+    const double d = 0.1 * count++;  // 0 to 5 % of the 4 m line, in 3 points
+    std::istringstream fields(row);
+    double offset = 0, restoring = 0;
+    char comma = 0;
+    fields >> offset >> comma >> restoring;
+    const double stretched = std::hypot(kBodyLinkLength, d);  // L' [m]
+    EXPECT_NEAR(offset, d, 1e-12) << row;
+    // A held one-link line has no unknowns: the file's 10 digits.
+    EXPECT_NEAR(restoring, 2000.0 * (stretched - 4.0) / 4.0 * d / stretched, 1e-6) << row;
+  }
+  EXPECT_EQ(count, 3) << o.out;
 }
 
 }  // namespace

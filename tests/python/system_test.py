@@ -228,6 +228,29 @@ class SystemEquilibrium(unittest.TestCase):
         self.assertAlmostEqual(e.body_load[0, 0] / -2.0e5, 1.0, places=4)
 
 
+ABOVE_ANCHOR = """A body given above its anchor
+---------------------- LINE TYPES -----------------------
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
+rope 0.05 8.0 2000 -0.4 0 1.2 1 0 0
+---------------------- BODIES ---------------------------
+ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
+(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
+1 Free 0 0 0 0 0 0 20 0 2 0.004 0.5 1
+---------------------- POINTS ---------------------------
+ID Attachment X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Body1 0 0 0 0 0 0 0
+2 Fixed 0 0 -5 0 0 0 0
+---------------------- LINES ----------------------------
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 rope 1 2 4 1 -
+---------------------- OPTIONS --------------------------
+70 WtrDpth
+"""
+
+
 def cli_stiffness(path):
     status, stdout, stderr = cli("stiffness", path)
     if status != 0:
@@ -274,6 +297,25 @@ class BodyTools(unittest.TestCase):
                 self.assertEqual([r[col] for r in rows], g("%.10g", c["load"][:, k]), col)
             for name, t in c["tension"].items():
                 self.assertEqual([r["tension_" + name] for r in rows], g("%.10g", t), name)
+
+    def test_relaxed_equilibrium_is_the_commands(self):
+        # A MoorDyn file whose free body is given above the anchor it hangs below (Newton from
+        # there fails; the statics' relaxation finds it): the same pose and stiffness as the
+        # command's, the body where the hand value puts it (tests/app/cli_test.cpp,
+        # kBodyAboveAnchor: 4 (1 + 273.45 / 2000) m below the anchor at y = -5 m).
+        path = os.path.join(workdir("above"), "above.txt")
+        with open(path, "w") as f:
+            f.write(ABOVE_ANCHOR)
+        pose, K = cablefilm.stiffness(path)
+        pose_line, K_cli = cli_stiffness(path)
+        self.assertIn("y %.6g m," % pose[1], pose_line)
+        self.assertEqual([["%.6e" % v for v in row] for row in K],
+                         [["%.6e" % v for v in row] for row in K_cli])
+        T = (20 - 1025 * 0.004) * 9.81 + 2 * (8 - 1025 * np.pi * 0.05 ** 2 / 4) * 9.81
+        # Statics to 1e-9 of the load: 1e-8 m.
+        self.assertAlmostEqual(pose[1], -5 - 4 * (1 + T / 2000), delta=1e-8)
+        c = cablefilm.offset_curve(path, offsets=[0.0])
+        self.assertAlmostEqual(c["restoring"][0], 0.0, delta=1e-9)
 
     def test_stiffness_is_the_curves_slope(self):
         # K_xx = -dFx/dx by central differences of h = 1e-4 of the shortest line (52 m); the
