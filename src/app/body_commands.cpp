@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "app/progress.h"
 #include "app/run_support.h"
 #include "core/body_statics.h"
 #include "core/error.h"
@@ -52,7 +53,8 @@ struct Equilibrium {
 
 void FindEquilibrium(const SceneDef& scene, const SystemModel& sys, Equilibrium& e) {
   InstallSignalHandlers();
-  e.states = SystemStatics(scene, sys, &e.report, &g_signal);
+  RelaxationProgress progress;
+  e.states = SystemStatics(scene, sys, &e.report, &g_signal, progress.fraction());
   e.options.cancel = &g_signal;
   e.options.guess = &e.states;
   e.options.guess_poses = e.report.body_poses.data();

@@ -1,5 +1,7 @@
 #include "app/progress.h"
 
+#include "core/system_relaxation.h"
+
 #include <cstdio>
 #include <unistd.h>
 
@@ -12,16 +14,29 @@ ProgressLine::ProgressLine(std::string label, double total, std::string unit)
 
 ProgressLine::~ProgressLine() { Finish(); }
 
+RelaxationProgress::RelaxationProgress()
+    : line_("static equilibrium: the system's own motion (at most " +
+                std::to_string(static_cast<int>(kLongestRelaxation)) + " s, " +
+                std::to_string(kMostRelaxationSteps) + " steps)",
+            1, "") {}
+
 void ProgressLine::Update(double done) {
+  char amount[96];
+  std::snprintf(amount, sizeof amount, " %.1f / %.1f %s", done, total_, unit_.c_str());
+  Show(total_ > 0 ? done / total_ : 0, amount, "");
+}
+
+void ProgressLine::UpdateBound(double fraction) { Show(fraction, "", "at most "); }
+
+void ProgressLine::Show(double fraction, const char* amount, const char* bound) {
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   if (now - last_ < std::chrono::milliseconds(200)) return;
   last_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  const double fraction = total_ > 0 ? done / total_ : 0;
   const double left = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
-  std::fprintf(stderr, "\r%s %.1f / %.1f %s (%3.0f%%), %.0f s left   ", label_.c_str(), done,
-               total_, unit_.c_str(), 100 * fraction, left);
+  std::fprintf(stderr, "\r%s%s (%3.0f%%), %s%.0f s left   ", label_.c_str(), amount,
+               100 * fraction, bound, left);
   std::fflush(stderr);
   shown_ = true;
 }

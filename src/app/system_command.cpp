@@ -26,6 +26,13 @@
 namespace cablefilm {
 namespace {
 
+// The system's statics as `run` finds them, a progress line shown while the relaxation's
+// motion goes on (it can take seconds: core/system_relaxation.h).
+SystemRun PrepareWithProgress(const SceneDef& scene, const SystemModel& sys) {
+  RelaxationProgress progress;
+  return PrepareSystemRun(scene, sys, &g_signal, progress.fraction());
+}
+
 const char* KindName(PointKind kind) {
   switch (kind) {
     case PointKind::kFixed:
@@ -136,7 +143,7 @@ int CheckSystem(const SceneDef& scene) {
   const SystemModel sys = BuildSystem(scene);
   PrintSystem(scene, sys);
   InstallSignalHandlers();
-  const SystemRun run = PrepareSystemRun(scene, sys, &g_signal);
+  const SystemRun run = PrepareWithProgress(scene, sys);
   PrintEquilibrium(run.sys, run.equilibrium, run.equilibrium_ms);
   std::printf("ok\n");
   return 0;
@@ -152,7 +159,7 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
   OutDirLock lock;
   const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
-  SystemRun run = PrepareSystemRun(scene, built, &g_signal);
+  SystemRun run = PrepareWithProgress(scene, built);
   PrintEquilibrium(run.sys, run.equilibrium, run.equilibrium_ms);
   const SystemModel& sys = run.sys;
   const int nl = static_cast<int>(sys.lines.size());

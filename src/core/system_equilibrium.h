@@ -7,6 +7,7 @@
 // bodies' poses (6 per body), with a Jacobian of finite differences (each column re-solves
 // the lines at one point or body, from their last equilibrium), Broyden's updates and a
 // backtracking line search.
+#include <functional>
 #include <vector>
 
 #include "core/equilibrium.h"
@@ -36,6 +37,9 @@ struct SystemEquilibriumOptions {
   // place of the scene's positions and the chains' guesses; null: those.
   const std::vector<State>* guess = nullptr;
   const Vec6* guess_poses = nullptr;
+  // Called as the relaxation's motion goes on (system_relaxation.h), with the fraction of its
+  // bound used so far (its seconds or its steps, whichever is nearer theirs); none: not called.
+  std::function<void(double)> relaxing;
 };
 
 // The lines held at the first guess the statics start from (each in its own equilibrium with

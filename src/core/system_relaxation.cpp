@@ -12,8 +12,7 @@ namespace {
 
 constexpr double kSpan = 0.1;    // s of motion between looks at the clock [s]
 constexpr double kTry = 5.0;     // s of motion between tries of Newton [s]
-constexpr double kLongest = 60.0;  // s of motion at most [s]: a mooring's slowest swings
-                                   // (tens of seconds) damped a few times over
+constexpr double kLongest = kLongestRelaxation;
 // Newton's iterations from a state the motion has brought near: it converges in a few or the
 // motion is not near yet (the last try has them all). Each failed try costs as much as the
 // first failure did otherwise, and there are twelve.
@@ -22,10 +21,7 @@ constexpr int kNearIterations = 20;
 // in a row gain less than 1 % (a stall: Broyden's steps cannot get out of where it is); so do
 // the tries from the motion's states.
 constexpr int kStallIterations = 20;
-// The motion's steps at most: a motion that needs more (a float's stations slapping the
-// surface, snaps) is not settling, and the statics should fail in seconds, not minutes (20
-// runs' worth of steps at the rows' 1/30 s; a MoorDyn float of 30 links settled in 25 800).
-constexpr long kMostSteps = 36000;
+constexpr long kMostSteps = kMostRelaxationSteps;
 
 }  // namespace
 
@@ -51,6 +47,8 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
         ThrowIfCancelled(options.cancel, "the system's static equilibrium");
         StepSystem(let_go, sd, in, kSpan);
         if (sd.stats.steps > kMostSteps) break;
+        if (options.relaxing)
+          options.relaxing(std::max(span * kSpan / kLongest, double(sd.stats.steps) / kMostSteps));
         // The clock back to t = 0: the ends and the sea as the statics have them.
         sd.t = 0;
         for (Data& d : sd.lines) d.state.t = 0;

@@ -14,6 +14,14 @@
 
 namespace cablefilm {
 
+// The relaxation's motion at most [s]: a mooring's slowest swings (tens of seconds) damped a
+// few times over.
+constexpr double kLongestRelaxation = 60.0;
+// Its steps at most: a motion that needs more (a float's stations slapping the surface, snaps)
+// is not settling, and the statics should fail in seconds, not minutes (20 runs' worth of steps
+// at the rows' 1/30 s; a MoorDyn float of 30 links settled in 25 800).
+constexpr long kMostRelaxationSteps = 36000;
+
 // SolveSystemEquilibrium's answer; when it throws Error, the relaxation's (report->relaxed
 // says how many seconds of motion it took). Throws the first Error when the relaxation finds
 // none either (or the motion blows up), CancelledError when options.cancel is raised.

@@ -3,6 +3,7 @@
 // system, then the coupled implicit step (core/system_step.h) from output row to output row,
 // each row handed to every line's sinks (the same sinks a single line's run writes: its CSV,
 // its NetCDF file) and to the system's own (the points' forces).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -72,13 +73,17 @@ class SystemRowStepper {
 
 // The system's static equilibrium as its run starts from it (each line's state; the bodies'
 // poses in `report`): Newton's, or where Newton fails from the scene's positions, the
-// relaxation's (core/system_relaxation.h) with the run's step options. Throws Error when the
-// system has none, CancelledError when `stop` is raised.
+// relaxation's (core/system_relaxation.h) with the run's step options, `relaxing` told the
+// fraction of its bound it has used as it goes (SystemEquilibriumOptions::relaxing). Throws Error when the system has none, CancelledError when
+// `stop` is raised.
 std::vector<State> SystemStatics(const SceneDef& scene, const SystemModel& sys,
-                                 SystemEquilibriumReport* report, const CancelFlag* stop);
+                                 SystemEquilibriumReport* report, const CancelFlag* stop,
+                                 const std::function<void(double)>& relaxing = {});
 
 // Throws Error when the system has no equilibrium, CancelledError when `stop` is raised.
-SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop);
+// `relaxing`: as SystemStatics'.
+SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop,
+                           const std::function<void(double)>& relaxing = {});
 
 // Steps a copy of run.initial through the grid: every row to line i's `line_sinks[i]`, to
 // `sinks`, and to the run's summaries.
