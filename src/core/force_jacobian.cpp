@@ -41,7 +41,7 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
                       const Eigen::VectorXd& tension, const Points& v, double kv,
                       BlockTridiagonal& system) {
   const bool profile = !m.env.current_profile.empty();
-  const bool waves = m.has_waves();  // then the drag is in AddWaveForceJacobian
+  const bool waves = UsesSea(m, g);  // then the drag is in AddWaveForceJacobian
   const int j0 = m.first_free(), j1 = m.last_free();
   auto free = [&](int j) { return j >= j0 && j <= j1; };
   Vec current = CurrentAt(m, water, 0.0);
@@ -190,7 +190,7 @@ void AddInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
     const Vec t = g.tangent.col(k);
     // With waves the added mass is that of the link's wet fraction (wave_forces.h).
     const double e = 0.5 * (en - et) *
-                     (m.has_waves() ? 0.5 * (g.sea.wet[k] + g.sea.wet[k + 1]) : 1.0);
+                     (UsesSea(m, g) ? 0.5 * (g.sea.wet[k] + g.sea.wet[k + 1]) : 1.0);
     for (int j : {k, k + 1}) {
       if (j < j0 || j > j1) continue;
       // e dq/dd with q = P a_j: -(e / L)((t . a) P + t (P a)^T) = -(e / L)((t . a) I + t u^T),
@@ -209,7 +209,7 @@ void AddInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
       if (k + 1 <= j1) add(j == k ? system.upper[j - j0] : system.diag[j - j0], 1.0);
     }
   }
-  if (m.has_waves()) AddWaveInertiaJacobian(m, g, a, system);
+  if (UsesSea(m, g)) AddWaveInertiaJacobian(m, g, a, system);
 }
 
 }  // namespace cablefilm

@@ -105,7 +105,7 @@ void AddSeabedForces(const Model& m, const LinkGeometry& g, const Points& v, Poi
 
 void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g,
                        const Points& v, Points& force) {
-  if (m.has_waves()) {  // wave_forces.cpp: drag, inertia, weight and buoyancy in waves
+  if (UsesSea(m, g)) {  // wave_forces.cpp: drag, inertia, weight and buoyancy in waves
     AddWaveExternalForces(m, water, g, v, force);
     if (m.env.seabed.present) AddSeabedForces(m, g, v, force);
     return;
@@ -160,7 +160,7 @@ void ComputeStationForces(const Model& m, const Water& water, const LinkGeometry
 }
 
 void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scale, Mat& block) {
-  if (m.has_waves()) {
+  if (UsesSea(m, g)) {
     block += scale * WaveStationInertia(m, g, j);
     return;
   }
@@ -212,7 +212,7 @@ Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
 }
 
 Vec StationInertiaTimes(const Model& m, const LinkGeometry& g, int j, const Vec& a) {
-  if (m.has_waves()) return WaveStationInertia(m, g, j) * a;
+  if (UsesSea(m, g)) return WaveStationInertia(m, g, j) * a;
   // (m_j + m^x_j) a on the diagonal; each adjoining link's e (a - t (t . a)) / 2 across it and
   // e^t t (t . a) / 2 along it.
   Vec f = (m.line.cable_mass[j] + m.line.prism_mass.col(j).array()).matrix().cwiseProduct(a);

@@ -20,6 +20,11 @@ struct SeaState {
   Gradients acceleration_gradient; // d(du/dt, dw/dt)/d(x, y) [1/s^2], likewise
   Eigen::VectorXd wet;                // phi_j in [0, 1]: the station's wet fraction
   Points wet_gradient;      // d phi_j / d(x_j, y_j) [1/m]
+  // A still sea (no wave running) whose surface no station's band reaches: the water at rest
+  // and every station wholly wet (as the arrays above then say), the forces those without a
+  // surface. A converted MoorDyn file's still water over a mooring below it took three times
+  // the time of the same mooring without the surface through the sea's general forces.
+  bool still_under = false;
 };
 
 struct LinkGeometry {
@@ -50,6 +55,12 @@ void ComputeGeometry(const Points& x, LinkGeometry& g);
 // a simulation at time t need. Without waves it is the one above.
 void ComputeGeometry(const Model& m, const Water& water, double t, const Points& x,
                      LinkGeometry& g);
+
+// Whether the forces of geometry g go through the sea's (wave_forces.h): with waves, unless
+// the sea is still and over every station (SeaState::still_under).
+inline bool UsesSea(const Model& m, const LinkGeometry& g) {
+  return m.has_waves() && !g.sea.still_under;
+}
 
 // d w_n / d d for w_n = (I - t t^T) w, the part of a vector w across a link d = x_{k+1} - x_k
 // of direction t = d / |d| and length L = |d| [m] (w held fixed): -((t . w) P + t w_n^T) / L,

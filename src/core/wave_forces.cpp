@@ -73,6 +73,24 @@ void ComputeSea(const Model& m, const Water& water, double t, const Points& x, S
   }
   sea.t = t;
   const Wave& wave = water.wave;
+  if (wave.amplitude == 0) {  // still water: is every station's band under its surface?
+    bool under = true;
+    for (int j = 0; j < n && under; ++j)
+      under = wave.spec.surface_y - x(kVertical, j) >= 0.5 * m.line.wet_band[j];
+    if (under) {
+      if (!sea.still_under) {  // the arrays as the loop below would fill them
+        sea.velocity.setZero();
+        sea.acceleration.setZero();
+        sea.velocity_gradient.setZero();
+        sea.acceleration_gradient.setZero();
+        sea.wet.setOnes();
+        sea.wet_gradient.setZero();
+        sea.still_under = true;
+      }
+      return;
+    }
+  }
+  sea.still_under = false;
   const WaveRamp ramp = RampAt(wave.spec, t);
   for (int j = 0; j < n; ++j) {
     const WaterKinematics w = KinematicsAt(wave, x.col(j), t, ramp);

@@ -13,7 +13,9 @@ double StartDuration(const Model& m) {
   double end = 0;
   for (const EndMotion* e : {&m.ends.start, &m.ends.end})
     if (e->kind() == EndKind::kTrochoid) end = std::max(end, start(e->ramp_rate(), e->period()));
-  if (m.has_waves()) end = std::max(end, start(m.env.wave.spec.ramp_rate, m.env.wave.spec.period));
+  // (Still water, height 0, has no start: a MoorDyn file's converted surface.)
+  if (m.has_waves() && m.env.wave.spec.height > 0)
+    end = std::max(end, start(m.env.wave.spec.ramp_rate, m.env.wave.spec.period));
   return end;
 }
 

@@ -32,7 +32,14 @@ TEST(StartDuration, FiveRampTimesOfTheSlowestRamp) {
   p63.end.ramp_rate = 0;
   EXPECT_DOUBLE_EQ(StartDuration(BuildModel(p63)), 10.0);
   // The grounded mooring's sea builds up at 0.2 1/s: 25 s (its end follows the waves).
-  EXPECT_DOUBLE_EQ(StartDuration(BuildModel(Scene("grounded_mooring.toml"))), 25.0);
+  SceneDef mooring = Scene("grounded_mooring.toml");
+  EXPECT_DOUBLE_EQ(StartDuration(BuildModel(mooring)), 25.0);
+  // Still water (height 0, a converted MoorDyn file's surface) starts nothing: P63 under it
+  // starts as P63, 10 s, not the still sea's 5 / 0.2 s.
+  p63.end.ramp_rate = 0.5;
+  p63.waves = mooring.waves;
+  p63.waves.height = 0;
+  EXPECT_DOUBLE_EQ(StartDuration(BuildModel(p63)), 10.0);
   // Nothing moves, or only a table moves: no start.
   EXPECT_EQ(StartDuration(BuildModel(Scene("catenary.toml"))), 0.0);
   EXPECT_EQ(StartDuration(BuildModel(Scene("ship_table.toml"))), 0.0);
