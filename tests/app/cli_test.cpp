@@ -529,34 +529,15 @@ segments = 4
   EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.partial.csv"));
 }
 
-// A MoorDyn file whose free body is given above the anchor it hangs below: Newton from there
-// cannot balance it (its one link passes through the anchor on the way); the statics' relaxation
+// tests/scenes/moordyn/body_above_anchor.txt: a free body given above the anchor it hangs
+// below. Newton from there cannot balance it (its one link passes through the anchor on the way); the statics' relaxation
 // (system_relaxation.h) finds the equilibrium. Hand values (moordyn_convert_test,
 // BodyGivenAboveItsAnchorHangsBelowIt): the body weighs (20 - 1025 x 0.004) 9.81 = 155.9 N in
 // water, the rope 4 m of (8 - 1025 pi 0.05^2 / 4) 9.81 = 58.78 N/m, half of it at the body's
 // station: the one link holds T = 155.9 + 2 x 58.78 = 273.5 N, 4 (1 + T / 2000) m long straight
 // down from the anchor.
-const char* const kBodyAboveAnchor = R"(A body given above its anchor
----------------------- LINE TYPES -----------------------
-TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
-(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
-rope 0.05 8.0 2000 -0.4 0 1.2 1 0 0
----------------------- BODIES ---------------------------
-ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
-(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
-1 Free 0 0 0 0 0 0 20 0 2 0.004 0.5 1
----------------------- POINTS ---------------------------
-ID Attachment X Y Z Mass Volume CdA Ca
-(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
-1 Body1 0 0 0 0 0 0 0
-2 Fixed 0 0 -5 0 0 0 0
----------------------- LINES ----------------------------
-ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
-(#) (name) (#) (#) (m) (-) (-)
-1 rope 1 2 4 1 -
----------------------- OPTIONS --------------------------
-70 WtrDpth
-)";
+const std::string kBodyAboveAnchor =
+    std::string(CABLEFILM_SOURCE_DIR) + "/tests/scenes/moordyn/body_above_anchor.txt";
 const double kBodyWetWeight = (20.0 - 1025.0 * 0.004) * 9.81;  // [N]
 const double kBodyLinkTension =
     kBodyWetWeight + 2.0 * (8.0 - 1025.0 * M_PI * 0.05 * 0.05 / 4) * 9.81;  // T [N]
@@ -565,7 +546,7 @@ const double kBodyLinkLength = 4.0 * (1.0 + kBodyLinkTension / 2000.0);     // L
 // The relaxation as a user meets it, with every default: `check` and `run` say where the
 // equilibrium was found from, and the run starts at rest in it.
 TEST_F(CommandLine, BodyGivenAboveItsAnchorIsRelaxedIntoEquilibrium) {
-  std::ofstream(dir_ / "above.txt", std::ios::binary) << kBodyAboveAnchor;
+  fs::copy_file(kBodyAboveAnchor, dir_ / "above.txt");
   const double T = kBodyLinkTension, y = -5.0 - kBodyLinkLength;  // [N], [m]
   for (const std::string command : {"check", "run --no-film --out out"}) {
     const Outcome o = Run(command + " above.txt");
@@ -606,7 +587,7 @@ TEST_F(CommandLine, BodyGivenAboveItsAnchorIsRelaxedIntoEquilibrium) {
 // the reference point). Held at an offset d along x the link is L' = sqrt(L^2 + d^2) long and
 // restores EA (L' - 4) / 4 d / L'.
 TEST_F(CommandLine, BodyToolsStartFromTheRelaxedEquilibrium) {
-  std::ofstream(dir_ / "above.txt", std::ios::binary) << kBodyAboveAnchor;
+  fs::copy_file(kBodyAboveAnchor, dir_ / "above.txt");
   const Outcome k = Run("stiffness above.txt");
   ASSERT_EQ(k.status, 0) << k.out << k.err;
   std::istringstream lines(k.out);

@@ -228,27 +228,7 @@ class SystemEquilibrium(unittest.TestCase):
         self.assertAlmostEqual(e.body_load[0, 0] / -2.0e5, 1.0, places=4)
 
 
-ABOVE_ANCHOR = """A body given above its anchor
----------------------- LINE TYPES -----------------------
-TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
-(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
-rope 0.05 8.0 2000 -0.4 0 1.2 1 0 0
----------------------- BODIES ---------------------------
-ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
-(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
-1 Free 0 0 0 0 0 0 20 0 2 0.004 0.5 1
----------------------- POINTS ---------------------------
-ID Attachment X Y Z Mass Volume CdA Ca
-(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
-1 Body1 0 0 0 0 0 0 0
-2 Fixed 0 0 -5 0 0 0 0
----------------------- LINES ----------------------------
-ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
-(#) (name) (#) (#) (m) (-) (-)
-1 rope 1 2 4 1 -
----------------------- OPTIONS --------------------------
-70 WtrDpth
-"""
+ABOVE_ANCHOR = os.path.join(SOURCE, "tests", "scenes", "moordyn", "body_above_anchor.txt")
 
 
 def cli_stiffness(path):
@@ -301,11 +281,9 @@ class BodyTools(unittest.TestCase):
     def test_relaxed_equilibrium_is_the_commands(self):
         # A MoorDyn file whose free body is given above the anchor it hangs below (Newton from
         # there fails; the statics' relaxation finds it): the same pose and stiffness as the
-        # command's, the body where the hand value puts it (tests/app/cli_test.cpp,
-        # kBodyAboveAnchor: 4 (1 + 273.45 / 2000) m below the anchor at y = -5 m).
-        path = os.path.join(workdir("above"), "above.txt")
-        with open(path, "w") as f:
-            f.write(ABOVE_ANCHOR)
+        # command's, the body where the hand value puts it (tests/app/cli_test.cpp: 4 (1 +
+        # 273.45 / 2000) m below the anchor at y = -5 m).
+        path = ABOVE_ANCHOR
         pose, K = cablefilm.stiffness(path)
         pose_line, K_cli = cli_stiffness(path)
         self.assertIn("y %.6g m," % pose[1], pose_line)

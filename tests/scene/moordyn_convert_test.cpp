@@ -434,28 +434,7 @@ ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
 // it lumped at the body's station: the one link holds T = 155.9 + 2 x 58.78 = 273.5 N and is
 // 4 (1 + T / EA) = 4.547 m long (EA = 2000 N), straight down from the anchor.
 TEST(MoorDynConvert, BodyGivenAboveItsAnchorHangsBelowIt) {
-  const std::string text = R"(A body given above its anchor
----------------------- LINE TYPES -----------------------
-TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
-(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
-rope 0.05 8.0 2000 -0.4 0 1.2 1 0 0
----------------------- BODIES ---------------------------
-ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
-(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
-1 Free 0 0 0 0 0 0 20 0 2 0.004 0.5 1
----------------------- POINTS ---------------------------
-ID Attachment X Y Z Mass Volume CdA Ca
-(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
-1 Body1 0 0 0 0 0 0 0
-2 Fixed 0 0 -5 0 0 0 0
----------------------- LINES ----------------------------
-ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
-(#) (name) (#) (#) (m) (-) (-)
-1 rope 1 2 4 1 -
----------------------- OPTIONS --------------------------
-70 WtrDpth
-)";
-  const Converted c = Convert(ReadMoorDynText(text, "above.txt"));
+  const Converted c = Convert(ReadMoorDynFile(kDir + "body_above_anchor.txt"));
   const SystemModel sys = BuildSystem(ParseScene(c.text, "above.toml"));
   EXPECT_THROW(SolveSystemEquilibrium(sys), Error);  // what made this needed
   StepOptions step;
