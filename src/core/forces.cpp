@@ -159,25 +159,48 @@ void ComputeStationForces(const Model& m, const Water& water, const LinkGeometry
   AddExternalForces(m, water, g, v, force);
 }
 
+namespace {
+
+// Whether the inertia takes the wet shares of the added masses: with the sea's forces, when
+// the sea's state is there (a geometry made without the model's water has none: all wet).
+bool WetInertia(const Model& m, const LinkGeometry& g) {
+  return UsesSea(m, g) && g.sea.wet.size() == m.stations();
+}
+
+// With them, the wet fraction of station j (phi_j) and of link k (psi_k, the mean of its
+// stations'): the share of their added masses that is in the water (wave_forces.h); else 1.
+double StationWet(const LinkGeometry& g, bool sea, int j) { return sea ? g.sea.wet[j] : 1.0; }
+double LinkWet(const LinkGeometry& g, bool sea, int k) {
+  return sea ? 0.5 * (g.sea.wet[k] + g.sea.wet[k + 1]) : 1.0;
+}
+
+}  // namespace
+
 void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scale, Mat& block) {
-  if (UsesSea(m, g)) {
-    block += scale * WaveStationInertia(m, g, j);
-    return;
-  }
   // m_j + m^x_j on the diagonal, plus half the entrained-fluid mass e of each adjoining link
   // across it, e (I - t t^T) / 2: the I, J and -K terms of eq. (1) (I - t t^T = n n^T in the
   // plane); and half its tangential added mass e^t along it, e^t t t^T / 2 (0 unless given).
-  // Written out entry by entry (symmetric): this runs for every station in every Newton
-  // iteration and explicit step, where Eigen's general expressions cost twice as much; and
-  // added to the block entry by entry, not returned as a matrix that the caller reads two
-  // entries at a time (entries stored one by one and loaded in pairs stall the store
-  // forwarding: a sixth of the Newton matrix's inertia part).
+  // With the sea's forces, the added masses' wet shares: (1 - phi_j) m^x_j is above the
+  // surface, and psi_k of each link's. Written out entry by entry (symmetric): this runs for
+  // every station in every Newton iteration and explicit step, where Eigen's general
+  // expressions cost twice as much (a 3x3 matrix built per station in waves was a sixth of a
+  // still-water run's time); and added to the block entry by entry, not returned as a matrix
+  // that the caller reads two entries at a time (entries stored one by one and loaded in
+  // pairs stall the store forwarding: a sixth of the Newton matrix's inertia part).
+  const bool sea = WetInertia(m, g);
   double d0 = m.line.cable_mass[j] + m.line.prism_mass(0, j);
   double d1 = m.line.cable_mass[j] + m.line.prism_mass(1, j);
   double d2 = m.line.cable_mass[j] + m.line.prism_mass(2, j);
+  if (sea) {
+    const double dry = 1.0 - StationWet(g, sea, j);
+    d0 -= dry * m.line.prism_added_mass(0, j);
+    d1 -= dry * m.line.prism_added_mass(1, j);
+    d2 -= dry * m.line.prism_added_mass(2, j);
+  }
   double m01 = 0, m02 = 0, m12 = 0;
   for (int k = std::max(j - 1, 0); k <= std::min(j, m.line.links - 1); ++k) {
-    const double e = 0.5 * m.line.virtual_mass[k];
+    const double psi = LinkWet(g, sea, k);
+    const double e = 0.5 * psi * m.line.virtual_mass[k];
     const double tx = g.tangent(0, k), ty = g.tangent(1, k), tz = g.tangent(2, k);
     d0 += e - e * tx * tx;
     d1 += e - e * ty * ty;
@@ -185,7 +208,7 @@ void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scal
     m01 -= e * tx * ty;
     m02 -= e * tx * tz;
     m12 -= e * ty * tz;
-    const double et = 0.5 * m.line.tangential_virtual_mass[k];
+    const double et = 0.5 * psi * m.line.tangential_virtual_mass[k];
     if (et == 0) continue;
     d0 += et * tx * tx;
     d1 += et * ty * ty;
@@ -212,14 +235,18 @@ Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
 }
 
 Vec StationInertiaTimes(const Model& m, const LinkGeometry& g, int j, const Vec& a) {
-  if (UsesSea(m, g)) return WaveStationInertia(m, g, j) * a;
   // (m_j + m^x_j) a on the diagonal; each adjoining link's e (a - t (t . a)) / 2 across it and
-  // e^t t (t . a) / 2 along it.
-  Vec f = (m.line.cable_mass[j] + m.line.prism_mass.col(j).array()).matrix().cwiseProduct(a);
+  // e^t t (t . a) / 2 along it; with the sea's forces their wet shares (AddStationInertia).
+  const bool sea = WetInertia(m, g);
+  Vec diagonal = (m.line.cable_mass[j] + m.line.prism_mass.col(j).array()).matrix();
+  if (sea) diagonal -= (1.0 - StationWet(g, sea, j)) * m.line.prism_added_mass.col(j);
+  Vec f = diagonal.cwiseProduct(a);
   for (int k = std::max(j - 1, 0); k <= std::min(j, m.line.links - 1); ++k) {
     const Vec t = g.tangent.col(k);
     const double ta = t.dot(a);
-    const double e = 0.5 * m.line.virtual_mass[k], et = 0.5 * m.line.tangential_virtual_mass[k];
+    const double psi = LinkWet(g, sea, k);
+    const double e = 0.5 * psi * m.line.virtual_mass[k];
+    const double et = 0.5 * psi * m.line.tangential_virtual_mass[k];
     f += e * a + ((et - e) * ta) * t;
   }
   return f;

@@ -25,6 +25,9 @@ struct SeaState {
   // surface. A converted MoorDyn file's still water over a mooring below it took three times
   // the time of the same mooring without the surface through the sea's general forces.
   bool still_under = false;
+  // Still water (no wave running): the water at rest (velocity, acceleration and their
+  // gradients zero), only the wet fractions computed.
+  bool still = false;
 };
 
 struct LinkGeometry {

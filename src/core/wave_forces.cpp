@@ -70,19 +70,26 @@ void ComputeSea(const Model& m, const Water& water, double t, const Points& x, S
     sea.acceleration_gradient.resize(kDim * kDim, n);
     sea.wet.resize(n);
     sea.wet_gradient.resize(kDim, n);
+    sea.still = sea.still_under = false;  // nothing in them yet
   }
   sea.t = t;
   const Wave& wave = water.wave;
-  if (wave.amplitude == 0) {  // still water: is every station's band under its surface?
-    bool under = true;
+  const bool still = wave.amplitude == 0;
+  if (still) {
+    // The water at rest: KinematicsAt's zeros, set once rather than computed (with its
+    // trigonometry) at every station.
+    if (!sea.still) {
+      sea.velocity.setZero();
+      sea.acceleration.setZero();
+      sea.velocity_gradient.setZero();
+      sea.acceleration_gradient.setZero();
+      sea.still = true;
+    }
+    bool under = true;  // is every station's band under the surface?
     for (int j = 0; j < n && under; ++j)
       under = wave.spec.surface_y - x(kVertical, j) >= 0.5 * m.line.wet_band[j];
     if (under) {
-      if (!sea.still_under) {  // the arrays as the loop below would fill them
-        sea.velocity.setZero();
-        sea.acceleration.setZero();
-        sea.velocity_gradient.setZero();
-        sea.acceleration_gradient.setZero();
+      if (!sea.still_under) {  // the wet fractions as the loop below would find them
         sea.wet.setOnes();
         sea.wet_gradient.setZero();
         sea.still_under = true;
@@ -90,20 +97,26 @@ void ComputeSea(const Model& m, const Water& water, double t, const Points& x, S
       return;
     }
   }
+  sea.still = still;
   sea.still_under = false;
   const WaveRamp ramp = RampAt(wave.spec, t);
   for (int j = 0; j < n; ++j) {
-    const WaterKinematics w = KinematicsAt(wave, x.col(j), t, ramp);
-    sea.velocity.col(j) = w.velocity;
-    sea.acceleration.col(j) = w.acceleration;
-    Eigen::Map<Mat>(sea.velocity_gradient.col(j).data()) = w.velocity_gradient;
-    Eigen::Map<Mat>(sea.acceleration_gradient.col(j).data()) = w.acceleration_gradient;
+    double eta = 0;
+    Vec ddepth = Vec::Zero();  // d depth / d position
+    if (!still) {
+      const WaterKinematics w = KinematicsAt(wave, x.col(j), t, ramp);
+      sea.velocity.col(j) = w.velocity;
+      sea.acceleration.col(j) = w.acceleration;
+      Eigen::Map<Mat>(sea.velocity_gradient.col(j).data()) = w.velocity_gradient;
+      Eigen::Map<Mat>(sea.acceleration_gradient.col(j).data()) = w.acceleration_gradient;
+      eta = w.eta;
+      ddepth = w.eta_gradient;
+    }
     // Depth below the instantaneous surface over the station's band: u = 1/2 at the surface.
     const double band = m.line.wet_band[j];
-    const double depth = wave.spec.surface_y + w.eta - x(kVertical, j);
+    const double depth = wave.spec.surface_y + eta - x(kVertical, j);
     const double u = depth / band + 0.5;
     sea.wet[j] = WetFraction(u);
-    Vec ddepth = w.eta_gradient;  // d depth / d position
     ddepth[kVertical] = -1.0;
     sea.wet_gradient.col(j) = (WetFractionSlope(u) / band) * ddepth;
   }
@@ -135,12 +148,14 @@ void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometr
         F += (-0.5 * psi * ft * std::abs(p) * p) * t;
       }
     }
-    const Vec A = 0.5 * (sea.acceleration.col(k) + sea.acceleration.col(k + 1));
-    F += (0.5 * psi * m.line.link_fluid_mass[k]) * (A - t * t.dot(A));
-    // Along the link the tangential added mass e^t on the water's acceleration (no
-    // Froude-Krylov along it, as across it has: see model.md, Waves).
-    if (m.line.tangential_virtual_mass[k] != 0)
-      F += (0.5 * psi * m.line.tangential_virtual_mass[k] * t.dot(A)) * t;
+    if (!sea.still) {  // the water's acceleration A (none in still water)
+      const Vec A = 0.5 * (sea.acceleration.col(k) + sea.acceleration.col(k + 1));
+      F += (0.5 * psi * m.line.link_fluid_mass[k]) * (A - t * t.dot(A));
+      // Along the link the tangential added mass e^t on the water's acceleration (no
+      // Froude-Krylov along it, as across it has: see model.md, Waves).
+      if (m.line.tangential_virtual_mass[k] != 0)
+        F += (0.5 * psi * m.line.tangential_virtual_mass[k] * t.dot(A)) * t;
+    }
     force.col(k) += F;
     force.col(k + 1) += F;
   }
@@ -156,25 +171,6 @@ void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometr
     force.col(j) += phi * (m.line.prism_fluid_mass.col(j).cwiseProduct(sea.acceleration.col(j)) -
                            u * m.line.prism_drag.col(j).cwiseProduct(rel));
   }
-}
-
-Mat WaveStationInertia(const Model& m, const LinkGeometry& g, int j) {
-  const bool sea = g.sea.wet.size() == m.stations();
-  const double phi = sea ? g.sea.wet[j] : 1.0;
-  Vec diagonal = m.line.prism_mass.col(j) - (1.0 - phi) * m.line.prism_added_mass.col(j);
-  diagonal.array() += m.line.cable_mass[j];
-  Mat M = diagonal.asDiagonal();
-  for (int k = j - 1; k <= j; ++k) {
-    if (k < 0 || k >= m.line.links) continue;
-    const double psi = sea ? LinkWet(g.sea, k) : 1.0;
-    const Vec t = g.tangent.col(k);
-    const double e = 0.5 * psi * m.line.virtual_mass[k];
-    M -= (e * t) * t.transpose();
-    M.diagonal().array() += e;
-    const double et = 0.5 * psi * m.line.tangential_virtual_mass[k];
-    if (et != 0) M += (et * t) * t.transpose();
-  }
-  return M;
 }
 
 void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
@@ -218,16 +214,20 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
         Hd += (psi / L) * ((2.0 * c) * t * q.transpose() + (c * p) * P);
         Jv += (psi * c) * (Mat::Identity() - P);
       }
-      // w = mean v - c(y_mid) - (U_k + U_{k+1}) / 2: dF/dx_i = 2 Jv dw/dx_i.
-      Ja -= Jv * Gradient(sea.velocity_gradient, k);
-      Jc -= Jv * Gradient(sea.velocity_gradient, k + 1);
+      // w = mean v - c(y_mid) - (U_k + U_{k+1}) / 2: dF/dx_i = 2 Jv dw/dx_i (0 in still
+      // water).
+      if (!sea.still) {
+        Ja -= Jv * Gradient(sea.velocity_gradient, k);
+        Jc -= Jv * Gradient(sea.velocity_gradient, k + 1);
+      }
       const Vec slope = profile ? CurrentSlope(m, water, ymid) : Vec::Zero();
       if (!slope.isZero()) {
         Ja.col(kVertical) -= Jv * slope;
         Jc.col(kVertical) -= Jv * slope;
       }
     }
-    if (m.line.link_fluid_mass[k] != 0) {
+    // The water's acceleration A: none in still water.
+    if (m.line.link_fluid_mass[k] != 0 && !sea.still) {
       const double M = 0.5 * m.line.link_fluid_mass[k];
       const Vec A = 0.5 * (sea.acceleration.col(k) + sea.acceleration.col(k + 1));
       const Vec An = A - t * t.dot(A);
@@ -237,7 +237,7 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
       Ja += across * Gradient(sea.acceleration_gradient, k);
       Jc += across * Gradient(sea.acceleration_gradient, k + 1);
     }
-    if (m.line.tangential_virtual_mass[k] != 0) {
+    if (m.line.tangential_virtual_mass[k] != 0 && !sea.still) {
       // (e^t / 2) (t . A) t: through t, d/dd = (e^t / 2)((t . A) P + t (P A)^T) / L, the
       // negative of the part across's; through A, (e^t / 2) t t^T on each station's half.
       const double Mt = 0.5 * m.line.tangential_virtual_mass[k];

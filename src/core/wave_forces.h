@@ -45,9 +45,6 @@ double SurfaceBuoyancyEnergy(const Model& m, const Points& x);
 void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometry& g,
                            const Points& v, Points& force);
 
-// The inertia tensor of station j with the wet fractions of g.sea (all wet if it is empty).
-Mat WaveStationInertia(const Model& m, const LinkGeometry& g, int j);
-
 // -dF/dx - kv dF/dv of the forces above (force_jacobian.h's convention): through the links'
 // orientation, the water's velocity and acceleration gradients, the current profile, the wet
 // fractions' gradients (drag, inertia, buoyancy) and the relative velocity.
