@@ -189,8 +189,7 @@ void AddInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
     if ((en == 0 && et == 0) || !(g.length[k] > 0)) continue;
     const Vec t = g.tangent.col(k);
     // With waves the added mass is that of the link's wet fraction (wave_forces.h).
-    const double e = 0.5 * (en - et) *
-                     (UsesSea(m, g) ? 0.5 * (g.sea.wet[k] + g.sea.wet[k + 1]) : 1.0);
+    const double e = 0.5 * (en - et) * (UsesSea(m, g) ? LinkWet(g.sea, k) : 1.0);
     for (int j : {k, k + 1}) {
       if (j < j0 || j > j1) continue;
       // e dq/dd with q = P a_j: -(e / L)((t . a) P + t (P a)^T) = -(e / L)((t . a) I + t u^T),

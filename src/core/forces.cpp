@@ -170,9 +170,7 @@ bool WetInertia(const Model& m, const LinkGeometry& g) {
 // With them, the wet fraction of station j (phi_j) and of link k (psi_k, the mean of its
 // stations'): the share of their added masses that is in the water (wave_forces.h); else 1.
 double StationWet(const LinkGeometry& g, bool sea, int j) { return sea ? g.sea.wet[j] : 1.0; }
-double LinkWet(const LinkGeometry& g, bool sea, int k) {
-  return sea ? 0.5 * (g.sea.wet[k] + g.sea.wet[k + 1]) : 1.0;
-}
+double LinkWet(const LinkGeometry& g, bool sea, int k) { return sea ? LinkWet(g.sea, k) : 1.0; }
 
 }  // namespace
 

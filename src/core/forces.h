@@ -30,6 +30,9 @@ struct SeaState {
   bool still = false;
 };
 
+// psi_k, link k's wet fraction: the mean of its two stations' (wave_forces.h).
+inline double LinkWet(const SeaState& sea, int k) { return 0.5 * (sea.wet[k] + sea.wet[k + 1]); }
+
 struct LinkGeometry {
   Eigen::VectorXd length;    // L_{j+1/2} = |x_{j+1} - x_j| [m] (size s)
   Points tangent;  // unit t_{j+1/2}, (cos theta, sin theta, 0) in the plane (kDim x s); zero for a zero-length link

@@ -27,8 +27,6 @@ void AddBlock(const Model& m, int j, int i, const Mat& B, BlockTridiagonal& s) {
   else s.lower[j - j0] += B;
 }
 
-double LinkWet(const SeaState& sea, int k) { return 0.5 * (sea.wet[k] + sea.wet[k + 1]); }
-
 }  // namespace
 
 double WetFraction(double u) {
