@@ -42,13 +42,16 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
       let_go.body_poses = guess.body_poses;
       SystemData sd = MakeSystemData(let_go, in, step, guess.states);
       std::vector<State> states(sys.lines.size());
+      double stations = 0;
+      for (const Model& m : sys.lines) stations += m.stations();
       std::vector<Vec6> poses = guess.body_poses;
       for (int span = 1; span * kSpan <= kLongest + 1e-9; ++span) {
         ThrowIfCancelled(options.cancel, "the system's static equilibrium");
         StepSystem(let_go, sd, in, kSpan);
-        if (sd.stats.steps > kMostSteps) break;
+        const double work = double(sd.stats.steps) * stations / kMostRelaxationStationSteps;
+        if (sd.stats.steps > kMostSteps || work > 1) break;
         if (options.relaxing)
-          options.relaxing(std::max(span * kSpan / kLongest, double(sd.stats.steps) / kMostSteps));
+          options.relaxing(std::max({span * kSpan / kLongest, double(sd.stats.steps) / kMostSteps, work}));
         // The clock back to t = 0: the ends and the sea as the statics have them.
         sd.t = 0;
         for (Data& d : sd.lines) d.state.t = 0;
@@ -79,7 +82,9 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
     }
     throw Error(std::string(first.what()) + "; nor from where the system's own motion, damped "
                 "by its fluid, brought it (at most " + std::to_string(int(kLongest)) + " s, " +
-                std::to_string(kMostSteps) + " steps)");
+                std::to_string(kMostSteps) + " steps, " +
+                std::to_string(static_cast<long>(kMostRelaxationStationSteps)) +
+                " steps x stations)");
   }
 }
 
