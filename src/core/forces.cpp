@@ -167,14 +167,11 @@ bool WetInertia(const Model& m, const LinkGeometry& g) {
   return UsesSea(m, g) && g.sea.wet.size() == m.stations();
 }
 
-// With them, the wet fraction of station j (phi_j) and of link k (psi_k, the mean of its
-// stations'): the share of their added masses that is in the water (wave_forces.h); else 1.
-double StationWet(const LinkGeometry& g, bool sea, int j) { return sea ? g.sea.wet[j] : 1.0; }
-double LinkWet(const LinkGeometry& g, bool sea, int k) { return sea ? LinkWet(g.sea, k) : 1.0; }
-
-}  // namespace
-
-void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scale, Mat& block) {
+// The two below for a line all wet (kWet false: the loops as they were before the wet shares
+// came in; tested at every station, those cost P63 at 6000 links a few per cent) or with the
+// wet shares.
+template <bool kWet>
+void AddStationInertiaOf(const Model& m, const LinkGeometry& g, int j, double scale, Mat& block) {
   // m_j + m^x_j on the diagonal, plus half the entrained-fluid mass e of each adjoining link
   // across it, e (I - t t^T) / 2: the I, J and -K terms of eq. (1) (I - t t^T = n n^T in the
   // plane); and half its tangential added mass e^t along it, e^t t t^T / 2 (0 unless given).
@@ -185,20 +182,23 @@ void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scal
   // still-water run's time); and added to the block entry by entry, not returned as a matrix
   // that the caller reads two entries at a time (entries stored one by one and loaded in
   // pairs stall the store forwarding: a sixth of the Newton matrix's inertia part).
-  const bool sea = WetInertia(m, g);
   double d0 = m.line.cable_mass[j] + m.line.prism_mass(0, j);
   double d1 = m.line.cable_mass[j] + m.line.prism_mass(1, j);
   double d2 = m.line.cable_mass[j] + m.line.prism_mass(2, j);
-  if (sea) {
-    const double dry = 1.0 - StationWet(g, sea, j);
+  if constexpr (kWet) {
+    const double dry = 1.0 - g.sea.wet[j];  // 1 - phi_j
     d0 -= dry * m.line.prism_added_mass(0, j);
     d1 -= dry * m.line.prism_added_mass(1, j);
     d2 -= dry * m.line.prism_added_mass(2, j);
   }
   double m01 = 0, m02 = 0, m12 = 0;
   for (int k = std::max(j - 1, 0); k <= std::min(j, m.line.links - 1); ++k) {
-    const double psi = LinkWet(g, sea, k);
-    const double e = 0.5 * psi * m.line.virtual_mass[k];
+    double e = 0.5 * m.line.virtual_mass[k], et = 0.5 * m.line.tangential_virtual_mass[k];
+    if constexpr (kWet) {
+      const double psi = LinkWet(g.sea, k);
+      e *= psi;
+      et *= psi;
+    }
     const double tx = g.tangent(0, k), ty = g.tangent(1, k), tz = g.tangent(2, k);
     d0 += e - e * tx * tx;
     d1 += e - e * ty * ty;
@@ -206,7 +206,6 @@ void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scal
     m01 -= e * tx * ty;
     m02 -= e * tx * tz;
     m12 -= e * ty * tz;
-    const double et = 0.5 * psi * m.line.tangential_virtual_mass[k];
     if (et == 0) continue;
     d0 += et * tx * tx;
     d1 += et * ty * ty;
@@ -226,28 +225,43 @@ void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scal
   block(2, 2) += scale * d2;
 }
 
-Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
-  Mat M = Mat::Zero();
-  AddStationInertia(m, g, j, 1.0, M);
-  return M;
-}
-
-Vec StationInertiaTimes(const Model& m, const LinkGeometry& g, int j, const Vec& a) {
+template <bool kWet>
+Vec StationInertiaTimesOf(const Model& m, const LinkGeometry& g, int j, const Vec& a) {
   // (m_j + m^x_j) a on the diagonal; each adjoining link's e (a - t (t . a)) / 2 across it and
   // e^t t (t . a) / 2 along it; with the sea's forces their wet shares (AddStationInertia).
-  const bool sea = WetInertia(m, g);
   Vec diagonal = (m.line.cable_mass[j] + m.line.prism_mass.col(j).array()).matrix();
-  if (sea) diagonal -= (1.0 - StationWet(g, sea, j)) * m.line.prism_added_mass.col(j);
+  if constexpr (kWet) diagonal -= (1.0 - g.sea.wet[j]) * m.line.prism_added_mass.col(j);
   Vec f = diagonal.cwiseProduct(a);
   for (int k = std::max(j - 1, 0); k <= std::min(j, m.line.links - 1); ++k) {
     const Vec t = g.tangent.col(k);
     const double ta = t.dot(a);
-    const double psi = LinkWet(g, sea, k);
-    const double e = 0.5 * psi * m.line.virtual_mass[k];
-    const double et = 0.5 * psi * m.line.tangential_virtual_mass[k];
+    double e = 0.5 * m.line.virtual_mass[k], et = 0.5 * m.line.tangential_virtual_mass[k];
+    if constexpr (kWet) {
+      const double psi = LinkWet(g.sea, k);
+      e *= psi;
+      et *= psi;
+    }
     f += e * a + ((et - e) * ta) * t;
   }
   return f;
+}
+
+}  // namespace
+
+void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scale, Mat& block) {
+  if (WetInertia(m, g)) AddStationInertiaOf<true>(m, g, j, scale, block);
+  else AddStationInertiaOf<false>(m, g, j, scale, block);
+}
+
+Vec StationInertiaTimes(const Model& m, const LinkGeometry& g, int j, const Vec& a) {
+  return WetInertia(m, g) ? StationInertiaTimesOf<true>(m, g, j, a)
+                          : StationInertiaTimesOf<false>(m, g, j, a);
+}
+
+Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
+  Mat M = Mat::Zero();
+  AddStationInertia(m, g, j, 1.0, M);
+  return M;
 }
 
 void ComputeAccelerations(const Model& m, const Inputs& in, const Water& water, double t,
