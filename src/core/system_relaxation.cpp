@@ -12,7 +12,6 @@ namespace {
 
 constexpr double kSpan = 0.1;    // s of motion between looks at the clock [s]
 constexpr double kTry = 5.0;     // s of motion between tries of Newton [s]
-constexpr double kLongest = kLongestRelaxation;
 // Newton's iterations from a state the motion has brought near: it converges in a few or the
 // motion is not near yet (the last try has them all). Each failed try costs as much as the
 // first failure did otherwise, and there are twelve.
@@ -21,7 +20,6 @@ constexpr int kNearIterations = 20;
 // in a row gain less than 1 % (a stall: Broyden's steps cannot get out of where it is); so do
 // the tries from the motion's states.
 constexpr int kStallIterations = 20;
-constexpr long kMostSteps = kMostRelaxationSteps;
 
 }  // namespace
 
@@ -45,13 +43,14 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
       double stations = 0;
       for (const Model& m : sys.lines) stations += m.stations();
       std::vector<Vec6> poses = guess.body_poses;
-      for (int span = 1; span * kSpan <= kLongest + 1e-9; ++span) {
+      for (int span = 1; span * kSpan <= kLongestRelaxation + 1e-9; ++span) {
         ThrowIfCancelled(options.cancel, "the system's static equilibrium");
         StepSystem(let_go, sd, in, kSpan);
         const double work = double(sd.stats.steps) * stations / kMostRelaxationStationSteps;
-        if (sd.stats.steps > kMostSteps || work > 1) break;
+        if (sd.stats.steps > kMostRelaxationSteps || work > 1) break;
         if (options.relaxing)
-          options.relaxing(std::max({span * kSpan / kLongest, double(sd.stats.steps) / kMostSteps, work}));
+          options.relaxing(std::max({span * kSpan / kLongestRelaxation,
+                                     double(sd.stats.steps) / kMostRelaxationSteps, work}));
         // The clock back to t = 0: the ends and the sea as the statics have them.
         sd.t = 0;
         for (Data& d : sd.lines) d.state.t = 0;
@@ -61,7 +60,7 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
           poses[sys.free_bodies[k]] = sd.bodies[k].q;
         SystemEquilibriumOptions from_here = options;
         from_here.stall_iterations = kStallIterations;
-        if ((span + 1) * kSpan <= kLongest + 1e-9)
+        if ((span + 1) * kSpan <= kLongestRelaxation + 1e-9)
           from_here.max_iterations = std::min(options.max_iterations, kNearIterations);
         from_here.guess = &states;
         from_here.guess_poses = poses.data();
@@ -81,8 +80,9 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
       // The motion itself failed (a blow-up): the first error says what matters.
     }
     throw Error(std::string(first.what()) + "; nor from where the system's own motion, damped "
-                "by its fluid, brought it (at most " + std::to_string(int(kLongest)) + " s, " +
-                std::to_string(kMostSteps) + " steps, " +
+                "by its fluid, brought it (at most " +
+                std::to_string(int(kLongestRelaxation)) + " s, " +
+                std::to_string(kMostRelaxationSteps) + " steps, " +
                 std::to_string(static_cast<long>(kMostRelaxationStationSteps)) +
                 " steps x stations)");
   }

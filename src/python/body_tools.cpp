@@ -58,7 +58,8 @@ auto Statics(const SceneHandle& scene, int b, Work&& work) {
   try {
     return RunInterruptible(cancel, [&] {
       SystemEquilibriumReport report;
-      const std::vector<State> states = SystemStatics(scene.def(), scene.system(), &report, &cancel);
+      const std::vector<State> states =
+          SystemStatics(scene.def(), scene.system(), &report, &cancel);
       SystemEquilibriumOptions options;
       options.cancel = &cancel;
       options.guess = &states;
