@@ -8,31 +8,65 @@
 namespace cablefilm {
 namespace {
 
-// Adds the kDim x kDim derivative blocks of a link's force pair to the rows of stations a = k, b = k+1.
-// dfa_dd, dfb_dd: derivatives w.r.t. d = x_b - x_a of the forces on a and b; dfa_dv, dfb_dv:
-// derivatives w.r.t. v_a and v_b (equal, through the link's mean velocity). Stored negated.
-struct LinkBlocks {
-  Mat fa_dd = Mat::Zero(), fb_dd = Mat::Zero();
-  Mat f_dv = Mat::Zero();  // same for both stations and both velocities
-  // Through a current profile, the y column of the negated derivative of either force with
-  // respect to y_k and y_{k+1} alike: added to all four blocks.
-  Vec slope_column = Vec::Zero();
+// The optional parts of a link's derivative blocks (axial damping, tangential drag, a current
+// profile's slope), built as matrices only where the model has them. Stored negated.
+// Each matrix is read only where its flag is set (left unset otherwise: zeroing them cost a
+// link more than the blocks of a line without them).
+struct LinkExtras {
+  Mat dd;       // added to the derivatives of both forces w.r.t. d = x_{k+1} - x_k
+  Mat damping;  // the axial damping's, added to that of the force on k alone
+  Mat dv;       // added to their derivative w.r.t. v_k (= w.r.t. v_{k+1})
+  Vec slope_column = Vec::Zero();  // a current profile's: in the y column of all four blocks
+  bool any_dd = false, any_damping = false, any_dv = false;
 };
 
-void Scatter(const Model& m, int k, const LinkBlocks& b, double kv, bool profile,
-             BlockTridiagonal& s) {
+// Adds a link's four blocks to the rows of stations a = k and c = k + 1, entry by entry in
+// scalars. With fa = -dF_a/dd (F_a the link's force on a, d = x_c - x_a), fc = -dF_c/dd and
+// f_dv = -dF_a/dv_a (= the other three velocity derivatives: the drag sees the mean velocity):
+//   -dF_a/dx_a = fa - kv f_dv,  -dF_a/dx_c = -fa - kv f_dv,
+//   -dF_c/dx_a = fc - kv f_dv,  -dF_c/dx_c = -fc - kv f_dv.
+// fa = (dT/dL - T/L) t t^T + (T/L) I (+ axial damping) + H, fc = -(the same before H) + H, with
+// the normal drag's H = (f / 2L)((t . w) GP + s t q^T) and f_dv = -(f / 4) GP, GP = s I +
+// q q^T / s - s t t^T. No matrix is formed: entries stored one by one and then read as a
+// matrix stalled the processor's store forwarding (a third of this function's samples).
+[[gnu::always_inline]] inline void AddLinkBlocks(
+    const Model& m, int k, const Vec& t, double dTdL, double TL, double drag, double s,
+    const Vec& q, double tw, double L, const LinkExtras& x, double kv, bool profile,
+    BlockTridiagonal& system) {
   const int j0 = m.first_free(), j1 = m.last_free();
   const int a = k, c = k + 1;
-  const bool fa = a >= j0 && a <= j1, fc = c >= j0 && c <= j1;
-  // -dF_a/dx_a = dfa_dd - kv f_dv, -dF_a/dx_c = -dfa_dd - kv f_dv, and likewise for c.
-  Mat v = kv * b.f_dv;
-  // (Only with a profile: a column written alone and then read as the whole matrix stalls the
-  // store forwarding.)
-  if (profile) v.col(kVertical) -= b.slope_column;
-  if (fa) s.diag[a - j0] += b.fa_dd - v;
-  if (fa && fc) s.upper[a - j0] += -b.fa_dd - v;
-  if (fa && fc) s.lower[c - j0] += b.fb_dd - v;
-  if (fc) s.diag[c - j0] += -b.fb_dd - v;
+  const bool free_a = a >= j0 && a <= j1, free_c = c >= j0 && c <= j1;
+  const bool both = free_a && free_c;
+  const bool normal_drag = drag != 0 && s > 0;
+  // The drag factor f [kg/m] (force over |q| q) in H [kg/m^2] and in f_dv [kg/m].
+  const double h = 0.5 * drag / L, e = -0.25 * drag;
+  Mat* diag_a = free_a ? &system.diag[a - j0] : nullptr;
+  Mat* diag_c = free_c ? &system.diag[c - j0] : nullptr;
+  Mat* upper = both ? &system.upper[a - j0] : nullptr;
+  Mat* lower = both ? &system.lower[c - j0] : nullptr;
+  for (int col = 0; col < kDim; ++col) {
+    for (int row = 0; row < kDim; ++row) {
+      const double tt = t[row] * t[col], id = row == col ? 1.0 : 0.0;
+      double fa = (dTdL - TL) * tt + TL * id;
+      if (x.any_damping) fa += x.damping(row, col);
+      double fc = -fa, f_dv = 0.0;
+      if (normal_drag) {
+        const double GP = (s * id + q[row] * (q[col] / s)) - s * tt;
+        const double H = h * (tw * GP + (s * t[row]) * q[col]);
+        fa += H;
+        fc += H;
+        f_dv = e * GP;
+      }
+      if (x.any_dd) fa += x.dd(row, col), fc += x.dd(row, col);
+      if (x.any_dv) f_dv += x.dv(row, col);
+      double v = kv * f_dv;
+      if (profile && col == kVertical) v -= x.slope_column[row];
+      if (free_a) (*diag_a)(row, col) += fa - v;
+      if (both) (*upper)(row, col) += -fa - v;
+      if (both) (*lower)(row, col) += fc - v;
+      if (free_c) (*diag_c)(row, col) += -fc - v;
+    }
+  }
 }
 
 }  // namespace
@@ -49,68 +83,64 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
     const double L = g.length[k];
     if (!(L > 0)) continue;
     const Vec t = g.tangent.col(k);
-    const Mat tt = t * t.transpose();
-    LinkBlocks b;
     // Tension T t on station k, -T t on k+1: axial stiffness (taut only) and geometric T/L.
     // dT/dL = EA/l on a taut link, 0 on a slack one and on a taut one whose axial damping
     // (a link shortening fast) holds its tension at 0 (forces.cpp: T = max(0, EA e + c dL/dt)).
     const double dTdL =
         L > m.line.rest_length[k] && tension[k] > 0 ? m.line.axial_stiffness[k] / m.line.rest_length[k] : 0.0;
-    // dTdL t t^T + (T / L)(I - t t^T), written as (T / L) I + (dTdL - T / L) t t^T, in one
-    // expression (a diagonal added entry by entry and then read as a matrix stalled the store
-    // forwarding: with the profile's column below, 5 % of the CPU at 6000 links).
     const double TL = tension[k] / L;  // [N/m]
-    b.fa_dd.noalias() = (dTdL - TL) * tt + TL * Mat::Identity();
+    LinkExtras x;
     // Axial damping c dL/dt t, dL/dt = t . (v_b - v_a), while it leaves the tension positive:
     // through v_b - v_a = kv d (the scheme's velocity follows the position) it adds kv c t t^T,
     // and through t it adds c t (P (v_b - v_a) / L)^T (the geometric part is in T/L above).
     if (m.line.axial_damping.size() != 0 && m.line.axial_damping[k] != 0 && dTdL > 0 && tension[k] > 0) {
       const double c = m.line.axial_damping[k];
+      const Mat tt = t * t.transpose();
       const Vec dv = v.col(k + 1) - v.col(k);
-      b.fa_dd += c * (kv * tt + t * ((Mat::Identity() - tt) * dv / L).transpose());
+      x.damping = c * (kv * tt + t * ((Mat::Identity() - tt) * dv / L).transpose());
+      x.any_damping = true;
     }
-    b.fb_dd = -b.fa_dd;
     // Normal drag on both stations, -(f^D / 2) |q| q, q = P w the part across the link of the
     // relative velocity w = mean velocity - c: through the orientation (P) and the velocity.
     // Tangential drag, -(f^T / 2) |p| p t, p = t . w: likewise.
     const double f = m.line.drag_factor[k], ft = m.line.tangential_drag_factor[k];
-    if ((f != 0 || ft != 0) && !waves) {
+    const bool drag = (f != 0 || ft != 0) && !waves;
+    Vec q = Vec::Zero();
+    double s = 0, tw = 0;
+    if (drag) {
       const double ymid = profile ? 0.5 * (g.elevation[k] + g.elevation[k + 1]) : 0.0;
       if (profile) current = CurrentAt(m, water, ymid);
       const Vec w = 0.5 * (v.col(k) + v.col(k + 1)) - current;
-      const Vec q = w - t * t.dot(w);
+      q = w - t * t.dot(w);
       // G = d(|q| q) / dq = |q| I + q q^T / |q|, and as q is across the link (q . t = 0),
-      // G P = G - |q| t t^T and G t = |q| t: the products with P and with dq/dd below are
-      // written out (3x3 products per link per Newton iteration were a tenth of its time).
-      const double s = q.norm();
-      if (f != 0 && s > 0) {
-        const Mat GP = NormalDragDerivative(q) - s * tt;
-        // G dq/dd, dq/dd = -((t . w) P + t q^T) / L (NormalPartDerivative).
-        const Mat H = (0.5 * f / L) * (t.dot(w) * GP + (s * t) * q.transpose());
-        b.fa_dd += H;
-        b.fb_dd += H;
-        // d/dv_k (= d/dv_{k+1}): through w = mean velocity, dq/dv = P / 2.
-        b.f_dv = (-0.25 * f) * GP;
-      }
-      const double p = t.dot(w);  // [m/s]
+      // G P = G - |q| t t^T and G t = |q| t: hence GP and H in AddLinkBlocks, with
+      // dq/dd = -((t . w) P + t q^T) / L (NormalPartDerivative) and, through w = mean
+      // velocity, dq/dv = P / 2.
+      s = q.norm();
+      tw = t.dot(w);
+      const double p = tw;  // [m/s]
       if (ft != 0 && p != 0) {
         // d(|p| p t)/dd = |p| (2 t q^T + p P) / L (dt/dd = P / L, dp/dd = q^T / L, q = P w);
         // d/dv_k: through dp/dv = t^T / 2, d(|p| p)/dp = 2 |p|.
+        const Mat tt = t * t.transpose();
         const double c = -0.5 * ft * std::abs(p);  // [kg/s]
-        const Mat Ht = (2.0 * c / L) * t * q.transpose() - (c * p / L) * tt +
-                       (c * p / L) * Mat::Identity();
-        b.fa_dd += Ht;
-        b.fb_dd += Ht;
-        b.f_dv += c * tt;
+        x.dd = (2.0 * c / L) * t * q.transpose() - (c * p / L) * tt + (c * p / L) * Mat::Identity();
+        x.dv = c * tt;
+        x.any_dd = x.any_dv = true;
       }
       // A current profile: w = mean velocity - c((y_k + y_{k+1})/2), so the force on either
       // station depends on y_k and y_{k+1} alike through dw/dy = -c'/2: dF/dy_i = 2 f_dv
-      // (-c'/2) = -f_dv c'. Stored negated, in the y column.
-      // The same in all four blocks, as kv f_dv is with the opposite sign: Scatter adds it
-      // with that term (four block sums per link fewer).
-      if (profile) b.slope_column = b.f_dv * CurrentSlope(m, water, ymid);
+      // (-c'/2) = -f_dv c'. Stored negated, in the y column of all four blocks, where
+      // AddLinkBlocks subtracts it with kv f_dv.
+      if (profile) {
+        const Mat tt = t * t.transpose();
+        Mat f_dv = Mat::Zero();
+        if (f != 0 && s > 0) f_dv = (-0.25 * f) * (NormalDragDerivative(q) - s * tt);
+        if (x.any_dv) f_dv += x.dv;
+        x.slope_column = f_dv * CurrentSlope(m, water, ymid);
+      }
     }
-    Scatter(m, k, b, kv, profile, system);
+    AddLinkBlocks(m, k, t, dTdL, TL, drag ? f : 0.0, s, q, tw, L, x, kv, profile, system);
   }
   // Prism drag -u f (.) rel, rel = v_j - c(y_j) e_x: a function of the station's own velocity,
   // and of its elevation through a current profile.
@@ -177,10 +207,17 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
   }
 }
 
-void AddInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
+void SetInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
                         double ka, BlockTridiagonal& system) {
   const int j0 = m.first_free(), j1 = m.last_free();
-  for (int j = j0; j <= j1; ++j) AddStationInertia(m, g, j, ka, system.diag[j - j0]);
+  // Each row's blocks cleared where its inertia is added (a separate pass over the 2 MB of a
+  // long line's blocks cost 3 % of its run).
+  for (int j = j0; j <= j1; ++j) {
+    system.lower[j - j0].setZero();
+    system.upper[j - j0].setZero();
+    system.diag[j - j0].setZero();
+    AddStationInertia(m, g, j, ka, system.diag[j - j0]);
+  }
   // d/dd of (e/2) (I - t t^T) a_j for each station j of link k: (e/2) d(P a)/dd.
   // The tangential added mass e^t t t^T / 2 = e^t (I - P) / 2 has the same derivative with the
   // opposite sign: the two together are that of (e - e^t) P / 2.

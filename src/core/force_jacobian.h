@@ -18,9 +18,10 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
                       const Eigen::VectorXd& tension, const Points& v, double kv,
                       BlockTridiagonal& system);
 
-// Adds  ka M(x) + d(M(x) a)/dx  to `system`: the inertia of eq. (1) with the dependence of the
-// normal and tangential added mass on the links' orientation. ka = da/dx of the time-stepping scheme.
-void AddInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
+// Sets the blocks of `system` (not its right-hand side) to  ka M(x) + d(M(x) a)/dx: the inertia
+// of eq. (1) with the dependence of the normal and tangential added mass on the links'
+// orientation. ka = da/dx of the time-stepping scheme.
+void SetInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
                         double ka, BlockTridiagonal& system);
 
 }  // namespace cablefilm

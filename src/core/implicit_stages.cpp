@@ -83,8 +83,7 @@ bool AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h
     else same = same && w.matrix_taut[k] == taut;
   }
   if (jacobian) {
-    system.SetZero();
-    AddInertiaJacobian(m, ws.geometry, w.a, ka, system);
+    SetInertiaJacobian(m, ws.geometry, w.a, ka, system);
     AddForceJacobian(m, d.water, ws.geometry, ws.tension, w.v, kv, system);
   }
   for (int j = j0; j <= j1; ++j)

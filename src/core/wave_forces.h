@@ -52,7 +52,7 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
                           const Points& v, double kv, BlockTridiagonal& system);
 
 // d(M(x) a)/dx through the wet fractions of the added masses (the orientation part is in
-// AddInertiaJacobian).
+// SetInertiaJacobian).
 void AddWaveInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
                             BlockTridiagonal& system);
 

@@ -771,8 +771,8 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
     for (BlockTridiagonal* s : {&s0, &s1, &i0, &i1}) s->SetZero();
     AddForceJacobian(m, SceneWater(m), ws.geometry, ws.tension, v, 0.0, s0);
     AddForceJacobian(m, SceneWater(m), ws.geometry, ws.tension, v, 1.0, s1);
-    AddInertiaJacobian(m, ws.geometry, a, 0.0, i0);
-    AddInertiaJacobian(m, ws.geometry, a, 1.0, i1);
+    SetInertiaJacobian(m, ws.geometry, a, 0.0, i0);
+    SetInertiaJacobian(m, ws.geometry, a, 1.0, i1);
     Eigen::MatrixXd M = Eigen::MatrixXd::Zero(kDim * n, kDim * n);
     for (int j = j0; j <= j1; ++j)
       M.block<kDim, kDim>(kDim * (j - j0), kDim * (j - j0)) = StationInertia(m, ws.geometry, j);
