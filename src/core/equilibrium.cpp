@@ -300,13 +300,48 @@ void CurvilinearUpdate(const Model& m, const Points& x, const Points& dx,
   }
 }
 
+// Whether Newton has stalled within the round-off floor: its best residual within `floor` and
+// no step of the line search lowering the merit, or none of kStallIterations steps lowering
+// the residual. Within the floor the residual is the tensions' round-off, which the iterations
+// stir rather than lower: a taut tether of 100 000 links of 11 um (floor 3e-3 N, 1e-9 of its
+// load asked for) iterated 500 Newton and 5 000 fallback steps there, 145 s. The floor is a
+// bound: an iteration may get some way below it, so it is given those steps to do so, and
+// the best iterate is the answer.
+class RoundoffStall {
+ public:
+  RoundoffStall(double floor, const Points& x, double r_inf) : floor_(floor), best_r_(r_inf) {
+    if (r_inf <= floor_) best_ = x;
+  }
+  bool Stalled(const Points& x, double r_inf) {
+    if (r_inf < best_r_) {
+      if (r_inf <= floor_) best_ = x;  // (only a best within the floor is ever returned)
+      best_r_ = r_inf;
+      since_best_ = 0;
+      return false;
+    }
+    return best_r_ <= floor_ && ++since_best_ >= kStallIterations;
+  }
+  // No step of the line search lowered the merit: within the floor, no step will.
+  bool NoStep() const { return best_r_ <= floor_; }
+  const Points& best() const { return best_; }
+
+ private:
+  static constexpr int kStallIterations = 5;
+  double floor_;
+  Points best_;
+  double best_r_;
+  int since_best_ = 0;
+};
+
 // Newton with Levenberg-Marquardt damping, each step taken along the links (CurvilinearUpdate). Without current the problem is the minimum of the
 // potential energy, and (-J + beta I) is positive definite for beta > 0 (tensions are never
 // negative), so the step descends the energy: an Armijo line search on it makes the iteration
 // converge from slack starts where the links carry nothing. With current the drag is not
-// conservative and the residual norm is the merit function instead. Returns true if converged.
-bool Newton(const Model& m, const Water& water, Points& x, double tol_force, int max_iter,
-            EquilibriumReport& report, const CancelFlag* cancel) {
+// conservative and the residual norm is the merit function instead. Returns true if converged:
+// within tol_force, or stalled within `floor`, the residual the tensions' round-off allows
+// (RoundoffStall; x is then the best iterate).
+bool Newton(const Model& m, const Water& water, Points& x, double tol_force, double floor,
+            int max_iter, EquilibriumReport& report, const CancelFlag* cancel) {
   StaticProblem problem(m, water);
   // The seabed's spring is conservative too (its energy is in PotentialEnergy); its damping
   // and friction vanish at rest.
@@ -322,6 +357,7 @@ bool Newton(const Model& m, const Water& water, Points& x, double tol_force, int
   double r_inf = problem.MaxResidual();
   double beta = 0;
   const double beta_start = std::max(r_inf, 1e-12) / (0.05 * length_scale);
+  RoundoffStall stall(floor, x, r_inf);
   for (; report.iterations < max_iter; ++report.iterations) {
     if (r_inf <= tol_force) return true;
     ThrowIfCancelled(cancel, "the static equilibrium");
@@ -347,6 +383,10 @@ bool Newton(const Model& m, const Water& water, Points& x, double tol_force, int
     }
     alpha *= 2.0;  // undo the last halving of the loop
     if (!accepted) {
+      if (stall.NoStep()) {
+        x = stall.best();
+        return true;
+      }
       problem.Residual(x);
       beta = std::max(10.0 * beta, beta_start);
       continue;
@@ -354,6 +394,10 @@ bool Newton(const Model& m, const Water& water, Points& x, double tol_force, int
     const double step = (alpha * dx).lpNorm<Eigen::Infinity>();
     x = trial;
     r_inf = problem.MaxResidual();
+    if (stall.Stalled(x, r_inf)) {
+      x = stall.best();
+      return true;
+    }
     beta = alpha == 1.0 ? beta * 0.1 : std::max(2.0 * beta, beta_start * 1e-3);
     if (beta < 1e-12 * beta_start) beta = 0;
     // Round-off floor: a negligible step with a small residual is as converged as it gets.
@@ -368,7 +412,8 @@ bool Newton(const Model& m, const Water& water, Points& x, double tol_force, int
 // there is no energy to descend) the flow still runs into every stable equilibrium, the state
 // a damped dynamic run would settle in. beta halves after a step that lowered the residual and
 // doubles after one that raised it, so the last steps are Newton's. No link is stretched or
-// turned by more than a quarter of its length in one step, so no step folds the line.
+// turned by more than a quarter of its length in one step, so no step folds the line. Returns
+// true if converged within tol_force.
 bool PseudoTransient(const Model& m, const Water& water, Points& x, double tol_force,
                      int max_iter,
                      EquilibriumReport& report, const CancelFlag* cancel) {
@@ -597,7 +642,7 @@ State SolveEquilibrium(const Model& m, const Points& guess,
   // 1091 ms for the same equilibrium.
   if (options.warm_start) {
     Points trial = x;
-    if (Newton(m, with_current(full), trial, tol,
+    if (Newton(m, with_current(full), trial, tol, report.roundoff_floor,
                std::min(options.max_iterations, kWarmStartIterations), report,
                options.cancel)) {
       StaticProblem problem(m, calm);
@@ -611,7 +656,8 @@ State SolveEquilibrium(const Model& m, const Points& guess,
     }
   }
   const Water still = with_current(0.0);
-  bool ok = Newton(m, still, x, tol, options.max_iterations, report, options.cancel);
+  bool ok = Newton(m, still, x, tol, report.roundoff_floor, options.max_iterations, report,
+                   options.cancel);
   double reached = 0;
   double increment = 0.25 * full;
   // Bounded: a current so small that a quarter of it underflows goes in at once.
@@ -623,7 +669,8 @@ State SolveEquilibrium(const Model& m, const Points& guess,
     const Water step = with_current(target);
     Points trial = x;
     ++report.current_steps;
-    if (Newton(m, step, trial, tol, options.max_iterations, report, options.cancel)) {
+    if (Newton(m, step, trial, tol, report.roundoff_floor, options.max_iterations, report,
+               options.cancel)) {
       x = trial;
       reached = target;
     } else if (std::abs(increment) > 1e-3 * std::abs(full) &&

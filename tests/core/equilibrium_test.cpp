@@ -345,6 +345,52 @@ TEST(EquilibriumRobustness, FreeHangingCable) {
   EXPECT_LE(MaxResidual(m, st), 1e-6 * rep.force_scale);
 }
 
+// A taut tether of 100 000 links of 11 um, as a fuzzed MoorDyn file had it, 0.3 degrees off the
+// vertical: EA / l = 2.3e12 N/m, so the tensions' round-off (the floor, 4 eps |x| EA / l =
+// 2.9e-3 N) is thousands of times the tolerance asked (1e-9 of the load, 4.8e-7 N). Newton gets
+// within the floor in a few iterations and can do no better there; it used to go on for its
+// 500 iterations and the fallback's 5 000 (145 s) to the same answer.
+// The truth: a taut line's mean tension is EA times its mean strain, its arc over L0 less 1,
+// and its arc is the chord D and the sag's 8 delta^2 / (3 D) (a parabola of sag delta = w_n D^2
+// / (8 T) under the weight's part across it, w_n): 7.5e-9 of D, 0.19 N of 446 N here, which
+// the discrete line must show. Along it the tension grows by the weight's part along it, w_t.
+TEST(EquilibriumRobustness, StiffLinksStopAtTheRoundoffFloor) {
+  const int N = 100000;
+  const double L = 1.11374, mu = 3.8, area = 4.822e-4, EA = 25789847.71, rho = 1025.0;
+  // Its ends as the file placed them (the floor grows with |x|).
+  const Vec bottom(-0.82037111325625, -1.2840966813934565, 1.4824722198985547);  // [m]
+  const Vec top = Vec(-0.8228425527966355, -0.17035212342813671, 1.4773081554316) - bottom;
+  EnvironmentSpec sea;
+  sea.fluid_density = rho;
+  const Model m = UniformCable(N, L, mu, area, EA / area, sea, EndMotion::Fixed(bottom),
+                               EndMotion::Fixed(bottom + top));
+  EquilibriumReport rep;
+  const State st = SolveEquilibrium(m, &rep);
+  ForceWorkspace ws(m.line.links);
+  ComputeGeometry(st.x, ws.geometry);
+  ComputeHookeTensions(m, ws.geometry, ws.tension);
+  const double D = top.norm(), w = (mu - rho * area) * kG;  // [m], [N/m]
+  const double cos_t = top.y() / D, w_t = w * cos_t, w_n = w * std::sqrt(1 - cos_t * cos_t);
+  double T = EA * (D / L - 1);  // [N], then with the sag's arc (a fixed point: 3 rounds)
+  for (int i = 0; i < 5; ++i) {
+    const double sag = w_n * D * D / (8 * T);
+    T = EA * ((D + 8 * sag * sag / (3 * D)) / L - 1);
+  }
+  const double mean = ws.tension.mean();
+  const double growth = (ws.tension[N - 1] - ws.tension[0]) / (L * (N - 1.0) / N);  // [N/m]
+  std::printf("[ robust ] stiff links: %d iterations (%d pseudo-transient), residual %.2e N, "
+              "floor %.2e N, tolerance %.2e N; mean tension %.4f N (taut line with its sag "
+              "%.4f N, without %.4f N), growth %.4f N/m (w_t %.4f N/m)\n",
+              rep.iterations, rep.fallback_iterations, rep.residual, rep.roundoff_floor,
+              1e-9 * rep.force_scale, mean, T, EA * (D / L - 1), growth, w_t);
+  EXPECT_GT(rep.roundoff_floor, 1e3 * 1e-9 * rep.force_scale);  // the case it is about
+  EXPECT_LE(rep.residual, rep.roundoff_floor);
+  EXPECT_FALSE(rep.fallback);
+  EXPECT_LE(rep.iterations, 30);
+  EXPECT_NEAR(mean, T, 0.02);
+  EXPECT_NEAR(growth, w_t, 1e-3 * w_t);
+}
+
 // ---------------------------------------------------------------------------------------------
 // A towed cable (issue 11, defect 10): the upper end fixed, the lower end free, in a current.
 // Each link's weight and normal drag must have no normal resultant, so every link makes the
