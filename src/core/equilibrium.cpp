@@ -300,36 +300,28 @@ void CurvilinearUpdate(const Model& m, const Points& x, const Points& dx,
   }
 }
 
-// Whether Newton has stalled within the round-off floor: its best residual within `floor` and
-// no step of the line search lowering the merit, or none of kStallIterations steps lowering
-// the residual. Within the floor the residual is the tensions' round-off, which the iterations
-// stir rather than lower: a taut tether of 100 000 links of 11 um (floor 3e-3 N, 1e-9 of its
-// load asked for) iterated 500 Newton and 5 000 fallback steps there, 145 s. The floor is a
-// bound: an iteration may get some way below it, so it is given those steps to do so, and
-// the best iterate is the answer.
+// Whether Newton has stalled within the round-off floor: its residual within `floor` and five
+// steps in a row not lowering it below its best (or no step of the line search lowering the
+// merit: NoStep). Within the floor the residual is the tensions' round-off, which the
+// iterations stir rather than lower: a taut tether of 100 000 links of 11 um (floor 3e-3 N,
+// 1e-9 of its load asked for) iterated 500 Newton and 5 000 fallback steps there, 145 s. The
+// floor is a bound: an iteration may get some way below it, so it is given those steps.
 class RoundoffStall {
  public:
-  RoundoffStall(double floor, const Points& x, double r_inf) : floor_(floor), best_r_(r_inf) {
-    if (r_inf <= floor_) best_ = x;
-  }
-  bool Stalled(const Points& x, double r_inf) {
-    if (r_inf < best_r_) {
-      if (r_inf <= floor_) best_ = x;  // (only a best within the floor is ever returned)
-      best_r_ = r_inf;
+  RoundoffStall(double floor, double r_inf) : floor_(floor), best_(r_inf) {}
+  bool Stalled(double r_inf) {
+    if (r_inf < best_) {
+      best_ = r_inf;
       since_best_ = 0;
       return false;
     }
-    return best_r_ <= floor_ && ++since_best_ >= kStallIterations;
+    return ++since_best_ >= kStallIterations && r_inf <= floor_;
   }
-  // No step of the line search lowered the merit: within the floor, no step will.
-  bool NoStep() const { return best_r_ <= floor_; }
-  const Points& best() const { return best_; }
+  bool NoStep(double r_inf) const { return r_inf <= floor_; }
 
  private:
   static constexpr int kStallIterations = 5;
-  double floor_;
-  Points best_;
-  double best_r_;
+  double floor_, best_;
   int since_best_ = 0;
 };
 
@@ -339,7 +331,7 @@ class RoundoffStall {
 // converge from slack starts where the links carry nothing. With current the drag is not
 // conservative and the residual norm is the merit function instead. Returns true if converged:
 // within tol_force, or stalled within `floor`, the residual the tensions' round-off allows
-// (RoundoffStall; x is then the best iterate).
+// (RoundoffStall).
 bool Newton(const Model& m, const Water& water, Points& x, double tol_force, double floor,
             int max_iter, EquilibriumReport& report, const CancelFlag* cancel) {
   StaticProblem problem(m, water);
@@ -357,7 +349,7 @@ bool Newton(const Model& m, const Water& water, Points& x, double tol_force, dou
   double r_inf = problem.MaxResidual();
   double beta = 0;
   const double beta_start = std::max(r_inf, 1e-12) / (0.05 * length_scale);
-  RoundoffStall stall(floor, x, r_inf);
+  RoundoffStall stall(floor, r_inf);
   for (; report.iterations < max_iter; ++report.iterations) {
     if (r_inf <= tol_force) return true;
     ThrowIfCancelled(cancel, "the static equilibrium");
@@ -383,10 +375,7 @@ bool Newton(const Model& m, const Water& water, Points& x, double tol_force, dou
     }
     alpha *= 2.0;  // undo the last halving of the loop
     if (!accepted) {
-      if (stall.NoStep()) {
-        x = stall.best();
-        return true;
-      }
+      if (stall.NoStep(r_inf)) return true;
       problem.Residual(x);
       beta = std::max(10.0 * beta, beta_start);
       continue;
@@ -394,10 +383,7 @@ bool Newton(const Model& m, const Water& water, Points& x, double tol_force, dou
     const double step = (alpha * dx).lpNorm<Eigen::Infinity>();
     x = trial;
     r_inf = problem.MaxResidual();
-    if (stall.Stalled(x, r_inf)) {
-      x = stall.best();
-      return true;
-    }
+    if (stall.Stalled(r_inf)) return true;
     beta = alpha == 1.0 ? beta * 0.1 : std::max(2.0 * beta, beta_start * 1e-3);
     if (beta < 1e-12 * beta_start) beta = 0;
     // Round-off floor: a negligible step with a small residual is as converged as it gets.
