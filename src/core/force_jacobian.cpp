@@ -9,9 +9,9 @@ namespace cablefilm {
 namespace {
 
 // The optional parts of a link's derivative blocks (axial damping, tangential drag, a current
-// profile's slope), built as matrices only where the model has them. Stored negated.
-// Each matrix is read only where its flag is set (left unset otherwise: zeroing them cost a
-// link more than the blocks of a line without them).
+// profile's slope), built as matrices only where the model has them. Stored negated. Each
+// matrix is read only where its flag is set, and left unset otherwise (27 stores a link saved
+// on a line without them).
 struct LinkExtras {
   Mat dd;       // added to the derivatives of both forces w.r.t. d = x_{k+1} - x_k
   Mat damping;  // the axial damping's, added to that of the force on k alone
