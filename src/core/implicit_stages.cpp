@@ -71,6 +71,7 @@ bool AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h
   const double ka = (1.0 - c.am) / ((1.0 - c.af) * c.beta * h * h);  // d a_{n+1} / d x_{n+1}
   const double kv = c.gamma / (c.beta * h);                          // d v_{n+1} / d x_{n+1}
   ++d.stats.newton_iterations;
+  w.velocity_per_position = kv;
   Kinematics(m, d, c, h, w.x);
   ComputeGeometry(m, d.water, t1, w.x, ws.geometry);
   ComputeTensions(m, ws.geometry, w.v, ws.tension);
@@ -143,24 +144,66 @@ double CorrectionSize(const Model& m, const Data& d) {
   const std::vector<Vec>& dx = d.scratch.system.rhs;
   double size = 0;
   for (int j = 0; j <= m.last_free() - m.first_free(); ++j) {
-    const double s = dx[j].lpNorm<Eigen::Infinity>();
+    const double s = dx[j].norm();
     if (std::isnan(s)) return s;
     size = std::max(size, s);
   }
   return size;
 }
 
-double ApplyCorrection(const Model& m, Data& d, bool* contact_changed) {
+namespace {
+
+// The part of station j's correction dx [m] that Newton may apply along the bed. A station
+// sliding one way whose correction would have it slide the other way has crossed its stick
+// zone (|K l_j s + C_j v_h| <= mu N_j, seabed_friction.h), of width 2 mu N_j / (K l_j) along
+// the slide: micrometres where it just touches the bed. On either sliding branch Newton's
+// model has the line's stiffness alone (the friction is mu N_j whatever the slip), so it
+// steps over the zone to the other branch and back, the same correction each way, and the
+// step was rejected (460 of grounded_chain.toml's 556 rejected steps, the station at the
+// touchdown). The step stops where the sticking force's component along the old slide
+// vanishes (the force is linear in the step there: K l_j + C_j kv per metre), inside the
+// zone, where the next iteration sees the stick tangent. Where the answer is sliding the
+// other way, the iterations get there from the zone as from any sticking state.
+Vec FrictionStep(const Model& m, const Scratch& w, const LinkGeometry& g, int j, const Vec& dx) {
+  const SeabedSpec& bed = m.env.seabed;
+  const double p = bed.y - w.x(kVertical, j);  // penetration [m]
+  if (!(p > 0) || g.stick.cols() == 0) return dx;
+  const double K = m.line.friction_stiffness[j], C = m.line.friction_damping[j];  // [N/m], [N s/m]
+  const double limit = bed.friction * SeabedNormal(m, j, p, w.v(kVertical, j)).N;  // mu N [N]
+  const Vec trial = -(K * g.stick.col(j) + C * HorizontalPart(w.v.col(j)));      // [N]
+  const double size = trial.norm();
+  if (!(size > limit)) return dx;  // sticking
+  const Vec u = trial / size;      // the slide's force direction
+  const Vec step = HorizontalPart(dx);
+  const double per_metre = K + C * w.velocity_per_position;  // [N/m]
+  const Vec after = trial - per_metre * step;
+  if (!(after.dot(u) < 0) || !(after.norm() > limit)) return dx;  // no reversal past the zone
+  const double along = per_metre * step.dot(u);  // > size here
+  return dx - (1.0 - size / along) * step;
+}
+
+}  // namespace
+
+double ApplyCorrection(const Model& m, Data& d, bool* contact_changed, bool* cut) {
   Scratch& w = d.scratch;
   const BlockTridiagonal& system = w.system;
   const SeabedSpec& bed = m.env.seabed;
+  const bool sticks = HasStickSlip(m);
   const int j0 = m.first_free(), j1 = m.last_free();
   double dx_max = 0;
-  bool changed = false;
+  bool changed = false, shortened = false;
   for (int j = j0; j <= j1; ++j) {
     const bool above_bed = bed.present && w.x(1, j) >= bed.y;
-    w.x.col(j) += system.rhs[j - j0];
-    dx_max = std::max(dx_max, system.rhs[j - j0].lpNorm<Eigen::Infinity>());
+    const Vec& dx = system.rhs[j - j0];
+    if (sticks && !above_bed) {
+      const Vec step = FrictionStep(m, w, d.forces.geometry, j, dx);
+      shortened = shortened || step != dx;
+      w.x.col(j) += step;
+    } else {
+      w.x.col(j) += dx;
+    }
+    const double size = dx.norm();
+    if (!(size <= dx_max) && !std::isnan(dx_max)) dx_max = size;  // a NaN stays
     if (bed.present && above_bed != (w.x(1, j) >= bed.y)) changed = true;
     // A station above the seabed that the iteration would drive into it (its linear model
     // knows nothing of the bed) lands at its resting penetration instead: otherwise the next
@@ -170,6 +213,7 @@ double ApplyCorrection(const Model& m, Data& d, bool* contact_changed) {
       w.x(1, j) = bed.y - m.line.seabed_rest_depth[j];
   }
   if (contact_changed) *contact_changed = changed;
+  if (cut) *cut = shortened;
   return dx_max;
 }
 

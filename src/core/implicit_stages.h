@@ -49,6 +49,13 @@ class NewtonConvergence {
   // model sees the bed only where the iterate is): it never converges at this step, and the
   // iterations up to kMaxNewtonIterations would be lost before the step is halved anyway.
   bool Stalled() const { return corrections_ >= 3 && !(theta_ < 1); }
+  // A correction that was not applied whole (ApplyCorrection's `cut`): not converged, and the
+  // next one is measured as a first (no rate from this one).
+  void Cut() {
+    last_ = 0;
+    theta_ = 0;
+    ++corrections_;
+  }
   // The last correction's rate theta (0 after the first), and its size.
   double rate() const { return theta_; }
   double last() const { return last_; }
@@ -103,12 +110,21 @@ void RestoreResidual(Data& d);
 // refactors the whole line, a serial chain of 3x3 inverses: on the spread mooring one pass
 // took 0.86-0.93 of the CPU of none (paired runs), three passes 1.02 for 13 % fewer iterations.
 constexpr int kSnappingPasses = 1;
-// The largest entry of the solution in d.scratch.system.rhs [m] (NaN if one is).
+// The size of the solution in d.scratch.system.rhs: its largest station correction |dx_j| [m]
+// (NaN if one is). The length of each station's correction, not its largest coordinate: a
+// turned scene's Newton stops at the same iteration as the scene's own, where the largest
+// coordinate stopped them an iteration apart now and then, and a sticking station on the
+// seabed kept the difference (rotational_invariance_test: 1.2e-5 of the peak tension, now
+// 2e-11). It is at least the largest coordinate, so the tolerance holds in every direction.
 double CorrectionSize(const Model& m, const Data& d);
-// Adds the solution in d.scratch.system.rhs to the trial positions; returns its largest entry
-// [m] (not finite if the solution is not). `contact_changed` (optional): set when a station
-// crossed the seabed's level (the matrix's contact then no longer holds).
-double ApplyCorrection(const Model& m, Data& d, bool* contact_changed = nullptr);
+// Adds the solution in d.scratch.system.rhs to the trial positions; returns its size as
+// CorrectionSize [m] (not finite if the solution is not). `contact_changed` (optional): set
+// when a station crossed the seabed's level (the matrix's contact then no longer holds).
+// `cut` (optional): set when a grounded station's step along the bed was cut short in its
+// stick zone (implicit_stages.cpp, FrictionStep): the iterate did not move by the solution
+// then, which says nothing of how near it is (NewtonConvergence::Cut).
+double ApplyCorrection(const Model& m, Data& d, bool* contact_changed = nullptr,
+                       bool* cut = nullptr);
 // The converged trial step: its velocities, accelerations and tensions.
 void FinishSolve(const Model& m, Data& d, const GeneralizedAlpha& c, double h);
 // The local position error of the solved step [m].

@@ -64,10 +64,12 @@ struct LineStepper {
           continue;
         }
       }
-      bool contact_changed = false;
-      const double dx_max = ApplyCorrection(m, d, &contact_changed);
+      bool contact_changed = false, cut = false;
+      const double dx_max = ApplyCorrection(m, d, &contact_changed, &cut);
       if (!std::isfinite(dx_max)) return false;
-      if (newton.Converged(dx_max)) {
+      if (cut) {
+        newton.Cut();
+      } else if (newton.Converged(dx_max)) {
         FinishSolve(m, d, c, h);
         return true;
       }

@@ -338,9 +338,11 @@ struct SystemStepper {
       }
       const bool was_fresh = all_fresh();
       double correction = 0;  // the largest, over its tolerance
+      bool cut = false;       // a line's correction not applied whole
       for (int i = 0; i < lines(); ++i) {
-        bool changed = false;
-        const double dx = ApplyCorrection(sys.lines[i], sd.lines[i], &changed);
+        bool changed = false, line_cut = false;
+        const double dx = ApplyCorrection(sys.lines[i], sd.lines[i], &changed, &line_cut);
+        cut = cut || line_cut;
         if (!std::isfinite(dx)) return false;
         const double size = dx / sd.lines[i].scratch.newton_tolerance;
         correction = std::max(correction, size);
@@ -359,7 +361,9 @@ struct SystemStepper {
         correction = std::max(correction, size / sd.newton_tolerance);
       }
       SyncCoupled(sys, sd, false);  // the seabed's landing clamp is the owner's
-      if (newton.Converged(correction)) {
+      if (cut) {
+        newton.Cut();
+      } else if (newton.Converged(correction)) {
         for (int i = 0; i < lines(); ++i) FinishSolve(sys.lines[i], sd.lines[i], c, h);
         for (BodyMotion& b : sd.bodies) BodyKinematics(b, c, h);
         return true;

@@ -144,22 +144,24 @@ TEST(RotationalInvariance, ExplicitScheme) {
 // On the bed the start is less sharp: the static equilibrium is found to 1e-9 of its force
 // scale, and a frictionless bed holds the grounded chain sideways only through its tension, so
 // the turned scene starts from another point of that ball (1.4e-10 of the peak apart, measured),
-// which the stiff friction (mu N / v_f) and the contact carry on: 3.5e-8 of the peak after 20 s,
-// 5e-7 m (measured at 37 deg) while Newton iterated until its last correction was below its
-// tolerance (1e-9 of a link, 3.4e-8 m here). Newton now stops when the error it still leaves
-// is estimated below that tolerance (implicit_stages.h, NewtonConvergence): it leaves up to
-// 3.4e-8 m where it used to leave a thousandth of that, and a rounding that moves the stop by
-// one iteration moves a station by that much, which the sticking friction (a shear spring of
-// 3e7 N/m per metre) keeps: 3.0e-7 of the peak after 20 s, measured at both angles. The bound,
-// 1e-6, is three times that: a friction or contact that preferred an axis would be off by a
-// part in ten, not by a part in a million. The positions keep their bound, 1e-7 of the reach.
-// What users run: the default, adaptive step. Its accept/reject decisions and Newton's stopping
-// are steps in the inputs, so a rounding can take another path through the same tolerance: the
-// runs then differ by what the tolerance allows, a local position error of 1e-6 of the line's
-// length (0.34 mm) per step. Measured: 9e-5 m and 2.5e-4 of the peak tension. Bounds: the
-// tolerance, 1e-6 of the reach (0.3 mm), for the positions, and 1e-3 of the peak for the
-// tensions, the accuracy of the defaults against converged runs (docs/validation.md: 0.12 to
-// 0.21 % of the peak on the grounded mooring).
+// which the stiff friction (a shear spring of 3e7 N/m per metre) and the contact carry on.
+// Newton stops on the size of each station's correction, |dx_j| (implicit_stages.h,
+// CorrectionSize), which a turn leaves as it is: both runs stop at the same iteration of every
+// step. (It stopped on the largest coordinate of a correction, which a turn changes: a step
+// stopped one iteration apart in the two runs, and the difference Newton leaves, up to its
+// tolerance of 1e-9 of a link, 1e-8 m here, was kept by the sticking friction's spring: 3e-7 of
+// the peak after 20 s, 1.2e-5 once a sliding station's step that reverses its slide stops in
+// its stick zone and Newton converges more slowly after it.) Measured now: 2.4e-11 of the peak,
+// 2.4e-9 m. The bounds are those of the line afloat, 1e-9 of the peak and of the reach: a
+// friction or contact that preferred an axis would be off by a part in ten.
+// What users run: the default, adaptive step. Its accept/reject decisions are steps in the
+// inputs (the local error estimate takes the largest coordinate of each station's change of
+// acceleration, which a turn changes), so the runs can take other paths through the same
+// tolerance: they then differ by what the tolerance allows, a local position error of 1e-6 of
+// the line's length (0.34 mm) per step. Measured: 1.4e-4 m and 8.7e-5 of the peak tension.
+// Bounds: the tolerance, 1e-6 of the reach (0.3 mm), for the positions, and 1e-3 of the peak
+// for the tensions, the accuracy of the defaults against converged runs (docs/validation.md:
+// 0.12 to 0.21 % of the peak on the grounded mooring).
 TEST(RotationalInvariance, DefaultAdaptiveStep) {
   const Case afloat{"implicit", 0, false, 20.0};
   for (double phi : {37.0, -123.4}) ExpectTurned(afloat, phi, 1e-3, 1e-6);
@@ -167,7 +169,7 @@ TEST(RotationalInvariance, DefaultAdaptiveStep) {
 
 TEST(RotationalInvariance, OnTheSeabedWithFriction) {
   const Case grounded{"implicit", 0.05, true, 20.0};
-  for (double phi : {37.0, -123.4}) ExpectTurned(grounded, phi, 1e-6, 1e-7);  // positions as before
+  for (double phi : {37.0, -123.4}) ExpectTurned(grounded, phi, 1e-9);
 }
 
 }  // namespace

@@ -6,6 +6,9 @@
 // 2. The figure: the grounded mooring of scenes/grounded_mooring.toml, whose anchor
 //    tension range must change by less than 1 % when the friction law is made sharper (the
 //    shear spring ten times stiffer).
+// 3. Newton's step of a sliding station that would have it slide the other way stops in its
+//    stick zone (implicit_stages.cpp, FrictionStep), where the sticking force along the old
+//    slide vanishes; a step that does not reverse the slide is taken whole.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +17,8 @@
 #include <vector>
 
 #include "core/equilibrium.h"
+#include "core/implicit_stages.h"
+#include "core/inputs.h"
 #include "core/seabed_friction.h"
 #include "core/stability.h"
 #include "run/memory_run.h"
@@ -161,6 +166,62 @@ TEST(StickSlipFriction, GroundedMooringAnchorRangeConvergesAsTheLawSharpens) {
   const double normal = range(3e7), sharper = range(3e8);
   // The bound: within 1 % (measured 0.2 %).
   EXPECT_NEAR(sharper, normal, 0.01 * normal);
+}
+
+// The chain of test 1 at rest on the bed, an implicit step's Newton iterate with station 50
+// displaced along the line by s0 from its anchor and the velocity v0 that the step's kinematics
+// give it there: its spring and dashpot would hold (K l + C kv) s0 = 10 mu N_j, so it slides
+// back (kv: the step's d v / d x). A correction of -2 s0 would take it past its stick zone to
+// slide the other way: it stops where the sticking force -(K l s + C v), v = v0 + kv (its step),
+// has no component along the old slide. A correction of -s0 / 2, after which it still slides
+// the same way, is taken whole.
+TEST(StickSlipFriction, NewtonStepThatReversesTheSlideStopsInTheStickZone) {
+  const Model m = PulledChain(FrictionModel::kStickSlip);
+  State s;
+  s.x = StraightChord(m);
+  for (int j = 0; j <= m.line.links; ++j)
+    s.x(1, j) = -m.line.net_weight[j] / m.line.seabed_stiffness[j];  // resting on the bed
+  s.v = Points::Zero(kDim, m.stations());
+  StepOptions options;
+  options.scheme = Scheme::kImplicit;
+  const int j = 50;
+  const double K = m.line.friction_stiffness[j], C = m.line.friction_damping[j];  // [N/m], [N s/m]
+  const double N = m.line.net_weight[j];  // the bed's reaction at rest [N]
+  const double h = 0.05;                  // [s]
+  const GeneralizedAlpha c = GeneralizedAlphaCoefficients(0.5);
+  const double kv = c.gamma / (c.beta * h);  // [1/s]
+  const double s0 = 10 * kMu * N / (K + C * kv);  // [m]
+  for (const double fraction : {2.0, 0.5}) {
+    const Inputs in = SceneInputs(m);
+    Data d = MakeData(m, in, options, s);
+    PredictStep(m, d, in, c, h);
+    d.scratch.x.col(j) = s.x.col(j) + Vec(s0, 0, 0);  // the iterate
+    AssembleNewton(m, d, c, h);
+    for (Vec& dx : d.scratch.system.rhs) dx.setZero();
+    d.scratch.system.rhs[j - m.first_free()] = Vec(-fraction * s0, 0, 0);
+    const Vec x0 = d.scratch.x.col(j), v0 = HorizontalPart(d.scratch.v.col(j));
+    bool cut = false;
+    const double size = ApplyCorrection(m, d, nullptr, &cut);
+    EXPECT_DOUBLE_EQ(size, fraction * s0);  // the solution's size, whatever was applied
+    const Vec step = d.scratch.x.col(j) - x0;
+    const Vec stick = HorizontalPart(d.scratch.x.col(j)) - d.forces.geometry.friction_anchor.col(j);
+    const Vec sticking = -(K * stick + C * (v0 + kv * step));  // [N]
+    std::printf("[ friction step ] K l %.3g N/m, C kv %.3g N/m; correction -%.2g s0: cut %d, "
+                "applied %.4g s0, sticking force %.3g N along the slide (mu N %.4g N)\n",
+                K, C * kv, fraction, cut, step[0] / s0, sticking[0], kMu * N);
+    if (fraction == 2.0) {
+      EXPECT_TRUE(cut);
+      // The rounding of 10 mu N less the same: 1e-9 of mu N.
+      EXPECT_NEAR(sticking[0], 0.0, 1e-9 * kMu * N);
+      EXPECT_LT(step[0], 0.0);  // part of the way
+      EXPECT_GT(step[0], -2 * s0);
+    } else {
+      EXPECT_FALSE(cut);
+      EXPECT_NEAR(step[0], -0.5 * s0, 1e-13);  // the rounding of x = 100 m: 1.4e-14 m
+    }
+    EXPECT_EQ(step[1], 0.0);
+    EXPECT_EQ(step[2], 0.0);
+  }
 }
 
 }  // namespace
