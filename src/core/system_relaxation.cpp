@@ -21,6 +21,19 @@ constexpr int kNearIterations = 20;
 // the tries from the motion's states.
 constexpr int kStallIterations = 20;
 
+// The relaxation's steps: the run's scheme and tolerance, with the most numerical damping of
+// the frequencies the steps do not resolve (rho_inf = 0). The motion is a way to rest, not a
+// result: its stiff, unresolved oscillations (a short stiff tether between a float and its
+// bridles ringing at kilohertz) have nothing to give it, and what the steps keep of them (the
+// run's rho_inf = 0.5 keeps half a step) sets Newton's iterations cycling. Without the start's
+// stricter tolerance: the clock stands at t = 0, where it would hold throughout.
+StepOptions RelaxationSteps(StepOptions step) {
+  step.rho_inf = 0;
+  step.start_tolerance = 0;
+  step.start_end = 0;
+  return step;
+}
+
 }  // namespace
 
 std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const Inputs& in,
@@ -38,7 +51,7 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
       const SystemFirstGuess guess = HoldAtFirstGuess(sys, options);
       SystemModel let_go = sys;  // its free bodies start where the first guess has them
       let_go.body_poses = guess.body_poses;
-      SystemData sd = MakeSystemData(let_go, in, step, guess.states);
+      SystemData sd = MakeSystemData(let_go, in, RelaxationSteps(step), guess.states);
       std::vector<State> states(sys.lines.size());
       double stations = 0;
       for (const Model& m : sys.lines) stations += m.stations();
@@ -46,7 +59,9 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
       for (int span = 1; span * kSpan <= kLongestRelaxation + 1e-9; ++span) {
         ThrowIfCancelled(options.cancel, "the system's static equilibrium");
         StepSystem(let_go, sd, in, kSpan);
-        const double work = double(sd.stats.steps) * stations / kMostRelaxationStationSteps;
+        // Rejected steps cost as much as accepted ones (a float's relaxation rejects 40 %).
+        const double work =
+            double(sd.stats.steps + sd.stats.rejected) * stations / kMostRelaxationStationSteps;
         if (sd.stats.steps > kMostRelaxationSteps || work > 1) break;
         if (options.relaxing)
           options.relaxing(std::max({span * kSpan / kLongestRelaxation,

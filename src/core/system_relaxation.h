@@ -19,11 +19,11 @@ namespace cablefilm {
 constexpr double kLongestRelaxation = 60.0;
 // Its steps at most: a motion that needs more (a float's stations slapping the surface, snaps)
 // is not settling, and the statics should fail in seconds, not minutes (20 runs' worth of steps
-// at the rows' 1/30 s; a MoorDyn float of 30 links settled in 25 800).
+// at the rows' 1/30 s; a MoorDyn float of 30 links settles in 10 s of motion, 6.4 s).
 constexpr long kMostRelaxationSteps = 36000;
-// And its work at most: steps times the system's stations (36 000 steps of 2 000 stations, some
-// 20 s; a MoorDyn float of 30 links in a system of 210 stations settled in 5.4e6). A line cut
-// into 100 000 links (a fuzzed file's) would have stepped for hours.
+// And its work at most: steps, accepted and rejected, times the system's stations (36 000 steps
+// of 2 000 stations, some 20 s). A line cut into 100 000 links (a fuzzed file's) would have
+// stepped for hours.
 constexpr double kMostRelaxationStationSteps = 7.2e7;
 
 // SolveSystemEquilibrium's answer; when it throws Error, the relaxation's (report->relaxed

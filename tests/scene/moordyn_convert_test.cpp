@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <toml++/toml.h>
 #include <vector>
@@ -453,6 +454,47 @@ TEST(MoorDynConvert, BodyGivenAboveItsAnchorHangsBelowIt) {
   EXPECT_NEAR(pose[0], 0.0, 1e-6);
   EXPECT_NEAR(pose[2], 0.0, 1e-6);
   ASSERT_EQ(states.size(), 1u);
+}
+
+// A spar float (0.6 m of 0.8 m diameter in 20 links, four times lighter than the water it
+// displaces) given standing through the surface on a stiff 1.1 m tether to a hub, which three
+// bridles and chains hold to anchors on the bed. Newton from the file's positions stalls (the
+// float's stations float and sink one at a time, its top stations fall over: a flexible float
+// lies in the surface); the relaxation finds it (it did not with the run's rho_inf = 0.5). The
+// answer is an equilibrium: the anchors' horizontal loads cancel (nothing else pushes
+// sideways: no current), the float lies at the surface (stations above and below the still
+// water level) and the hub hangs under it.
+TEST(MoorDynConvert, FloatAtTheSurfaceIsRelaxedIntoEquilibrium) {
+  const Converted c = Convert(ReadMoorDynFile(kDir + "float_on_bridles.txt"));
+  const SystemModel sys = BuildSystem(ParseScene(c.text, "float.toml"));
+  StepOptions step;
+  step.scheme = Scheme::kImplicit;
+  step.tolerance = 1e-6 * 16.0;  // the default: 1e-6 of the longest line's length [m]
+  SystemEquilibriumReport report;
+  const std::vector<State> states =
+      SolveSystemEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, &report, {});
+  EXPECT_GT(report.relaxed, 0.0);
+  EXPECT_LE(report.residual, 1e-9 * report.force_scale);
+  cablefilm::Vec anchors = cablefilm::Vec::Zero();  // the lines' pull on the fixed points [N]
+  for (std::size_t i = 0; i < sys.lines.size(); ++i)
+    for (int e = 0; e < 2; ++e) {
+      if (sys.points[sys.line_points[i][e]].kind != PointKind::kFixed) continue;
+      const int j = e == 0 ? 0 : sys.lines[i].line.links;
+      anchors += StaticStationForce(sys.lines[i], states[i], j);
+    }
+  std::printf("[ float ] relaxed %.1f s, out-of-balance %.3g N of %.4g N; anchors' load "
+              "(%.4g, %.4g, %.4g) N; float from y = %.3f to %.3f m, hub at y = %.3f m\n",
+              report.relaxed, report.residual, report.force_scale, anchors[0], anchors[1],
+              anchors[2], states[0].x.row(kVertical).minCoeff(),
+              states[0].x.row(kVertical).maxCoeff(), states[1].x(kVertical, 0));
+  // Each station balances to 1e-9 of the load (3e-6 N), the sum over the system's 70-odd
+  // within 1e-6 of it.
+  EXPECT_NEAR(anchors[0], 0.0, 1e-6 * report.force_scale);
+  EXPECT_NEAR(anchors[2], 0.0, 1e-6 * report.force_scale);
+  const Eigen::RowVectorXd y = states[0].x.row(kVertical);
+  EXPECT_GT(y.maxCoeff(), 0.0);
+  EXPECT_LT(y.minCoeff(), 0.0);
+  EXPECT_LT(states[1].x(kVertical, 0), y.minCoeff());  // the hub (the tether's start) below
 }
 
 TEST(MoorDynConvert, ShippedScenesAsMoorDynFiles) {
