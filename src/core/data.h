@@ -87,8 +87,6 @@ struct Scratch {
                                   // (implicit_stages.h, FindSnappingLinks): 1 marked, 2 in
                                   // the matrix
   std::vector<Vec> residual;      // implicit: the residual of the iterate, kept for re-solves
-  double velocity_per_position = 0;  // implicit: d v_{n+1} / d x_{n+1} of the step Newton
-                                     // solves (gamma / (beta h)) [1/s]
   ConstraintSolver constraints;  // inextensible: the constraints' tridiagonal system
   // Constants of the model and the options, computed once:
   Eigen::VectorXd least_inertia;  // explicit: m_j + min(m^x_j, m^y_j), station j's least

@@ -69,9 +69,8 @@ bool AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h
   const int j0 = m.first_free(), j1 = m.last_free();
   const double t1 = d.state.t + h;
   const double ka = (1.0 - c.am) / ((1.0 - c.af) * c.beta * h * h);  // d a_{n+1} / d x_{n+1}
-  const double kv = c.gamma / (c.beta * h);                          // d v_{n+1} / d x_{n+1}
+  const double kv = c.VelocityPerPosition(h);                        // d v_{n+1} / d x_{n+1}
   ++d.stats.newton_iterations;
-  w.velocity_per_position = kv;
   Kinematics(m, d, c, h, w.x);
   ComputeGeometry(m, d.water, t1, w.x, ws.geometry);
   ComputeTensions(m, ws.geometry, w.v, ws.tension);
@@ -164,7 +163,8 @@ namespace {
 // vanishes (the force is linear in the step there: K l_j + C_j kv per metre), inside the
 // zone, where the next iteration sees the stick tangent. Where the answer is sliding the
 // other way, the iterations get there from the zone as from any sticking state.
-Vec FrictionStep(const Model& m, const Scratch& w, const LinkGeometry& g, int j, const Vec& dx) {
+Vec FrictionStep(const Model& m, const Scratch& w, const LinkGeometry& g, double kv, int j,
+                 const Vec& dx) {
   const SeabedSpec& bed = m.env.seabed;
   const double p = bed.y - w.x(kVertical, j);  // penetration [m]
   if (!(p > 0) || g.stick.cols() == 0) return dx;
@@ -175,7 +175,7 @@ Vec FrictionStep(const Model& m, const Scratch& w, const LinkGeometry& g, int j,
   if (!(size > limit)) return dx;  // sticking
   const Vec u = trial / size;      // the slide's force direction
   const Vec step = HorizontalPart(dx);
-  const double per_metre = K + C * w.velocity_per_position;  // [N/m]
+  const double per_metre = K + C * kv;  // [N/m]
   const Vec after = trial - per_metre * step;
   if (!(after.dot(u) < 0) || !(after.norm() > limit)) return dx;  // no reversal past the zone
   const double along = per_metre * step.dot(u);  // > size here
@@ -184,7 +184,7 @@ Vec FrictionStep(const Model& m, const Scratch& w, const LinkGeometry& g, int j,
 
 }  // namespace
 
-double ApplyCorrection(const Model& m, Data& d, bool* contact_changed, bool* cut) {
+double ApplyCorrection(const Model& m, Data& d, double kv, bool* contact_changed, bool* cut) {
   Scratch& w = d.scratch;
   const BlockTridiagonal& system = w.system;
   const SeabedSpec& bed = m.env.seabed;
@@ -196,7 +196,7 @@ double ApplyCorrection(const Model& m, Data& d, bool* contact_changed, bool* cut
     const bool above_bed = bed.present && w.x(1, j) >= bed.y;
     const Vec& dx = system.rhs[j - j0];
     if (sticks && !above_bed) {
-      const Vec step = FrictionStep(m, w, d.forces.geometry, j, dx);
+      const Vec step = FrictionStep(m, w, d.forces.geometry, kv, j, dx);
       shortened = shortened || step != dx;
       w.x.col(j) += step;
     } else {

@@ -114,16 +114,18 @@ constexpr int kSnappingPasses = 1;
 // (NaN if one is). The length of each station's correction, not its largest coordinate: a
 // turned scene's Newton stops at the same iteration as the scene's own, where the largest
 // coordinate stopped them an iteration apart now and then, and a sticking station on the
-// seabed kept the difference (rotational_invariance_test: 1.2e-5 of the peak tension, now
-// 2e-11). It is at least the largest coordinate, so the tolerance holds in every direction.
+// seabed kept the difference (rotational_invariance_test: 3e-7 of the peak tension, 1.2e-5
+// once sliding stations' steps were cut in their stick zones; 2e-11 now). It is at least the
+// largest coordinate, so the tolerance holds in every direction.
 double CorrectionSize(const Model& m, const Data& d);
 // Adds the solution in d.scratch.system.rhs to the trial positions; returns its size as
-// CorrectionSize [m] (not finite if the solution is not). `contact_changed` (optional): set
-// when a station crossed the seabed's level (the matrix's contact then no longer holds).
-// `cut` (optional): set when a grounded station's step along the bed was cut short in its
-// stick zone (implicit_stages.cpp, FrictionStep): the iterate did not move by the solution
-// then, which says nothing of how near it is (NewtonConvergence::Cut).
-double ApplyCorrection(const Model& m, Data& d, bool* contact_changed = nullptr,
+// CorrectionSize [m] (not finite if the solution is not). kv: the step's d v / d x [1/s]
+// (GeneralizedAlpha::VelocityPerPosition). `contact_changed` (optional): set when a station
+// crossed the seabed's level (the matrix's contact then no longer holds). `cut` (optional):
+// set when a grounded station's step along the bed was cut short in its stick zone
+// (implicit_stages.cpp, FrictionStep): the iterate did not move by the solution then, which
+// says nothing of how near it is (NewtonConvergence::Cut).
+double ApplyCorrection(const Model& m, Data& d, double kv, bool* contact_changed = nullptr,
                        bool* cut = nullptr);
 // The converged trial step: its velocities, accelerations and tensions.
 void FinishSolve(const Model& m, Data& d, const GeneralizedAlpha& c, double h);

@@ -43,6 +43,7 @@ struct LineStepper {
     NewtonConvergence newton(d.scratch.newton_tolerance);
     BlockTridiagonal& system = d.scratch.system;
     const bool keep = KeepsNewtonMatrix(m);
+    const double kv = c.VelocityPerPosition(h);  // d v / d x [1/s]
     bool fresh = true;  // this iteration's matrix is assembled anew (else the last one's factors)
     for (int it = 1; it <= kMaxNewtonIterations; ++it) {
       const bool holds = AssembleNewton(m, d, c, h, fresh);
@@ -65,7 +66,7 @@ struct LineStepper {
         }
       }
       bool contact_changed = false, cut = false;
-      const double dx_max = ApplyCorrection(m, d, &contact_changed, &cut);
+      const double dx_max = ApplyCorrection(m, d, kv, &contact_changed, &cut);
       if (!std::isfinite(dx_max)) return false;
       if (cut) {
         newton.Cut();

@@ -22,6 +22,8 @@ void ImplicitStep(const Model& m, Data& d, const Inputs& in, double dt);
 // Generalized-alpha's coefficients for rho_inf (Chung & Hulbert 1993).
 struct GeneralizedAlpha {
   double am, af, beta, gamma;
+  // d v_{n+1} / d x_{n+1} of a step of h [s]: gamma / (beta h) [1/s].
+  double VelocityPerPosition(double h) const { return gamma / (beta * h); }
 };
 GeneralizedAlpha GeneralizedAlphaCoefficients(double rho_inf);
 

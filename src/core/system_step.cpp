@@ -153,7 +153,7 @@ void AssembleBody(const SystemModel& sys, SystemData& sd, int k, const Generaliz
   const BodySpec& body = sys.bodies[sys.free_bodies[k]];
   BodyKinematics(b, c, h);
   const double ka = (1.0 - c.am) / ((1.0 - c.af) * c.beta * h * h);
-  const double kv = c.gamma / (c.beta * h);
+  const double kv = c.VelocityPerPosition(h);
   const Mat6 M = BodyMassMatrix(body, b.tq);
   const Vec6 Q = OwnLoad(sys, body, b.tq);
   // The water at its reference point at the step's end (the lines' water of this step).
@@ -295,6 +295,7 @@ struct SystemStepper {
     for (BodyMotion& b : sd.bodies) b.tq = b.q + h * b.v + 0.5 * h * h * b.abar;
     SyncCoupled(sys, sd, false);
     const int body0 = kDim * sys.shared_count();
+    const double kv = c.VelocityPerPosition(h);  // d v / d x [1/s]
     // The corrections measured against their tolerances (a line's, a body's): converged at 1.
     NewtonConvergence newton(1.0);
     // Per line: whether this iteration's matrix is assembled anew (else its last one's factors
@@ -341,7 +342,7 @@ struct SystemStepper {
       bool cut = false;       // a line's correction not applied whole
       for (int i = 0; i < lines(); ++i) {
         bool changed = false, line_cut = false;
-        const double dx = ApplyCorrection(sys.lines[i], sd.lines[i], &changed, &line_cut);
+        const double dx = ApplyCorrection(sys.lines[i], sd.lines[i], kv, &changed, &line_cut);
         cut = cut || line_cut;
         if (!std::isfinite(dx)) return false;
         const double size = dx / sd.lines[i].scratch.newton_tolerance;

@@ -167,6 +167,20 @@ TEST(RotationalInvariance, DefaultAdaptiveStep) {
   for (double phi : {37.0, -123.4}) ExpectTurned(afloat, phi, 1e-3, 1e-6);
 }
 
+// The default step on the bed with friction, where Newton's steps are cut in the stick zones
+// of sliding stations (implicit_stages.cpp, FrictionStep). The accept/reject decisions take
+// another path in the turned run (as afloat), and the sticking and sliding stations carry the
+// difference on: measured 0.98 % and 1.14 % of the peak tension, 0.6 and 1.5 mm (0.62 % and
+// 1.03 % before Newton's steps were cut). That is the scene's own spread, not an axis
+// preferred: the same scene (unturned, `cablefilm run`) at a hundredth and a thousandth of the
+// default tolerance differs by 3.5 % of the peak in tension_max, the default from the latter by
+// 1.9 %. Bounds: 3 % of the peak (a friction that preferred an axis would be off by a part in
+// ten) and 1e-5 of the reach (3 mm) for the positions.
+TEST(RotationalInvariance, DefaultAdaptiveStepOnTheSeabedWithFriction) {
+  const Case grounded{"implicit", 0, true, 20.0};
+  for (double phi : {37.0, -123.4}) ExpectTurned(grounded, phi, 3e-2, 1e-5);
+}
+
 TEST(RotationalInvariance, OnTheSeabedWithFriction) {
   const Case grounded{"implicit", 0.05, true, 20.0};
   for (double phi : {37.0, -123.4}) ExpectTurned(grounded, phi, 1e-9);

@@ -189,7 +189,7 @@ TEST(StickSlipFriction, NewtonStepThatReversesTheSlideStopsInTheStickZone) {
   const double N = m.line.net_weight[j];  // the bed's reaction at rest [N]
   const double h = 0.05;                  // [s]
   const GeneralizedAlpha c = GeneralizedAlphaCoefficients(0.5);
-  const double kv = c.gamma / (c.beta * h);  // [1/s]
+  const double kv = c.VelocityPerPosition(h);  // [1/s]
   const double s0 = 10 * kMu * N / (K + C * kv);  // [m]
   for (const double fraction : {2.0, 0.5}) {
     const Inputs in = SceneInputs(m);
@@ -201,7 +201,7 @@ TEST(StickSlipFriction, NewtonStepThatReversesTheSlideStopsInTheStickZone) {
     d.scratch.system.rhs[j - m.first_free()] = Vec(-fraction * s0, 0, 0);
     const Vec x0 = d.scratch.x.col(j), v0 = HorizontalPart(d.scratch.v.col(j));
     bool cut = false;
-    const double size = ApplyCorrection(m, d, nullptr, &cut);
+    const double size = ApplyCorrection(m, d, kv, nullptr, &cut);
     EXPECT_DOUBLE_EQ(size, fraction * s0);  // the solution's size, whatever was applied
     const Vec step = d.scratch.x.col(j) - x0;
     const Vec stick = HorizontalPart(d.scratch.x.col(j)) - d.forces.geometry.friction_anchor.col(j);
