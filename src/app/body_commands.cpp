@@ -53,8 +53,9 @@ struct Equilibrium {
 
 void FindEquilibrium(const SceneDef& scene, const SystemModel& sys, Equilibrium& e) {
   InstallSignalHandlers();
-  RelaxationProgress progress;
-  e.states = SystemStatics(scene, sys, &e.report, &g_signal, progress.fraction());
+  StaticsProgress progress;
+  e.states = SystemStatics(scene, sys, &e.report, &g_signal, progress.relaxing(),
+                           progress.solving());
   e.options.cancel = &g_signal;
   e.options.guess = &e.states;
   e.options.guess_poses = e.report.body_poses.data();

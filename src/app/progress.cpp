@@ -14,11 +14,22 @@ ProgressLine::ProgressLine(std::string label, double total, std::string unit)
 
 ProgressLine::~ProgressLine() { Finish(); }
 
-RelaxationProgress::RelaxationProgress()
-    : line_("static equilibrium: the system's own motion (at most " +
-                std::to_string(static_cast<int>(kLongestRelaxation)) + " s, " +
-                std::to_string(kMostRelaxationSteps) + " steps)",
-            1, "") {}
+std::function<void(double)> StaticsProgress::relaxing() {
+  return [this](double f) {
+    if (newton_) newton_->Finish();  // Newton gave way to the motion
+    Show(motion_,
+         "the system's own motion (at most " +
+             std::to_string(static_cast<int>(kLongestRelaxation)) + " s, " +
+             std::to_string(kMostRelaxationSteps) + " steps)",
+         f);
+  };
+}
+
+void StaticsProgress::Show(std::optional<ProgressLine>& line, const std::string& what,
+                           double fraction) {
+  if (!line) line.emplace("static equilibrium: " + what, 1, "");
+  line->UpdateBound(fraction);
+}
 
 void ProgressLine::Update(double done) {
   char amount[96];

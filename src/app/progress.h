@@ -3,6 +3,7 @@
 // second with the fraction done and an estimate of the time left; silent when not on one.
 #include <chrono>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace cablefilm {
@@ -26,18 +27,20 @@ class ProgressLine {
   std::chrono::steady_clock::time_point start_, last_;
 };
 
-// The progress line of a system's statics while their relaxation moves it
-// (core/system_relaxation.h), against its bound (the time left is at most what it shows):
-// `fraction` is what run/system_run.h's `relaxing` takes.
-class RelaxationProgress {
+// The progress lines of a system's statics, against their bounds (the time left is at most
+// what they show): while Newton balances the shared points and bodies, then while the
+// relaxation moves the system (core/system_relaxation.h). `solving` and `relaxing` are what
+// run/system_run.h's SystemStatics takes.
+class StaticsProgress {
  public:
-  RelaxationProgress();
-  std::function<void(double)> fraction() {
-    return [this](double f) { line_.UpdateBound(f); };
+  std::function<void(double)> solving() {
+    return [this](double f) { Show(newton_, "Newton on the shared points and bodies", f); };
   }
+  std::function<void(double)> relaxing();
 
  private:
-  ProgressLine line_;
+  void Show(std::optional<ProgressLine>& line, const std::string& what, double fraction);
+  std::optional<ProgressLine> newton_, motion_;
 };
 
 }  // namespace cablefilm

@@ -29,8 +29,8 @@ namespace {
 // The system's statics as `run` finds them, a progress line shown while the relaxation's
 // motion goes on (it can take seconds: core/system_relaxation.h).
 SystemRun PrepareWithProgress(const SceneDef& scene, const SystemModel& sys) {
-  RelaxationProgress progress;
-  return PrepareSystemRun(scene, sys, &g_signal, progress.fraction());
+  StaticsProgress progress;
+  return PrepareSystemRun(scene, sys, &g_signal, progress.relaxing(), progress.solving());
 }
 
 const char* KindName(PointKind kind) {

@@ -90,7 +90,8 @@ class HeldLines {
  public:
   HeldLines(const SystemModel& sys, const Unknowns& u, const SystemEquilibriumOptions& options)
       : sys_(sys), u_(u), models_(sys.lines), states_(sys.lines.size()),
-        reports_(sys.lines.size()) {
+        reports_(sys.lines.size()), most_work_(options.max_line_work),
+        work_(options.line_work ? options.line_work : &own_work_) {
     line_options_.cancel = options.cancel;
   }
 
@@ -113,8 +114,18 @@ class HeldLines {
       } catch (const Error& e) {
         throw Error("line \"" + sys_.line_names[i] + "\": no static equilibrium: " + e.what());
       }
+      if (*work_ > most_work_) {
+        std::ostringstream os;
+        os << "the shared points and free bodies of the system were not balanced within "
+           << most_work_ << " station-iterations of their lines' equilibria (the lines' "
+           << "Newton iterations times their stations; line \"" << sys_.line_names[i]
+           << "\" has " << models_[i].stations() << " stations): a line cut into fewer links "
+           << "solves sooner";
+        throw Error(os.str());
+      }
     }
   }
+  double work() const { return *work_; }
 
   // The out-of-balance load of each group at X: the net force on a shared point [N], the net
   // force and moment on a free body [N, N m about its reference point].
@@ -164,20 +175,34 @@ class HeldLines {
 
   // Line i's equilibrium: from its last one moved with its ends (warm), or when there is none
   // or that fails, from the first guess of a single line.
+  // Each solve's work is counted, a failed one's too (its report is written before it throws).
   State SolveHeld(int i) {
     if (states_[i].x.size() != 0) {
       line_options_.warm_start = true;
+      reports_[i] = EquilibriumReport{};
       try {
-        return SolveEquilibrium(models_[i], MovedGuess(i), &reports_[i], line_options_);
+        State s = SolveEquilibrium(models_[i], MovedGuess(i), &reports_[i], line_options_);
+        Count(i);
+        return s;
       } catch (const CancelledError&) {
         throw;
       } catch (const Error&) {
-        // From the first guess instead.
+        Count(i);  // and from the first guess instead
       }
     }
     line_options_.warm_start = false;
-    return SolveEquilibrium(models_[i], EquilibriumGuess(models_[i]), &reports_[i], line_options_);
+    reports_[i] = EquilibriumReport{};
+    try {
+      State s =
+          SolveEquilibrium(models_[i], EquilibriumGuess(models_[i]), &reports_[i], line_options_);
+      Count(i);
+      return s;
+    } catch (const Error&) {
+      Count(i);
+      throw;
+    }
   }
+  void Count(int i) { *work_ += double(reports_[i].iterations) * models_[i].stations(); }
 
   // The last equilibrium of line i with its held ends moved to their new positions, the
   // stations between shifted in proportion to their arc length.
@@ -201,6 +226,9 @@ class HeldLines {
   std::vector<State> states_;
   std::vector<EquilibriumReport> reports_;
   EquilibriumOptions line_options_;
+  double most_work_;  // station-iterations (SystemEquilibriumOptions::max_line_work)
+  double own_work_ = 0;
+  double* work_;      // where they are added up
 };
 
 }  // namespace
@@ -344,6 +372,9 @@ std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibr
       throw Error(os.str());
     }
     ThrowIfCancelled(options.cancel, "the system's static equilibrium");
+    if (options.solving)
+      options.solving(std::min(1.0, std::max(double(r.iterations) / options.max_iterations,
+                                             lines.work() / options.max_line_work)));
     // The least-squares step of least size: a direction nothing stiffens (a body's yaw on one
     // mooring point, its turns when its lines meet at its reference) stays where it is.
     Eigen::VectorXd dX = J.completeOrthogonalDecomposition().solve(-R);
@@ -380,6 +411,7 @@ std::vector<State> SolveSystemEquilibrium(const SystemModel& sys, SystemEquilibr
     R = Rt;
   }
   r.residual = norm(R);
+  r.line_work = lines.work();
   r.lines = lines.reports();
   r.body_poses = sys.body_poses;
   for (const Unknowns::Group& g : u.groups)

@@ -21,16 +21,28 @@ struct SystemEquilibriumReport {
   double residual = 0;        // the largest out-of-balance force on a shared point or body at
                               // the end [N] (a body's moment divided by its size [m])
   double force_scale = 0;     // the load it is measured against: the lines' (StaticForceScale)
+  double line_work = 0;       // the held lines' solves, in station-iterations
   std::vector<EquilibriumReport> lines;  // each line's last solve
   std::vector<Vec6> body_poses;          // each body's pose (a free body's as solved)
   double relaxed = 0;  // s of the system's damped motion it took to get near enough for Newton
                        // (system_relaxation.h); 0: none, from the scene's first guess
 };
 
+// The held lines' solves at most, in station-iterations (each solve's Newton iterations times
+// its line's stations, summed): a system that needs more is not near its equilibrium, and the
+// statics should give way (to the relaxation: system_relaxation.h) in seconds, not minutes
+// (some 10 s at 0.5 us a station-iteration). The shipped scenes and MoorDyn's own inputs
+// use 2e2 to 8e5; a fuzzed file's tether of 100 000 links used 5e6 an iteration and ran 100.
+constexpr double kMostStaticLineWork = 2e7;
+
 struct SystemEquilibriumOptions {
   int max_iterations = 100;   // Newton iterations on the shared points
   int stall_iterations = 0;   // given up when so many in a row gain less than 1 % (0: never)
   double tolerance = 1e-9;    // converged when residual <= tolerance * force_scale
+  double max_line_work = kMostStaticLineWork;  // station-iterations, above
+  // Where the held lines' work is added up, across calls that share one bound (the
+  // relaxation's tries); null: this call's own, from 0.
+  double* line_work = nullptr;
   const CancelFlag* cancel = nullptr;
   // A state of the lines to start from (a line each: the shared points where their end
   // stations are, the lines' shapes their warm starts) and every body's pose [m, rad], in
@@ -40,6 +52,9 @@ struct SystemEquilibriumOptions {
   // Called as the relaxation's motion goes on (system_relaxation.h), with the fraction of its
   // bound used so far (its seconds or its steps, whichever is nearer theirs); none: not called.
   std::function<void(double)> relaxing;
+  // Called at each Newton iteration with the fraction of its bounds used so far (its
+  // iterations or its work, whichever is nearer); none: not called.
+  std::function<void(double)> solving;
 };
 
 // The lines held at the first guess the statics start from (each in its own equilibrium with

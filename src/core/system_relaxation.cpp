@@ -42,6 +42,9 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
                                                   const SystemEquilibriumOptions& options) {
   SystemEquilibriumOptions first_try = options;
   first_try.stall_iterations = kStallIterations;
+  // The tries from the motion's states share one bound on their lines' work, the first try's
+  // own besides: the relaxation ends when they have used it.
+  double tries_work = 0;
   try {
     return SolveSystemEquilibrium(sys, report, first_try);
   } catch (const CancelledError&) {
@@ -75,6 +78,8 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
           poses[sys.free_bodies[k]] = sd.bodies[k].q;
         SystemEquilibriumOptions from_here = options;
         from_here.stall_iterations = kStallIterations;
+        from_here.line_work = &tries_work;
+        from_here.solving = nullptr;  // the relaxation's own progress goes on meanwhile
         if ((span + 1) * kSpan <= kLongestRelaxation + 1e-9)
           from_here.max_iterations = std::min(options.max_iterations, kNearIterations);
         from_here.guess = &states;
@@ -86,6 +91,7 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
         } catch (const CancelledError&) {
           throw;
         } catch (const Error&) {
+          if (tries_work > options.max_line_work) break;  // no more tries
           // More motion, and again.
         }
       }

@@ -57,18 +57,21 @@ void SystemRowStepper::Next() {
 
 std::vector<State> SystemStatics(const SceneDef& scene, const SystemModel& sys,
                                  SystemEquilibriumReport* report, const CancelFlag* stop,
-                                 const std::function<void(double)>& relaxing) {
+                                 const std::function<void(double)>& relaxing,
+                                 const std::function<void(double)>& solving) {
   if (sys.lines.empty()) throw Error(scene.path + ": a system needs at least one [[line]]");
   Inputs in = SceneInputs(sys.lines[0]);
   in.stop = stop;
   SystemEquilibriumOptions options;
   options.cancel = stop;
   options.relaxing = relaxing;
+  options.solving = solving;
   return SolveSystemEquilibriumRelaxing(sys, in, SystemGrid(scene, sys).options, report, options);
 }
 
 SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop,
-                           const std::function<void(double)>& relaxing) {
+                           const std::function<void(double)>& relaxing,
+                           const std::function<void(double)>& solving) {
   SystemRun run;
   run.sys = std::move(sys);
   if (run.sys.lines.empty()) throw Error(scene.path + ": a system needs at least one [[line]]");
@@ -78,7 +81,7 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
   SystemEquilibriumOptions options;
   options.cancel = stop;
   const auto t0 = std::chrono::steady_clock::now();
-  std::vector<State> states = SystemStatics(scene, run.sys, &run.equilibrium, stop, relaxing);
+  std::vector<State> states = SystemStatics(scene, run.sys, &run.equilibrium, stop, relaxing, solving);
   // A free body given an initial offset starts there, its lines in equilibrium with it held
   // (a decay test); the others at their equilibrium.
   SystemModel held = run.sys;

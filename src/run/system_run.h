@@ -73,17 +73,20 @@ class SystemRowStepper {
 
 // The system's static equilibrium as its run starts from it (each line's state; the bodies'
 // poses in `report`): Newton's, or where Newton fails from the scene's positions, the
-// relaxation's (core/system_relaxation.h) with the run's step options, `relaxing` told the
-// fraction of its bound it has used as it goes (SystemEquilibriumOptions::relaxing). Throws Error when the system has none, CancelledError when
-// `stop` is raised.
+// relaxation's (core/system_relaxation.h) with the run's step options; `solving` and
+// `relaxing` told the fraction of their bounds used as Newton and the relaxation go on
+// (SystemEquilibriumOptions::solving, ::relaxing). Throws Error when the system has none,
+// CancelledError when `stop` is raised.
 std::vector<State> SystemStatics(const SceneDef& scene, const SystemModel& sys,
                                  SystemEquilibriumReport* report, const CancelFlag* stop,
-                                 const std::function<void(double)>& relaxing = {});
+                                 const std::function<void(double)>& relaxing = {},
+                                 const std::function<void(double)>& solving = {});
 
 // Throws Error when the system has no equilibrium, CancelledError when `stop` is raised.
-// `relaxing`: as SystemStatics'.
+// `relaxing`, `solving`: as SystemStatics'.
 SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop,
-                           const std::function<void(double)>& relaxing = {});
+                           const std::function<void(double)>& relaxing = {},
+                           const std::function<void(double)>& solving = {});
 
 // Steps a copy of run.initial through the grid: every row to line i's `line_sinks[i]`, to
 // `sinks`, and to the run's summaries.

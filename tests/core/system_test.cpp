@@ -326,5 +326,48 @@ TEST(SystemEquilibrium, SpreadMooringOffsetConvergesToTheExactCatenaries) {
   EXPECT_LT(error[1], 1e-2);
 }
 
+// The held lines' work is counted (each line solve's Newton iterations times its stations)
+// and bounded: a system whose statics would take more gives up with a message that says so,
+// in place of running for minutes (a fuzzed file's 100 000-link tether did).
+TEST(SystemEquilibrium, HeldLinesWorkIsCountedAndBounded) {
+  const Spread spread;
+  const SystemModel sys = spread.System(35);
+  std::vector<double> fractions;
+  SystemEquilibriumOptions options;
+  options.solving = [&](double f) { fractions.push_back(f); };
+  SystemEquilibriumReport report;
+  SolveSystemEquilibrium(sys, &report, options);
+  ASSERT_GT(report.iterations, 1);
+  // At least every line's first solve (three legs of 36 stations, an iteration each) and the
+  // finite differences' re-solves; far under the bound.
+  EXPECT_GE(report.line_work, 3 * 36.0);
+  EXPECT_LT(report.line_work, 1e-3 * kMostStaticLineWork);
+  // Progress at every iteration, growing, within (0, 1].
+  ASSERT_EQ(static_cast<int>(fractions.size()), report.iterations);
+  for (std::size_t k = 0; k < fractions.size(); ++k) {
+    EXPECT_GT(fractions[k], 0.0);
+    EXPECT_LE(fractions[k], 1.0);
+    if (k > 0) {
+      EXPECT_GE(fractions[k], fractions[k - 1]);
+    }
+  }
+  // The same statics with half that work allowed: an Error naming the bound, the work done
+  // then just past it (the solve that crossed it is the last).
+  options.max_line_work = 0.5 * report.line_work;
+  double used = 0;
+  options.line_work = &used;
+  try {
+    SolveSystemEquilibrium(sys, nullptr, options);
+    FAIL() << "converged within half the work it needed";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("station-iterations"), std::string::npos) << e.what();
+  }
+  EXPECT_GT(used, options.max_line_work);
+  EXPECT_LE(used, options.max_line_work + 0.5 * report.line_work);
+  // A shared count goes on from where it stands: at the bound already, the first solve ends it.
+  options.max_line_work = used;
+  EXPECT_THROW(SolveSystemEquilibrium(sys, nullptr, options), Error);
+}
+
 }  // namespace
 }  // namespace cablefilm
