@@ -90,7 +90,8 @@ class HeldLines {
  public:
   HeldLines(const SystemModel& sys, const Unknowns& u, const SystemEquilibriumOptions& options)
       : sys_(sys), u_(u), models_(sys.lines), states_(sys.lines.size()),
-        reports_(sys.lines.size()), most_work_(options.max_line_work),
+        reports_(sys.lines.size()), line_work_(sys.lines.size(), 0.0),
+        most_work_(options.max_line_work),
         work_(options.line_work ? options.line_work : &own_work_) {
     line_options_.cancel = options.cancel;
   }
@@ -115,12 +116,14 @@ class HeldLines {
         throw Error("line \"" + sys_.line_names[i] + "\": no static equilibrium: " + e.what());
       }
       if (*work_ > most_work_) {
+        const int most = static_cast<int>(std::max_element(line_work_.begin(), line_work_.end()) -
+                                          line_work_.begin());
         std::ostringstream os;
         os << "the shared points and free bodies of the system were not balanced within "
-           << most_work_ << " station-iterations of their lines' equilibria (the lines' "
-           << "Newton iterations times their stations; line \"" << sys_.line_names[i]
-           << "\" has " << models_[i].stations() << " stations): a line cut into fewer links "
-           << "solves sooner";
+           << most_work_ << " station-iterations of their lines' equilibria (each solve's "
+           << "Newton iterations times its line's stations); line \"" << sys_.line_names[most]
+           << "\" (" << models_[most].stations() << " stations) took the most, "
+           << line_work_[most] / models_[most].stations() << " iterations in all";
         throw Error(os.str());
       }
     }
@@ -202,7 +205,11 @@ class HeldLines {
       throw;
     }
   }
-  void Count(int i) { *work_ += double(reports_[i].iterations) * models_[i].stations(); }
+  void Count(int i) {
+    const double work = double(reports_[i].iterations) * models_[i].stations();
+    *work_ += work;
+    line_work_[i] += work;
+  }
 
   // The last equilibrium of line i with its held ends moved to their new positions, the
   // stations between shifted in proportion to their arc length.
@@ -226,6 +233,7 @@ class HeldLines {
   std::vector<State> states_;
   std::vector<EquilibriumReport> reports_;
   EquilibriumOptions line_options_;
+  std::vector<double> line_work_;  // each line's solves in this call [station-iterations]
   double most_work_;  // station-iterations (SystemEquilibriumOptions::max_line_work)
   double own_work_ = 0;
   double* work_;      // where they are added up
