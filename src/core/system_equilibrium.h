@@ -32,7 +32,8 @@ struct SystemEquilibriumReport {
 // its line's stations, summed): a system that needs more is not near its equilibrium, and the
 // statics should give way (to the relaxation: system_relaxation.h) in seconds, not minutes
 // (some 10 s at 0.5 us a station-iteration). The shipped scenes and MoorDyn's own inputs
-// use 2e2 to 8e5; a fuzzed file's tether of 100 000 links used 5e6 an iteration and ran 100.
+// use 2e2 to 8e5; a fuzzed file's tether of 100 000 links used 6.8e6 before Newton's first
+// step (its first guess and the first Jacobian's differences) and ran for minutes.
 constexpr double kMostStaticLineWork = 2e7;
 
 struct SystemEquilibriumOptions {

@@ -352,7 +352,7 @@ TEST(SystemEquilibrium, HeldLinesWorkIsCountedAndBounded) {
     }
   }
   // The same statics with half that work allowed: an Error naming the bound, the work done
-  // then just past it (the solve that crossed it is the last).
+  // then past it by less than half the run's work (the solve that crossed it is the last).
   options.max_line_work = 0.5 * report.line_work;
   double used = 0;
   options.line_work = &used;
