@@ -4,10 +4,12 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <memory>
 #include <thread>
 
 #include "live/http_server.h"
 #include "live/live_session.h"
+#include "core/cancel.h"
 #include "core/error.h"
 #include "scene/scene_loader.h"
 
@@ -39,7 +41,16 @@ int LiveCommand(const std::string& scene_path, const LiveCommandOptions& o) {
   std::signal(SIGINT, OnLiveSignal);
   std::signal(SIGTERM, OnLiveSignal);
   std::signal(SIGPIPE, SIG_IGN);  // a viewer that hangs up is an error of its write, not a kill
-  LiveSession session(scene, lo);
+  // Ctrl-C while the statics run (a system's can take seconds) stops them at once.
+  lo.stop = &g_live_signal;
+  std::unique_ptr<LiveSession> started;
+  try {
+    started = std::make_unique<LiveSession>(scene, lo);
+  } catch (const CancelledError& e) {
+    std::fprintf(stderr, "cablefilm: %s\n", e.what());
+    return 128 + g_live_signal.load();
+  }
+  LiveSession& session = *started;
   ServerOptions so;
   so.bind = o.bind;
   so.port = o.port;

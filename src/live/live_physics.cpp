@@ -14,9 +14,9 @@ double LivePhysics::wave_heading_now() const {
   return inputs().wave_heading.ValueAt(t()) / kDegree;
 }
 
-std::unique_ptr<LivePhysics> MakeLivePhysics(const SceneDef& scene) {
-  if (scene.is_system()) return std::make_unique<LiveSystemSimulation>(scene);
-  return std::make_unique<LiveSimulation>(scene);
+std::unique_ptr<LivePhysics> MakeLivePhysics(const SceneDef& scene, const CancelFlag* stop) {
+  if (scene.is_system()) return std::make_unique<LiveSystemSimulation>(scene, stop);
+  return std::make_unique<LiveSimulation>(scene, stop);
 }
 
 }  // namespace cablefilm

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "core/cancel.h"
 #include "core/inputs.h"
 #include "core/model.h"
 #include "core/waves.h"
@@ -88,7 +89,9 @@ class LivePhysics {
   virtual void WriteTimeseriesRow(std::FILE* file) = 0;
 };
 
-// A line's (LiveSimulation) or a system's (LiveSystemSimulation), as the scene is. Throws Error.
-std::unique_ptr<LivePhysics> MakeLivePhysics(const SceneDef& scene);
+// A line's (LiveSimulation) or a system's (LiveSystemSimulation), as the scene is. Throws Error,
+// CancelledError when `stop` is raised while the statics run.
+std::unique_ptr<LivePhysics> MakeLivePhysics(const SceneDef& scene,
+                                             const CancelFlag* stop = nullptr);
 
 }  // namespace cablefilm

@@ -84,7 +84,7 @@ const char* EndKindName(const EndMotion& m) {
 LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
     : scene_(scene),
       options_(options),
-      sim_(MakeLivePhysics(scene)),
+      sim_(MakeLivePhysics(scene, options.stop)),
       view_(MakeLiveScene(scene, *sim_, options.view)),
       speed_(options.speed),
       colormap_(options.colormap.empty() ? scene.film.colormap : options.colormap),

@@ -41,6 +41,9 @@ struct LiveOptions {
   std::string out_dir;             // where recordings go (created when the first one starts)
   std::string shader_dir;          // empty: the built-in shaders
   int jpeg_quality = 85;
+  // Polled by the statics while the session starts (a system's can take seconds): raised,
+  // the constructor throws CancelledError. Null: not polled.
+  const CancelFlag* stop = nullptr;
 };
 
 // One frame as sent: a 24-byte header (frame number uint64, t float64, control sequence number

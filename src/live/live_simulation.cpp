@@ -22,13 +22,14 @@ const EndMotion* DrivenEnd(const Model& m) {
 
 }  // namespace
 
-LiveSimulation::LiveSimulation(const SceneDef& scene) : model_(BuildModel(scene)) {
+LiveSimulation::LiveSimulation(const SceneDef& scene, const CancelFlag* stop)
+    : model_(BuildModel(scene)) {
   // The scene's own scheme and step rule; the output interval only bounds the implicit step.
   grid_ = ChooseTimeGrid(model_, scene.simulation, 1.0 / 30);
   if (!grid_.automatic) fixed_step_ = scene.simulation.time_step;
   scene_inputs_ = SceneInputs(model_);
   EquilibriumReport report;
-  const State initial = MakeInitialState(scene, model_, &report);
+  const State initial = MakeInitialState(scene, model_, &report, stop);
   if (const EndMotion* e = DrivenEnd(model_)) base_period_ = e->period();
   // The wave's phase is kept where the driven end is (else mid-way between the ends).
   const int last = model_.line.links;

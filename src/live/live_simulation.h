@@ -21,8 +21,9 @@ namespace cablefilm {
 
 class LiveSimulation : public LivePhysics {
  public:
-  // Builds the model and its static equilibrium (the initial state). Throws Error.
-  explicit LiveSimulation(const SceneDef& scene);
+  // Builds the model and its static equilibrium (the initial state). Throws Error,
+  // CancelledError when `stop` is raised while the statics run.
+  explicit LiveSimulation(const SceneDef& scene, const CancelFlag* stop = nullptr);
 
   // Back to the scene's initial state and sea.
   void Restart() override;

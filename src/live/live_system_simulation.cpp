@@ -33,8 +33,8 @@ std::vector<int> CarriedPoints(const SystemModel& sys) {
 
 }  // namespace
 
-LiveSystemSimulation::LiveSystemSimulation(const SceneDef& scene)
-    : run_(PrepareSystemRun(scene, BuildSystem(scene), nullptr)), loads_(run_.sys) {
+LiveSystemSimulation::LiveSystemSimulation(const SceneDef& scene, const CancelFlag* stop)
+    : run_(PrepareSystemRun(scene, BuildSystem(scene), stop)), loads_(run_.sys) {
   SystemModel& sys = run_.sys;
   carried_ = CarriedPoints(sys);
   // The offset moves the carried points' line ends (and the points as the system keeps them);

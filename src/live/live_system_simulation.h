@@ -29,8 +29,9 @@ namespace cablefilm {
 class LiveSystemSimulation : public LivePhysics {
  public:
   // The system's equilibrium (its free bodies at their initial offsets, as a run starts), its
-  // vessel's points marked as carried. Throws Error.
-  explicit LiveSystemSimulation(const SceneDef& scene);
+  // vessel's points marked as carried. Throws Error, CancelledError when `stop` is raised
+  // while the statics run.
+  explicit LiveSystemSimulation(const SceneDef& scene, const CancelFlag* stop = nullptr);
 
   void Restart() override;
   // In the run's steps: as many as the grid's step (the scene's time_step, or with "auto" the

@@ -213,6 +213,24 @@ TEST(LiveSystemSimulation, RefusesWhatASystemDoesNotHave) {
   EXPECT_FALSE(spread.SetForceX(1e5));
 }
 
+// `cablefilm live` passes its Ctrl-C flag to the statics, which a system's (a relaxation, or a
+// fuzzed file's long line) can make last seconds: raised, the simulation is not built. A
+// line's and a system's alike; with the flag down, both are.
+TEST(LivePhysics, RaisedStopFlagStopsTheStatics) {
+  CancelFlag stop{0};
+  for (const char* name : {"floating_platform.toml", "polachek1963.toml"}) {
+    EXPECT_NE(MakeLivePhysics(Scene(name), &stop), nullptr) << name;
+    stop = 2;  // SIGINT
+    try {
+      MakeLivePhysics(Scene(name), &stop);
+      ADD_FAILURE() << name << ": built with the flag raised";
+    } catch (const CancelledError& e) {
+      EXPECT_NE(std::string(e.what()).find("equilibrium"), std::string::npos) << e.what();
+    }
+    stop = 0;
+  }
+}
+
 TEST(LiveSystemSimulation, AForcePushesAFreeBodyAlongIt) {
   // The floating platform (a free body on three legs, released 5 m and 3 degrees from its
   // equilibrium): with no control it repeats its run (the scene's force plus exactly zero);
