@@ -690,8 +690,7 @@ State SolveEquilibrium(const Model& m, const Points& guess,
        << " of them pseudo-transient steps): the largest out-of-balance force is "
        << report.residual << " N at station " << worst << " (tolerance " << tol
        << " N); the cable may have no steady state between its ends in this current (ends "
-          "further apart than it can stretch, or loads nothing can balance); "
-          "[initial] state = \"straight\" starts it from the chord instead";
+          "further apart than it can stretch, or loads nothing can balance)";
     throw Error(os.str());
   }
   State state;

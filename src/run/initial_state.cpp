@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/cancel.h"
 #include "core/error.h"
 #include "run/coarse_guess.h"
 #include "scene/scene_limits.h"
@@ -104,13 +105,24 @@ State MakeInitialState(const SceneDef& scene, const Model& m, EquilibriumReport*
   if (scene.initial == InitialStateKind::kEquilibrium) {
     if (m.line.law == LinkLaw::kInextensible) {
       s = SolveInextensibleEquilibrium(m, report, cancel);
-    } else if (const std::optional<Points> guess = CoarseEquilibriumGuess(scene, m, cancel)) {
-      // Near the answer, in the full current: Newton from it directly (the continuation from
-      // still water only if that fails).
-      options.warm_start = true;
-      s = SolveEquilibrium(m, *guess, report, options);
     } else {
-      s = SolveEquilibrium(m, report, options);
+      try {
+        if (const std::optional<Points> guess = CoarseEquilibriumGuess(scene, m, cancel)) {
+          // Near the answer, in the full current: Newton from it directly (the continuation
+          // from still water only if that fails).
+          options.warm_start = true;
+          s = SolveEquilibrium(m, *guess, report, options);
+        } else {
+          s = SolveEquilibrium(m, report, options);
+        }
+      } catch (const CancelledError&) {
+        throw;
+      } catch (const Error& e) {
+        // The way out a one-line scene has (a system of lines has none: it starts from its
+        // equilibrium, scene_parser.cpp).
+        throw Error(std::string(e.what()) +
+                    "; [initial] state = \"straight\" starts it from the chord instead");
+      }
     }
   } else {
     s.x = StraightChord(m);
