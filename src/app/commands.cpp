@@ -182,31 +182,12 @@ class ProgressSink : public RowSink {
   ProgressLine line_;
 };
 
-// Snaps unresolved in time make the peak depend on where the steps fall (SnapMonitor): the
-// run made again, in memory, with its step control four to ten times stricter, says by how
-// much (issue 21, item 4). Implicit with the automatic step: the tolerance / 10 (the local
-// error grows as h^3: steps about 2.2 times shorter), and the safety factor / 4 of its
-// explicit steps through snaps if it took any; a fixed step: / 4; the explicit "auto": its
-// safety factor / 4. Sets summary's refinement, refined_peak, refined_peak_change.
+// The snap check of a line's run (RefineStepControl): sets summary's refinement, refined_peak,
+// refined_peak_change.
 void CheckPeakUnderRefinement(const SceneDef& scene, const Model& m, RunSummary* s) {
   SceneDef refined = scene;
-  SimulationDef& sim = refined.simulation;
-  std::string how;
-  if (sim.time_step > 0) {
-    sim.time_step /= 4;
-    how = "time_step / 4";
-  } else if (s->tolerance > 0) {
-    sim.tolerance = s->tolerance / 10;
-    how = "tolerance / 10";
-    if (s->stats.snap_windows > 0) {  // and its explicit steps through snaps
-      sim.safety_factor /= 4;
-      how += ", safety_factor / 4";
-    }
-  } else {
-    sim.safety_factor /= 4;
-    how = "safety_factor / 4";
-  }
-  s->refinement = how;
+  const std::string how =
+      RefineStepControl(refined.simulation, s->tolerance, s->stats.snap_windows);
   RunSummary rs;
   try {  // the run's own files are written: a failure here is reported, not thrown
     Run r = PrepareRun(refined, m, "refined", &g_signal);
@@ -218,17 +199,7 @@ void CheckPeakUnderRefinement(const SceneDef& scene, const Model& m, RunSummary*
     rs.completed = false;
     rs.failure = e.what();
   }
-  if (!rs.completed) {
-    s->refinement += rs.failure.empty() ? " (interrupted)" : " (failed: " + rs.failure + ")";
-    std::printf("snap check: the refined run (%s) did not finish\n", s->refinement.c_str());
-    return;
-  }
-  s->refined_peak = rs.peak;
-  s->refined_peak_change = (rs.peak - s->peak) / s->peak;
-  std::printf("snap check: refined (%s: %ld steps against %ld), the peak is %.6g N at t = %.4g s, "
-              "%+.3g %% from %.6g N\n",
-              how.c_str(), rs.stats.steps, s->stats.steps, rs.peak, rs.peak_t,
-              100 * s->refined_peak_change, s->peak);
+  ReportRefinement(how, rs, s);
 }
 
 // One model of a scene simulated into result files: the equilibrium, the time series (with

@@ -1,6 +1,7 @@
 #include "app/run_support.h"
 
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -60,5 +61,35 @@ std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options, OutD
   return out_dir;
 }
 
+
+std::string RefineStepControl(SimulationDef& sim, double tolerance, long snap_windows) {
+  if (sim.time_step > 0) {
+    sim.time_step /= 4;
+    return "time_step / 4";
+  }
+  if (tolerance > 0) {
+    sim.tolerance = tolerance / 10;
+    if (snap_windows == 0) return "tolerance / 10";
+    sim.safety_factor /= 4;  // and its explicit steps through snaps
+    return "tolerance / 10, safety_factor / 4";
+  }
+  sim.safety_factor /= 4;
+  return "safety_factor / 4";
+}
+
+void ReportRefinement(const std::string& how, const RunSummary& refined, RunSummary* s) {
+  s->refinement = how;
+  if (!refined.completed) {
+    s->refinement += refined.failure.empty() ? " (interrupted)" : " (failed: " + refined.failure + ")";
+    std::printf("snap check: the refined run (%s) did not finish\n", s->refinement.c_str());
+    return;
+  }
+  s->refined_peak = refined.peak;
+  s->refined_peak_change = (refined.peak - s->peak) / s->peak;
+  std::printf("snap check: refined (%s: %ld steps against %ld), the peak is %.6g N at t = %.4g s, "
+              "%+.3g %% from %.6g N\n",
+              how.c_str(), refined.stats.steps, s->stats.steps, refined.peak, refined.peak_t,
+              100 * s->refined_peak_change, s->peak);
+}
 
 }  // namespace cablefilm

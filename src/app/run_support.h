@@ -1,12 +1,13 @@
 #pragma once
 // What the commands that run a scene share: the signals that stop a run cleanly, the output
-// folder, results.nc's attributes.
+// folder, results.nc's attributes, the stricter step control of the snap check.
 #include <atomic>
 #include <string>
 
 #include "app/run_options.h"
 #include "io/results_nc.h"
 #include "io/out_dir_lock.h"
+#include "run/run_summary.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {
@@ -26,5 +27,19 @@ NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model, long 
 // (`lock` holds it until the run ends: one run at a time in a folder), with the results of an
 // earlier run removed. Throws Error.
 std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options, OutDirLock& lock);
+
+// Snaps unresolved in time make the peak depend on where the steps fall (SnapMonitor): a run
+// and a system's run are made again, in memory, with their step control four to ten times
+// stricter, to say by how much (issue 21, item 4). Makes `sim` (the scene's, run with the
+// automatic tolerance `tolerance` [m], 0 for fixed steps, and `snap_windows` explicit windows
+// through snaps) that stricter one; returns how, for the report. Implicit with the automatic
+// step: the tolerance / 10 (the local error grows as h^3: steps about 2.2 times shorter), and
+// the safety factor / 4 of its explicit steps through snaps if it took any; a fixed step: / 4;
+// the explicit "auto": its safety factor / 4.
+std::string RefineStepControl(SimulationDef& sim, double tolerance, long snap_windows);
+// Sets s's refinement, refined_peak and refined_peak_change from the summary of the run made
+// again as `how` says (not completed: a failure or an interruption, said in s's refinement),
+// and prints them ("snap check: ...").
+void ReportRefinement(const std::string& how, const RunSummary& refined, RunSummary* s);
 
 }  // namespace cablefilm

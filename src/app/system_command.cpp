@@ -104,7 +104,8 @@ void PrintEquilibrium(const SystemModel& sys, const SystemEquilibriumReport& eq,
 // The system's rows on a progress line, stopped by a signal.
 class SystemProgress : public SystemRowSink {
  public:
-  explicit SystemProgress(double end) : line_("simulating (system)", end, "s") {}
+  explicit SystemProgress(double end, const std::string& what = "simulating (system)")
+      : line_(what, end, "s") {}
   bool Row(const SystemData& sd) override {
     line_.Update(sd.t);
     return g_signal == 0;
@@ -114,6 +115,27 @@ class SystemProgress : public SystemRowSink {
  private:
   ProgressLine line_;
 };
+
+// The snap check of a system's run (RefineStepControl): the run again from its initial state,
+// in memory; sets its summary's refinement, refined_peak, refined_peak_change.
+void CheckPeakUnderRefinement(const SceneDef& scene, SystemRun& run) {
+  RunSummary& s = run.summary;
+  SceneDef refined = scene;
+  const std::string how = RefineStepControl(refined.simulation, s.tolerance, s.stats.snap_windows);
+  RunSummary rs;
+  try {  // the run's own files are written: a failure here is reported, not thrown
+    SystemRun again = RestartSystemRun(refined, run);
+    SystemProgress progress(again.grid.end(), "checking the peak under refinement (" + how + ")");
+    ExecuteSystemRun(again, std::vector<std::vector<RowSink*>>(again.sys.lines.size()),
+                     {&progress});
+    progress.Finish();
+    rs = again.summary;
+  } catch (const Error& e) {
+    rs.completed = false;
+    rs.failure = e.what();
+  }
+  ReportRefinement(how, rs, &s);
+}
 
 // One line's files in its folder.
 struct LineFiles {
@@ -226,8 +248,6 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
   points.Commit();
   results->Commit();
   if (bodies) bodies->Commit();
-  for (int i = 0; i < nl; ++i) WriteRunReport(files[i].dir + "/run_report.toml", run.lines[i]);
-  WriteRunReport(out_dir + "/run_report.toml", s);
   std::printf("simulated %.6g s in %.3g s of computer time: %s\n", s.duration, s.wall,
               DescribeSteps(s.stats).c_str());
   if (run.peak_line >= 0)
@@ -242,6 +262,12 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
                 QuoteText(s.utilisation_line).c_str(), s.utilisation_link,
                 QuoteText(s.utilisation_material).c_str());
   for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());
+  bool unresolved = false;  // snaps the steps did not resolve, in any line
+  for (const RunSummary& l : run.lines) unresolved |= l.stats.record.unresolved_snaps > 0;
+  if (unresolved) CheckPeakUnderRefinement(scene, run);
+  if (report) report->summary = s;
+  for (int i = 0; i < nl; ++i) WriteRunReport(files[i].dir + "/run_report.toml", run.lines[i]);
+  WriteRunReport(out_dir + "/run_report.toml", s);
   std::printf("wrote %s/points.csv,%s results.nc, run_report.toml and lines/<name>/ for %d "
               "line(s)\n",
               EscapeText(out_dir).c_str(), bodies ? " body.csv," : "", nl);

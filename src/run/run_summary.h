@@ -69,8 +69,11 @@ struct RunSummary {
 };
 
 // Reasons the peak tension cannot be trusted (empty: none found): snaps within steps too long to
-// resolve them (see core/snap_monitor.h), with what would resolve them.
-std::vector<std::string> TrustWarnings(const Model& m, const StepStats& stats);
+// resolve them (see core/snap_monitor.h), with what would resolve them: explicit steps for a
+// line, fixed implicit ones for a line of a system (`in_system`: it runs the implicit scheme
+// only).
+std::vector<std::string> TrustWarnings(const Model& m, const StepStats& stats,
+                                       bool in_system = false);
 
 // "N steps (M rejected) from a to b s[, k Newton iterations per step]".
 std::string DescribeSteps(const StepStats& stats);

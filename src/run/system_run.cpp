@@ -34,6 +34,28 @@ TimeGrid SystemGrid(const SceneDef& scene, const SystemModel& sys) {
   return grid;
 }
 
+// run's initial data (the lines at `states`, the bodies where run.sys has them) and its
+// summaries, empty, for the grid's step options.
+void StartFrom(const SceneDef& scene, SystemRun& run, const std::vector<State>& states) {
+  run.initial = MakeSystemData(run.sys, run.inputs, run.grid.options, states);
+  run.lines.resize(run.sys.lines.size());
+  for (size_t i = 0; i < run.lines.size(); ++i) {
+    for (const LineDef& def : scene.lines)
+      if (def.name == run.sys.line_names[i])
+        run.section_materials.push_back(SectionMaterials(scene, def.sections));
+    if (run.section_materials.size() != i + 1) run.section_materials.emplace_back();
+    run.lines[i].scheme = SchemeName(run.sys.lines[i], run.grid.options);
+    run.extents.emplace_back(run.initial.lines[i].state);
+    run.row_max.emplace_back();
+  }
+  run.summary.scheme = run.lines[0].scheme;
+  run.summary.tolerance = run.grid.automatic ? run.grid.options.tolerance : 0.0;
+  if (run.grid.automatic && run.grid.options.start_end > 0) {
+    run.summary.start_tolerance = run.grid.options.start_tolerance;
+    run.summary.start_end = run.grid.options.start_end;
+  }
+}
+
 }  // namespace
 
 void StepSystemSpan(const SystemModel& sys, SystemData& sd, const Inputs& in, double seconds,
@@ -105,24 +127,21 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
   CheckSystemInitialStretch(scene, run.sys, states);
   run.equilibrium_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  run.initial = MakeSystemData(run.sys, run.inputs, run.grid.options, states);
-  run.lines.resize(run.sys.lines.size());
-  for (size_t i = 0; i < run.lines.size(); ++i) {
-    for (const LineDef& def : scene.lines)
-      if (def.name == run.sys.line_names[i])
-        run.section_materials.push_back(SectionMaterials(scene, def.sections));
-    if (run.section_materials.size() != i + 1) run.section_materials.emplace_back();
-    run.lines[i].scheme = SchemeName(run.sys.lines[i], run.grid.options);
-    run.extents.emplace_back(run.initial.lines[i].state);
-    run.row_max.emplace_back();
-  }
-  run.summary.scheme = run.lines[0].scheme;
-  run.summary.tolerance = run.grid.automatic ? run.grid.options.tolerance : 0.0;
-  if (run.grid.automatic && run.grid.options.start_end > 0) {
-    run.summary.start_tolerance = run.grid.options.start_tolerance;
-    run.summary.start_end = run.grid.options.start_end;
-  }
+  StartFrom(scene, run, states);
   return run;
+}
+
+SystemRun RestartSystemRun(const SceneDef& scene, const SystemRun& run) {
+  SystemRun again;
+  again.sys = run.sys;  // its bodies where the run's start them
+  again.grid = SystemGrid(scene, again.sys);
+  again.inputs = run.inputs;
+  again.equilibrium = run.equilibrium;
+  again.equilibrium_ms = run.equilibrium_ms;
+  std::vector<State> states;
+  for (const Data& d : run.initial.lines) states.push_back(d.state);
+  StartFrom(scene, again, states);
+  return again;
 }
 
 void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& line_sinks,
@@ -175,7 +194,7 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
     l.failure = s.failure;
     l.stats = sd.lines[i].step_stats();
     l.stats.rejected = sd.stats.rejected;  // the system's steps are every line's
-    l.warnings = TrustWarnings(run.sys.lines[i], l.stats);
+    l.warnings = TrustWarnings(run.sys.lines[i], l.stats, true);
     for (const std::string& w : l.warnings)
       s.warnings.push_back("line \"" + run.sys.line_names[i] + "\": " + w);
     if (!(l.peak <= s.peak)) {  // the first line with the largest peak (NaN: none yet)

@@ -88,6 +88,10 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
                            const std::function<void(double)>& relaxing = {},
                            const std::function<void(double)>& solving = {});
 
+// `run` made ready to run again from its initial state (no statics) with the step settings of
+// `scene` (run's scene with its [simulation] changed): what the snap check runs.
+SystemRun RestartSystemRun(const SceneDef& scene, const SystemRun& run);
+
 // Steps a copy of run.initial through the grid: every row to line i's `line_sinks[i]`, to
 // `sinks`, and to the run's summaries.
 void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& line_sinks,
