@@ -47,6 +47,11 @@ struct StepOptions {
   // Implicit, one line: a step that snaps a link taut too fast for it is left to explicit steps
   // (explicit_snaps.h; needs safety_factor > 0).
   bool explicit_snaps = false;
+  // Implicit: the steps, accepted and rejected, that one call of the adaptive loop may take
+  // before it gives up with an Error (0: no bound). Work with a bound of its own (the statics'
+  // relaxation) sets it: a motion whose steps fall to microseconds would otherwise take
+  // millions of them within one span, between its looks at the bound.
+  long most_steps = 0;
 };
 
 struct State {

@@ -165,11 +165,18 @@ bool AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelF
   if (!(largest > 0)) largest = dt;
   if (!(proposed > 0) || proposed > largest) proposed = largest;
   int failures = 0;  // consecutive rejections
+  long taken = 0;    // steps tried in this call (options.most_steps)
   // A step this much smaller than the one asked for makes no useful progress: the motion (an
   // end's acceleration, a snap) is faster than any step can follow; say so rather than crawl.
   const double smallest = kSmallestStepFraction * largest;
   while (t < t_end - 1e-12 * largest) {
     ThrowIfCancelled(stop, "the implicit step");
+    if (options.most_steps > 0 && ++taken > options.most_steps) {
+      std::ostringstream os;
+      os << "the implicit steps reached their bound of " << options.most_steps
+         << " steps at t = " << t << " s (the last " << proposed << " s long)";
+      throw Error(os.str());
+    }
     const double tolerance = options.ToleranceAt(t);
     double h = std::min(proposed, t_end - t);
     // Land on a kink of a prescribed motion within reach (one closer than the smallest step

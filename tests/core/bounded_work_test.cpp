@@ -3,6 +3,7 @@
 // the equilibrium, the implicit steps or the output loop run. Each case hung before.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 
 #include "run/driver.h"
@@ -87,6 +88,44 @@ TEST(BoundedWork, AMotionFasterThanAnyStepEndsInAClearError) {
         << e.what();
     EXPECT_LT(e.time, 0.2);
   }
+}
+
+// Work with a bound of its own (the statics' relaxation, core/system_relaxation.cpp) bounds
+// the implicit steps of one call: P63's first second takes 120 (105 and 15 rejected: its start's
+// tolerance), so a bound of 5 ends it with an Error that says so, before a sixth; a bound it
+// does not reach changes nothing.
+TEST(BoundedWork, TheImplicitStepsOfACallStopAtTheirBound) {
+  const SceneDef scene = P63();
+  const Model m = BuildModel(scene);
+  TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
+  EquilibriumReport report;
+  const State start = MakeInitialState(scene, m, &report);
+  auto free_run = testing::MakeStepper(m, grid);
+  State a = start;
+  free_run->Initialize(m, a);
+  free_run->Step(m, a, 1.0);
+  const StepStats taken = free_run->stats();
+  std::printf("[ bound ] P63's first second: %ld steps, %ld rejected\n", taken.steps,
+              taken.rejected);
+  EXPECT_GT(taken.steps + taken.rejected, 5);  // (else the bound below would not bind)
+  grid.options.most_steps = 5;
+  auto bounded = testing::MakeStepper(m, grid);
+  State b = start;
+  bounded->Initialize(m, b);
+  try {
+    bounded->Step(m, b, 1.0);
+    FAIL() << "a second of P63 in at most 5 steps";
+  } catch (const CancelledError&) {
+    FAIL() << "not a cancellation";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("bound of 5 steps"), std::string::npos) << e.what();
+  }
+  grid.options.most_steps = 100000;
+  auto loose = testing::MakeStepper(m, grid);
+  State c = start;
+  loose->Initialize(m, c);
+  loose->Step(m, c, 1.0);
+  EXPECT_EQ(c.x, a.x);  // bit for bit
 }
 
 }  // namespace

@@ -521,6 +521,30 @@ TEST(MoorDynConvert, SystemStaticsErrorGivesNoOneLineAdvice) {
   }
 }
 
+// A fuzzed file's: the three-leg spread with its clump's chain (leg 3) cut to 0.1 mm of 20
+// links, 400 m from the clump. Newton cannot balance the clump, and the relaxation's motion
+// (the chain's 5 um links stretched four million times) falls to steps of microseconds: its
+// first 0.1 s span alone took millions of them, minutes of a run that never looked at its
+// bounds between spans. Each span now has what is left of them: the statics fail within
+// the bounds, saying how the motion ended.
+TEST(MoorDynConvert, RelaxationWhoseStepsCrawlEndsWithinItsBounds) {
+  MoorDynSystem file = ReadMoorDynFile(kDir + "three_leg_spread.txt");
+  ASSERT_EQ(file.lines.size(), 4u);
+  file.lines[2].length = 1e-4;  // [m]
+  const SystemModel sys = BuildSystem(ParseScene(Convert(file).text, "spread.toml"));
+  StepOptions step;
+  step.scheme = Scheme::kImplicit;
+  step.tolerance = 1e-6 * 850.0;  // the default: 1e-6 of the longest line's length [m]
+  try {
+    SolveSystemEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, nullptr, {});
+    FAIL() << "a 5 t clump balanced on a 0.1 mm chain";
+  } catch (const Error& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("the motion failed: the implicit steps reached their bound"),
+              std::string::npos) << msg;
+  }
+}
+
 TEST(MoorDynConvert, ShippedScenesAsMoorDynFiles) {
   ExpectSameScene("catenary.txt", "catenary.toml");
   ExpectSameScene("hanging_chain.txt", "hanging_chain.toml");
