@@ -49,7 +49,7 @@ struct StepOptions {
   bool explicit_snaps = false;
   // Implicit: the steps, accepted and rejected, that one call of the adaptive loop may take
   // before it gives up with an Error (0: no bound). Work with a bound of its own (the statics'
-  // relaxation) sets it: a motion whose steps fall to microseconds would otherwise take
+  // relaxation) sets it: a motion whose steps fall below a nanosecond would otherwise take
   // millions of them within one span, between its looks at the bound.
   long most_steps = 0;
 };

@@ -62,9 +62,9 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
       std::vector<Vec6> poses = guess.body_poses;
       for (int span = 1; span * kSpan <= kLongestRelaxation + 1e-9; ++span) {
         ThrowIfCancelled(options.cancel, "the system's static equilibrium");
-        // What is left of the bounds, for this span's steps too: where the steps fall to
-        // microseconds (a fuzzed file's 0.1 mm chain of 20 links held a 5 t clump) one span
-        // would take millions (the motion then fails: caught below).
+        // What is left of the bounds, for this span's steps too: where the steps fall below a
+        // nanosecond (a fuzzed file's 0.1 mm chain of 20 links held a 5 t clump: 7e-10 s) one
+        // span would take millions (the motion then fails: caught below).
         const long tried = sd.stats.steps + sd.stats.rejected;
         const long left = std::min(kMostRelaxationSteps - tried,
                                    static_cast<long>(kMostRelaxationStationSteps / stations) - tried);

@@ -533,8 +533,8 @@ TEST(MoorDynConvert, SystemStaticsErrorGivesNoOneLineAdvice) {
 
 // A fuzzed file's: the three-leg spread with its clump's chain (leg 3) cut to 0.1 mm of 20
 // links, 400 m from the clump. Newton cannot balance the clump, and the relaxation's motion
-// (the chain's 5 um links stretched four million times) falls to steps of microseconds: its
-// first 0.1 s span alone took millions of them, minutes of a run that never looked at its
+// (the chain's 5 um links stretched four million times) falls to steps of 7e-10 s: its first
+// 0.1 s span alone would take millions of them, minutes of a run that never looked at its
 // bounds between spans. Each span now has what is left of them: the statics fail within
 // the bounds, saying how the motion ended.
 TEST(MoorDynConvert, RelaxationWhoseStepsCrawlEndsWithinItsBounds) {
