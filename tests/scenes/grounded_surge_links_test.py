@@ -28,8 +28,8 @@ import re
 import sys
 import tempfile
 
-from grounded_surge_test import surge_scene
-from scene_runs import report, run, table
+from grounded_surge_test import surge_scene, tension_max
+from scene_runs import report
 
 REFINED = 4            # the reference's links: four times the scene's (126 -> 504)
 SCENE_BOUND = 0.2      # %: the default at the scene's links against the reference (issue 21)
@@ -48,10 +48,7 @@ def with_links(scene_text, factor):
 
 def peak(cablefilm, scene_text, folder):
     """The largest tension_max of the run's rows [N]."""
-    folder.mkdir(parents=True)
-    (folder / "scene.toml").write_text(scene_text)
-    run(cablefilm, folder / "scene.toml", folder)
-    return max(float(r["tension_max"]) for r in table(folder / "timeseries.csv"))
+    return max(tension_max(cablefilm, scene_text, folder)[1])
 
 
 def main():
