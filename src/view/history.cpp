@@ -183,9 +183,25 @@ void History::AddToPath(std::size_t e, Vec3f p) {
   auto& pieces = end_paths_[e].pieces;
   if (following_) {
     if (pieces.empty()) pieces.emplace_back();
-    pieces[0].push_back(p);
-    // About one period of a typical motion at 30 frames/s and more: enough to show the orbit.
-    if (pieces[0].size() > kMaxPathPoints) DropFront(&pieces[0], 1);
+    std::vector<Vec3f>& path = pieces[0];
+    // Points a thousandth of the view apart (the film's grid, a pixel or two): the newest one
+    // moves with the end until it is that far from the one before, so the path ends where the
+    // end is. A fairlead's orbit of a metre in a view of a kilometre is a few points, not a
+    // frame's each: every point is a tube's ring to draw (at 30 frames/s three ends of 4096
+    // points each held 170 MB of the renderer's and much of its time).
+    const double step = std::max({box_.x_max - box_.x_min, box_.y_max - box_.y_min,
+                                  box_.z_max - box_.z_min}) / 1000;  // [m]
+    if (path.size() >= 2) {
+      const Vec3f& kept = path[path.size() - 2];
+      const double dx = p.x - kept.x, dy = p.y - kept.y, dz = p.z - kept.z;
+      if (dx * dx + dy * dy + dz * dz < step * step) {
+        path.back() = p;
+        return;
+      }
+    }
+    path.push_back(p);
+    // The recent orbit: at the spacing above, many periods of a typical motion.
+    if (path.size() > kMaxPathPoints) DropFront(&path, 1);
     return;
   }
   if (count_ == 0) {

@@ -45,7 +45,7 @@ struct FollowingPolicy {  // the live view's
 class History {
  public:
   static constexpr int kTimeTraceSpans = 8192;       // fixed: finer than any plot's columns
-  static constexpr std::size_t kMaxPathPoints = 4096;      // following: per moving end
+  static constexpr std::size_t kMaxPathPoints = 1024;      // following: per moving end
   static constexpr std::size_t kMaxTracePoints = 1 << 16;  // following: in the window
   static constexpr std::size_t kMaxMarkers = 256;
 

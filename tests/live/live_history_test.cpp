@@ -3,7 +3,9 @@
 // holds the cable.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/vec.h"
 #include "view/history.h"
@@ -132,6 +134,48 @@ TEST(LiveHistory, BoxAlwaysHoldsTheCableAndShrinksSlowly) {
     if (k == 51) {
       EXPECT_GT(box.y_max, 7.0);  // one frame later the box has not snapped in
     }
+  }
+}
+
+// The moving end's recent path: points a thousandth of the view apart, the newest where the end
+// is now. The line spans 10 m in x, so the view is at least 10 m wide and the spacing at least
+// 0.01 m. An orbit of 0.002 m (a pixel's fraction) stays two points however long it runs; one of
+// 2 m radius at 30 frames/s (0.042 m a frame, over the spacing) keeps every frame, up to the
+// bound, and spans its diameter.
+TEST(LiveHistory, RecentPathKeepsWhatTheViewCanShow) {
+  const double kPi = std::acos(-1.0);
+  auto orbit = [kPi](double radius, double period, long frames) {
+    History h(Scene(), FollowingPolicy{60, {}});
+    Points x = StraightLine(0);
+    for (long k = 0; k < frames; ++k) {
+      const double t = k / 30.0, a = 2 * kPi * t / period;  // [s], [rad]
+      x(0, 10) = 10 + radius * std::cos(a);  // [m]
+      x(1, 10) = radius * std::sin(a);
+      Add(h, t, x, Eigen::VectorXd::Constant(10, 1000));
+    }
+    return std::make_pair(h.end_paths().at(0).pieces.at(0), x.col(10).eval());
+  };
+  auto distance = [](const Vec3f& a, const Vec3f& b) {
+    return std::hypot(double{a.x} - b.x, double{a.y} - b.y, double{a.z} - b.z);
+  };
+  {
+    const auto [path, end] = orbit(0.002, 10, 30 * 3600);  // an hour
+    ASSERT_EQ(path.size(), 2u);
+    EXPECT_FLOAT_EQ(path.back().x, static_cast<float>(end.x()));
+    EXPECT_FLOAT_EQ(path.back().y, static_cast<float>(end.y()));
+  }
+  {
+    const auto [path, end] = orbit(2.0, 10, 30 * 600);
+    EXPECT_EQ(path.size(), History::kMaxPathPoints);
+    EXPECT_FLOAT_EQ(path.back().x, static_cast<float>(end.x()));
+    EXPECT_FLOAT_EQ(path.back().y, static_cast<float>(end.y()));
+    double widest = 0;
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      // 2 m x 2 pi / 300 frames a chord of 0.0419 m (float positions: 1e-5 m).
+      EXPECT_NEAR(distance(path[i], path[i + 1]), 2.0 * 2 * std::sin(kPi / 300), 1e-4);
+      widest = std::max(widest, distance(path[0], path[i + 1]));
+    }
+    EXPECT_NEAR(widest, 4.0, 0.01);  // 1024 frames: more than a period, the whole orbit
   }
 }
 
