@@ -187,8 +187,8 @@ void History::AddToPath(std::size_t e, Vec3f p) {
     // Points a thousandth of the view apart (the film's grid, a pixel or two): the newest one
     // moves with the end until it is that far from the one before, so the path ends where the
     // end is. A fairlead's orbit of a metre in a view of a kilometre is a few points, not a
-    // frame's each: every point is a tube's ring to draw (at 30 frames/s three ends of 4096
-    // points each held 170 MB of the renderer's and much of its time).
+    // frame's each: every point is a tube's ring to draw (three ends of 4096 points each grew
+    // the live server by 170 MB, most of it the rasteriser's, and cut its frames to a sixth).
     const double step = std::max({box_.x_max - box_.x_min, box_.y_max - box_.y_min,
                                   box_.z_max - box_.z_min}) / 1000;  // [m]
     if (path.size() >= 2) {
