@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
       scene.simulation.integrator = IntegratorChoice::kImplicit;
       scene.simulation.time_step = implicit_dt;
     }
-    const Model m = BuildModel(scene);
+    const LineModel m = BuildModel(scene);
     TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
     const double total_steps = static_cast<double>(grid.outputs) * grid.steps_per_output;
     bool projected = false;
@@ -63,13 +63,13 @@ int main(int argc, char** argv) {
       projected = true;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    EquilibriumReport eq;
+    LineEquilibriumReport eq;
     State state = MakeInitialState(scene, m, &eq);
     const auto t1 = std::chrono::steady_clock::now();
     const Inputs in = SceneInputs(m);
-    Data d = MakeData(m, in, grid.options, state);
+    LineData d = MakeLineData(m, in, grid.options, state);
     double peak = 0, peak_t = 0;
-    RowFunction sink([&](const Data& row) {
+    RowFunction sink([&](const LineData& row) {
       if (row.tension().maxCoeff() > peak) {
         peak = row.tension().maxCoeff();
         peak_t = row.state.t;

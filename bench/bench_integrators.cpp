@@ -69,7 +69,7 @@ RunResult Run(const SceneDef& scene_in, IntegratorChoice kind, double max_steps,
   SceneDef scene = scene_in;
   scene.simulation.integrator = kind;
   scene.simulation.time_step = dt_override;
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
   RunResult r;
   r.dt = grid.dt;
@@ -81,8 +81,8 @@ RunResult Run(const SceneDef& scene_in, IntegratorChoice kind, double max_steps,
   r.steps_run = static_cast<double>(grid.outputs) * grid.steps_per_output;
   State state = MakeInitialState(scene, m, nullptr);
   const Inputs in = SceneInputs(m);
-  Data d = MakeData(m, in, grid.options, state);
-  RowFunction sink([&](const Data& row) {
+  LineData d = MakeLineData(m, in, grid.options, state);
+  RowFunction sink([&](const LineData& row) {
     r.peak = std::max(r.peak, row.tension().maxCoeff());
     return true;
   });
@@ -122,9 +122,9 @@ int main(int argc, char** argv) {
   // Static equilibrium: median of several solves.
   for (int links : statics_sizes) {
     const SceneDef scene = Resized(base, links, duration);
-    const Model m = BuildModel(scene);
+    const LineModel m = BuildModel(scene);
     std::vector<double> ms;
-    EquilibriumReport rep;
+    LineEquilibriumReport rep;
     for (int i = 0; i < std::max(5, repeat); ++i) {
       const auto t0 = Clock::now();
       MakeInitialState(scene, m, &rep);

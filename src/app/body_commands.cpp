@@ -18,7 +18,7 @@ namespace cablefilm {
 namespace {
 
 // The index of the body named `name` (empty: the only one); throws Error naming the choices.
-int FindBody(const SceneDef& scene, const SystemModel& sys, const std::string& name) {
+int FindBody(const SceneDef& scene, const Model& sys, const std::string& name) {
   if (sys.bodies.empty())
     throw Error(scene.path + ": the scene has no [[body]]: the quasi-static tools move a body");
   if (name.empty()) {
@@ -35,7 +35,7 @@ int FindBody(const SceneDef& scene, const SystemModel& sys, const std::string& n
               names + ")");
 }
 
-SystemModel LoadSystem(const std::string& scene_path, SceneDef* scene) {
+Model LoadSystem(const std::string& scene_path, SceneDef* scene) {
   *scene = LoadScene(scene_path);
   if (!scene->is_system())
     throw Error(scene_path + ": a single line has no body: the quasi-static tools take a system "
@@ -46,12 +46,12 @@ SystemModel LoadSystem(const std::string& scene_path, SceneDef* scene) {
 // The system's equilibrium as `run` finds it (run/system_run.h); `options` then start each
 // held pose's statics from it.
 struct Equilibrium {
-  SystemEquilibriumReport report;
+  EquilibriumReport report;
   std::vector<State> states;
-  SystemEquilibriumOptions options;
+  EquilibriumOptions options;
 };
 
-void FindEquilibrium(const SceneDef& scene, const SystemModel& sys, Equilibrium& e) {
+void FindEquilibrium(const SceneDef& scene, const Model& sys, Equilibrium& e) {
   InstallSignalHandlers();
   StaticsProgress progress;
   e.states = SystemStatics(scene, sys, &e.report, &g_signal, progress.relaxing(),
@@ -72,7 +72,7 @@ void PrintPose(const char* what, const Vec6& pose) {
 
 int StiffnessCommand(const std::string& scene_path, const std::string& body) {
   SceneDef scene;
-  const SystemModel sys = LoadSystem(scene_path, &scene);
+  const Model sys = LoadSystem(scene_path, &scene);
   const int b = FindBody(scene, sys, body);
   Equilibrium e;
   FindEquilibrium(scene, sys, e);
@@ -94,7 +94,7 @@ int StiffnessCommand(const std::string& scene_path, const std::string& body) {
 
 int OffsetCommand(const std::string& scene_path, const OffsetOptions& o) {
   SceneDef scene;
-  const SystemModel sys = LoadSystem(scene_path, &scene);
+  const Model sys = LoadSystem(scene_path, &scene);
   const int b = FindBody(scene, sys, o.body);
   Equilibrium e;
   FindEquilibrium(scene, sys, e);

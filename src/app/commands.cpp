@@ -32,7 +32,7 @@
 namespace cablefilm {
 namespace {
 
-const char* ModelName(const Model& m) { return LawName(m.line.law); }
+const char* ModelName(const LineModel& m) { return LawName(m.line.law); }
 
 // A horizontal direction as a user gives it: "+x", or "<angle> deg from +x towards +z".
 std::string HeadingText(const Vec& direction) {
@@ -43,7 +43,7 @@ std::string HeadingText(const Vec& direction) {
   return text;
 }
 
-void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
+void PrintSummary(const SceneDef& scene, const LineModel& m, const TimeGrid& grid) {
   const double cable_mass = m.line.link_mass.sum();
   double weights = 0;
   for (const WeightDef& w : scene.weights) weights += w.mass;
@@ -172,7 +172,7 @@ void PrintSummary(const SceneDef& scene, const Model& m, const TimeGrid& grid) {
 class ProgressSink : public RowSink {
  public:
   ProgressSink(const std::string& label, double end) : line_(label, end, "s") {}
-  bool Row(const Data& d) override {
+  bool Row(const LineData& d) override {
     line_.Update(d.state.t);
     return g_signal == 0;
   }
@@ -184,7 +184,7 @@ class ProgressSink : public RowSink {
 
 // The snap check of a line's run (RefineStepControl): sets summary's refinement, refined_peak,
 // refined_peak_change.
-void CheckPeakUnderRefinement(const SceneDef& scene, const Model& m, RunSummary* s) {
+void CheckPeakUnderRefinement(const SceneDef& scene, const LineModel& m, RunSummary* s) {
   SceneDef refined = scene;
   const std::string how =
       RefineStepControl(refined.simulation, s->tolerance, s->stats.snap_windows);
@@ -207,11 +207,11 @@ void CheckPeakUnderRefinement(const SceneDef& scene, const Model& m, RunSummary*
 // run keeps the largest tension of every row (for the pictures) and what the film needs. A run
 // cut short (summary.completed false) has committed its rows under the .partial names;
 // summary.failure then holds a blow-up's message (empty: stopped by a signal).
-Run SimulateToFiles(const SceneDef& scene, const Model& m, const std::string& out_dir,
+Run SimulateToFiles(const SceneDef& scene, const LineModel& m, const std::string& out_dir,
                     const std::string& suffix) {
   PrintSummary(scene, m, ChooseTimeGrid(m, scene.simulation, scene.output.interval));
   Run run = PrepareRun(scene, m, LawName(m.line.law), &g_signal);
-  const EquilibriumReport& eq = run.equilibrium;
+  const LineEquilibriumReport& eq = run.equilibrium;
   const Eigen::VectorXd& T0 = run.initial.tension();
   if (scene.initial == InitialStateKind::kEquilibrium)
     std::printf("equilibrium: %d Newton iterations%s, residual %.3g N (of %.4g N), %.2f ms; "
@@ -301,14 +301,14 @@ int EndCutShort(const SceneDef& scene, const std::vector<const Run*>& runs,
 int CheckCommand(const std::string& scene_path) {
   const SceneDef scene = LoadScene(scene_path);
   if (scene.is_system()) return CheckSystem(scene);
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   CheckModelLimits(scene, m);
   PrintSummary(scene, m, ChooseTimeGrid(m, scene.simulation, scene.output.interval));
   if (scene.initial == InitialStateKind::kEquilibrium) {
     // The initial state is part of the scene: a cable with no steady state is caught here,
     // not after `run` has set up its outputs.
     InstallSignalHandlers();
-    EquilibriumReport eq;
+    LineEquilibriumReport eq;
     MakeInitialState(scene, m, &eq, &g_signal);
     std::printf("  static equilibrium found: %d Newton iterations%s, residual %.3g N\n",
                 eq.iterations, eq.fallback ? " (with the pseudo-transient fallback)" : "",
@@ -323,7 +323,7 @@ int RunCommand(const std::string& scene_path, const RunOptions& options, RunRepo
   if (scene.is_system()) return RunSystem(scene, options, report);
   const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
   const FilmSettings look = film ? ResolveFilm(scene, options, kCommandLineNames) : FilmSettings{};
-  const Model model = BuildModel(scene);
+  const LineModel model = BuildModel(scene);
   CheckModelLimits(scene, model);
   OutDirLock lock;
   const std::string out_dir = PrepareOutDir(scene, options, lock);

@@ -1,6 +1,6 @@
 #include "app/progress.h"
 
-#include "core/system_relaxation.h"
+#include "core/relaxation.h"
 
 #include <cstdio>
 #include <unistd.h>

@@ -121,7 +121,7 @@ CaseOutcome RunCaseInProcess(const std::string& text, const std::string& path,
     ExecuteSystemRun(run, std::vector<std::vector<RowSink*>>(run.sys.lines.size()), {});
     return OutcomeOf(run.summary, *stop != 0);
   }
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   CheckModelLimits(scene, m);
   Run run = PrepareRun(scene, m, LawName(m.line.law), stop);
   ExecuteRun(run, {});

@@ -27,8 +27,8 @@ namespace cablefilm {
 namespace {
 
 // The system's statics as `run` finds them, a progress line shown while the relaxation's
-// motion goes on (it can take seconds: core/system_relaxation.h).
-SystemRun PrepareWithProgress(const SceneDef& scene, const SystemModel& sys) {
+// motion goes on (it can take seconds: core/relaxation.h).
+SystemRun PrepareWithProgress(const SceneDef& scene, const Model& sys) {
   StaticsProgress progress;
   return PrepareSystemRun(scene, sys, &g_signal, progress.relaxing(), progress.solving());
 }
@@ -47,12 +47,12 @@ const char* KindName(PointKind kind) {
   return "";
 }
 
-void PrintSystem(const SceneDef& scene, const SystemModel& sys) {
+void PrintSystem(const SceneDef& scene, const Model& sys) {
   std::printf("scene %s: %s\n", EscapeText(scene.path).c_str(), QuoteText(scene.title).c_str());
   std::printf("  a system of %zu line(s) and %zu point(s)\n", sys.lines.size(),
               sys.points.size());
   for (size_t i = 0; i < sys.lines.size(); ++i) {
-    const Model& m = sys.lines[i];
+    const LineModel& m = sys.lines[i];
     std::printf("  line %s: %d links, unstretched length %.6g m, mass %.6g kg, from point %s "
                 "to point %s\n",
                 QuoteText(sys.line_names[i]).c_str(), m.line.links, m.line.total_length(),
@@ -60,7 +60,7 @@ void PrintSystem(const SceneDef& scene, const SystemModel& sys) {
                 QuoteText(sys.points[sys.line_points[i][1]].name).c_str());
   }
   PrintTangentialMaterials(scene);
-  for (const SystemPoint& p : sys.points)
+  for (const Point& p : sys.points)
     std::printf("  point %s: %s, %zu line end(s)%s\n", QuoteText(p.name).c_str(),
                 KindName(p.kind), p.ends.size(),
                 p.shared >= 0 ? ", where lines meet (solved with them)" : "");
@@ -81,7 +81,7 @@ void PrintSystem(const SceneDef& scene, const SystemModel& sys) {
   for (const std::string& w : warnings) std::printf("  warning: %s\n", w.c_str());
 }
 
-void PrintEquilibrium(const SystemModel& sys, const SystemEquilibriumReport& eq, double ms) {
+void PrintEquilibrium(const Model& sys, const EquilibriumReport& eq, double ms) {
   std::printf("equilibrium: %d Newton iteration(s) on the shared points and free bodies, "
               "out-of-balance %.3g N (of %.4g N), %.2f ms\n",
               eq.iterations, eq.residual, eq.force_scale, ms);
@@ -106,7 +106,7 @@ class SystemProgress : public SystemRowSink {
  public:
   explicit SystemProgress(double end, const std::string& what = "simulating (system)")
       : line_(what, end, "s") {}
-  bool Row(const SystemData& sd) override {
+  bool Row(const Data& sd) override {
     line_.Update(sd.t);
     return g_signal == 0;
   }
@@ -162,7 +162,7 @@ int ConvertCommand(const std::string& path, const std::string& out_path) {
 }
 
 int CheckSystem(const SceneDef& scene) {
-  const SystemModel sys = BuildSystem(scene);
+  const Model sys = BuildSystem(scene);
   PrintSystem(scene, sys);
   InstallSignalHandlers();
   const SystemRun run = PrepareWithProgress(scene, sys);
@@ -176,21 +176,21 @@ int RunSystem(const SceneDef& scene, const RunOptions& options, RunReport* repor
   // The film's settings checked before anything runs, as a line's are.
   const bool film = options.film >= 0 ? options.film == 1 : scene.output.film;
   const FilmSettings look = film ? ResolveFilm(scene, options, kCommandLineNames) : FilmSettings{};
-  const SystemModel built = BuildSystem(scene);
+  const Model built = BuildSystem(scene);
   PrintSystem(scene, built);
   OutDirLock lock;
   const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
   SystemRun run = PrepareWithProgress(scene, built);
   PrintEquilibrium(run.sys, run.equilibrium, run.equilibrium_ms);
-  const SystemModel& sys = run.sys;
+  const Model& sys = run.sys;
   const int nl = static_cast<int>(sys.lines.size());
   std::vector<LineFiles> files(nl);
   const long rows = run.grid.outputs + 1;  // of a complete run
   std::vector<std::vector<RowSink*>> line_sinks(nl);
   for (int i = 0; i < nl; ++i) {
-    const Model& m = sys.lines[i];
-    const Data& d = run.initial.lines[i];
+    const LineModel& m = sys.lines[i];
+    const LineData& d = run.initial.lines[i];
     LineFiles& f = files[i];
     f.dir = out_dir + "/lines/" + sys.line_names[i];
     std::error_code ec;

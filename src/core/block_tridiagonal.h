@@ -7,7 +7,7 @@
 // inverse in turn); fine for the systems here, which are block diagonally dominant or
 // symmetric definite.
 // A range of its rows (the interior of a line whose end stations are shared with other lines,
-// system_step.h) may be factored once and then solved for several right-hand sides.
+// coupled_step.h) may be factored once and then solved for several right-hand sides.
 #include "core/vec.h"
 #include <vector>
 

@@ -9,20 +9,20 @@
 
 namespace cablefilm {
 
-Vec6 EquilibriumPose(const SystemModel& sys, int b, const SystemEquilibriumOptions& options) {
-  SystemEquilibriumReport report;
-  SolveSystemEquilibrium(sys, &report, options);
+Vec6 EquilibriumPose(const Model& sys, int b, const EquilibriumOptions& options) {
+  EquilibriumReport report;
+  SolveEquilibrium(sys, &report, options);
   return report.body_poses[b];
 }
 
-MooringLoad LoadAtPose(const SystemModel& sys, int b, const Vec6& pose,
-                       const SystemEquilibriumOptions& options) {
-  const SystemModel held = HoldBody(sys, b, pose);
+MooringLoad LoadAtPose(const Model& sys, int b, const Vec6& pose,
+                       const EquilibriumOptions& options) {
+  const Model held = HoldBody(sys, b, pose);
   MooringLoad out;
-  out.states = SolveSystemEquilibrium(held, nullptr, options);
+  out.states = SolveEquilibrium(held, nullptr, options);
   out.load = LinesLoadOnBody(held, out.states, b, pose);
   out.end_tension.assign(held.lines.size(), std::numeric_limits<double>::quiet_NaN());
-  for (const SystemPoint& p : held.points) {
+  for (const Point& p : held.points) {
     if (p.on_body != b) continue;
     for (const LineEnd& e : p.ends)
       out.end_tension[e.line] =
@@ -31,15 +31,15 @@ MooringLoad LoadAtPose(const SystemModel& sys, int b, const Vec6& pose,
   return out;
 }
 
-double BodySize(const SystemModel& sys, int b) {
+double BodySize(const Model& sys, int b) {
   double size = 1;
-  for (const SystemPoint& p : sys.points)
+  for (const Point& p : sys.points)
     if (p.on_body == b && !p.ends.empty()) size = std::max(size, p.local.norm());
   return size;
 }
 
-Mat6 MooringStiffness(const SystemModel& sys, int b, const Vec6& pose, double step,
-                      const SystemEquilibriumOptions& options) {
+Mat6 MooringStiffness(const Model& sys, int b, const Vec6& pose, double step,
+                      const EquilibriumOptions& options) {
   Mat6 K;
   const double size = BodySize(sys, b);
   for (int k = 0; k < 6; ++k) {
@@ -53,9 +53,9 @@ Mat6 MooringStiffness(const SystemModel& sys, int b, const Vec6& pose, double st
   return K;
 }
 
-std::vector<OffsetPoint> OffsetCurve(const SystemModel& sys, int b, const Vec6& pose,
+std::vector<OffsetPoint> OffsetCurve(const Model& sys, int b, const Vec6& pose,
                                      double heading, const std::vector<double>& offsets,
-                                     const SystemEquilibriumOptions& options) {
+                                     const EquilibriumOptions& options) {
   const Vec e = Horizontal(heading);
   std::vector<OffsetPoint> curve;
   for (double d : offsets) {
@@ -70,9 +70,9 @@ std::vector<OffsetPoint> OffsetCurve(const SystemModel& sys, int b, const Vec6& 
   return curve;
 }
 
-double ShortestLineOn(const SystemModel& sys, int b) {
+double ShortestLineOn(const Model& sys, int b) {
   double shortest = INFINITY;
-  for (const SystemPoint& p : sys.points)
+  for (const Point& p : sys.points)
     if (p.on_body == b)
       for (const LineEnd& e : p.ends)
         shortest = std::min(shortest, sys.lines[e.line].line.total_length());

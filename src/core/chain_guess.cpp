@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 
 namespace cablefilm {
 namespace {
@@ -14,20 +14,20 @@ struct ChainLink {
 };
 
 // A free point where exactly two ends of two different lines meet: a joint of a chain.
-bool IsJoint(const SystemModel& sys, int p) {
-  const SystemPoint& point = sys.points[p];
+bool IsJoint(const Model& sys, int p) {
+  const Point& point = sys.points[p];
   return point.kind == PointKind::kFree && point.shared >= 0 && point.ends.size() == 2 &&
          point.ends[0].line != point.ends[1].line;
 }
 
-bool Held(const SystemModel& sys, int line, int e) {
-  const Model& m = sys.lines[line];
+bool Held(const Model& sys, int line, int e) {
+  const LineModel& m = sys.lines[line];
   return (e == 0 ? m.ends.start : m.ends.end).prescribed();
 }
 
 // The chain that starts at line i's held end e (its lines in order), or empty when the walk
 // does not end at a held end of another line through joints only.
-std::vector<ChainLink> Walk(const SystemModel& sys, int i, int e) {
+std::vector<ChainLink> Walk(const Model& sys, int i, int e) {
   std::vector<ChainLink> chain{{i, e}};
   for (size_t guard = 0; guard < sys.lines.size(); ++guard) {
     const ChainLink& last = chain.back();
@@ -38,7 +38,7 @@ std::vector<ChainLink> Walk(const SystemModel& sys, int i, int e) {
       return {};
     }
     const int station = to == 0 ? 0 : sys.lines[last.line].line.links;
-    const SystemPoint& joint = sys.points[p];
+    const Point& joint = sys.points[p];
     const LineEnd& next = joint.ends[0].line == last.line && joint.ends[0].station == station
                               ? joint.ends[1] : joint.ends[0];
     for (const ChainLink& l : chain)
@@ -51,7 +51,7 @@ std::vector<ChainLink> Walk(const SystemModel& sys, int i, int e) {
 // The chain as one line's model: its lines' sections end to end (a line walked from its
 // station s reversed), their weights and the joints' own terms as prisms at their stations,
 // held where its first and last lines are held.
-Model ChainModel(const SystemModel& sys, const std::vector<ChainLink>& chain) {
+LineModel ChainModel(const Model& sys, const std::vector<ChainLink>& chain) {
   std::vector<SectionSpec> sections;
   std::vector<PrismSpec> prisms;
   int offset = 0;
@@ -72,16 +72,16 @@ Model ChainModel(const SystemModel& sys, const std::vector<ChainLink>& chain) {
       prisms.push_back(joint);
     }
   }
-  const Model& first = sys.lines[chain.front().line];
-  const Model& last = sys.lines[chain.back().line];
+  const LineModel& first = sys.lines[chain.front().line];
+  const LineModel& last = sys.lines[chain.back().line];
   const EndMotion start = chain.front().from == 0 ? first.ends.start : first.ends.end;
   const EndMotion end = chain.back().from == 0 ? last.ends.end : last.ends.start;
-  return MakeModel(sections, prisms, sys.env, start, end, LinkLaw::kElastic);
+  return MakeLineModel(sections, prisms, sys.env, start, end, LinkLaw::kElastic);
 }
 
 }  // namespace
 
-ChainGuess GuessChains(const SystemModel& sys, const CancelFlag* cancel) {
+ChainGuess GuessChains(const Model& sys, const CancelFlag* cancel) {
   const int nl = static_cast<int>(sys.lines.size());
   ChainGuess g;
   g.states.resize(nl);
@@ -100,10 +100,10 @@ ChainGuess GuessChains(const SystemModel& sys, const CancelFlag* cancel) {
       for (const ChainLink& l : chain) used[l.line] = 1;
       State rest;
       try {
-        const Model m = ChainModel(sys, chain);
-        EquilibriumOptions options;
+        const LineModel m = ChainModel(sys, chain);
+        LineEquilibriumOptions options;
         options.cancel = cancel;
-        rest = SolveEquilibrium(m, EquilibriumGuess(m), nullptr, options);
+        rest = SolveLineEquilibrium(m, EquilibriumGuess(m), nullptr, options);
       } catch (const CancelledError&) {
         throw;
       } catch (const Error&) {

@@ -1,5 +1,5 @@
 #pragma once
-// A first guess for the system's statics (system_equilibrium.h) where lines meet two at a
+// A first guess for the system's statics (equilibrium.h) where lines meet two at a
 // time: a leg of chain, clump weight and wire, or chain-wire-chain joined at free points, runs
 // between two held ends and is, at rest, one line with the points' weights at its joints. Solved
 // as that one line (single-line statics, from its catenary guess), it gives the joints'
@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/cancel.h"
-#include "core/data.h"
-#include "core/system.h"
+#include "core/line_data.h"
+#include "core/model.h"
 
 namespace cablefilm {
 
@@ -25,6 +25,6 @@ struct ChainGuess {
 // Finds the chains (shared free points with exactly two line ends, the lines beyond them
 // ending at held points) and solves each as one line at rest. A chain whose one-line statics
 // fails is left out (the system's Newton starts there from the scene's guess, as before).
-ChainGuess GuessChains(const SystemModel& sys, const CancelFlag* cancel = nullptr);
+ChainGuess GuessChains(const Model& sys, const CancelFlag* cancel = nullptr);
 
 }  // namespace cablefilm

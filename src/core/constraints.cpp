@@ -7,14 +7,14 @@
 
 namespace cablefilm {
 
-ConstraintSolver::ConstraintSolver(const Model& m)
+ConstraintSolver::ConstraintSolver(const LineModel& m)
     : inverse_inertia_(m.stations(), Mat::Zero()), lower_(m.line.links), diag_(m.line.links),
       upper_(m.line.links), rhs_(m.line.links), c_prime_(m.line.links), correction_(kDim, m.stations()) {
   geometry_.length.resize(m.line.links);
   geometry_.tangent.resize(kDim, m.line.links);
 }
 
-void ConstraintSolver::Assemble(const Model& m, const LinkGeometry& g) {
+void ConstraintSolver::Assemble(const LineModel& m, const LinkGeometry& g) {
   for (int j = 0; j <= m.line.links; ++j)
     inverse_inertia_[j] =
         m.prescribed(j) ? Mat::Zero() : Mat(StationInertia(m, g, j).inverse());
@@ -46,7 +46,7 @@ bool ConstraintSolver::Solve() {
   return true;
 }
 
-void ConstraintSolver::Distribute(const Model& m, const LinkGeometry& g,
+void ConstraintSolver::Distribute(const LineModel& m, const LinkGeometry& g,
                                   const Eigen::VectorXd& lambda, Points& dx) const {
   for (int j = m.first_free(); j <= m.last_free(); ++j) {
     Vec f = Vec::Zero();
@@ -56,7 +56,7 @@ void ConstraintSolver::Distribute(const Model& m, const LinkGeometry& g,
   }
 }
 
-void ConstraintSolver::Accelerations(const Model& m, const Inputs& in, const Water& water,
+void ConstraintSolver::Accelerations(const LineModel& m, const Inputs& in, const Water& water,
                                      double t, const Points& x, const Points& v,
                                      ForceWorkspace& ws, Points& a) {
   ComputeGeometry(m, water, t, x, ws.geometry);
@@ -84,7 +84,7 @@ void ConstraintSolver::Accelerations(const Model& m, const Inputs& in, const Wat
   }
 }
 
-bool ConstraintSolver::ProjectPositions(const Model& m, Points& x,
+bool ConstraintSolver::ProjectPositions(const LineModel& m, Points& x,
                                         double tolerance) {
   for (int it = 0; it < 50; ++it) {
     ComputeGeometry(x, geometry_);
@@ -103,7 +103,7 @@ bool ConstraintSolver::ProjectPositions(const Model& m, Points& x,
   return false;
 }
 
-void ConstraintSolver::ProjectVelocities(const Model& m, const Points& x,
+void ConstraintSolver::ProjectVelocities(const LineModel& m, const Points& x,
                                          Points& v) {
   ComputeGeometry(x, geometry_);
   Assemble(m, geometry_);

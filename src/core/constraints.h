@@ -13,7 +13,7 @@
 
 #include "core/forces.h"
 #include "core/inputs.h"
-#include "core/model.h"
+#include "core/line_model.h"
 
 namespace cablefilm {
 
@@ -21,24 +21,24 @@ namespace cablefilm {
 class ConstraintSolver {
  public:
   ConstraintSolver() = default;
-  explicit ConstraintSolver(const Model& m);
+  explicit ConstraintSolver(const LineModel& m);
 
   // Tensions T and accelerations a at (x, v, t). Fills ws (geometry, force with tension).
-  void Accelerations(const Model& m, const Inputs& in, const Water& water, double t,
+  void Accelerations(const LineModel& m, const Inputs& in, const Water& water, double t,
                      const Points& x, const Points& v, ForceWorkspace& ws, Points& a);
   // Moves the free stations of x (mass-weighted, least motion) until every link has its rest
   // length to `tolerance` relative. Returns false if it cannot (ends pulled too far apart).
-  bool ProjectPositions(const Model& m, Points& x, double tolerance);
+  bool ProjectPositions(const LineModel& m, Points& x, double tolerance);
   // Removes the velocity components that would change link lengths.
-  void ProjectVelocities(const Model& m, const Points& x, Points& v);
+  void ProjectVelocities(const LineModel& m, const Points& x, Points& v);
 
  private:
   // Assembles the constraint matrix for tangents t (from ws geometry) with inverse inertias.
-  void Assemble(const Model& m, const LinkGeometry& g);
+  void Assemble(const LineModel& m, const LinkGeometry& g);
   // Thomas algorithm on (lower_, diag_, upper_) with rhs_ -> rhs_.
   bool Solve();
   // dx_j = W_j (lambda_j t_j - lambda_{j-1} t_{j-1}) for the free stations.
-  void Distribute(const Model& m, const LinkGeometry& g, const Eigen::VectorXd& lambda,
+  void Distribute(const LineModel& m, const LinkGeometry& g, const Eigen::VectorXd& lambda,
                   Points& dx) const;
 
   std::vector<Mat> inverse_inertia_;  // W_j = M_j^-1 [1/kg]

@@ -7,20 +7,20 @@
 
 namespace cablefilm {
 
-Vec HeldEndLoad(const Model& m, const LinkGeometry& g, const Points& station_force, int j,
+Vec HeldEndLoad(const LineModel& m, const LinkGeometry& g, const Points& station_force, int j,
                 const Vec& a) {
   return station_force.col(j) - StationInertia(m, g, j) * a;
 }
 
-Vec FreeEndPull(const Model& m, const ForceWorkspace& forces, int e) {
+Vec FreeEndPull(const LineModel& m, const ForceWorkspace& forces, int e) {
   const int k = e == 0 ? 0 : m.line.links - 1;  // the end link k+1/2
   const Vec pull = forces.tension[k] * forces.geometry.tangent.col(k);
   return e == 0 ? pull : Vec(-pull);
 }
 
-EndLoads::EndLoads(const Model& m) : station_force_(Points::Zero(kDim, m.stations())) {}
+EndLoads::EndLoads(const LineModel& m) : station_force_(Points::Zero(kDim, m.stations())) {}
 
-void EndLoads::Compute(const Model& m, const Data& d, const Inputs& in) {
+void EndLoads::Compute(const LineModel& m, const LineData& d, const Inputs& in) {
   if (station_force_.cols() != m.stations()) station_force_ = Points::Zero(kDim, m.stations());
   ComputeStationForces(m, d.water, d.forces.geometry, d.forces.tension, d.state.v,
                        station_force_);

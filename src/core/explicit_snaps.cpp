@@ -18,11 +18,11 @@ double SnapWindow(const SnapMonitor& snaps) {
   return kSnapWindowCrossings * crossing + kSnapWindowRises * rise;
 }
 
-bool StepsThroughSnaps(const Data& d) {
+bool StepsThroughSnaps(const LineData& d) {
   return d.options.explicit_snaps && d.scratch.max_substep > 0 && d.scratch.snap_window > 0;
 }
 
-bool SnapsUnresolved(const Model& m, const Data& d, double h) {
+bool SnapsUnresolved(const LineModel& m, const LineData& d, double h) {
   const State& s = d.state;
   const Scratch& w = d.scratch;
   const LinkGeometry& g = d.forces.geometry;  // the trial step's end
@@ -46,7 +46,7 @@ bool SnapsUnresolved(const Model& m, const Data& d, double h) {
   return false;
 }
 
-void EnterExplicitWindow(const Model& m, Data& d, const Inputs& in, double h) {
+void EnterExplicitWindow(const LineModel& m, LineData& d, const Inputs& in, double h) {
   State& s = d.state;
   // The forces of the state (the trial step left its own in d.forces), and its accelerations,
   // which the explicit step carries.
@@ -65,7 +65,7 @@ void EnterExplicitWindow(const Model& m, Data& d, const Inputs& in, double h) {
   ++d.stats.snap_windows;
 }
 
-void StepExplicitWindow(const Model& m, Data& d, const Inputs& in, double t_end) {
+void StepExplicitWindow(const LineModel& m, LineData& d, const Inputs& in, double t_end) {
   State& s = d.state;
   // A window ending a rounding short of t_end is taken to it (no sliver of an implicit step).
   if (d.explicit_until < t_end && t_end - d.explicit_until < 1e-9 * d.scratch.snap_window)
@@ -86,7 +86,7 @@ void StepExplicitWindow(const Model& m, Data& d, const Inputs& in, double t_end)
   }
   d.stats.explicit_steps += d.stats.steps - before;
   if (s.t < d.explicit_until) return;
-  // The implicit scheme starts afresh from the state, as at t = 0 (MakeData): its acceleration
+  // The implicit scheme starts afresh from the state, as at t = 0 (MakeLineData): its acceleration
   // memory the state's true accelerations (the explicit step's a is at its predicted velocity).
   ComputeAccelerations(m, in, d.water, s.t, s.x, s.v, d.forces, d.a);
   d.abar = d.abar_before = d.a;

@@ -19,7 +19,7 @@
 // a snap whose load is below kSnapLoadFraction of the line's largest tension stays with the
 // implicit step (a grounded chain's links snap taut at millimetres per second at every
 // touchdown: explicit steps there would cost the explicit scheme's price for nothing).
-#include "core/data.h"
+#include "core/line_data.h"
 
 namespace cablefilm {
 
@@ -42,22 +42,22 @@ double SnapWindow(const SnapMonitor& snaps);
 
 // Whether explicit steps through snaps are on (StepOptions::explicit_snaps) and possible (the
 // explicit scheme's substep is known).
-bool StepsThroughSnaps(const Data& d);
+bool StepsThroughSnaps(const LineData& d);
 
 // After an implicit trial step of h [s] from the state (its end in d.scratch, its link
 // lengths and tensions in d.forces): a link that was slack at the state and is taut at the
 // step's end, within a step longer than kResolvedSnapFraction of its tau, with a snap load
 // above kSnapLoadFraction of the largest tension.
-bool SnapsUnresolved(const Model& m, const Data& d, double h);
+bool SnapsUnresolved(const LineModel& m, const LineData& d, double h);
 
 // Leaves the implicit step of h [s] that snapped: the state's forces and (true) accelerations
-// computed, the explicit window opened (Data::explicit_until) over that step and SnapWindow
+// computed, the explicit window opened (LineData::explicit_until) over that step and SnapWindow
 // after it (the snap fell somewhere within the step).
-void EnterExplicitWindow(const Model& m, Data& d, const Inputs& in, double h);
+void EnterExplicitWindow(const LineModel& m, LineData& d, const Inputs& in, double h);
 
 // Explicit steps from the state up to t_end [s] or the window's end, whichever is first; at the
 // window's end the implicit scheme's memory is made from the state (accelerations computed:
 // the scheme starts afresh, as at t = 0).
-void StepExplicitWindow(const Model& m, Data& d, const Inputs& in, double t_end);
+void StepExplicitWindow(const LineModel& m, LineData& d, const Inputs& in, double t_end);
 
 }  // namespace cablefilm

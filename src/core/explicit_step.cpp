@@ -11,7 +11,7 @@ namespace {
 // The positions x_{n+1} of a step h into scratch.x (prescribed ends exact at t + h), with
 // v_{n+1/2} (scratch.v) and the predicted v_{n+1} (scratch.v_pred) of the free stations; true
 // if a link changes between slack and taut in it.
-bool Drift(const Model& m, Data& d, const Inputs& in, double h) {
+bool Drift(const LineModel& m, LineData& d, const Inputs& in, double h) {
   const State& s = d.state;
   Scratch& w = d.scratch;
   for (int j : {0, m.line.links})
@@ -37,7 +37,7 @@ bool Drift(const Model& m, Data& d, const Inputs& in, double h) {
 
 // False if a link changing between slack and taut in the drifted step h has an energy error
 // above the bounds (explicit_step.h).
-bool SnapsResolved(const Model& m, const Data& d, double h) {
+bool SnapsResolved(const LineModel& m, const LineData& d, double h) {
   const State& s = d.state;
   const Scratch& w = d.scratch;
   const LinkGeometry& g = d.forces.geometry;
@@ -84,7 +84,7 @@ bool SnapsResolved(const Model& m, const Data& d, double h) {
 }
 
 // Completes the drifted step: velocities, accelerations at t + h.
-void Commit(const Model& m, Data& d, const Inputs& in, double h) {
+void Commit(const LineModel& m, LineData& d, const Inputs& in, double h) {
   State& s = d.state;
   Scratch& w = d.scratch;
   const double t1 = s.t + h;
@@ -105,7 +105,7 @@ void Commit(const Model& m, Data& d, const Inputs& in, double h) {
 }
 
 // A fixed step dt as it is (a dt above the stability limit blows up).
-void FixedStep(const Model& m, Data& d, const Inputs& in, double dt) {
+void FixedStep(const LineModel& m, LineData& d, const Inputs& in, double dt) {
   State& s = d.state;
   Points& v_pred = d.scratch.v_pred;
   const double t1 = s.t + dt;
@@ -133,7 +133,7 @@ void FixedStep(const Model& m, Data& d, const Inputs& in, double dt) {
 
 }  // namespace
 
-void ExplicitStep(const Model& m, Data& d, const Inputs& in, double dt) {
+void ExplicitStep(const LineModel& m, LineData& d, const Inputs& in, double dt) {
   State& s = d.state;
   if (!(d.options.safety_factor > 0)) {
     FixedStep(m, d, in, dt);

@@ -16,19 +16,19 @@
 // in 20 s at 0.8 of the limit). The stability limit itself is not the cause: it holds in every
 // state (see stability.h).
 //
-// With automatic steps (StepOptions::safety_factor > 0) each step asked of Step() is cut into
+// With automatic steps (StepOptions::safety_factor > 0) each step asked of StepLine() is cut into
 // 2^k equal substeps, k chosen as the run goes: before a substep is taken its positions are predicted
 // (they are explicit: x_n + h v_{n+1/2}), and if a link would change between slack and taut with
 // |delta| above kSnapEnergyFraction of that link's own energy (the kinetic energy of its two
 // stations' motion along it, at the start or the end of the step, with their reduced mass, plus
 // its strain energy) and above kCableEnergyFloor of the whole cable's kinetic and strain energy,
 // k is raised until it is not. k stays while links keep changing, and comes down one level after
-// kQuietSteps steps asked of Step() without any. The energy error at a snap is then O(h^2) of
+// kQuietSteps steps asked of StepLine() without any. The energy error at a snap is then O(h^2) of
 // the snap's energy, as elsewhere, and the energy is conserved (without drag) to the scheme's
 // O(h^2): on the whipping chain k settles at 3 (0.1 of the limit), with the energy error of a
 // fixed 0.1 of the limit. A case that never goes slack takes the steps asked, exactly as with
 // fixed steps; the check costs O(s) per step (3 % of a step on case P63).
-#include "core/data.h"
+#include "core/line_data.h"
 
 namespace cablefilm {
 
@@ -36,12 +36,12 @@ namespace cablefilm {
 constexpr double kSnapEnergyFraction = 1e-2;
 // ... or as a fraction of the cable's kinetic + strain energy (a change too small to matter).
 constexpr double kCableEnergyFloor = 1e-8;
-// Steps asked of Step() without a link changing between slack and taut before k comes down.
+// Steps asked of StepLine() without a link changing between slack and taut before k comes down.
 constexpr int kQuietSteps = 64;
 // The finest subdivision: 2^kMaxRefinement substeps per step asked.
 constexpr int kMaxRefinement = 24;
 
 // The explicit scheme's step of dt [s] (data.options.safety_factor > 0: automatic substeps).
-void ExplicitStep(const Model& m, Data& d, const Inputs& in, double dt);
+void ExplicitStep(const LineModel& m, LineData& d, const Inputs& in, double dt);
 
 }  // namespace cablefilm

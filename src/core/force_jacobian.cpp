@@ -30,7 +30,7 @@ struct LinkExtras {
 // q q^T / s - s t t^T. No matrix is formed: entries stored one by one and then read as a
 // matrix stalled the processor's store forwarding (a third of this function's samples).
 [[gnu::always_inline]] inline void AddLinkBlocks(
-    const Model& m, int k, const Vec& t, double dTdL, double TL, double drag, double s,
+    const LineModel& m, int k, const Vec& t, double dTdL, double TL, double drag, double s,
     const Vec& q, double tw, double L, const LinkExtras& x, double kv, bool profile,
     BlockTridiagonal& system) {
   const int j0 = m.first_free(), j1 = m.last_free();
@@ -71,7 +71,7 @@ struct LinkExtras {
 
 }  // namespace
 
-void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
+void AddForceJacobian(const LineModel& m, const Water& water, const LinkGeometry& g,
                       const Eigen::VectorXd& tension, const Points& v, double kv,
                       BlockTridiagonal& system) {
   const bool profile = !m.env.current_profile.empty();
@@ -207,7 +207,7 @@ void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
   }
 }
 
-void SetInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
+void SetInertiaJacobian(const LineModel& m, const LinkGeometry& g, const Points& a,
                         double ka, BlockTridiagonal& system) {
   const int j0 = m.first_free(), j1 = m.last_free();
   // Each row's blocks cleared where its inertia is added (a separate pass over the 2 MB of a

@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 
 #include "core/block_tridiagonal.h"
-#include "core/model.h"
+#include "core/line_model.h"
 #include "core/forces.h"
 
 namespace cablefilm {
@@ -14,14 +14,14 @@ namespace cablefilm {
 // links' normal and tangential drag through
 // both their orientation and the relative velocity, and the prisms' drag. kv = dv/dx of the
 // time-stepping scheme (0 for statics). `g` and `tension` must be those of x.
-void AddForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
+void AddForceJacobian(const LineModel& m, const Water& water, const LinkGeometry& g,
                       const Eigen::VectorXd& tension, const Points& v, double kv,
                       BlockTridiagonal& system);
 
 // Sets the blocks of `system` (not its right-hand side) to  ka M(x) + d(M(x) a)/dx: the inertia
 // of eq. (1) with the dependence of the normal and tangential added mass on the links'
 // orientation. ka = da/dx of the time-stepping scheme.
-void SetInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
+void SetInertiaJacobian(const LineModel& m, const LinkGeometry& g, const Points& a,
                         double ka, BlockTridiagonal& system);
 
 }  // namespace cablefilm

@@ -28,7 +28,7 @@ void ComputeGeometry(const Points& x, LinkGeometry& g) {
   }
 }
 
-void ComputeGeometry(const Model& m, const Water& water, double t, const Points& x,
+void ComputeGeometry(const LineModel& m, const Water& water, double t, const Points& x,
                      LinkGeometry& g) {
   ComputeGeometry(x, g);
   if (m.has_waves()) ComputeSea(m, water, t, x, g.sea);
@@ -36,14 +36,14 @@ void ComputeGeometry(const Model& m, const Water& water, double t, const Points&
 }
 
 
-void ComputeHookeTensions(const Model& m, const LinkGeometry& g, Eigen::VectorXd& tension) {
+void ComputeHookeTensions(const LineModel& m, const LinkGeometry& g, Eigen::VectorXd& tension) {
   for (int j = 0; j < m.line.links; ++j) {
     const double strain = g.length[j] / m.line.rest_length[j] - 1.0;
     tension[j] = strain > 0 ? m.line.axial_stiffness[j] * strain : 0.0;
   }
 }
 
-void AddAxialDamping(const Model& m, const LinkGeometry& g, const Points& v,
+void AddAxialDamping(const LineModel& m, const LinkGeometry& g, const Points& v,
                      Eigen::VectorXd& tension) {
   if (m.line.axial_damping.size() == 0) return;
   for (int j = 0; j < m.line.links; ++j) {
@@ -54,13 +54,13 @@ void AddAxialDamping(const Model& m, const LinkGeometry& g, const Points& v,
   }
 }
 
-void ComputeTensions(const Model& m, const LinkGeometry& g, const Points& v,
+void ComputeTensions(const LineModel& m, const LinkGeometry& g, const Points& v,
                      Eigen::VectorXd& tension) {
   ComputeHookeTensions(m, g, tension);
   AddAxialDamping(m, g, v, tension);
 }
 
-SeabedReaction SeabedNormal(const Model& m, int j, double p, double vy) {
+SeabedReaction SeabedNormal(const LineModel& m, int j, double p, double vy) {
   const double spring = m.line.seabed_stiffness[j] * p, dashpot = -m.line.seabed_damping[j] * vy;
   SeabedReaction r;
   if (dashpot <= -spring) return r;  // lifting off faster than the spring lets go: no pull
@@ -81,7 +81,7 @@ namespace {
 // (seabed_friction.h; none without anchors: a state at rest, statics) or smoothed,
 // -mu N tanh(|v_h| / v_f) v_h / |v_h| against the sliding velocity v_h (force_jacobian.cpp
 // differentiates the same expressions).
-void AddSeabedForces(const Model& m, const LinkGeometry& g, const Points& v, Points& force) {
+void AddSeabedForces(const LineModel& m, const LinkGeometry& g, const Points& v, Points& force) {
   const SeabedSpec& bed = m.env.seabed;
   const bool sticks = HasStickSlip(m);
   for (int j = 0; j <= m.line.links; ++j) {
@@ -103,7 +103,7 @@ void AddSeabedForces(const Model& m, const LinkGeometry& g, const Points& v, Poi
 
 }  // namespace
 
-void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g,
+void AddExternalForces(const LineModel& m, const Water& water, const LinkGeometry& g,
                        const Points& v, Points& force) {
   if (UsesSea(m, g)) {  // wave_forces.cpp: drag, inertia, weight and buoyancy in waves
     AddWaveExternalForces(m, water, g, v, force);
@@ -148,7 +148,7 @@ void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g
   if (m.env.seabed.present) AddSeabedForces(m, g, v, force);
 }
 
-void ComputeStationForces(const Model& m, const Water& water, const LinkGeometry& g,
+void ComputeStationForces(const LineModel& m, const Water& water, const LinkGeometry& g,
                           const Eigen::VectorXd& tension, const Points& v, Points& force) {
   force.setZero();
   for (int j = 0; j < m.line.links; ++j) {
@@ -163,7 +163,7 @@ namespace {
 
 // Whether the inertia takes the wet shares of the added masses: with the sea's forces, when
 // the sea's state is there (a geometry made without the model's water has none: all wet).
-bool WetInertia(const Model& m, const LinkGeometry& g) {
+bool WetInertia(const LineModel& m, const LinkGeometry& g) {
   return UsesSea(m, g) && g.sea.wet.size() == m.stations();
 }
 
@@ -171,7 +171,7 @@ bool WetInertia(const Model& m, const LinkGeometry& g) {
 // came in; tested at every station, those cost P63 at 6000 links a few per cent) or with the
 // wet shares.
 template <bool kWet>
-void AddStationInertiaOf(const Model& m, const LinkGeometry& g, int j, double scale, Mat& block) {
+void AddStationInertiaOf(const LineModel& m, const LinkGeometry& g, int j, double scale, Mat& block) {
   // m_j + m^x_j on the diagonal, plus half the entrained-fluid mass e of each adjoining link
   // across it, e (I - t t^T) / 2: the I, J and -K terms of eq. (1) (I - t t^T = n n^T in the
   // plane); and half its tangential added mass e^t along it, e^t t t^T / 2 (0 unless given).
@@ -226,7 +226,7 @@ void AddStationInertiaOf(const Model& m, const LinkGeometry& g, int j, double sc
 }
 
 template <bool kWet>
-Vec StationInertiaTimesOf(const Model& m, const LinkGeometry& g, int j, const Vec& a) {
+Vec StationInertiaTimesOf(const LineModel& m, const LinkGeometry& g, int j, const Vec& a) {
   // (m_j + m^x_j) a on the diagonal; each adjoining link's e (a - t (t . a)) / 2 across it and
   // e^t t (t . a) / 2 along it; with the sea's forces their wet shares (AddStationInertia).
   Vec diagonal = (m.line.cable_mass[j] + m.line.prism_mass.col(j).array()).matrix();
@@ -248,23 +248,23 @@ Vec StationInertiaTimesOf(const Model& m, const LinkGeometry& g, int j, const Ve
 
 }  // namespace
 
-void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scale, Mat& block) {
+void AddStationInertia(const LineModel& m, const LinkGeometry& g, int j, double scale, Mat& block) {
   if (WetInertia(m, g)) AddStationInertiaOf<true>(m, g, j, scale, block);
   else AddStationInertiaOf<false>(m, g, j, scale, block);
 }
 
-Vec StationInertiaTimes(const Model& m, const LinkGeometry& g, int j, const Vec& a) {
+Vec StationInertiaTimes(const LineModel& m, const LinkGeometry& g, int j, const Vec& a) {
   return WetInertia(m, g) ? StationInertiaTimesOf<true>(m, g, j, a)
                           : StationInertiaTimesOf<false>(m, g, j, a);
 }
 
-Mat StationInertia(const Model& m, const LinkGeometry& g, int j) {
+Mat StationInertia(const LineModel& m, const LinkGeometry& g, int j) {
   Mat M = Mat::Zero();
   AddStationInertia(m, g, j, 1.0, M);
   return M;
 }
 
-void ComputeAccelerations(const Model& m, const Inputs& in, const Water& water, double t,
+void ComputeAccelerations(const LineModel& m, const Inputs& in, const Water& water, double t,
                           const Points& x, const Points& v, ForceWorkspace& ws, Points& a) {
   ComputeGeometry(m, water, t, x, ws.geometry);
   ComputeTensions(m, ws.geometry, v, ws.tension);
@@ -277,7 +277,7 @@ void ComputeAccelerations(const Model& m, const Inputs& in, const Water& water, 
   if (m.ends.end.prescribed()) a.col(m.line.links) = EndAcceleration(m, in, m.line.links, t);
 }
 
-double KineticEnergy(const Model& m, const LinkGeometry& g, const Points& v) {
+double KineticEnergy(const LineModel& m, const LinkGeometry& g, const Points& v) {
   double e = 0;
   for (int j = 0; j <= m.line.links; ++j) {
     const Vec vj = v.col(j);
@@ -286,7 +286,7 @@ double KineticEnergy(const Model& m, const LinkGeometry& g, const Points& v) {
   return e;
 }
 
-double ElasticEnergy(const Model& m, const LinkGeometry& g) {
+double ElasticEnergy(const LineModel& m, const LinkGeometry& g) {
   double e = 0;
   for (int j = 0; j < m.line.links; ++j) {
     const double stretch = g.length[j] - m.line.rest_length[j];
@@ -295,7 +295,7 @@ double ElasticEnergy(const Model& m, const LinkGeometry& g) {
   return e;
 }
 
-double PotentialEnergy(const Model& m, const Points& x) {
+double PotentialEnergy(const LineModel& m, const Points& x) {
   double e = 0;
   for (int j = 0; j <= m.line.links; ++j) e += m.line.net_weight[j] * x(kVertical, j);
   if (m.env.seabed.present) e += SeabedEnergy(m, x);
@@ -303,7 +303,7 @@ double PotentialEnergy(const Model& m, const Points& x) {
   return e;
 }
 
-double SeabedEnergy(const Model& m, const Points& x) {
+double SeabedEnergy(const LineModel& m, const Points& x) {
   if (!m.env.seabed.present) return 0.0;
   double e = 0;
   for (int j = 0; j <= m.line.links; ++j) {

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "core/inputs.h"
-#include "core/model.h"
+#include "core/line_model.h"
 
 namespace cablefilm {
 
@@ -42,7 +42,7 @@ struct LinkGeometry {
   // The stick-slip friction (seabed_friction.h; empty without it, and in statics):
   Points friction_anchor;  // a_j, where station j last slid on the bed [m] (kDim x s+1, y 0):
                            // state, not geometry, carried here so that every force
-                           // evaluation of a Data sees it; moved only when a step is accepted
+                           // evaluation of a LineData sees it; moved only when a step is accepted
   Points stick;            // x_h - a_j [m], the shear spring's stretch (kDim x s+1)
 };
 
@@ -59,12 +59,12 @@ struct ForceWorkspace {
 void ComputeGeometry(const Points& x, LinkGeometry& g);
 // The same, and with waves the sea of `water` at time t [s] (wave_forces.h): what the forces of
 // a simulation at time t need. Without waves it is the one above.
-void ComputeGeometry(const Model& m, const Water& water, double t, const Points& x,
+void ComputeGeometry(const LineModel& m, const Water& water, double t, const Points& x,
                      LinkGeometry& g);
 
 // Whether the forces of geometry g go through the sea's (wave_forces.h): with waves, unless
 // the sea is still and over every station (SeaState::still_under).
-inline bool UsesSea(const Model& m, const LinkGeometry& g) {
+inline bool UsesSea(const LineModel& m, const LinkGeometry& g) {
   return m.has_waves() && !g.sea.still_under;
 }
 
@@ -83,15 +83,15 @@ inline Mat NormalDragDerivative(const Vec& w_n) {
 }
 
 // Eq. (2), with a compressed link slack: T = max(0, sigma E (L/l - 1)).
-void ComputeHookeTensions(const Model& m, const LinkGeometry& g, Eigen::VectorXd& tension);
+void ComputeHookeTensions(const LineModel& m, const LinkGeometry& g, Eigen::VectorXd& tension);
 
 // Internal axial damping (Kelvin-Voigt, not in the paper): a taut link's tension gains
 // c_{j+1/2} dL/dt, dL/dt = t . (v_{j+1} - v_j), and stays >= 0 (a cable cannot push); a slack
 // link has none. No-op when the model has no damping.
-void AddAxialDamping(const Model& m, const LinkGeometry& g, const Points& v,
+void AddAxialDamping(const LineModel& m, const LinkGeometry& g, const Points& v,
                      Eigen::VectorXd& tension);
 // The tension of the dynamics: Hooke's law plus the axial damping.
-void ComputeTensions(const Model& m, const LinkGeometry& g, const Points& v,
+void ComputeTensions(const LineModel& m, const LinkGeometry& g, const Points& v,
                      Eigen::VectorXd& tension);
 
 // The seabed's normal reaction N on station j at penetration p > 0 with vertical velocity vy
@@ -105,13 +105,13 @@ inline double FrictionShape(double u) {
 }
 
 // The seabed's normal reaction N on station j at penetration p > 0 with vertical velocity vy
-// (model.h, SeabedSpec), and its derivatives; N = 0 with no derivative where it would pull.
+// (line_model.h, SeabedSpec), and its derivatives; N = 0 with no derivative where it would pull.
 struct SeabedReaction {
   double N = 0;       // [N]
   double dN_dp = 0;   // [N/m]
   double dN_dvy = 0;  // [N s/m]
 };
-SeabedReaction SeabedNormal(const Model& m, int j, double p, double vy);
+SeabedReaction SeabedNormal(const LineModel& m, int j, double p, double vy);
 
 // The smoothed friction's (FrictionModel::kSmoothed) direction and size without mu N:
 // tanh(|v_h| / v_f) v_h / |v_h| for the sliding velocity v_h = (v_x, 0, v_z) of a station on
@@ -125,7 +125,7 @@ inline Vec SlidingDirection(const Vec& v, const SeabedSpec& bed) {
 
 // force_j = T_{j+1/2} t_{j+1/2} - T_{j-1/2} t_{j-1/2} + (X_j, Y_j), for every station.
 // v: station velocities; the current (of `water`) enters through the relative velocity.
-void ComputeStationForces(const Model& m, const Water& water, const LinkGeometry& g,
+void ComputeStationForces(const LineModel& m, const Water& water, const LinkGeometry& g,
                           const Eigen::VectorXd& tension, const Points& v, Points& force);
 
 // The external part (X_j, Y_j) only: drag (normal, and tangential when given), prism drag,
@@ -133,32 +133,32 @@ void ComputeStationForces(const Model& m, const Water& water, const LinkGeometry
 // reaction and friction (SeabedSpec) on the stations below it. With waves also the water's
 // velocity in the drag, its acceleration (Morison inertia) and the surface (wave_forces.h);
 // g.sea must then be filled (ComputeGeometry with the model and the time).
-void AddExternalForces(const Model& m, const Water& water, const LinkGeometry& g,
+void AddExternalForces(const LineModel& m, const Water& water, const LinkGeometry& g,
                        const Points& v, Points& force);
 
 // The inertia tensor of eq. (1) at station j ([[I_j, -K_j], [-K_j, J_j]] in the plane) [kg],
 // with half of each adjoining link's tangential added mass along it when given. With waves the
 // added masses are those of the wet part (g.sea.wet; all wet if g.sea is empty).
-Mat StationInertia(const Model& m, const LinkGeometry& g, int j);
+Mat StationInertia(const LineModel& m, const LinkGeometry& g, int j);
 // block += scale StationInertia(m, g, j), entry by entry (the Newton matrix's diagonal blocks).
-void AddStationInertia(const Model& m, const LinkGeometry& g, int j, double scale, Mat& block);
+void AddStationInertia(const LineModel& m, const LinkGeometry& g, int j, double scale, Mat& block);
 // StationInertia(m, g, j) * a without the matrix (the implicit scheme's residual, every
 // station every Newton iteration) [N].
-Vec StationInertiaTimes(const Model& m, const LinkGeometry& g, int j, const Vec& a);
+Vec StationInertiaTimes(const LineModel& m, const LinkGeometry& g, int j, const Vec& a);
 
 // Accelerations of the stations whose motion is computed (free stations) in `water`; prescribed
 // ends get their exact acceleration (as the inputs move them). Fills ws.geometry, ws.tension and
 // ws.force along the way.
-void ComputeAccelerations(const Model& m, const Inputs& in, const Water& water, double t,
+void ComputeAccelerations(const LineModel& m, const Inputs& in, const Water& water, double t,
                           const Points& x, const Points& v, ForceWorkspace& ws, Points& a);
 
 // Energies for conservation checks [J]: kinetic (with the normal added mass), elastic strain
 // energy of the links, and potential of the net weight (y = 0 datum) plus the strain energy of
 // the seabed's springs (k l_j p_j^2 / 2 for the stations below it) and, with waves, of the
 // buoyancy lost above the still water level (SurfaceBuoyancyEnergy).
-double KineticEnergy(const Model& m, const LinkGeometry& g, const Points& v);
-double ElasticEnergy(const Model& m, const LinkGeometry& g);
-double PotentialEnergy(const Model& m, const Points& x);
-double SeabedEnergy(const Model& m, const Points& x);  // the springs only
+double KineticEnergy(const LineModel& m, const LinkGeometry& g, const Points& v);
+double ElasticEnergy(const LineModel& m, const LinkGeometry& g);
+double PotentialEnergy(const LineModel& m, const Points& x);
+double SeabedEnergy(const LineModel& m, const Points& x);  // the springs only
 
 }  // namespace cablefilm

@@ -8,7 +8,7 @@ namespace {
 
 // a_{n+1}, v_{n+1} and abar_{n+1} (scratch a, v, abar) implied by the positions x (free
 // stations).
-void Kinematics(const Model& m, Data& d, const GeneralizedAlpha& c, double h, const Points& x) {
+void Kinematics(const LineModel& m, LineData& d, const GeneralizedAlpha& c, double h, const Points& x) {
   const State& s = d.state;
   Scratch& w = d.scratch;
   // Over the free stations' columns at once (contiguous: vectorized), each entry computed as
@@ -28,7 +28,7 @@ void Kinematics(const Model& m, Data& d, const GeneralizedAlpha& c, double h, co
 
 }  // namespace
 
-void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlpha& c,
+void PredictStep(const LineModel& m, LineData& d, const Inputs& in, const GeneralizedAlpha& c,
                  double h) {
   const State& s = d.state;
   Scratch& w = d.scratch;
@@ -39,7 +39,7 @@ void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlp
   // alone: on P63 at 6000 links 1e-6 m instead of 1e-5, whose smaller turn of the links lets
   // the kept matrix converge at once (2.3 Newton iterations a step instead of 4.1, 0.6 of the
   // time; at 600 links 2.0 instead of 2.4, at 60 links 2.0 either way). Only while the line is
-  // taut and clear of the seabed (Data::smooth): where links go slack and taut or stations
+  // taut and clear of the seabed (LineData::smooth): where links go slack and taut or stations
   // land, the accelerations jump, and on the spread mooring a slope cost 7 % more iterations;
   // and only after a step no shorter than this one (a slope over a shorter step is mostly the
   // scheme's damped ringing, which the longer step multiplies: rejected steps doubled).
@@ -57,11 +57,11 @@ void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlp
   }
 }
 
-bool KeepsNewtonMatrix(const Model& m) {
+bool KeepsNewtonMatrix(const LineModel& m) {
   return !(m.env.seabed.present && m.env.seabed.friction > 0);
 }
 
-bool AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h,
+bool AssembleNewton(const LineModel& m, LineData& d, const GeneralizedAlpha& c, double h,
                     bool jacobian) {
   Scratch& w = d.scratch;
   ForceWorkspace& ws = d.forces;
@@ -91,7 +91,7 @@ bool AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h
   return same;
 }
 
-bool FindSnappingLinks(const Model& m, Data& d) {
+bool FindSnappingLinks(const LineModel& m, LineData& d) {
   Scratch& w = d.scratch;
   const std::vector<Vec>& dx = w.system.rhs;
   const LinkGeometry& g = d.forces.geometry;
@@ -106,15 +106,15 @@ bool FindSnappingLinks(const Model& m, Data& d) {
   return found;
 }
 
-void ClearSnappingLinks(Data& d) {
+void ClearSnappingLinks(LineData& d) {
   std::fill(d.scratch.snapping.begin(), d.scratch.snapping.end(), 0);
 }
 
-void KeepResidual(Data& d) { d.scratch.residual = d.scratch.system.rhs; }
+void KeepResidual(LineData& d) { d.scratch.residual = d.scratch.system.rhs; }
 
-void RestoreResidual(Data& d) { d.scratch.system.rhs = d.scratch.residual; }
+void RestoreResidual(LineData& d) { d.scratch.system.rhs = d.scratch.residual; }
 
-void AddSnappingLinks(const Model& m, Data& d) {
+void AddSnappingLinks(const LineModel& m, LineData& d) {
   Scratch& w = d.scratch;
   BlockTridiagonal& s = w.system;
   const LinkGeometry& g = d.forces.geometry;
@@ -139,7 +139,7 @@ void AddSnappingLinks(const Model& m, Data& d) {
   }
 }
 
-double CorrectionSize(const Model& m, const Data& d) {
+double CorrectionSize(const LineModel& m, const LineData& d) {
   const std::vector<Vec>& dx = d.scratch.system.rhs;
   double size = 0;
   for (int j = 0; j <= m.last_free() - m.first_free(); ++j) {
@@ -163,7 +163,7 @@ namespace {
 // vanishes (the force is linear in the step there: K l_j + C_j kv per metre), inside the
 // zone, where the next iteration sees the stick tangent. Where the answer is sliding the
 // other way, the iterations get there from the zone as from any sticking state.
-Vec FrictionStep(const Model& m, const Scratch& w, const LinkGeometry& g, double kv, int j,
+Vec FrictionStep(const LineModel& m, const Scratch& w, const LinkGeometry& g, double kv, int j,
                  const Vec& dx) {
   const SeabedSpec& bed = m.env.seabed;
   const double p = bed.y - w.x(kVertical, j);  // penetration [m]
@@ -184,7 +184,7 @@ Vec FrictionStep(const Model& m, const Scratch& w, const LinkGeometry& g, double
 
 }  // namespace
 
-double ApplyCorrection(const Model& m, Data& d, double kv, bool* contact_changed, bool* cut) {
+double ApplyCorrection(const LineModel& m, LineData& d, double kv, bool* contact_changed, bool* cut) {
   Scratch& w = d.scratch;
   const BlockTridiagonal& system = w.system;
   const SeabedSpec& bed = m.env.seabed;
@@ -217,14 +217,14 @@ double ApplyCorrection(const Model& m, Data& d, double kv, bool* contact_changed
   return dx_max;
 }
 
-void FinishSolve(const Model& m, Data& d, const GeneralizedAlpha& c, double h) {
+void FinishSolve(const LineModel& m, LineData& d, const GeneralizedAlpha& c, double h) {
   ForceWorkspace& ws = d.forces;
   Kinematics(m, d, c, h, d.scratch.x);
   ComputeGeometry(m, d.water, d.state.t + h, d.scratch.x, ws.geometry);
   ComputeTensions(m, ws.geometry, d.scratch.v, ws.tension);
 }
 
-double LocalError(const Model& m, const Data& d, const GeneralizedAlpha& c, double h) {
+double LocalError(const LineModel& m, const LineData& d, const GeneralizedAlpha& c, double h) {
   // Zienkiewicz & Xie's estimate for Newmark-type schemes: the step's position error is the
   // cubic term the scheme misses, h^2 |beta - 1/6| |a_{n+1} - a_n|.
   const SeabedSpec& bed = m.env.seabed;
@@ -246,7 +246,7 @@ double LocalError(const Model& m, const Data& d, const GeneralizedAlpha& c, doub
   return h * h * std::abs(c.beta - 1.0 / 6.0) * da;
 }
 
-void SettleLandings(const Model& m, Data& d, double h) {
+void SettleLandings(const LineModel& m, LineData& d, double h) {
   // A bed damped at least critically stops a landing station within about its landing time
   // sqrt(m_j / k_j) (1 ms for steel wire, 2 ms for chain on the default bed, at any link
   // length). A step longer than that cannot resolve the stop: the scheme's answer to the
@@ -272,7 +272,7 @@ void SettleLandings(const Model& m, Data& d, double h) {
   if (settled) ComputeTensions(m, d.forces.geometry, w.v, d.forces.tension);
 }
 
-void Commit(const Model& m, Data& d, double h) {
+void Commit(const LineModel& m, LineData& d, double h) {
   State& s = d.state;
   Scratch& w = d.scratch;
   s.x.swap(w.x);
@@ -305,7 +305,7 @@ void Commit(const Model& m, Data& d, double h) {
   d.snaps.Observe(s.t, h, d.forces.geometry.length);
 }
 
-int WorstLink(const Model& m, const Data& d) {
+int WorstLink(const LineModel& m, const LineData& d) {
   int worst = 0;
   d.forces.geometry.length.cwiseQuotient(m.line.rest_length).maxCoeff(&worst);
   return worst;

@@ -1,14 +1,14 @@
 #pragma once
 // The stages of one generalized-alpha step of one line (implicit_step.h), which the one-line
-// step and the step of a system of lines (system_step.h) both run: the predictor, Newton's
+// step and the step of a system of lines (coupled_step.h) both run: the predictor, Newton's
 // system, the correction, the error estimate, the landings on the seabed, the commit; and the
-// adaptive loop around them. A line's trial values live in its Data's scratch.
+// adaptive loop around them. A line's trial values live in its LineData's scratch.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "core/cancel.h"
-#include "core/data.h"
+#include "core/line_data.h"
 #include "core/implicit_step.h"
 
 namespace cablefilm {
@@ -70,7 +70,7 @@ class NewtonConvergence {
 // The trial step of size h: positions predicted with the pseudo-acceleration carried over
 // (and its change over the last step while the line is taut), prescribed ends at their
 // positions and velocities at t + h.
-void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlpha& c,
+void PredictStep(const LineModel& m, LineData& d, const Inputs& in, const GeneralizedAlpha& c,
                  double h);
 // Newton's system at the trial positions: forces and tensions computed, the matrix
 // ka M + d(M a)/dx - dF/dx - kv dF/dv and the residual F - M a in d.scratch.system (rows: the
@@ -78,14 +78,14 @@ void PredictStep(const Model& m, Data& d, const Inputs& in, const GeneralizedAlp
 // factors: a simplified Newton iteration, BlockTridiagonal::SolveFactored); false then when a
 // link went slack or taut since that matrix was made (its axial stiffness EA / l is in it or
 // not: the kept matrix no longer holds).
-bool AssembleNewton(const Model& m, Data& d, const GeneralizedAlpha& c, double h,
+bool AssembleNewton(const LineModel& m, LineData& d, const GeneralizedAlpha& c, double h,
                     bool jacobian = true);
 // Whether a line's Newton iterations may keep their matrix (kFrozenJacobianRate): not with
 // seabed friction, whose sticking stations hold by a shear spring far stiffer than the line
 // and let go of it when they slide: a kept matrix that still holds them converges along the
 // bed as slowly as that ratio, which the rate of the largest correction does not show (the
 // rotated grounded chain of rotational_invariance_test drifted by 2 % of its peak tension).
-bool KeepsNewtonMatrix(const Model& m);
+bool KeepsNewtonMatrix(const LineModel& m);
 // Newton's linear model on the taut side for links that a step snaps taut. A slack link
 // (shorter than at rest) has no stiffness in the matrix, so a step that stretches it past its
 // rest length is blind to its tension: one link an iteration went taut while a tension wave
@@ -99,13 +99,13 @@ bool KeepsNewtonMatrix(const Model& m);
 // caller solves again), which then holds them as taut (Scratch::matrix_taut). Newton's model
 // of a link is then the piece of Hooke's law its step lands on; the model is exact where it is
 // used, so the converged step is the same.
-bool FindSnappingLinks(const Model& m, Data& d);
-void ClearSnappingLinks(Data& d);
-void AddSnappingLinks(const Model& m, Data& d);
+bool FindSnappingLinks(const LineModel& m, LineData& d);
+void ClearSnappingLinks(LineData& d);
+void AddSnappingLinks(const LineModel& m, LineData& d);
 // The residual in d.scratch.system.rhs kept before a solve, and put back (a line solved again
 // on its kept factors beside one that is re-solved for its snapping links).
-void KeepResidual(Data& d);
-void RestoreResidual(Data& d);
+void KeepResidual(LineData& d);
+void RestoreResidual(LineData& d);
 // At most this many re-solves per Newton iteration for links found snapping. A re-solve
 // refactors the whole line, a serial chain of 3x3 inverses: on the spread mooring one pass
 // took 0.86-0.93 of the CPU of none (paired runs), three passes 1.02 for 13 % fewer iterations.
@@ -117,7 +117,7 @@ constexpr int kSnappingPasses = 1;
 // seabed kept the difference (rotational_invariance_test: 3e-7 of the peak tension, 1.2e-5
 // once sliding stations' steps were cut in their stick zones; 2e-11 now). It is at least the
 // largest coordinate, so the tolerance holds in every direction.
-double CorrectionSize(const Model& m, const Data& d);
+double CorrectionSize(const LineModel& m, const LineData& d);
 // Adds the solution in d.scratch.system.rhs to the trial positions; returns its size as
 // CorrectionSize [m] (not finite if the solution is not). kv: the step's d v / d x [1/s]
 // (GeneralizedAlpha::VelocityPerPosition). `contact_changed` (optional): set when a station
@@ -125,18 +125,18 @@ double CorrectionSize(const Model& m, const Data& d);
 // set when a grounded station's step along the bed was cut short in its stick zone
 // (implicit_stages.cpp, FrictionStep): the iterate did not move by the solution then, which
 // says nothing of how near it is (NewtonConvergence::Cut).
-double ApplyCorrection(const Model& m, Data& d, double kv, bool* contact_changed = nullptr,
+double ApplyCorrection(const LineModel& m, LineData& d, double kv, bool* contact_changed = nullptr,
                        bool* cut = nullptr);
 // The converged trial step: its velocities, accelerations and tensions.
-void FinishSolve(const Model& m, Data& d, const GeneralizedAlpha& c, double h);
+void FinishSolve(const LineModel& m, LineData& d, const GeneralizedAlpha& c, double h);
 // The local position error of the solved step [m].
-double LocalError(const Model& m, const Data& d, const GeneralizedAlpha& c, double h);
+double LocalError(const LineModel& m, const LineData& d, const GeneralizedAlpha& c, double h);
 // Brings to rest (vertically) the stations that landed on the seabed in the solved step.
-void SettleLandings(const Model& m, Data& d, double h);
+void SettleLandings(const LineModel& m, LineData& d, double h);
 // Makes the solved step the state.
-void Commit(const Model& m, Data& d, double h);
+void Commit(const LineModel& m, LineData& d, double h);
 // The most stretched link now (a blow-up names it).
-int WorstLink(const Model& m, const Data& d);
+int WorstLink(const LineModel& m, const LineData& d);
 
 // The adaptive loop of an implicit step of dt [s], for one line or a system of them. `s`
 // gives: double& Time(), double& ProposedStep(), long& Rejected(), bool Solve(h),
@@ -147,13 +147,13 @@ int WorstLink(const Model& m, const Data& d);
 // scheme (explicit_snaps.h) instead of taken. The error is held below `options`' tolerance at
 // the step's start (StepOptions::ToleranceAt; 0: the steps asked, uncontrolled). Returns true
 // when dt is done, false when a step was handed off (the time then at that step's start).
-// `largest` [s]: the longest step (the interval asked of Step(), of which dt may be the rest;
+// `largest` [s]: the longest step (the interval asked of StepLine(), of which dt may be the rest;
 // 0: dt).
 template <class Stepper>
 bool AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelFlag* stop,
                            double dt, double largest = 0) {
   constexpr int kMaxRejections = 40;
-  constexpr double kSmallestStepFraction = 1e-9;  // of the interval asked of Step()
+  constexpr double kSmallestStepFraction = 1e-9;  // of the interval asked of StepLine()
   // The next step is this fraction of the one that would just meet the tolerance (the error
   // grows as h^3). 0.9 left a quarter of the spread mooring's steps rejected (its error
   // estimate varies step to step as touchdowns move and links snap taut); 0.8 halved them

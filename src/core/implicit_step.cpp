@@ -12,8 +12,8 @@ namespace {
 
 // One line through the adaptive loop (implicit_stages.h).
 struct LineStepper {
-  const Model& m;
-  Data& d;
+  const LineModel& m;
+  LineData& d;
   const Inputs& in;
   GeneralizedAlpha c;
 
@@ -92,7 +92,7 @@ GeneralizedAlpha GeneralizedAlphaCoefficients(double rho_inf) {
   return c;
 }
 
-void ImplicitStep(const Model& m, Data& d, const Inputs& in, double dt) {
+void ImplicitStep(const LineModel& m, LineData& d, const Inputs& in, double dt) {
   LineStepper stepper{m, d, in, GeneralizedAlphaCoefficients(d.options.rho_inf)};
   const double t_end = d.state.t + dt;
   // Implicit steps, and explicit ones through the snaps they hand off (explicit_snaps.h).

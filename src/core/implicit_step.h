@@ -10,14 +10,14 @@
 // damped only at third order in omega h. Each step solves M(x) a - F(x, v, t) = 0 for x_{n+1}
 // by Newton's method with the analytic Jacobian, block tridiagonal, O(s) per iteration. A step
 // whose Newton iteration fails is rejected and retried in halves. With an error tolerance the
-// step adapts to a local error estimate (never above the step asked of Step()); without one
+// step adapts to a local error estimate (never above the step asked of StepLine()); without one
 // the step asked for is taken.
-#include "core/data.h"
+#include "core/line_data.h"
 
 namespace cablefilm {
 
 // The implicit scheme's step of dt [s] (data.options: rho_inf, tolerance).
-void ImplicitStep(const Model& m, Data& d, const Inputs& in, double dt);
+void ImplicitStep(const LineModel& m, LineData& d, const Inputs& in, double dt);
 
 // Generalized-alpha's coefficients for rho_inf (Chung & Hulbert 1993).
 struct GeneralizedAlpha {

@@ -12,7 +12,7 @@ namespace {
 
 // One substep of h from d.state into the scratch's trial (x, v, a and its forces); false if the
 // positions cannot be projected back onto the rest lengths.
-bool Trial(const Model& m, Data& d, const Inputs& in, double h) {
+bool Trial(const LineModel& m, LineData& d, const Inputs& in, double h) {
   const State& s = d.state;
   Scratch& w = d.scratch;
   const double t1 = s.t + h;
@@ -39,7 +39,7 @@ bool Trial(const Model& m, Data& d, const Inputs& in, double h) {
 }
 
 // The trial's local position error estimate [m].
-double LocalError(const Model& m, const Data& d, double h) {
+double LocalError(const LineModel& m, const LineData& d, double h) {
   double da = 0;
   for (int j = m.first_free(); j <= m.last_free(); ++j)
     da = std::max(da, (d.scratch.a.col(j) - d.a.col(j)).lpNorm<Eigen::Infinity>());
@@ -47,7 +47,7 @@ double LocalError(const Model& m, const Data& d, double h) {
 }
 
 // Makes the trial the state.
-void Accept(const Model& m, Data& d, double h) {
+void Accept(const LineModel& m, LineData& d, double h) {
   Scratch& w = d.scratch;
   d.state.x.swap(w.x);
   d.state.v.swap(w.v);
@@ -64,7 +64,7 @@ void Accept(const Model& m, Data& d, double h) {
 
 }  // namespace
 
-double StableSubstep(const Model& m, const Data& d) {
+double StableSubstep(const LineModel& m, const LineData& d) {
   // Transverse waves: a station between links under tension T has stiffness T/L across them.
   // Gershgorin: omega^2 <= max_j 2 (|T_{j-1}| + |T_j|) / (m_j l); half the resulting step, as
   // the tension may rise within it.
@@ -99,7 +99,7 @@ double StableSubstep(const Model& m, const Data& d) {
   return lambda > 0 ? 0.5 * 2.0 / std::sqrt(lambda) : std::numeric_limits<double>::infinity();
 }
 
-void InextensibleStep(const Model& m, Data& d, const Inputs& in, double dt) {
+void InextensibleStep(const LineModel& m, LineData& d, const Inputs& in, double dt) {
   State& s = d.state;
   const double t_end = s.t + dt;
   const double tolerance = d.options.tolerance;

@@ -15,17 +15,17 @@
 // The transverse-wave limit is unbounded while the tensions are near zero (a chain released
 // from a horizontal line), which the error estimate is not. A substep below kSmallestSubstep of
 // the step asked, or kMaxSubstepRejections rejections in a row, ends the run with a BlowUpError.
-#include "core/data.h"
+#include "core/line_data.h"
 
 namespace cablefilm {
 
-constexpr double kSmallestSubstep = 1e-9;  // of the step asked of Step()
+constexpr double kSmallestSubstep = 1e-9;  // of the step asked of StepLine()
 constexpr int kMaxSubstepRejections = 40;
 
 // The inextensible scheme's step of dt [s] (the tensions of data.forces are the constraints').
-void InextensibleStep(const Model& m, Data& d, const Inputs& in, double dt);
+void InextensibleStep(const LineModel& m, LineData& d, const Inputs& in, double dt);
 
 // The largest stable substep for the tensions of d [s] (the transverse-wave limit).
-double StableSubstep(const Model& m, const Data& d);
+double StableSubstep(const LineModel& m, const LineData& d);
 
 }  // namespace cablefilm

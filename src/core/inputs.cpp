@@ -7,7 +7,7 @@ namespace cablefilm {
 
 double HeadingOf(const Vec& direction) { return std::atan2(direction[2], direction[0]); }
 
-Inputs SceneInputs(const Model& m) {
+Inputs SceneInputs(const LineModel& m) {
   Inputs in;
   in.current = SmoothSchedule(m.env.current);
   in.current_heading = SmoothSchedule(HeadingOf(m.env.current_direction));
@@ -17,7 +17,7 @@ Inputs SceneInputs(const Model& m) {
   return in;
 }
 
-Water SceneWater(const Model& m, double current_scale) {
+Water SceneWater(const LineModel& m, double current_scale) {
   Water w;
   w.current = m.env.current;
   w.current_scale = current_scale;
@@ -26,7 +26,7 @@ Water SceneWater(const Model& m, double current_scale) {
   return w;
 }
 
-void UpdateWater(const Model& m, const Inputs& in, double t, Water* water) {
+void UpdateWater(const LineModel& m, const Inputs& in, double t, Water* water) {
   water->current = in.current.ValueAt(t);
   water->current_scale = in.current_scale;
   // The scene's direction exactly while the heading is the scene's (no round trip through an
@@ -64,13 +64,13 @@ void UpdateWater(const Model& m, const Inputs& in, double t, Water* water) {
   wave.amplitude = 0.5 * wave.spec.height;
 }
 
-Vec WaterVelocityAt(const Model& m, const Water& w, const Vec& position, double t) {
+Vec WaterVelocityAt(const LineModel& m, const Water& w, const Vec& position, double t) {
   Vec u = CurrentAt(m, w, position[kVertical]);
   if (m.has_waves()) u += KinematicsAt(w.wave, position, t).velocity;
   return u;
 }
 
-bool HasCurrent(const Model& m, const Water& w) {
+bool HasCurrent(const LineModel& m, const Water& w) {
   const CurrentProfile& p = m.env.current_profile;
   const double c = w.current * w.current_scale;
   if (c != 0 && p.empty()) return true;
@@ -79,7 +79,7 @@ bool HasCurrent(const Model& m, const Water& w) {
   return false;
 }
 
-double MaxCurrent(const Model& m, const Water& w) {
+double MaxCurrent(const LineModel& m, const Water& w) {
   // c + profile(y) is piecewise linear in y: its extremes are at the points.
   const CurrentProfile& p = m.env.current_profile;
   const double c0 = w.current * w.current_scale;
@@ -93,7 +93,7 @@ namespace {
 // A prescribed end as the inputs move it, order 0, 1 or 2: the scene's motion (its amplitude
 // and clock scaled) and, for an end a vessel carries, the vessel's offset (its rate and its
 // second derivative for the velocity and acceleration: the ramps keep them continuous).
-Vec EndMotionAt(const Model& m, const Inputs& in, int j, double t, int order) {
+Vec EndMotionAt(const LineModel& m, const Inputs& in, int j, double t, int order) {
   const EndMotion& e = m.end_motion(j);
   Vec x = e.Evaluate(t, order, in.end_scale, in.end_clock);
   if (!e.carried()) return x;
@@ -104,15 +104,15 @@ Vec EndMotionAt(const Model& m, const Inputs& in, int j, double t, int order) {
 
 }  // namespace
 
-Vec EndPosition(const Model& m, const Inputs& in, int j, double t) {
+Vec EndPosition(const LineModel& m, const Inputs& in, int j, double t) {
   return EndMotionAt(m, in, j, t, 0);
 }
 
-Vec EndVelocity(const Model& m, const Inputs& in, int j, double t) {
+Vec EndVelocity(const LineModel& m, const Inputs& in, int j, double t) {
   return EndMotionAt(m, in, j, t, 1);
 }
 
-Vec EndAcceleration(const Model& m, const Inputs& in, int j, double t) {
+Vec EndAcceleration(const LineModel& m, const Inputs& in, int j, double t) {
   return EndMotionAt(m, in, j, t, 2);
 }
 

@@ -3,10 +3,10 @@
 // the waves' height and period, the driven ends' amplitude and clock. A run takes the scene's
 // own (SceneInputs: every schedule constant); the live view ramps them along SmoothSchedule,
 // so that nothing a control changes jumps; the static equilibrium's continuation raises the
-// current through current_scale. Step() evaluates them into the Water of the step (the current
+// current through current_scale. StepLine() evaluates them into the Water of the step (the current
 // and the wave it holds over the step, at its middle) and the ends' motion at every stage.
 #include "core/cancel.h"
-#include "core/model.h"
+#include "core/line_model.h"
 #include "core/smooth_schedule.h"
 
 namespace cablefilm {
@@ -36,7 +36,7 @@ inline bool ClockAsScene(const Inputs& in) {
 }
 
 // The model's own inputs: its current and waves, its ends as the scene moves them.
-Inputs SceneInputs(const Model& m);
+Inputs SceneInputs(const LineModel& m);
 
 // The heading [rad] from +x towards +z of a horizontal direction.
 double HeadingOf(const Vec& direction);
@@ -50,35 +50,35 @@ struct Water {
 };
 
 // The model's water, as the scene gives it (scaled by `current_scale`).
-Water SceneWater(const Model& m, double current_scale = 1.0);
+Water SceneWater(const LineModel& m, double current_scale = 1.0);
 // The water of the inputs at time t [s], from the water of the step before (`water`): the
 // current (speed and heading) and the waves' height at t; a new period or heading with the
 // phase kept at wave_phase_point (where a ship would see the wave change), so the waves' phase
 // carries over; the height held at Miche's breaking limit of the period at t. Exactly the
 // model's water while the inputs are the scene's.
-void UpdateWater(const Model& m, const Inputs& in, double t, Water* water);
+void UpdateWater(const LineModel& m, const Inputs& in, double t, Water* water);
 
 // The current's velocity at elevation y [m/s] and its y-derivative [1/s].
 // Inline, as CurrentProfile's.
-inline Vec CurrentAt(const Model& m, const Water& w, double y) {
+inline Vec CurrentAt(const LineModel& m, const Water& w, double y) {
   const CurrentProfile& p = m.env.current_profile;
   const double c = w.current * w.current_scale;
   return (p.empty() ? c : c + p.At(y, w.current_scale)) * w.current_direction;
 }
-inline Vec CurrentSlope(const Model& m, const Water& w, double y) {
+inline Vec CurrentSlope(const LineModel& m, const Water& w, double y) {
   const CurrentProfile& p = m.env.current_profile;
   return (p.empty() ? 0.0 : p.Slope(y, w.current_scale)) * w.current_direction;
 }
 // The water's velocity at `position` [m] and time t [s]: the current at its elevation and,
 // with waves, their orbital velocity there (held at the surface's above it) [m/s].
-Vec WaterVelocityAt(const Model& m, const Water& w, const Vec& position, double t);
-bool HasCurrent(const Model& m, const Water& w);    // anywhere non-zero
-double MaxCurrent(const Model& m, const Water& w);  // the largest |c(y)| over all y [m/s]
+Vec WaterVelocityAt(const LineModel& m, const Water& w, const Vec& position, double t);
+bool HasCurrent(const LineModel& m, const Water& w);    // anywhere non-zero
+double MaxCurrent(const LineModel& m, const Water& w);  // the largest |c(y)| over all y [m/s]
 
 // A prescribed end's position [m], velocity [m/s] and acceleration [m/s^2] at t [s] (j = 0 or
 // s), as the inputs move it (a carried end with the offset's).
-Vec EndPosition(const Model& m, const Inputs& in, int j, double t);
-Vec EndVelocity(const Model& m, const Inputs& in, int j, double t);
-Vec EndAcceleration(const Model& m, const Inputs& in, int j, double t);
+Vec EndPosition(const LineModel& m, const Inputs& in, int j, double t);
+Vec EndVelocity(const LineModel& m, const Inputs& in, int j, double t);
+Vec EndAcceleration(const LineModel& m, const Inputs& in, int j, double t);
 
 }  // namespace cablefilm

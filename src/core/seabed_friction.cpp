@@ -24,7 +24,7 @@ StickSlipForce StickSlipFriction(double mu, double N, double K, double C, const 
   return f;
 }
 
-void ResetFrictionAnchors(const Model& m, const Points& x, LinkGeometry& g) {
+void ResetFrictionAnchors(const LineModel& m, const Points& x, LinkGeometry& g) {
   if (!HasStickSlip(m)) {
     g.friction_anchor.resize(kDim, 0);
     g.stick.resize(kDim, 0);
@@ -41,7 +41,7 @@ void ComputeStick(const Points& x, LinkGeometry& g) {
   g.stick.row(kVertical).setZero();
 }
 
-void UpdateFrictionAnchors(const Model& m, const Points& x, const Points& v, LinkGeometry& g) {
+void UpdateFrictionAnchors(const LineModel& m, const Points& x, const Points& v, LinkGeometry& g) {
   if (g.friction_anchor.cols() == 0) return;
   const SeabedSpec& bed = m.env.seabed;
   for (int j = 0; j <= m.line.links; ++j) {

@@ -5,7 +5,7 @@
 
 namespace cablefilm {
 
-SnapMonitor::SnapMonitor(const Model& m)
+SnapMonitor::SnapMonitor(const LineModel& m)
     : rest_length_(m.line.rest_length), tau_(m.line.links), taut_(m.line.links) {
   for (int j = 0; j < m.line.links; ++j) {
     // Station masses along the link [kg]: cable plus prism (the smaller axis, the faster mode).

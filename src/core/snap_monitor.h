@@ -10,7 +10,7 @@
 // The monitor also keeps the smallest and largest step. O(s) per step, no allocation.
 #include <Eigen/Core>
 
-#include "core/model.h"
+#include "core/line_model.h"
 
 namespace cablefilm {
 
@@ -37,7 +37,7 @@ struct StepRecord {
 class SnapMonitor {
  public:
   SnapMonitor() = default;
-  explicit SnapMonitor(const Model& m);
+  explicit SnapMonitor(const LineModel& m);
   // The state the steps start from: which links are taut (stretched beyond their rest length,
   // or short of it by no more than kSlackStrain; with axial damping a stretched link's tension
   // can be 0 for a moment).

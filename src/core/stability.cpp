@@ -8,7 +8,7 @@
 
 namespace cablefilm {
 
-StabilityLimit ComputeStabilityLimit(const Model& m) {
+StabilityLimit ComputeStabilityLimit(const LineModel& m) {
   // Axial stiffness k = sigma E / l of each link; the smallest eigenvalue of the station inertia
   // is at least m_j + min(m^x, m^y) (the normal added mass only adds). Gershgorin's bound on
   // the mass-scaled stiffness matrix M^-1/2 K M^-1/2, row j:

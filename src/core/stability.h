@@ -13,7 +13,7 @@
 // going slack or snapping taut within a step: see explicit_integrator.h. A seabed adds its
 // spring (up to 2 k l_j: the dashpot adds at most the spring's force) and dashpot c_j to every
 // station's row (a station off the bed only loses them).
-#include "core/model.h"
+#include "core/line_model.h"
 
 namespace cablefilm {
 
@@ -24,6 +24,6 @@ struct StabilityLimit {
   int station = 0;         // the station whose row gives the bound (the stiffest place)
 };
 
-StabilityLimit ComputeStabilityLimit(const Model& m);
+StabilityLimit ComputeStabilityLimit(const LineModel& m);
 
 }  // namespace cablefilm

@@ -6,7 +6,7 @@
 
 namespace cablefilm {
 
-void Step(const Model& m, Data& d, const Inputs& in, double dt) {
+void StepLine(const LineModel& m, LineData& d, const Inputs& in, double dt) {
   UpdateWater(m, in, d.state.t + 0.5 * dt, &d.water);
   switch (d.options.scheme) {
     case Scheme::kExplicit:

@@ -12,14 +12,14 @@ Eigen::Map<const Mat> Gradient(const Gradients& g, int j) {
   return Eigen::Map<const Mat>(g.col(j).data());
 }
 
-void CheckSea(const Model& m, const SeaState& sea) {
+void CheckSea(const LineModel& m, const SeaState& sea) {
   if (sea.wet.size() != m.stations())
     throw Error("internal: the forces in waves were asked for without the sea's state "
                 "(ComputeGeometry with the model and the time)");
 }
 
 // Adds the block B to the (row j, column i) block of the free stations' system.
-void AddBlock(const Model& m, int j, int i, const Mat& B, BlockTridiagonal& s) {
+void AddBlock(const LineModel& m, int j, int i, const Mat& B, BlockTridiagonal& s) {
   const int j0 = m.first_free(), j1 = m.last_free();
   if (j < j0 || j > j1 || i < j0 || i > j1) return;
   if (i == j) s.diag[j - j0] += B;
@@ -40,7 +40,7 @@ double WetFractionSlope(double u) {
   return 6.0 * u * (1.0 - u);
 }
 
-double SurfaceBuoyancyEnergy(const Model& m, const Points& x) {
+double SurfaceBuoyancyEnergy(const LineModel& m, const Points& x) {
   if (!m.has_waves()) return 0.0;
   // G(u) = int_0^u phi: 0 below the band, u^3 - u^4 / 2 across it, u - 1/2 beyond.
   auto G = [](double u) {
@@ -59,7 +59,7 @@ double SurfaceBuoyancyEnergy(const Model& m, const Points& x) {
   return e;
 }
 
-void ComputeSea(const Model& m, const Water& water, double t, const Points& x, SeaState& sea) {
+void ComputeSea(const LineModel& m, const Water& water, double t, const Points& x, SeaState& sea) {
   const int n = m.stations();
   if (sea.wet.size() != n) {
     sea.velocity.resize(kDim, n);
@@ -120,7 +120,7 @@ void ComputeSea(const Model& m, const Water& water, double t, const Points& x, S
   }
 }
 
-void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometry& g,
+void AddWaveExternalForces(const LineModel& m, const Water& water, const LinkGeometry& g,
                            const Points& v, Points& force) {
   const SeaState& sea = g.sea;
   CheckSea(m, sea);
@@ -171,7 +171,7 @@ void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometr
   }
 }
 
-void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
+void AddWaveForceJacobian(const LineModel& m, const Water& water, const LinkGeometry& g,
                           const Points& v, double kv, BlockTridiagonal& system) {
   const SeaState& sea = g.sea;
   CheckSea(m, sea);
@@ -287,7 +287,7 @@ void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry
   }
 }
 
-void AddWaveInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
+void AddWaveInertiaJacobian(const LineModel& m, const LinkGeometry& g, const Points& a,
                             BlockTridiagonal& system) {
   const SeaState& sea = g.sea;
   CheckSea(m, sea);

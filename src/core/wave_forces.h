@@ -11,7 +11,7 @@
 // with U, A the water's velocity and acceleration at the stations (waves.h). Per prism:
 //   drag      -phi u f (.) rel,  rel = v - c(y) e_x - U
 //   inertia   phi rho (V* + V^x, V* + V^y) (.) A
-// With the tangential coefficients (model.h) a link adds along itself
+// With the tangential coefficients (line_model.h) a link adds along itself
 //   drag      -psi f^T |p| p t,  p = t . (mean station velocity - c(y_mid) e_x - mean U)
 //   inertia   psi e^t (t . mean A) t                          (added mass only, no Froude-Krylov)
 // Buoyancy: a station loses (1 - phi_j) of its buoyancy B_j (its links' halves and V*). Added
@@ -24,13 +24,13 @@
 #include <Eigen/Core>
 
 #include "core/block_tridiagonal.h"
-#include "core/model.h"
+#include "core/line_model.h"
 #include "core/forces.h"
 
 namespace cablefilm {
 
 // Fills g.sea for time t at the positions x (sizes it on the first call).
-void ComputeSea(const Model& m, const Water& water, double t, const Points& x, SeaState& sea);
+void ComputeSea(const LineModel& m, const Water& water, double t, const Points& x, SeaState& sea);
 
 // The wet fraction phi(u) of the surface band and its derivative d phi / du.
 double WetFraction(double u);
@@ -39,21 +39,21 @@ double WetFractionSlope(double u);
 // The potential [J] of the buoyancy lost above the still water level (the static problem's
 // surface): -dV/dy_j = -(1 - phi_j) B_j, V_j = B_j (y_j + l_j G(u_j)) with G(u) the integral of
 // phi from 0 to u, u_j = (y_surface - y_j) / l_j + 1/2; constant for a station under water.
-double SurfaceBuoyancyEnergy(const Model& m, const Points& x);
+double SurfaceBuoyancyEnergy(const LineModel& m, const Points& x);
 
 // The external forces with waves (the formulas above), weight included, seabed excluded.
-void AddWaveExternalForces(const Model& m, const Water& water, const LinkGeometry& g,
+void AddWaveExternalForces(const LineModel& m, const Water& water, const LinkGeometry& g,
                            const Points& v, Points& force);
 
 // -dF/dx - kv dF/dv of the forces above (force_jacobian.h's convention): through the links'
 // orientation, the water's velocity and acceleration gradients, the current profile, the wet
 // fractions' gradients (drag, inertia, buoyancy) and the relative velocity.
-void AddWaveForceJacobian(const Model& m, const Water& water, const LinkGeometry& g,
+void AddWaveForceJacobian(const LineModel& m, const Water& water, const LinkGeometry& g,
                           const Points& v, double kv, BlockTridiagonal& system);
 
 // d(M(x) a)/dx through the wet fractions of the added masses (the orientation part is in
 // SetInertiaJacobian).
-void AddWaveInertiaJacobian(const Model& m, const LinkGeometry& g, const Points& a,
+void AddWaveInertiaJacobian(const LineModel& m, const LinkGeometry& g, const Points& a,
                             BlockTridiagonal& system);
 
 }  // namespace cablefilm

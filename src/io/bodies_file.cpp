@@ -6,12 +6,12 @@
 
 namespace cablefilm {
 
-BodiesWriter::BodiesWriter(const std::string& path, const SystemModel& sys, const Inputs& in)
+BodiesWriter::BodiesWriter(const std::string& path, const Model& sys, const Inputs& in)
     : file_(path), sys_(sys), in_(in), loads_(sys) {
   std::fputs("t,body,x,y,z,rx,ry,rz,fx,fy,fz,mx,my,mz\n", file_.stream());
 }
 
-bool BodiesWriter::Row(const SystemData& sd) {
+bool BodiesWriter::Row(const Data& sd) {
   loads_.Compute(sys_, sd, in_);
   const double deg = 180.0 / M_PI;
   for (int b = 0; b < static_cast<int>(sys_.bodies.size()); ++b) {

@@ -2,10 +2,10 @@
 // body.csv of a system with bodies: t,body,x,y,z,rx,ry,rz,fx,fy,fz,mx,my,mz, one row per body
 // per output time: its pose (its reference point [m], its angles about x, then y, then z
 // [deg]) and the load its lines exert on it (force [N], moment about the reference point
-// [N m]; core/system_step.h, PointLoads); written whole or not at all.
+// [N m]; core/coupled_step.h, PointLoads); written whole or not at all.
 #include <string>
 
-#include "core/system_step.h"
+#include "core/coupled_step.h"
 #include "io/atomic_file.h"
 #include "run/system_run.h"
 
@@ -13,14 +13,14 @@ namespace cablefilm {
 
 class BodiesWriter : public SystemRowSink {
  public:
-  BodiesWriter(const std::string& path, const SystemModel& sys, const Inputs& in);
-  bool Row(const SystemData& sd) override;
+  BodiesWriter(const std::string& path, const Model& sys, const Inputs& in);
+  bool Row(const Data& sd) override;
   void Commit() { file_.Commit(); }
   void CommitPartial(const std::string& path) { file_.CommitAs(path); }
 
  private:
   AtomicFile file_;
-  const SystemModel& sys_;
+  const Model& sys_;
   const Inputs& in_;
   PointLoads loads_;
 };

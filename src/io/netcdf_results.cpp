@@ -16,7 +16,7 @@
 namespace cablefilm {
 
 NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
-                                         const Model& m, const State& initial,
+                                         const LineModel& m, const State& initial,
                                          const Eigen::VectorXd& initial_tension)
     : path_(path), temp_path_(path + ".tmp" + std::to_string(::getpid())) {
   KeepFreedMemoryForTheCompressor();
@@ -32,7 +32,7 @@ NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfRe
   }
 }
 
-void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const Model& m,
+void NetcdfResultsWriter::Define(const NetcdfResultsInfo& info, const LineModel& m,
                                  const State& initial,
                                  const Eigen::VectorXd& initial_tension) {
   stations_ = m.stations();

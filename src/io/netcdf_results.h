@@ -28,8 +28,8 @@
 #include <thread>
 #include <vector>
 
-#include "core/model.h"
-#include "core/data.h"
+#include "core/line_model.h"
+#include "core/line_data.h"
 #include "io/netcdf_support.h"
 #include "run/driver.h"
 
@@ -43,7 +43,7 @@ class NetcdfResultsWriter : public LineResultsNc {
 
   // Creates `path`'s temporary file and writes what does not change over time. Throws Error.
   NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
-                      const Model& m, const State& initial,
+                      const LineModel& m, const State& initial,
                       const Eigen::VectorXd& initial_tension);
   ~NetcdfResultsWriter() override;  // uncommitted: the rows not yet written are dropped, the
                            // file removed
@@ -68,7 +68,7 @@ class NetcdfResultsWriter : public LineResultsNc {
     std::vector<double> x[kDim];     // by axis: x, y, z
     std::vector<double> ends[2 * kDim];  // x_start, y_start, z_start, x_end, y_end, z_end
   };
-  void Define(const NetcdfResultsInfo& info, const Model& m, const State& initial,
+  void Define(const NetcdfResultsInfo& info, const LineModel& m, const State& initial,
               const Eigen::VectorXd& initial_tension);  // the file and what is fixed
   void StartWriter();
   std::unique_ptr<Block> NewBlock();  // a free one, or a new one

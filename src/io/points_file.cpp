@@ -5,12 +5,12 @@
 
 namespace cablefilm {
 
-PointsWriter::PointsWriter(const std::string& path, const SystemModel& sys, const Inputs& in)
+PointsWriter::PointsWriter(const std::string& path, const Model& sys, const Inputs& in)
     : file_(path), sys_(sys), in_(in), loads_(sys) {
   std::fputs("t,point,x,y,z,fx,fy,fz\n", file_.stream());
 }
 
-bool PointsWriter::Row(const SystemData& sd) {
+bool PointsWriter::Row(const Data& sd) {
   loads_.Compute(sys_, sd, in_);
   const Points& x = loads_.positions();
   const Points& f = loads_.forces();

@@ -1,10 +1,10 @@
 #pragma once
 // points.csv of a system of lines: t,point,x,y,z,fx,fy,fz, one row per point per output time,
-// the point's position [m] and the force its lines exert on it [N] (core/system_step.h,
+// the point's position [m] and the force its lines exert on it [N] (core/coupled_step.h,
 // PointLoads); written whole or not at all.
 #include <string>
 
-#include "core/system_step.h"
+#include "core/coupled_step.h"
 #include "io/atomic_file.h"
 #include "run/system_run.h"
 
@@ -12,14 +12,14 @@ namespace cablefilm {
 
 class PointsWriter : public SystemRowSink {
  public:
-  PointsWriter(const std::string& path, const SystemModel& sys, const Inputs& in);
-  bool Row(const SystemData& sd) override;
+  PointsWriter(const std::string& path, const Model& sys, const Inputs& in);
+  bool Row(const Data& sd) override;
   void Commit() { file_.Commit(); }
   void CommitPartial(const std::string& path) { file_.CommitAs(path); }
 
  private:
   AtomicFile file_;
-  const SystemModel& sys_;
+  const Model& sys_;
   const Inputs& in_;
   PointLoads loads_;
 };

@@ -8,7 +8,7 @@
 
 namespace cablefilm {
 
-void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& state,
+void WriteEquilibriumCsv(const std::string& path, const LineModel& m, const State& state,
                          const Eigen::VectorXd& tension) {
   AtomicFile file(path);
   std::FILE* f = file.stream();
@@ -66,7 +66,7 @@ const char kUtilisationColumn[] = ",utilisation_max";
 namespace {
 
 // A row whose end loads are known.
-void WriteRow(std::FILE* f, const Model& m, const Data& d, const EndLoads& ends, bool utilisation) {
+void WriteRow(std::FILE* f, const LineModel& m, const LineData& d, const EndLoads& ends, bool utilisation) {
   const State& s = d.state;
   const Eigen::VectorXd& tension = d.tension();
   Eigen::Index link_max = 0;
@@ -89,13 +89,13 @@ void WriteRow(std::FILE* f, const Model& m, const Data& d, const EndLoads& ends,
 
 }  // namespace
 
-void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Inputs& in,
+void WriteTimeseriesRow(std::FILE* f, const LineModel& m, const LineData& d, const Inputs& in,
                         EndLoads& ends, bool utilisation) {
   ends.Compute(m, d, in);
   WriteRow(f, m, d, ends, utilisation);
 }
 
-TimeseriesWriter::TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in,
+TimeseriesWriter::TimeseriesWriter(const std::string& path, const LineModel& m, const Inputs& in,
                                    const EndLoads* row_ends)
     : file_(path), m_(m), in_(in), ends_(m), row_ends_(row_ends),
       utilisation_(m.line.has_breaking_load()) {
@@ -104,7 +104,7 @@ TimeseriesWriter::TimeseriesWriter(const std::string& path, const Model& m, cons
   std::fputs(header.c_str(), file_.stream());
 }
 
-bool TimeseriesWriter::Row(const Data& d) {
+bool TimeseriesWriter::Row(const LineData& d) {
   if (row_ends_)
     WriteRow(file_.stream(), m_, d, *row_ends_, utilisation_);
   else

@@ -5,8 +5,8 @@
 #include <memory>
 #include <string>
 
-#include "core/model.h"
-#include "core/data.h"
+#include "core/line_model.h"
+#include "core/line_data.h"
 #include "core/end_loads.h"
 #include "io/atomic_file.h"
 #include "run/driver.h"
@@ -14,7 +14,7 @@
 namespace cablefilm {
 
 // equilibrium.csv: j,s,x,y,z,tension (tension of link j+1/2; empty on the last row).
-void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& state,
+void WriteEquilibriumCsv(const std::string& path, const LineModel& m, const State& state,
                          const Eigen::VectorXd& tension);
 
 // Removes the result files an earlier run may have left in `out_dir` (only the names a run
@@ -24,13 +24,13 @@ void WriteEquilibriumCsv(const std::string& path, const Model& m, const State& s
 void RemoveEarlierResults(const std::string& out_dir);
 
 // One row of timeseries.csv, and its header line (shared with the live view's /timeseries.csv).
-// `ends` holds the end loads of the row's Data (core/end_loads.h), computed here. With
+// `ends` holds the end loads of the row's LineData (core/end_loads.h), computed here. With
 // `utilisation` (a line some of whose materials have a minimum_breaking_load) the row ends
 // with utilisation_max, the largest T / MBL of those links, and the header with
 // kUtilisationColumn; the live view's rows never have it.
 extern const char kTimeseriesHeader[];  // with its newline
 extern const char kUtilisationColumn[];  // ",utilisation_max", no newline
-void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Inputs& in,
+void WriteTimeseriesRow(std::FILE* f, const LineModel& m, const LineData& d, const Inputs& in,
                         EndLoads& ends, bool utilisation = false);
 
 // timeseries.csv: t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max, then the
@@ -40,15 +40,15 @@ void WriteTimeseriesRow(std::FILE* f, const Model& m, const Data& d, const Input
 // they cost as much as a tenth of the simulation, and are not computed twice.
 class TimeseriesWriter : public RowSink {
  public:
-  TimeseriesWriter(const std::string& path, const Model& m, const Inputs& in,
+  TimeseriesWriter(const std::string& path, const LineModel& m, const Inputs& in,
                    const EndLoads* row_ends = nullptr);
-  bool Row(const Data& d) override;
+  bool Row(const LineData& d) override;
   void Commit();                                  // the complete file, under its name
   void CommitPartial(const std::string& path);    // an incomplete run, under another name
 
  private:
   AtomicFile file_;
-  const Model& m_;
+  const LineModel& m_;
   const Inputs& in_;
   EndLoads ends_;                       // computed here, without row_ends
   const EndLoads* row_ends_ = nullptr;  // else these

@@ -8,10 +8,10 @@
 #include <memory>
 #include <string>
 
-#include "core/data.h"
+#include "core/line_data.h"
 #include "core/inputs.h"
+#include "core/line_model.h"
 #include "core/model.h"
-#include "core/system.h"
 #include "run/driver.h"
 #include "run/system_run.h"
 
@@ -38,7 +38,7 @@ class LineResultsNc : public RowSink {
  public:
   // One output row. Throws Error on a write error (of this row or of an earlier chunk).
   virtual void Append(const State& state, const Eigen::VectorXd& tension) = 0;
-  bool Row(const Data& d) override {
+  bool Row(const LineData& d) override {
     Append(d.state, d.tension());
     return true;
   }
@@ -57,11 +57,11 @@ class SystemResultsNc : public SystemRowSink {
 // Create `path`'s temporary file and write what does not change over time. Throw Error. The
 // objects keep references to `m`, `sys` and `in`, which must outlive them.
 std::unique_ptr<LineResultsNc> OpenLineResultsNc(const std::string& path,
-                                                 const NetcdfResultsInfo& info, const Model& m,
+                                                 const NetcdfResultsInfo& info, const LineModel& m,
                                                  const State& initial,
                                                  const Eigen::VectorXd& initial_tension);
 std::unique_ptr<SystemResultsNc> OpenSystemResultsNc(const std::string& path,
                                                      const NetcdfResultsInfo& info,
-                                                     const SystemModel& sys, const Inputs& in);
+                                                     const Model& sys, const Inputs& in);
 
 }  // namespace cablefilm

@@ -8,7 +8,7 @@
 namespace cablefilm {
 
 std::unique_ptr<LineResultsNc> OpenLineResultsNc(const std::string& path,
-                                                 const NetcdfResultsInfo& info, const Model& m,
+                                                 const NetcdfResultsInfo& info, const LineModel& m,
                                                  const State& initial,
                                                  const Eigen::VectorXd& initial_tension) {
   return std::make_unique<NetcdfResultsWriter>(path, info, m, initial, initial_tension);
@@ -16,7 +16,7 @@ std::unique_ptr<LineResultsNc> OpenLineResultsNc(const std::string& path,
 
 std::unique_ptr<SystemResultsNc> OpenSystemResultsNc(const std::string& path,
                                                      const NetcdfResultsInfo& info,
-                                                     const SystemModel& sys, const Inputs& in) {
+                                                     const Model& sys, const Inputs& in) {
   return std::make_unique<SystemResultsWriter>(path, info, sys, in);
 }
 

@@ -20,7 +20,7 @@ constexpr int kBodySeries = 12;  // body_x .. body_mz
 }  // namespace
 
 SystemResultsWriter::SystemResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
-                                         const SystemModel& sys, const Inputs& in)
+                                         const Model& sys, const Inputs& in)
     : sys_(sys), in_(in), loads_(sys), path_(path),
       temp_path_(path + ".tmp" + std::to_string(::getpid())) {
   KeepFreedMemoryForTheCompressor();
@@ -137,7 +137,7 @@ void SystemResultsWriter::Define(const NetcdfResultsInfo& info) {
   for (const std::string& n : sys_.line_names) text.push_back(n.c_str());
   names(var_line_name, text);
   text.clear();
-  for (const SystemPoint& p : sys_.points) text.push_back(p.name.c_str());
+  for (const Point& p : sys_.points) text.push_back(p.name.c_str());
   names(var_point_name, text);
   if (bodies > 0) {
     text.clear();
@@ -155,7 +155,7 @@ void SystemResultsWriter::Define(const NetcdfResultsInfo& info) {
   }
 }
 
-bool SystemResultsWriter::Row(const SystemData& sd) {
+bool SystemResultsWriter::Row(const Data& sd) {
   loads_.Compute(sys_, sd, in_);
   time_.push_back(sd.t);
   std::vector<Series>::iterator s = series_.begin();
@@ -163,7 +163,7 @@ bool SystemResultsWriter::Row(const SystemData& sd) {
     for (int p = 0; p < s->width; ++p) s->rows.push_back(loads_.positions()(c, p));
   for (int c = 0; c < 3; ++c, ++s)
     for (int p = 0; p < s->width; ++p) s->rows.push_back(loads_.forces()(c, p));
-  for (const Data& d : sd.lines) {
+  for (const LineData& d : sd.lines) {
     const Eigen::VectorXd& T = d.tension();
     Eigen::Index link = 0;
     const double t_max = T.maxCoeff(&link);

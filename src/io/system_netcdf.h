@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "core/system_step.h"
+#include "core/coupled_step.h"
 #include "io/netcdf_support.h"
 #include "run/system_run.h"
 
@@ -31,12 +31,12 @@ class SystemResultsWriter : public SystemResultsNc {
 
   // Creates `path`'s temporary file and writes what does not change. Throws Error.
   SystemResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
-                      const SystemModel& sys, const Inputs& in);
+                      const Model& sys, const Inputs& in);
   ~SystemResultsWriter() override;  // uncommitted: the temporary file removed
   SystemResultsWriter(const SystemResultsWriter&) = delete;
   SystemResultsWriter& operator=(const SystemResultsWriter&) = delete;
 
-  bool Row(const SystemData& sd) override;  // throws Error on a write error
+  bool Row(const Data& sd) override;  // throws Error on a write error
   void Commit() override;                                // the complete file, under its name
   void CommitPartial(const std::string& path) override;  // an incomplete run, another name
 
@@ -50,7 +50,7 @@ class SystemResultsWriter : public SystemResultsNc {
   void Define(const NetcdfResultsInfo& info);
   void Flush();  // writes the rows gathered; throws Error
 
-  const SystemModel& sys_;
+  const Model& sys_;
   const Inputs& in_;
   PointLoads loads_;
   std::string path_, temp_path_;

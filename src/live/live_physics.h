@@ -10,7 +10,7 @@
 
 #include "core/cancel.h"
 #include "core/inputs.h"
-#include "core/model.h"
+#include "core/line_model.h"
 #include "core/waves.h"
 #include "scene/scene_def.h"
 #include "view/scene_view.h"
@@ -73,7 +73,7 @@ class LivePhysics {
   virtual double force_max() const { return 0; }        // the largest |force| asked [N]
   virtual bool is_system() const { return false; }
   // A model of the scene's environment (a system: its first line's; all share the sea).
-  virtual const Model& model() const = 0;
+  virtual const LineModel& model() const = 0;
   virtual const Wave& wave() const = 0;  // the waves of the last step
 
   // The picture: the scene view of its lines as the film draws them (in space or not), and

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <future>
 
-#include "core/data.h"
+#include "core/line_data.h"
 #include "core/error.h"
 #include "encode/png_writer.h"
 #include "encode/tiled_jpeg.h"

@@ -14,7 +14,7 @@ namespace cablefilm {
 namespace {
 
 // The end whose period the controls show: the far end if it moves, else the start.
-const EndMotion* DrivenEnd(const Model& m) {
+const EndMotion* DrivenEnd(const LineModel& m) {
   if (m.ends.end.moves()) return &m.ends.end;
   if (m.ends.start.moves()) return &m.ends.start;
   return nullptr;
@@ -28,7 +28,7 @@ LiveSimulation::LiveSimulation(const SceneDef& scene, const CancelFlag* stop)
   grid_ = ChooseTimeGrid(model_, scene.simulation, 1.0 / 30);
   if (!grid_.automatic) fixed_step_ = scene.simulation.time_step;
   scene_inputs_ = SceneInputs(model_);
-  EquilibriumReport report;
+  LineEquilibriumReport report;
   const State initial = MakeInitialState(scene, model_, &report, stop);
   if (const EndMotion* e = DrivenEnd(model_)) base_period_ = e->period();
   // The wave's phase is kept where the driven end is (else mid-way between the ends).
@@ -37,7 +37,7 @@ LiveSimulation::LiveSimulation(const SceneDef& scene, const CancelFlag* stop)
                                    : model_.ends.start.moves() ? Vec(initial.x.col(0))
                                                                : Vec(0.5 * (initial.x.col(0) +
                                                                             initial.x.col(last)));
-  initial_ = MakeData(model_, scene_inputs_, grid_.options, initial);
+  initial_ = MakeLineData(model_, scene_inputs_, grid_.options, initial);
   scene_sea_.period = base_period_;
   scene_sea_.current = model_.env.current;
   // The scene's headings: waves.heading as it gives it; the current's from its direction
@@ -120,7 +120,7 @@ void LiveSimulation::Advance(double seconds) {
   const double dt = seconds / steps;
   const double t0 = t();
   for (int i = 0; i < steps; ++i) {
-    Step(model_, data_, inputs_, dt);
+    StepLine(model_, data_, inputs_, dt);
     data_.state.t = t0 + (i + 1) * dt;  // no round-off drift
   }
   RetireRamps(inputs_, t());

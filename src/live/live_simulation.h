@@ -7,9 +7,9 @@
 // prescribed end's position, velocity or acceleration, and the current never jumps either.
 #include <Eigen/Core>
 
-#include "core/data.h"
+#include "core/line_data.h"
 #include "core/inputs.h"
-#include "core/model.h"
+#include "core/line_model.h"
 #include "core/end_loads.h"
 #include "core/smooth_schedule.h"
 #include "live/live_physics.h"
@@ -65,10 +65,10 @@ class LiveSimulation : public LivePhysics {
 
   double t() const override { return data_.state.t; }
   const State& state() const { return data_.state; }
-  const Data& data() const { return data_; }
+  const LineData& data() const { return data_; }
   const Inputs& inputs() const override { return inputs_; }
   const Eigen::VectorXd& tensions() const { return data_.tension(); }
-  const Model& model() const override { return model_; }
+  const LineModel& model() const override { return model_; }
   const Wave& wave() const override { return data_.water.wave; }  // the waves of the last step
   const Water& water() const { return data_.water; }     // its current and waves
   const State& initial_state() const { return initial_.state; }
@@ -93,11 +93,11 @@ class LiveSimulation : public LivePhysics {
  private:
   double MotionRamp() const;  // [s]
 
-  const Model model_;             // as built from the scene
+  const LineModel model_;             // as built from the scene
   TimeGrid grid_;                 // the scene's scheme and step rule
   double fixed_step_ = 0;         // [s]; 0: the scheme chooses (adaptive, or its own substeps)
-  Data initial_;                  // the scene's initial state, ready to step: a restart's
-  Data data_;                     // the one stepped
+  LineData initial_;                  // the scene's initial state, ready to step: a restart's
+  LineData data_;                     // the one stepped
   Inputs scene_inputs_, inputs_;  // the scene's; those the controls ramp
   SeaTargets scene_sea_;
   double base_period_ = 0;        // the driven end's period in the scene [s]

@@ -21,10 +21,10 @@ std::string ColumnName(const std::string& name) {
 }
 
 // The vessel's points: those with a motion of their own and those of a driven or held body.
-std::vector<int> CarriedPoints(const SystemModel& sys) {
+std::vector<int> CarriedPoints(const Model& sys) {
   std::vector<int> carried;
   for (int p = 0; p < static_cast<int>(sys.points.size()); ++p) {
-    const SystemPoint& point = sys.points[p];
+    const Point& point = sys.points[p];
     const bool on_vessel = point.on_body >= 0 && sys.bodies[point.on_body].kind != BodyKind::kFree;
     if (point.kind == PointKind::kMoved || on_vessel) carried.push_back(p);
   }
@@ -35,13 +35,13 @@ std::vector<int> CarriedPoints(const SystemModel& sys) {
 
 LiveSystemSimulation::LiveSystemSimulation(const SceneDef& scene, const CancelFlag* stop)
     : run_(PrepareSystemRun(scene, BuildSystem(scene), stop)), loads_(run_.sys) {
-  SystemModel& sys = run_.sys;
+  Model& sys = run_.sys;
   carried_ = CarriedPoints(sys);
   // The offset moves the carried points' line ends (and the points as the system keeps them);
   // at zero offset they move exactly as before: the initial state stays the run's.
   Vec centre = Vec::Zero();
   for (int p : carried_) {
-    SystemPoint& point = sys.points[p];
+    Point& point = sys.points[p];
     point.motion = point.motion.Carried();
     for (const LineEnd& e : point.ends) {
       Ends& ends = sys.lines[e.line].ends;
@@ -59,7 +59,7 @@ LiveSystemSimulation::LiveSystemSimulation(const SceneDef& scene, const CancelFl
     scene_inputs_.wave_phase_point = centre / static_cast<double>(carried_.size());
   else if (!sys.free_bodies.empty())
     scene_inputs_.wave_phase_point = sys.body_poses[sys.free_bodies.front()].head<3>();
-  const Model& m = model();
+  const LineModel& m = model();
   scene_sea_.period = 0;
   scene_sea_.current = m.env.current;
   // As a line's (live_simulation.cpp): rounded to 1e-9 of a degree for the state.
@@ -140,7 +140,7 @@ Vec LiveSystemSimulation::offset_now() const {
 
 double LiveSystemSimulation::offset_max() const {
   double shortest = run_.sys.lines.front().line.total_length();
-  for (const Model& m : run_.sys.lines) shortest = std::min(shortest, m.line.total_length());
+  for (const LineModel& m : run_.sys.lines) shortest = std::min(shortest, m.line.total_length());
   return 0.1 * shortest;
 }
 
@@ -160,7 +160,7 @@ Vec LiveSystemSimulation::force_now() const {
 
 double LiveSystemSimulation::force_max() const {
   double sum = 0;
-  for (const Data& d : run_.initial.lines) sum += d.tension().maxCoeff();
+  for (const LineData& d : run_.initial.lines) sum += d.tension().maxCoeff();
   return sum;
 }
 
@@ -185,7 +185,7 @@ std::string LiveSystemSimulation::timeseries_header() const {
   std::string h = "t,current,current_heading,offset_x,offset_z,force_x,force_z";
   for (const std::string& n : run_.sys.line_names)
     h += ",tension_max_" + ColumnName(n) + ",link_max_" + ColumnName(n);
-  for (const SystemPoint& p : run_.sys.points)
+  for (const Point& p : run_.sys.points)
     for (const char* c : {"x_", "y_", "z_", "fx_", "fy_", "fz_"}) h += "," + (c + ColumnName(p.name));
   return h + "\n";
 }
@@ -195,7 +195,7 @@ void LiveSystemSimulation::WriteTimeseriesRow(std::FILE* f) {
   const Vec force = force_now();
   std::fprintf(f, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", t(), current_now(),
                current_heading_now(), offset.x(), offset.z(), force.x(), force.z());
-  for (const Data& d : data_.lines) {
+  for (const LineData& d : data_.lines) {
     Eigen::Index link = 0;
     const double max = d.tension().maxCoeff(&link);
     std::fprintf(f, ",%.10g,%d", max, static_cast<int>(link));

@@ -1,8 +1,8 @@
 #pragma once
-// A system of lines, points and bodies (core/system.h) stepped on demand while the sea and the
+// A system of lines, points and bodies (core/model.h) stepped on demand while the sea and the
 // vessel are changed between steps: a system's physics half of the live view, as
 // LiveSimulation is a line's. It is the run's system (PrepareSystemRun: its equilibrium, its
-// grid, its initial Data) stepped by the run's own stepping (StepSystemSpan), so that with no
+// grid, its initial LineData) stepped by the run's own stepping (StepSystemSpan), so that with no
 // control changed it repeats `cablefilm run`'s rows.
 //
 // Its controls: the current's speed and heading and the waves' height, period and heading,
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "core/inputs.h"
-#include "core/system_step.h"
+#include "core/coupled_step.h"
 #include "live/live_physics.h"
 #include "run/system_run.h"
 #include "scene/scene_def.h"
@@ -75,7 +75,7 @@ class LiveSystemSimulation : public LivePhysics {
   bool end_follows_wave() const override { return false; }
   bool has_vessel() const override { return !carried_.empty(); }
   bool is_system() const override { return true; }
-  const Model& model() const override { return run_.sys.lines.front(); }
+  const LineModel& model() const override { return run_.sys.lines.front(); }
   const Wave& wave() const override { return data_.lines.front().water.wave; }
 
   SceneView MakeView(const SceneDef& scene, const std::string& view) const override;
@@ -93,7 +93,7 @@ class LiveSystemSimulation : public LivePhysics {
   void WriteTimeseriesRow(std::FILE* file) override;
 
   const SystemRun& run() const { return run_; }  // its model (carried ends marked), grid
-  const SystemData& data() const { return data_; }
+  const Data& data() const { return data_; }
   const Inputs& inputs() const override { return inputs_; }
   const std::vector<int>& carried_points() const { return carried_; }
   // The points' positions [m] and loads [N] now (PointLoads of the state now).
@@ -103,7 +103,7 @@ class LiveSystemSimulation : public LivePhysics {
   bool ChangeOffset(SmoothSchedule& s, double metres);
 
   SystemRun run_;                 // the system as the run prepares it
-  SystemData data_;               // the one stepped
+  Data data_;               // the one stepped
   Inputs scene_inputs_, inputs_;  // the scene's; those the controls ramp
   SeaTargets scene_sea_;
   std::vector<int> carried_;      // the points the vessel carries

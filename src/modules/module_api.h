@@ -33,7 +33,7 @@ namespace cablefilm {
 inline std::string ModuleAbi() {
   return std::string(kVersion) + " " + kGitDescribe + " " + std::to_string(sizeof(SceneDef)) +
          "/" + std::to_string(sizeof(Run)) + "/" + std::to_string(sizeof(SystemRun)) + "/" +
-         std::to_string(sizeof(FilmRequest)) + "/" + std::to_string(sizeof(Model)) + "/" +
+         std::to_string(sizeof(FilmRequest)) + "/" + std::to_string(sizeof(LineModel)) + "/" +
          std::to_string(sizeof(LiveCommandOptions));
 }
 
@@ -60,10 +60,10 @@ struct RenderModuleApi {
 struct NetcdfModuleApi {
   const char* abi;
   std::unique_ptr<LineResultsNc> (*open_line)(const std::string&, const NetcdfResultsInfo&,
-                                              const Model&, const State&,
+                                              const LineModel&, const State&,
                                               const Eigen::VectorXd&);
   std::unique_ptr<SystemResultsNc> (*open_system)(const std::string&, const NetcdfResultsInfo&,
-                                                  const SystemModel&, const Inputs&);
+                                                  const Model&, const Inputs&);
 };
 
 // The modules' entry points (extern "C": looked up by name).

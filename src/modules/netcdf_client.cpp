@@ -14,7 +14,7 @@ const NetcdfModuleApi& Netcdf() {
 }  // namespace
 
 std::unique_ptr<LineResultsNc> OpenLineResultsNc(const std::string& path,
-                                                 const NetcdfResultsInfo& info, const Model& m,
+                                                 const NetcdfResultsInfo& info, const LineModel& m,
                                                  const State& initial,
                                                  const Eigen::VectorXd& initial_tension) {
   return Netcdf().open_line(path, info, m, initial, initial_tension);
@@ -22,7 +22,7 @@ std::unique_ptr<LineResultsNc> OpenLineResultsNc(const std::string& path,
 
 std::unique_ptr<SystemResultsNc> OpenSystemResultsNc(const std::string& path,
                                                      const NetcdfResultsInfo& info,
-                                                     const SystemModel& sys, const Inputs& in) {
+                                                     const Model& sys, const Inputs& in) {
   return Netcdf().open_system(path, info, sys, in);
 }
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/model.h"
+#include "core/line_model.h"
 #include "python/scene_handle.h"
 #include "run/memory_run.h"
 #include "run/memory_system_run.h"
@@ -40,7 +40,7 @@ struct Equilibrium {
 };
 
 // A line's equilibrium from its state and tensions (the solver's report set by the caller).
-Equilibrium LineEquilibrium(const Model& m, const Points& x, const Eigen::VectorXd& tension);
+Equilibrium LineEquilibrium(const LineModel& m, const Points& x, const Eigen::VectorXd& tension);
 
 // A Scene from a Python argument: a Scene (copied), a dict, or a path.
 SceneHandle SceneOf(const pybind11::handle& source, const std::optional<std::string>& name);

@@ -25,7 +25,7 @@ namespace {
 
 // The index of the body named `name` (None: the only one); ValueError naming the choices.
 int FindBody(const SceneHandle& scene, const std::optional<std::string>& name) {
-  const SystemModel& sys = scene.system();
+  const Model& sys = scene.system();
   if (sys.bodies.empty())
     throw py::value_error(scene.path() + ": the scene has no [[body]]: the quasi-static tools "
                           "move a body");
@@ -57,10 +57,10 @@ auto Statics(const SceneHandle& scene, int b, Work&& work) {
   CancelFlag cancel{0};
   try {
     return RunInterruptible(cancel, [&] {
-      SystemEquilibriumReport report;
+      EquilibriumReport report;
       const std::vector<State> states =
           SystemStatics(scene.def(), scene.system(), &report, &cancel);
-      SystemEquilibriumOptions options;
+      EquilibriumOptions options;
       options.cancel = &cancel;
       options.guess = &states;
       options.guess_poses = report.body_poses.data();
@@ -76,12 +76,12 @@ auto Statics(const SceneHandle& scene, int b, Work&& work) {
 py::tuple Stiffness(const py::object& source, const std::optional<std::string>& body) {
   const SceneHandle scene = SceneOf(source, std::nullopt);
   const int b = FindBody(scene, body);
-  const SystemModel& sys = scene.system();
+  const Model& sys = scene.system();
   struct Out {
     Vec6 pose;
     Mat6 K;
   };
-  const Out out = Statics(scene, b, [&](const Vec6& pose, const SystemEquilibriumOptions& options) {
+  const Out out = Statics(scene, b, [&](const Vec6& pose, const EquilibriumOptions& options) {
     Out o;
     o.pose = pose;
     o.K = MooringStiffness(sys, b, o.pose, 1e-4 * ShortestLineOn(sys, b), options);
@@ -97,7 +97,7 @@ py::dict Offset(const py::object& source, const std::optional<std::string>& body
                 const std::optional<std::vector<double>>& given) {
   const SceneHandle scene = SceneOf(source, std::nullopt);
   const int b = FindBody(scene, body);
-  const SystemModel& sys = scene.system();
+  const Model& sys = scene.system();
   if (!std::isfinite(heading)) throw py::value_error("heading: expected a finite angle [deg]");
   if (given) {
     if (given->empty()) throw py::value_error("offsets: expected at least one offset [m]");
@@ -108,7 +108,7 @@ py::dict Offset(const py::object& source, const std::optional<std::string>& body
     Vec6 pose;
     std::vector<OffsetPoint> curve;
   };
-  const Out out = Statics(scene, b, [&](const Vec6& pose, const SystemEquilibriumOptions& options) {
+  const Out out = Statics(scene, b, [&](const Vec6& pose, const EquilibriumOptions& options) {
     Out o;
     o.pose = pose;
     std::vector<double> offsets;

@@ -30,7 +30,7 @@
 #include "run/sweep_plan.h"
 #include "scene/scene_edit.h"
 #include "core/version.h"
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "python/bindings.h"
 #include "python/interruptible.h"
 #include "python/scene_handle.h"
@@ -146,7 +146,7 @@ py::array Copy(const Eigen::VectorXd& v) {
 
 namespace {
 
-py::array LinkMidpoints(const Model& m) {
+py::array LinkMidpoints(const LineModel& m) {
   py::array_t<double> a(m.line.links);
   double* out = a.mutable_data();
   for (int j = 0; j < m.line.links; ++j) out[j] = 0.5 * (m.line.arc_length[j] + m.line.arc_length[j + 1]);
@@ -171,7 +171,7 @@ py::dict StatsDict(const MemoryRun& r) {
 
 }  // namespace
 
-Equilibrium LineEquilibrium(const Model& m, const Points& x, const Eigen::VectorXd& tension) {
+Equilibrium LineEquilibrium(const LineModel& m, const Points& x, const Eigen::VectorXd& tension) {
   Equilibrium e;
   e.x = Copy(x.row(0).transpose());
   e.y = Copy(x.row(1).transpose());
@@ -192,10 +192,10 @@ namespace {
 Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
   SceneDef def = scene.def();
   def.initial = InitialStateKind::kEquilibrium;
-  const Model& m = scene.model();
+  const LineModel& m = scene.model();
   struct Solved {
     State state;
-    EquilibriumReport report;
+    LineEquilibriumReport report;
     Eigen::VectorXd tension;
   };
   CancelFlag cancel{0};
@@ -206,7 +206,7 @@ Equilibrium SolveSceneEquilibrium(const SceneHandle& scene) {
       s.state = MakeInitialState(def, m, &s.report, &cancel);
       // The tensions as the run's first row gives them: its scheme's, at the state.
       const TimeGrid grid = ChooseTimeGrid(m, def.simulation, def.output.interval);
-      s.tension = MakeData(m, SceneInputs(m), grid.options, s.state).tension();
+      s.tension = MakeLineData(m, SceneInputs(m), grid.options, s.state).tension();
       return s;
     });
   } catch (const CancelledError&) {
@@ -579,7 +579,7 @@ the loader: a bad key or value raises SceneError and leaves the scene as it was.
       .def_property_readonly("stations", [](const SceneHandle& s) -> py::object {
         if (!s.is_system()) return py::int_(s.model().stations());
         py::dict d;
-        const SystemModel& sys = s.system();
+        const Model& sys = s.system();
         for (size_t i = 0; i < sys.lines.size(); ++i)
           d[py::str(sys.line_names[i])] = sys.lines[i].stations();
         return d;
@@ -587,7 +587,7 @@ the loader: a bad key or value raises SceneError and leaves the scene as it was.
       .def_property_readonly("links", [](const SceneHandle& s) -> py::object {
         if (!s.is_system()) return py::int_(s.model().line.links);
         py::dict d;
-        const SystemModel& sys = s.system();
+        const Model& sys = s.system();
         for (size_t i = 0; i < sys.lines.size(); ++i)
           d[py::str(sys.line_names[i])] = sys.lines[i].line.links;
         return d;

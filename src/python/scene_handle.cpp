@@ -19,11 +19,11 @@ SceneHandle SceneHandle::Checked(std::string text, std::string path, SceneDef de
   // A system as `run` builds it (the loader has checked its numbers).
   try {
     if (def.is_system()) {
-      SystemModel system = BuildSystem(def);
+      Model system = BuildSystem(def);
       return SceneHandle(std::move(text), std::move(path), std::move(def), std::nullopt,
                          std::move(system));
     }
-    Model model = BuildModel(def);
+    LineModel model = BuildModel(def);
     CheckModelLimits(def, model);
     return SceneHandle(std::move(text), std::move(path), std::move(def), std::move(model),
                        std::nullopt);
@@ -57,14 +57,14 @@ SceneHandle SceneHandle::FromText(const std::string& text, const std::string& pa
   return Checked(text, path, std::move(def));
 }
 
-const Model& SceneHandle::model() const {
+const LineModel& SceneHandle::model() const {
   if (!model_)
     throw SceneProblem(path_ + ": a system of lines ([[line]] and [[point]]): this takes a "
                        "single line ([cable] and [ends])");
   return *model_;
 }
 
-const SystemModel& SceneHandle::system() const {
+const Model& SceneHandle::system() const {
   if (!system_)
     throw SceneProblem(path_ + ": a single line ([cable] and [ends]): this takes a system of "
                        "lines ([[line]], [[point]], [[body]])");

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/line_model.h"
 #include "core/model.h"
-#include "core/system.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm::python {
@@ -35,9 +35,9 @@ class SceneHandle {
   const SceneDef& def() const { return def_; }
   bool is_system() const { return def_.is_system(); }
   // A single line's model; throws SceneProblem for a system (which has a model a line).
-  const Model& model() const;
+  const LineModel& model() const;
   // A system's; throws SceneProblem for a single line.
-  const SystemModel& system() const;
+  const Model& system() const;
 
   // Sets keys[i] (dotted scene paths) to the TOML values values[i], all at once; on a problem
   // throws SceneProblem (or Error for a key that does not fit the scene) and changes nothing.
@@ -46,16 +46,16 @@ class SceneHandle {
   std::string ValueDocument(const std::string& key) const;
 
  private:
-  SceneHandle(std::string text, std::string path, SceneDef def, std::optional<Model> model,
-              std::optional<SystemModel> system)
+  SceneHandle(std::string text, std::string path, SceneDef def, std::optional<LineModel> model,
+              std::optional<Model> system)
       : text_(std::move(text)), path_(std::move(path)), def_(std::move(def)),
         model_(std::move(model)), system_(std::move(system)) {}
   static SceneHandle Checked(std::string text, std::string path, SceneDef def);
   std::string text_;
   std::string path_;
   SceneDef def_;
-  std::optional<Model> model_;         // a single line's
-  std::optional<SystemModel> system_;  // a system's
+  std::optional<LineModel> model_;         // a single line's
+  std::optional<Model> system_;  // a system's
 };
 
 }  // namespace cablefilm::python

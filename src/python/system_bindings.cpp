@@ -44,13 +44,13 @@ struct SystemEquilibrium {
   double residual = 0;
 };
 
-std::vector<std::string> PointNames(const SystemModel& sys) {
+std::vector<std::string> PointNames(const Model& sys) {
   std::vector<std::string> names;
-  for (const SystemPoint& p : sys.points) names.push_back(p.name);
+  for (const Point& p : sys.points) names.push_back(p.name);
   return names;
 }
 
-std::vector<std::string> BodyNames(const SystemModel& sys) {
+std::vector<std::string> BodyNames(const Model& sys) {
   std::vector<std::string> names;
   for (const BodySpec& b : sys.bodies) names.push_back(b.name);
   return names;
@@ -126,10 +126,10 @@ py::object RunSystemScene(const SceneHandle& scene) {
 
 py::object SystemSceneEquilibrium(const SceneHandle& scene) {
   const std::shared_ptr<const MemorySystemRun> run = Simulate(scene, true);
-  const SystemModel& sys = run->run.sys;
+  const Model& sys = run->run.sys;
   SystemEquilibrium e;
   for (size_t i = 0; i < sys.lines.size(); ++i) {
-    const Data& d = run->run.initial.lines[i];
+    const LineData& d = run->run.initial.lines[i];
     Equilibrium line = LineEquilibrium(sys.lines[i], d.state.x, d.tension());
     line.iterations = run->run.equilibrium.iterations;
     line.residual = run->run.equilibrium.residual;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/error.h"
 #include "scene/build_model.h"
 
@@ -15,7 +15,7 @@ constexpr int kCoarseLinks = 300;
 
 // The stations of `coarse` (positions at arc lengths s_c) at the arc lengths s of `fine`,
 // linear between them [m].
-Points LaidOnto(const Model& coarse, const Points& xc, const Model& fine) {
+Points LaidOnto(const LineModel& coarse, const Points& xc, const LineModel& fine) {
   Points x(kDim, fine.stations());
   int i = 0;
   for (int j = 0; j < fine.stations(); ++j) {
@@ -30,7 +30,7 @@ Points LaidOnto(const Model& coarse, const Points& xc, const Model& fine) {
 
 }  // namespace
 
-std::optional<Points> CoarseEquilibriumGuess(const SceneDef& scene, const Model& m,
+std::optional<Points> CoarseEquilibriumGuess(const SceneDef& scene, const LineModel& m,
                                              const CancelFlag* cancel) {
   if (m.line.links < kCoarseGuessFromLinks || m.line.law != LinkLaw::kElastic) return {};
   // The largest merge that leaves at least kCoarseLinks links, keeps each section's links
@@ -43,16 +43,16 @@ std::optional<Points> CoarseEquilibriumGuess(const SceneDef& scene, const Model&
       s.segments /= k;
     }
     if (!whole) continue;
-    Model cm;
+    LineModel cm;
     try {
       cm = BuildModel(coarse);
     } catch (const Error&) {
       continue;  // a weight between the coarse stations
     }
     try {
-      EquilibriumOptions options;
+      LineEquilibriumOptions options;
       options.cancel = cancel;
-      const State s = SolveEquilibrium(cm, nullptr, options);
+      const State s = SolveLineEquilibrium(cm, nullptr, options);
       return LaidOnto(cm, s.x, m);
     } catch (const CancelledError&) {
       throw;

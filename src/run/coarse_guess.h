@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "core/cancel.h"
-#include "core/model.h"
+#include "core/line_model.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {
@@ -18,7 +18,7 @@ constexpr int kCoarseGuessFromLinks = 2000;
 // The guess for `m` (built from `scene`), or none: too few links, no merge that keeps every
 // section whole and every weight on a station, or a coarse line with no equilibrium (the line
 // itself then goes from the chord and says why if it fails too). Throws CancelledError.
-std::optional<Points> CoarseEquilibriumGuess(const SceneDef& scene, const Model& m,
+std::optional<Points> CoarseEquilibriumGuess(const SceneDef& scene, const LineModel& m,
                                              const CancelFlag* cancel);
 
 }  // namespace cablefilm

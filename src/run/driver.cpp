@@ -8,12 +8,12 @@ namespace cablefilm {
 void RowStepper::Next() {
   for (int i = 0; i < grid_.steps_per_output; ++i) {
     ThrowIfCancelled(in_.stop, "the simulation");
-    Step(m_, d_, in_, grid_.dt);
+    StepLine(m_, d_, in_, grid_.dt);
   }
   d_.state.t = ++row_ * grid_.interval;
 }
 
-RunEnd Drive(const Model& m, Data& d, const Inputs& in, const TimeGrid& grid,
+RunEnd Drive(const LineModel& m, LineData& d, const Inputs& in, const TimeGrid& grid,
              const std::vector<RowSink*>& sinks) {
   RunEnd end;
   auto hand = [&] {

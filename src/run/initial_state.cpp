@@ -23,7 +23,7 @@ namespace {
 // `which` then " of line[i] (\"its name\")".
 void CheckInitialStretch(const SceneDef& scene, const std::string& line, const std::string& which,
                          const std::vector<SectionDef>& sections,
-                         const std::vector<WeightDef>& weights, const Model& m, const State& s) {
+                         const std::vector<WeightDef>& weights, const LineModel& m, const State& s) {
   if (m.line.law != LinkLaw::kElastic) return;
   int worst = -1;
   double stretch = 0;
@@ -85,7 +85,7 @@ void CheckInitialStretch(const SceneDef& scene, const std::string& line, const s
 
 }  // namespace
 
-void CheckSystemInitialStretch(const SceneDef& scene, const SystemModel& sys,
+void CheckSystemInitialStretch(const SceneDef& scene, const Model& sys,
                                const std::vector<State>& states) {
   for (std::size_t i = 0; i < sys.lines.size(); ++i)
     for (std::size_t k = 0; k < scene.lines.size(); ++k)
@@ -97,9 +97,9 @@ void CheckSystemInitialStretch(const SceneDef& scene, const SystemModel& sys,
       }
 }
 
-State MakeInitialState(const SceneDef& scene, const Model& m, EquilibriumReport* report,
+State MakeInitialState(const SceneDef& scene, const LineModel& m, LineEquilibriumReport* report,
                        const CancelFlag* cancel) {
-  EquilibriumOptions options;
+  LineEquilibriumOptions options;
   options.cancel = cancel;
   State s;
   if (scene.initial == InitialStateKind::kEquilibrium) {
@@ -111,9 +111,9 @@ State MakeInitialState(const SceneDef& scene, const Model& m, EquilibriumReport*
           // Near the answer, in the full current: Newton from it directly (the continuation
           // from still water only if that fails).
           options.warm_start = true;
-          s = SolveEquilibrium(m, *guess, report, options);
+          s = SolveLineEquilibrium(m, *guess, report, options);
         } else {
-          s = SolveEquilibrium(m, report, options);
+          s = SolveLineEquilibrium(m, report, options);
         }
       } catch (const CancelledError&) {
         throw;

@@ -2,7 +2,7 @@
 
 namespace cablefilm {
 
-bool MemoryRows::Row(const Data& d) {
+bool MemoryRows::Row(const LineData& d) {
   time.push_back(d.state.t);
   const Points& p = d.state.x;  // column-major: x, y, z of station 0, then of station 1, ...
   x.insert(x.end(), p.data(), p.data() + p.size());
@@ -17,7 +17,7 @@ bool MemoryRows::Row(const Data& d) {
   return true;
 }
 
-void MemoryRows::Reserve(const Model& m, const Inputs& in, long rows) {
+void MemoryRows::Reserve(const LineModel& m, const Inputs& in, long rows) {
   model_ = &m;
   inputs_ = &in;
   ends_ = EndLoads(m);
@@ -28,7 +28,7 @@ void MemoryRows::Reserve(const Model& m, const Inputs& in, long rows) {
   end_load.reserve(n * 2 * kDim);
 }
 
-MemoryRun RunInMemory(const SceneDef& scene, const Model& model, const CancelFlag* stop) {
+MemoryRun RunInMemory(const SceneDef& scene, const LineModel& model, const CancelFlag* stop) {
   MemoryRun out{scene, PrepareRun(scene, model, LawName(model.line.law), stop), MemoryRows()};
   out.rows.Reserve(out.run.model, out.run.inputs, out.run.grid.outputs + 1);
   ExecuteRun(out.run, {&out.rows});

@@ -23,12 +23,12 @@ struct MemoryRows : RowSink {
   std::vector<double> tension;    // link tensions [N], rows x s (0 when slack)
   std::vector<double> end_load;   // end loads [N], rows x 2 x kDim (core/end_loads.h: the
                                   // force the line exerts on what holds its start, its end)
-  bool Row(const Data& d) override;
+  bool Row(const LineData& d) override;
   // Rows for `m`, whose end loads are computed in `in` (both outlive the rows' filling).
-  void Reserve(const Model& m, const Inputs& in, long rows);
+  void Reserve(const LineModel& m, const Inputs& in, long rows);
 
  private:
-  const Model* model_ = nullptr;
+  const LineModel* model_ = nullptr;
   const Inputs* inputs_ = nullptr;
   EndLoads ends_;
 };
@@ -43,6 +43,6 @@ struct MemoryRun {
 // state to its end, or until `stop` is raised. A blow-up ends the run with
 // run.summary.completed false and its message in run.summary.failure (the rows so far kept).
 // Throws Error when the initial state cannot be found.
-MemoryRun RunInMemory(const SceneDef& scene, const Model& model, const CancelFlag* stop);
+MemoryRun RunInMemory(const SceneDef& scene, const LineModel& model, const CancelFlag* stop);
 
 }  // namespace cablefilm

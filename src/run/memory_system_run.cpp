@@ -10,7 +10,7 @@ class PointRows : public SystemRowSink {
  public:
   PointRows(const SystemRun& run, MemorySystemRows& rows)
       : run_(run), rows_(rows), loads_(run.sys) {}
-  bool Row(const SystemData& sd) override {
+  bool Row(const Data& sd) override {
     loads_.Compute(run_.sys, sd, run_.inputs);
     const Points& x = loads_.positions();
     const Points& f = loads_.forces();
@@ -36,7 +36,7 @@ class PointRows : public SystemRowSink {
 MemoryRun LineRun(const SceneDef& scene, const SystemRun& run, size_t i) {
   MemoryRun line;
   line.scene = scene;
-  line.run.label = "elastic";  // a system's lines are elastic (core/system.h)
+  line.run.label = "elastic";  // a system's lines are elastic (core/model.h)
   line.run.model = run.sys.lines[i];
   line.run.grid = run.grid;
   line.run.inputs = run.inputs;
@@ -54,7 +54,7 @@ MemorySystemRun Execute(const SceneDef& scene, SystemRun prepared, long rows) {
   std::vector<std::vector<RowSink*>> line_sinks(nl);
   for (size_t i = 0; i < nl; ++i) {
     out.lines.push_back(LineRun(scene, run, i));
-    const Model& m = run.sys.lines[i];
+    const LineModel& m = run.sys.lines[i];
     out.lines[i].rows.Reserve(m, run.inputs, rows);
   }
   for (size_t i = 0; i < nl; ++i) line_sinks[i] = {&out.lines[i].rows};
@@ -76,13 +76,13 @@ MemorySystemRun Execute(const SceneDef& scene, SystemRun prepared, long rows) {
 
 }  // namespace
 
-MemorySystemRun RunSystemInMemory(const SceneDef& scene, SystemModel sys, const CancelFlag* stop) {
+MemorySystemRun RunSystemInMemory(const SceneDef& scene, Model sys, const CancelFlag* stop) {
   SystemRun run = PrepareSystemRun(scene, std::move(sys), stop);
   const long rows = run.grid.outputs + 1;
   return Execute(scene, std::move(run), rows);
 }
 
-MemorySystemRun SystemEquilibriumInMemory(const SceneDef& scene, SystemModel sys,
+MemorySystemRun SystemEquilibriumInMemory(const SceneDef& scene, Model sys,
                                           const CancelFlag* stop) {
   for (BodySpec& b : sys.bodies) b.initial_offset = Vec6::Zero();
   SystemRun run = PrepareSystemRun(scene, std::move(sys), stop);

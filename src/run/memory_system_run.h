@@ -2,7 +2,7 @@
 // A run of a system of lines (system_run.h) held in memory, with no file written, for the
 // Python module: each line's rows as a single line's run keeps them (memory_run.h: the
 // doubles of lines/<name>/results.nc), and the points' and bodies' rows (what points.csv and
-// body.csv print, core/system_step.h's PointLoads, here as doubles). Each line is also a
+// body.csv print, core/coupled_step.h's PointLoads, here as doubles). Each line is also a
 // MemoryRun of its own (its model, its summary, its rows), so that a line of a system reads
 // like a single line's run.
 #include <vector>
@@ -35,12 +35,12 @@ struct MemorySystemRun {
 // their initial offsets) to the scene's end, or until `stop` is raised, as `cablefilm run`
 // does. A blow-up ends the run with run.summary.completed false and its message in
 // run.summary.failure (the rows so far kept). Throws Error when the system has no equilibrium.
-MemorySystemRun RunSystemInMemory(const SceneDef& scene, SystemModel sys, const CancelFlag* stop);
+MemorySystemRun RunSystemInMemory(const SceneDef& scene, Model sys, const CancelFlag* stop);
 
 // The system's static equilibrium (its free bodies at their equilibrium poses, whatever their
 // initial offsets) as a run's first row: run.initial, rows holding that one row. Throws Error
 // when there is none.
-MemorySystemRun SystemEquilibriumInMemory(const SceneDef& scene, SystemModel sys,
+MemorySystemRun SystemEquilibriumInMemory(const SceneDef& scene, Model sys,
                                           const CancelFlag* stop);
 
 }  // namespace cablefilm

@@ -12,7 +12,7 @@ namespace {
 class RecordSink : public RowSink {
  public:
   explicit RecordSink(Run& run) : run_(run) { run_.row_ends = EndLoads(run.model); }
-  bool Row(const Data& d) override {
+  bool Row(const LineData& d) override {
     const Eigen::VectorXd& T = d.tension();
     run_.extent.Add(d.state, T);
     run_.row_max.Append(d.state.t, T.maxCoeff());
@@ -40,11 +40,11 @@ const char* LawName(LinkLaw law) {
   return law == LinkLaw::kElastic ? "elastic" : "inextensible";
 }
 
-Run PrepareRun(const SceneDef& scene, Model model, std::string label, const CancelFlag* stop) {
+Run PrepareRun(const SceneDef& scene, LineModel model, std::string label, const CancelFlag* stop) {
   Run run;
   run.label = std::move(label);
   run.model = std::move(model);
-  const Model& m = run.model;
+  const LineModel& m = run.model;
   run.grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
   run.inputs = SceneInputs(m);
   run.inputs.stop = stop;
@@ -52,7 +52,7 @@ Run PrepareRun(const SceneDef& scene, Model model, std::string label, const Canc
   const State initial = MakeInitialState(scene, m, &run.equilibrium, stop);
   run.equilibrium_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  run.initial = MakeData(m, run.inputs, run.grid.options, initial);
+  run.initial = MakeLineData(m, run.inputs, run.grid.options, initial);
   run.extent = RunExtent(initial);
   run.summary.scheme = SchemeName(m, run.grid.options);
   run.summary.tolerance = run.grid.automatic ? run.grid.options.tolerance : 0.0;
@@ -68,7 +68,7 @@ void ExecuteRun(Run& run, const std::vector<RowSink*>& sinks) {
   RecordSink record(run);
   std::vector<RowSink*> all{&record};
   all.insert(all.end(), sinks.begin(), sinks.end());
-  Data d = run.initial;
+  LineData d = run.initial;
   const auto t0 = std::chrono::steady_clock::now();
   const RunEnd end = Drive(run.model, d, run.inputs, run.grid, all);
   RunSummary& s = run.summary;

@@ -1,16 +1,16 @@
 #pragma once
 // A model of a scene run once: what its files, its pictures and its report are made from. The
 // command line writes its rows to files as they come (io/), the Python module keeps them in
-// memory (memory_run.h), the film steps a copy of its initial Data again (view/film_pass.h).
+// memory (memory_run.h), the film steps a copy of its initial LineData again (view/film_pass.h).
 #include <string>
 #include <vector>
 
 #include "core/cancel.h"
-#include "core/data.h"
+#include "core/line_data.h"
 #include "core/end_loads.h"
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/inputs.h"
-#include "core/model.h"
+#include "core/line_model.h"
 #include "run/driver.h"
 #include "run/max_tension_log.h"
 #include "run/run_extent.h"
@@ -22,12 +22,12 @@ namespace cablefilm {
 
 struct Run {
   std::string label;               // the model's name: "elastic", "inextensible"
-  Model model;
+  LineModel model;
   TimeGrid grid;
   Inputs inputs;                   // the scene's (with the stop flag)
-  EquilibriumReport equilibrium;   // with [initial] state = "equilibrium"
+  LineEquilibriumReport equilibrium;   // with [initial] state = "equilibrium"
   double equilibrium_ms = 0;       // the time it took [ms]
-  Data initial;                    // t = 0: the initial state, its tensions, the scheme's start
+  LineData initial;                    // t = 0: the initial state, its tensions, the scheme's start
   RunExtent extent;                // of every row: the film's colour range and world box
   MaxTensionLog row_max;           // the largest link tension of every row
   RunSummary summary;
@@ -41,9 +41,9 @@ std::vector<std::string> SectionMaterials(const SceneDef& scene,
                                           const std::vector<SectionDef>& sections);
 
 // The run of `model` as `scene` says: its time grid, its initial state (the static equilibrium
-// or the straight chord) and the Data it starts from. Throws Error when the equilibrium is not
+// or the straight chord) and the LineData it starts from. Throws Error when the equilibrium is not
 // found, CancelledError when `stop` is raised during it.
-Run PrepareRun(const SceneDef& scene, Model model, std::string label, const CancelFlag* stop);
+Run PrepareRun(const SceneDef& scene, LineModel model, std::string label, const CancelFlag* stop);
 
 // Steps a copy of run.initial through the grid (run/driver.h), every row to `sinks` and to the
 // run's own record (extent, row maxima, summary: how it ended, its steps, its warnings). The

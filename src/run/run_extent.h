@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 #include <limits>
 
-#include "core/data.h"
+#include "core/line_data.h"
 
 namespace cablefilm {
 

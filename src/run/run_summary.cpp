@@ -79,7 +79,7 @@ std::vector<std::string> SummaryCells(const RunSummary& s) {
   return cells;
 }
 
-std::vector<std::string> TrustWarnings(const Model& m, const StepStats& stats, bool in_system) {
+std::vector<std::string> TrustWarnings(const LineModel& m, const StepStats& stats, bool in_system) {
   std::vector<std::string> warnings;
   const StepRecord& r = stats.record;
   if (r.unresolved_snaps > 0) {

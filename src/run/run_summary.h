@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "core/data.h"
-#include "core/model.h"
+#include "core/line_data.h"
+#include "core/line_model.h"
 
 namespace cablefilm {
 
 struct RunSummary {
-  std::string scheme;             // the scheme's name (core/data.h, SchemeName)
+  std::string scheme;             // the scheme's name (core/line_data.h, SchemeName)
   double tolerance = 0;           // local position error per step [m]; 0: fixed steps
   double start_tolerance = 0;     // the stricter one while the motion starts [m]; 0: none
   double start_end = 0;           // until then [s]
@@ -72,7 +72,7 @@ struct RunSummary {
 // resolve them (see core/snap_monitor.h), with what would resolve them: explicit steps for a
 // line, fixed implicit ones for a line of a system (`in_system`: it runs the implicit scheme
 // only).
-std::vector<std::string> TrustWarnings(const Model& m, const StepStats& stats,
+std::vector<std::string> TrustWarnings(const LineModel& m, const StepStats& stats,
                                        bool in_system = false);
 
 // "N steps (M rejected) from a to b s[, k Newton iterations per step]".

@@ -5,7 +5,7 @@
 
 #include "core/cancel.h"
 #include "core/error.h"
-#include "core/system_relaxation.h"
+#include "core/relaxation.h"
 #include "run/initial_state.h"
 #include "run/run.h"
 
@@ -15,7 +15,7 @@ namespace {
 // The grid of the system: each line's own (ChooseTimeGrid); the finest step asked, and with
 // "auto" the longest line's tolerance (1e-6 of its length: the system's scale; the shortest
 // line's would make a short pendant set the steps of the whole mooring).
-TimeGrid SystemGrid(const SceneDef& scene, const SystemModel& sys) {
+TimeGrid SystemGrid(const SceneDef& scene, const Model& sys) {
   TimeGrid grid;
   double longest = -1, tolerance = 0, start_tolerance = 0, start_end = 0;
   for (size_t i = 0; i < sys.lines.size(); ++i) {
@@ -37,7 +37,7 @@ TimeGrid SystemGrid(const SceneDef& scene, const SystemModel& sys) {
 // run's initial data (the lines at `states`, the bodies where run.sys has them) and its
 // summaries, empty, for the grid's step options.
 void StartFrom(const SceneDef& scene, SystemRun& run, const std::vector<State>& states) {
-  run.initial = MakeSystemData(run.sys, run.inputs, run.grid.options, states);
+  run.initial = MakeData(run.sys, run.inputs, run.grid.options, states);
   run.lines.resize(run.sys.lines.size());
   for (size_t i = 0; i < run.lines.size(); ++i) {
     for (const LineDef& def : scene.lines)
@@ -58,15 +58,15 @@ void StartFrom(const SceneDef& scene, SystemRun& run, const std::vector<State>& 
 
 }  // namespace
 
-void StepSystemSpan(const SystemModel& sys, SystemData& sd, const Inputs& in, double seconds,
+void StepSystemSpan(const Model& sys, Data& sd, const Inputs& in, double seconds,
                     int steps) {
   const double t0 = sd.t, dt = seconds / steps;
   for (int k = 0; k < steps; ++k) {
     ThrowIfCancelled(in.stop, "the simulation");
-    StepSystem(sys, sd, in, dt);
+    Step(sys, sd, in, dt);
   }
   sd.t = t0 + seconds;
-  for (Data& d : sd.lines) d.state.t = sd.t;
+  for (LineData& d : sd.lines) d.state.t = sd.t;
 }
 
 void SystemRowStepper::Next() {
@@ -74,24 +74,24 @@ void SystemRowStepper::Next() {
   StepSystemSpan(sys_, sd_, in_, grid_.interval, grid_.steps_per_output);
   // Each row at exactly row x interval (no round-off drift over long runs).
   sd_.t = ++row_ * grid_.interval;
-  for (Data& d : sd_.lines) d.state.t = sd_.t;
+  for (LineData& d : sd_.lines) d.state.t = sd_.t;
 }
 
-std::vector<State> SystemStatics(const SceneDef& scene, const SystemModel& sys,
-                                 SystemEquilibriumReport* report, const CancelFlag* stop,
+std::vector<State> SystemStatics(const SceneDef& scene, const Model& sys,
+                                 EquilibriumReport* report, const CancelFlag* stop,
                                  const std::function<void(double)>& relaxing,
                                  const std::function<void(double)>& solving) {
   if (sys.lines.empty()) throw Error(scene.path + ": a system needs at least one [[line]]");
   Inputs in = SceneInputs(sys.lines[0]);
   in.stop = stop;
-  SystemEquilibriumOptions options;
+  EquilibriumOptions options;
   options.cancel = stop;
   options.relaxing = relaxing;
   options.solving = solving;
-  return SolveSystemEquilibriumRelaxing(sys, in, SystemGrid(scene, sys).options, report, options);
+  return SolveEquilibriumRelaxing(sys, in, SystemGrid(scene, sys).options, report, options);
 }
 
-SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop,
+SystemRun PrepareSystemRun(const SceneDef& scene, Model sys, const CancelFlag* stop,
                            const std::function<void(double)>& relaxing,
                            const std::function<void(double)>& solving) {
   SystemRun run;
@@ -100,13 +100,13 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
   run.grid = SystemGrid(scene, run.sys);
   run.inputs = SceneInputs(run.sys.lines[0]);  // one environment: any line's inputs
   run.inputs.stop = stop;
-  SystemEquilibriumOptions options;
+  EquilibriumOptions options;
   options.cancel = stop;
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<State> states = SystemStatics(scene, run.sys, &run.equilibrium, stop, relaxing, solving);
   // A free body given an initial offset starts there, its lines in equilibrium with it held
   // (a decay test); the others at their equilibrium.
-  SystemModel held = run.sys;
+  Model held = run.sys;
   bool offset = false;
   for (int b : run.sys.free_bodies) {
     const Vec6 start = run.equilibrium.body_poses[b] + run.sys.bodies[b].initial_offset;
@@ -117,7 +117,7 @@ SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelF
   }
   if (offset) {
     try {
-      states = SolveSystemEquilibrium(held, nullptr, options);
+      states = SolveEquilibrium(held, nullptr, options);
     } catch (const CancelledError&) {
       throw;
     } catch (const Error& e) {
@@ -139,19 +139,19 @@ SystemRun RestartSystemRun(const SceneDef& scene, const SystemRun& run) {
   again.equilibrium = run.equilibrium;
   again.equilibrium_ms = run.equilibrium_ms;
   std::vector<State> states;
-  for (const Data& d : run.initial.lines) states.push_back(d.state);
+  for (const LineData& d : run.initial.lines) states.push_back(d.state);
   StartFrom(scene, again, states);
   return again;
 }
 
 void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& line_sinks,
                       const std::vector<SystemRowSink*>& sinks) {
-  SystemData sd = run.initial;
+  Data sd = run.initial;
   const int nl = static_cast<int>(sd.lines.size());
   auto hand = [&] {
     bool go_on = true;
     for (int i = 0; i < nl; ++i) {
-      const Data& d = sd.lines[i];
+      const LineData& d = sd.lines[i];
       const Eigen::VectorXd& T = d.tension();
       run.lines[i].AddRow(d.state.t, T, run.sys.lines[i].line.breaking_load);
       run.extents[i].Add(d.state, T);

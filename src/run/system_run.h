@@ -1,14 +1,14 @@
 #pragma once
-// A system of lines (core/system.h) run as its scene says: the static equilibrium of the whole
-// system, then the coupled implicit step (core/system_step.h) from output row to output row,
+// A system of lines (core/model.h) run as its scene says: the static equilibrium of the whole
+// system, then the coupled implicit step (core/coupled_step.h) from output row to output row,
 // each row handed to every line's sinks (the same sinks a single line's run writes: its CSV,
 // its NetCDF file) and to the system's own (the points' forces).
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "core/system_equilibrium.h"
-#include "core/system_step.h"
+#include "core/equilibrium.h"
+#include "core/coupled_step.h"
 #include "run/driver.h"
 #include "run/max_tension_log.h"
 #include "run/run_extent.h"
@@ -22,17 +22,17 @@ namespace cablefilm {
 class SystemRowSink {
  public:
   virtual ~SystemRowSink() = default;
-  virtual bool Row(const SystemData& sd) = 0;
+  virtual bool Row(const Data& sd) = 0;
 };
 
 struct SystemRun {
-  SystemModel sys;
+  Model sys;
   TimeGrid grid;                     // the output rows and the step's options (the tightest
                                      // line's tolerance)
   Inputs inputs;                     // the scene's (with the stop flag)
-  SystemEquilibriumReport equilibrium;
+  EquilibriumReport equilibrium;
   double equilibrium_ms = 0;         // [ms]
-  SystemData initial;                // t = 0
+  Data initial;                // t = 0
   std::vector<RunSummary> lines;     // each line's: its peak, its least tension
   std::vector<RunExtent> extents;    // each line's over every row: the film's colour range
                                      // and world box
@@ -47,14 +47,14 @@ struct SystemRun {
 // the grid's tolerance asks), polling in.stop; its time (every line's) then exactly t0 +
 // seconds. What a row of SystemRowStepper takes, and a frame of the live view. Throws
 // BlowUpError, CancelledError.
-void StepSystemSpan(const SystemModel& sys, SystemData& sd, const Inputs& in, double seconds,
+void StepSystemSpan(const Model& sys, Data& sd, const Inputs& in, double seconds,
                     int steps);
 
-// Steps a SystemData from row to row of a grid, as RowStepper steps a line: the run and the
+// Steps a Data from row to row of a grid, as RowStepper steps a line: the run and the
 // film's second pass step alike, so that the film repeats the run step for step.
 class SystemRowStepper {
  public:
-  SystemRowStepper(const SystemModel& sys, SystemData& sd, const Inputs& in,
+  SystemRowStepper(const Model& sys, Data& sd, const Inputs& in,
                    const TimeGrid& grid)
       : sys_(sys), sd_(sd), in_(in), grid_(grid) {}
   long row() const { return row_; }  // the row reached: 0 is the initial state
@@ -64,8 +64,8 @@ class SystemRowStepper {
   void Next();
 
  private:
-  const SystemModel& sys_;
-  SystemData& sd_;
+  const Model& sys_;
+  Data& sd_;
   const Inputs& in_;
   const TimeGrid& grid_;
   long row_ = 0;
@@ -73,18 +73,18 @@ class SystemRowStepper {
 
 // The system's static equilibrium as its run starts from it (each line's state; the bodies'
 // poses in `report`): Newton's, or where Newton fails from the scene's positions, the
-// relaxation's (core/system_relaxation.h) with the run's step options; `solving` and
+// relaxation's (core/relaxation.h) with the run's step options; `solving` and
 // `relaxing` told the fraction of their bounds used as Newton and the relaxation go on
-// (SystemEquilibriumOptions::solving, ::relaxing). Throws Error when the system has none,
+// (EquilibriumOptions::solving, ::relaxing). Throws Error when the system has none,
 // CancelledError when `stop` is raised.
-std::vector<State> SystemStatics(const SceneDef& scene, const SystemModel& sys,
-                                 SystemEquilibriumReport* report, const CancelFlag* stop,
+std::vector<State> SystemStatics(const SceneDef& scene, const Model& sys,
+                                 EquilibriumReport* report, const CancelFlag* stop,
                                  const std::function<void(double)>& relaxing = {},
                                  const std::function<void(double)>& solving = {});
 
 // Throws Error when the system has no equilibrium, CancelledError when `stop` is raised.
 // `relaxing`, `solving`: as SystemStatics'.
-SystemRun PrepareSystemRun(const SceneDef& scene, SystemModel sys, const CancelFlag* stop,
+SystemRun PrepareSystemRun(const SceneDef& scene, Model sys, const CancelFlag* stop,
                            const std::function<void(double)>& relaxing = {},
                            const std::function<void(double)>& solving = {});
 

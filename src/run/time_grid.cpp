@@ -5,7 +5,7 @@
 
 namespace cablefilm {
 
-double StartDuration(const Model& m) {
+double StartDuration(const LineModel& m) {
   constexpr double kRampsToStart = 5;  // nu t at which R(t) = 1 - 6 exp(-5) = 0.96
   const auto start = [&](double ramp_rate, double period) {
     return ramp_rate > 0 ? kRampsToStart / ramp_rate : period;
@@ -19,7 +19,7 @@ double StartDuration(const Model& m) {
   return end;
 }
 
-TimeGrid ChooseTimeGrid(const Model& m, const SimulationDef& sim, double interval) {
+TimeGrid ChooseTimeGrid(const LineModel& m, const SimulationDef& sim, double interval) {
   TimeGrid g;
   StepOptions& o = g.options;
   o.scheme = sim.integrator == IntegratorChoice::kExplicit ? Scheme::kExplicit : Scheme::kImplicit;

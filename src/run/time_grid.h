@@ -1,8 +1,8 @@
 #pragma once
 // The time grid of a run: its output rows (every `interval`, up to the scene's duration), the
-// step asked of the scheme between them, and the scheme's options (core/data.h).
-#include "core/data.h"
-#include "core/model.h"
+// step asked of the scheme between them, and the scheme's options (core/line_data.h).
+#include "core/line_data.h"
+#include "core/line_model.h"
 #include "core/stability.h"
 #include "scene/scene_def.h"
 
@@ -26,7 +26,7 @@ constexpr double kStartToleranceDivisor = 20;
 // How long the motion takes to start [s]: the longest of the ramps of eq. (3) (the ends' and
 // the waves') to within 4 % of their amplitude, R(t) = 1 - (1 + nu t) exp(-nu t) at nu t = 5;
 // a motion without a ramp (nu = 0) starts in one period. 0 when nothing moves.
-double StartDuration(const Model& m);
+double StartDuration(const LineModel& m);
 
 struct TimeGrid {
   StepOptions options;       // the scheme and its settings
@@ -45,6 +45,6 @@ struct TimeGrid {
 // where links go slack or snap taut); for the implicit and the inextensible schemes an adaptive
 // step below the output interval, chosen by a local error estimate (independent of the
 // stations; the inextensible one also below its transverse-wave limit).
-TimeGrid ChooseTimeGrid(const Model& m, const SimulationDef& sim, double interval);
+TimeGrid ChooseTimeGrid(const LineModel& m, const SimulationDef& sim, double interval);
 
 }  // namespace cablefilm

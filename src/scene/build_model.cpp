@@ -232,18 +232,18 @@ EnvironmentSpec MakeEnvironment(const SceneDef& scene) {
 
 }  // namespace
 
-Model BuildModel(const SceneDef& scene) {
+LineModel BuildModel(const SceneDef& scene) {
   if (scene.is_system())
     throw Error(scene.path + ": a system of lines ([[line]] and [[point]]): `cablefilm run` and "
                 "`check` run it; this command takes a single line ([cable] and [ends])");
   const LinkLaw law =
       scene.model == CableModelKind::kElastic ? LinkLaw::kElastic : LinkLaw::kInextensible;
-  return MakeModel(MakeSections(scene, scene.sections),
+  return MakeLineModel(MakeSections(scene, scene.sections),
                    MakePrisms(scene.sections, scene.weights, scene.path), MakeEnvironment(scene),
                    MakeEndMotion(scene.start), MakeEndMotion(scene.end), law);
 }
 
-SystemModel BuildSystem(const SceneDef& scene) {
+Model BuildSystem(const SceneDef& scene) {
   const double deg = M_PI / 180.0;
   std::vector<BodySpec> bodies;
   for (const BodyDef& d : scene.bodies) {
@@ -302,7 +302,7 @@ SystemModel BuildSystem(const SceneDef& scene) {
     lines.push_back(l);
   }
   try {
-    return MakeSystem(lines, points, MakeEnvironment(scene), bodies);
+    return MakeModel(lines, points, MakeEnvironment(scene), bodies);
   } catch (const Error& e) {
     throw Error(scene.path + ": " + e.what());
   }

@@ -1,16 +1,16 @@
 #pragma once
 // From the scene's plain data to the physics model (parse, then build).
+#include "core/line_model.h"
 #include "core/model.h"
-#include "core/system.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {
 
 // A single line's model; throws Error for a system's scene.
-Model BuildModel(const SceneDef& scene);
+LineModel BuildModel(const SceneDef& scene);
 // A system's model ([[line]] and [[point]]); throws Error naming the scene when it cannot be
 // built (a free point no line holds, a line whose ends are both loose).
-SystemModel BuildSystem(const SceneDef& scene);
+Model BuildSystem(const SceneDef& scene);
 
 // An end's (a point's, a body's reference point's) motion as the scene gives it.
 EndMotion MakeEndMotion(const EndDef& e);

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/model.h"
+#include "core/line_model.h"
 
 namespace cablefilm {
 
@@ -21,7 +21,7 @@ struct EnvironmentDef {
   Vec current_direction = Vec(1.0, 0.0, 0.0);
 };
 
-// [seabed]: a flat seabed (optional), as the core takes it (core/model.h).
+// [seabed]: a flat seabed (optional), as the core takes it (core/line_model.h).
 using SeabedDef = SeabedSpec;
 
 struct WavesDef {                  // [waves]: regular linear (Airy) waves along +x (optional)

@@ -50,7 +50,7 @@ std::string FilmFramesProblem(double span, double fps, double speed) {
   return why;
 }
 
-void CheckModelLimits(const SceneDef& scene, const Model& m) {
+void CheckModelLimits(const SceneDef& scene, const LineModel& m) {
   const std::string file = EscapeText(scene.path);
   auto fail = [&](const std::string& key, const std::string& message) {
     throw Error(file + ": " + key + ": " + message);

@@ -53,7 +53,7 @@ FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>&
 bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
                 const FilmRequest& request, const std::atomic<int>& stop, PictureReport* report) {
   const Run& main = *runs.front();
-  // Every run steps again from its initial Data to the frames (film_clock.h), in lockstep so
+  // Every run steps again from its initial LineData to the frames (film_clock.h), in lockstep so
   // that a run can be drawn over another.
   const FilmClock clock(request.speed, request.fps, main.grid);
   const double frame_interval = clock.interval;
@@ -62,7 +62,7 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
   struct Stepper {
     TimeGrid grid;
     Inputs inputs;
-    Data data;
+    LineData data;
     Eigen::VectorXd row_min, row_max;  // on_rows: each link's envelope over the rows since the
                                        // last frame [N] (empty: none yet)
   };
@@ -108,7 +108,7 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
     const int steps = clock.LastFrameSteps(runs[r]->grid);
     for (int i = 0; i < steps; ++i) {
       ThrowIfCancelled(&stop, "the film");
-      Step(runs[r]->model, st.data, st.inputs, span / steps);
+      StepLine(runs[r]->model, st.data, st.inputs, span / steps);
     }
     st.data.state.t = frame_time(k);
   };

@@ -31,7 +31,7 @@ Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& requ
   if (row < 0 || row >= rows.rows)
     throw Error("row " + std::to_string(row) + ": expected a row from 0 to " +
                 std::to_string(rows.rows - 1));
-  const Model& model = run.run.model;
+  const LineModel& model = run.run.model;
   const SceneView scene = MakeFilmScene(run.scene, {&run.run}, request.view);
   const Vec current = TopCurrent(model, SceneWater(model));
   const FixedPolicy policy = MakeFilmPolicy(scene, {&run.run}, request, run.run.grid.end());
@@ -47,7 +47,7 @@ Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& requ
   return DrawRowFrame(scene, history, snap, request, colormap);
 }
 
-void SetRowLine(const MemoryRows& rows, long r, const Model& model, LineSnapshot* line) {
+void SetRowLine(const MemoryRows& rows, long r, const LineModel& model, LineSnapshot* line) {
   const Eigen::Index stations = model.stations(), links = model.line.links;
   const Points x = Eigen::Map<const Points>(rows.x.data() + r * stations * kDim, kDim, stations);
   const Eigen::Map<const Eigen::VectorXd> T(rows.tension.data() + r * links, links);

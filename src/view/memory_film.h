@@ -27,7 +27,7 @@ Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& requ
 
 // The steps of such a frame, shared with a system's (memory_system_film.h):
 // `line` as held rows r of `rows` (a run of `model`) show it;
-void SetRowLine(const MemoryRows& rows, long r, const Model& model, LineSnapshot* line);
+void SetRowLine(const MemoryRows& rows, long r, const LineModel& model, LineSnapshot* line);
 // `snap` (its time and lines set) added to the history as a row of its own, with the sea and
 // the current;
 void AddRowSnapshot(const SceneView& scene, const FixedPolicy& policy, const Wave& wave,

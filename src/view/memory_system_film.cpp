@@ -17,11 +17,11 @@ Image DrawMemorySystemFrame(const MemorySystemRun& run, long row, const FilmRequ
   if (row < 0 || row >= rows)
     throw Error("row " + std::to_string(row) + ": expected a row from 0 to " +
                 std::to_string(rows - 1));
-  const SystemModel& sys = run.run.sys;
+  const Model& sys = run.run.sys;
   const std::size_t nl = sys.lines.size();
   const SceneView scene = MakeSystemFilmScene(run.scene, run.run, request.view);
   const FixedPolicy policy = MakeSystemFilmPolicy(scene, run.run, request, run.run.grid.end());
-  const Model& any = sys.lines.front();  // one environment: any line's is the scene's
+  const LineModel& any = sys.lines.front();  // one environment: any line's is the scene's
   const Vec current = TopCurrent(any, SceneWater(any));
   const Colormap colormap(request.colormap);
   History history(scene, policy);

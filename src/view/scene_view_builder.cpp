@@ -6,7 +6,7 @@
 
 namespace cablefilm {
 
-LineView MakeLineView(const SceneDef& scene, const Model& model, const Points& initial_x,
+LineView MakeLineView(const SceneDef& scene, const LineModel& model, const Points& initial_x,
                       const Eigen::VectorXd& initial_tension, std::string label) {
   const Line& line = model.line;
   LineView view;
@@ -37,7 +37,7 @@ LineView MakeLineView(const SceneDef& scene, const Model& model, const Points& i
   return view;
 }
 
-Vec TopCurrent(const Model& model, const Water& water) {
+Vec TopCurrent(const LineModel& model, const Water& water) {
   const CurrentProfile& profile = model.env.current_profile;
   const double top = model.has_waves()  ? model.env.wave.spec.surface_y
                      : profile.empty() ? 0.0
@@ -45,7 +45,7 @@ Vec TopCurrent(const Model& model, const Water& water) {
   return CurrentAt(model, water, top);
 }
 
-SceneView MakeSceneView(const SceneDef& scene, const Model& model, std::vector<LineView> lines,
+SceneView MakeSceneView(const SceneDef& scene, const LineModel& model, std::vector<LineView> lines,
                         bool space) {
   SceneView view;
   view.title = scene.title;

@@ -18,10 +18,10 @@ namespace cablefilm {
 
 SceneView MakeSystemFilmScene(const SceneDef& scene, const SystemRun& run,
                               const std::string& view) {
-  const SystemModel& sys = run.sys;
+  const Model& sys = run.sys;
   std::vector<LineView> lines;
   for (std::size_t i = 0; i < sys.lines.size(); ++i) {
-    const Data& d = run.initial.lines[i];
+    const LineData& d = run.initial.lines[i];
     lines.push_back(MakeLineView(scene, sys.lines[i], d.state.x, d.tension(), sys.line_names[i]));
     lines.back().section_names.clear();  // the scene's [cable] sections are not a line's
   }
@@ -45,7 +45,7 @@ SceneView MakeSystemFilmScene(const SceneDef& scene, const SystemRun& run,
       body.box_center = scene.bodies[b].box_center;
     }
   }
-  for (const SystemPoint& p : sys.points) {
+  for (const Point& p : sys.points) {
     if (p.ends.empty()) continue;
     if (p.on_body >= 0) {
       v.bodies[p.on_body].points.push_back(static_cast<int>(v.points.size()));
@@ -80,13 +80,13 @@ FixedPolicy MakeSystemFilmPolicy(const SceneView& view, const SystemRun& run,
 
 bool RenderSystemFilm(const SceneDef& scene, const SystemRun& run, const FilmRequest& request,
                       const std::atomic<int>& stop, PictureReport* report) {
-  const SystemModel& sys = run.sys;
+  const Model& sys = run.sys;
   const std::size_t nl = sys.lines.size();
   const FilmClock clock(request.speed, request.fps, run.grid);
   const TimeGrid grid = clock.Grid(run.grid);
   Inputs inputs = run.inputs;
   inputs.stop = &stop;
-  SystemData sd = run.initial;  // stepped again from t = 0, as the run was
+  Data sd = run.initial;  // stepped again from t = 0, as the run was
   SystemRowStepper rows(sys, sd, inputs, grid);
   std::vector<MaxTensionLog::Cursor> cursors;  // each line's output rows
   std::vector<std::string> names;
@@ -123,10 +123,10 @@ bool RenderSystemFilm(const SceneDef& scene, const SystemRun& run, const FilmReq
     const int steps = clock.LastFrameSteps(run.grid);
     for (int i = 0; i < steps; ++i) {
       ThrowIfCancelled(&stop, "the film");
-      StepSystem(sys, sd, inputs, span / steps);
+      Step(sys, sd, inputs, span / steps);
     }
     sd.t = clock.Time(k);
-    for (Data& d : sd.lines) d.state.t = sd.t;
+    for (LineData& d : sd.lines) d.state.t = sd.t;
   };
   FilmOptions o;
   o.width = request.width;
@@ -141,7 +141,7 @@ bool RenderSystemFilm(const SceneDef& scene, const SystemRun& run, const FilmReq
   const SceneView view = MakeSystemFilmScene(scene, run, request.view);
   const FixedPolicy policy = MakeSystemFilmPolicy(view, run, request, clock.Time(clock.last));
   FilmWriter writer(o, view, policy, request.out_dir, static_cast<int>(clock.last + 1));
-  const Model& any = sys.lines.front();  // one environment: any line's is the scene's
+  const LineModel& any = sys.lines.front();  // one environment: any line's is the scene's
   const Vec current = TopCurrent(any, SceneWater(any));
   bool finished = true;
   std::string failure;  // a blow-up in this pass: the film is then partial too

@@ -1,7 +1,7 @@
 #pragma once
 // The pictures of a system of lines (run/system_run.h), as film_pass.h draws a line's:
 // max_tension.png with a curve a line, and the film, a second deterministic pass over the
-// system (SystemRowStepper from its initial Data: a frame's state is its row's) that pushes a
+// system (SystemRowStepper from its initial LineData: a frame's state is its row's) that pushes a
 // snapshot of every line each frame, on the colour range and world box of all the lines' rows
 // (the first pass's), memory bounded whatever the film's length. Every line is drawn alike
 // (SceneView::lines_alike): in full, named, its ends marked as the system's points.

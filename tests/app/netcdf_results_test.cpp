@@ -289,7 +289,7 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   // One time, bit for bit what the run computed (the same simulation in this process).
   const size_t at_row = 100;  // t = 3.333 s
   const SceneDef def = LoadScene(scene);
-  const Model m = BuildModel(def);
+  const LineModel m = BuildModel(def);
   const TimeGrid grid = ChooseTimeGrid(m, def.simulation, def.output.interval);
   State state = MakeInitialState(def, m, nullptr);
   auto integrator = testing::MakeStepper(m, grid);

@@ -93,7 +93,7 @@ TEST_F(RunCommandTest, BlowUpIsDetectedAndNothingNonFiniteIsWritten) {
 
 TEST(BlowUp, IntegratorThrowsWithTimeAndStation) {
   const SceneDef s = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const Model m = BuildModel(s);
+  const LineModel m = BuildModel(s);
   const double dt = 3.0 * ComputeStabilityLimit(m).time_step;
   State st = MakeInitialState(s, m, nullptr);
   testing::Stepper integ(Scheme::kExplicit);
@@ -113,7 +113,7 @@ TEST(BlowUp, IntegratorThrowsWithTimeAndStation) {
 TEST(BlowUp, StableBelowTheLimit) {
   // The same scene at 0.9x the limit runs its 2 s without complaint (the limit is real).
   const SceneDef s = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const Model m = BuildModel(s);
+  const LineModel m = BuildModel(s);
   const double dt = 0.9 * ComputeStabilityLimit(m).time_step;
   State st = MakeInitialState(s, m, nullptr);
   testing::Stepper integ(Scheme::kExplicit);
@@ -124,7 +124,7 @@ TEST(BlowUp, StableBelowTheLimit) {
 // Runs a scene in-process and returns every output's state and tensions as raw doubles.
 std::vector<double> RunSeries(const std::string& path) {
   const SceneDef s = LoadScene(path);
-  const Model m = BuildModel(s);
+  const LineModel m = BuildModel(s);
   const TimeGrid grid = ChooseTimeGrid(m, s.simulation, s.output.interval);
   State st = MakeInitialState(s, m, nullptr);
   auto integ = testing::MakeStepper(m, grid);

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/model.h"
+#include "core/line_model.h"
 #include "test_support.h"
 #include "core/step.h"
 #include "core/stability.h"
@@ -24,7 +24,7 @@ constexpr double kG = 9.80665;
 // w^2 = k / m, zeta = c / (2 sqrt(k m)), w_d = w sqrt(1 - zeta^2).
 struct DampedLink {
   double l = 1.0, area = 1e-4, E = 1e8, mu = 0.1, M = 10.0, zeta = 0.05;
-  Model model;
+  LineModel model;
   double k = 0, m = 0, c = 0, y_eq = 0, d0 = 0;
   DampedLink() {
     SectionSpec s;
@@ -43,7 +43,7 @@ struct DampedLink {
     p.mass = M;
     EnvironmentSpec vacuum;
     vacuum.fluid_density = 0;
-    model = MakeModel({s}, {p}, vacuum, EndMotion::Fixed(InPlane(0, 0)),
+    model = MakeLineModel({s}, {p}, vacuum, EndMotion::Fixed(InPlane(0, 0)),
                             EndMotion::Free(InPlane(0, -l)), LinkLaw::kElastic);
     const double stretch = m * kG / k;  // static [m]
     y_eq = -(l + stretch);
@@ -104,7 +104,7 @@ TEST(AxialDamping, RatioIsOfTheLinksOwnAxialMode) {
   p.added_volume = Vec(0.001, 0.002, 0.001);  // the smaller axis's added mass counts: rho 1e-3
   EnvironmentSpec sea;
   sea.fluid_density = 1000;
-  const Model m = MakeModel({s}, {p}, sea, EndMotion::Fixed(InPlane(0, 0)),
+  const LineModel m = MakeLineModel({s}, {p}, sea, EndMotion::Fixed(InPlane(0, 0)),
                                        EndMotion::Free(InPlane(0, -4)), LinkLaw::kElastic);
   const double k = 2e-4 * 5e9 / 2.0;
   const double m0 = 3.0, m1 = 6.0, m2 = 3.0 + 5.0 + 1.0;  // [kg]: half links, prism, added

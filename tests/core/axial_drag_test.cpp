@@ -5,7 +5,7 @@
 // 1. A straight weightless line held at one end in a uniform current along it: its tension is
 //    the axial drag of the line beyond, T(x) = (1/2) rho C^T pi d U^2 (L - x), linear in the
 //    arc length x and the whole line's drag (1/2) rho C^T pi d L U^2 at the held end. Statics
-//    (SolveEquilibrium), and the implicit and explicit schemes started from the straight line
+//    (SolveLineEquilibrium), and the implicit and explicit schemes started from the straight line
 //    at rest.
 // 2. The axial vibration of a taut line between fixed ends in still water: the tangential added
 //    mass k^t rho sigma joins the line's mass mu along it, and the first axial mode of the
@@ -20,7 +20,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/forces.h"
 #include "core/stability.h"
 #include "test_support.h"
@@ -37,7 +37,7 @@ const double kArea = M_PI * kD * kD / 4;  // sigma [m^2]
 // A uniform line of kLinks links, with the normal drag and added mass of a rope (which a line
 // along the flow and moving along itself never feels: the part across it is exactly 0) and the
 // given tangential coefficients; no gravity, so it stays straight.
-Model AxialLine(double current, EndMotion start, EndMotion end, double ct, double kt,
+LineModel AxialLine(double current, EndMotion start, EndMotion end, double ct, double kt,
                 LinkLaw law = LinkLaw::kElastic, double damping_ratio = 0) {
   SectionSpec s;
   s.length = kL;
@@ -55,14 +55,14 @@ Model AxialLine(double current, EndMotion start, EndMotion end, double ct, doubl
   env.gravity = 0;
   env.fluid_density = kRho;
   env.current = current;  // along +x
-  return MakeModel({s}, {}, env, std::move(start), std::move(end), law);
+  return MakeLineModel({s}, {}, env, std::move(start), std::move(end), law);
 }
 
 // The continuous line's axial drag per metre in a flow U along it [N/m].
 double AxialDragPerMetre(double U) { return 0.5 * kRho * kCt * M_PI * kD * U * U; }
 
 // The links' tensions of state x [N].
-Eigen::VectorXd Tensions(const Model& m, const Points& x) {
+Eigen::VectorXd Tensions(const LineModel& m, const Points& x) {
   ForceWorkspace ws(m.line.links);
   ComputeGeometry(x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
@@ -81,15 +81,15 @@ double WorstAgainstLinear(const Eigen::VectorXd& T, double f) {
 
 TEST(AxialDrag, HeldLineInACurrentAlongItCarriesTheAxialDrag) {
   const double U = 1.0;  // [m/s]
-  const Model m = AxialLine(U, EndMotion::Fixed(Vec::Zero()), EndMotion::Free(Vec(kL, 0, 0)),
+  const LineModel m = AxialLine(U, EndMotion::Fixed(Vec::Zero()), EndMotion::Free(Vec(kL, 0, 0)),
                             kCt, kKt);
   // From the line laid along the current (the solver's own guess hangs it across, and along
   // the current only the normal drag, quadratic in the angle, turns it back: it stops within
   // an angle of the square root of its tolerance).
   Points guess = Points::Zero(kDim, m.stations());
   for (int j = 0; j <= kLinks; ++j) guess(0, j) = j * kL / kLinks;
-  EquilibriumReport rep;
-  const State st = SolveEquilibrium(m, guess, &rep);
+  LineEquilibriumReport rep;
+  const State st = SolveLineEquilibrium(m, guess, &rep);
   const Eigen::VectorXd T = Tensions(m, st.x);
   const double f = AxialDragPerMetre(U), l = kL / kLinks;
   // The held station's reaction: the first link's tension and its own half link's drag.
@@ -109,9 +109,9 @@ TEST(AxialDrag, HeldLineInACurrentAlongItCarriesTheAxialDrag) {
   EXPECT_NEAR(held, f * kL, 1e-7 * f * kL);
   EXPECT_EQ(off_axis, 0.0);  // along the current, nothing pushes it off the axis
   // Without the tangential coefficient there is nothing to hold: the line carries no tension.
-  const Model plain = AxialLine(U, EndMotion::Fixed(Vec::Zero()), EndMotion::Free(Vec(kL, 0, 0)),
+  const LineModel plain = AxialLine(U, EndMotion::Fixed(Vec::Zero()), EndMotion::Free(Vec(kL, 0, 0)),
                                 0.0, 0.0);
-  EXPECT_EQ(Tensions(plain, SolveEquilibrium(plain, guess).x).maxCoeff(), 0.0);
+  EXPECT_EQ(Tensions(plain, SolveLineEquilibrium(plain, guess).x).maxCoeff(), 0.0);
 }
 
 // The same line started straight and unstretched at rest in the current: the drag stretches it
@@ -123,7 +123,7 @@ TEST(AxialDrag, HeldLineInACurrentAlongItCarriesTheAxialDrag) {
 // (a ratio of 0.5 of critical, which changes nothing at rest).
 TEST(AxialDrag, SchemesSettleOnTheAxialDragFromTheStraightLine) {
   const double U = 1.0;
-  const Model m = AxialLine(U, EndMotion::Fixed(Vec::Zero()), EndMotion::Free(Vec(kL, 0, 0)),
+  const LineModel m = AxialLine(U, EndMotion::Fixed(Vec::Zero()), EndMotion::Free(Vec(kL, 0, 0)),
                             kCt, kKt, LinkLaw::kElastic, 0.5);
   const double f = AxialDragPerMetre(U);
   const double limit = ComputeStabilityLimit(m).time_step;
@@ -161,7 +161,7 @@ double AxialModeFrequency(double kt) {
 
 // The period of station kLinks/2's axial motion about its rest position, from `crossings` zero
 // crossings (linear interpolation: at a crossing the acceleration vanishes, an O(dt^3) error).
-double AxialPeriod(const Model& m, Scheme scheme, double dt, double amplitude, double strain) {
+double AxialPeriod(const LineModel& m, Scheme scheme, double dt, double amplitude, double strain) {
   const double l = kL / kLinks;
   State s;
   s.x = Points::Zero(kDim, m.stations());
@@ -191,7 +191,7 @@ TEST(AxialAddedMass, AxialModeOfATautLineSlowsByTheAddedMass) {
   const double amplitude = 0.1 * strain * kL / M_PI;
   const Vec a(0, 0, 0), b(kL * (1 + strain), 0, 0);
   for (double kt : {0.0, kKt}) {
-    const Model m = AxialLine(0.0, EndMotion::Fixed(a), EndMotion::Fixed(b), 0.0, kt);
+    const LineModel m = AxialLine(0.0, EndMotion::Fixed(a), EndMotion::Fixed(b), 0.0, kt);
     const double w = AxialModeFrequency(kt);
     // Steps of 1/400 of the period: each scheme's own frequency error is (w dt)^2 / 24
     // (Verlet: 2 asin(w dt / 2) / dt) or (w dt)^2 / 12 (trapezoidal: 2 atan(w dt / 2) / dt),
@@ -220,7 +220,7 @@ TEST(AxialAddedMass, AxialModeOfATautLineSlowsByTheAddedMass) {
 // parts alike (f A / (mu + k^t rho sigma) = 1 m/s^2 per m/s^2).
 TEST(AxialAddedMass, InextensibleLineTowedAlongItselfMatchesTheRigidLine) {
   const double omega = 2 * M_PI / 8.0, nu = 0.5, amplitude = 0.1;  // [rad/s], [1/s], [m]
-  const Model m = AxialLine(
+  const LineModel m = AxialLine(
       0.0,
       EndMotion::Trochoid(Vec::Zero(), Vec(amplitude, 0, 0), Vec(0.5 * amplitude, 0, 0), omega, nu),
       EndMotion::Free(Vec(kL, 0, 0)), kCt, kKt, LinkLaw::kInextensible);

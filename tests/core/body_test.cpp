@@ -11,8 +11,8 @@
 
 #include "core/body_statics.h"
 #include "core/error.h"
-#include "core/system_equilibrium.h"
-#include "core/system_step.h"
+#include "core/equilibrium.h"
+#include "core/coupled_step.h"
 #include "test_support.h"
 
 namespace cablefilm {
@@ -61,7 +61,7 @@ std::vector<LineSpec> TwoLines() {
   return lines;
 }
 
-SystemModel JunctionAsPoint() {
+Model JunctionAsPoint() {
   PrismSpec p;
   p.mass = kMass;
   p.volume = kVolume;
@@ -70,10 +70,10 @@ SystemModel JunctionAsPoint() {
   points[0] = {"anchor", EndMotion::Fixed(kAnchor), {}};
   points[1] = {"junction", EndMotion::Free(kJunction), p};
   points[2] = {"fairlead", Ship(), {}};
-  return MakeSystem(TwoLines(), points, Water(0.4));
+  return MakeModel(TwoLines(), points, Water(0.4));
 }
 
-SystemModel JunctionAsBody() {
+Model JunctionAsBody() {
   BodySpec b;
   b.name = "float";
   b.kind = BodyKind::kFree;
@@ -86,10 +86,10 @@ SystemModel JunctionAsBody() {
   points[0] = {"anchor", EndMotion::Fixed(kAnchor), {}};
   points[1] = {"junction", EndMotion::Fixed(Vec::Zero()), {}, 0, Vec::Zero()};
   points[2] = {"fairlead", Ship(), {}};
-  return MakeSystem(TwoLines(), points, Water(0.4), {b});
+  return MakeModel(TwoLines(), points, Water(0.4), {b});
 }
 
-double Gap(const SystemData& a, const SystemData& b) {
+double Gap(const Data& a, const Data& b) {
   double gap = 0;
   for (int i = 0; i < 2; ++i)
     gap = std::max(gap, (a.lines[i].state.x - b.lines[i].state.x).cwiseAbs().maxCoeff());
@@ -97,11 +97,11 @@ double Gap(const SystemData& a, const SystemData& b) {
 }
 
 TEST(FreeBody, AtItsReferencePointItIsAFreePoint) {
-  const SystemModel point = JunctionAsPoint(), body = JunctionAsBody();
+  const Model point = JunctionAsPoint(), body = JunctionAsBody();
   ASSERT_EQ(body.free_bodies.size(), 1u);
-  SystemEquilibriumReport report;
-  const std::vector<State> rest_point = SolveSystemEquilibrium(point);
-  const std::vector<State> rest_body = SolveSystemEquilibrium(body, &report);
+  EquilibriumReport report;
+  const std::vector<State> rest_point = SolveEquilibrium(point);
+  const std::vector<State> rest_body = SolveEquilibrium(body, &report);
   // Statics: both balance the same forces to 1e-9 of the load (~60 kN), a position error of
   // that over the lines' stiffness across the junction (~1e4 N/m): ~6e-9 m.
   double gap = 0;
@@ -111,18 +111,18 @@ TEST(FreeBody, AtItsReferencePointItIsAFreePoint) {
   EXPECT_LT(gap, 1e-7);
   EXPECT_LT((report.body_poses[0].head<3>() - rest_point[0].x.col(24)).norm(), 1e-7);
 
-  SystemModel placed = body;
+  Model placed = body;
   PlaceBody(placed, 0, report.body_poses[0]);
   StepOptions o;
   o.scheme = Scheme::kImplicit;
   o.tolerance = 1e-4;
   const Inputs in = SceneInputs(point.lines[0]);
-  SystemData a = MakeSystemData(point, in, o, rest_point);
-  SystemData b = MakeSystemData(placed, in, o, rest_body);
+  Data a = MakeData(point, in, o, rest_point);
+  Data b = MakeData(placed, in, o, rest_body);
   double worst = 0, travel = 0;
   for (int k = 0; k < 150; ++k) {  // 15 s: the ship's ramp and a period and more
-    StepSystem(point, a, in, 0.1);
-    StepSystem(placed, b, in, 0.1);
+    Step(point, a, in, 0.1);
+    Step(placed, b, in, 0.1);
     worst = std::max(worst, Gap(a, b));
     travel = std::max(travel, (a.lines[0].state.x.col(24) - rest_point[0].x.col(24)).norm());
   }
@@ -165,7 +165,7 @@ struct Platform {
   }
   // `current`: a surface current [m/s], uniform 5 m down and falling linearly to none at 20 m
   // (the grounded chain on a frictionless bed in a current would slide: no statics).
-  SystemModel System(BodyKind kind, const Vec& force = Vec::Zero(), double current = 0) const {
+  Model System(BodyKind kind, const Vec& force = Vec::Zero(), double current = 0) const {
     EnvironmentSpec env = Water(0.0);
     if (current != 0) env.current_profile = {{-20.0, -5.0, 0.0}, {0.0, current, current}};
     env.seabed.present = true;
@@ -186,13 +186,13 @@ struct Platform {
       lines[i].start_point = 2 * i;
       lines[i].end_point = 2 * i + 1;
     }
-    return MakeSystem(lines, points, env, {b});
+    return MakeModel(lines, points, env, {b});
   }
 };
 
 TEST(BodyStatics, CentredPlatformLegsAreTheGroundedCatenary) {
   const Platform p;
-  const SystemModel sys = p.System(BodyKind::kHeld);
+  const Model sys = p.System(BodyKind::kHeld);
   const MooringLoad load = LoadAtPose(sys, 0, Vec6::Zero());
   const testing::GroundedCatenary exact =
       testing::SolveGroundedCatenary(p.length, p.w(), p.EA(), p.span(), p.depth - p.draft);
@@ -245,7 +245,7 @@ TEST(BodyStatics, SurgeStiffnessIsTheCatenaryDerivative) {
 
 TEST(BodyStatics, FreeBodyUnderASteadyForceSitsOnTheOffsetCurve) {
   const Platform p;
-  const SystemModel free = p.System(BodyKind::kFree);
+  const Model free = p.System(BodyKind::kFree);
   const Vec6 rest = EquilibriumPose(free, 0);
   const double offset = 8.0;  // [m]
   const std::vector<OffsetPoint> curve = OffsetCurve(free, 0, rest, 0.0, {0.0, offset});
@@ -255,7 +255,7 @@ TEST(BodyStatics, FreeBodyUnderASteadyForceSitsOnTheOffsetCurve) {
   // statics' residual (1e-9 of ~1.5e6 N) over the surge stiffness (~1e4 N/m) is 1e-7 m; the
   // heave and pitch the force brings (~3e5 N over the waterplane's 1e10 N/m: 3e-5 m) move the
   // surge force by K_xy 3e-5 m, a few newtons: 1e-4 m at most (measured 1.3e-8 m).
-  const SystemModel pushed = p.System(BodyKind::kFree, Vec(curve[1].restoring, 0.0, 0.0));
+  const Model pushed = p.System(BodyKind::kFree, Vec(curve[1].restoring, 0.0, 0.0));
   const Vec6 pose = EquilibriumPose(pushed, 0);
   RecordProperty("offset_error", Figure(pose[0] - rest[0] - offset));
   EXPECT_NEAR(pose[0] - rest[0], offset, 1e-4);
@@ -267,8 +267,8 @@ TEST(BodyStatics, FreeBodyUnderASteadyForceSitsOnTheOffsetCurve) {
 // (a drag 0.5 rho CdA: CdA 80 m^2), pushed at rest in the flow by B_2 |c_k| c_k on each axis.
 constexpr double kCurrent = 0.5;  // [m/s]
 constexpr double kDrag = 4.1e4;    // B_2 [N s^2/m^2]
-SystemModel DraggedPlatform(const Platform& p) {
-  SystemModel sys = p.System(BodyKind::kFree, Vec::Zero(), kCurrent);
+Model DraggedPlatform(const Platform& p) {
+  Model sys = p.System(BodyKind::kFree, Vec::Zero(), kCurrent);
   sys.bodies[0].quadratic_damping << kDrag, 0, kDrag, 0, 0, 0;
   return sys;
 }
@@ -278,7 +278,7 @@ TEST(BodyStatics, CurrentDragOnTheBodyIsASteadyForceAlongTheFlow) {
   // per axis (MoorDyn's body drag, on the water's velocity relative to it): the same pose as
   // the body without drag under that force as a constant one. The legs see the same current.
   const Platform p;
-  const SystemModel dragged = DraggedPlatform(p);
+  const Model dragged = DraggedPlatform(p);
   const Vec flow = kCurrent * Horizontal(0.6);
   const Vec force = kDrag * flow.cwiseAbs().cwiseProduct(flow);  // per axis, as MoorDyn's
   const Vec6 pose = EquilibriumPose(dragged, 0);
@@ -298,7 +298,7 @@ TEST(FreeBody, InACurrentItSettlesWhereTheStaticsPutIt) {
   // sway, B_1 = 2 sqrt(K M)). Were the drag on its own velocity, it would stay where it
   // started: the current would not push it.
   const Platform p;
-  SystemModel sys = DraggedPlatform(p);
+  Model sys = DraggedPlatform(p);
   BodySpec& b = sys.bodies[0];
   b.inertia = Vec(2e9, 3e9, 2e9);
   b.added_mass << 5e6, 1e7, 5e6, 4e8, 4e8, 4e8;
@@ -313,9 +313,9 @@ TEST(FreeBody, InACurrentItSettlesWhereTheStaticsPutIt) {
   o.scheme = Scheme::kImplicit;
   o.tolerance = 5e-4;
   const Inputs in = SceneInputs(sys.lines[0]);
-  SystemData sd = MakeSystemData(sys, in, o, lines);
+  Data sd = MakeData(sys, in, o, lines);
   const double period = 2 * M_PI * std::sqrt(M / K);  // the undamped surge period
-  while (sd.t < 8 * period) StepSystem(sys, sd, in, period / 8);
+  while (sd.t < 8 * period) Step(sys, sd, in, period / 8);
   const double drift = HorizontalPart((target - start).head<3>()).norm();
   const double left = HorizontalPart((target - sd.bodies[0].q).head<3>()).norm();
   RecordProperty("drift", Figure(drift));
@@ -333,7 +333,7 @@ TEST(FreeBody, RollDecayHasTheHydrostaticPeriod) {
   // waterplane's restoring C = rho g I_wp and the moorings' K = K_44 (their stiffness, from the
   // statics), about the reference point where its centre of gravity is.
   const Platform p;
-  SystemModel sys = p.System(BodyKind::kFree);
+  Model sys = p.System(BodyKind::kFree);
   BodySpec& b = sys.bodies[0];
   b.inertia = Vec(2e9, 3e9, 2e9);
   b.added_mass << 5e6, 1e7, 5e6, 4e8, 4e8, 4e8;
@@ -350,12 +350,12 @@ TEST(FreeBody, RollDecayHasTheHydrostaticPeriod) {
   o.scheme = Scheme::kImplicit;
   o.tolerance = 5e-4;  // the default's scale: 1e-6 of the 500 m legs
   const Inputs in = SceneInputs(sys.lines[0]);
-  SystemData sd = MakeSystemData(sys, in, o, lines);
+  Data sd = MakeData(sys, in, o, lines);
   const double dt = 0.02;
   std::vector<double> crossings;  // where the roll passes its rest angle going up
   double before = sd.bodies[0].q[3] - rest[3];
   for (int k = 1; sd.t < 3.2 * period; ++k) {
-    StepSystem(sys, sd, in, dt);
+    Step(sys, sd, in, dt);
     const double now = sd.bodies[0].q[3] - rest[3];
     if (before < 0 && now >= 0) crossings.push_back(sd.t - dt * now / (now - before));
     before = now;
@@ -374,12 +374,12 @@ TEST(FreeBody, RollDecayHasTheHydrostaticPeriod) {
 
 TEST(FreeBody, RefusesToMoveWithoutInertia) {
   Platform p;
-  SystemModel sys = p.System(BodyKind::kFree);
-  const std::vector<State> rest = SolveSystemEquilibrium(sys);
+  Model sys = p.System(BodyKind::kFree);
+  const std::vector<State> rest = SolveEquilibrium(sys);
   StepOptions o;
   o.scheme = Scheme::kImplicit;
   // No moments of inertia: its turns have no mass to step.
-  EXPECT_THROW(MakeSystemData(sys, SceneInputs(sys.lines[0]), o, rest), Error);
+  EXPECT_THROW(MakeData(sys, SceneInputs(sys.lines[0]), o, rest), Error);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include "run/driver.h"
 #include "run/initial_state.h"
 #include "run/time_grid.h"
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/step.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
@@ -24,31 +24,31 @@ SceneDef P63() { return LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/p
 // in the current never advanced. It now goes in at once, and the answer is still water's.
 TEST(BoundedWork, AnUnderflowingCurrentStillReachesItsEquilibrium) {
   SceneDef scene = P63();
-  Model still = BuildModel(scene);
-  Model tiny = still;
+  LineModel still = BuildModel(scene);
+  LineModel tiny = still;
   tiny.env.current = 5e-324;
-  EquilibriumReport report;
-  const State a = SolveEquilibrium(tiny, &report);
-  const State b = SolveEquilibrium(still);
-  EXPECT_LE(report.current_steps, EquilibriumOptions().max_current_steps);
+  LineEquilibriumReport report;
+  const State a = SolveLineEquilibrium(tiny, &report);
+  const State b = SolveLineEquilibrium(still);
+  EXPECT_LE(report.current_steps, LineEquilibriumOptions().max_current_steps);
   // The drag of 5e-324 m/s is below any representable force: the same shape to round-off.
   EXPECT_LT((a.x - b.x).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 TEST(BoundedWork, ARaisedFlagStopsTheEquilibriumAtItsFirstIteration) {
-  Model m = BuildModel(P63());
+  LineModel m = BuildModel(P63());
   CancelFlag flag{2};
-  EquilibriumOptions options;
+  LineEquilibriumOptions options;
   options.cancel = &flag;
-  EXPECT_THROW(SolveEquilibrium(m, StraightChord(m), nullptr, options), CancelledError);
+  EXPECT_THROW(SolveLineEquilibrium(m, StraightChord(m), nullptr, options), CancelledError);
 }
 
 TEST(BoundedWork, ARaisedFlagStopsTheImplicitStepAndTheOutputLoop) {
   const SceneDef scene = P63();
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
   auto integrator = testing::MakeStepper(m, grid);
-  EquilibriumReport report;
+  LineEquilibriumReport report;
   State s = MakeInitialState(scene, m, &report);
   CancelFlag flag{0};
   int outputs = 0;
@@ -75,10 +75,10 @@ TEST(BoundedWork, AMotionFasterThanAnyStepEndsInAClearError) {
   SceneDef scene = P63();
   scene.end.motion = EndMotionKind::kTable;
   scene.end.table = {{0, 0, 0}, {1e-9, 1, 0}, {0.2, 0, 0}};
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
   auto integrator = testing::MakeStepper(m, grid);
-  EquilibriumReport report;
+  LineEquilibriumReport report;
   State s = MakeInitialState(scene, m, &report);
   try {
     testing::Simulate(m, *integrator, s, grid, [](const State&, const Eigen::VectorXd&) { return true; });
@@ -90,15 +90,15 @@ TEST(BoundedWork, AMotionFasterThanAnyStepEndsInAClearError) {
   }
 }
 
-// Work with a bound of its own (the statics' relaxation, core/system_relaxation.cpp) bounds
+// Work with a bound of its own (the statics' relaxation, core/relaxation.cpp) bounds
 // the implicit steps of one call: P63's first second takes 120 (105 and 15 rejected: its start's
 // tolerance), so a bound of 5 ends it with an Error that says so, before a sixth; a bound it
 // does not reach changes nothing.
 TEST(BoundedWork, TheImplicitStepsOfACallStopAtTheirBound) {
   const SceneDef scene = P63();
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
-  EquilibriumReport report;
+  LineEquilibriumReport report;
   const State start = MakeInitialState(scene, m, &report);
   auto free_run = testing::MakeStepper(m, grid);
   State a = start;

@@ -9,8 +9,8 @@
 #include <cstdio>
 
 #include "core/chain_guess.h"
+#include "core/line_equilibrium.h"
 #include "core/equilibrium.h"
-#include "core/system_equilibrium.h"
 #include "test_support.h"
 
 namespace cablefilm {
@@ -71,7 +71,7 @@ const Vec kAnchor(0.0, -100.0, 0.0), kFairlead(260.0, -10.0, 0.0);
 
 // anchor -> 150 m chain -> clump -> 120 m wire (written buoy -> clump) -> buoy -> 40 m chain
 // -> fairlead.
-SystemModel Leg() {
+Model Leg() {
   std::vector<PointSpec> points(4);
   points[0] = {"anchor", EndMotion::Fixed(kAnchor), {}};
   points[1] = {"clump", EndMotion::Free(Vec(120.0, -70.0, 0.0)), Clump()};
@@ -81,14 +81,14 @@ SystemModel Leg() {
   lines[0] = {"lower", {Chain(150, 50)}, {}, LinkLaw::kElastic, 0, 1};
   lines[1] = {"wire", {Wire(120, 40)}, {Weight(10)}, LinkLaw::kElastic, 2, 1};
   lines[2] = {"upper", {Chain(40, 16)}, {}, LinkLaw::kElastic, 2, 3};
-  return MakeSystem(lines, points, Sea());
+  return MakeModel(lines, points, Sea());
 }
 
-Model LegAsOneLine() {
+LineModel LegAsOneLine() {
   PrismSpec clump = Clump(), buoy = Buoy();
   clump.station = 50;
   buoy.station = 90;
-  return MakeModel({Chain(150, 50), Wire(120, 40), Chain(40, 16)},
+  return MakeLineModel({Chain(150, 50), Wire(120, 40), Chain(40, 16)},
                    {clump, Weight(50 + 40 - 10), buoy}, Sea(), EndMotion::Fixed(kAnchor),
                    EndMotion::Fixed(kFairlead), LinkLaw::kElastic);
 }
@@ -103,12 +103,12 @@ double PositionGap(const std::vector<State>& s, const Points& one) {
 }
 
 TEST(ChainGuess, ALegThroughTwoJointsIsSolvedAsOneLine) {
-  const SystemModel sys = Leg();
+  const Model sys = Leg();
   ASSERT_EQ(sys.shared_count(), 2);
   const ChainGuess guess = GuessChains(sys);
   EXPECT_EQ(guess.chains, 1);
   EXPECT_TRUE(guess.guessed[0] && guess.guessed[1]);
-  const State one = SolveEquilibrium(LegAsOneLine());
+  const State one = SolveLineEquilibrium(LegAsOneLine());
   // The guess is the hand-written line's equilibrium, solved from the same first guess: the
   // same to round-off if the chain is put together as that line (sections, the wire reversed,
   // its collar at station 80, the joints' weights at 50 and 90).
@@ -119,10 +119,10 @@ TEST(ChainGuess, ALegThroughTwoJointsIsSolvedAsOneLine) {
 }
 
 TEST(ChainGuess, TheSystemsNewtonStartsAtItsAnswer) {
-  const SystemModel sys = Leg();
-  SystemEquilibriumReport report;
-  const std::vector<State> states = SolveSystemEquilibrium(sys, &report);
-  const State one = SolveEquilibrium(LegAsOneLine());
+  const Model sys = Leg();
+  EquilibriumReport report;
+  const std::vector<State> states = SolveEquilibrium(sys, &report);
+  const State one = SolveLineEquilibrium(LegAsOneLine());
   // The system's answer against its own forces (each line's end stations summed at the joints)
   // and the one line's: both solved to 1e-9 of the static load (~400 kN), a station then
   // differs by that force over the stiffness across it (~1e5 N/m): ~4e-9 m.
@@ -150,10 +150,10 @@ TEST(ChainGuess, AJointOfThreeLinesIsLeftToTheSystem) {
   lines[0] = {"one", {Chain(100, 30)}, {}, LinkLaw::kElastic, 0, 1};
   lines[1] = {"two", {Wire(180, 30)}, {}, LinkLaw::kElastic, 1, 2};
   lines[2] = {"three", {Wire(135, 30)}, {}, LinkLaw::kElastic, 1, 3};
-  const SystemModel sys = MakeSystem(lines, points, Sea());
+  const Model sys = MakeModel(lines, points, Sea());
   EXPECT_EQ(GuessChains(sys).chains, 0);
-  SystemEquilibriumReport report;
-  SolveSystemEquilibrium(sys, &report);
+  EquilibriumReport report;
+  SolveEquilibrium(sys, &report);
   EXPECT_EQ(report.chains, 0);
   EXPECT_LE(report.residual, 1e-9 * report.force_scale);
 }

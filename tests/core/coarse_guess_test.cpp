@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <string>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "run/coarse_guess.h"
 #include "run/initial_state.h"
 #include "scene/build_model.h"
@@ -27,12 +27,12 @@ SceneDef P63Links(int times) {
 
 TEST(CoarseGuess, GivesTheChordsEquilibriumInAFewIterations) {
   const SceneDef scene = P63Links(50);  // 3 000 links
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   ASSERT_GE(m.line.links, kCoarseGuessFromLinks);
   ASSERT_TRUE(CoarseEquilibriumGuess(scene, m, nullptr).has_value());
-  EquilibriumReport coarse, chord;
+  LineEquilibriumReport coarse, chord;
   const State a = MakeInitialState(scene, m, &coarse);
-  const State b = SolveEquilibrium(m, &chord);
+  const State b = SolveLineEquilibrium(m, &chord);
   const double gap = (a.x - b.x).cwiseAbs().maxCoeff();
   RecordProperty("gap_m", Figure(gap));
   RecordProperty("iterations_coarse", coarse.iterations);
@@ -49,10 +49,10 @@ TEST(CoarseGuess, GivesTheChordsEquilibriumInAFewIterations) {
 TEST(CoarseGuess, NoneWhereNoMergeKeepsTheSectionsWhole) {
   SceneDef scene = P63Links(50);
   scene.sections[1].segments += 1;  // 1 500 and 1 501 links: no common factor
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   EXPECT_FALSE(CoarseEquilibriumGuess(scene, m, nullptr).has_value());
   // The line then starts from the chord, as lines of fewer links do.
-  EquilibriumReport report;
+  LineEquilibriumReport report;
   const State s = MakeInitialState(scene, m, &report);
   EXPECT_GT(report.iterations, 5);
   // Converged as the solver counts it: the tolerance, or the round-off floor of 3 000 stiff links.

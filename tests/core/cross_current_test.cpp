@@ -1,7 +1,7 @@
 // Issue 19: lines in a current that crosses their vertical plane.
 //
 // 1. A line between two fixed ends with the current perpendicular to the vertical plane through
-//    them: its static equilibrium (SolveEquilibrium) against a solution of the same discrete
+//    them: its static equilibrium (SolveLineEquilibrium) against a solution of the same discrete
 //    equations found here, by a Newton iteration of this file's own (the residual written out
 //    from the physics, its Jacobian by central differences, a dense solve), from a guess of its
 //    own: the sagging line's plane tilted by the ratio of drag to weight.
@@ -15,7 +15,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/forces.h"
 #include "test_support.h"
 
@@ -30,7 +30,7 @@ constexpr double kD = 0.02, kCd = 1.2, kRho = 1025;     // [m], 1, [kg/m^3]
 constexpr int kLinks = 30;
 constexpr double kG = 9.80665;  // [m/s^2]
 
-Model LineAcrossCurrent(double speed) {
+LineModel LineAcrossCurrent(double speed) {
   EnvironmentSpec sea;
   sea.fluid_density = kRho;
   sea.current = speed;
@@ -141,9 +141,9 @@ TEST(CrossCurrent, EquilibriumSolvesTheDiscreteEquations) {
     const Eigen::VectorXd truth = own.Solve(OwnGuess(U));
     const double own_residual = own.Residual(truth).lpNorm<Eigen::Infinity>();
     ASSERT_LT(own_residual, OwnEquations::kOwnFloor) << U << " m/s: the test's own Newton did not converge";
-    EquilibriumReport rep;
-    const Model m = LineAcrossCurrent(U);
-    const State st = SolveEquilibrium(m, &rep);
+    LineEquilibriumReport rep;
+    const LineModel m = LineAcrossCurrent(U);
+    const State st = SolveLineEquilibrium(m, &rep);
     const Eigen::VectorXd found = FreeStations(st.x);
     // The equilibrium solver stops at a residual R of up to 1e-9 of its force scale: it lies
     // J^-1 R from the root, to first order. The bound is twice that plus the test's own
@@ -170,9 +170,9 @@ TEST(CrossCurrent, EquilibriumSolvesTheDiscreteEquations) {
 
 TEST(CrossCurrent, DynamicsSettleInTheEquilibrium) {
   const double U = 1.0;
-  const Model still = LineAcrossCurrent(0.0), flowing = LineAcrossCurrent(U);
-  const Points target = SolveEquilibrium(flowing).x;
-  State st = SolveEquilibrium(still);  // at rest in its vertical plane
+  const LineModel still = LineAcrossCurrent(0.0), flowing = LineAcrossCurrent(U);
+  const Points target = SolveLineEquilibrium(flowing).x;
+  State st = SolveLineEquilibrium(still);  // at rest in its vertical plane
   testing::Stepper stepper(Scheme::kImplicit, 0.5, 1e-7);
   stepper.Initialize(flowing, st);
   const double dt = 0.05;
@@ -203,11 +203,11 @@ TEST(CrossCurrent, TowedCableLeansAlongAnyHeading) {
     sea.fluid_density = rho;
     sea.current = U;
     sea.current_direction = Horizontal(heading_deg * M_PI / 180);
-    const Model m = testing::UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed(InPlane(0, 0)),
+    const LineModel m = testing::UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed(InPlane(0, 0)),
                                           EndMotion::Free(InPlane(0, -L)), d, Cd);
-    EquilibriumReport rep;
+    LineEquilibriumReport rep;
     State st;
-    ASSERT_NO_THROW(st = SolveEquilibrium(m, &rep)) << heading_deg << " deg";
+    ASSERT_NO_THROW(st = SolveLineEquilibrium(m, &rep)) << heading_deg << " deg";
     // As in EquilibriumTowedCable: w_l sin(theta) = k U^2 cos^2(theta) for every link.
     const double l = L / n, wl = (mu - rho * area) * kG * l, k = 0.5 * rho * Cd * d * l;
     const double a = k * U * U;

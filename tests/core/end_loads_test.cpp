@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "core/end_loads.h"
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/step.h"
 #include "test_support.h"
 
@@ -38,11 +38,11 @@ TEST(EndLoads, CatenaryEndsCarryTheContinuousLinesTension) {
 
   double prev_load = 0, prev_link = 0;
   for (int n : {25, 50, 100}) {
-    const Model m = UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed(InPlane(0, 0)),
+    const LineModel m = UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed(InPlane(0, 0)),
                                  EndMotion::Fixed(InPlane(80.0, 20.0)));
-    EquilibriumReport rep;
-    const State st = SolveEquilibrium(m, &rep);
-    const Data d = testing::StartData(m, st, Scheme::kImplicit);
+    LineEquilibriumReport rep;
+    const State st = SolveLineEquilibrium(m, &rep);
+    const LineData d = testing::StartData(m, st, Scheme::kImplicit);
     EndLoads ends(m);
     ends.Compute(m, d, SceneInputs(m));
     const double load_error =
@@ -98,11 +98,11 @@ TEST(EndLoads, TopOfAHangingChainCarriesItsWeightAndInertia) {
   // e^-6) by t = 20 s, where the comparison starts. Internal forces cancel in the sum over the
   // chain: the damping changes nothing in the law compared against.
   chain.axial_damping_ratio = 0.5;
-  const Model m = MakeModel(
+  const LineModel m = MakeLineModel(
       {chain}, {}, sea, EndMotion::Trochoid(top, Vec(0, 0, 0), Vec(0, amplitude, 0), omega, 0.5),
       EndMotion::Free(InPlane(0.0, -L)), LinkLaw::kElastic);
-  EquilibriumReport rep;
-  State st = SolveEquilibrium(m, StraightChord(m), &rep);
+  LineEquilibriumReport rep;
+  State st = SolveLineEquilibrium(m, StraightChord(m), &rep);
   testing::Stepper stepper(Scheme::kImplicit, 0.5, 1e-7);
   stepper.Initialize(m, st);
   EndLoads ends(m);

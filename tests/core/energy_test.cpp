@@ -29,12 +29,12 @@ EnergyRun RunReleasedLine(double dt_fraction, double duration) {
   EnvironmentSpec env;
   env.fluid_density = 0;  // vacuum: no drag, no buoyancy, no added mass
   const int N = 20;
-  const Model m = testing::UniformCable(N, 10.0, 1.0, 1e-4, 1e9, env,
+  const LineModel m = testing::UniformCable(N, 10.0, 1.0, 1e-4, 1e9, env,
                                              EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(10.1, 0)));
   const double dt = dt_fraction * ComputeStabilityLimit(m).time_step;
   Points x(kDim, N + 1);
   for (int j = 0; j <= N; ++j) x.col(j) = InPlane(10.1 * j / N, 0.0);
-  Data d = testing::StartData(m, testing::AtRest(x), Scheme::kExplicit);
+  LineData d = testing::StartData(m, testing::AtRest(x), Scheme::kExplicit);
   const State& s = d.state;
   const Inputs in = SceneInputs(m);
   LinkGeometry g;
@@ -52,7 +52,7 @@ EnergyRun RunReleasedLine(double dt_fraction, double duration) {
   r.min_tension = d.tension().minCoeff();
   long n_first = 0, n_last = 0;
   for (long k = 1; k <= steps; ++k) {
-    Step(m, d, in, dt);
+    StepLine(m, d, in, dt);
     const double err = energy(&ke) - e0;
     r.max_error = std::max(r.max_error, std::abs(err));
     r.swing = std::max(r.swing, ke);

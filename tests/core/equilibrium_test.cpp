@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/error.h"
 #include "core/forces.h"
 #include "core/step.h"
@@ -34,7 +34,7 @@ struct Errors {
 };
 
 // Compares a lumped equilibrium with the exact catenary (station 0 at `origin`).
-Errors Compare(const Model& m, const State& st, const ExactCatenary& exact,
+Errors Compare(const LineModel& m, const State& st, const ExactCatenary& exact,
                const Vec& origin) {
   ForceWorkspace ws(m.line.links);
   ComputeGeometry(st.x, ws.geometry);
@@ -98,7 +98,7 @@ Vec2 LeadingError(const ExactCatenary& exact, const std::vector<double>& piece_e
 
 // Largest gap between the lumped error and its predicted leading term, relative to the largest
 // predicted error.
-double LeadingTermMismatch(const Model& m, const State& st, const ExactCatenary& exact,
+double LeadingTermMismatch(const LineModel& m, const State& st, const ExactCatenary& exact,
                            const std::vector<double>& piece_ends, const Vec& origin) {
   double gap = 0, size = 0;
   const double l = m.line.rest_length[0];
@@ -135,10 +135,10 @@ TEST_P(IrvineCatenary, LumpedEquilibriumConvergesAtSecondOrder) {
   Errors prev;
   const int sizes[] = {30, 60, 120};
   for (int N : sizes) {
-    const Model m = UniformCable(N, c.length, c.mu, c.area, c.E, env, EndMotion::Fixed(c.a),
+    const LineModel m = UniformCable(N, c.length, c.mu, c.area, c.E, env, EndMotion::Fixed(c.a),
                                       EndMotion::Fixed(c.b));
-    EquilibriumReport rep;
-    const State st = SolveEquilibrium(m, &rep);
+    LineEquilibriumReport rep;
+    const State st = SolveLineEquilibrium(m, &rep);
     const Errors e = Compare(m, st, exact, c.a);
     const double mismatch = LeadingTermMismatch(m, st, exact, {c.length}, c.a);
     std::printf("[ %s ] N=%d H=%.6g V0=%.6g: max position error %.3e m, off the predicted "
@@ -207,9 +207,9 @@ TEST(P63Equilibrium, MatchesExactPiecewiseCatenary) {
   for (int factor : {1, 2, 4}) {  // 60, 120, 240 links
     SceneDef s = scene;
     for (SectionDef& sec : s.sections) sec.segments *= factor;
-    const Model m = BuildModel(s);
-    EquilibriumReport rep;
-    const State st = SolveEquilibrium(m, &rep);
+    const LineModel m = BuildModel(s);
+    LineEquilibriumReport rep;
+    const State st = SolveLineEquilibrium(m, &rep);
     const Errors e = Compare(m, st, exact, Vec::Zero());
     const double mismatch = LeadingTermMismatch(m, st, exact, piece_ends, Vec::Zero());
     std::printf("[ P63 ] N=%d: max position error %.3e m, off the predicted leading term by "
@@ -237,7 +237,7 @@ TEST(P63Equilibrium, MatchesExactPiecewiseCatenary) {
 // Robustness: from the straight chord (the poorest reasonable start).
 
 // The largest out-of-balance force on a free station, recomputed here from the returned state.
-double MaxResidual(const Model& m, const State& st) {
+double MaxResidual(const LineModel& m, const State& st) {
   ForceWorkspace ws(m.line.links);
   ComputeGeometry(st.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
@@ -249,10 +249,10 @@ double MaxResidual(const Model& m, const State& st) {
   return r;
 }
 
-void ExpectConvergedFromChord(const Model& m, const char* what) {
-  EquilibriumReport rep;
+void ExpectConvergedFromChord(const LineModel& m, const char* what) {
+  LineEquilibriumReport rep;
   State st;
-  ASSERT_NO_THROW(st = SolveEquilibrium(m, StraightChord(m), &rep)) << what;
+  ASSERT_NO_THROW(st = SolveLineEquilibrium(m, StraightChord(m), &rep)) << what;
   const double r = MaxResidual(m, st);
   std::printf("[ robust ] %s: %d iterations, %d current steps, residual %.2e N (reported %.2e) "
               "of force scale %.4g N\n",
@@ -296,7 +296,7 @@ TEST(EquilibriumRobustness, FromStraightChord) {
   buoy.volume = 0.1;  // 1025 * 0.1 = 102.5 kg of lift: net buoyant
   EnvironmentSpec sea;
   sea.fluid_density = 1025;
-  ExpectConvergedFromChord(MakeModel({s}, {clump, buoy}, sea, fixed(0, 0), fixed(45, 5),
+  ExpectConvergedFromChord(MakeLineModel({s}, {clump, buoy}, sea, fixed(0, 0), fixed(45, 5),
                                            LinkLaw::kElastic),
                            "weights_and_buoy");
 
@@ -304,13 +304,13 @@ TEST(EquilibriumRobustness, FromStraightChord) {
   SceneDef p63 = LoadScene(P63Path());
   ExpectConvergedFromChord(BuildModel(p63), "P63");
   p63.environment.current = 0.5;
-  const Model pc = BuildModel(p63);
+  const LineModel pc = BuildModel(p63);
   ExpectConvergedFromChord(pc, "P63-C");
   // The current pushes the line downstream: the middle moves along +x from still water.
   p63.environment.current = 0.0;
-  const State still = SolveEquilibrium(BuildModel(p63));
-  EquilibriumReport rep;
-  const State drift = SolveEquilibrium(pc, &rep);
+  const State still = SolveLineEquilibrium(BuildModel(p63));
+  LineEquilibriumReport rep;
+  const State drift = SolveLineEquilibrium(pc, &rep);
   EXPECT_GT(rep.current_steps, 0);
   EXPECT_GT(drift.x(0, 30), still.x(0, 30));
 }
@@ -324,10 +324,10 @@ TEST(EquilibriumRobustness, FreeHangingCable) {
   EnvironmentSpec sea;
   sea.fluid_density = rho;
   // Station 0 free and starting off to the side; station s fixed at the top.
-  const Model m = UniformCable(N, L, mu, area, E, sea, EndMotion::Free(InPlane(15.0, -5.0)),
+  const LineModel m = UniformCable(N, L, mu, area, E, sea, EndMotion::Free(InPlane(15.0, -5.0)),
                                     EndMotion::Fixed(InPlane(1.0, 2.0)));
-  EquilibriumReport rep;
-  const State st = SolveEquilibrium(m, StraightChord(m), &rep);
+  LineEquilibriumReport rep;
+  const State st = SolveLineEquilibrium(m, StraightChord(m), &rep);
   const double l = L / N, w = (mu - rho * area) * kG, EA = area * E;
   double y = 2.0, err = 0;
   for (int j = N; j >= 0; --j) {
@@ -362,10 +362,10 @@ TEST(EquilibriumRobustness, StiffLinksStopAtTheRoundoffFloor) {
   const Vec top = Vec(-0.8228425527966355, -0.17035212342813671, 1.4773081554316) - bottom;
   EnvironmentSpec sea;
   sea.fluid_density = rho;
-  const Model m = UniformCable(N, L, mu, area, EA / area, sea, EndMotion::Fixed(bottom),
+  const LineModel m = UniformCable(N, L, mu, area, EA / area, sea, EndMotion::Fixed(bottom),
                                EndMotion::Fixed(bottom + top));
-  EquilibriumReport rep;
-  const State st = SolveEquilibrium(m, &rep);
+  LineEquilibriumReport rep;
+  const State st = SolveLineEquilibrium(m, &rep);
   ForceWorkspace ws(m.line.links);
   ComputeGeometry(st.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
@@ -406,11 +406,11 @@ TEST(EquilibriumTowedCable, EveryLinkAtTheCriticalAngle) {
     for (double U : {0.25, 1.0, 2.0}) {
       sea.current = U;
       // The issue's first guess: the free end straight below the fixed one.
-      const Model m = UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed(InPlane(0, 0)),
+      const LineModel m = UniformCable(n, L, mu, area, E, sea, EndMotion::Fixed(InPlane(0, 0)),
                                         EndMotion::Free(InPlane(0, -L)), d, Cd);
-      EquilibriumReport rep;
+      LineEquilibriumReport rep;
       State st;
-      ASSERT_NO_THROW(st = SolveEquilibrium(m, &rep)) << n << " links, " << U << " m/s";
+      ASSERT_NO_THROW(st = SolveLineEquilibrium(m, &rep)) << n << " links, " << U << " m/s";
       const double l = L / n, wl = (mu - rho * area) * kG * l, k = 0.5 * rho * Cd * d * l;
       const double a = k * U * U;  // a (1 - s^2) = wl s  ->  a s^2 + wl s - a = 0
       const double sin_theta = (-wl + std::sqrt(wl * wl + 4 * a * a)) / (2 * a);
@@ -442,7 +442,7 @@ TEST(EquilibriumTowedCable, EveryLinkAtTheCriticalAngle) {
 }
 
 // A slack line in a current (issue 11, defect 9): 300 m between fixed ends 54 m apart.
-Model SlackLineInCurrent(int links, double current) {
+LineModel SlackLineInCurrent(int links, double current) {
   EnvironmentSpec sea;
   sea.fluid_density = 1025;
   sea.current = current;
@@ -454,10 +454,10 @@ TEST(EquilibriumSlackLine, ConvergesInEveryCurrent) {
   for (int n : {10, 30, 100, 300}) {
     double previous = 1e-9;
     for (double U : {0.1, 0.3, 1.0, 2.0}) {
-      const Model m = SlackLineInCurrent(n, U);
-      EquilibriumReport rep;
+      const LineModel m = SlackLineInCurrent(n, U);
+      LineEquilibriumReport rep;
       State st;
-      ASSERT_NO_THROW(st = SolveEquilibrium(m, &rep)) << n << " links, " << U << " m/s";
+      ASSERT_NO_THROW(st = SolveLineEquilibrium(m, &rep)) << n << " links, " << U << " m/s";
       std::printf("[ slack ] %3d links, %.1f m/s: %4d iterations%s, residual %.1e N\n", n, U,
                   rep.iterations, rep.fallback ? " (fallback)" : "", MaxResidual(m, st));
       EXPECT_LE(MaxResidual(m, st), 1e-6 * rep.force_scale);  // see ExpectConvergedFromChord
@@ -475,8 +475,8 @@ TEST(EquilibriumSlackLine, ConvergesInEveryCurrent) {
 // but was unstable would drift away within a few of its slowest periods (tens of seconds for
 // this 300 m line); a stable one moves only by the integrator's error, far below 1 mm.
 TEST(EquilibriumSlackLine, IsTheStateTheDynamicsSettleIn) {
-  const Model m = SlackLineInCurrent(30, 1.0);
-  State st = SolveEquilibrium(m);
+  const LineModel m = SlackLineInCurrent(30, 1.0);
+  State st = SolveLineEquilibrium(m);
   const Points start = st.x;
   auto integrator = testing::MakeStepper(Scheme::kImplicit, m, 0.5, 1e-6);
   integrator->Initialize(m, st);
@@ -491,13 +491,13 @@ TEST(EquilibriumSlackLine, IsTheStateTheDynamicsSettleIn) {
 // link), so the two states agree to about residual / stiffness of the softest (transverse)
 // mode; 1e-4 m is a generous bound on that for a 300 m line.
 TEST(EquilibriumSlackLine, PseudoTransientFallbackReachesTheSameState) {
-  const Model m = SlackLineInCurrent(60, 1.0);
-  EquilibriumReport newton_report, fallback_report;
-  const State newton = SolveEquilibrium(m, &newton_report);
-  EquilibriumOptions starved;
+  const LineModel m = SlackLineInCurrent(60, 1.0);
+  LineEquilibriumReport newton_report, fallback_report;
+  const State newton = SolveLineEquilibrium(m, &newton_report);
+  LineEquilibriumOptions starved;
   starved.max_iterations = 2;
   State fallback;
-  ASSERT_NO_THROW(fallback = SolveEquilibrium(m, &fallback_report, starved));
+  ASSERT_NO_THROW(fallback = SolveLineEquilibrium(m, &fallback_report, starved));
   EXPECT_FALSE(newton_report.fallback);
   EXPECT_TRUE(fallback_report.fallback);
   const double diff = (newton.x - fallback.x).cwiseAbs().maxCoeff();
@@ -509,12 +509,12 @@ TEST(EquilibriumSlackLine, PseudoTransientFallbackReachesTheSameState) {
 TEST(EquilibriumRobustness, ReportsNonConvergence) {
   EnvironmentSpec vacuum;
   vacuum.fluid_density = 0;
-  const Model m = UniformCable(20, 10.0, 1.0, 1e-4, 1e10, vacuum, EndMotion::Fixed(InPlane(0, 0)),
+  const LineModel m = UniformCable(20, 10.0, 1.0, 1e-4, 1e10, vacuum, EndMotion::Fixed(InPlane(0, 0)),
                                     EndMotion::Fixed(InPlane(6, 0)));
-  EquilibriumOptions opt;
+  LineEquilibriumOptions opt;
   opt.max_iterations = 1;
   try {
-    SolveEquilibrium(m, StraightChord(m), nullptr, opt);
+    SolveLineEquilibrium(m, StraightChord(m), nullptr, opt);
     FAIL() << "expected an Error";
   } catch (const Error& e) {
     const std::string msg = e.what();

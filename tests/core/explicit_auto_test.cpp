@@ -14,7 +14,7 @@
 #include "run/driver.h"
 #include "run/initial_state.h"
 #include "run/time_grid.h"
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/explicit_step.h"
 #include "core/forces.h"
 #include "core/stability.h"
@@ -35,7 +35,7 @@ struct EnergyRun {
 };
 
 // Steps `integ` by dt for `duration` and follows the energy after every step asked.
-EnergyRun FollowEnergy(const Model& m, State s, testing::Stepper& integ, double dt,
+EnergyRun FollowEnergy(const LineModel& m, State s, testing::Stepper& integ, double dt,
                        double duration) {
   ForceWorkspace ws(m.line.links);
   auto energy = [&](double* kinetic) {
@@ -64,13 +64,13 @@ EnergyRun FollowEnergy(const Model& m, State s, testing::Stepper& integ, double 
   return r;
 }
 
-EnergyRun FixedFraction(const Model& m, const State& s, double fraction,
+EnergyRun FixedFraction(const LineModel& m, const State& s, double fraction,
                         double duration) {
   testing::Stepper integ(Scheme::kExplicit);
   return FollowEnergy(m, s, integ, fraction * ComputeStabilityLimit(m).time_step, duration);
 }
 
-EnergyRun Auto(const Model& m, const State& s, double interval, double duration) {
+EnergyRun Auto(const LineModel& m, const State& s, double interval, double duration) {
   SimulationDef sim;
   sim.integrator = IntegratorChoice::kExplicit;
   sim.time_step = 0;  // "auto"
@@ -93,7 +93,7 @@ void Print(const char* what, const EnergyRun& r) {
 // dt below 0.2 of the limit divides it by about 4), scaled as dt^2 to the largest step "auto"
 // takes, 0.8 of the limit: (0.8 / 0.1)^2 = 64 times. "auto" must stay below it; the old fixed
 // 0.8 of the limit, which pumps energy, must not (else the case would not test anything).
-void ExpectNoEnergyPumped(const Model& m, const State& s, double interval,
+void ExpectNoEnergyPumped(const LineModel& m, const State& s, double interval,
                           double duration) {
   const EnergyRun fine = FixedFraction(m, s, 0.1, duration);
   const EnergyRun old = FixedFraction(m, s, 0.8, duration);
@@ -118,7 +118,7 @@ TEST(ExplicitAuto, WhippingChainInVacuumGainsNoEnergy) {
   EnvironmentSpec env;
   env.fluid_density = 0;
   const Vec dir = InPlane(std::sin(M_PI / 3), -std::cos(M_PI / 3));
-  const Model m = MakeModel({wire}, {}, env, EndMotion::Fixed(InPlane(0, 0)),
+  const LineModel m = MakeLineModel({wire}, {}, env, EndMotion::Fixed(InPlane(0, 0)),
                                        EndMotion::Free(20.0 * dir), LinkLaw::kElastic);
   State s;
   s.x.resize(kDim, m.stations());
@@ -131,7 +131,7 @@ TEST(ExplicitAuto, CatenaryFallingFromItsChordGainsNoEnergy) {
   // scenes/catenary.toml: 100 m of chain (EA 1e7 N) between fixed points 82.5 m apart, released
   // from the straight chord: every link slack, it falls 20 m and snaps taut hard (1e5 N). 5 s.
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   ASSERT_EQ(m.env.fluid_density, 0.0);
   const State s = MakeInitialState(scene, m, nullptr);
   ExpectNoEnergyPumped(m, s, scene.output.interval, 5.0);
@@ -143,7 +143,7 @@ TEST(ExplicitAuto, WithoutSlackLinksItTakesTheStepsAsked) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml");
   scene.simulation.integrator = IntegratorChoice::kExplicit;
   scene.simulation.duration = 10;
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
   State s = MakeInitialState(scene, m, nullptr);
   auto integ = testing::MakeStepper(m, grid);

@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/explicit_snaps.h"
 #include "core/snap_monitor.h"
 #include "drive_support.h"
@@ -87,9 +87,9 @@ SceneRun RunSnappingLine(IntegratorChoice integrator) {
   SceneDef scene =
       LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/snapping_line.toml");
   scene.simulation.integrator = integrator;
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
-  State state = SolveEquilibrium(m);
+  State state = SolveLineEquilibrium(m);
   auto stepper = testing::MakeStepper(m, grid);
   double peak = 0, squares = 0;
   int rows = 0;

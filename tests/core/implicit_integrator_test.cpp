@@ -17,7 +17,7 @@
 #include "run/initial_state.h"
 #include "run/time_grid.h"
 #include "core/block_tridiagonal.h"
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/force_jacobian.h"
 #include "core/forces.h"
 #include "core/implicit_step.h"
@@ -43,7 +43,7 @@ struct TautString {
   static constexpr int N = 20;
   static constexpr double l0 = 1.0, mu = 1.0, EA = 1e4, strain = 0.01;
   static constexpr double L = l0 * (1 + strain), T0 = EA * strain, mass = mu * l0;
-  Model model;
+  LineModel model;
   TautString() {
     EnvironmentSpec env;
     env.gravity = 0;
@@ -152,7 +152,7 @@ Series RunScene(const SceneDef& scene_in, IntegratorChoice kind, double time_ste
   scene.simulation.integrator = kind;
   scene.simulation.time_step = time_step;
   scene.simulation.duration = duration;
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30.0);
   State state = MakeInitialState(scene, m, nullptr);
   auto integ = testing::MakeStepper(m, grid);
@@ -169,7 +169,7 @@ Series RunScene(const SceneDef& scene_in, IntegratorChoice kind, double time_ste
 
 // A chain of steel wire over nylon rope (20 m each, `n` links each) hanging from a fixed top,
 // its lower end free and carrying a 100 kg weight, in water with a current `current` along x.
-Model ChainWithWeight(double current, int n) {
+LineModel ChainWithWeight(double current, int n) {
   SectionSpec a{20.0, n, 0.0254, 5.067e-4, 2.75, 9.0e10, 1.2, 1.0};
   SectionSpec b{20.0, n, 0.0508, 2.027e-3, 1.70, 2.0e9, 1.2, 1.0};
   PrismSpec p;
@@ -182,15 +182,15 @@ Model ChainWithWeight(double current, int n) {
   EnvironmentSpec env;
   env.fluid_density = 1025;
   env.current = current;
-  return MakeModel({a, b}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -40)),
+  return MakeLineModel({a, b}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -40)),
                          LinkLaw::kElastic);
 }
 
 // Station positions every 1/30 s over `duration` from the still, vertical equilibrium, as the
 // current (0.5 m/s) starts to act: a swing into the current's deflected shape.
 std::vector<Points> SwingIntoCurrent(Scheme kind, double h, double duration) {
-  const Model still = ChainWithWeight(0.0, 20), m = ChainWithWeight(0.5, 20);
-  State s = SolveEquilibrium(still);
+  const LineModel still = ChainWithWeight(0.0, 20), m = ChainWithWeight(0.5, 20);
+  State s = SolveLineEquilibrium(still);
   auto integ = testing::MakeStepper(kind, m, 0.8);
   integ->Initialize(m, s);
   std::vector<Points> out;
@@ -235,7 +235,7 @@ TEST(ImplicitIntegrator, SecondOrderWithDragAddedMassAndWeight) {
 TEST(ImplicitIntegrator, NoEnergyGainAndBoundedDampingOnTautString) {
   // The first mode of the taut string at 40 steps per period for 100 periods, rho_inf = 0.8.
   const TautString ts;
-  const Model& m = ts.model;
+  const LineModel& m = ts.model;
   const double A = 1e-4, omega = TautString::Omega(1), P = 2 * M_PI / omega, h = P / 40;
   State s = ts.Initial(1, A);
   auto integ = testing::MakeStepper(Scheme::kImplicit, m, 0.8);
@@ -306,7 +306,7 @@ TEST(ImplicitIntegrator, SwingingChainInVacuumGainsNoEnergy) {
   EnvironmentSpec env;
   env.fluid_density = 0;
   const Vec dir = InPlane(std::sin(M_PI / 3), -std::cos(M_PI / 3));
-  const Model m = MakeModel({wire}, {}, env, EndMotion::Fixed(InPlane(0, 0)),
+  const LineModel m = MakeLineModel({wire}, {}, env, EndMotion::Fixed(InPlane(0, 0)),
                                        EndMotion::Free(20.0 * dir), LinkLaw::kElastic);
   State s;
   s.x.resize(kDim, m.stations());
@@ -410,7 +410,7 @@ struct SnapResult {
 
 SnapResult RunSnap(double rho_inf, double step_factor) {
   const SceneDef scene = SnapScene();
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   State s = MakeInitialState(scene, m, nullptr);
   const double h = step_factor * ComputeStabilityLimit(m).time_step;
   auto integ = testing::MakeStepper(Scheme::kImplicit, m, rho_inf);
@@ -443,7 +443,7 @@ SnapResult RunSnap(double rho_inf, double step_factor) {
 // farthest point. A numerical blow-up breaks this bound.
 double SnapTensionBound() {
   SceneDef scene = SnapScene();
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   double end_speed = 0;
   for (double t = 0; t <= 10; t += 1e-3) end_speed = std::max(end_speed, m.ends.end.Velocity(t).norm());
   const double max_speed = end_speed + m.env.gravity * 3.0;
@@ -453,8 +453,8 @@ double SnapTensionBound() {
                               m.line.rest_length[k]));
   scene.end.motion = EndMotionKind::kFixed;
   scene.end.position[0] += 2.0;
-  const Model far = BuildModel(scene);
-  State eq = SolveEquilibrium(far);
+  const LineModel far = BuildModel(scene);
+  State eq = SolveLineEquilibrium(far);
   ForceWorkspace ws(far.line.links);
   ComputeGeometry(eq.x, ws.geometry);
   ComputeHookeTensions(far, ws.geometry, ws.tension);
@@ -463,7 +463,7 @@ double SnapTensionBound() {
 
 void ExpectSnapRunsThrough(double rho_inf) {
   const SceneDef scene = SnapScene();
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   State s0 = MakeInitialState(scene, m, nullptr);
   ForceWorkspace ws(m.line.links);
   ComputeGeometry(s0.x, ws.geometry);
@@ -506,7 +506,7 @@ TEST(ImplicitIntegrator, SlackThenSnapWithAdaptiveStepDefaultRhoInf) {
   scene.simulation.duration = 10;
   scene.simulation.time_step = 0;
   scene.simulation.integrator = IntegratorChoice::kImplicit;
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
   ASSERT_GT(grid.options.tolerance, 0);
   State s = MakeInitialState(scene, m, nullptr);
@@ -585,7 +585,7 @@ TEST(ImplicitIntegrator, PredictorSlopeKeepsNewtonAtTwoIterationsOnALongTautLine
 // `axial`: tangential drag and added mass too, of the size of the normal ones but not equal to
 // them (C^T pi = 1.6 and 1.3 against C^D = 1.2 and 1.0; k^t = 0.6 and 1.3 against k = 1.0 and
 // 0.8), so that a term swapped between across and along shows.
-Model JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = false,
+LineModel JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = false,
                     bool axial = false, bool stick_slip = false) {
   SectionSpec a{6.0, 6, 0.05, 1e-3, 1.5, 1e6, 1.2, 1.0};   // EA = 1 kN
   SectionSpec b{4.0, 5, 0.03, 5e-4, 0.8, 4e6, 1.0, 0.8};   // EA = 2 kN
@@ -634,13 +634,13 @@ Model JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = fal
     env.current_profile.y = {-3.0, -0.7, 0.4, 2.5};
     env.current_profile.speed = {0.2, 0.9, -0.4, 1.1};
   }
-  return MakeModel({a, b}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(10, -1)),
+  return MakeLineModel({a, b}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(10, -1)),
                          LinkLaw::kElastic);
 }
 
 // Station positions and velocities: links alternately 5-15 % stretched and 10-40 % short, at
 // random angles out of the vertical plane as well as in it; velocities up to 3 m/s in 3D.
-void RandomConfiguration(const Model& m, std::mt19937& rng, Points& x,
+void RandomConfiguration(const LineModel& m, std::mt19937& rng, Points& x,
                          Points& v, Points& a) {
   std::uniform_real_distribution<double> u(-1, 1);
   x.resize(kDim, m.stations());
@@ -689,7 +689,7 @@ double RelativeError(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& fd)
 void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = false,
                                              bool waves = false, bool axial = false,
                                              bool stick_slip = false) {
-  const Model m = JacobianModel(damping_ratio, sea, waves, axial, stick_slip);
+  const LineModel m = JacobianModel(damping_ratio, sea, waves, axial, stick_slip);
   const double t = 2.0;  // [s]: the time of the sea (waves only)
   const int j0 = m.first_free(), j1 = m.last_free(), n = j1 - j0 + 1;
   ASSERT_EQ(j0, 1);

@@ -28,10 +28,10 @@
 #include "run/driver.h"
 #include "run/initial_state.h"
 #include "run/time_grid.h"
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/forces.h"
 #include "core/inextensible_step.h"
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "drive_support.h"
@@ -48,7 +48,7 @@ const std::string kP63 = std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek19
 
 // A uniform inextensible chain of `links` links in vacuum (no drag, no added mass, no buoyancy):
 // station masses mu l inside, mu l / 2 at the ends.
-Model Chain(int links, double length, double mu, EndMotion start, EndMotion end) {
+LineModel Chain(int links, double length, double mu, EndMotion start, EndMotion end) {
   SectionSpec s;
   s.length = length;
   s.segments = links;
@@ -59,7 +59,7 @@ Model Chain(int links, double length, double mu, EndMotion start, EndMotion end)
   EnvironmentSpec env;
   env.gravity = kG;
   env.fluid_density = 0;
-  return MakeModel({s}, {}, env, std::move(start), std::move(end), LinkLaw::kInextensible);
+  return MakeLineModel({s}, {}, env, std::move(start), std::move(end), LinkLaw::kInextensible);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -136,7 +136,7 @@ class Pendulum {
   std::vector<double> mass_;
 };
 
-Pendulum PendulumOf(const Model& m) {
+Pendulum PendulumOf(const LineModel& m) {
   std::vector<double> l(m.line.rest_length.data(), m.line.rest_length.data() + m.line.links);
   std::vector<double> mass(m.line.cable_mass.data(), m.line.cable_mass.data() + m.stations());
   return Pendulum(l, mass, m.env.gravity);
@@ -160,7 +160,7 @@ std::vector<Sample> PendulumTruth(const Pendulum& p, double interval, int count,
 }
 
 // cablefilm's inextensible integrator from the same state, outer step dt.
-std::vector<Sample> CablefilmRun(const Model& m, double interval, int count, double dt,
+std::vector<Sample> CablefilmRun(const LineModel& m, double interval, int count, double dt,
                                  long* substeps = nullptr) {
   State s;
   s.x = Points::Zero(kDim, m.stations());
@@ -196,7 +196,7 @@ Errors MaxErrors(const std::vector<Sample>& a, const std::vector<Sample>& b) {
 void CheckPendulumRelease(int links, double interval, int count, double dt, double pos_tol,
                           double ten_tol, double rk4_step) {
   const double L = 1.0, mu = 1.0;
-  const Model m = Chain(links, L, mu, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(L, 0)));
+  const LineModel m = Chain(links, L, mu, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(L, 0)));
   const Pendulum p = PendulumOf(m);
   // RK4 at a tiny step h; its own error (global O(h^4)) is 1/15 of the difference from the
   // run at 2h, which must be below 1 % of the tolerances: the truth is exact for this purpose.
@@ -272,7 +272,7 @@ struct ChainSample {
 };
 
 // The pendulum's stations, station 0 at the origin.
-Points PendulumStations(const Model& m, const Eigen::VectorXd& th) {
+Points PendulumStations(const LineModel& m, const Eigen::VectorXd& th) {
   Points x = Points::Zero(kDim, m.stations());
   for (int i = 0; i < m.line.links; ++i)
     x.col(i + 1) = x.col(i) + m.line.rest_length[i] * InPlane(std::cos(th[i]), std::sin(th[i]));
@@ -280,7 +280,7 @@ Points PendulumStations(const Model& m, const Eigen::VectorXd& th) {
 }
 
 // The truth at the given times (multiples of `quantum`), from rest with every angle 0, by RK4.
-std::vector<ChainSample> ChainTruth(const Model& m, const std::vector<double>& times,
+std::vector<ChainSample> ChainTruth(const LineModel& m, const std::vector<double>& times,
                                     double quantum, double h) {
   const Pendulum p = PendulumOf(m);
   Eigen::VectorXd th = Eigen::VectorXd::Zero(m.line.links), w = Eigen::VectorXd::Zero(m.line.links);
@@ -299,7 +299,7 @@ struct AutoRun {
   StepStats stats;
 };
 
-AutoRun RunAuto(const Model& m, double tolerance, const std::vector<double>& times) {
+AutoRun RunAuto(const LineModel& m, double tolerance, const std::vector<double>& times) {
   SimulationDef sim;
   sim.duration = times.back();
   sim.time_step = 0;  // "auto"
@@ -329,7 +329,7 @@ AutoRun RunAuto(const Model& m, double tolerance, const std::vector<double>& tim
 
 void CheckAutoRelease(int links, double rk4_step) {
   const double L = 5.0, mu = 1.0;
-  const Model m = Chain(links, L, mu, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(L, 0)));
+  const LineModel m = Chain(links, L, mu, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(L, 0)));
   const std::vector<double> times = {0.25, 0.5, 1.0};
   // RK4's own error is 1/15 of its difference from the run at 2h: held to 1e-7 m and 1e-6 of
   // the tension, 1e-2 or less of the smallest errors measured below (3e-6 m, 2e-6).
@@ -391,7 +391,7 @@ TEST(InextensibleAuto, EndsPulledApartEndTheRunWithABlowUpError) {
   // A 10 m chain whose far end is pulled from 8 m to 12 m from the pinned one in 1 s: at
   // t = 0.5 s it would have to stretch. The error control must not chase ever smaller substeps
   // (a hang): it ends the run with a BlowUpError that says why, near t = 0.5 s.
-  const Model m = Chain(10, 10.0, 1.0, EndMotion::Fixed(InPlane(0, 0)),
+  const LineModel m = Chain(10, 10.0, 1.0, EndMotion::Fixed(InPlane(0, 0)),
                              testing::PlanarTable(InPlane(8, 0), {{0, 0, 0}, {1, 4, 0}}));
   State s = SolveInextensibleEquilibrium(m, nullptr);
   testing::Stepper integ(Scheme::kInextensible, 0.5, 1e-5);
@@ -418,7 +418,7 @@ struct HangingModes {
   Eigen::MatrixXd M;
 };
 
-HangingModes HangingChainModes(const Model& m) {
+HangingModes HangingChainModes(const LineModel& m) {
   const int n = m.line.links;
   std::vector<double> S(n);
   double acc = 0;
@@ -435,7 +435,7 @@ HangingModes HangingChainModes(const Model& m) {
 // Released from rest with link angles amplitude * shape: the period of the modal coordinate
 // q = shape^T M phi(t) from zero crossings (linear interpolation; q'' ~ -w^2 q vanishes at a
 // crossing, so the interpolation error is O(dt^3)).
-double SimulatedPeriod(const Model& m, const Eigen::VectorXd& shape, const Eigen::MatrixXd& M,
+double SimulatedPeriod(const LineModel& m, const Eigen::VectorXd& shape, const Eigen::MatrixXd& M,
                        double amplitude, double dt, int crossings) {
   const Eigen::VectorXd phi0 = amplitude / shape.cwiseAbs().maxCoeff() * shape;
   State s;
@@ -470,7 +470,7 @@ double SimulatedPeriod(const Model& m, const Eigen::VectorXd& shape, const Eigen
 TEST(InextensibleHangingChain, SmallOscillationPeriods) {
   const int N = 20;
   const double L = 1.0;
-  const Model m = Chain(N, L, 1.0, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -L)));
+  const LineModel m = Chain(N, L, 1.0, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -L)));
   const HangingModes modes = HangingChainModes(m);
   const double dt = 1e-3;
   for (int k = 0; k < 2; ++k) {
@@ -500,7 +500,7 @@ TEST(InextensibleHangingChain, SmallOscillationPeriods) {
     const double exact = 0.5 * j0[k] * std::sqrt(kG / L);
     double prev = 0;
     for (int n : {20, 40, 80}) {
-      const Model mn = Chain(n, L, 1.0, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -L)));
+      const LineModel mn = Chain(n, L, 1.0, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -L)));
       const double err = std::abs(HangingChainModes(mn).omega[k] / exact - 1);
       std::printf("  mode %d, N=%d: discrete omega vs Bessel %.3e relative\n", k + 1, n, err);
       if (n == 20) {
@@ -523,9 +523,9 @@ LinkGeometry GeometryOf(const Points& x) {
 
 // Static tensions of a model with both ends fixed at the state x (v = 0): the constraint solve.
 // *imbalance: the largest net force on a free station [N] (zero at an equilibrium).
-Eigen::VectorXd ConstraintTensions(const Model& m, const Points& x,
+Eigen::VectorXd ConstraintTensions(const LineModel& m, const Points& x,
                                    double* imbalance = nullptr) {
-  Model fixed = m;
+  LineModel fixed = m;
   fixed.ends.start = m.ends.start.prescribed() ? EndMotion::Fixed(m.ends.start.Position(0)) : m.ends.start;
   fixed.ends.end = m.ends.end.prescribed() ? EndMotion::Fixed(m.ends.end.Position(0)) : m.ends.end;
   ConstraintSolver solver(fixed);
@@ -540,7 +540,7 @@ Eigen::VectorXd ConstraintTensions(const Model& m, const Points& x,
   return ws.tension;
 }
 
-Eigen::VectorXd HookeTensions(const Model& m, const Points& x) {
+Eigen::VectorXd HookeTensions(const LineModel& m, const Points& x) {
   const LinkGeometry g = GeometryOf(x);
   Eigen::VectorXd t(m.line.links);
   ComputeHookeTensions(m, g, t);
@@ -549,7 +549,7 @@ Eigen::VectorXd HookeTensions(const Model& m, const Points& x) {
 
 TEST(InextensibleLimit, ElasticP63EquilibriumApproachesItAsOneOverEA) {
   SceneDef scene = LoadScene(kP63);
-  const Model base = BuildModel(scene);  // elastic
+  const LineModel base = BuildModel(scene);  // elastic
   const State rigid = SolveInextensibleEquilibrium(base, nullptr);
   double imbalance = 0;
   const Eigen::VectorXd T_rigid = ConstraintTensions(base, rigid.x, &imbalance);
@@ -560,10 +560,10 @@ TEST(InextensibleLimit, ElasticP63EquilibriumApproachesItAsOneOverEA) {
   EXPECT_LT(imbalance, 1e-8 * StaticForceScale(base));
   std::vector<double> dT, dx;
   for (double scale : {1.0, 100.0, 200.0, 400.0, 800.0}) {
-    Model m = base;
+    LineModel m = base;
     m.line.axial_stiffness *= scale;
-    EquilibriumReport rep;
-    const State el = SolveEquilibrium(m, &rep);
+    LineEquilibriumReport rep;
+    const State el = SolveLineEquilibrium(m, &rep);
     dT.push_back((HookeTensions(m, el.x) - T_rigid).cwiseAbs().maxCoeff());
     dx.push_back((el.x - rigid.x).colwise().norm().maxCoeff());
     std::printf("  EA x %4.0f: max |T_elastic - T_inextensible| %.6e N, max |x diff| %.6e m; "
@@ -588,11 +588,11 @@ TEST(InextensibleLimit, ElasticP63EquilibriumApproachesItAsOneOverEA) {
 TEST(InextensibleP63, LinkLengthsHeldOverTheFullRun) {
   SceneDef scene = LoadScene(kP63);
   scene.model = CableModelKind::kInextensible;
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   ASSERT_EQ(m.line.law, LinkLaw::kInextensible);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
   ASSERT_EQ(grid.options.scheme, Scheme::kInextensible);
-  EquilibriumReport report;
+  LineEquilibriumReport report;
   State state = MakeInitialState(scene, m, &report);
   auto integ = testing::MakeStepper(m, grid);
   double worst = 0, peak = 0;
@@ -694,8 +694,8 @@ struct CatenaryErrors {
 
 CatenaryErrors CheckCatenary(int N) {
   const double L = 10, D = 8, h = 2, mu = 1.5;
-  const Model m = Chain(N, L, mu, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(D, h)));
-  EquilibriumReport rep;
+  const LineModel m = Chain(N, L, mu, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(D, h)));
+  LineEquilibriumReport rep;
   const State st = SolveInextensibleEquilibrium(m, &rep);
   testing::Stepper integ(Scheme::kInextensible);
   integ.Initialize(m, st);
@@ -750,12 +750,12 @@ TEST(InextensibleEquilibrium, ChainBetweenFixedPointsIsTheCatenary) {
 }
 
 TEST(InextensibleEquilibrium, EndsFurtherApartThanTheCableThrow) {
-  const Model taut = Chain(10, 10, 1, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(10.1, 0)));
+  const LineModel taut = Chain(10, 10, 1, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(10.1, 0)));
   EXPECT_THROW(SolveInextensibleEquilibrium(taut, nullptr), Error);
-  const Model slant = Chain(10, 10, 1, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(6, 8.2)));
+  const LineModel slant = Chain(10, 10, 1, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(6, 8.2)));
   EXPECT_THROW(SolveInextensibleEquilibrium(slant, nullptr), Error);
   // Just shorter than the cable is fine (and lies on the chord's rest lengths).
-  const Model ok = Chain(10, 10, 1, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(6, 7.9)));
+  const LineModel ok = Chain(10, 10, 1, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(6, 7.9)));
   EXPECT_NO_THROW(SolveInextensibleEquilibrium(ok, nullptr));
 }
 

@@ -7,7 +7,7 @@
 #include <new>
 #include <vector>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "test_support.h"
 #include "core/explicit_step.h"
 #include "core/stability.h"
@@ -49,12 +49,12 @@ long AllocationsWhileStepping(Scheme kind, CableModelKind model, double dt,
     scene.waves.surface_y = 33;
     scene.waves.ramp_rate = 0.5;
   }
-  Model m = BuildModel(scene);
+  LineModel m = BuildModel(scene);
   if (turning_end)  // its far end a point 3 m from a driven body's reference point, turning
     m.ends.end = m.ends.end.WithTurn(
         EndMotion::Trochoid(Vec::Zero(), Vec(0.05, 0.1, 0.0), Vec(0.0, 0.05, 0.1), 0.6, 0.5),
         Vec(3.0, 0.0, 0.0));
-  State s = SolveEquilibrium(m);  // the elastic equilibrium: a fine start for either model
+  State s = SolveLineEquilibrium(m);  // the elastic equilibrium: a fine start for either model
   auto integrator = testing::MakeStepper(kind, m, 0.5, error_tolerance);
   integrator->Initialize(m, s);
   for (int i = 0; i < 10; ++i) integrator->Step(m, s, dt);  // warm-up
@@ -135,7 +135,7 @@ TEST(NoAllocation, ExplicitAutoStepThroughSnaps) {
   // "auto" refines its substeps (the check that predicts the snaps, the cable's energy it then
   // needs) and takes them.
   const SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   State s;
   s.x = StraightChord(m);
   s.v = Points::Zero(kDim, m.stations());

@@ -12,7 +12,7 @@ namespace cablefilm::testing {
 // pi / (2 omega), and the link goes slack again after pi / omega.
 struct OneLinkSnap {
   double l = 1.0, EA = 1e6, mu = 2.0, v = 1.5;  // [m], [N], [kg/m], [m/s]
-  Model model;
+  LineModel model;
   State state;
   OneLinkSnap() {
     EnvironmentSpec vacuum;

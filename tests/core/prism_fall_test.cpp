@@ -24,7 +24,7 @@ constexpr double kRho = 1000.0, kG = 9.80665;
 constexpr double kMass = 10.0, kVolume = 0.002, kAddedY = 0.005, kCy = 1.0, kSy = 0.05;
 constexpr double kLink = 1000.0, kHair = 1e-9;
 
-Model PrismModel() {
+LineModel PrismModel() {
   SectionSpec s{kLink, 1, kHair, kHair, kHair, 1e9, 1.2, 1.0};
   PrismSpec p;
   p.station = 1;
@@ -36,7 +36,7 @@ Model PrismModel() {
   EnvironmentSpec env;
   env.gravity = kG;
   env.fluid_density = kRho;
-  return MakeModel({s}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -1)),
+  return MakeLineModel({s}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -1)),
                          LinkLaw::kElastic);
 }
 
@@ -52,7 +52,7 @@ struct Closed {
 
 // Max velocity and position error over a 4 s fall (about 12 time constants v_t / a0).
 void Fall(double dt, double* v_err, double* y_err, double* v_end) {
-  const Model m = PrismModel();
+  const LineModel m = PrismModel();
   const Closed c;
   State s;
   s.x = Points(kDim, 2);
@@ -73,7 +73,7 @@ void Fall(double dt, double* v_err, double* y_err, double* v_end) {
 }
 
 TEST(PrismFall, InitialAccelerationIncludesVirtualMass) {
-  const Model m = PrismModel();
+  const LineModel m = PrismModel();
   const Closed c;
   ForceWorkspace ws(m.line.links);
   Points x(kDim, 2), v = Points::Zero(kDim, 2), a(kDim, 2);

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/implicit_stages.h"
 #include "core/inputs.h"
 #include "core/seabed_friction.h"
@@ -42,7 +42,7 @@ double Pull(double t) {  // the end's displacement [m]: zero velocity at both en
   return kDelta * (t / kRamp - std::sin(2 * M_PI * t / kRamp) / (2 * M_PI));
 }
 
-Model PulledChain(FrictionModel law) {
+LineModel PulledChain(FrictionModel law) {
   EnvironmentSpec env;
   env.fluid_density = 0;
   env.seabed.present = true;
@@ -53,7 +53,7 @@ Model PulledChain(FrictionModel law) {
   sec.axial_damping_ratio = 0.5;  // settles the start's axial ripple; adds < 1 N at 1 mm/s
   std::vector<Eigen::Vector3d> rows;
   for (int i = 0; i <= 400; ++i) rows.emplace_back(0.25 * i, Pull(0.25 * i), 0.0);
-  return MakeModel({sec}, {}, env, EndMotion::Free(InPlane(0, 0)),
+  return MakeLineModel({sec}, {}, env, EndMotion::Free(InPlane(0, 0)),
                    testing::PlanarTable(InPlane(kLength, 0), rows), LinkLaw::kElastic);
 }
 
@@ -76,7 +76,7 @@ struct PullResult {
   double creep = 0;             // [m] the largest station motion while held
 };
 
-PullResult PullAndHold(const Model& m, Scheme scheme) {
+PullResult PullAndHold(const LineModel& m, Scheme scheme) {
   State s;
   s.x = StraightChord(m);
   for (int j = 0; j <= m.line.links; ++j)
@@ -105,7 +105,7 @@ PullResult PullAndHold(const Model& m, Scheme scheme) {
 }
 
 TEST(StickSlipFriction, PulledChainHoldsTheCoulombTensionWithoutCreep) {
-  const Model stick = PulledChain(FrictionModel::kStickSlip);
+  const LineModel stick = PulledChain(FrictionModel::kStickSlip);
   const double l = kLength / kLinks;              // [m]
   const double w = stick.line.net_weight[50] / l;  // its weight per metre [N/m], in vacuum
   const double exact = RigidPlasticEndTension(w, l);
@@ -146,7 +146,7 @@ TEST(StickSlipFriction, GroundedMooringAnchorRangeConvergesAsTheLawSharpens) {
   auto range = [&](double shear) {
     SceneDef scene = LoadScene(path);
     scene.seabed.friction_stiffness = shear;
-    const Model m = BuildModel(scene);
+    const LineModel m = BuildModel(scene);
     CheckModelLimits(scene, m);
     EXPECT_TRUE(HasStickSlip(m));
     const MemoryRun r = RunInMemory(scene, m, nullptr);
@@ -178,7 +178,7 @@ TEST(StickSlipFriction, GroundedMooringAnchorRangeConvergesAsTheLawSharpens) {
 // has no component along the old slide. A correction of -s0 / 2, after which it still slides
 // the same way, is taken whole.
 TEST(StickSlipFriction, NewtonStepThatReversesTheSlideStopsInTheStickZone) {
-  const Model m = PulledChain(FrictionModel::kStickSlip);
+  const LineModel m = PulledChain(FrictionModel::kStickSlip);
   State s;
   s.x = StraightChord(m);
   for (int j = 0; j <= m.line.links; ++j)
@@ -195,7 +195,7 @@ TEST(StickSlipFriction, NewtonStepThatReversesTheSlideStopsInTheStickZone) {
   const double s0 = 10 * kMu * N / (K + C * kv);  // [m]
   for (const double fraction : {2.0, 0.5}) {
     const Inputs in = SceneInputs(m);
-    Data d = MakeData(m, in, options, s);
+    LineData d = MakeLineData(m, in, options, s);
     PredictStep(m, d, in, c, h);
     d.scratch.x.col(j) = s.x.col(j) + Vec(s0, 0, 0);  // the iterate
     AssembleNewton(m, d, c, h);

@@ -11,11 +11,11 @@
 #include <memory>
 #include <vector>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/explicit_step.h"
 #include "core/forces.h"
 #include "core/inextensible_step.h"
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/step.h"
 #include "core/stability.h"
 #include "test_support.h"
@@ -39,7 +39,7 @@ struct MooringCase {
   double w() const { return (mu - rho * area) * kG; }  // 980.5 N/m submerged
 };
 
-Model MooringLine(const MooringCase& c, int links, SeabedSpec bed = {}) {
+LineModel MooringLine(const MooringCase& c, int links, SeabedSpec bed = {}) {
   EnvironmentSpec env;
   env.fluid_density = c.rho;
   bed.present = true;
@@ -58,7 +58,7 @@ struct GroundedResult {
 // weight the bed carries over the weight per length (the vertical balance that defines it in
 // the closed form: the fairlead carries the suspended part, the bed the rest); the touchdown at
 // that arc length, interpolated between stations; the deepest penetration.
-GroundedResult Measure(const Model& m, const State& st, double w) {
+GroundedResult Measure(const LineModel& m, const State& st, double w) {
   ForceWorkspace ws(m.line.links);
   ComputeGeometry(st.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
@@ -102,9 +102,9 @@ TEST(SeabedEquilibrium, GroundedCatenaryConvergesAtSecondOrder) {
       MooringCase k = c;
       k.span = c.span + phase * l / kPhases;
       const GroundedCatenary exact = SolveGroundedCatenary(k.length, k.w(), k.EA, k.span, k.depth);
-      const Model m = MooringLine(k, N);
-      EquilibriumReport rep;
-      const State st = SolveEquilibrium(m, &rep);
+      const LineModel m = MooringLine(k, N);
+      LineEquilibriumReport rep;
+      const State st = SolveLineEquilibrium(m, &rep);
       const GroundedResult r = Measure(m, st, k.w());
       const double fair = std::hypot(exact.H, k.w() * (k.length - exact.Lb - 0.5 * l));
       const double e[4] = {std::abs(r.anchor_tension - exact.H) / exact.H,
@@ -162,11 +162,11 @@ TEST(SeabedEquilibrium, GroundedCatenaryConvergesAtSecondOrder) {
 TEST(SeabedEquilibrium, FindsTheGroundedLengthFromPoorStarts) {
   const MooringCase c;
   const int N = 200;
-  const Model m = MooringLine(c, N);
-  const State reference = SolveEquilibrium(m);
+  const LineModel m = MooringLine(c, N);
+  const State reference = SolveLineEquilibrium(m);
   const GroundedResult ref = Measure(m, reference, c.w());
 
-  Model no_bed = m;
+  LineModel no_bed = m;
   no_bed.env.seabed = SeabedSpec{};
   no_bed.line.seabed_stiffness.resize(0);
   no_bed.line.seabed_damping.resize(0);
@@ -185,9 +185,9 @@ TEST(SeabedEquilibrium, FindsTheGroundedLengthFromPoorStarts) {
                 {"lying flat", flat},
                 {"straight chord", StraightChord(m)}};
   for (const auto& start : starts) {
-    EquilibriumReport rep;
+    LineEquilibriumReport rep;
     State st;
-    ASSERT_NO_THROW(st = SolveEquilibrium(m, start.guess, &rep)) << start.name;
+    ASSERT_NO_THROW(st = SolveLineEquilibrium(m, start.guess, &rep)) << start.name;
     const GroundedResult r = Measure(m, st, c.w());
     const double dx = (st.x - reference.x).cwiseAbs().maxCoeff();
     std::printf("[ poor start ] %s: %d iterations (%d pseudo-transient), grounded %.4f m "
@@ -210,7 +210,7 @@ TEST(SeabedEquilibrium, FindsTheGroundedLengthFromPoorStarts) {
 // 20 m of the chain (20 links) lying on the bed at rest, its start anchored on the bed; its end
 // anchored too (frictionless bed), or free (with friction: on a frictionless bed a free line
 // has nothing holding it along the bed, and the model no drag along a link).
-Model ChainOnBed(double friction) {
+LineModel ChainOnBed(double friction) {
   const MooringCase c;
   EnvironmentSpec env;
   env.fluid_density = 1025;
@@ -222,7 +222,7 @@ Model ChainOnBed(double friction) {
                       0.137, 2.4, 1.0);
 }
 
-double TotalEnergy(const Model& m, const State& s) {
+double TotalEnergy(const LineModel& m, const State& s) {
   ForceWorkspace ws(m.line.links);
   const LinkGeometry& g = ws.geometry;
   ComputeGeometry(s.x, ws.geometry);
@@ -239,7 +239,7 @@ double TotalEnergy(const Model& m, const State& s) {
 // or taut: the line lies at zero tension, where every axial ripple does).
 TEST(SeabedDynamics, RestingLineNeitherCreepsNorBounces) {
   for (const double friction : {0.0, 0.5}) {
-    const Model m = ChainOnBed(friction);
+    const LineModel m = ChainOnBed(friction);
     const double w = m.line.net_weight[5] / m.line.rest_length[5];  // submerged weight per length [N/m]
     const double sink = w / m.env.seabed.stiffness;             // 3.27e-5 m
     const struct {
@@ -306,7 +306,7 @@ TEST(SeabedDynamics, DroppedLineComesToRest) {
   env.seabed.present = true;
   env.seabed.y = 0;
   env.seabed.friction = 0.5;
-  const Model m = UniformCable(40, 20.0, c.mu, c.area, c.EA / c.area, env,
+  const LineModel m = UniformCable(40, 20.0, c.mu, c.area, c.EA / c.area, env,
                                     EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(19.9, 2.0)), 0.137,
                                     2.4, 1.0);
   const double sink = m.line.net_weight[5] / m.line.rest_length[5] / m.env.seabed.stiffness;
@@ -371,7 +371,7 @@ TEST(SeabedDynamics, DraggedChainTensionGrowsByMuWPerMetre) {
     const double t = 0.05 * i, tau = 1.0;
     rows.emplace_back(t, speed * (t - tau + tau * std::exp(-t / tau)), 0.0);
   }
-  const Model m = MakeModel({sec}, {}, env, EndMotion::Free(InPlane(0, 0)),
+  const LineModel m = MakeLineModel({sec}, {}, env, EndMotion::Free(InPlane(0, 0)),
                                        testing::PlanarTable(InPlane(30, 0), rows), LinkLaw::kElastic);
   State s;
   s.x = StraightChord(m);
@@ -422,13 +422,13 @@ TEST(SeabedDynamics, ShipDrivenTouchdownRunsThroughWithoutStepCollapse) {
     return UniformCable(N, c.length, c.mu, c.area, c.EA / c.area, e,
                         EndMotion::Fixed(InPlane(0.0, c.bed_y)), ship, 0.137, 2.4, 1.0);
   };
-  const Model grounded = line(env), hanging = line(no_bed);
+  const LineModel grounded = line(env), hanging = line(no_bed);
   struct Run {
     long steps = 0, rejected = 0;
     double grounded_min = 1e300, grounded_max = 0;
   };
-  auto run = [&](const Model& m, double tolerance, double h) {
-    State s = SolveEquilibrium(m);
+  auto run = [&](const LineModel& m, double tolerance, double h) {
+    State s = SolveLineEquilibrium(m);
     auto integ = testing::MakeStepper(Scheme::kImplicit, m, 0.5, tolerance);
     integ->Initialize(m, s);
     Run r;
@@ -477,14 +477,14 @@ TEST(SeabedDynamics, LandingsStopWithoutRebound) {
   env.fluid_density = c.rho;
   env.seabed.present = true;
   env.seabed.y = c.bed_y;
-  const Model m = UniformCable(50, c.length, c.mu, c.area, c.EA / c.area, env,
+  const LineModel m = UniformCable(50, c.length, c.mu, c.area, c.EA / c.area, env,
                                     EndMotion::Fixed(InPlane(0.0, c.bed_y)), ship, 0.137, 2.4, 1.0);
   struct Events {
     int landings = 0;
     double highest_hop = 0;  // m above the bed, between a lift-off and a landing within 1 s
   };
   auto observe = [&](std::unique_ptr<testing::Stepper> integ) {
-    State s = SolveEquilibrium(m);
+    State s = SolveLineEquilibrium(m);
     integ->Initialize(m, s);
     std::vector<double> lifted_at(m.stations(), -1e300), risen(m.stations(), 0.0);
     std::vector<bool> down(m.stations());
@@ -533,7 +533,7 @@ TEST(SeabedInextensible, GroundedCatenaryAndRestingLine) {
   env.seabed.present = true;
   env.seabed.y = c.bed_y;
   SectionSpec sec{c.length, 200, 0.137, c.area, c.mu, c.EA / c.area, 2.4, 1.0};
-  const Model m = MakeModel({sec}, {}, env, EndMotion::Fixed(InPlane(0.0, c.bed_y)),
+  const LineModel m = MakeLineModel({sec}, {}, env, EndMotion::Fixed(InPlane(0.0, c.bed_y)),
                                        EndMotion::Fixed(InPlane(c.span, c.bed_y + c.depth)),
                                        LinkLaw::kInextensible);
   State st = SolveInextensibleEquilibrium(m, nullptr);
@@ -577,14 +577,14 @@ TEST(SeabedInextensible, GroundedChainInAShearedCurrent) {
   env.current_profile.speed = {0.2, 0.4, 0.8};
   auto line = [&](double ea_factor, LinkLaw law) {
     SectionSpec sec{c.length, 100, 0.137, c.area, c.mu, ea_factor * c.EA / c.area, 2.4, 1.0};
-    return MakeModel({sec}, {}, env, EndMotion::Fixed(InPlane(0.0, c.bed_y)),
+    return MakeLineModel({sec}, {}, env, EndMotion::Fixed(InPlane(0.0, c.bed_y)),
                            EndMotion::Fixed(InPlane(c.span, c.bed_y + c.depth)), law);
   };
-  const Model m = line(1.0, LinkLaw::kInextensible);
-  EquilibriumReport report;
+  const LineModel m = line(1.0, LinkLaw::kInextensible);
+  LineEquilibriumReport report;
   const State st = SolveInextensibleEquilibrium(m, &report);
-  const Points x100 = SolveEquilibrium(line(100.0, LinkLaw::kElastic)).x;
-  const Points x200 = SolveEquilibrium(line(200.0, LinkLaw::kElastic)).x;
+  const Points x100 = SolveLineEquilibrium(line(100.0, LinkLaw::kElastic)).x;
+  const Points x200 = SolveLineEquilibrium(line(200.0, LinkLaw::kElastic)).x;
   const Points limit = 2.0 * x200 - x100;
   const double diff = (st.x - limit).cwiseAbs().maxCoeff();
   std::printf("[ inextensible ] sheared current: %d iterations, round-off floor %.2e N; stations "
@@ -621,7 +621,7 @@ TEST(CurrentProfile, LinkDragTakesTheCurrentAtItsMidpoint) {
   env.gravity = 0;
   env.current_profile.y = {-10.0, 0.0};
   env.current_profile.speed = {3.0, 0.5};
-  const Model m = UniformCable(1, 2.0, 1.0, 1e-4, 1e11, env, EndMotion::Fixed(InPlane(0, 0)),
+  const LineModel m = UniformCable(1, 2.0, 1.0, 1e-4, 1e11, env, EndMotion::Fixed(InPlane(0, 0)),
                                     EndMotion::Free(InPlane(0, -2)), 0.1, 1.0, 0.0);
   ForceWorkspace ws(m.line.links);
   Points x(kDim, 2), v = Points::Zero(kDim, 2);
@@ -648,21 +648,21 @@ TEST(CurrentProfile, ConstantTableIsTheUniformCurrent) {
     p.added_volume = Vec(0.02, 0.02, 0.02);
     p.drag_coefficient = Vec(1.0, 1.0, 1.0);
     p.drag_area = Vec(0.1, 0.1, 0.1);
-    return MakeModel({a}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -20)),
+    return MakeLineModel({a}, {p}, env, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Free(InPlane(0, -20)),
                            LinkLaw::kElastic);
   };
   EnvironmentSpec uniform;
   uniform.fluid_density = 1025;
   uniform.current = 0.7;
-  const Model mu = chain(uniform);
-  const State eq = SolveEquilibrium(mu);
+  const LineModel mu = chain(uniform);
+  const State eq = SolveLineEquilibrium(mu);
   for (const std::vector<double>& ys :
        {std::vector<double>{-5.0}, std::vector<double>{-1000.0, 1000.0}}) {
     EnvironmentSpec table = uniform;
     table.current = 0;
     table.current_profile.y = ys;
     table.current_profile.speed.assign(ys.size(), 0.7);
-    const Model mt = chain(table);
+    const LineModel mt = chain(table);
     // Forces at a moving state.
     ForceWorkspace a(mu.line.links), b(mt.line.links);
     Points v = Points::Constant(2, mu.stations(), 0.3);
@@ -673,12 +673,12 @@ TEST(CurrentProfile, ConstantTableIsTheUniformCurrent) {
     ComputeStationForces(mt, SceneWater(mt), b.geometry, b.tension, v, b.force);
     EXPECT_EQ((a.force - b.force).cwiseAbs().maxCoeff(), 0.0);
     // Equilibrium.
-    const State eqt = SolveEquilibrium(mt);
+    const State eqt = SolveLineEquilibrium(mt);
     EXPECT_LT((eqt.x - eq.x).cwiseAbs().maxCoeff(), 1e-9);
     // Motion: swinging into the current from the still-water equilibrium.
-    Model still = mu;
+    LineModel still = mu;
     still.env.current = 0;
-    State su = SolveEquilibrium(still), st = su;
+    State su = SolveLineEquilibrium(still), st = su;
     auto iu = testing::MakeStepper(Scheme::kImplicit, mu, 0.5, 2e-5);
     auto it = testing::MakeStepper(Scheme::kImplicit, mt, 0.5, 2e-5);
     iu->Initialize(mu, su);

@@ -10,7 +10,7 @@
 #include "run/driver.h"
 #include "run/initial_state.h"
 #include "run/time_grid.h"
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/step.h"
 #include "core/snap_monitor.h"
 #include "scene/build_model.h"
@@ -101,9 +101,9 @@ TEST(SnapMonitor, RoundOffAtRestLengthIsNoSnap) {
 StepStats RunScene(const std::string& name, double duration = 0) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + name);
   if (duration > 0) scene.simulation.duration = duration;
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
-  State state = SolveEquilibrium(m);
+  State state = SolveLineEquilibrium(m);
   auto integrator = testing::MakeStepper(m, grid);
   integrator->Initialize(m, state);
   for (long k = 0; k < grid.outputs; ++k) integrator->Step(m, state, grid.interval);

@@ -19,7 +19,7 @@ namespace {
 
 // Two sections (wire and a softer, lighter rope) in sea water, a heavy prism at station 7, both
 // ends fixed.
-Model Line(int links) {
+LineModel Line(int links) {
   SectionSpec wire{20.0, links / 2, 0.0254, 5.067e-4, 2.75, 9.0e10, 1.2, 1.0};
   SectionSpec rope{20.0, links - links / 2, 0.0508, 2.027e-3, 1.70, 2.0e9, 1.2, 1.0};
   PrismSpec weight;
@@ -31,13 +31,13 @@ Model Line(int links) {
   weight.drag_area = Vec(0.16, 0.16, 0.16);
   EnvironmentSpec env;
   env.fluid_density = 1025;
-  return MakeModel({wire, rope}, {weight}, env, EndMotion::Fixed(InPlane(0, 0)),
+  return MakeLineModel({wire, rope}, {weight}, env, EndMotion::Fixed(InPlane(0, 0)),
                          EndMotion::Fixed(InPlane(40, 0)), LinkLaw::kElastic);
 }
 
 // omega_max^2 of the linearised free stations at x (v = 0: no drag, so the forces are the
 // tensions and the weights, and K is the Hessian of the potential).
-double HighestEigenvalue(const Model& m, const Points& x) {
+double HighestEigenvalue(const LineModel& m, const Points& x) {
   const int j0 = m.first_free(), n = m.last_free() - j0 + 1;
   ForceWorkspace ws(m.line.links);
   const Points v = Points::Zero(kDim, m.stations());
@@ -65,7 +65,7 @@ double HighestEigenvalue(const Model& m, const Points& x) {
 
 // Stations along a wave winding up and down (elevation a cos(0.7 j)) and sideways (azimuth
 // a/2 sin(0.9 j)), link j stretched by strain[j] (negative: slack).
-Points WavyState(const Model& m, double amplitude, const std::vector<double>& strain) {
+Points WavyState(const LineModel& m, double amplitude, const std::vector<double>& strain) {
   Points x(kDim, m.stations());
   x.col(0).setZero();
   for (int j = 0; j < m.line.links; ++j) {
@@ -78,7 +78,7 @@ Points WavyState(const Model& m, double amplitude, const std::vector<double>& st
 }
 
 TEST(StabilityLimit, HoldsInStretchedCurvedSlackStatesWithAddedMass) {
-  const Model m = Line(16);
+  const LineModel m = Line(16);
   const StabilityLimit limit = ComputeStabilityLimit(m);
   const double bound = limit.omega_max * limit.omega_max;
   struct Case {
@@ -100,7 +100,7 @@ TEST(StabilityLimit, HoldsInStretchedCurvedSlackStatesWithAddedMass) {
   for (const Case& c : cases) {
     Points x = WavyState(m, c.amplitude, c.strain);
     // The far end fixed where the state puts it.
-    Model at = m;
+    LineModel at = m;
     at.ends.end = EndMotion::Fixed(x.col(m.line.links));
     const double lambda = HighestEigenvalue(at, x);
     std::printf("[ stability ] %s: omega_max^2 %.6e, Gershgorin bound %.6e, ratio %.4f\n", c.what,

@@ -70,10 +70,10 @@ TEST(StartDuration, TheTimeGridUsesItAndTheScenesKeys) {
 
 // Steps P63 over [0, span] and returns the implicit steps taken.
 long StepsOver(const SceneDef& scene, double span) {
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
   const Inputs in = SceneInputs(m);
-  Data d = MakeData(m, in, grid.options, MakeInitialState(scene, m, nullptr));
+  LineData d = MakeLineData(m, in, grid.options, MakeInitialState(scene, m, nullptr));
   for (double t = 0; t < span - 1e-9; t += 1.0 / 30) ImplicitStep(m, d, in, 1.0 / 30);
   return d.stats.steps;
 }

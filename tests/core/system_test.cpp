@@ -9,11 +9,11 @@
 #include <cstdio>
 #include <string>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/error.h"
 #include "core/forces.h"
-#include "core/system_equilibrium.h"
-#include "core/system_step.h"
+#include "core/equilibrium.h"
+#include "core/coupled_step.h"
 #include "test_support.h"
 
 namespace cablefilm {
@@ -63,7 +63,7 @@ SectionSpec LegChain(double length, int segments, bool axial) {
 }
 
 // Anchor -> 60 m -> clump -> 45 m -> fairlead: as two lines joined at a free point.
-SystemModel ClumpSystem(bool axial = false) {
+Model ClumpSystem(bool axial = false) {
   std::vector<PointSpec> points(3);
   points[0] = {"anchor", EndMotion::Fixed(kAnchor), {}};
   points[1] = {"clump", EndMotion::Free(Vec(40.0, -45.0, 5.0)), Clump()};
@@ -77,14 +77,14 @@ SystemModel ClumpSystem(bool axial = false) {
   lines[1].sections = {LegChain(45, 18, axial)};
   lines[1].start_point = 1;
   lines[1].end_point = 2;
-  return MakeSystem(lines, points, Water3D());
+  return MakeModel(lines, points, Water3D());
 }
 
 // The same as one line with the clump as a weight at its station 24.
-Model ClumpLine(bool axial = false) {
+LineModel ClumpLine(bool axial = false) {
   PrismSpec clump = Clump();
   clump.station = 24;
-  return MakeModel({LegChain(60, 24, axial), LegChain(45, 18, axial)}, {clump}, Water3D(),
+  return MakeLineModel({LegChain(60, 24, axial), LegChain(45, 18, axial)}, {clump}, Water3D(),
                    EndMotion::Fixed(kAnchor), Ship(), LinkLaw::kElastic);
 }
 
@@ -96,7 +96,7 @@ double PositionGap(const std::vector<State>& lines, const Points& one) {
   return gap;
 }
 
-TEST(SystemModel, RefusesWhatNothingHolds) {
+TEST(Model, RefusesWhatNothingHolds) {
   const EnvironmentSpec env = Water3D();
   LineSpec line;
   line.name = "l";
@@ -106,28 +106,28 @@ TEST(SystemModel, RefusesWhatNothingHolds) {
   const PointSpec fixed{"a", EndMotion::Fixed(Vec::Zero()), {}};
   const PointSpec free{"f", EndMotion::Free(Vec(5.0, -5.0, 0.0)), {}};
   // A free point no line holds.
-  EXPECT_THROW(MakeSystem({line}, {fixed, free, free}, env), Error);
+  EXPECT_THROW(MakeModel({line}, {fixed, free, free}, env), Error);
   // A line whose ends are both free points that hold nothing else.
-  EXPECT_THROW(MakeSystem({line}, {free, free}, env), Error);
+  EXPECT_THROW(MakeModel({line}, {free, free}, env), Error);
   // A line end at a point that does not exist.
   line.end_point = 5;
-  EXPECT_THROW(MakeSystem({line}, {fixed, free}, env), Error);
+  EXPECT_THROW(MakeModel({line}, {fixed, free}, env), Error);
   line.end_point = 1;
   // An inextensible line: the system's step is the elastic line's.
   line.law = LinkLaw::kInextensible;
-  EXPECT_THROW(MakeSystem({line}, {fixed, free}, env), Error);
+  EXPECT_THROW(MakeModel({line}, {fixed, free}, env), Error);
   line.law = LinkLaw::kElastic;
-  const SystemModel ok = MakeSystem({line}, {fixed, free}, env);
+  const Model ok = MakeModel({line}, {fixed, free}, env);
   EXPECT_EQ(ok.shared_count(), 0);  // a free end, not a shared station
   EXPECT_FALSE(ok.lines[0].ends.end.prescribed());
 }
 
 void ExpectClumpEquilibriumIsTheLine(bool axial) {
-  const SystemModel sys = ClumpSystem(axial);
+  const Model sys = ClumpSystem(axial);
   ASSERT_EQ(sys.shared_count(), 1);
-  SystemEquilibriumReport report;
-  const std::vector<State> states = SolveSystemEquilibrium(sys, &report);
-  const State one = SolveEquilibrium(ClumpLine(axial));
+  EquilibriumReport report;
+  const std::vector<State> states = SolveEquilibrium(sys, &report);
+  const State one = SolveLineEquilibrium(ClumpLine(axial));
   // Both are solved to 1e-9 of the static load (about 60 kN here): a station's position then
   // differs by that force over the line's stiffness across it (T / l ~ 1e4 N/m): ~6e-9 m
   // (measured 4.6e-10 m).
@@ -148,15 +148,15 @@ TEST(SystemEquilibrium, ClumpJunctionWithTangentialTermsIsTheLineWithAWeight) {
 }
 
 void ExpectClumpDynamicsIsTheLine(bool axial) {
-  const SystemModel sys = ClumpSystem(axial);
-  const Model line = ClumpLine(axial);
-  const std::vector<State> rest = SolveSystemEquilibrium(sys);
-  const State one_rest = SolveEquilibrium(line);
+  const Model sys = ClumpSystem(axial);
+  const LineModel line = ClumpLine(axial);
+  const std::vector<State> rest = SolveEquilibrium(sys);
+  const State one_rest = SolveLineEquilibrium(line);
   StepOptions o;
   o.scheme = Scheme::kImplicit;
   o.tolerance = 1e-4;  // the default's scale (1e-6 of the line's length)
-  SystemData sd = MakeSystemData(sys, SceneInputs(line), o, rest);
-  Data one = MakeData(line, SceneInputs(line), o, one_rest);
+  Data sd = MakeData(sys, SceneInputs(line), o, rest);
+  LineData one = MakeLineData(line, SceneInputs(line), o, one_rest);
   // Newton's tolerance a tenth of its default (1e-10 of a link, 2.5e-10 m) in both: the system
   // keeps each line's Newton matrix on its own and the one line its whole matrix, so the two
   // iterate differently and differ by what Newton leaves in each step (at the default
@@ -164,11 +164,11 @@ void ExpectClumpDynamicsIsTheLine(bool axial) {
   // not the equations').
   one.scratch.newton_tolerance *= 0.1;
   sd.newton_tolerance *= 0.1;
-  for (Data& d : sd.lines) d.scratch.newton_tolerance *= 0.1;
+  for (LineData& d : sd.lines) d.scratch.newton_tolerance *= 0.1;
   double gap = 0, peak = 0, tension_gap = 0;
   for (int k = 0; k < 200; ++k) {  // 20 s: the ship's ramp and two periods
-    StepSystem(sys, sd, SceneInputs(line), 0.1);
-    Step(line, one, SceneInputs(line), 0.1);
+    Step(sys, sd, SceneInputs(line), 0.1);
+    StepLine(line, one, SceneInputs(line), 0.1);
     std::vector<State> now = {sd.lines[0].state, sd.lines[1].state};
     gap = std::max(gap, PositionGap(now, one.state.x));
     peak = std::max(peak, one.tension().maxCoeff());
@@ -206,13 +206,13 @@ TEST(SystemDynamics, ABlowUpNamesItsLine) {
   std::vector<LineSpec> lines(2);
   lines[0] = {"lower", {Chain(60, 24)}, {}, LinkLaw::kElastic, 0, 1};
   lines[1] = {"upper", {Chain(45, 18)}, {}, LinkLaw::kElastic, 1, 2};
-  const SystemModel sys = MakeSystem(lines, points, Water3D());
+  const Model sys = MakeModel(lines, points, Water3D());
   StepOptions o;
   o.scheme = Scheme::kImplicit;
   o.tolerance = 1e-4;
-  SystemData sd = MakeSystemData(sys, SceneInputs(sys.lines[0]), o, SolveSystemEquilibrium(sys));
+  Data sd = MakeData(sys, SceneInputs(sys.lines[0]), o, SolveEquilibrium(sys));
   try {
-    for (int k = 0; k < 10; ++k) StepSystem(sys, sd, SceneInputs(sys.lines[0]), 0.01);
+    for (int k = 0; k < 10; ++k) Step(sys, sd, SceneInputs(sys.lines[0]), 0.01);
     FAIL() << "no blow-up";
   } catch (const BlowUpError& e) {
     const std::string what = e.what();
@@ -245,7 +245,7 @@ struct Spread {
     p.force = thrust;
     return p;
   }
-  SystemModel System(int links) const {
+  Model System(int links) const {
     EnvironmentSpec env;
     env.fluid_density = rho;
     env.gravity = g;
@@ -258,7 +258,7 @@ struct Spread {
       lines[i].start_point = i + 1;  // from the anchor up to the buoy
       lines[i].end_point = 0;
     }
-    return MakeSystem(lines, points, env);
+    return MakeModel(lines, points, env);
   }
   // The exact answer: the buoy where the three exact elastic catenaries, its net buoyancy and
   // the thrust balance (Newton with central differences on the continuous catenaries).
@@ -300,13 +300,13 @@ TEST(SystemEquilibrium, SpreadMooringOffsetConvergesToTheExactCatenaries) {
   double error[2];
   int k = 0;
   for (int links : {35, 70}) {
-    const SystemModel sys = spread.System(links);
-    const std::vector<State> states = SolveSystemEquilibrium(sys);
+    const Model sys = spread.System(links);
+    const std::vector<State> states = SolveEquilibrium(sys);
     error[k++] = (states[0].x.col(links) - exact).norm();
     // The lines' pull balances the buoy: the forces on it at rest sum to zero (PointForces
     // reports the lines' pull on a free point).
     StepOptions o;
-    SystemData sd = MakeSystemData(sys, SceneInputs(sys.lines[0]), o, states);
+    Data sd = MakeData(sys, SceneInputs(sys.lines[0]), o, states);
     PointLoads loads(sys);
     loads.Compute(sys, sd, SceneInputs(sys.lines[0]));
     const Points& forces = loads.forces();
@@ -331,12 +331,12 @@ TEST(SystemEquilibrium, SpreadMooringOffsetConvergesToTheExactCatenaries) {
 // in place of running for minutes (a fuzzed file's 100 000-link tether did).
 TEST(SystemEquilibrium, HeldLinesWorkIsCountedAndBounded) {
   const Spread spread;
-  const SystemModel sys = spread.System(35);
+  const Model sys = spread.System(35);
   std::vector<double> fractions;
-  SystemEquilibriumOptions options;
+  EquilibriumOptions options;
   options.solving = [&](double f) { fractions.push_back(f); };
-  SystemEquilibriumReport report;
-  SolveSystemEquilibrium(sys, &report, options);
+  EquilibriumReport report;
+  SolveEquilibrium(sys, &report, options);
   ASSERT_GT(report.iterations, 1);
   // At least every line's first solve (three legs of 36 stations, an iteration each) and the
   // finite differences' re-solves; far under the bound.
@@ -357,7 +357,7 @@ TEST(SystemEquilibrium, HeldLinesWorkIsCountedAndBounded) {
   double used = 0;
   options.line_work = &used;
   try {
-    SolveSystemEquilibrium(sys, nullptr, options);
+    SolveEquilibrium(sys, nullptr, options);
     FAIL() << "converged within half the work it needed";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("station-iterations"), std::string::npos) << e.what();
@@ -366,7 +366,7 @@ TEST(SystemEquilibrium, HeldLinesWorkIsCountedAndBounded) {
   EXPECT_LE(used, options.max_line_work + 0.5 * report.line_work);
   // A shared count goes on from where it stands: at the bound already, the first solve ends it.
   options.max_line_work = used;
-  EXPECT_THROW(SolveSystemEquilibrium(sys, nullptr, options), Error);
+  EXPECT_THROW(SolveEquilibrium(sys, nullptr, options), Error);
 }
 
 }  // namespace

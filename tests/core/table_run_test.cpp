@@ -71,7 +71,7 @@ struct Peaks {
 
 Peaks Simulate(const std::string& path) {
   const SceneDef scene = LoadScene(path);
-  const Model m = BuildModel(scene);
+  const LineModel m = BuildModel(scene);
   CheckModelLimits(scene, m);
   const MemoryRun r = RunInMemory(scene, m, nullptr);
   EXPECT_TRUE(r.run.summary.completed) << r.run.summary.failure;

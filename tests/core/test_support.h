@@ -11,24 +11,24 @@
 #include <string>
 #include <vector>
 
-#include "core/data.h"
-#include "core/model.h"
+#include "core/line_data.h"
+#include "core/line_model.h"
 #include "core/step.h"
 
 namespace cablefilm::testing {
 
-// The Data a test steps: state `s` under a scheme, with the model's own inputs.
-inline Data StartData(const Model& m, const State& s, Scheme scheme, double rho_inf = 0.5,
+// The LineData a test steps: state `s` under a scheme, with the model's own inputs.
+inline LineData StartData(const LineModel& m, const State& s, Scheme scheme, double rho_inf = 0.5,
                       double tolerance = 0, double safety_factor = 0) {
   StepOptions o;
   o.scheme = scheme;
   o.rho_inf = rho_inf;
   o.tolerance = tolerance;
   o.safety_factor = safety_factor;
-  return MakeData(m, SceneInputs(m), o, s);
+  return MakeLineData(m, SceneInputs(m), o, s);
 }
 
-// A scheme as the tests step it: a Data with the model's own inputs whose state follows the
+// A scheme as the tests step it: a LineData with the model's own inputs whose state follows the
 // test's State (taken in before each step, given back after it), so that a test may look at
 // and change its state between steps as it likes.
 class Stepper {
@@ -40,20 +40,20 @@ class Stepper {
     options_.tolerance = tolerance;
     options_.safety_factor = safety_factor;
   }
-  void Initialize(const Model& m, const State& s) {
+  void Initialize(const LineModel& m, const State& s) {
     inputs_ = SceneInputs(m);
     inputs_.stop = stop_;
-    data_ = MakeData(m, inputs_, options_, s);
+    data_ = MakeLineData(m, inputs_, options_, s);
   }
-  void Step(const Model& m, State& s, double dt) {
+  void Step(const LineModel& m, State& s, double dt) {
     data_.state = s;
-    cablefilm::Step(m, data_, inputs_, dt);
+    cablefilm::StepLine(m, data_, inputs_, dt);
     s = data_.state;
   }
   const Eigen::VectorXd& tensions() const { return data_.tension(); }
   StepStats stats() const { return data_.step_stats(); }
-  const Data& data() const { return data_; }
-  Data& data() { return data_; }
+  const LineData& data() const { return data_; }
+  LineData& data() { return data_; }
   const Inputs& inputs() const { return inputs_; }
   void set_cancel(const CancelFlag* stop) { stop_ = inputs_.stop = stop; }
 
@@ -61,10 +61,10 @@ class Stepper {
   StepOptions options_;
   Inputs inputs_;
   const CancelFlag* stop_ = nullptr;
-  Data data_;
+  LineData data_;
 };
 
-inline std::unique_ptr<Stepper> MakeStepper(Scheme scheme, const Model&, double rho_inf = 0.5,
+inline std::unique_ptr<Stepper> MakeStepper(Scheme scheme, const LineModel&, double rho_inf = 0.5,
                                             double tolerance = 0) {
   return std::make_unique<Stepper>(scheme, rho_inf, tolerance);
 }
@@ -89,7 +89,7 @@ inline State AtRest(const Points& x) {
 }
 
 // A uniform line of `links` links between two end motions.
-inline Model UniformCable(int links, double length, double mass_per_length, double area,
+inline LineModel UniformCable(int links, double length, double mass_per_length, double area,
                                double youngs_modulus, const EnvironmentSpec& env, EndMotion start,
                                EndMotion end, double diameter = 0.0, double drag = 0.0,
                                double added_mass = 0.0) {
@@ -102,7 +102,7 @@ inline Model UniformCable(int links, double length, double mass_per_length, doub
   s.youngs_modulus = youngs_modulus;
   s.drag_coefficient = drag;
   s.added_mass_coefficient = added_mass;
-  return MakeModel({s}, {}, env, std::move(start), std::move(end), LinkLaw::kElastic);
+  return MakeLineModel({s}, {}, env, std::move(start), std::move(end), LinkLaw::kElastic);
 }
 
 // The exact static shape of an elastic line in Lagrangian (unstretched) arc length s, Irvine

@@ -25,7 +25,7 @@ double VerletFrequency(double omega, double dt) { return 2.0 / dt * std::asin(0.
 // q(t) = sum_j weight_j * x_j (x: the transverse coordinate `axis`), measured between the first
 // and the last of `crossings` zero crossings (linear interpolation: at a crossing q'' = -W^2 q
 // vanishes, so the interpolation error is O(dt^3)).
-double MeasurePeriod(const Model& m, const Points& x0, double dt,
+double MeasurePeriod(const LineModel& m, const Points& x0, double dt,
                      const Eigen::VectorXd& weight, int axis, int crossings) {
   State s;
   s.x = x0;
@@ -57,7 +57,7 @@ TEST(TautString, TransverseModesMatchDiscreteFrequencies) {
   EnvironmentSpec env;
   env.gravity = 0;
   env.fluid_density = 0;
-  const Model m = UniformCable(N, N * l0, mu, 1e-4, EA / 1e-4, env, EndMotion::Fixed(InPlane(0, 0)),
+  const LineModel m = UniformCable(N, N * l0, mu, 1e-4, EA / 1e-4, env, EndMotion::Fixed(InPlane(0, 0)),
                                     EndMotion::Fixed(InPlane(N * L, 0)));
   // A stretched link turned by a small angle pulls back with T0 times the angle: transverse
   // stiffness T0 / L. So m y_j'' = (T0/L)(y_{j+1} - 2 y_j + y_{j-1}), with modes
@@ -146,7 +146,7 @@ TEST(HangingChain, SimulatedPeriodMatchesEigenproblemAndConverges) {
     EnvironmentSpec env;
     env.gravity = g;
     env.fluid_density = 0;
-    const Model m = UniformCable(N, L, mu, area, EA / area, env, EndMotion::Fixed(InPlane(0, 0)),
+    const LineModel m = UniformCable(N, L, mu, area, EA / area, env, EndMotion::Fixed(InPlane(0, 0)),
                                       EndMotion::Free(InPlane(0, -L)));
     Eigen::VectorXd mode;
     const double omega = ChainFirstMode(N, L, mu, g, EA, &mode);

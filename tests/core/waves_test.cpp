@@ -13,7 +13,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/explicit_step.h"
 #include "core/forces.h"
 #include "core/step.h"
@@ -273,7 +273,7 @@ OrbitFit RunPoint(double drag_area, bool morison_inertia, long* steps) {
   p.added_volume = morison_inertia ? InPlane(volume, volume) : Vec::Zero();
   p.drag_coefficient = Vec(1.0, 1.0, 1.0);
   p.drag_area = Vec(drag_area, drag_area, drag_area);
-  Model m = MakeModel({link}, {p}, env, EndMotion::Fixed(InPlane(0, -45)),
+  LineModel m = MakeLineModel({link}, {p}, env, EndMotion::Fixed(InPlane(0, -45)),
                                  EndMotion::Free(InPlane(0, -20)), LinkLaw::kElastic);
   if (!morison_inertia) m.line.prism_fluid_mass.setZero();  // drag alone carries the point
   State s;
@@ -376,10 +376,10 @@ WaveRun RunMooringInWaves(int N, bool waves, bool inextensible = false, double f
   SectionSpec s{500.0, N, 0.137, area, mu, EA / area, 2.4, 1.0};
   const EndMotion ship =
       EndMotion::Trochoid(InPlane(450, fairlead_y), InPlane(3.0, 0.0), InPlane(0.0, 1.0), 2 * kPi / 12.0, 0.3);
-  const Model m =
-      MakeModel({s}, {}, env, EndMotion::Fixed(InPlane(0.0, bed_y)), ship,
+  const LineModel m =
+      MakeLineModel({s}, {}, env, EndMotion::Fixed(InPlane(0.0, bed_y)), ship,
                       inextensible ? LinkLaw::kInextensible : LinkLaw::kElastic);
-  State st = SolveEquilibrium(m);
+  State st = SolveLineEquilibrium(m);
   std::unique_ptr<testing::Stepper> integ =
       kind == Scheme::kExplicit
           ? std::make_unique<testing::Stepper>(Scheme::kExplicit, 0.5, 0, 0.8)  // "auto": 0.8 of the limit
@@ -487,11 +487,11 @@ TEST(WaveEquilibrium, LinePiercingTheSurfaceHangsWithItsDryPartInAir) {
   env.waves.ramp_rate = 0.2;
   SectionSpec s{30.0, 60, 0.04, area, mu, E, 1.2, 1.0};
   auto build = [&](const EnvironmentSpec& e) {
-    return MakeModel({s}, {}, e, EndMotion::Fixed(InPlane(0, 5)), EndMotion::Free(InPlane(0, -25)),
+    return MakeLineModel({s}, {}, e, EndMotion::Fixed(InPlane(0, 5)), EndMotion::Free(InPlane(0, -25)),
                            LinkLaw::kElastic);
   };
-  const Model m = build(env);
-  const State st = SolveEquilibrium(m);
+  const LineModel m = build(env);
+  const State st = SolveLineEquilibrium(m);
   ForceWorkspace ws(m.line.links);
   ComputeGeometry(m, SceneWater(m), 0.0, st.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
@@ -504,8 +504,8 @@ TEST(WaveEquilibrium, LinePiercingTheSurfaceHangsWithItsDryPartInAir) {
 
   EnvironmentSpec still = env;
   still.waves.height = 0;
-  const Model calm = build(still);
-  State run = SolveEquilibrium(calm);
+  const LineModel calm = build(still);
+  State run = SolveLineEquilibrium(calm);
   const Points start = run.x;
   auto integ = testing::MakeStepper(Scheme::kImplicit, calm, 0.5, 1e-6 * 30);
   integ->Initialize(calm, run);
@@ -531,14 +531,14 @@ TEST(WaveForces, StationsAboveTheSurfaceAreDryAndStillWaterChangesNothing) {
   env.current = 0.4;
   SectionSpec s{10.0, 10, 0.05, 1e-3, 8.0, 1e9, 1.2, 1.0};
   auto build = [&](const EnvironmentSpec& e) {
-    return MakeModel({s}, {}, e, EndMotion::Fixed(InPlane(0, -12)), EndMotion::Fixed(InPlane(6, 0)),
+    return MakeLineModel({s}, {}, e, EndMotion::Fixed(InPlane(0, -12)), EndMotion::Fixed(InPlane(6, 0)),
                            LinkLaw::kElastic);
   };
-  const Model plain = build(env);
+  const LineModel plain = build(env);
   EnvironmentSpec still = env;
   still.waves = Spec(0.0, 5.0, 100.0);
   still.waves.surface_y = 50.0;
-  const Model calm = build(still);
+  const LineModel calm = build(still);
   Points x(kDim, 11), v(kDim, 11);
   for (int j = 0; j <= 10; ++j) {
     x.col(j) = InPlane(0.6 * j, -12.0 + 1.2 * j);
@@ -560,7 +560,7 @@ TEST(WaveForces, StationsAboveTheSurfaceAreDryAndStillWaterChangesNothing) {
   EnvironmentSpec cut = env;
   cut.waves = Spec(0.0, 5.0, 100.0);
   cut.waves.surface_y = -6.0;
-  const Model half = build(cut);
+  const LineModel half = build(cut);
   ComputeGeometry(half, SceneWater(half), 0.0, x, b.geometry);
   ComputeTensions(half, b.geometry, v, b.tension);
   ComputeStationForces(half, SceneWater(half), b.geometry, b.tension, v, b.force);
@@ -598,11 +598,11 @@ TEST(WaveForces, StillSurfaceOverTheWholeLineIsNoSurface) {
   env.fluid_density = 1025;
   SectionSpec s{20.0, 20, 0.05, 2e-3, 20.0, 1e9, 1.2, 1.0};
   auto run = [&](const EnvironmentSpec& e, double top, double seconds, long* steps) {
-    const Model m = MakeModel(
+    const LineModel m = MakeLineModel(
         {s}, {}, e, EndMotion::Fixed(InPlane(0, -15)),
         EndMotion::Trochoid(InPlane(12, top), InPlane(1.0, 0.5), InPlane(0, 0), 2 * kPi / 8, 0.5),
         LinkLaw::kElastic);
-    State st = SolveEquilibrium(m);
+    State st = SolveLineEquilibrium(m);
     auto integ = testing::MakeStepper(Scheme::kImplicit, m, 0.5, 1e-6 * 20);
     integ->Initialize(m, st);
     for (int i = 0; i < static_cast<int>(seconds / 0.1 + 0.5); ++i) integ->Step(m, st, 0.1);

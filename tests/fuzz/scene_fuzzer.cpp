@@ -153,7 +153,7 @@ enum class Outcome { kFinished, kError, kBudget };
 // What SimulateToFiles does for `run` and `compare`, on the first kMaxOutputs outputs.
 Outcome RunModel(const SceneDef& scene, const std::string& suffix, const CancelFlag* cancel) {
   try {
-    const Model m = BuildModel(scene);
+    const LineModel m = BuildModel(scene);
     CheckModelLimits(scene, m);
     Run run = PrepareRun(scene, m, LawName(m.line.law), cancel);
     const std::string out = g_setup->out.string();
@@ -161,7 +161,7 @@ Outcome RunModel(const SceneDef& scene, const std::string& suffix, const CancelF
                         run.initial.tension());
     TimeseriesWriter series(out + "/timeseries" + suffix + ".csv", m, run.inputs);
     long outputs = 0;
-    RowFunction enough([&](const Data&) { return outputs++ < kMaxOutputs; });
+    RowFunction enough([&](const LineData&) { return outputs++ < kMaxOutputs; });
     ExecuteRun(run, {&series, &enough});
     if (run.summary.completed)
       series.Commit();
@@ -178,7 +178,7 @@ Outcome RunModel(const SceneDef& scene, const std::string& suffix, const CancelF
 // the system's equilibrium, each line's equilibrium.csv and timeseries.csv, points.csv.
 class EnoughRows : public SystemRowSink {
  public:
-  bool Row(const SystemData&) override { return outputs_++ < kMaxOutputs; }
+  bool Row(const Data&) override { return outputs_++ < kMaxOutputs; }
 
  private:
   long outputs_ = 0;
@@ -188,13 +188,13 @@ Outcome RunSystemModel(const SceneDef& scene, const CancelFlag* cancel) {
   try {
     SystemRun run = PrepareSystemRun(scene, BuildSystem(scene), cancel);
     g_setup->watchdog->Arm(g_setup->budget);  // the steps: the budget of a line's run
-    const SystemModel& sys = run.sys;
+    const Model& sys = run.sys;
     const std::string out = g_setup->out.string();
     const std::size_t nl = sys.lines.size();
     std::vector<std::unique_ptr<TimeseriesWriter>> series(nl);
     std::vector<std::vector<RowSink*>> line_sinks(nl);
     for (std::size_t i = 0; i < nl; ++i) {
-      const Data& d = run.initial.lines[i];
+      const LineData& d = run.initial.lines[i];
       const std::string name = out + "/line" + std::to_string(i);
       WriteEquilibriumCsv(name + "_equilibrium.csv", sys.lines[i], d.state, d.tension());
       series[i] = std::make_unique<TimeseriesWriter>(name + "_timeseries.csv", sys.lines[i],
@@ -263,7 +263,7 @@ void RunOne(const char* data, std::size_t size) {
     } else if (scene.is_system()) {
       (void)BuildSystem(scene);  // `check` builds it, then solves its equilibrium (in 2.)
     } else {
-      const Model m = BuildModel(scene);
+      const LineModel m = BuildModel(scene);
       CheckModelLimits(scene, m);
       ChooseTimeGrid(m, scene.simulation, scene.output.interval);
     }

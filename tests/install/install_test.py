@@ -44,7 +44,7 @@ def run(cmd, **kwargs):
 def install(build_dir, prefix):
     run(["cmake", "--install", build_dir, "--prefix", prefix])
     for path in ["bin/cablefilm", "lib/libcablefilm_core.a",
-                 "include/cablefilm/core/equilibrium.h",
+                 "include/cablefilm/core/line_equilibrium.h",
                  "lib/cmake/cablefilm/cablefilmConfig.cmake",
                  "lib/cmake/cablefilm/cablefilmConfigVersion.cmake",
                  "lib/cmake/cablefilm/cablefilmTargets.cmake",
@@ -222,7 +222,7 @@ def test_deb(args):
         print(listing)
         paths = [line.split()[-1] for line in listing.splitlines() if line.strip()]
         for want in ["./usr/bin/cablefilm", "./usr/lib/libcablefilm_core.a",
-                     "./usr/include/cablefilm/core/equilibrium.h",
+                     "./usr/include/cablefilm/core/line_equilibrium.h",
                      "./usr/lib/cmake/cablefilm/cablefilmConfig.cmake",
                      "./usr/lib/cmake/cablefilm/cablefilmConfigVersion.cmake",
                      "./usr/lib/cmake/cablefilm/cablefilmTargets.cmake",

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/waves.h"
 #include "live/live_simulation.h"
 #include "scene/scene_loader.h"
@@ -218,9 +218,9 @@ TEST(LiveSimulation, ACurrentRampedInSettlesOnTheEquilibriumInThatCurrent) {
   sim.Advance(2.5);
   EXPECT_NEAR(sim.current_now(), 0.25, 1e-3);  // half way through the 5 s ramp (sampled mid-step)
   for (int i = 0; i < 600; ++i) sim.Advance(1.0);
-  Model in_current = sim.model();
+  LineModel in_current = sim.model();
   in_current.env.current = 0.5;
-  const State expected = SolveEquilibrium(in_current);
+  const State expected = SolveLineEquilibrium(in_current);
   // Drag damps the swing geometrically; after 600 s what is left is far below a millimetre.
   EXPECT_LT((sim.state().x - expected.x).cwiseAbs().maxCoeff(), 1e-3);
   // It did move: the current pushes this fairly taut line 0.16 m downstream.
@@ -248,10 +248,10 @@ TEST(LiveSimulation, ACurrentTurnedAcrossSettlesOnTheEquilibriumOutOfThePlane) {
   ASSERT_TRUE(sim.SetCurrent(0.5));
   for (int i = 0; i < 600; ++i) sim.Advance(1.0);
   EXPECT_NEAR(sim.current_heading_now(), 90.0, 1e-12);
-  Model in_current = sim.model();
+  LineModel in_current = sim.model();
   in_current.env.current = 0.5;
   in_current.env.current_direction = Vec(0.0, 0.0, 1.0);
-  const State expected = SolveEquilibrium(in_current);
+  const State expected = SolveLineEquilibrium(in_current);
   // The heading's direction is (cos 90 deg, 0, sin 90 deg) = (6e-17, 0, 1): the same to 1e-16
   // of the drag. Drag damps the swing geometrically; after 600 s what is left is far below a
   // millimetre.
@@ -272,7 +272,7 @@ TEST(LiveSimulation, ACurrentTurnedAcrossSettlesOnTheEquilibriumOutOfThePlane) {
   for (int i = 0; i < 600; ++i) sim.Advance(1.0);
   EXPECT_NEAR(std::abs(sim.current_heading_now()), 90.0, 1e-12);
   in_current.env.current_direction = Vec(0.0, 0.0, -1.0);
-  const State mirrored = SolveEquilibrium(in_current);
+  const State mirrored = SolveLineEquilibrium(in_current);
   EXPECT_LT((sim.state().x - mirrored.x).cwiseAbs().maxCoeff(), 1e-3);
   for (int j = 1; j < links; ++j) {
     EXPECT_LT(sim.state().x(2, j), 0.0) << "station " << j;

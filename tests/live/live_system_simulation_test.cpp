@@ -31,7 +31,7 @@ SceneDef Spread(double seconds) {
   return scene;
 }
 
-int PointIndex(const SystemModel& sys, const std::string& name) {
+int PointIndex(const Model& sys, const std::string& name) {
   for (int p = 0; p < static_cast<int>(sys.points.size()); ++p)
     if (sys.points[p].name == name) return p;
   ADD_FAILURE() << "no point " << name;
@@ -46,7 +46,7 @@ Vec PointNow(const LiveSystemSimulation& sim, int p) {
 
 TEST(LiveSystemSimulation, WithNoControlRepeatsTheRunRowByRow) {
   // Stepped row by row (0.5 s), the live system takes the run's steps (StepSystemSpan from
-  // the same initial Data, the same inputs: a zero offset adds exactly zero): equal to round-off.
+  // the same initial LineData, the same inputs: a zero offset adds exactly zero): equal to round-off.
   const SceneDef scene = Spread(6.0);
   const MemorySystemRun run = RunSystemInMemory(scene, BuildSystem(scene), nullptr);
   ASSERT_TRUE(run.run.summary.completed) << run.run.summary.failure;
@@ -60,7 +60,7 @@ TEST(LiveSystemSimulation, WithNoControlRepeatsTheRunRowByRow) {
     ASSERT_NEAR(sim.t(), 0.5 * r, 1e-12);
     for (int i = 0; i < sim.line_count(); ++i) {
       const MemoryRows& rr = run.lines[i].rows;
-      const Data& d = sim.data().lines[i];
+      const LineData& d = sim.data().lines[i];
       const long n = d.state.x.size(), s = d.tension().size();
       for (long k = 0; k < n; ++k)
         worst_x = std::max(worst_x, std::abs(d.state.x.data()[k] - rr.x[r * n + k]));
@@ -86,7 +86,7 @@ TEST(LiveSystemSimulation, FramesAgreeWithTheRunWithinTheStepErrorControl) {
   const long r = 8;
   for (int i = 0; i < sim.line_count(); ++i) {
     const MemoryRows& rr = run.lines[i].rows;
-    const Data& d = sim.data().lines[i];
+    const LineData& d = sim.data().lines[i];
     const long n = d.state.x.size(), s = d.tension().size();
     double worst_x = 0, worst_t = 0;
     for (long k = 0; k < n; ++k)
@@ -102,7 +102,7 @@ TEST(LiveSystemSimulation, FramesAgreeWithTheRunWithinTheStepErrorControl) {
 
 TEST(LiveSystemSimulation, AnOffsetMovesTheFairleadsByItAfterItsRamp) {
   const SceneDef scene = Spread(60.0);
-  const SystemModel scene_sys = BuildSystem(scene);  // the scene's own motions: the truth
+  const Model scene_sys = BuildSystem(scene);  // the scene's own motions: the truth
   LiveSystemSimulation sim(scene), still(scene);
   ASSERT_TRUE(sim.has_vessel());
   EXPECT_EQ(sim.carried_points().size(), 3u);  // the three fairleads, not the clump, no anchor
@@ -182,7 +182,7 @@ TEST(LiveSystemSimulation, TheCurrentHeadingControlTurnsTheCurrent) {
   EXPECT_NEAR(sim.current_heading_now(), 120.0, 1e-9);
   EXPECT_NEAR(sim.current_now(), 1.0, 1e-12);
   const double a = 120.0 * M_PI / 180.0;
-  for (const Data& d : sim.data().lines) {  // every line's water flows that way
+  for (const LineData& d : sim.data().lines) {  // every line's water flows that way
     EXPECT_NEAR(d.water.current_direction.x(), std::cos(a), 1e-12);
     EXPECT_NEAR(d.water.current_direction.z(), std::sin(a), 1e-12);
     EXPECT_NEAR(d.water.current, 1.0, 1e-12);

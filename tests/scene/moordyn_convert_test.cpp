@@ -16,8 +16,8 @@
 #include "core/forces.h"
 #include "core/inputs.h"
 #include "core/step.h"
-#include "core/system_equilibrium.h"
-#include "core/system_relaxation.h"
+#include "core/equilibrium.h"
+#include "core/relaxation.h"
 #include "scene/moordyn_axes.h"
 #include "scene/build_model.h"
 #include "scene/moordyn_convert.h"
@@ -412,10 +412,10 @@ ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
 10 WtrDpth
 )";
   const Converted c = Convert(ReadMoorDynText(text, "float.txt"));
-  const SystemModel sys = BuildSystem(ParseScene(c.text, "float.toml"));
-  const std::vector<State> states = SolveSystemEquilibrium(sys);
+  const Model sys = BuildSystem(ParseScene(c.text, "float.toml"));
+  const std::vector<State> states = SolveEquilibrium(sys);
   ASSERT_EQ(states.size(), 1u);
-  const Model& m = sys.lines[0];
+  const LineModel& m = sys.lines[0];
   Eigen::VectorXd tension(m.line.links);
   LinkGeometry g;
   g.length.resize(m.line.links);
@@ -437,14 +437,14 @@ ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
 // 4 (1 + T / EA) = 4.547 m long (EA = 2000 N), straight down from the anchor.
 TEST(MoorDynConvert, BodyGivenAboveItsAnchorHangsBelowIt) {
   const Converted c = Convert(ReadMoorDynFile(kDir + "body_above_anchor.txt"));
-  const SystemModel sys = BuildSystem(ParseScene(c.text, "above.toml"));
-  EXPECT_THROW(SolveSystemEquilibrium(sys), Error);  // what made this needed
+  const Model sys = BuildSystem(ParseScene(c.text, "above.toml"));
+  EXPECT_THROW(SolveEquilibrium(sys), Error);  // what made this needed
   StepOptions step;
   step.scheme = Scheme::kImplicit;
   step.tolerance = 1e-6 * 4.0;  // the default: 1e-6 of the line's length [m]
-  SystemEquilibriumReport report;
+  EquilibriumReport report;
   const std::vector<State> states =
-      SolveSystemEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, &report, {});
+      SolveEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, &report, {});
   EXPECT_GT(report.relaxed, 0.0);
   const double wet_line = (8.0 - 1025.0 * M_PI * 0.05 * 0.05 / 4) * 9.81;  // [N/m]
   const double body = (20.0 - 1025.0 * 0.004) * 9.81;                      // [N]
@@ -467,13 +467,13 @@ TEST(MoorDynConvert, BodyGivenAboveItsAnchorHangsBelowIt) {
 // water level) and the hub hangs under it.
 TEST(MoorDynConvert, FloatAtTheSurfaceIsRelaxedIntoEquilibrium) {
   const Converted c = Convert(ReadMoorDynFile(kDir + "float_on_bridles.txt"));
-  const SystemModel sys = BuildSystem(ParseScene(c.text, "float.toml"));
+  const Model sys = BuildSystem(ParseScene(c.text, "float.toml"));
   StepOptions step;
   step.scheme = Scheme::kImplicit;
   step.tolerance = 1e-6 * 16.0;  // the default: 1e-6 of the longest line's length [m]
-  SystemEquilibriumReport report;
+  EquilibriumReport report;
   const std::vector<State> states =
-      SolveSystemEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, &report, {});
+      SolveEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, &report, {});
   EXPECT_GT(report.relaxed, 0.0);
   EXPECT_LE(report.residual, 1e-9 * report.force_scale);
   cablefilm::Vec anchors = cablefilm::Vec::Zero();  // the lines' pull on the fixed points [N]
@@ -501,14 +501,14 @@ TEST(MoorDynConvert, FloatAtTheSurfaceIsRelaxedIntoEquilibrium) {
 // The statics of a MoorDyn file's system, as `run` finds them with the default tolerance (1e-6
 // of the longest line [m]): the Error's message when it has none; empty when it has.
 std::string StaticsFailure(const MoorDynSystem& file) {
-  const SystemModel sys = BuildSystem(ParseScene(Convert(file).text, "file.toml"));
+  const Model sys = BuildSystem(ParseScene(Convert(file).text, "file.toml"));
   double longest = 0;  // [m]
-  for (const Model& m : sys.lines) longest = std::max(longest, m.line.total_length());
+  for (const LineModel& m : sys.lines) longest = std::max(longest, m.line.total_length());
   StepOptions step;
   step.scheme = Scheme::kImplicit;
   step.tolerance = 1e-6 * longest;
   try {
-    SolveSystemEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, nullptr, {});
+    SolveEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, nullptr, {});
   } catch (const Error& e) {
     return e.what();
   }

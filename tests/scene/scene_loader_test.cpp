@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/equilibrium.h"
+#include "core/line_equilibrium.h"
 #include "core/error.h"
 #include "core/waves.h"
 #include "scene/build_model.h"
@@ -302,7 +302,7 @@ TEST(SceneLoader, InextensibleEndsTooFarApart) {
               {"expected", "91.44"});
   // ... while an elastic one starts stretched (a warning, not an error) and solves.
   const SceneDef s = ParseScene(far, kFile);
-  EXPECT_NO_THROW(SolveEquilibrium(BuildModel(s)));
+  EXPECT_NO_THROW(SolveLineEquilibrium(BuildModel(s)));
 }
 
 // Table files live next to the scene; these tests write them into a temporary folder.
@@ -353,7 +353,7 @@ TEST_F(TableMotion, GoodTableLoads) {
   const SceneDef s = ParseScene(TableScene("ship.csv"), scene_);
   ASSERT_EQ(s.end.table.size(), 3u);
   EXPECT_DOUBLE_EQ(s.end.table[2][2], -0.3);
-  const Model m = BuildModel(s);
+  const LineModel m = BuildModel(s);
   EXPECT_NEAR(m.ends.end.Position(1.0).x(), 80.5, 1e-12);  // offsets from the rest position
 }
 
@@ -363,7 +363,7 @@ TEST(SceneLoader, MinimumBreakingLoad) {
   const SceneDef s = ParseScene(
       With("name = \"nylon\"", "name = \"nylon\"\nminimum_breaking_load = 2.5e5"), "s.toml");
   EXPECT_EQ(s.materials[1].minimum_breaking_load, 2.5e5);
-  const Model m = BuildModel(s);
+  const LineModel m = BuildModel(s);
   EXPECT_EQ(m.line.breaking_load[0], 0.0);                  // wire: none
   EXPECT_EQ(m.line.breaking_load[m.line.links - 1], 2.5e5);  // nylon
   EXPECT_TRUE(m.line.has_breaking_load());
@@ -382,7 +382,7 @@ TEST_F(TableMotion, InterpolationKey) {
       With(table, table + "interpolation = \"linear\"\n", TableScene("ship.csv")), scene_);
   EXPECT_EQ(s.end.interpolation, TableInterpolation::kLinear);
   // Built: straight between rows, 0.5 m/s of x from t = 0 to 1 s.
-  const Model m = BuildModel(s);
+  const LineModel m = BuildModel(s);
   EXPECT_NEAR(m.ends.end.Position(0.5).x(), 80.25, 1e-12);
   EXPECT_NEAR(m.ends.end.Velocity(0.5).x(), 0.5, 1e-12);
   ExpectError(With(table, table + "interpolation = \"cubic\"\n", TableScene("ship.csv")),
@@ -454,9 +454,9 @@ TEST(SceneLoader, ShippedScenesLoadBuildAndSolve) {
     const std::string path = std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + name + ".toml";
     SceneDef s;
     ASSERT_NO_THROW(s = LoadScene(path)) << path;
-    const Model m = BuildModel(s);
-    EquilibriumReport rep;
-    EXPECT_NO_THROW(SolveEquilibrium(m, &rep)) << path;
+    const LineModel m = BuildModel(s);
+    LineEquilibriumReport rep;
+    EXPECT_NO_THROW(SolveLineEquilibrium(m, &rep)) << path;
     EXPECT_LE(rep.residual, 1e-6 * rep.force_scale) << path;
   }
   try {
@@ -748,7 +748,7 @@ TEST(SceneLoader, SeabedLoadsWithDefaults) {
   EXPECT_EQ(s.seabed.friction_velocity, 0.01);
   EXPECT_EQ(s.seabed.friction_model, FrictionModel::kStickSlip);
   EXPECT_LT(s.seabed.friction_stiffness, 0);  // the normal stiffness
-  const Model m = BuildModel(s);
+  const LineModel m = BuildModel(s);
   ASSERT_TRUE(m.env.seabed.present);
   // Station 1: half of each of its two links of 45.72 / 30 m.
   EXPECT_DOUBLE_EQ(m.line.seabed_stiffness[1], 3e7 * 45.72 / 30);
@@ -773,7 +773,7 @@ TEST(SceneLoader, SeabedLoadsWithDefaults) {
                                         "friction_stiffness = 4e6\n",
                                 kFile);
   EXPECT_EQ(u.seabed.friction_model, FrictionModel::kStickSlip);
-  const Model mu = BuildModel(u);
+  const LineModel mu = BuildModel(u);
   EXPECT_DOUBLE_EQ(mu.line.friction_stiffness[1], 4e6 * 45.72 / 30);
   EXPECT_DOUBLE_EQ(mu.line.friction_damping[1], 2.0 * 2e3 * 45.72 / 30);
 }
@@ -809,12 +809,12 @@ TEST(SceneLoader, CurrentProfile) {
       ParseScene(With("current = 0.0", "current = [[-10, 0.2], [0.0, 1.0], [5, 1.5]]"), kFile);
   ASSERT_EQ(s.environment.current_profile.y.size(), 3u);
   EXPECT_EQ(s.environment.current, 0.0);
-  const Model m = BuildModel(s);
+  const LineModel m = BuildModel(s);
   EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -5.0).x(), 0.6);
   EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -50.0).x(), 0.2);
   EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), 50.0).x(), 1.5);
   // One pair: a uniform current written as a table.
-  const Model one = BuildModel(ParseScene(With("current = 0.0", "current = [[3, -0.4]]"), kFile));
+  const LineModel one = BuildModel(ParseScene(With("current = 0.0", "current = [[3, -0.4]]"), kFile));
   EXPECT_DOUBLE_EQ(CurrentAt(one, SceneWater(one), -20.0).x(), -0.4);
   const std::string key = "environment.current";
   ExpectError(With("current = 0.0", "current = []"), key, {"from 1 to 10000 pairs", "got 0"});
@@ -843,7 +843,7 @@ TEST(SceneLoader, Waves) {
   EXPECT_EQ(s.waves.surface_y, 0.0);     // default: the still water level at y = 0
   EXPECT_EQ(s.waves.phase, 0.0);         // degrees
   EXPECT_EQ(s.waves.ramp_rate, 0.5);     // 4 / T
-  const Model m = BuildModel(s);
+  const LineModel m = BuildModel(s);
   ASSERT_TRUE(m.has_waves());
   EXPECT_DOUBLE_EQ(m.env.wave.k, WaveNumber(2 * M_PI / 8, 9.80665, 50));
   EXPECT_FALSE(BuildModel(ParseScene(kBase, kFile)).has_waves());  // no table, no waves
@@ -862,7 +862,7 @@ TEST(SceneLoader, Waves) {
       "\n[waves]\nheight = 2\nperiod = 8\ndepth = 50\nsurface_y = 35\nphase = 30\n";
   const SceneDef w = ParseScene(wave_end, kFile);
   EXPECT_TRUE(w.end.follows_wave);
-  const Model mw = BuildModel(w);
+  const LineModel mw = BuildModel(w);
   for (double t : {100.0, 103.3, 107.9}) {  // the ramp complete (R = 1 - 5e-16)
     const Vec p = mw.ends.end.Position(t) - mw.ends.end.rest();
     const double theta = mw.env.wave.k * 80.0 - mw.env.wave.omega * t + M_PI / 6;
@@ -1090,7 +1090,7 @@ TEST(SceneLoader, AxialStiffnessIsEATimesTheArea) {
   const std::string ea = "axial_stiffness = " + FormatNumber(E * area);
   const SceneDef s = ParseScene(With("youngs_modulus = 2.0e9", ea), kFile);
   EXPECT_NEAR(s.materials[1].youngs_modulus, E, 1e-15 * E);
-  const Model a = BuildModel(base), b = BuildModel(s);
+  const LineModel a = BuildModel(base), b = BuildModel(s);
   for (int j = 0; j < a.line.links; ++j)
     EXPECT_NEAR(b.line.axial_stiffness[j], a.line.axial_stiffness[j], 1e-14 * a.line.axial_stiffness[j]);
   ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = 2.0e9\n" + ea),
@@ -1109,7 +1109,7 @@ TEST(SceneLoader, BodyLoads) {
   EXPECT_EQ(s.points[2].motion.position[0], 2.0);
   EXPECT_EQ(s.bodies[0].inertia[2], 1.0e5);  // [x, y]: z like x
   EXPECT_EQ(s.bodies[0].added_mass[5], 6.0);
-  const SystemModel sys = BuildSystem(s);
+  const Model sys = BuildSystem(s);
   ASSERT_EQ(sys.free_bodies.size(), 1u);
   EXPECT_EQ(sys.points[2].kind, PointKind::kBody);
   EXPECT_NEAR(sys.bodies[0].initial_offset[5], 10 * M_PI / 180, 1e-15);
@@ -1144,7 +1144,7 @@ TEST(SceneLoader, BodyBox) {
   EXPECT_EQ(s.bodies[0].box[1], 2.5);
   EXPECT_EQ(s.bodies[0].box_center[1], -1.0);
   // No number of the model changes with it: the body's rest pose and loads are the same.
-  const SystemModel a = BuildSystem(none), b = BuildSystem(s);
+  const Model a = BuildSystem(none), b = BuildSystem(s);
   EXPECT_EQ(a.bodies[0].mass, b.bodies[0].mass);
   EXPECT_EQ((a.points[2].motion.rest() - b.points[2].motion.rest()).norm(), 0.0);
   // A held body takes it too.
@@ -1204,7 +1204,7 @@ TEST(SceneLoader, DrivenBodyTurnsByItsTrochoid) {
   EXPECT_EQ(s.bodies[0].motion.rx_amplitudes[0], 2.0);
   EXPECT_EQ(s.bodies[0].motion.ry_amplitudes[1], 3.0);
   EXPECT_EQ(s.bodies[0].motion.rz_amplitudes[0], 0.0);
-  const SystemModel sys = BuildSystem(s);
+  const Model sys = BuildSystem(s);
   ASSERT_TRUE(sys.bodies[0].turn.moves());
   const EndMotion& fairlead = sys.points[2].motion;
   ASSERT_TRUE(fairlead.turns());
@@ -1221,7 +1221,7 @@ TEST(SceneLoader, DrivenBodyTurnsByItsTrochoid) {
     EXPECT_LT((fairlead.Position(t) - BodyPoint(pose, Vec(2.0, -1.0, 0.5))).norm(), 1e-13) << t;
   }
   // Without angle amplitudes nothing turns: the point's motion is the reference point's.
-  const SystemModel plain = BuildSystem(ParseScene(
+  const Model plain = BuildSystem(ParseScene(
       DrivenBodySystem("rx_amplitudes = [2.0, 0.0]\nry_amplitudes = [0.0, 3.0]\n", ""), kFile));
   EXPECT_FALSE(plain.bodies[0].turn.moves());
   EXPECT_FALSE(plain.points[2].motion.turns());
@@ -1279,7 +1279,7 @@ TEST_F(TableMotion, BodyTableWithAngles) {
   ASSERT_EQ(s.bodies[0].motion.table.size(), 3u);
   EXPECT_EQ(s.bodies[0].motion.table[1][6], 3.0);
   EXPECT_EQ(s.bodies[0].motion.table[2][5], 5.0);
-  const SystemModel sys = BuildSystem(s);
+  const Model sys = BuildSystem(s);
   // At a row the spline is the row: the pose (70.5, 0, 10), (1, 28, 3) degrees at t = 2.
   const double deg = M_PI / 180.0;
   Vec6 pose;

@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/model.h"
-#include "core/equilibrium.h"
+#include "core/line_model.h"
+#include "core/line_equilibrium.h"
 #include "core/forces.h"
 
 int main() {
@@ -35,10 +35,10 @@ int main() {
   sea.gravity = g;
   sea.fluid_density = rho;
   // Fixed at the origin; the free end starts off to the side, so the solver has work to do.
-  const Model m = MakeModel({chain}, {clump}, sea, EndMotion::Fixed(InPlane(0.0, 0.0)),
+  const LineModel m = MakeLineModel({chain}, {clump}, sea, EndMotion::Fixed(InPlane(0.0, 0.0)),
                                        EndMotion::Free(InPlane(20.0, -40.0)), LinkLaw::kElastic);
-  EquilibriumReport report;
-  const State state = SolveEquilibrium(m, StraightChord(m), &report);
+  LineEquilibriumReport report;
+  const State state = SolveLineEquilibrium(m, StraightChord(m), &report);
 
   ForceWorkspace ws(m.line.links);
   ComputeGeometry(state.x, ws.geometry);

@@ -1,5 +1,5 @@
 #pragma once
-// The implicit step of a system of lines (system.h): generalized-alpha (implicit_step.h) on
+// The implicit step of a system of lines (model.h): generalized-alpha (implicit_step.h) on
 // every line at once, with one step size for all, one Newton iteration for the whole system
 // and one error estimate. Each Newton iteration assembles every line's block tridiagonal
 // system, eliminates each line's interior (its stations that are not shared) for its
@@ -18,8 +18,8 @@
 #include <array>
 #include <vector>
 
-#include "core/data.h"
-#include "core/system.h"
+#include "core/line_data.h"
+#include "core/model.h"
 
 namespace cablefilm {
 
@@ -40,8 +40,8 @@ struct EndCoupling {
   Vec local = Vec::Zero();
 };
 
-struct SystemData {
-  std::vector<Data> lines;    // each line's Data (implicit scheme); shared stations in sync
+struct Data {
+  std::vector<LineData> lines;    // each line's LineData (implicit scheme); shared stations in sync
   std::vector<BodyMotion> bodies;  // the free bodies' (in the order of sys.free_bodies)
   std::vector<std::array<EndCoupling, 2>> couplings;  // per line, its two ends'
   std::vector<std::array<Eigen::Matrix<double, 3, 6>, 2>> end_maps;  // their T at the trial
@@ -63,16 +63,16 @@ struct SystemData {
   Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu;
 };
 
-// The system's Data from each line's state (shared stations equal in every line that holds
+// The system's LineData from each line's state (shared stations equal in every line that holds
 // them; the free bodies at their rest poses, at rest): the accelerations of the shared
 // stations and the free bodies from the sum of their rows. Implicit only: throws Error for
 // another scheme.
-SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOptions& options,
+Data MakeData(const Model& sys, const Inputs& in, const StepOptions& options,
                           const std::vector<State>& states);
 
 // Advances the system by dt [s] (adaptive within it with options.tolerance > 0). Throws
-// BlowUpError (naming the line in its message), CancelledError as Step() does.
-void StepSystem(const SystemModel& sys, SystemData& sd, const Inputs& in, double dt);
+// BlowUpError (naming the line in its message), CancelledError as StepLine() does.
+void Step(const Model& sys, Data& sd, const Inputs& in, double dt);
 
 // The points' positions [m] and the forces the lines exert on them [N] in a state (column p:
 // point p). At a fixed or moved point, or a point on a body, the force is the sum over its
@@ -83,8 +83,8 @@ void StepSystem(const SystemModel& sys, SystemData& sd, const Inputs& in, double
 // (force [N], moment about its reference point [N m]). Sized once; Compute allocates nothing.
 class PointLoads {
  public:
-  explicit PointLoads(const SystemModel& sys);
-  void Compute(const SystemModel& sys, const SystemData& sd, const Inputs& in);
+  explicit PointLoads(const Model& sys);
+  void Compute(const Model& sys, const Data& sd, const Inputs& in);
   const Points& positions() const { return positions_; }
   const Points& forces() const { return forces_; }
   const std::vector<Vec6>& body_poses() const { return body_poses_; }

@@ -1,9 +1,9 @@
 #pragma once
 // What changes while a model runs (MuJoCo's mjData): the state, the tensions of the state, the
 // memory the time-stepping scheme carries from step to step, the water of the last step, and
-// the statistics. A complete checkpoint: a copy of a Data, stepped with the same model and
+// the statistics. A complete checkpoint: a copy of a LineData, stepped with the same model and
 // inputs, goes on exactly as the original would (a restart, a film frame, a continuation).
-// Its scratch memory is sized once (MakeData), so that stepping allocates nothing.
+// Its scratch memory is sized once (MakeLineData), so that stepping allocates nothing.
 #include <Eigen/Core>
 #include <string>
 
@@ -12,7 +12,7 @@
 #include "core/error.h"
 #include "core/forces.h"
 #include "core/inputs.h"
-#include "core/model.h"
+#include "core/line_model.h"
 #include "core/snap_monitor.h"
 #include "core/vec.h"
 
@@ -29,7 +29,7 @@ struct StepOptions {
   Scheme scheme = Scheme::kImplicit;
   double rho_inf = 0.5;        // implicit: spectral radius at infinite frequency, [0, 1]
   double tolerance = 0;        // implicit, inextensible: local position error per step [m];
-                               // 0: the steps asked of Step() (inextensible: split below the
+                               // 0: the steps asked of StepLine() (inextensible: split below the
                                // transverse-wave limit)
   // Implicit, with a tolerance: the stricter one [m] that holds while the motion starts, until
   // start_end [s] (the run layer's StartDuration): the start excites the line's free axial
@@ -102,7 +102,7 @@ struct Scratch {
   double newton_tolerance = 0;    // implicit: Newton has converged when |dx| is below it [m]
 };
 
-struct Data {
+struct LineData {
   StepOptions options;
   State state;
   ForceWorkspace forces;  // of the state: link geometry, tensions T_{j+1/2} [N], station forces
@@ -117,7 +117,7 @@ struct Data {
   double proposed_step = 0;  // adaptive schemes: the next step to try [s]
   int refinement = 0;     // explicit, automatic: k, steps asked are cut into 2^k substeps
   double quiet_time = 0;  // explicit, automatic: since a link last went slack or taut [s]
-  double start_time = 0;  // the state's time when the Data was made [s]
+  double start_time = 0;  // the state's time when the LineData was made [s]
   double explicit_until = -1;  // implicit: explicit steps through a snap until then [s]
                                // (explicit_snaps.h); below the time: none
   SnapMonitor snaps;      // which links are taut; the steps' record
@@ -132,16 +132,16 @@ struct Data {
   }
 };
 
-// The Data of `state` under `options`: its accelerations and tensions computed (in the water of
+// The LineData of `state` under `options`: its accelerations and tensions computed (in the water of
 // the inputs at state.t), the scratch sized. Throws BlowUpError if the state is not finite or
 // a link is stretched beyond any physical meaning.
-Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, const State& state);
+LineData MakeLineData(const LineModel& m, const Inputs& in, const StepOptions& options, const State& state);
 
 // The scheme's name, as a run reports it ("implicit (generalized-alpha, rho_inf = 0.5)").
-std::string SchemeName(const Model& m, const StepOptions& options);
+std::string SchemeName(const LineModel& m, const StepOptions& options);
 
 // Throws BlowUpError naming the time and the first station with a non-finite position or
 // velocity, or the first link stretched beyond twice its rest length.
-void CheckStateSane(const Model& m, const State& state, const Eigen::VectorXd& length);
+void CheckStateSane(const LineModel& m, const State& state, const Eigen::VectorXd& length);
 
 }  // namespace cablefilm

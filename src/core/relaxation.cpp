@@ -1,11 +1,11 @@
-#include "core/system_relaxation.h"
+#include "core/relaxation.h"
 
 #include <algorithm>
 #include <string>
 
 #include "core/cancel.h"
 #include "core/error.h"
-#include "core/system_step.h"
+#include "core/coupled_step.h"
 
 namespace cablefilm {
 namespace {
@@ -36,29 +36,29 @@ StepOptions RelaxationSteps(StepOptions step) {
 
 }  // namespace
 
-std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const Inputs& in,
+std::vector<State> SolveEquilibriumRelaxing(const Model& sys, const Inputs& in,
                                                   const StepOptions& step,
-                                                  SystemEquilibriumReport* report,
-                                                  const SystemEquilibriumOptions& options) {
-  SystemEquilibriumOptions first_try = options;
+                                                  EquilibriumReport* report,
+                                                  const EquilibriumOptions& options) {
+  EquilibriumOptions first_try = options;
   first_try.stall_iterations = kStallIterations;
   // The tries from the motion's states share one bound on their lines' work, the first try's
   // own besides: the relaxation ends when they have used it.
   double tries_work = 0;
   try {
-    return SolveSystemEquilibrium(sys, report, first_try);
+    return SolveEquilibrium(sys, report, first_try);
   } catch (const CancelledError&) {
     throw;
   } catch (const Error& first) {
     std::string motion_failure;  // how the motion itself failed, if it did
     try {
-      const SystemFirstGuess guess = HoldAtFirstGuess(sys, options);
-      SystemModel let_go = sys;  // its free bodies start where the first guess has them
+      const HeldFirstGuess guess = HoldAtFirstGuess(sys, options);
+      Model let_go = sys;  // its free bodies start where the first guess has them
       let_go.body_poses = guess.body_poses;
-      SystemData sd = MakeSystemData(let_go, in, RelaxationSteps(step), guess.states);
+      Data sd = MakeData(let_go, in, RelaxationSteps(step), guess.states);
       std::vector<State> states(sys.lines.size());
       double stations = 0;
-      for (const Model& m : sys.lines) stations += m.stations();
+      for (const LineModel& m : sys.lines) stations += m.stations();
       std::vector<Vec6> poses = guess.body_poses;
       for (int span = 1; span * kSpan <= kLongestRelaxation + 1e-9; ++span) {
         ThrowIfCancelled(options.cancel, "the system's static equilibrium");
@@ -69,9 +69,9 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
         const long left = std::min(kMostRelaxationSteps - tried,
                                    static_cast<long>(kMostRelaxationStationSteps / stations) - tried);
         if (left <= 0) break;
-        for (Data& d : sd.lines) d.options.most_steps = left;
+        for (LineData& d : sd.lines) d.options.most_steps = left;
         try {
-          StepSystem(let_go, sd, in, kSpan);
+          Step(let_go, sd, in, kSpan);
         } catch (const CancelledError&) {
           throw;
         } catch (const Error& e) {
@@ -87,12 +87,12 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
                                      double(sd.stats.steps) / kMostRelaxationSteps, work}));
         // The clock back to t = 0: the ends and the sea as the statics have them.
         sd.t = 0;
-        for (Data& d : sd.lines) d.state.t = 0;
+        for (LineData& d : sd.lines) d.state.t = 0;
         if (span % static_cast<int>(kTry / kSpan + 0.5) != 0) continue;
         for (std::size_t i = 0; i < states.size(); ++i) states[i] = sd.lines[i].state;
         for (std::size_t k = 0; k < sys.free_bodies.size(); ++k)
           poses[sys.free_bodies[k]] = sd.bodies[k].q;
-        SystemEquilibriumOptions from_here = options;
+        EquilibriumOptions from_here = options;
         from_here.stall_iterations = kStallIterations;
         from_here.line_work = &tries_work;
         from_here.solving = nullptr;  // the relaxation's own progress goes on meanwhile
@@ -101,7 +101,7 @@ std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const 
         from_here.guess = &states;
         from_here.guess_poses = poses.data();
         try {
-          std::vector<State> rest = SolveSystemEquilibrium(sys, report, from_here);
+          std::vector<State> rest = SolveEquilibrium(sys, report, from_here);
           if (report) report->relaxed = span * kSpan;
           return rest;
         } catch (const CancelledError&) {

@@ -1,4 +1,4 @@
-#include "core/data.h"
+#include "core/line_data.h"
 
 #include <cmath>
 #include <sstream>
@@ -12,7 +12,7 @@ namespace cablefilm {
 namespace {
 
 // The explicit scheme's constants (explicit_step.h).
-void PrepareExplicitSteps(const Model& m, const StepOptions& options, Scratch& w) {
+void PrepareExplicitSteps(const LineModel& m, const StepOptions& options, Scratch& w) {
   const int n = m.stations();
   w.least_inertia.resize(n);
   for (int j = 0; j < n; ++j)
@@ -23,9 +23,9 @@ void PrepareExplicitSteps(const Model& m, const StepOptions& options, Scratch& w
 
 }  // namespace
 
-Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, const State& state) {
+LineData MakeLineData(const LineModel& m, const Inputs& in, const StepOptions& options, const State& state) {
   const int n = m.stations(), links = m.line.links;
-  Data d;
+  LineData d;
   d.options = options;
   d.state = state;
   d.start_time = state.t;
@@ -69,7 +69,7 @@ Data MakeData(const Model& m, const Inputs& in, const StepOptions& options, cons
   return d;
 }
 
-std::string SchemeName(const Model& m, const StepOptions& o) {
+std::string SchemeName(const LineModel& m, const StepOptions& o) {
   std::ostringstream os;
   switch (o.scheme) {
     case Scheme::kExplicit:
@@ -90,7 +90,7 @@ std::string SchemeName(const Model& m, const StepOptions& o) {
   return "";
 }
 
-void CheckStateSane(const Model& m, const State& state, const Eigen::VectorXd& length) {
+void CheckStateSane(const LineModel& m, const State& state, const Eigen::VectorXd& length) {
   // A strain of 100 % is far past the breaking strain of any rope or wire: if the solution gets
   // there, it is a numerical blow-up, not physics.
   constexpr double kMaxStretch = 2.0;  // L / l

@@ -1,4 +1,4 @@
-#include "core/system_step.h"
+#include "core/coupled_step.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@ using Map36 = Eigen::Matrix<double, 3, 6>;
 // Makes every copy of each shared station equal to its owner's trial position (`x`) or
 // trial velocity and accelerations (`motion`); with `x`, puts each station on a free body
 // where the body's trial pose puts its point.
-void SyncCoupled(const SystemModel& sys, SystemData& sd, bool motion) {
+void SyncCoupled(const Model& sys, Data& sd, bool motion) {
   for (int p : sys.shared_points) {
     const LineEnd& o = sys.owner(p);
     const Scratch& w = sd.lines[o.line].scratch;
@@ -52,13 +52,13 @@ void AddCoupledBlock(Eigen::MatrixXd& schur, const EndCoupling& ca, const Map36&
   schur.block(ca.offset, cb.offset, ca.size, cb.size) += block.topLeftCorner(ca.size, cb.size);
 }
 
-void AddCoupledRhs(SystemData& sd, const EndCoupling& c, const Map36& T, const Vec& r) {
+void AddCoupledRhs(Data& sd, const EndCoupling& c, const Map36& T, const Vec& r) {
   const Vec6 rows = T.transpose() * r;
   sd.schur_rhs.segment(c.offset, c.size) += rows.head(c.size);
 }
 
 // The correction of a coupled end station from the dense system's solution: T dq.
-Vec CoupledCorrection(const SystemData& sd, const EndCoupling& c, const Map36& T) {
+Vec CoupledCorrection(const Data& sd, const EndCoupling& c, const Map36& T) {
   Vec6 u = Vec6::Zero();
   u.head(c.size) = sd.schur_x.segment(c.offset, c.size);
   return T * u;
@@ -69,7 +69,7 @@ Vec CoupledCorrection(const SystemData& sd, const EndCoupling& c, const Map36& T
 // coupled ends (into sd.line_schur[i]) added through their maps T. False when a pivot is
 // singular. Without `matrix` the right-hand side alone, on the factors, columns and share of
 // the last call with it.
-bool EliminateInterior(SystemData& sd, int i, bool matrix) {
+bool EliminateInterior(Data& sd, int i, bool matrix) {
   BlockTridiagonal& A = sd.lines[i].scratch.system;
   std::vector<Mat>& zs = sd.start_columns[i];
   std::vector<Mat>& ze = sd.end_columns[i];
@@ -114,7 +114,7 @@ bool EliminateInterior(SystemData& sd, int i, bool matrix) {
 }
 
 // Line i's corrections from the dense system's solution: x_B = T dq, x_I = y - Z x_B.
-void BackSubstitute(SystemData& sd, int i) {
+void BackSubstitute(Data& sd, int i) {
   BlockTridiagonal& A = sd.lines[i].scratch.system;
   const int n = A.size();
   const EndCoupling &cP = sd.couplings[i][0], &cQ = sd.couplings[i][1];
@@ -140,14 +140,14 @@ void BodyKinematics(BodyMotion& b, const GeneralizedAlpha& c, double h) {
 
 // A free body's own generalized load at a pose [N, N m]: weight, buoyancy, waterplane,
 // constant loads.
-Vec6 OwnLoad(const SystemModel& sys, const BodySpec& body, const Vec6& q) {
+Vec6 OwnLoad(const Model& sys, const BodySpec& body, const Vec6& q) {
   return GeneralizedLoad(q, BodyOwnLoads(body, q, sys.env.fluid_density, sys.env.gravity));
 }
 
 // Free body k's own rows of the dense system at its trial pose: the matrix
 // ka M + kv dD/dv - dQ/dq and the residual Q + D - M a (its lines' rows come through their
 // ends); without `matrix` the residual alone.
-void AssembleBody(const SystemModel& sys, SystemData& sd, int k, const GeneralizedAlpha& c,
+void AssembleBody(const Model& sys, Data& sd, int k, const GeneralizedAlpha& c,
                   double h, int offset, bool matrix) {
   BodyMotion& b = sd.bodies[k];
   const BodySpec& body = sys.bodies[sys.free_bodies[k]];
@@ -178,7 +178,7 @@ void AssembleBody(const SystemModel& sys, SystemData& sd, int k, const Generaliz
 // pivot or the dense system is singular. A line whose `fresh` is 0 (a simplified Newton
 // iteration) solves on the factors and share of the dense system of its last fresh one; the
 // bodies' rows and the dense system's factors are made anew when any line's are.
-bool SolveCoupled(const SystemModel& sys, SystemData& sd, const GeneralizedAlpha& c, double h,
+bool SolveCoupled(const Model& sys, Data& sd, const GeneralizedAlpha& c, double h,
                   const std::vector<char>& fresh) {
   const int nl = static_cast<int>(sd.lines.size());
   if (sd.schur.rows() == 0) {
@@ -214,9 +214,9 @@ double PoseSize(const Vec6& d, double arm) {
 }
 
 // The system through the adaptive loop (implicit_stages.h).
-struct SystemStepper {
-  const SystemModel& sys;
-  SystemData& sd;
+struct CoupledStepper {
+  const Model& sys;
+  Data& sd;
   const Inputs& in;
   GeneralizedAlpha c;
 
@@ -229,7 +229,7 @@ struct SystemStepper {
   double NextKink(double t) const {
     double kink = std::numeric_limits<double>::infinity();
     if (!ClockAsScene(in)) return kink;
-    for (const SystemPoint& p : sys.points)
+    for (const Point& p : sys.points)
       if (p.kind == PointKind::kMoved) kink = std::min(kink, p.motion.NextKink(t));
     for (const BodySpec& b : sys.bodies)
       kink = std::min({kink, b.motion.NextKink(t), b.turn.NextKink(t)});
@@ -380,10 +380,10 @@ struct SystemStepper {
 };
 
 // Line i's ends' couplings: a shared point's 3 unknowns, a free body's 6.
-std::array<EndCoupling, 2> Couplings(const SystemModel& sys, int i) {
+std::array<EndCoupling, 2> Couplings(const Model& sys, int i) {
   std::array<EndCoupling, 2> out;
   for (int e = 0; e < 2; ++e) {
-    const SystemPoint& p = sys.points[sys.line_points[i][e]];
+    const Point& p = sys.points[sys.line_points[i][e]];
     if (p.shared >= 0) {
       out[e].offset = kDim * p.shared;
       out[e].size = kDim;
@@ -402,18 +402,18 @@ std::array<EndCoupling, 2> Couplings(const SystemModel& sys, int i) {
 
 }  // namespace
 
-SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOptions& options,
+Data MakeData(const Model& sys, const Inputs& in, const StepOptions& options,
                           const std::vector<State>& states) {
   if (options.scheme != Scheme::kImplicit)
     throw Error("a system of lines is stepped by the implicit scheme only");
   const int nl = static_cast<int>(sys.lines.size());
   if (static_cast<int>(states.size()) != nl)
-    throw Error("MakeSystemData: one state per line is needed");
-  SystemData sd;
+    throw Error("MakeData: one state per line is needed");
+  Data sd;
   sd.t = nl > 0 ? states[0].t : 0.0;
   sd.newton_tolerance = 1e300;
   for (int i = 0; i < nl; ++i) {
-    sd.lines.push_back(MakeData(sys.lines[i], in, options, states[i]));
+    sd.lines.push_back(MakeLineData(sys.lines[i], in, options, states[i]));
     const int n = sd.lines[i].scratch.system.size();
     sd.start_columns.emplace_back(n, Mat::Zero());
     sd.end_columns.emplace_back(n, Mat::Zero());
@@ -434,7 +434,7 @@ SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOp
                   "of freedom)");
     BodyMotion m;
     m.q = m.tq = sys.body_poses[b];
-    for (const SystemPoint& p : sys.points)
+    for (const Point& p : sys.points)
       if (p.on_body == b) m.arm = std::max(m.arm, p.local.norm());
     sd.bodies.push_back(m);
   }
@@ -451,7 +451,7 @@ SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOp
     Mat M = Mat::Zero();
     Vec F = Vec::Zero();
     for (const LineEnd& e : sys.points[p].ends) {
-      const Data& d = sd.lines[e.line];
+      const LineData& d = sd.lines[e.line];
       M += StationInertia(sys.lines[e.line], d.forces.geometry, e.station);
       F += d.forces.force.col(e.station);
     }
@@ -476,7 +476,7 @@ SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOp
         if (sd.couplings[i][e].body != k) continue;
         const Map36& T = sd.end_maps[i][e];
         const int j = e == 0 ? 0 : sys.lines[i].line.links;
-        const Data& d = sd.lines[i];
+        const LineData& d = sd.lines[i];
         M += T.transpose() * StationInertia(sys.lines[i], d.forces.geometry, j) * T;
         Q += T.transpose() * d.forces.force.col(j);
       }
@@ -491,11 +491,11 @@ SystemData MakeSystemData(const SystemModel& sys, const Inputs& in, const StepOp
   return sd;
 }
 
-void StepSystem(const SystemModel& sys, SystemData& sd, const Inputs& in, double dt) {
+void Step(const Model& sys, Data& sd, const Inputs& in, double dt) {
   for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i)
     UpdateWater(sys.lines[i], in, sd.t + 0.5 * dt, &sd.lines[i].water);
   const StepOptions& o = sd.lines.empty() ? StepOptions{} : sd.lines[0].options;
-  SystemStepper stepper{sys, sd, in, GeneralizedAlphaCoefficients(o.rho_inf)};
+  CoupledStepper stepper{sys, sd, in, GeneralizedAlphaCoefficients(o.rho_inf)};
   try {
     AdaptiveImplicitSteps(stepper, o, in.stop, dt);
   } catch (const BlowUpError& e) {  // its link is the most stretched: name that link's line
@@ -517,8 +517,8 @@ void StepSystem(const SystemModel& sys, SystemData& sd, const Inputs& in, double
                         sd.t, 0);
 }
 
-PointLoads::PointLoads(const SystemModel& sys) {
-  for (const Model& m : sys.lines) station_forces_.push_back(Points::Zero(kDim, m.stations()));
+PointLoads::PointLoads(const Model& sys) {
+  for (const LineModel& m : sys.lines) station_forces_.push_back(Points::Zero(kDim, m.stations()));
   const int np = static_cast<int>(sys.points.size());
   positions_ = forces_ = Points::Zero(kDim, np);
   for (int p = 0; p < np; ++p) positions_.col(p) = sys.points[p].motion.rest();
@@ -526,11 +526,11 @@ PointLoads::PointLoads(const SystemModel& sys) {
   body_loads_.assign(sys.bodies.size(), Vec6::Zero());
 }
 
-void PointLoads::Compute(const SystemModel& sys, const SystemData& sd, const Inputs& in) {
+void PointLoads::Compute(const Model& sys, const Data& sd, const Inputs& in) {
   forces_.setZero();
   for (int i = 0; i < static_cast<int>(sd.lines.size()); ++i) {
-    const Model& m = sys.lines[i];
-    const Data& d = sd.lines[i];
+    const LineModel& m = sys.lines[i];
+    const LineData& d = sd.lines[i];
     Points& f = station_forces_[i];
     ComputeStationForces(m, d.water, d.forces.geometry, d.forces.tension, d.state.v, f);
     for (int e = 0; e < 2; ++e) {

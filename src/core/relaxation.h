@@ -1,5 +1,5 @@
 #pragma once
-// A system's static equilibrium that Newton's method (system_equilibrium.h) does not reach
+// A system's static equilibrium that Newton's method (equilibrium.h) does not reach
 // from the scene's first guess: a float at the water's surface, whose lumped stations float
 // and sink one at a time; a body given above the anchor it hangs below. Found then from where
 // the system's own motion brings it when let go at the first guess, damped by its fluid (as
@@ -10,7 +10,7 @@
 
 #include "core/inputs.h"
 #include "core/step.h"
-#include "core/system_equilibrium.h"
+#include "core/equilibrium.h"
 
 namespace cablefilm {
 
@@ -26,13 +26,13 @@ constexpr long kMostRelaxationSteps = 36000;
 // stepped for hours.
 constexpr double kMostRelaxationStationSteps = 7.2e7;
 
-// SolveSystemEquilibrium's answer; when it throws Error, the relaxation's (report->relaxed
+// SolveEquilibrium's answer; when it throws Error, the relaxation's (report->relaxed
 // says how many seconds of motion it took). Throws the first Error when the relaxation finds
 // none either (or the motion blows up), CancelledError when options.cancel is raised.
-// `step`: the implicit scheme's options (MakeSystemData).
-std::vector<State> SolveSystemEquilibriumRelaxing(const SystemModel& sys, const Inputs& in,
+// `step`: the implicit scheme's options (MakeData).
+std::vector<State> SolveEquilibriumRelaxing(const Model& sys, const Inputs& in,
                                                   const StepOptions& step,
-                                                  SystemEquilibriumReport* report,
-                                                  const SystemEquilibriumOptions& options);
+                                                  EquilibriumReport* report,
+                                                  const EquilibriumOptions& options);
 
 }  // namespace cablefilm
