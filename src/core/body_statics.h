@@ -6,7 +6,7 @@
 // the body held there: the lines, the shared points and the other free bodies balance.
 #include <vector>
 
-#include "core/equilibrium.h"
+#include "core/coupled_equilibrium.h"
 
 namespace cablefilm {
 

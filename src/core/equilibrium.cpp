@@ -1,431 +1,115 @@
 #include "core/equilibrium.h"
 
-#include <Eigen/LU>
-#include <Eigen/QR>
 #include <algorithm>
-#include <cmath>
-#include <sstream>
 
-#include "core/chain_guess.h"
+#include "core/cancel.h"
+#include "core/coarse_guess.h"
+#include "core/coupled_equilibrium.h"
 #include "core/error.h"
-#include "core/forces.h"
+#include "core/relaxation.h"
 
 namespace cablefilm {
-
-Vec StaticStationForce(const LineModel& m, const State& s, int j) {
-  const Water water = SceneWater(m);
-  ForceWorkspace ws(m.line.links);
-  ComputeGeometry(m, water, 0.0, s.x, ws.geometry);
-  ComputeHookeTensions(m, ws.geometry, ws.tension);
-  ComputeStationForces(m, water, ws.geometry, ws.tension, Points::Zero(kDim, m.stations()),
-                       ws.force);
-  return ws.force.col(j);
-}
-
 namespace {
 
-// The lines' load on body b at `pose`, each line's model from `models` (the held lines').
-Vec6 LinesLoad(const Model& sys, const std::vector<LineModel>& models,
-               const std::vector<State>& states, int b, const Vec6& pose) {
-  Vec6 load = Vec6::Zero();
-  const Vec r = pose.head<3>();
-  for (const Point& p : sys.points) {
-    if (p.on_body != b) continue;
-    for (const LineEnd& e : p.ends) {
-      const State& s = states[e.line];
-      load += LoadAbout(r, s.x.col(e.station), StaticStationForce(models[e.line], s, e.station));
-    }
+// Line i alone between points that hold it: the line's statics (the inextensible line's
+// own; an elastic one from its coarse line's shape when long, Newton in the full current from
+// there, else continued in the current from its catenary).
+State SolveSingleLine(const Model& model, int i, const EquilibriumOptions& options,
+                      LineEquilibriumReport* report) {
+  const LineModel& m = model.lines[i];
+  if (m.line.law == LinkLaw::kInextensible)
+    return SolveInextensibleEquilibrium(m, report, options.cancel);
+  LineEquilibriumOptions line;
+  line.cancel = options.cancel;
+  if (const std::optional<Points> guess = CoarseEquilibriumGuess(model, i, options.cancel)) {
+    // Near the answer, in the full current: Newton from it directly (the continuation from
+    // still water only if that fails).
+    line.warm_start = true;
+    return SolveLineEquilibrium(m, *guess, report, line);
   }
-  return load;
+  return SolveLineEquilibrium(m, report, line);
 }
 
-// The unknowns: kDim per shared point (its position), then 6 per free body (its pose), as
-// groups; a group moves the lines with an end at its point or at a point on its body.
-struct Unknowns {
-  struct Group {
-    int offset = 0, size = 0;  // in the vector of unknowns
-    int point = -1, body = -1;
-    double limit = 1e300;      // the shortest of its lines [m]: a Newton step moves it (and a
-                               // body's farthest point) at most a tenth of that
-    double radius = 1;         // a body's size: its farthest point from its reference, >= 1 [m]
-  };
-  std::vector<Group> groups;
-  int size = 0;
-
-  explicit Unknowns(const Model& sys) {
-    for (int p : sys.shared_points) {
-      Group g{size, kDim, p, -1};
-      for (const LineEnd& e : sys.points[p].ends)
-        g.limit = std::min(g.limit, sys.lines[e.line].line.total_length());
-      groups.push_back(g);
-      size += g.size;
-    }
-    for (int b : sys.free_bodies) {
-      Group g{size, 6, -1, b};
-      for (const Point& p : sys.points) {
-        if (p.on_body != b) continue;
-        g.radius = std::max(g.radius, p.local.norm());
-        for (const LineEnd& e : p.ends)
-          g.limit = std::min(g.limit, sys.lines[e.line].line.total_length());
-      }
-      groups.push_back(g);
-      size += g.size;
-    }
+// Island k's statics: Newton on its shared points and free bodies (and the relaxation where it
+// fails, when options ask), its lines' states and its bodies' poses into the model's.
+void SolveIsland(const Model& model, int k, const EquilibriumOptions& options,
+                 std::vector<State>& states, EquilibriumReport& report) {
+  std::vector<int> lines, points, bodies;
+  const bool whole = model.islands.size() == 1;
+  const Model sub = whole ? Model{} : IslandModel(model, k, &lines, &points, &bodies);
+  const Model& m = whole ? model : sub;
+  if (whole) {
+    for (int i = 0; i < static_cast<int>(model.lines.size()); ++i) lines.push_back(i);
+    for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) bodies.push_back(b);
   }
-
-  // Whether group k moves an end of line i.
-  bool Moves(const Model& sys, int k, int i) const {
-    for (int e = 0; e < 2; ++e) {
-      const int at = sys.line_points[i][e];
-      if (at == groups[k].point) return true;
-      if (groups[k].body >= 0 && sys.points[at].on_body == groups[k].body) return true;
-    }
-    return false;
-  }
-};
-
-// The lines with their ends at shared points held where the unknowns X put those points, and
-// their ends on free bodies where X puts the bodies; and their equilibria.
-class HeldLines {
- public:
-  HeldLines(const Model& sys, const Unknowns& u, const EquilibriumOptions& options)
-      : sys_(sys), u_(u), models_(sys.lines), states_(sys.lines.size()),
-        reports_(sys.lines.size()), line_work_(sys.lines.size(), 0.0),
-        most_work_(options.max_line_work),
-        work_(options.line_work ? options.line_work : &own_work_) {
-    line_options_.cancel = options.cancel;
-  }
-
-  static constexpr int kAll = -1;    // every line
-  static constexpr int kMoved = -2;  // the lines that some unknown moves
-
-  // Places the unknowns at X and solves the lines that group `group` moves (or kAll, kMoved).
-  void Solve(const Eigen::VectorXd& X, int group) {
-    const int groups = static_cast<int>(u_.groups.size());
-    for (int i = 0; i < static_cast<int>(models_.size()); ++i) {
-      bool moved = false;
-      for (int k = 0; k < groups; ++k)
-        if (u_.Moves(sys_, k, i)) moved = true, Place(X, k, i);
-      if (group == kMoved && !moved) continue;
-      if (group >= 0 && !u_.Moves(sys_, group, i)) continue;
-      try {
-        states_[i] = SolveHeld(i);
-      } catch (const CancelledError&) {
-        throw;
-      } catch (const Error& e) {
-        throw Error("line \"" + sys_.line_names[i] + "\": no static equilibrium: " + e.what());
-      }
-      if (*work_ > most_work_) {
-        const int most = static_cast<int>(std::max_element(line_work_.begin(), line_work_.end()) -
-                                          line_work_.begin());
-        std::ostringstream os;
-        os << "the shared points and free bodies of the system were not balanced within "
-           << most_work_ << " station-iterations of their lines' equilibria (each solve's "
-           << "Newton iterations times its line's stations); line \"" << sys_.line_names[most]
-           << "\" (" << models_[most].stations() << " stations) took the most, "
-           << line_work_[most] / models_[most].stations() << " iterations in all";
-        throw Error(os.str());
-      }
-    }
-  }
-  double work() const { return *work_; }
-
-  // The out-of-balance load of each group at X: the net force on a shared point [N], the net
-  // force and moment on a free body [N, N m about its reference point].
-  Eigen::VectorXd Residual(const Eigen::VectorXd& X) const {
-    Eigen::VectorXd R = Eigen::VectorXd::Zero(u_.size);
-    for (const Unknowns::Group& g : u_.groups) {
-      if (g.point >= 0) {
-        for (const LineEnd& e : sys_.points[g.point].ends)
-          R.segment<kDim>(g.offset) +=
-              StaticStationForce(models_[e.line], states_[e.line], e.station);
-        continue;
-      }
-      const Vec6 pose = X.segment<6>(g.offset);
-      const BodySpec& body = sys_.bodies[g.body];
-      R.segment<6>(g.offset) =
-          LinesLoad(sys_, models_, states_, g.body, pose) +
-          BodyOwnLoads(body, pose, sys_.env.fluid_density, sys_.env.gravity) + CurrentDrag(body, pose);
-    }
-    return R;
-  }
-
-  // The current's drag on a body held at `pose` (its quadratic damping at rest in the flow,
-  // as in time) [N].
-  Vec6 CurrentDrag(const BodySpec& body, const Vec6& pose) const {
-    if (models_.empty()) return Vec6::Zero();
-    const LineModel& m = models_[0];
-    return BodyDampingLoad(body, Vec6::Zero(), CurrentAt(m, SceneWater(m), pose[kVertical]));
-  }
-
-  const std::vector<State>& states() const { return states_; }
-  const std::vector<LineEquilibriumReport>& reports() const { return reports_; }
-  void Restore(const std::vector<State>& states) { states_ = states; }
-
- private:
-  // Line i's ends at group k's point or body, where X puts them.
-  void Place(const Eigen::VectorXd& X, int k, int i) {
-    const Unknowns::Group& g = u_.groups[k];
-    if (g.body >= 0) {
-      PlaceBodyEnds(sys_, g.body, X.segment<6>(g.offset), i, models_[i]);
-      return;
-    }
-    for (int e = 0; e < 2; ++e)
-      if (sys_.line_points[i][e] == g.point)
-        (e == 0 ? models_[i].ends.start : models_[i].ends.end) =
-            EndMotion::Fixed(X.segment<kDim>(g.offset));
-  }
-
-  // Line i's equilibrium: from its last one moved with its ends (warm), or when there is none
-  // or that fails, from the first guess of a single line.
-  // Each solve's work is counted, a failed one's too (its report is written before it throws).
-  State SolveHeld(int i) {
-    if (states_[i].x.size() != 0) {
-      line_options_.warm_start = true;
-      reports_[i] = LineEquilibriumReport{};
-      try {
-        State s = SolveLineEquilibrium(models_[i], MovedGuess(i), &reports_[i], line_options_);
-        Count(i);
-        return s;
-      } catch (const CancelledError&) {
-        throw;
-      } catch (const Error&) {
-        Count(i);  // and from the first guess instead
-      }
-    }
-    line_options_.warm_start = false;
-    reports_[i] = LineEquilibriumReport{};
-    try {
-      State s =
-          SolveLineEquilibrium(models_[i], EquilibriumGuess(models_[i]), &reports_[i], line_options_);
-      Count(i);
-      return s;
-    } catch (const Error&) {
-      Count(i);
-      throw;
-    }
-  }
-  void Count(int i) {
-    const double work = double(reports_[i].iterations) * models_[i].stations();
-    *work_ += work;
-    line_work_[i] += work;
-  }
-
-  // The last equilibrium of line i with its held ends moved to their new positions, the
-  // stations between shifted in proportion to their arc length.
-  Points MovedGuess(int i) const {
-    const LineModel& m = models_[i];
-    Points x = states_[i].x;
-    const int s = m.line.links;
-    const Vec d0 = m.ends.start.prescribed() ? Vec(m.ends.start.rest() - x.col(0)) : Vec::Zero();
-    const Vec d1 = m.ends.end.prescribed() ? Vec(m.ends.end.rest() - x.col(s)) : Vec::Zero();
-    const double L = m.line.total_length();
-    for (int j = 0; j <= s; ++j) {
-      const double f = m.line.arc_length[j] / L;
-      x.col(j) += (1.0 - f) * d0 + f * d1;
-    }
-    return x;
-  }
-
-  const Model& sys_;
-  const Unknowns& u_;
-  std::vector<LineModel> models_;
-  std::vector<State> states_;
-  std::vector<LineEquilibriumReport> reports_;
-  LineEquilibriumOptions line_options_;
-  std::vector<double> line_work_;  // each line's solves in this call [station-iterations]
-  double most_work_;  // station-iterations (EquilibriumOptions::max_line_work)
-  double own_work_ = 0;
-  double* work_;      // where they are added up
-};
-
-}  // namespace
-
-Points SharedPointResiduals(const Model& sys, const std::vector<State>& states) {
-  Points R = Points::Zero(kDim, sys.shared_count());
-  for (int p : sys.shared_points)
-    for (const LineEnd& e : sys.points[p].ends)
-      R.col(sys.points[p].shared) += StaticStationForce(sys.lines[e.line], states[e.line], e.station);
-  return R;
-}
-
-Vec6 LinesLoadOnBody(const Model& sys, const std::vector<State>& states, int b,
-                     const Vec6& pose) {
-  return LinesLoad(sys, sys.lines, states, b, pose);
-}
-
-namespace {
-
-// The unknowns' first guess and the lines held there (their warm starts): the points and
-// bodies where the scene puts them, the joints of chains where the chains solved as one line
-// put them; or where options.guess, a state of the lines, has them.
-Eigen::VectorXd FirstGuess(const Model& sys, const Unknowns& u,
-                           const EquilibriumOptions& options, HeldLines& lines,
-                           int* chain_count) {
-  Eigen::VectorXd X(u.size);
-  for (const Unknowns::Group& g : u.groups) {
-    if (g.body >= 0) {
-      X.segment<6>(g.offset) = options.guess ? options.guess_poses[g.body] : sys.body_poses[g.body];
-      continue;
-    }
-    const LineEnd& o = sys.owner(g.point);
-    const LineModel& m = sys.lines[o.line];
-    X.segment<kDim>(g.offset) = options.guess ? Vec((*options.guess)[o.line].x.col(o.station))
-                                              : (o.station == 0 ? m.ends.start : m.ends.end).rest();
-  }
+  EquilibriumOptions o = options;
+  std::vector<State> guess;
+  std::vector<Vec6> guess_poses;
   if (options.guess) {
-    lines.Restore(*options.guess);
-  } else {
-    // Chains of lines through joints, each solved as one line: their joints where that puts
-    // them, their lines' shapes the first guesses (chain_guess.h).
-    const ChainGuess chains = GuessChains(sys, options.cancel);
-    for (const Unknowns::Group& g : u.groups) {
-      if (g.point < 0) continue;
-      const int shared = sys.points[g.point].shared;
-      if (chains.guessed[shared]) X.segment<kDim>(g.offset) = chains.shared_positions.col(shared);
-    }
-    lines.Restore(chains.states);
-    *chain_count = chains.chains;
+    for (int i : lines) guess.push_back((*options.guess)[i]);
+    for (int b : bodies) guess_poses.push_back(options.guess_poses[b]);
+    o.guess = &guess;
+    o.guess_poses = guess_poses.data();
   }
-  lines.Solve(X, HeldLines::kAll);
-  return X;
+  EquilibriumReport r;
+  const std::vector<State> solved =
+      options.relaxation ? SolveCoupledEquilibriumRelaxing(m, options.inputs, *options.relaxation, &r, o)
+                         : SolveCoupledEquilibrium(m, &r, o);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    states[lines[i]] = solved[i];
+    if (i < r.lines.size()) report.lines[lines[i]] = r.lines[i];
+  }
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (b < r.body_poses.size()) report.body_poses[bodies[b]] = r.body_poses[b];
+  report.iterations += r.iterations;
+  report.chains += r.chains;
+  report.residual = std::max(report.residual, r.residual);
+  report.line_work += r.line_work;
+  report.relaxed = std::max(report.relaxed, r.relaxed);
 }
 
 }  // namespace
 
-HeldFirstGuess HoldAtFirstGuess(const Model& sys, const EquilibriumOptions& options) {
-  const Unknowns u(sys);
-  HeldLines lines(sys, u, options);
-  int chains = 0;
-  const Eigen::VectorXd X = FirstGuess(sys, u, options, lines, &chains);
-  HeldFirstGuess guess{lines.states(), sys.body_poses};
-  for (const Unknowns::Group& g : u.groups)
-    if (g.body >= 0) guess.body_poses[g.body] = X.segment<6>(g.offset);
-  return guess;
-}
-
-std::vector<State> SolveEquilibrium(const Model& sys, EquilibriumReport* report,
-                                          const EquilibriumOptions& options) {
-  const Unknowns u(sys);
-  const int n = u.size;
-  HeldLines lines(sys, u, options);
-  int chain_count = 0;
-  Eigen::VectorXd X = FirstGuess(sys, u, options, lines, &chain_count);
-  double scale = 0;
-  for (const LineModel& m : sys.lines) scale += StaticForceScale(m);
+std::vector<State> SolveEquilibrium(const Model& model, EquilibriumReport* report,
+                                    const EquilibriumOptions& options) {
+  const int nl = static_cast<int>(model.lines.size());
+  std::vector<State> states(nl);
   EquilibriumReport r;
-  r.force_scale = scale;
-  r.chains = chain_count;
-  Eigen::VectorXd R = lines.Residual(X);
-  // The out-of-balance measure: forces [N], and a body's moments over its size [N].
-  Eigen::VectorXd weight = Eigen::VectorXd::Ones(n);
-  for (const Unknowns::Group& g : u.groups)
-    if (g.body >= 0) weight.segment<3>(g.offset + 3).setConstant(1.0 / g.radius);
-  auto norm = [&](const Eigen::VectorXd& v) {
-    return v.size() ? v.cwiseProduct(weight).lpNorm<Eigen::Infinity>() : 0.0;
-  };
-  // Broyden's method: the Jacobian dR/dX by forward differences (a group at a time, each
-  // column re-solving that group's lines) at the start and whenever a step fails to reduce the
-  // out-of-balance load, and updated by rank one after each step that does (the held lines'
-  // solves are the cost: one per step instead of one per unknown).
-  Eigen::MatrixXd J(n, n);
-  bool fresh = false;
-  auto differences = [&] {
-    const std::vector<State> base = lines.states();
-    for (int k = 0; k < static_cast<int>(u.groups.size()); ++k) {
-      const Unknowns::Group& g = u.groups[k];
-      for (int c = 0; c < g.size; ++c) {
-        // A millionth of its shortest line (a turn moves its farthest point as far).
-        const double delta = 1e-6 * g.limit / (c < 3 ? 1.0 : g.radius);
-        Eigen::VectorXd Xd = X;
-        Xd[g.offset + c] += delta;
-        lines.Solve(Xd, k);
-        J.col(g.offset + c) = (lines.Residual(Xd) - R) / delta;
-        lines.Restore(base);
-      }
-      lines.Solve(X, k);
-    }
-    fresh = true;
-  };
-  differences();
-  double best = norm(R);  // the smallest out-of-balance load so far, and when it fell by 1 %
-  int improved = 0;
-  while (norm(R) > options.tolerance * scale) {
-    if (norm(R) < 0.99 * best) best = norm(R), improved = r.iterations;
-    const bool stalled =
-        options.stall_iterations > 0 && r.iterations - improved >= options.stall_iterations;
-    if (++r.iterations > options.max_iterations || stalled) {
-      // Name the one most out of balance, and what usually causes it.
-      const Unknowns::Group* worst = &u.groups.front();
-      double worst_force = -1;
-      for (const Unknowns::Group& g : u.groups) {
-        const double f = R.segment(g.offset, g.size).cwiseProduct(weight.segment(g.offset, g.size))
-                             .lpNorm<Eigen::Infinity>();
-        if (f > worst_force) worst_force = f, worst = &g;
-      }
-      const bool body = worst->body >= 0;
-      std::ostringstream os;
-      os << "the shared points and free bodies of the system do not balance after "
-         << r.iterations - 1 << " Newton iterations"
-         << (stalled ? " (the last " + std::to_string(options.stall_iterations) +
-                           " gained less than 1 %)"
-                     : std::string())
-         << ": out-of-balance force " << norm(R)
-         << " N on " << (body ? "body " : "point ")
-         << '"' << (body ? sys.bodies[worst->body].name : sys.points[worst->point].name) << '"'
-         << " (the lines' own loads are " << scale << " N); a free "
-         << (body ? "body's" : "point's") << " given position is only the first guess of its "
-         << "equilibrium, which may not be reached from one far from it (a body or point given "
-         << "above the anchor it hangs below, say): give one nearer where it comes to rest";
-      throw Error(os.str());
-    }
-    ThrowIfCancelled(options.cancel, "the system's static equilibrium");
-    if (options.solving)
-      options.solving(std::min(1.0, std::max(double(r.iterations) / options.max_iterations,
-                                             lines.work() / options.max_line_work)));
-    // The least-squares step of least size: a direction nothing stiffens (a body's yaw on one
-    // mooring point, its turns when its lines meet at its reference) stays where it is.
-    Eigen::VectorXd dX = J.completeOrthogonalDecomposition().solve(-R);
-    for (const Unknowns::Group& g : u.groups) {  // at most a tenth of the shortest line
-      const double most = 0.1 * g.limit;
-      const double size = dX.segment<kDim>(g.offset).norm();
-      if (size > most) dX *= most / size;
-      if (g.body < 0) continue;
-      const double turn = dX.segment<3>(g.offset + 3).norm() * g.radius;
-      if (turn > most) dX *= most / turn;
-    }
-    const std::vector<State> base = lines.states();
-    lines.Solve(X + dX, HeldLines::kMoved);
-    Eigen::VectorXd Rt = lines.Residual(X + dX);
-    if (!(norm(Rt) < norm(R)) && !fresh) {  // an old Jacobian: a fresh one, and again
-      lines.Restore(base);
-      lines.Solve(X, HeldLines::kMoved);
-      differences();
-      --r.iterations;
+  r.lines.resize(nl);
+  r.body_poses = model.body_poses;
+  for (const LineModel& m : model.lines) r.force_scale += StaticForceScale(m);
+  for (int k = 0; k < static_cast<int>(model.islands.size()); ++k) {
+    const Island& isl = model.islands[k];
+    ThrowIfCancelled(options.cancel, "the static equilibrium");
+    if (isl.coupled() || options.guess) {
+      SolveIsland(model, k, options, states, r);
       continue;
     }
-    // Backtracking: the step halved until the out-of-balance load falls.
-    double step = 1;
-    for (int tries = 0; !(norm(Rt) < norm(R)) && tries < 12; ++tries) {
-      lines.Restore(base);
-      step *= 0.5;
-      lines.Solve(X + step * dX, HeldLines::kMoved);
-      Rt = lines.Residual(X + step * dX);
+    const int i = isl.lines.front();
+    try {
+      states[i] = SolveSingleLine(model, i, options, &r.lines[i]);
+    } catch (const CancelledError&) {
+      throw;
+    } catch (const Error& e) {
+      if (nl == 1) throw;
+      throw Error("line \"" + model.line_names[i] + "\": no static equilibrium: " + e.what());
     }
-    const Eigen::VectorXd s = step * dX;
-    J += (Rt - R - J * s) * s.transpose() / s.squaredNorm();
-    fresh = false;
-    X += s;
-    R = Rt;
+    r.residual = std::max(r.residual, r.lines[i].residual);
+    r.line_work += double(r.lines[i].iterations) * model.lines[i].stations();
   }
-  r.residual = norm(R);
-  r.line_work = lines.work();
-  r.lines = lines.reports();
-  r.body_poses = sys.body_poses;
-  for (const Unknowns::Group& g : u.groups)
-    if (g.body >= 0) r.body_poses[g.body] = X.segment<6>(g.offset);
   if (report) *report = r;
-  return lines.states();
+  return states;
+}
+
+std::vector<State> StraightStart(const Model& model) {
+  std::vector<State> states;
+  for (const LineModel& m : model.lines) {
+    State s;
+    s.x = StraightChord(m);
+    s.v = Points::Zero(kDim, m.stations());
+    states.push_back(s);
+  }
+  return states;
 }
 
 }  // namespace cablefilm

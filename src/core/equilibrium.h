@@ -1,15 +1,17 @@
 #pragma once
-// The static equilibrium of a system of lines (model.h): the paper's initial state for a
-// mooring. Each line is in equilibrium (SolveLineEquilibrium, line_equilibrium.h) with its ends at its
-// points; the shared points (free points where several lines meet) are where the forces of
-// their lines balance, and a free body (body.h) is where its lines' loads balance its own:
-// Newton's method on the shared points' positions (kDim unknowns per point) and the free
-// bodies' poses (6 per body), with a Jacobian of finite differences (each column re-solves
-// the lines at one point or body, from their last equilibrium), Broyden's updates and a
-// backtracking line search.
+// The static equilibrium of a model (model.h), its initial state at rest with its ends at
+// their t = 0 positions (the paper's): each island on its own. An island of one line between
+// points that hold it is the line's statics (line_equilibrium.h: Newton continued in the
+// current, from a coarse line's shape for a long one; the inextensible line's own); a coupled
+// island's shared points and free bodies are where their lines' loads balance
+// (coupled_equilibrium.h), found, where Newton does not reach them from the scene's positions,
+// from where the island's own damped motion brings it (relaxation.h).
 #include <functional>
+#include <optional>
 #include <vector>
 
+#include "core/inputs.h"
+#include "core/line_data.h"
 #include "core/line_equilibrium.h"
 #include "core/model.h"
 
@@ -22,7 +24,7 @@ struct EquilibriumReport {
                               // the end [N] (a body's moment divided by its size [m])
   double force_scale = 0;     // the load it is measured against: the lines' (StaticForceScale)
   double line_work = 0;       // the held lines' solves, in station-iterations
-  std::vector<LineEquilibriumReport> lines;  // each line's last solve
+  std::vector<LineEquilibriumReport> lines;  // each line's (last) solve
   std::vector<Vec6> body_poses;          // each body's pose (a free body's as solved)
   double relaxed = 0;  // s of the system's damped motion it took to get near enough for Newton
                        // (relaxation.h); 0: none, from the scene's first guess
@@ -37,6 +39,10 @@ struct EquilibriumReport {
 constexpr double kMostStaticLineWork = 2e7;
 
 struct EquilibriumOptions {
+  // Where Newton fails on a coupled island: the relaxation's steps (the run's scheme and
+  // tolerance, relaxation.h); none: Newton alone, and its failure thrown.
+  std::optional<StepOptions> relaxation;
+  Inputs inputs;              // the relaxation's (the scene's: SceneInputs)
   int max_iterations = 100;   // Newton iterations on the shared points
   int stall_iterations = 0;   // given up when so many in a row gain less than 1 % (0: never)
   double tolerance = 1e-9;    // converged when residual <= tolerance * force_scale
@@ -58,36 +64,14 @@ struct EquilibriumOptions {
   std::function<void(double)> solving;
 };
 
-// The lines held at the first guess the statics start from (each in its own equilibrium with
-// its ends there) and the bodies' poses: a state of the whole system, not yet balanced at its
-// shared points and free bodies.
-struct HeldFirstGuess {
-  std::vector<State> states;
-  std::vector<Vec6> body_poses;
-};
-HeldFirstGuess HoldAtFirstGuess(const Model& sys,
-                                  const EquilibriumOptions& options = {});
+// Each line's state at rest (t = 0), island by island (a single line's statics from its
+// coarse line's shape and continued in the current, unless options.guess gives a state to
+// start from). Throws Error naming the line that has no equilibrium, or the points and bodies
+// that do not balance; CancelledError when options.cancel is raised.
+std::vector<State> SolveEquilibrium(const Model& model, EquilibriumReport* report = nullptr,
+                                    const EquilibriumOptions& options = {});
 
-// Each line's state at rest (t = 0). Throws Error naming the line that has no equilibrium, or
-// the points and bodies when they do not balance.
-std::vector<State> SolveEquilibrium(const Model& sys,
-                                          EquilibriumReport* report = nullptr,
-                                          const EquilibriumOptions& options = {});
-
-// The force on station j of a line at rest in its scene's water [N]: its links' tensions, its
-// weight, buoyancy, the current's drag and the seabed's reaction (an end station's: what its
-// point holds).
-Vec StaticStationForce(const LineModel& m, const State& s, int j);
-
-// The net force on each shared point (column: the shared point's index) of the lines' static
-// states [N]: the sum of its end stations' forces (its own weight, buoyancy and thrust on its
-// owner's). Zero at equilibrium.
-Points SharedPointResiduals(const Model& sys, const std::vector<State>& states);
-
-// The static load of the lines on body b at `pose` [N, N m about its reference point]: the sum
-// of the forces of the end stations at its points (each end link's tension and the station's
-// lumped share of weight, buoyancy and the current's drag), with their moments.
-Vec6 LinesLoadOnBody(const Model& sys, const std::vector<State>& states, int b,
-                     const Vec6& pose);
+// Every line on the chord between its ends at rest, at rest (the "straight" initial state).
+std::vector<State> StraightStart(const Model& model);
 
 }  // namespace cablefilm

@@ -3,14 +3,11 @@
 #include <cmath>
 
 #include "core/cancel.h"
+#include "core/explicit_stages.h"
 #include "core/seabed_friction.h"
 
 namespace cablefilm {
-namespace {
 
-// The positions x_{n+1} of a step h into scratch.x (prescribed ends exact at t + h), with
-// v_{n+1/2} (scratch.v) and the predicted v_{n+1} (scratch.v_pred) of the free stations; true
-// if a link changes between slack and taut in it.
 bool Drift(const LineModel& m, LineData& d, const Inputs& in, double h) {
   const State& s = d.state;
   Scratch& w = d.scratch;
@@ -35,8 +32,6 @@ bool Drift(const LineModel& m, LineData& d, const Inputs& in, double h) {
   return any;
 }
 
-// False if a link changing between slack and taut in the drifted step h has an energy error
-// above the bounds (explicit_step.h).
 bool SnapsResolved(const LineModel& m, const LineData& d, double h) {
   const State& s = d.state;
   const Scratch& w = d.scratch;
@@ -83,12 +78,10 @@ bool SnapsResolved(const LineModel& m, const LineData& d, double h) {
   return true;
 }
 
-// Completes the drifted step: velocities, accelerations at t + h.
-void Commit(const LineModel& m, LineData& d, const Inputs& in, double h) {
+void MoveToDrift(const LineModel& m, LineData& d, const Inputs& in, double h) {
   State& s = d.state;
   Scratch& w = d.scratch;
   const double t1 = s.t + h;
-  const int j0 = m.first_free(), j1 = m.last_free();
   s.x.swap(w.x);  // x_{n+1}
   s.v.swap(w.v);  // v_{n+1/2} at the free stations
   for (int j : {0, m.line.links}) {
@@ -97,11 +90,24 @@ void Commit(const LineModel& m, LineData& d, const Inputs& in, double h) {
     w.v_pred.col(j) = s.v.col(j);
   }
   ComputeAccelerations(m, in, d.water, t1, s.x, w.v_pred, d.forces, d.a);
-  for (int j = j0; j <= j1; ++j) s.v.col(j) += 0.5 * h * d.a.col(j);
+}
+
+void FinishDrift(const LineModel& m, LineData& d, double h) {
+  State& s = d.state;
+  const double t1 = s.t + h;
+  for (int j = m.first_free(); j <= m.last_free(); ++j) s.v.col(j) += 0.5 * h * d.a.col(j);
   UpdateFrictionAnchors(m, s.x, s.v, d.forces.geometry);
   s.t = t1;
   ++d.stats.steps;
   d.snaps.Observe(t1, h, d.forces.geometry.length);
+}
+
+namespace {
+
+// Completes the drifted step: velocities, accelerations at t + h.
+void Commit(const LineModel& m, LineData& d, const Inputs& in, double h) {
+  MoveToDrift(m, d, in, h);
+  FinishDrift(m, d, h);
 }
 
 // A fixed step dt as it is (a dt above the stability limit blows up).

@@ -16,6 +16,13 @@ std::string LineName(const LineSpec& line, int i) {
   return "line " + (line.name.empty() ? std::to_string(i + 1) : "\"" + line.name + "\"");
 }
 
+// A point's own terms that are all zero (a junction of no mass, a free end of a line alone):
+// no prism on its station.
+bool IsEmpty(const PrismSpec& p) {
+  return p.mass == 0 && p.volume == 0 && p.added_volume.isZero() && p.drag_coefficient.isZero() &&
+         p.drag_area.isZero() && p.force.isZero();
+}
+
 int Links(const LineSpec& line) {
   int links = 0;
   for (const SectionSpec& sec : line.sections) links += sec.segments;
@@ -39,7 +46,8 @@ Point OnBody(const PointSpec& p, const BodySpec& body) {
 }  // namespace
 
 Model MakeModel(const std::vector<LineSpec>& lines, const std::vector<PointSpec>& points,
-                       const EnvironmentSpec& env, const std::vector<BodySpec>& bodies) {
+                const EnvironmentSpec& env, const std::vector<BodySpec>& bodies) {
+  if (lines.empty()) throw Error("a model needs at least one line");
   Model sys;
   sys.env = env;
   sys.bodies = bodies;
@@ -88,8 +96,6 @@ Model MakeModel(const std::vector<LineSpec>& lines, const std::vector<PointSpec>
   }
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     const LineSpec& l = lines[i];
-    if (l.law != LinkLaw::kElastic)  // the system's step is the elastic line's
-      throw Error(LineName(l, i) + ": the lines of a system are elastic");
     std::vector<PrismSpec> prisms = l.prisms;
     EndMotion ends[2] = {sys.points[l.start_point].motion, sys.points[l.end_point].motion};
     const int at[2] = {l.start_point, l.end_point};
@@ -104,8 +110,8 @@ Model MakeModel(const std::vector<LineSpec>& lines, const std::vector<PointSpec>
       ends[e] = EndMotion::Free(points[at[e]].motion.rest());
       const LineEnd& owner = point.ends.front();
       const int station = e == 0 ? 0 : links;
-      if (owner.line == i && owner.station == station) {  // the point's own terms, once
-        PrismSpec body = points[at[e]].body;
+      if (owner.line == i && owner.station == station && !IsEmpty(points[at[e]].body)) {
+        PrismSpec body = points[at[e]].body;  // the point's own terms, once
         body.station = station;
         prisms.push_back(body);
       }
@@ -118,10 +124,127 @@ Model MakeModel(const std::vector<LineSpec>& lines, const std::vector<PointSpec>
       throw Error(LineName(l, i) +
                   ": both its ends are free points that hold no other line: nothing holds it");
     sys.lines.push_back(MakeLineModel(l.sections, prisms, env, ends[0], ends[1], l.law));
+    sys.line_prisms.push_back(prisms);
     sys.line_names.push_back(l.name);
     sys.line_points.push_back({l.start_point, l.end_point});
   }
+  FindIslands(sys);
   return sys;
+}
+
+void FindIslands(Model& model) {
+  const int nl = static_cast<int>(model.lines.size());
+  // Union-find over the lines: joined where they share a point or a free body.
+  std::vector<int> root(nl);
+  for (int i = 0; i < nl; ++i) root[i] = i;
+  auto find = [&](int i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  auto join = [&](int a, int b) { root[find(a)] = find(b); };
+  for (int p : model.shared_points)
+    for (const LineEnd& e : model.points[p].ends) join(e.line, model.owner(p).line);
+  for (int b : model.free_bodies) {
+    int first = -1;
+    for (const Point& p : model.points) {
+      if (p.on_body != b) continue;
+      for (const LineEnd& e : p.ends) {
+        if (first < 0) first = e.line;
+        join(e.line, first);
+      }
+    }
+  }
+  model.islands.clear();
+  model.line_island.assign(nl, -1);
+  std::vector<int> island_of_root(nl, -1);
+  for (int i = 0; i < nl; ++i) {
+    int& k = island_of_root[find(i)];
+    if (k < 0) {
+      k = static_cast<int>(model.islands.size());
+      model.islands.emplace_back();
+    }
+    model.islands[k].lines.push_back(i);
+    model.line_island[i] = k;
+  }
+  for (int p : model.shared_points)
+    model.islands[model.line_island[model.owner(p).line]].shared_points.push_back(p);
+  for (int b : model.free_bodies)
+    for (const Point& p : model.points)
+      if (p.on_body == b && !p.ends.empty()) {
+        model.islands[model.line_island[p.ends.front().line]].free_bodies.push_back(b);
+        break;
+      }
+  for (const Island& island : model.islands) {
+    if (!island.coupled()) continue;
+    for (int i : island.lines)
+      if (model.lines[i].line.law != LinkLaw::kElastic)  // the coupled step is the elastic one
+        throw Error("line \"" + model.line_names[i] + "\": an inextensible line cannot be "
+                    "joined to other lines or to a free body (the coupled step is the elastic "
+                    "lines'); it may end at fixed or moving points, or at a free end of its own");
+  }
+}
+
+Model IslandModel(const Model& model, int k, std::vector<int>* lines, std::vector<int>* points,
+                  std::vector<int>* bodies) {
+  const Island& island = model.islands.at(k);
+  std::vector<int> line_of(island.lines), point_new(model.points.size(), -1),
+      body_new(model.bodies.size(), -1);
+  std::vector<int> point_of, body_of;
+  for (int i : island.lines)
+    for (int p : model.line_points[i]) point_new[p] = 0;
+  for (std::size_t p = 0; p < model.points.size(); ++p) {
+    if (point_new[p] < 0) continue;
+    point_new[p] = static_cast<int>(point_of.size());
+    point_of.push_back(static_cast<int>(p));
+    const int b = model.points[p].on_body;
+    if (b >= 0) body_new[b] = 0;
+  }
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    if (body_new[b] < 0) continue;
+    body_new[b] = static_cast<int>(body_of.size());
+    body_of.push_back(static_cast<int>(b));
+  }
+  std::vector<int> line_new(model.lines.size(), -1);
+  for (std::size_t i = 0; i < line_of.size(); ++i) line_new[line_of[i]] = static_cast<int>(i);
+  Model m;
+  m.env = model.env;
+  for (int i : line_of) {
+    m.lines.push_back(model.lines[i]);
+    m.line_names.push_back(model.line_names[i]);
+    m.line_points.push_back({point_new[model.line_points[i][0]], point_new[model.line_points[i][1]]});
+    LineSpec spec = model.line_specs[i];
+    spec.start_point = m.line_points.back()[0];
+    spec.end_point = m.line_points.back()[1];
+    m.line_specs.push_back(spec);
+    m.line_prisms.push_back(model.line_prisms[i]);
+  }
+  for (int p : point_of) {
+    Point point = model.points[p];
+    std::vector<LineEnd> ends;
+    for (const LineEnd& e : point.ends)
+      if (line_new[e.line] >= 0) ends.push_back({line_new[e.line], e.station});
+    point.ends = ends;
+    if (point.on_body >= 0) point.on_body = body_new[point.on_body];
+    point.shared = -1;
+    if (point.kind == PointKind::kFree && point.ends.size() >= 2) {
+      point.shared = m.shared_count();
+      m.shared_points.push_back(static_cast<int>(m.points.size()));
+    }
+    m.points.push_back(point);
+    PointSpec spec = model.point_specs[p];
+    if (spec.on_body >= 0) spec.on_body = body_new[spec.on_body];
+    m.point_specs.push_back(spec);
+  }
+  for (int b : body_of) {
+    m.bodies.push_back(model.bodies[b]);
+    m.body_poses.push_back(model.body_poses[b]);
+    if (model.bodies[b].kind == BodyKind::kFree) m.free_bodies.push_back(body_new[b]);
+  }
+  FindIslands(m);
+  if (lines) *lines = line_of;
+  if (points) *points = point_of;
+  if (bodies) *bodies = body_of;
+  return m;
 }
 
 void PlaceBodyEnds(const Model& sys, int b, const Vec6& pose, int line, LineModel& model) {
@@ -173,6 +296,7 @@ Model HoldBody(const Model& sys, int b, const Vec6& pose) {
       if (held.points[held.line_points[i][e]].on_body == b)
         (e == 0 ? held.lines[i].ends.start : held.lines[i].ends.end) = EndMotion::Fixed(Vec::Zero());
   PlaceBody(held, b, pose);
+  FindIslands(held);
   return held;
 }
 

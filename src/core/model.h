@@ -1,18 +1,25 @@
 #pragma once
-// A mooring system: several lines (each the model of line_model.h) whose ends are attached to
-// points. A point is fixed (an anchor), moved (a fairlead on a ship: the end motions of
-// end_motion.h) or free (a clump weight, a buoy, a junction of lines), with its own mass,
-// buoyancy, added mass, drag and a constant force. A free point carried by one line is that
-// line's free end with the point as its prism; a free point where several line ends meet is
-// a shared station: each line keeps its own copy of it, and the system's step (coupled_step.h)
-// solves the lines together through the Schur complement on the shared stations. Its equation
-// of motion is the sum of the rows of its copies: the point's own terms are on the copy of
-// the line that owns it (the first end attached), and each line adds its end station's lumped
-// share (half of its end link's mass, weight, drag), as MoorDyn lumps them.
+// The model (MuJoCo's mjModel), const while it runs: lines, points and bodies in one
+// environment. Each line is the lumped-mass line of line_model.h between two points; a single
+// line is a line between two points. A point is fixed (an anchor), moved (a fairlead on a
+// ship: the end motions of end_motion.h) or free (a clump weight, a buoy, a junction of
+// lines), with its own mass, buoyancy, added mass, drag and a constant force. A free point
+// carried by one line is that line's free end with the point as its prism; a free point where
+// several line ends meet is a shared station: each line keeps its own copy of it, and the
+// coupled step (coupled_step.h) solves the lines together through the Schur complement on the
+// shared stations. Its equation of motion is the sum of the rows of its copies: the point's
+// own terms are on the copy of the line that owns it (the first end attached), and each line
+// adds its end station's lumped share (half of its end link's mass, weight, drag), as MoorDyn
+// lumps them.
 //
 // A point may be fixed to a rigid body (body.h) at a local position instead: a held body's
 // points are fixed, a driven body's move with its reference point, and a free body's (kind
-// kBody) are where the body's pose puts them; the system's statics find a free body's pose.
+// kBody) are where the body's pose puts them; the statics find a free body's pose.
+//
+// Lines joined through shared points or free bodies form an island (Box2D's islands, MuJoCo's
+// trees), stepped on its own (step.h): an island of one line between points that hold it
+// (fixed, moved, or a free end of its own) takes the line's schemes (explicit, implicit,
+// inextensible); a coupled island the coupled step.
 #include <array>
 #include <string>
 #include <vector>
@@ -62,6 +69,16 @@ struct Point {
   Vec local = Vec::Zero();    // its position in that body's axes [m]
 };
 
+// A connected part of the model: its lines, the shared points and free bodies that join them
+// (model indices, in the model's order).
+struct Island {
+  std::vector<int> lines;
+  std::vector<int> shared_points;
+  std::vector<int> free_bodies;
+  // Several lines, or a line whose end is on a free body: the coupled step's.
+  bool coupled() const { return !shared_points.empty() || !free_bodies.empty(); }
+};
+
 struct Model {
   std::vector<LineModel> lines;  // each line's model: a shared end is a free station there
   std::vector<std::string> line_names;
@@ -77,6 +94,10 @@ struct Model {
   // What it was made from (chain_guess.h solves a chain of lines as one line from them).
   std::vector<LineSpec> line_specs;
   std::vector<PointSpec> point_specs;
+  std::vector<std::vector<PrismSpec>> line_prisms;  // per line: the prisms its model was made
+                                                    // with (its own, and its free end's point's)
+  std::vector<Island> islands;     // the connected parts (FindIslands)
+  std::vector<int> line_island;    // per line: its island
 
   int shared_count() const { return static_cast<int>(shared_points.size()); }
   // The line end that owns point p (its first).
@@ -86,19 +107,30 @@ struct Model {
   int shared_end(int i, int e) const { return points[line_points[i][e]].shared; }
 };
 
-// Builds the system; throws Error on a free point no line is attached to, a line end at a
-// point that does not exist, a line whose ends are both loose, an inextensible line (the
-// system's step is the elastic line's implicit one), a point on a body that does not exist,
-// or a free body that no line holds.
+// Builds the model, its islands found; throws Error on no line, a free point no line is
+// attached to, a line end at a point that does not exist, a line whose ends are both loose,
+// an inextensible line in a coupled island (the coupled step is the elastic lines'), a point
+// on a body that does not exist, or a free body that no line holds.
 Model MakeModel(const std::vector<LineSpec>& lines, const std::vector<PointSpec>& points,
-                       const EnvironmentSpec& env, const std::vector<BodySpec>& bodies = {});
+                const EnvironmentSpec& env, const std::vector<BodySpec>& bodies = {});
+
+// The islands of `model` (Model::islands, line_island) from its shared points and free
+// bodies; throws Error naming an inextensible line in a coupled island.
+void FindIslands(Model& model);
+
+// Island k as a model of its own: its lines, the points they end at and the bodies those are
+// on, renumbered in the model's order (`lines`, `points`, `bodies`: the model's index of each
+// of its lines, points and bodies). The statics solve an island so.
+Model IslandModel(const Model& model, int k, std::vector<int>* lines = nullptr,
+                  std::vector<int>* points = nullptr, std::vector<int>* bodies = nullptr);
 
 // Body b at rest at `pose` (body_poses[b]): its points and the lines' ends there moved with it
 // (their motions about the new rest positions); a held or driven body's rest pose too.
 void PlaceBody(Model& sys, int b, const Vec6& pose);
 
-// The system with body b held at `pose` (its points fixed where the pose puts them, the lines'
-// ends with them): how the statics and the quasi-static tools place a body.
+// The model with body b held at `pose` (its points fixed where the pose puts them, the lines'
+// ends with them; its islands found anew): how the statics and the quasi-static tools place
+// a body.
 Model HoldBody(const Model& sys, int b, const Vec6& pose);
 
 // Moves the ends of model `line` that are at points of body b to where `pose` puts them

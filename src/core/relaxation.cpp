@@ -5,7 +5,7 @@
 
 #include "core/cancel.h"
 #include "core/error.h"
-#include "core/coupled_step.h"
+#include "core/step.h"
 
 namespace cablefilm {
 namespace {
@@ -36,17 +36,17 @@ StepOptions RelaxationSteps(StepOptions step) {
 
 }  // namespace
 
-std::vector<State> SolveEquilibriumRelaxing(const Model& sys, const Inputs& in,
-                                                  const StepOptions& step,
-                                                  EquilibriumReport* report,
-                                                  const EquilibriumOptions& options) {
+std::vector<State> SolveCoupledEquilibriumRelaxing(const Model& sys, const Inputs& in,
+                                                   const StepOptions& step,
+                                                   EquilibriumReport* report,
+                                                   const EquilibriumOptions& options) {
   EquilibriumOptions first_try = options;
   first_try.stall_iterations = kStallIterations;
   // The tries from the motion's states share one bound on their lines' work, the first try's
   // own besides: the relaxation ends when they have used it.
   double tries_work = 0;
   try {
-    return SolveEquilibrium(sys, report, first_try);
+    return SolveCoupledEquilibrium(sys, report, first_try);
   } catch (const CancelledError&) {
     throw;
   } catch (const Error& first) {
@@ -65,7 +65,8 @@ std::vector<State> SolveEquilibriumRelaxing(const Model& sys, const Inputs& in,
         // What is left of the bounds, for this span's steps too: where the steps fall below a
         // nanosecond (a fuzzed file's 0.1 mm chain of 20 links held a 5 t clump: 7e-10 s) one
         // span would take millions (the motion then fails: caught below).
-        const long tried = sd.stats.steps + sd.stats.rejected;
+        const StepStats stats = ModelStepStats(let_go, sd);
+        const long tried = stats.steps + stats.rejected;
         const long left = std::min(kMostRelaxationSteps - tried,
                                    static_cast<long>(kMostRelaxationStationSteps / stations) - tried);
         if (left <= 0) break;
@@ -79,12 +80,12 @@ std::vector<State> SolveEquilibriumRelaxing(const Model& sys, const Inputs& in,
           break;
         }
         // Rejected steps cost as much as accepted ones (a float's relaxation rejects 40 %).
-        const double work =
-            double(sd.stats.steps + sd.stats.rejected) * stations / kMostRelaxationStationSteps;
-        if (sd.stats.steps > kMostRelaxationSteps || work > 1) break;
+        const StepStats done = ModelStepStats(let_go, sd);
+        const double work = double(done.steps + done.rejected) * stations / kMostRelaxationStationSteps;
+        if (done.steps > kMostRelaxationSteps || work > 1) break;
         if (options.relaxing)
           options.relaxing(std::max({span * kSpan / kLongestRelaxation,
-                                     double(sd.stats.steps) / kMostRelaxationSteps, work}));
+                                     double(done.steps) / kMostRelaxationSteps, work}));
         // The clock back to t = 0: the ends and the sea as the statics have them.
         sd.t = 0;
         for (LineData& d : sd.lines) d.state.t = 0;
@@ -101,7 +102,7 @@ std::vector<State> SolveEquilibriumRelaxing(const Model& sys, const Inputs& in,
         from_here.guess = &states;
         from_here.guess_poses = poses.data();
         try {
-          std::vector<State> rest = SolveEquilibrium(sys, report, from_here);
+          std::vector<State> rest = SolveCoupledEquilibrium(sys, report, from_here);
           if (report) report->relaxed = span * kSpan;
           return rest;
         } catch (const CancelledError&) {

@@ -8,9 +8,9 @@
 // they are at t = 0, its sea calm.
 #include <vector>
 
+#include "core/coupled_equilibrium.h"
 #include "core/inputs.h"
-#include "core/step.h"
-#include "core/equilibrium.h"
+#include "core/line_data.h"
 
 namespace cablefilm {
 
@@ -26,13 +26,13 @@ constexpr long kMostRelaxationSteps = 36000;
 // stepped for hours.
 constexpr double kMostRelaxationStationSteps = 7.2e7;
 
-// SolveEquilibrium's answer; when it throws Error, the relaxation's (report->relaxed
+// SolveCoupledEquilibrium's answer; when it throws Error, the relaxation's (report->relaxed
 // says how many seconds of motion it took). Throws the first Error when the relaxation finds
 // none either (or the motion blows up), CancelledError when options.cancel is raised.
 // `step`: the implicit scheme's options (MakeData).
-std::vector<State> SolveEquilibriumRelaxing(const Model& sys, const Inputs& in,
-                                                  const StepOptions& step,
-                                                  EquilibriumReport* report,
-                                                  const EquilibriumOptions& options);
+std::vector<State> SolveCoupledEquilibriumRelaxing(const Model& sys, const Inputs& in,
+                                                   const StepOptions& step,
+                                                   EquilibriumReport* report,
+                                                   const EquilibriumOptions& options);
 
 }  // namespace cablefilm

@@ -4,7 +4,7 @@
 // PointLoads); written whole or not at all.
 #include <string>
 
-#include "core/coupled_step.h"
+#include "core/point_loads.h"
 #include "io/atomic_file.h"
 #include "run/system_run.h"
 

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "core/coupled_step.h"
+#include "core/point_loads.h"
 #include "io/netcdf_support.h"
 #include "run/system_run.h"
 

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "core/step.h"
 #include "live/sea_ramps.h"
 #include "scene/build_model.h"
 #include "view/scene_view_builder.h"
@@ -87,7 +88,7 @@ void LiveSystemSimulation::Advance(double seconds) {
   const double mid = t() + 0.5 * seconds;
   const Vec extra(force_x_.ValueAt(mid), 0.0, force_z_.ValueAt(mid));
   for (int b : run_.sys.free_bodies) run_.sys.bodies[b].force = scene_forces_[b] + extra;
-  StepSystemSpan(run_.sys, data_, inputs_, seconds, steps);
+  StepSpan(run_.sys, data_, inputs_, seconds, steps);
   RetireRamps(inputs_, t());
   force_x_.Retire(t());
   force_z_.Retire(t());

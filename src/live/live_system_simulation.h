@@ -2,7 +2,7 @@
 // A system of lines, points and bodies (core/model.h) stepped on demand while the sea and the
 // vessel are changed between steps: a system's physics half of the live view, as
 // LiveSimulation is a line's. It is the run's system (PrepareSystemRun: its equilibrium, its
-// grid, its initial LineData) stepped by the run's own stepping (StepSystemSpan), so that with no
+// grid, its initial LineData) stepped by the run's own stepping (StepSpan), so that with no
 // control changed it repeats `cablefilm run`'s rows.
 //
 // Its controls: the current's speed and heading and the waves' height, period and heading,
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "core/inputs.h"
-#include "core/coupled_step.h"
+#include "core/point_loads.h"
 #include "live/live_physics.h"
 #include "run/system_run.h"
 #include "scene/scene_def.h"

@@ -2,6 +2,8 @@
 
 #include <optional>
 
+#include "core/point_loads.h"
+
 namespace cablefilm {
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "core/cancel.h"
 #include "core/error.h"
-#include "core/relaxation.h"
+#include "core/step.h"
 #include "run/initial_state.h"
 #include "run/run.h"
 
@@ -58,20 +58,9 @@ void StartFrom(const SceneDef& scene, SystemRun& run, const std::vector<State>& 
 
 }  // namespace
 
-void StepSystemSpan(const Model& sys, Data& sd, const Inputs& in, double seconds,
-                    int steps) {
-  const double t0 = sd.t, dt = seconds / steps;
-  for (int k = 0; k < steps; ++k) {
-    ThrowIfCancelled(in.stop, "the simulation");
-    Step(sys, sd, in, dt);
-  }
-  sd.t = t0 + seconds;
-  for (LineData& d : sd.lines) d.state.t = sd.t;
-}
-
 void SystemRowStepper::Next() {
   // grid.dt is interval / steps_per_output (time_grid.cpp): the same steps as ever.
-  StepSystemSpan(sys_, sd_, in_, grid_.interval, grid_.steps_per_output);
+  StepSpan(sys_, sd_, in_, grid_.interval, grid_.steps_per_output);
   // Each row at exactly row x interval (no round-off drift over long runs).
   sd_.t = ++row_ * grid_.interval;
   for (LineData& d : sd_.lines) d.state.t = sd_.t;
@@ -88,7 +77,9 @@ std::vector<State> SystemStatics(const SceneDef& scene, const Model& sys,
   options.cancel = stop;
   options.relaxing = relaxing;
   options.solving = solving;
-  return SolveEquilibriumRelaxing(sys, in, SystemGrid(scene, sys).options, report, options);
+  options.relaxation = SystemGrid(scene, sys).options;
+  options.inputs = in;
+  return SolveEquilibrium(sys, report, options);
 }
 
 SystemRun PrepareSystemRun(const SceneDef& scene, Model sys, const CancelFlag* stop,
@@ -183,7 +174,7 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
   s.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   s.duration = sd.t;
   s.completed = completed && sd.t >= run.grid.end() - 1e-9 * run.grid.interval;
-  s.stats = sd.stats;
+  s.stats = ModelStepStats(run.sys, sd);
   for (int i = 0; i < nl; ++i) {
     RunSummary& l = run.lines[i];
     l.tolerance = s.tolerance;
@@ -192,8 +183,7 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
     l.rows = s.rows;
     l.completed = s.completed;
     l.failure = s.failure;
-    l.stats = sd.lines[i].step_stats();
-    l.stats.rejected = sd.stats.rejected;  // the system's steps are every line's
+    l.stats = LineStepStats(run.sys, sd, i);
     l.warnings = TrustWarnings(run.sys.lines[i], l.stats, true);
     for (const std::string& w : l.warnings)
       s.warnings.push_back("line \"" + run.sys.line_names[i] + "\": " + w);
@@ -222,26 +212,6 @@ void ExecuteSystemRun(SystemRun& run, const std::vector<std::vector<RowSink*>>& 
       s.min_tension_t = l.min_tension_t;
       s.min_tension_link = l.min_tension_link;
       s.min_tension_line = run.sys.line_names[i];
-    }
-  }
-  // Each line counts every iteration of the coupled solve: the system's are any line's.
-  s.stats.newton_iterations = nl > 0 ? run.lines[0].stats.newton_iterations : 0;
-  // The step range is every line's; the snaps are all lines' (the first unresolved one of the
-  // line that had the earliest).
-  for (int i = 0; i < nl; ++i) {
-    const StepRecord& r = run.lines[i].stats.record;
-    StepRecord& all = s.stats.record;
-    if (i == 0) {
-      all = r;
-      continue;
-    }
-    all.snaps += r.snaps;
-    all.unresolved_snaps += r.unresolved_snaps;
-    all.worst_snap_ratio = std::max(all.worst_snap_ratio, r.worst_snap_ratio);
-    if (r.first_unresolved_time >= 0 &&
-        (all.first_unresolved_time < 0 || r.first_unresolved_time < all.first_unresolved_time)) {
-      all.first_unresolved_time = r.first_unresolved_time;
-      all.first_unresolved_link = r.first_unresolved_link;
     }
   }
 }

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/data.h"
 #include "core/equilibrium.h"
-#include "core/coupled_step.h"
 #include "run/driver.h"
 #include "run/max_tension_log.h"
 #include "run/run_extent.h"
@@ -42,13 +42,6 @@ struct SystemRun {
   int peak_line = -1;                // the line holding summary.peak
   std::vector<std::vector<std::string>> section_materials;  // each line's (run.h)
 };
-
-// Advances the system by `seconds` [s] in `steps` equal steps (each adaptive within itself when
-// the grid's tolerance asks), polling in.stop; its time (every line's) then exactly t0 +
-// seconds. What a row of SystemRowStepper takes, and a frame of the live view. Throws
-// BlowUpError, CancelledError.
-void StepSystemSpan(const Model& sys, Data& sd, const Inputs& in, double seconds,
-                    int steps);
 
 // Steps a Data from row to row of a grid, as RowStepper steps a line: the run and the
 // film's second pass step alike, so that the film repeats the run step for step.

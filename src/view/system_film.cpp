@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/cancel.h"
+#include "core/step.h"
 #include "core/error.h"
 #include "scene/film_view.h"
 #include "scene/text_escape.h"

@@ -27,6 +27,18 @@
 namespace cablefilm {
 namespace {
 
+// The statics as a run finds them: Newton, and where it fails the relaxation's motion.
+std::vector<State> SolveRelaxing(const Model& sys, const StepOptions& step,
+                                 EquilibriumReport* report) {
+  EquilibriumOptions options;
+  options.relaxation = step;
+  options.inputs = SceneInputs(sys.lines[0]);
+  return SolveEquilibrium(sys, report, options);
+}
+
+}  // namespace
+namespace {
+
 const std::string kSource = CABLEFILM_SOURCE_DIR;
 const std::string kDir = kSource + "/tests/scenes/moordyn/";
 
@@ -444,7 +456,7 @@ TEST(MoorDynConvert, BodyGivenAboveItsAnchorHangsBelowIt) {
   step.tolerance = 1e-6 * 4.0;  // the default: 1e-6 of the line's length [m]
   EquilibriumReport report;
   const std::vector<State> states =
-      SolveEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, &report, {});
+      SolveRelaxing(sys, step, &report);
   EXPECT_GT(report.relaxed, 0.0);
   const double wet_line = (8.0 - 1025.0 * M_PI * 0.05 * 0.05 / 4) * 9.81;  // [N/m]
   const double body = (20.0 - 1025.0 * 0.004) * 9.81;                      // [N]
@@ -473,7 +485,7 @@ TEST(MoorDynConvert, FloatAtTheSurfaceIsRelaxedIntoEquilibrium) {
   step.tolerance = 1e-6 * 16.0;  // the default: 1e-6 of the longest line's length [m]
   EquilibriumReport report;
   const std::vector<State> states =
-      SolveEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, &report, {});
+      SolveRelaxing(sys, step, &report);
   EXPECT_GT(report.relaxed, 0.0);
   EXPECT_LE(report.residual, 1e-9 * report.force_scale);
   cablefilm::Vec anchors = cablefilm::Vec::Zero();  // the lines' pull on the fixed points [N]
@@ -508,7 +520,7 @@ std::string StaticsFailure(const MoorDynSystem& file) {
   step.scheme = Scheme::kImplicit;
   step.tolerance = 1e-6 * longest;
   try {
-    SolveEquilibriumRelaxing(sys, SceneInputs(sys.lines[0]), step, nullptr, {});
+    SolveRelaxing(sys, step, nullptr);
   } catch (const Error& e) {
     return e.what();
   }
