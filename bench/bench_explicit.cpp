@@ -17,6 +17,7 @@
 #include "run/time_grid.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "../tests/core/scene_line.h"
 
 using namespace cablefilm;
 
@@ -39,14 +40,14 @@ int main(int argc, char** argv) {
   }
   const SceneDef base = LoadScene(scene_path);
   int base_links = 0;
-  for (const SectionDef& s : base.sections) base_links += s.segments;
+  for (const SectionDef& s : base.lines[0].sections) base_links += s.segments;
   std::printf("case %s, %.4g s simulated, explicit scheme (central differences)\n",
               scene_path.c_str(), duration);
   std::printf("%7s %11s %10s %10s %12s %14s %12s %9s %s\n", "links", "dt [s]", "steps",
               "wall [s]", "equil [ms]", "station-steps/s", "peak T [N]", "at t [s]", "");
   for (int links : sizes) {
     SceneDef scene = base;
-    for (SectionDef& s : scene.sections) s.segments = s.segments * links / base_links;
+    for (SectionDef& s : scene.lines[0].sections) s.segments = s.segments * links / base_links;
     scene.simulation.duration = duration;
     scene.simulation.integrator = IntegratorChoice::kExplicit;
     scene.simulation.time_step = 0;  // auto: the stability limit
@@ -54,8 +55,9 @@ int main(int argc, char** argv) {
       scene.simulation.integrator = IntegratorChoice::kImplicit;
       scene.simulation.time_step = implicit_dt;
     }
-    const LineModel m = BuildModel(scene);
-    TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
+    Model model = BuildModel(scene);
+    const LineModel& m = model.lines.front();
+    TimeGrid grid = ChooseTimeGrid(model, scene.simulation, scene.output.interval);
     const double total_steps = static_cast<double>(grid.outputs) * grid.steps_per_output;
     bool projected = false;
     if (total_steps > max_steps) {
@@ -63,26 +65,26 @@ int main(int argc, char** argv) {
       projected = true;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    LineEquilibriumReport eq;
-    State state = MakeInitialState(scene, m, &eq);
+    EquilibriumReport report;
+    const std::vector<State> states = MakeInitialState(scene, model, grid, &report, nullptr);
     const auto t1 = std::chrono::steady_clock::now();
-    const Inputs in = SceneInputs(m);
-    LineData d = MakeLineData(m, in, grid.options, state);
+    const Inputs in = SceneInputs(model);
+    Data d = MakeData(model, in, grid.options, states);
     double peak = 0, peak_t = 0;
-    RowFunction sink([&](const LineData& row) {
-      if (row.tension().maxCoeff() > peak) {
-        peak = row.tension().maxCoeff();
-        peak_t = row.state.t;
+    RowFunction sink([&](const Data& row) {
+      if (row.lines.front().tension().maxCoeff() > peak) {
+        peak = row.lines.front().tension().maxCoeff();
+        peak_t = row.t;
       }
       return true;
     });
-    Drive(m, d, in, grid, {&sink});
+    Drive(model, d, in, grid, {&sink});
     const auto t2 = std::chrono::steady_clock::now();
     const double wall = std::chrono::duration<double>(t2 - t1).count();
     const double steps = static_cast<double>(grid.outputs) * grid.steps_per_output;
     const double rate = steps * (m.line.links + 1) / wall;
     const double eq_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-    const StepStats st = d.step_stats();
+    const StepStats st = ModelStepStats(model, d);
     if (st.newton_iterations)
       std::printf("   (%ld steps, %ld rejected, %.2f Newton iterations per step)\n", st.steps,
                   st.rejected, double(st.newton_iterations) / st.steps);

@@ -24,6 +24,7 @@
 #include "run/time_grid.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "../tests/core/scene_line.h"
 
 using namespace cablefilm;
 
@@ -47,8 +48,8 @@ double Median(std::vector<double> v) {
 SceneDef Resized(const SceneDef& base, int links, double duration) {
   SceneDef scene = base;
   int base_links = 0;
-  for (const SectionDef& s : base.sections) base_links += s.segments;
-  for (SectionDef& s : scene.sections) s.segments = s.segments * links / base_links;
+  for (const SectionDef& s : base.lines[0].sections) base_links += s.segments;
+  for (SectionDef& s : scene.lines[0].sections) s.segments = s.segments * links / base_links;
   scene.simulation.duration = duration;
   return scene;
 }
@@ -69,8 +70,8 @@ RunResult Run(const SceneDef& scene_in, IntegratorChoice kind, double max_steps,
   SceneDef scene = scene_in;
   scene.simulation.integrator = kind;
   scene.simulation.time_step = dt_override;
-  const LineModel m = BuildModel(scene);
-  TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
+  Model model = BuildModel(scene);
+  TimeGrid grid = ChooseTimeGrid(model, scene.simulation, scene.output.interval);
   RunResult r;
   r.dt = grid.dt;
   r.total_steps = static_cast<double>(grid.outputs) * grid.steps_per_output;
@@ -79,17 +80,17 @@ RunResult Run(const SceneDef& scene_in, IntegratorChoice kind, double max_steps,
     r.projected = true;
   }
   r.steps_run = static_cast<double>(grid.outputs) * grid.steps_per_output;
-  State state = MakeInitialState(scene, m, nullptr);
-  const Inputs in = SceneInputs(m);
-  LineData d = MakeLineData(m, in, grid.options, state);
-  RowFunction sink([&](const LineData& row) {
-    r.peak = std::max(r.peak, row.tension().maxCoeff());
+  const std::vector<State> states = MakeInitialState(scene, model, grid, nullptr, nullptr);
+  const Inputs in = SceneInputs(model);
+  Data d = MakeData(model, in, grid.options, states);
+  RowFunction sink([&](const Data& row) {
+    r.peak = std::max(r.peak, row.lines.front().tension().maxCoeff());
     return true;
   });
   const auto t0 = Clock::now();
-  Drive(m, d, in, grid, {&sink});
+  Drive(model, d, in, grid, {&sink});
   r.wall = std::chrono::duration<double>(Clock::now() - t0).count();
-  r.stats = d.step_stats();
+  r.stats = ModelStepStats(model, d);
   return r;
 }
 
@@ -122,12 +123,12 @@ int main(int argc, char** argv) {
   // Static equilibrium: median of several solves.
   for (int links : statics_sizes) {
     const SceneDef scene = Resized(base, links, duration);
-    const LineModel m = BuildModel(scene);
+    const LineModel m = LineOf(scene);
     std::vector<double> ms;
     LineEquilibriumReport rep;
     for (int i = 0; i < std::max(5, repeat); ++i) {
       const auto t0 = Clock::now();
-      MakeInitialState(scene, m, &rep);
+      InitialStateOf(scene, &rep);
       ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
     }
     std::printf("static equilibrium, %d links: %.3f ms (median of %zu), %d Newton iterations\n",

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "run/system_run.h"
+#include "run/run.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 
@@ -57,9 +57,9 @@ int main(int argc, char** argv) {
   std::vector<double> cpu;
   long steps = 0;
   for (int k = 0; k < repeats; ++k) {
-    SystemRun run = PrepareSystemRun(scene, BuildSystem(scene), nullptr);
+    Run run = PrepareRun(scene, BuildModel(scene), "elastic", nullptr);
     const std::clock_t c0 = std::clock();
-    ExecuteSystemRun(run, {}, {});
+    ExecuteRun(run, {});
     cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
     const RunSummary& s = run.summary;
     steps = s.stats.steps;

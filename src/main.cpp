@@ -17,7 +17,6 @@
 
 #include "app/body_commands.h"
 #include "app/commands.h"
-#include "app/system_command.h"
 #include "app/sweep_command.h"
 #include "core/version.h"
 #ifdef CABLEFILM_LIVE

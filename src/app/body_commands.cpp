@@ -9,7 +9,7 @@
 #include "core/body_statics.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
-#include "run/system_run.h"
+#include "run/initial_state.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "scene/text_escape.h"
@@ -35,16 +35,17 @@ int FindBody(const SceneDef& scene, const Model& sys, const std::string& name) {
               names + ")");
 }
 
-Model LoadSystem(const std::string& scene_path, SceneDef* scene) {
+Model LoadWithBodies(const std::string& scene_path, SceneDef* scene) {
   *scene = LoadScene(scene_path);
-  if (!scene->is_system())
-    throw Error(scene_path + ": a single line has no body: the quasi-static tools take a system "
-                             "([[line]], [[point]] and [[body]])");
-  return BuildSystem(*scene);
+  Model model = BuildModel(*scene);
+  if (model.bodies.empty())
+    throw Error(scene_path + ": the scene has no body: the quasi-static tools take a scene with "
+                             "a [[body]] its lines end on");
+  return model;
 }
 
-// The system's equilibrium as `run` finds it (run/system_run.h); `options` then start each
-// held pose's statics from it.
+// The model's equilibrium as `run` finds it (run/initial_state.h, without the bodies' initial
+// offsets); `options` then start each held pose's statics from it.
 struct Equilibrium {
   EquilibriumReport report;
   std::vector<State> states;
@@ -54,8 +55,13 @@ struct Equilibrium {
 void FindEquilibrium(const SceneDef& scene, const Model& sys, Equilibrium& e) {
   InstallSignalHandlers();
   StaticsProgress progress;
-  e.states = SystemStatics(scene, sys, &e.report, &g_signal, progress.relaxing(),
-                           progress.solving());
+  SceneDef at_rest = scene;
+  at_rest.initial = InitialStateKind::kEquilibrium;
+  Model model = sys;
+  for (BodySpec& b : model.bodies) b.initial_offset = Vec6::Zero();
+  const TimeGrid grid = ChooseTimeGrid(model, scene.simulation, scene.output.interval);
+  e.states = MakeInitialState(at_rest, model, grid, &e.report, &g_signal,
+                              {progress.relaxing(), progress.solving()});
   e.options.cancel = &g_signal;
   e.options.guess = &e.states;
   e.options.guess_poses = e.report.body_poses.data();
@@ -72,7 +78,7 @@ void PrintPose(const char* what, const Vec6& pose) {
 
 int StiffnessCommand(const std::string& scene_path, const std::string& body) {
   SceneDef scene;
-  const Model sys = LoadSystem(scene_path, &scene);
+  const Model sys = LoadWithBodies(scene_path, &scene);
   const int b = FindBody(scene, sys, body);
   Equilibrium e;
   FindEquilibrium(scene, sys, e);
@@ -94,7 +100,7 @@ int StiffnessCommand(const std::string& scene_path, const std::string& body) {
 
 int OffsetCommand(const std::string& scene_path, const OffsetOptions& o) {
   SceneDef scene;
-  const Model sys = LoadSystem(scene_path, &scene);
+  const Model sys = LoadWithBodies(scene_path, &scene);
   const int b = FindBody(scene, sys, o.body);
   Equilibrium e;
   FindEquilibrium(scene, sys, e);

@@ -30,7 +30,7 @@ class ProgressLine {
 // The progress lines of a system's statics, against their bounds (the time left is at most
 // what they show): while Newton balances the shared points and bodies, then while the
 // relaxation moves the system (core/relaxation.h). `solving` and `relaxing` are what
-// run/system_run.h's SystemStatics takes.
+// run/initial_state.h's MakeInitialState takes (StaticsCallbacks).
 class StaticsProgress {
  public:
   std::function<void(double)> solving() {

@@ -27,7 +27,6 @@
 #include "io/run_report_file.h"
 #include "run/run.h"
 #include "run/sweep.h"
-#include "run/system_run.h"
 #include "scene/build_model.h"
 #include "scene/scene_edit.h"
 #include "scene/scene_limits.h"
@@ -104,10 +103,7 @@ std::vector<std::string> ChildRunOptions(const RunOptions& o) {
 // every value in range), the built model's limits, and the film's settings when on.
 void ValidateCase(const std::string& text, const std::string& path, const RunOptions& o) {
   const SceneDef scene = ParseScene(text, path);
-  if (scene.is_system())
-    BuildSystem(scene);  // its lines, points and bodies hold together
-  else
-    CheckModelLimits(scene, BuildModel(scene));
+  CheckModelLimits(scene, BuildModel(scene));
   if (o.film == 1) ResolveFilm(scene, o, kCommandLineNames);
 }
 
@@ -116,14 +112,9 @@ void ValidateCase(const std::string& text, const std::string& path, const RunOpt
 CaseOutcome RunCaseInProcess(const std::string& text, const std::string& path,
                              const CancelFlag* stop) {
   const SceneDef scene = ParseScene(text, path);
-  if (scene.is_system()) {
-    SystemRun run = PrepareSystemRun(scene, BuildSystem(scene), stop);
-    ExecuteSystemRun(run, std::vector<std::vector<RowSink*>>(run.sys.lines.size()), {});
-    return OutcomeOf(run.summary, *stop != 0);
-  }
-  const LineModel m = BuildModel(scene);
-  CheckModelLimits(scene, m);
-  Run run = PrepareRun(scene, m, LawName(m.line.law), stop);
+  const Model model = BuildModel(scene);
+  CheckModelLimits(scene, model);
+  Run run = PrepareRun(scene, model, ModelLawName(model), stop);
   ExecuteRun(run, {});
   return OutcomeOf(run.summary, *stop != 0);
 }

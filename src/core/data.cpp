@@ -14,14 +14,11 @@ Data MakeData(const Model& model, const Inputs& in, const StepOptions& options,
   const int nl = static_cast<int>(model.lines.size());
   if (static_cast<int>(states.size()) != nl)
     throw Error("MakeData: one state per line is needed");
-  for (const Island& isl : model.islands)
-    if (isl.coupled() && options.scheme == Scheme::kInextensible)
-      throw Error("line \"" + model.line_names[isl.lines.front()] + "\": the inextensible "
-                  "scheme steps a line between points that hold it, not lines joined to others "
-                  "or to a free body");
   Data d;
   d.t = nl > 0 ? states[0].t : 0.0;
-  for (int i = 0; i < nl; ++i) d.lines.push_back(MakeLineData(model.lines[i], in, options, states[i]));
+  for (int i = 0; i < nl; ++i)
+    d.lines.push_back(MakeLineData(model.lines[i], in, LineStepOptions(options, model.lines[i]),
+                                   states[i]));
   for (int b : model.free_bodies) {
     const BodySpec& body = model.bodies[b];
     Vec6 inertia;

@@ -72,10 +72,11 @@ struct Data {
 };
 
 // The Data of each line at `states` (shared stations equal in every line that holds them; the
-// free bodies at their poses in model.body_poses, at rest) under `options`: an island of one
-// line as MakeLineData makes it (any scheme); a coupled island's shared stations and free
-// bodies accelerated by the sum of their rows. Throws Error for the inextensible scheme on a
-// coupled island, BlowUpError for a state that is not sane.
+// free bodies at their poses in model.body_poses, at rest) under the model's `options`, each
+// line with its own of them (LineStepOptions: an inextensible line's scheme is its own): an
+// island of one line as MakeLineData makes it; a coupled island's shared stations and free
+// bodies accelerated by the sum of their rows. Throws BlowUpError for a state that is not
+// sane, Error for a free body without mass.
 Data MakeData(const Model& model, const Inputs& in, const StepOptions& options,
               const std::vector<State>& states);
 

@@ -5,6 +5,8 @@
 
 namespace cablefilm {
 
+Inputs SceneInputs(const Model& m) { return SceneInputs(m.lines.front()); }
+
 double HeadingOf(const Vec& direction) { return std::atan2(direction[2], direction[0]); }
 
 Inputs SceneInputs(const LineModel& m) {

@@ -7,6 +7,7 @@
 // and the wave it holds over the step, at its middle) and the ends' motion at every stage.
 #include "core/cancel.h"
 #include "core/line_model.h"
+#include "core/model.h"
 #include "core/smooth_schedule.h"
 
 namespace cablefilm {
@@ -35,8 +36,10 @@ inline bool ClockAsScene(const Inputs& in) {
   return in.end_clock.constant() && in.end_clock.target() == 1.0;
 }
 
-// The model's own inputs: its current and waves, its ends as the scene moves them.
+// The model's own inputs: its current and waves, its ends as the scene moves them (one
+// environment: any line's are the model's).
 Inputs SceneInputs(const LineModel& m);
+Inputs SceneInputs(const Model& m);
 
 // The heading [rad] from +x towards +z of a horizontal direction.
 double HeadingOf(const Vec& direction);

@@ -69,6 +69,20 @@ LineData MakeLineData(const LineModel& m, const Inputs& in, const StepOptions& o
   return d;
 }
 
+StepOptions LineStepOptions(const StepOptions& model, const LineModel& m) {
+  StepOptions o = model;
+  if (m.line.law == LinkLaw::kInextensible) {
+    o.scheme = Scheme::kInextensible;
+    o.safety_factor = 0;
+    o.explicit_snaps = false;
+    o.start_tolerance = 0;
+    o.start_end = 0;
+  } else if (o.scheme == Scheme::kInextensible) {
+    o.scheme = Scheme::kImplicit;
+  }
+  return o;
+}
+
 std::string SchemeName(const LineModel& m, const StepOptions& o) {
   std::ostringstream os;
   switch (o.scheme) {

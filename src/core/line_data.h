@@ -132,6 +132,11 @@ struct LineData {
   }
 };
 
+// The options line m takes of a model's (a run's, one for all its lines): an inextensible line
+// the inextensible scheme (with the model's tolerance; the implicit scheme's start, snaps and
+// explicit substeps are not its), an elastic one the model's explicit or implicit scheme.
+StepOptions LineStepOptions(const StepOptions& model, const LineModel& m);
+
 // The LineData of `state` under `options`: its accelerations and tensions computed (in the water of
 // the inputs at state.t), the scratch sized. Throws BlowUpError if the state is not finite or
 // a link is stretched beyond any physical meaning.

@@ -17,8 +17,8 @@ namespace cablefilm {
 
 NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
                                          const LineModel& m, const State& initial,
-                                         const Eigen::VectorXd& initial_tension)
-    : path_(path), temp_path_(path + ".tmp" + std::to_string(::getpid())) {
+                                         const Eigen::VectorXd& initial_tension, int line)
+    : LineResultsNc(line), path_(path), temp_path_(path + ".tmp" + std::to_string(::getpid())) {
   KeepFreedMemoryForTheCompressor();
   SkipHdf5CleanupAtExit();
   try {

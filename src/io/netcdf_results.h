@@ -44,7 +44,7 @@ class NetcdfResultsWriter : public LineResultsNc {
   // Creates `path`'s temporary file and writes what does not change over time. Throws Error.
   NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
                       const LineModel& m, const State& initial,
-                      const Eigen::VectorXd& initial_tension);
+                      const Eigen::VectorXd& initial_tension, int line = 0);
   ~NetcdfResultsWriter() override;  // uncommitted: the rows not yet written are dropped, the
                            // file removed
   NetcdfResultsWriter(const NetcdfResultsWriter&) = delete;

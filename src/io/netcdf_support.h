@@ -1,7 +1,7 @@
 #pragma once
 // What the NetCDF-4 result files share: the error check, text attributes, the global
 // attributes, and the process settings HDF5 and zlib need (io/netcdf_results.h, a line's file;
-// io/system_netcdf.h, a system's).
+// io/model_netcdf.h, a system's).
 #include <string>
 
 #include "io/results_nc.h"  // NetcdfResultsInfo

@@ -6,20 +6,20 @@
 
 #include "core/point_loads.h"
 #include "io/atomic_file.h"
-#include "run/system_run.h"
+#include "run/driver.h"
 
 namespace cablefilm {
 
-class PointsWriter : public SystemRowSink {
+class PointsWriter : public RowSink {
  public:
-  PointsWriter(const std::string& path, const Model& sys, const Inputs& in);
-  bool Row(const Data& sd) override;
+  PointsWriter(const std::string& path, const Model& model, const Inputs& in);
+  bool Row(const Data& d) override;
   void Commit() { file_.Commit(); }
   void CommitPartial(const std::string& path) { file_.CommitAs(path); }
 
  private:
   AtomicFile file_;
-  const Model& sys_;
+  const Model& model_;
   const Inputs& in_;
   PointLoads loads_;
 };

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/line_model.h"
-#include "core/line_data.h"
+#include "core/data.h"
 #include "core/end_loads.h"
 #include "io/atomic_file.h"
 #include "run/driver.h"
@@ -18,9 +18,11 @@ void WriteEquilibriumCsv(const std::string& path, const LineModel& m, const Stat
                          const Eigen::VectorXd& tension);
 
 // Removes the result files an earlier run may have left in `out_dir` (only the names a run
-// writes: equilibrium*.csv, timeseries*.csv, results*[.partial].nc, film[.partial].mp4,
-// max_tension[.partial].png, frames/frame_*.png), so that stale results never sit beside new
-// ones. Throws Error.
+// writes: equilibrium*.csv, timeseries*.csv, results*[.partial].nc, run_report*.toml,
+// points*.csv, body*.csv, film[.partial].mp4, max_tension[.partial].png, frames/frame_*.png,
+// and in each folder of lines/ a line's own of those; a folder of lines/ left empty by that,
+// and lines/ itself then, too), so that stale results never sit beside new ones and nothing
+// else is touched. Throws Error.
 void RemoveEarlierResults(const std::string& out_dir);
 
 // One row of timeseries.csv, and its header line (shared with the live view's /timeseries.csv).
@@ -33,22 +35,24 @@ extern const char kUtilisationColumn[];  // ",utilisation_max", no newline
 void WriteTimeseriesRow(std::FILE* f, const LineModel& m, const LineData& d, const Inputs& in,
                         EndLoads& ends, bool utilisation = false);
 
-// timeseries.csv: t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max, then the
-// end loads fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end, and
-// utilisation_max when the line has a breaking load; a run's rows as they come. With
-// `row_ends`, each row's end loads as a sink before this one computed them (Run::row_ends):
-// they cost as much as a tenth of the simulation, and are not computed twice.
+// timeseries.csv of line `line` of the rows' Data (`m` its model): t,x_end,y_end,z_end,
+// tension_start,tension_end,tension_max,link_max, then the end loads fx_start,fy_start,
+// fz_start,fx_end,fy_end,fz_end,angle_start,angle_end, and utilisation_max when the line has
+// a breaking load; a run's rows as they come. With `row_ends`, each row's end loads as a sink
+// before this one computed them (LineRecord::row_ends): they cost as much as a tenth of the
+// simulation, and are not computed twice.
 class TimeseriesWriter : public RowSink {
  public:
-  TimeseriesWriter(const std::string& path, const LineModel& m, const Inputs& in,
+  TimeseriesWriter(const std::string& path, const LineModel& m, int line, const Inputs& in,
                    const EndLoads* row_ends = nullptr);
-  bool Row(const LineData& d) override;
+  bool Row(const Data& d) override;
   void Commit();                                  // the complete file, under its name
   void CommitPartial(const std::string& path);    // an incomplete run, under another name
 
  private:
   AtomicFile file_;
   const LineModel& m_;
+  int line_;
   const Inputs& in_;
   EndLoads ends_;                       // computed here, without row_ends
   const EndLoads* row_ends_ = nullptr;  // else these

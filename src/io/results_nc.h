@@ -1,6 +1,6 @@
 #pragma once
 // results.nc (NetCDF-4) as the runs see it: a sink of rows, committed whole or under a partial
-// name. The writers (io/netcdf_results.h, a line's; io/system_netcdf.h, a system's) link
+// name. The writers (io/netcdf_results.h, a line's; io/model_netcdf.h, a system's) link
 // libnetcdf and HDF5, which take 25 ms to load: the program reaches them through a module it
 // loads when a run writes results.nc (src/modules/), the tests and the Python module directly
 // (io/results_nc_direct.cpp). Either way the Open functions below.
@@ -8,12 +8,10 @@
 #include <memory>
 #include <string>
 
-#include "core/line_data.h"
+#include "core/data.h"
 #include "core/inputs.h"
-#include "core/line_model.h"
 #include "core/model.h"
 #include "run/driver.h"
-#include "run/system_run.h"
 
 namespace cablefilm {
 
@@ -33,35 +31,41 @@ struct NetcdfResultsInfo {
   bool planar = false;
 };
 
-// A line's results.nc: every row's positions and tensions.
+// A line's results.nc: every row's positions and tensions (of the Data's line `line`).
 class LineResultsNc : public RowSink {
  public:
+  explicit LineResultsNc(int line = 0) : line_(line) {}
   // One output row. Throws Error on a write error (of this row or of an earlier chunk).
   virtual void Append(const State& state, const Eigen::VectorXd& tension) = 0;
-  bool Row(const LineData& d) override {
-    Append(d.state, d.tension());
+  bool Row(const Data& d) override {
+    Append(d.lines[line_].state, d.lines[line_].tension());
     return true;
   }
   // Writes the rows still waiting, closes and renames; throws Error on a write error.
   virtual void Commit() = 0;                                // the complete file, under its name
   virtual void CommitPartial(const std::string& path) = 0;  // an incomplete run, another name
+
+ private:
+  int line_;
 };
 
-// A system's results.nc: points, lines' end tensions, bodies.
-class SystemResultsNc : public SystemRowSink {
+// The results.nc of a model of several lines: points, lines' end tensions, bodies.
+class ModelResultsNc : public RowSink {
  public:
   virtual void Commit() = 0;
   virtual void CommitPartial(const std::string& path) = 0;
 };
 
 // Create `path`'s temporary file and write what does not change over time. Throw Error. The
-// objects keep references to `m`, `sys` and `in`, which must outlive them.
+// objects keep references to `model` and `in`, which must outlive them. A line's file holds
+// line `line` of the rows' Data (`m` its model).
 std::unique_ptr<LineResultsNc> OpenLineResultsNc(const std::string& path,
                                                  const NetcdfResultsInfo& info, const LineModel& m,
                                                  const State& initial,
-                                                 const Eigen::VectorXd& initial_tension);
-std::unique_ptr<SystemResultsNc> OpenSystemResultsNc(const std::string& path,
+                                                 const Eigen::VectorXd& initial_tension,
+                                                 int line = 0);
+std::unique_ptr<ModelResultsNc> OpenModelResultsNc(const std::string& path,
                                                      const NetcdfResultsInfo& info,
-                                                     const Model& sys, const Inputs& in);
+                                                     const Model& model, const Inputs& in);
 
 }  // namespace cablefilm

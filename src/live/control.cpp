@@ -76,13 +76,9 @@ CameraRequest ReadCamera(const Json& v) {
 const std::vector<std::string>& ControlFields() {
   static const std::vector<std::string> fields{
       "pause", "step", "restart", "speed", "amplitude_scale", "period",
-      "current", "current_heading", "wave_height", "wave_period", "wave_heading", "colormap",
-      "lock_range", "reset_range", "tension_range", "record", "camera"};
-  return fields;
-}
-
-const std::vector<std::string>& SystemControlFields() {
-  static const std::vector<std::string> fields{"offset_x", "offset_z", "force_x", "force_z"};
+      "current", "current_heading", "wave_height", "wave_period", "wave_heading", "offset_x",
+      "offset_z", "force_x", "force_z", "colormap", "lock_range", "reset_range",
+      "tension_range", "record", "camera"};
   return fields;
 }
 
@@ -121,11 +117,9 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
       r.speed = ReadNumber(v, "speed", limits.speed_min, limits.speed_max,
                            " (simulated seconds per second)");
     } else if (key == "amplitude_scale" || key == "period") {
-      if (limits.system)
-        throw ControlError(key + ": not a control of a system (its points move as the scene "
-                           "says; offset_x and offset_z move its vessel)");
       if (!limits.has_driven_end)
-        throw ControlError(key + ": the scene has no driven end (an end with motion = \"trochoid\" or \"table\")");
+        throw ControlError(key + ": the scene has no driven end (an end or a point with motion "
+                           "= \"trochoid\", \"table\" or \"wave\")");
       if (key == "period")
         r.period = ReadNumber(v, "period", limits.period_min, limits.period_max, " s");
       else
@@ -149,22 +143,17 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
       r.wave_heading = ReadNumber(v, "wave_heading", -limits.heading_max, limits.heading_max,
                                   " degrees from +x towards +z (the way the waves travel)");
     } else if (key == "offset_x" || key == "offset_z") {
-      if (!limits.system)
-        throw ControlError(key + ": a system's control (a scene of [[line]], [[point]] and "
-                           "[[body]] tables); this scene is a single line");
       if (!limits.has_vessel)
-        throw ControlError(key + ": the system has no vessel to move (no point with a motion, "
-                           "no driven or held body; a free body goes where its loads put it)");
+        throw ControlError(key + ": the scene has no vessel to move (no end or point with a "
+                           "motion, no driven or held body; a free body goes where its loads "
+                           "put it)");
       (key == "offset_x" ? r.offset_x : r.offset_z) =
           ReadNumber(v, key.c_str(), -limits.offset_max, limits.offset_max,
                      " m (the vessel's offset from the scene's position)");
     } else if (key == "force_x" || key == "force_z") {
-      if (!limits.system)
-        throw ControlError(key + ": a system's control (a scene of [[line]], [[point]] and "
-                           "[[body]] tables); this scene is a single line");
       if (!limits.has_free_body)
-        throw ControlError(key + ": the system has no free body to push (offset_x and "
-                           "offset_z move a vessel that the scene moves)");
+        throw ControlError(key + ": the scene has no free body to push (offset_x and offset_z "
+                           "move a vessel that the scene moves)");
       (key == "force_x" ? r.force_x : r.force_z) =
           ReadNumber(v, key.c_str(), -limits.force_max, limits.force_max,
                      " N (an extra steady force on the free bodies)");
@@ -203,8 +192,6 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
     } else {
       std::string names;
       for (const std::string& n : ControlFields()) names += (names.empty() ? "" : ", ") + n;
-      if (limits.system)
-        for (const std::string& n : SystemControlFields()) names += ", " + n;
       throw ControlError("unknown field " + Shown(Json(key)) + "; expected any of " + names);
     }
   }

@@ -26,10 +26,9 @@ struct ControlLimits {
   double wave_period_min = 0, wave_period_max = 0;  // the waves' period range [s]
   std::vector<std::string> colormaps;       // the known colour maps
   bool space = false;                       // drawn in 3D: the camera can be moved
-  bool system = false;                      // a system of lines (no amplitude, no period)
-  bool has_vessel = false;                  // a system whose vessel can be offset
+  bool has_vessel = false;                  // points a vessel carries: offset_x, offset_z
   double offset_max = 0;                    // |offset_x|, |offset_z| [m]
-  bool has_free_body = false;               // a system with a free body: force_x, force_z
+  bool has_free_body = false;               // a free body: force_x, force_z
   double force_max = 0;                     // |force_x|, |force_z| [N]
 };
 
@@ -49,8 +48,8 @@ struct ControlRequest {
   std::optional<double> wave_height;                 // H [m], crest to trough
   std::optional<double> wave_period;                 // T [s]
   std::optional<double> wave_heading;                // the way they travel [deg] from +x to +z
-  std::optional<double> offset_x, offset_z;          // a system's vessel offset [m] (y is up)
-  std::optional<double> force_x, force_z;            // on a system's free bodies [N]
+  std::optional<double> offset_x, offset_z;          // the vessel's offset [m] (y is up)
+  std::optional<double> force_x, force_z;            // on the free bodies [N]
   std::optional<std::string> colormap;
   std::optional<bool> lock_range;                    // freeze the colour range (or let it grow)
   bool reset_range = false;  // unlock the range and start it again from the tensions now
@@ -70,9 +69,7 @@ constexpr std::size_t kMaxControlBytes = 4096;  // a control is a few fields: re
 // Throws ControlError with the message the viewer gets (HTTP 400).
 ControlRequest ParseControl(const std::string& body, const ControlLimits& limits);
 
-// The field names, in the order of the messages; a system's live view also takes
-// SystemControlFields().
+// The field names, in the order of the messages.
 const std::vector<std::string>& ControlFields();
-const std::vector<std::string>& SystemControlFields();
 
 }  // namespace cablefilm

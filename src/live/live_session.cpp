@@ -30,14 +30,13 @@ using Clock = std::chrono::steady_clock;
 // The live view's lines as the film would draw them (a line alone with no name, a system's
 // named, its points marked), in space or in the plane as `view` says (empty: the scene's
 // film.view).
-SceneView MakeLiveScene(const SceneDef& scene, const LivePhysics& sim, const std::string& view) {
+SceneView MakeLiveScene(const SceneDef& scene, const LiveSimulation& sim, const std::string& view) {
   return sim.MakeView(scene, view.empty() ? scene.film.view : view);
 }
 
-ControlLimits MakeLimits(const LivePhysics& sim) {
+ControlLimits MakeLimits(const LiveSimulation& sim) {
   ControlLimits l;
   l.has_driven_end = sim.has_driven_end();
-  l.system = sim.is_system();
   l.has_vessel = sim.has_vessel();
   l.offset_max = sim.offset_max();
   l.has_free_body = sim.has_free_body();
@@ -48,8 +47,8 @@ ControlLimits MakeLimits(const LivePhysics& sim) {
     l.period_max = sea.period * 10;
   }
   l.current_max = std::max(3.0, 2 * std::abs(sea.current));
-  if (sim.model().has_waves()) {  // up to the breaking height (Miche's, as the scene's check)
-    const Wave& w = sim.model().env.wave;
+  if (sim.has_waves()) {  // up to the breaking height (Miche's, as the scene's check)
+    const Wave& w = sim.model().lines.front().env.wave;
     l.has_waves = true;
     l.wave_height_max = w.breaking_height();
     // A third to three times the scene's period, within 1 s to 60 s (a shorter period lowers
@@ -84,7 +83,7 @@ const char* EndKindName(const EndMotion& m) {
 LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
     : scene_(scene),
       options_(options),
-      sim_(MakeLivePhysics(scene, options.stop)),
+      sim_(std::make_unique<LiveSimulation>(scene, options.stop)),
       view_(MakeLiveScene(scene, *sim_, options.view)),
       speed_(options.speed),
       colormap_(options.colormap.empty() ? scene.film.colormap : options.colormap),
@@ -103,9 +102,10 @@ LiveSession::LiveSession(const SceneDef& scene, const LiveOptions& options)
     throw Error("live: --speed must be in [0.1, 10], got " + std::to_string(speed_));
   Colormap check(colormap_);  // an unknown name fails here, naming the known ones
   targets_ = sim_->scene_sea();  // as a restart sets them (the simulation is at its start)
-  if (!sim_->is_system()) {  // a system's ends are its points, named in the picture
-    start_kind_ = EndKindName(sim_->model().end_motion(0));
-    end_kind_ = EndKindName(sim_->model().end_motion(sim_->model().line.links));
+  if (sim_->line_count() == 1) {  // several lines' ends are their points, named in the picture
+    const LineModel& line = sim_->model().lines.front();
+    start_kind_ = EndKindName(line.end_motion(0));
+    end_kind_ = EndKindName(line.end_motion(line.line.links));
   }
   {
     std::lock_guard<std::mutex> lock(mu_);
@@ -190,7 +190,7 @@ void LiveSession::ApplyPending() {
     Pending left;  // what the ramps could not take yet
     left.seq = p.seq;
     // A change the ramps take is marked on the time plot; one they refuse waits in `left`.
-    auto apply = [&](const std::optional<double>& wanted, bool (LivePhysics::*set)(double),
+    auto apply = [&](const std::optional<double>& wanted, bool (LiveSimulation::*set)(double),
                      std::optional<double>& refused, const char* label, const char* format,
                      const char* unit) {
       if (!wanted) return;
@@ -199,22 +199,22 @@ void LiveSession::ApplyPending() {
       else
         refused = wanted;
     };
-    apply(p.amplitude_scale, &LivePhysics::SetAmplitudeScale, left.amplitude_scale,
+    apply(p.amplitude_scale, &LiveSimulation::SetAmplitudeScale, left.amplitude_scale,
           "amplitude \u00d7", "%.2f", "");
-    apply(p.period, &LivePhysics::SetPeriod, left.period, "period ", "%.3g", " s");
-    apply(p.current, &LivePhysics::SetCurrent, left.current, "current ", "%.2f", " m/s");
-    apply(p.current_heading, &LivePhysics::SetCurrentHeading, left.current_heading,
+    apply(p.period, &LiveSimulation::SetPeriod, left.period, "period ", "%.3g", " s");
+    apply(p.current, &LiveSimulation::SetCurrent, left.current, "current ", "%.2f", " m/s");
+    apply(p.current_heading, &LiveSimulation::SetCurrentHeading, left.current_heading,
           "current heading ", "%.4g", "\u00b0");
-    apply(p.wave_height, &LivePhysics::SetWaveHeight, left.wave_height, "wave height ", "%.2f",
+    apply(p.wave_height, &LiveSimulation::SetWaveHeight, left.wave_height, "wave height ", "%.2f",
           " m");
-    apply(p.wave_period, &LivePhysics::SetWavePeriod, left.wave_period, "wave period ", "%.3g",
+    apply(p.wave_period, &LiveSimulation::SetWavePeriod, left.wave_period, "wave period ", "%.3g",
           " s");
-    apply(p.wave_heading, &LivePhysics::SetWaveHeading, left.wave_heading, "wave heading ",
+    apply(p.wave_heading, &LiveSimulation::SetWaveHeading, left.wave_heading, "wave heading ",
           "%.4g", "\u00b0");
-    apply(p.offset_x, &LivePhysics::SetOffsetX, left.offset_x, "offset x ", "%.3g", " m");
-    apply(p.offset_z, &LivePhysics::SetOffsetZ, left.offset_z, "offset z ", "%.3g", " m");
-    apply(p.force_x, &LivePhysics::SetForceX, left.force_x, "force x ", "%.3g", " N");
-    apply(p.force_z, &LivePhysics::SetForceZ, left.force_z, "force z ", "%.3g", " N");
+    apply(p.offset_x, &LiveSimulation::SetOffsetX, left.offset_x, "offset x ", "%.3g", " m");
+    apply(p.offset_z, &LiveSimulation::SetOffsetZ, left.offset_z, "offset z ", "%.3g", " m");
+    apply(p.force_x, &LiveSimulation::SetForceX, left.force_x, "force x ", "%.3g", " N");
+    apply(p.force_z, &LiveSimulation::SetForceZ, left.force_z, "force z ", "%.3g", " N");
     if (left.amplitude_scale || left.period || left.current || left.current_heading ||
         left.wave_height || left.wave_period || left.wave_heading || left.offset_x ||
         left.offset_z || left.force_x || left.force_z)
@@ -687,34 +687,35 @@ std::string LiveSession::StateJsonLocked() const {
                   {"wave_period", {limits_.wave_period_min, limits_.wave_period_max}},
                   {"wave_heading", {-limits_.heading_max, limits_.heading_max}}}},
   };
-  j["system"] = sim_->is_system();
-  if (sim_->is_system()) {  // each line's numbers now and its peak, the vessel's offset
-    Json lines = Json::array();
-    for (std::size_t i = 0; i < lines_now_.size() && i < view_.lines.size(); ++i) {
-      const LineNumbers& n = lines_now_[i];
-      lines.push_back({{"name", view_.lines[i].label}, {"start", Finite(n.start)},
-                       {"end", Finite(n.end)}, {"max", Finite(n.max)}, {"link_max", n.link_max},
-                       {"peak", Finite(history_.peak(i))}, {"peak_t", Finite(history_.peak_t(i))}});
-    }
-    j["lines"] = lines;
-    std::size_t top = 0;  // the peak of all lines so far, and its line
+  // Each line's numbers now and its peak (the picture names them), the vessel's offset and the
+  // free bodies' extra force.
+  Json lines = Json::array();
+  for (std::size_t i = 0; i < lines_now_.size() && i < view_.lines.size(); ++i) {
+    const LineNumbers& n = lines_now_[i];
+    lines.push_back({{"name", view_.lines[i].label}, {"start", Finite(n.start)},
+                     {"end", Finite(n.end)}, {"max", Finite(n.max)}, {"link_max", n.link_max},
+                     {"peak", Finite(history_.peak(i))}, {"peak_t", Finite(history_.peak_t(i))}});
+  }
+  j["lines"] = lines;
+  if (lines_now_.size() > 1) {  // the peak of all lines so far, and its line
+    std::size_t top = 0;
     for (std::size_t i = 0; i < view_.lines.size(); ++i)
       if (history_.has_peak(i) && !(history_.peak(i) <= history_.peak(top))) top = i;
     j["peak"] = {{"value", Finite(history_.peak(top))}, {"t", history_.peak_t(top)},
                  {"link", history_.peak_link(top)}, {"line", view_.lines[top].label}};
-    j["has_offset"] = limits_.has_vessel;
-    j["offset_x"] = targets_.offset_x;
-    j["offset_z"] = targets_.offset_z;
-    j["offset_x_now"] = Finite(offset_x_now_);
-    j["offset_z_now"] = Finite(offset_z_now_);
-    j["limits"]["offset"] = {-limits_.offset_max, limits_.offset_max};
-    j["has_force"] = limits_.has_free_body;
-    j["force_x"] = targets_.force_x;
-    j["force_z"] = targets_.force_z;
-    j["force_x_now"] = Finite(force_x_now_);
-    j["force_z_now"] = Finite(force_z_now_);
-    j["limits"]["force"] = {-limits_.force_max, limits_.force_max};
   }
+  j["has_offset"] = limits_.has_vessel;
+  j["offset_x"] = targets_.offset_x;
+  j["offset_z"] = targets_.offset_z;
+  j["offset_x_now"] = Finite(offset_x_now_);
+  j["offset_z_now"] = Finite(offset_z_now_);
+  j["limits"]["offset"] = {-limits_.offset_max, limits_.offset_max};
+  j["has_force"] = limits_.has_free_body;
+  j["force_x"] = targets_.force_x;
+  j["force_z"] = targets_.force_z;
+  j["force_x_now"] = Finite(force_x_now_);
+  j["force_z_now"] = Finite(force_z_now_);
+  j["limits"]["force"] = {-limits_.force_max, limits_.force_max};
   if (!error_.empty()) j["error"] = error_;
   if (!render_error_.empty()) j["render_error"] = render_error_;
   if (!record_error_.empty()) j["record_error"] = record_error_;

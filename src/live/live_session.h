@@ -21,7 +21,7 @@
 
 #include "encode/image.h"
 #include "live/control.h"
-#include "live/live_physics.h"
+#include "live/live_simulation.h"
 #include "live/row_log.h"
 #include "scene/scene_def.h"
 #include "view/camera.h"
@@ -124,8 +124,8 @@ class LiveSession {
   const LiveOptions options_;
   std::string start_kind_, end_kind_;  // "fixed", "moving" or "free", as the film names them
   ControlLimits limits_;
-  // A line's or a system's (live_physics.h); owned by the simulation thread once it runs.
-  const std::unique_ptr<LivePhysics> sim_;
+  // Owned by the simulation thread once it runs.
+  const std::unique_ptr<LiveSimulation> sim_;
   const SceneView view_;  // what the picture shows of the scene: read by both threads
 
   mutable std::mutex mu_;
@@ -161,7 +161,7 @@ class LiveSession {
   double t_ = 0, current_now_ = 0, current_heading_now_ = 0, wave_heading_now_ = 0;
   double tension_start_ = 0, tension_end_ = 0, tension_max_ = 0;
   int link_max_ = 0;
-  struct LineNumbers {  // a system's line now [N], its most loaded link
+  struct LineNumbers {  // a line now [N], its most loaded link
     double start = 0, end = 0, max = 0;
     int link_max = 0;
   };

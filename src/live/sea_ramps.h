@@ -1,10 +1,9 @@
 #pragma once
-// The sea's controls on a simulation's Inputs (core/inputs.h), ramped alike for a line
-// (live_simulation.h) and a system (live_system_simulation.h): the current's speed and heading
+// The sea's controls on a simulation's Inputs (core/inputs.h), as the live simulation
+// (live_simulation.h) ramps them: the current's speed and heading
 // over kCurrentRamp, the waves' height, period and heading over one wave period (kMotionRamp
 // to 30 s). Each returns false when the schedule refuses (too many changes still ramping).
 #include "core/inputs.h"
-#include "live/live_physics.h"
 
 namespace cablefilm {
 
@@ -12,6 +11,22 @@ constexpr double kDegree = 3.14159265358979323846 / 180.0;  // [rad]: the contro
 constexpr double kShortestMotionRamp = 2.0;  // [s]
 constexpr double kLongestMotionRamp = 30.0;  // [s]
 constexpr double kSeaCurrentRamp = 5.0;      // [s]
+
+// The sea and the motions as a scene sets them, or as the controls ramp them to.
+struct SeaTargets {
+  double amplitude_scale = 1;  // times the scene's driven motions' amplitudes
+  double period = 0;           // of the driven ends [s]; 0 when no end is driven
+  double current = 0;          // c [m/s], the uniform part, along current_heading
+  double current_heading = 0;  // the way the current flows [deg] from +x towards +z
+  double wave_height = 0;      // H [m] of the scene's [waves]; 0 without
+  double wave_period = 0;      // T [s] of the scene's [waves]; 0 without
+  double wave_heading = 0;     // the way the waves travel [deg] from +x towards +z; 0 without
+  double offset_x = 0;         // the vessel's offset from the scene's [m], along x...
+  double offset_z = 0;         // ...and z (y is up)
+  double force_x = 0;          // the extra steady force on the free bodies [N], along x...
+  double force_z = 0;          // ...and z
+};
+
 
 bool RampCurrent(Inputs& in, double t, double current);            // [m/s]
 bool RampCurrentHeading(Inputs& in, double t, double degrees);     // the short way round

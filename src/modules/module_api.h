@@ -20,9 +20,7 @@
 #include "live/live_command.h"
 #include "encode/image.h"
 #include "run/memory_run.h"
-#include "run/memory_system_run.h"
 #include "run/run.h"
-#include "run/system_run.h"
 #include "scene/scene_def.h"
 #include "view/film_pass.h"
 
@@ -32,8 +30,8 @@ namespace cablefilm {
 // that a module from another build is refused rather than misread.
 inline std::string ModuleAbi() {
   return std::string(kVersion) + " " + kGitDescribe + " " + std::to_string(sizeof(SceneDef)) +
-         "/" + std::to_string(sizeof(Run)) + "/" + std::to_string(sizeof(SystemRun)) + "/" +
-         std::to_string(sizeof(FilmRequest)) + "/" + std::to_string(sizeof(LineModel)) + "/" +
+         "/" + std::to_string(sizeof(Run)) + "/" + std::to_string(sizeof(MemoryRun)) + "/" +
+         std::to_string(sizeof(FilmRequest)) + "/" + std::to_string(sizeof(Model)) + "/" +
          std::to_string(sizeof(LiveCommandOptions));
 }
 
@@ -47,22 +45,18 @@ struct RenderModuleApi {
   const char* abi;  // ModuleAbi() of the module's build
   bool (*render_film)(const SceneDef&, const std::vector<const Run*>&, const FilmRequest&,
                       const std::atomic<int>&, PictureReport*);
-  bool (*render_system_film)(const SceneDef&, const SystemRun&, const FilmRequest&,
-                             const std::atomic<int>&, PictureReport*);
   int (*live_command)(const std::string& scene_path, const LiveCommandOptions&);
-  // The Python module's films and frames of runs kept in memory (view/memory_film.h,
-  // view/memory_system_film.h).
+  // The Python module's films and frames of runs kept in memory (view/memory_film.h).
   bool (*render_memory_run_film)(const MemoryRun&, const FilmRequest&, const std::atomic<int>&);
   Image (*draw_memory_run_frame)(const MemoryRun&, long row, const FilmRequest&);
-  Image (*draw_memory_system_frame)(const MemorySystemRun&, long row, const FilmRequest&);
 };
 
 struct NetcdfModuleApi {
   const char* abi;
   std::unique_ptr<LineResultsNc> (*open_line)(const std::string&, const NetcdfResultsInfo&,
                                               const LineModel&, const State&,
-                                              const Eigen::VectorXd&);
-  std::unique_ptr<SystemResultsNc> (*open_system)(const std::string&, const NetcdfResultsInfo&,
+                                              const Eigen::VectorXd&, int);
+  std::unique_ptr<ModelResultsNc> (*open_model)(const std::string&, const NetcdfResultsInfo&,
                                                   const Model&, const Inputs&);
 };
 

@@ -16,14 +16,15 @@ const NetcdfModuleApi& Netcdf() {
 std::unique_ptr<LineResultsNc> OpenLineResultsNc(const std::string& path,
                                                  const NetcdfResultsInfo& info, const LineModel& m,
                                                  const State& initial,
-                                                 const Eigen::VectorXd& initial_tension) {
-  return Netcdf().open_line(path, info, m, initial, initial_tension);
+                                                 const Eigen::VectorXd& initial_tension,
+                                                 int line) {
+  return Netcdf().open_line(path, info, m, initial, initial_tension, line);
 }
 
-std::unique_ptr<SystemResultsNc> OpenSystemResultsNc(const std::string& path,
+std::unique_ptr<ModelResultsNc> OpenModelResultsNc(const std::string& path,
                                                      const NetcdfResultsInfo& info,
                                                      const Model& sys, const Inputs& in) {
-  return Netcdf().open_system(path, info, sys, in);
+  return Netcdf().open_model(path, info, sys, in);
 }
 
 }  // namespace cablefilm

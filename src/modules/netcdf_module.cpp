@@ -3,6 +3,6 @@
 
 extern "C" __attribute__((visibility("default"))) const void* cablefilm_netcdf_module() {
   using namespace cablefilm;
-  static const NetcdfModuleApi api{ModuleAbiText(), &OpenLineResultsNc, &OpenSystemResultsNc};
+  static const NetcdfModuleApi api{ModuleAbiText(), &OpenLineResultsNc, &OpenModelResultsNc};
   return &api;
 }

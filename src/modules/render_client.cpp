@@ -1,12 +1,9 @@
 // The films and the live view as the program and the Python module call them
-// (view/film_pass.h, view/system_film.h, view/memory_film.h, view/memory_system_film.h,
-// live/live_command.h): forwarded to cablefilm_render.so, loaded on the first call, so that a
+// (view/film_pass.h, view/memory_film.h, live/live_command.h): forwarded to cablefilm_render.so, loaded on the first call, so that a
 // run without a film never loads OSMesa or libav*.
 #include "modules/module_api.h"
 #include "modules/module_loader.h"
 #include "view/memory_film.h"
-#include "view/memory_system_film.h"
-#include "view/system_film.h"
 
 namespace cablefilm {
 namespace {
@@ -23,11 +20,6 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
   return Render("film").render_film(scene, runs, request, stop, report);
 }
 
-bool RenderSystemFilm(const SceneDef& scene, const SystemRun& run, const FilmRequest& request,
-                      const std::atomic<int>& stop, PictureReport* report) {
-  return Render("film").render_system_film(scene, run, request, stop, report);
-}
-
 int LiveCommand(const std::string& scene_path, const LiveCommandOptions& options) {
   return Render("live").live_command(scene_path, options);
 }
@@ -39,10 +31,6 @@ bool RenderMemoryRunFilm(const MemoryRun& run, const FilmRequest& request,
 
 Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& request) {
   return Render("frame").draw_memory_run_frame(run, row, request);
-}
-
-Image DrawMemorySystemFrame(const MemorySystemRun& run, long row, const FilmRequest& request) {
-  return Render("frame").draw_memory_system_frame(run, row, request);
 }
 
 }  // namespace cablefilm

@@ -1,7 +1,8 @@
 #pragma once
-// What the module's files share (module.cpp binds a single line's runs, system_bindings.cpp a
-// system's, body_tools.cpp the quasi-static tools of a body): the Result of a line's run, the
-// scene of a Python argument, read-only numpy views of a run's rows.
+// What the module's files share (module.cpp binds scenes, runs, pictures and sweeps,
+// result_bindings.cpp the results of a run and of the statics, body_tools.cpp the quasi-static
+// tools of a body): the Result of a run and its lines, the equilibrium, the scene of a Python
+// argument, read-only numpy views of a run's rows.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -11,27 +12,31 @@
 #include <string>
 #include <vector>
 
-#include "core/line_model.h"
 #include "python/scene_handle.h"
 #include "run/memory_run.h"
-#include "run/memory_system_run.h"
-#ifdef CABLEFILM_PYTHON_RENDER
-#include "view/film_pass.h"
-#endif
 
 namespace cablefilm::python {
 
 // A run held by Python: its rows stay where the run wrote them, and the arrays handed out are
-// read-only views of them that keep the Result alive. A line of a system's run is one too (its
-// `run` then kept alive by the system's), marked `of_system`: it cannot be run again alone.
+// read-only views of them that keep the run alive. One type for every model: its lines are
+// `lines`, and a model of one line has that line's arrays on the Result too.
 struct Result {
   std::shared_ptr<const MemoryRun> run;
   pybind11::object scene;  // the Scene it ran (a copy, unchanged by later edits)
-  bool of_system = false;
+  pybind11::dict lines;    // line name -> Line, in the model's order
 };
 
-// The static equilibrium of a line: x, y, z, tension and arc lengths as arrays (copies).
-struct Equilibrium {
+// Line `index` of a run: its rows and its own summary. It holds the run (not the Result,
+// which holds it: a cycle the collector could not see through).
+struct Line {
+  std::shared_ptr<const MemoryRun> run;
+  int index = 0;
+};
+
+// A line's static equilibrium: positions, tensions and arc lengths as arrays (copies), and its
+// own solve's figures.
+struct LineEquilibrium {
+  std::string name;
   pybind11::array x, y, z, tension, s, s_link;
   pybind11::array position;  // [stations, 3]: x, y, z
   int iterations = 0;
@@ -39,8 +44,17 @@ struct Equilibrium {
   bool fallback = false;
 };
 
-// A line's equilibrium from its state and tensions (the solver's report set by the caller).
-Equilibrium LineEquilibrium(const LineModel& m, const Points& x, const Eigen::VectorXd& tension);
+// A model's static equilibrium (a run's first row, its free bodies at their equilibrium
+// poses).
+struct Equilibrium {
+  pybind11::dict lines;  // line name -> LineEquilibrium
+  std::vector<std::string> point_names, body_names;
+  pybind11::array point_position, point_force;  // [points, 3] (m, N)
+  pybind11::array body_pose, body_load;         // [bodies, 6] (m, rad; N, N m)
+  int iterations = 0;
+  double residual = 0;
+  bool fallback = false;
+};
 
 // A Scene from a Python argument: a Scene (copied), a dict, or a path.
 SceneHandle SceneOf(const pybind11::handle& source, const std::optional<std::string>& name);
@@ -54,36 +68,13 @@ pybind11::array Copy(const Eigen::VectorXd& v);
 // Raises cablefilm.BlowUpError(message) with `result` (the rows so far) as its .result.
 [[noreturn]] void RaiseBlowUp(const std::string& message, const pybind11::object& result);
 
-// The system's bindings (system_bindings.cpp): SystemResult, SystemEquilibrium, and the run
-// and equilibrium of a system scene, which cablefilm.run and cablefilm.equilibrium call.
-void BindSystems(pybind11::module_& m);
-pybind11::object RunSystemScene(const SceneHandle& scene);
-pybind11::object MakeSystemResult(std::shared_ptr<const MemorySystemRun> run,
-                                  const SceneHandle& scene);
-pybind11::object SystemSceneEquilibrium(const SceneHandle& scene);
-// A SystemResult; a SystemResult or a scene argument (a Scene, a dict, a path) of a system.
-bool IsSystemResult(const pybind11::handle& obj);
-bool IsSystemRun(const pybind11::handle& obj);
-// The run of a SystemResult.
-const MemorySystemRun& SystemRunOf(const pybind11::object& result);
-#ifdef CABLEFILM_PYTHON_RENDER
-// The film of a SystemResult into the folder `out_dir` (system_bindings.cpp); false if
-// interrupted.
-bool RenderSystemResultFilm(const pybind11::object& result, const std::string& out_dir,
-                            std::optional<int> width, std::optional<int> height,
-                            std::optional<double> fps, std::optional<double> speed,
-                            std::optional<std::string> colormap,
-                            std::optional<std::pair<double, double>> tension_range);
-#endif
-
-#ifdef CABLEFILM_PYTHON_RENDER
-// The film's options: the scene's [film], with those given (each checked as the loader and the
-// command line check theirs); a whole film's frame count too (module.cpp).
-FilmRequest FilmOptions(const SceneDef& scene, std::optional<int> width, std::optional<int> height,
-                        std::optional<double> fps, std::optional<double> speed,
-                        std::optional<std::string> colormap,
-                        std::optional<std::pair<double, double>> tension_range, bool whole_film);
-#endif
+// The results' bindings (result_bindings.cpp): Result, Line, Equilibrium, LineEquilibrium.
+void BindResults(pybind11::module_& m);
+// A Result of `run` of `scene`.
+pybind11::object MakeResult(std::shared_ptr<const MemoryRun> run, const SceneHandle& scene);
+// The static equilibrium of a scene, whatever its [initial] state says, the GIL released; a
+// scene with none is a SceneError.
+pybind11::object SceneEquilibrium(const SceneHandle& scene);
 
 // The quasi-static tools of a body (body_tools.cpp): stiffness, offset_curve.
 void BindBodyTools(pybind11::module_& m);

@@ -15,7 +15,8 @@
 #include "core/error.h"
 #include "python/bindings.h"
 #include "python/interruptible.h"
-#include "run/system_run.h"
+#include "run/initial_state.h"
+#include "run/time_grid.h"
 #include "scene/scene_loader.h"
 
 namespace py = pybind11;
@@ -25,19 +26,19 @@ namespace {
 
 // The index of the body named `name` (None: the only one); ValueError naming the choices.
 int FindBody(const SceneHandle& scene, const std::optional<std::string>& name) {
-  const Model& sys = scene.system();
-  if (sys.bodies.empty())
+  const Model& model = scene.model();
+  if (model.bodies.empty())
     throw py::value_error(scene.path() + ": the scene has no [[body]]: the quasi-static tools "
-                          "move a body");
+                          "move a body its lines end on");
   if (!name) {
-    if (sys.bodies.size() == 1) return 0;
-    throw py::value_error(scene.path() + ": the scene has " + std::to_string(sys.bodies.size()) +
+    if (model.bodies.size() == 1) return 0;
+    throw py::value_error(scene.path() + ": the scene has " + std::to_string(model.bodies.size()) +
                           " bodies: name one with body=");
   }
   std::string names;
-  for (size_t b = 0; b < sys.bodies.size(); ++b) {
-    if (sys.bodies[b].name == *name) return static_cast<int>(b);
-    names += (b ? ", \"" : "\"") + sys.bodies[b].name + "\"";
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    if (model.bodies[b].name == *name) return static_cast<int>(b);
+    names += (b ? ", \"" : "\"") + model.bodies[b].name + "\"";
   }
   throw py::value_error(scene.path() + ": body: no body is named \"" + *name +
                         "\" (the bodies: " + names + ")");
@@ -50,16 +51,21 @@ py::array Vector6(const Vec6& v) {
 }
 
 // Core work with the GIL released and Ctrl-C polled; an Error is a SceneError of the scene.
-// `work` is given body b's pose at the system's equilibrium as `run` finds it
-// (run/system_run.h) and options that start each held pose's statics from that equilibrium.
+// `work` is given body b's pose at the model's equilibrium as `run` finds it (MakeInitialState,
+// the bodies without their initial offsets: `cablefilm stiffness` and `cablefilm offset`'s)
+// and options that start each held pose's statics from that equilibrium.
 template <class Work>
 auto Statics(const SceneHandle& scene, int b, Work&& work) {
   CancelFlag cancel{0};
   try {
     return RunInterruptible(cancel, [&] {
+      SceneDef at_rest = scene.def();
+      at_rest.initial = InitialStateKind::kEquilibrium;
+      Model model = scene.model();
+      for (BodySpec& body : model.bodies) body.initial_offset = Vec6::Zero();
+      const TimeGrid grid = ChooseTimeGrid(model, at_rest.simulation, at_rest.output.interval);
       EquilibriumReport report;
-      const std::vector<State> states =
-          SystemStatics(scene.def(), scene.system(), &report, &cancel);
+      const std::vector<State> states = MakeInitialState(at_rest, model, grid, &report, &cancel);
       EquilibriumOptions options;
       options.cancel = &cancel;
       options.guess = &states;
@@ -76,7 +82,7 @@ auto Statics(const SceneHandle& scene, int b, Work&& work) {
 py::tuple Stiffness(const py::object& source, const std::optional<std::string>& body) {
   const SceneHandle scene = SceneOf(source, std::nullopt);
   const int b = FindBody(scene, body);
-  const Model& sys = scene.system();
+  const Model& model = scene.model();
   struct Out {
     Vec6 pose;
     Mat6 K;
@@ -84,7 +90,7 @@ py::tuple Stiffness(const py::object& source, const std::optional<std::string>& 
   const Out out = Statics(scene, b, [&](const Vec6& pose, const EquilibriumOptions& options) {
     Out o;
     o.pose = pose;
-    o.K = MooringStiffness(sys, b, o.pose, 1e-4 * ShortestLineOn(sys, b), options);
+    o.K = MooringStiffness(model, b, o.pose, 1e-4 * ShortestLineOn(model, b), options);
     return o;
   });
   py::array_t<double> K({6, 6});
@@ -97,7 +103,7 @@ py::dict Offset(const py::object& source, const std::optional<std::string>& body
                 const std::optional<std::vector<double>>& given) {
   const SceneHandle scene = SceneOf(source, std::nullopt);
   const int b = FindBody(scene, body);
-  const Model& sys = scene.system();
+  const Model& model = scene.model();
   if (!std::isfinite(heading)) throw py::value_error("heading: expected a finite angle [deg]");
   if (given) {
     if (given->empty()) throw py::value_error("offsets: expected at least one offset [m]");
@@ -115,21 +121,21 @@ py::dict Offset(const py::object& source, const std::optional<std::string>& body
     if (given) {
       offsets = *given;
     } else {  // `cablefilm offset`'s: 11 from 0 to a twentieth of the shortest line on the body
-      const double most = 0.05 * ShortestLineOn(sys, b);
+      const double most = 0.05 * ShortestLineOn(model, b);
       const int points = 11;
       for (int k = 0; k < points; ++k) offsets.push_back(most * k / (points - 1));
     }
-    o.curve = OffsetCurve(sys, b, o.pose, heading * M_PI / 180.0, offsets, options);
+    o.curve = OffsetCurve(model, b, o.pose, heading * M_PI / 180.0, offsets, options);
     return o;
   });
   const auto k = static_cast<py::ssize_t>(out.curve.size());
   py::array_t<double> offset(k), restoring(k), load({k, py::ssize_t{6}});
   py::dict tension;
-  for (size_t i = 0; i < sys.lines.size(); ++i) {
+  for (size_t i = 0; i < model.lines.size(); ++i) {
     if (std::isnan(out.curve.front().load.end_tension[i])) continue;  // not on the body
     py::array_t<double> t(k);
     for (py::ssize_t p = 0; p < k; ++p) t.mutable_at(p) = out.curve[p].load.end_tension[i];
-    tension[py::str(sys.line_names[i])] = t;
+    tension[py::str(model.line_names[i])] = t;
   }
   for (py::ssize_t p = 0; p < k; ++p) {
     offset.mutable_at(p) = out.curve[p].offset;
@@ -137,7 +143,7 @@ py::dict Offset(const py::object& source, const std::optional<std::string>& body
     for (int c = 0; c < 6; ++c) load.mutable_at(p, c) = out.curve[p].load.load[c];
   }
   py::dict d;
-  d["body"] = sys.bodies[b].name;
+  d["body"] = model.bodies[b].name;
   d["pose"] = Vector6(out.pose);
   d["heading"] = heading;
   d["offset"] = offset;
@@ -151,7 +157,7 @@ py::dict Offset(const py::object& source, const std::optional<std::string>& body
 
 void BindBodyTools(py::module_& m) {
   m.def("stiffness", &Stiffness, py::arg("scene"), py::arg("body") = py::none(),
-        "The moorings' stiffness on a body of a system, as `cablefilm stiffness` computes it: "
+        "The moorings' stiffness on a body, as `cablefilm stiffness` computes it: "
         "(pose, K). pose [6]: the body's equilibrium pose (x, y, z in m, angles about x, y, z "
         "in rad); K [6, 6] = -dF/dq there by central differences of 1e-4 of the shortest line "
         "on the body (rows Fx, Fy, Fz [N], Mx, My, Mz [N m] about the reference point; columns "

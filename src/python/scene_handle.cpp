@@ -3,12 +3,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "scene/film_settings.h"
-#include "scene/scene_loader.h"
-#include "run/sweep_plan.h"
-#include "scene/scene_edit.h"
 #include "core/error.h"
 #include "scene/build_model.h"
+#include "scene/scene_edit.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 
@@ -16,17 +13,10 @@ namespace cablefilm::python {
 
 SceneHandle SceneHandle::Checked(std::string text, std::string path, SceneDef def) {
   // What `check` does before the equilibrium: the model built and its limits.
-  // A system as `run` builds it (the loader has checked its numbers).
   try {
-    if (def.is_system()) {
-      Model system = BuildSystem(def);
-      return SceneHandle(std::move(text), std::move(path), std::move(def), std::nullopt,
-                         std::move(system));
-    }
-    LineModel model = BuildModel(def);
+    Model model = BuildModel(def);
     CheckModelLimits(def, model);
-    return SceneHandle(std::move(text), std::move(path), std::move(def), std::move(model),
-                       std::nullopt);
+    return SceneHandle(std::move(text), std::move(path), std::move(def), std::move(model));
   } catch (const Error& e) {
     throw SceneProblem(SceneErrorMessage(path, e.what()));
   }
@@ -55,20 +45,6 @@ SceneHandle SceneHandle::FromText(const std::string& text, const std::string& pa
     throw SceneProblem(SceneErrorMessage(path, e.what()));
   }
   return Checked(text, path, std::move(def));
-}
-
-const LineModel& SceneHandle::model() const {
-  if (!model_)
-    throw SceneProblem(path_ + ": a system of lines ([[line]] and [[point]]): this takes a "
-                       "single line ([cable] and [ends])");
-  return *model_;
-}
-
-const Model& SceneHandle::system() const {
-  if (!system_)
-    throw SceneProblem(path_ + ": a single line ([cable] and [ends]): this takes a system of "
-                       "lines ([[line]], [[point]], [[body]])");
-  return *system_;
 }
 
 void SceneHandle::Set(const std::vector<std::string>& keys,

@@ -1,16 +1,14 @@
 #pragma once
 // The Python module's Scene: a scene's TOML text and the path it came from, always valid. It
-// is read by the same loader as `cablefilm check` (scene_loader.h, then the built model's
-// limits, scene_limits.h); a change of a value goes through the sweep's editing of scene keys
-// (scene/scene_edit.h) and is read again, so a bad value is refused with the loader's message
-// and the scene keeps its former text. A system of lines ([[line]], [[point]], [[body]]) is
-// built as `cablefilm run` builds it (BuildSystem); a single line as `check` builds it.
-#include <optional>
+// is read by the same loader as `cablefilm check` (scene_loader.h), and its model built and
+// checked as `check` and `run` build and check it (BuildModel, then CheckModelLimits); a change
+// of a value goes through the sweep's editing of scene keys (scene/scene_edit.h) and is read
+// again, so a bad value is refused with the loader's message and the scene keeps its former
+// text.
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "core/line_model.h"
 #include "core/model.h"
 #include "scene/scene_def.h"
 
@@ -33,11 +31,9 @@ class SceneHandle {
   const std::string& text() const { return text_; }
   const std::string& path() const { return path_; }
   const SceneDef& def() const { return def_; }
-  bool is_system() const { return def_.is_system(); }
-  // A single line's model; throws SceneProblem for a system (which has a model a line).
-  const LineModel& model() const;
-  // A system's; throws SceneProblem for a single line.
-  const Model& system() const;
+  // Its model: its lines, points and bodies (a [cable] scene: the line "cable" between the
+  // points "start" and "end").
+  const Model& model() const { return model_; }
 
   // Sets keys[i] (dotted scene paths) to the TOML values values[i], all at once; on a problem
   // throws SceneProblem (or Error for a key that does not fit the scene) and changes nothing.
@@ -46,16 +42,14 @@ class SceneHandle {
   std::string ValueDocument(const std::string& key) const;
 
  private:
-  SceneHandle(std::string text, std::string path, SceneDef def, std::optional<LineModel> model,
-              std::optional<Model> system)
+  SceneHandle(std::string text, std::string path, SceneDef def, Model model)
       : text_(std::move(text)), path_(std::move(path)), def_(std::move(def)),
-        model_(std::move(model)), system_(std::move(system)) {}
+        model_(std::move(model)) {}
   static SceneHandle Checked(std::string text, std::string path, SceneDef def);
   std::string text_;
   std::string path_;
   SceneDef def_;
-  std::optional<LineModel> model_;         // a single line's
-  std::optional<Model> system_;  // a system's
+  Model model_;
 };
 
 }  // namespace cablefilm::python

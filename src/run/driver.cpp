@@ -6,14 +6,16 @@
 namespace cablefilm {
 
 void RowStepper::Next() {
+  // grid.dt is interval / steps_per_output (time_grid.cpp): the same steps as ever.
   for (int i = 0; i < grid_.steps_per_output; ++i) {
     ThrowIfCancelled(in_.stop, "the simulation");
-    StepLine(m_, d_, in_, grid_.dt);
+    Step(m_, d_, in_, grid_.dt);
   }
-  d_.state.t = ++row_ * grid_.interval;
+  d_.t = ++row_ * grid_.interval;
+  for (LineData& line : d_.lines) line.state.t = d_.t;
 }
 
-RunEnd Drive(const LineModel& m, LineData& d, const Inputs& in, const TimeGrid& grid,
+RunEnd Drive(const Model& m, Data& d, const Inputs& in, const TimeGrid& grid,
              const std::vector<RowSink*>& sinks) {
   RunEnd end;
   auto hand = [&] {

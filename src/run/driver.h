@@ -1,15 +1,15 @@
 #pragma once
-// The one stepping loop of a run: a LineData stepped from output row to output row of its time
+// The one stepping loop of a run: a Data stepped from output row to output row of its time
 // grid, each row (t = 0 first) handed to every sink that wants it (FFmpeg's mux.c: one loop,
 // many outputs): the CSV and NetCDF files, the rows in memory, the run's summary, a film's
-// frames, a progress line. The live view steps the core itself (Step), paced to the clock.
+// frames, a progress line. The live view steps the core itself (StepSpan), paced to the clock.
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "core/line_data.h"
+#include "core/data.h"
 #include "core/inputs.h"
-#include "core/line_model.h"
+#include "core/model.h"
 #include "run/time_grid.h"
 
 namespace cablefilm {
@@ -18,34 +18,35 @@ namespace cablefilm {
 class RowSink {
  public:
   virtual ~RowSink() = default;
-  virtual bool Row(const LineData& d) = 0;
+  virtual bool Row(const Data& d) = 0;
 };
 
 // A sink of a function (a test's, a front end's own bookkeeping).
 class RowFunction : public RowSink {
  public:
-  explicit RowFunction(std::function<bool(const LineData&)> f) : f_(std::move(f)) {}
-  bool Row(const LineData& d) override { return f_(d); }
+  explicit RowFunction(std::function<bool(const Data&)> f) : f_(std::move(f)) {}
+  bool Row(const Data& d) override { return f_(d); }
 
  private:
-  std::function<bool(const LineData&)> f_;
+  std::function<bool(const Data&)> f_;
 };
 
-// Steps a LineData from row to row of a grid (core/step.h between them), so that several runs can
+// Steps a Data from row to row of a grid (core/step.h between them), so that several runs can
 // go in lockstep (a film of two models).
 class RowStepper {
  public:
-  RowStepper(const LineModel& m, LineData& d, const Inputs& in, const TimeGrid& grid)
+  RowStepper(const Model& m, Data& d, const Inputs& in, const TimeGrid& grid)
       : m_(m), d_(d), in_(in), grid_(grid) {}
   long row() const { return row_; }  // the row reached: 0 is the initial state
   bool done() const { return row_ >= grid_.outputs; }
-  // Steps to the next row, its time exactly row x interval (no round-off drift over long
-  // runs). Throws BlowUpError, CancelledError (in.stop; the state part way to the row).
+  // Steps to the next row, its time exactly row x interval (every line's; no round-off drift
+  // over long runs). Throws BlowUpError, CancelledError (in.stop; the state part way to the
+  // row).
   void Next();
 
  private:
-  const LineModel& m_;
-  LineData& d_;
+  const Model& m_;
+  Data& d_;
   const Inputs& in_;
   const TimeGrid& grid_;
   long row_ = 0;
@@ -60,7 +61,7 @@ struct RunEnd {
 };
 
 // Hands the row of `d` (t = 0) to the sinks, then every row of the grid.
-RunEnd Drive(const LineModel& m, LineData& d, const Inputs& in, const TimeGrid& grid,
+RunEnd Drive(const Model& m, Data& d, const Inputs& in, const TimeGrid& grid,
              const std::vector<RowSink*>& sinks);
 
 }  // namespace cablefilm

@@ -5,7 +5,6 @@
 
 #include "core/cancel.h"
 #include "core/error.h"
-#include "run/coarse_guess.h"
 #include "scene/scene_limits.h"
 #include "scene/text_escape.h"
 
@@ -19,8 +18,8 @@ namespace {
 // make the initial state, naming the key at fault: the heaviest weight's mass when the weights
 // weigh more than the cable in the fluid and the cable alone would not stretch the link that
 // far, else the stretched link's material's youngs_modulus.
-// `line` is "" for the scene's one cable (keys cable.weight[k]), else "line[i]" (a system's),
-// `which` then " of line[i] (\"its name\")".
+// `line` is the line's key ("cable", "line[i]": keys cable.weight[k]), `which` " of line[i]
+// (\"its name\")" in a scene of several lines, else "".
 void CheckInitialStretch(const SceneDef& scene, const std::string& line, const std::string& which,
                          const std::vector<SectionDef>& sections,
                          const std::vector<WeightDef>& weights, const LineModel& m, const State& s) {
@@ -63,7 +62,7 @@ void CheckInitialStretch(const SceneDef& scene, const std::string& line, const s
       heaviest >= 0 && weights_net > cable && 1.0 + cable / ea <= kMaxStartStretch;
   std::string key, cure;
   if (weights_at_fault) {
-    key = (line.empty() ? "cable" : line) + ".weight[" + std::to_string(heaviest) + "].mass";
+    key = line + ".weight[" + std::to_string(heaviest) + "].mass";
     cure = "a lighter weight (" + key + " = " +
            FormatNumber(weights[static_cast<std::size_t>(heaviest)].mass) +
            " kg, its net weight " + FormatNumber(heaviest_weight) + " N) or a stiffer material (" +
@@ -85,51 +84,62 @@ void CheckInitialStretch(const SceneDef& scene, const std::string& line, const s
 
 }  // namespace
 
-void CheckSystemInitialStretch(const SceneDef& scene, const Model& sys,
-                               const std::vector<State>& states) {
-  for (std::size_t i = 0; i < sys.lines.size(); ++i)
-    for (std::size_t k = 0; k < scene.lines.size(); ++k)
-      if (scene.lines[k].name == sys.line_names[i]) {
-        const std::string line = "line[" + std::to_string(k) + "]";
-        CheckInitialStretch(scene, line, " of " + line + " (" + QuoteText(scene.lines[k].name) + ")",
-                            scene.lines[k].sections, scene.lines[k].weights, sys.lines[i],
-                            states[i]);
-      }
-}
-
-State MakeInitialState(const SceneDef& scene, const LineModel& m, LineEquilibriumReport* report,
-                       const CancelFlag* cancel) {
-  LineEquilibriumOptions options;
-  options.cancel = cancel;
-  State s;
+std::vector<State> MakeInitialState(const SceneDef& scene, Model& model, const TimeGrid& grid,
+                                    EquilibriumReport* report, const CancelFlag* cancel,
+                                    const StaticsCallbacks& progress) {
+  std::vector<State> states;
+  EquilibriumReport r;
   if (scene.initial == InitialStateKind::kEquilibrium) {
-    if (m.line.law == LinkLaw::kInextensible) {
-      s = SolveInextensibleEquilibrium(m, report, cancel);
-    } else {
+    EquilibriumOptions options;
+    options.cancel = cancel;
+    options.relaxing = progress.relaxing;
+    options.solving = progress.solving;
+    options.relaxation = grid.options;
+    options.inputs = SceneInputs(model);
+    options.inputs.stop = cancel;
+    try {
+      states = SolveEquilibrium(model, &r, options);
+    } catch (const CancelledError&) {
+      throw;
+    } catch (const Error& e) {
+      if (scene.from_moordyn) throw;
+      throw Error(std::string(e.what()) +
+                  "; [initial] state = \"straight\" starts it from the chord instead");
+    }
+    // A free body given an initial offset starts there, its lines in equilibrium with it held
+    // (a decay test); the others at their equilibrium.
+    Model held = model;
+    bool offset = false;
+    for (int b : model.free_bodies) {
+      const Vec6 start = r.body_poses[b] + model.bodies[b].initial_offset;
+      PlaceBody(model, b, start);
+      if (model.bodies[b].initial_offset == Vec6::Zero()) continue;
+      held = HoldBody(held, b, start);
+      offset = true;
+    }
+    if (offset) {
+      EquilibriumOptions held_options;
+      held_options.cancel = cancel;
       try {
-        if (const std::optional<Points> guess = CoarseEquilibriumGuess(scene, m, cancel)) {
-          // Near the answer, in the full current: Newton from it directly (the continuation
-          // from still water only if that fails).
-          options.warm_start = true;
-          s = SolveLineEquilibrium(m, *guess, report, options);
-        } else {
-          s = SolveLineEquilibrium(m, report, options);
-        }
+        states = SolveEquilibrium(held, nullptr, held_options);
       } catch (const CancelledError&) {
         throw;
       } catch (const Error& e) {
-        // The way out a one-line scene has (a system of lines has none: it starts from its
-        // equilibrium, scene_parser.cpp).
-        throw Error(std::string(e.what()) +
-                    "; [initial] state = \"straight\" starts it from the chord instead");
+        throw Error(scene.path + ": with the bodies at their initial offsets: " + e.what());
       }
     }
   } else {
-    s.x = StraightChord(m);
-    s.v = Points::Zero(kDim, m.stations());
+    states = StraightStart(model);
   }
-  CheckInitialStretch(scene, "", "", scene.sections, scene.weights, m, s);
-  return s;
+  for (std::size_t i = 0; i < model.lines.size() && i < scene.lines.size(); ++i) {
+    const LineDef& line = scene.lines[i];
+    // A [[line]] is named (the material's key does not say which line it is), the [cable] not.
+    const std::string which =
+        line.key == "cable" ? "" : " of " + line.key + " (" + QuoteText(line.name) + ")";
+    CheckInitialStretch(scene, line.key, which, line.sections, line.weights, model.lines[i], states[i]);
+  }
+  if (report) *report = r;
+  return states;
 }
 
 }  // namespace cablefilm

@@ -1,19 +1,22 @@
 #pragma once
-// A run of a scene held in memory, with no file written: every output row's time, station
-// positions and link tensions (the doubles results.nc holds: the same run, the same rows), for
-// the Python module; the command line writes the same rows to files.
+// A run of a scene held in memory, with no file written, for the Python module: each line's
+// output rows (its time, station positions, link tensions and end loads: the doubles its
+// results.nc holds, the same run, the same rows) and the points' and bodies' rows (what
+// points.csv and body.csv print: core/point_loads.h's PointLoads, here as doubles). The
+// command line writes the same rows to files.
 #include <string>
 #include <vector>
 
 #include "core/end_loads.h"
+#include "core/point_loads.h"
 #include "run/driver.h"
 #include "run/run.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {
 
-// Every row, row-major (t = 0 first).
-struct MemoryRows : RowSink {
+// One line's every row, row-major (t = 0 first).
+struct MemoryRows {
   long rows = 0;
   std::vector<double> time;       // [s], rows
   std::vector<double> x;          // station positions [m], rows x (s + 1) x kDim: each row a
@@ -23,26 +26,34 @@ struct MemoryRows : RowSink {
   std::vector<double> tension;    // link tensions [N], rows x s (0 when slack)
   std::vector<double> end_load;   // end loads [N], rows x 2 x kDim (core/end_loads.h: the
                                   // force the line exerts on what holds its start, its end)
-  bool Row(const LineData& d) override;
-  // Rows for `m`, whose end loads are computed in `in` (both outlive the rows' filling).
-  void Reserve(const LineModel& m, const Inputs& in, long rows);
+};
 
- private:
-  const LineModel* model_ = nullptr;
-  const Inputs* inputs_ = nullptr;
-  EndLoads ends_;
+// The points' and bodies' rows, row-major (t = 0 first).
+struct MemoryPointRows {
+  long rows = 0;
+  std::vector<double> point_position;  // [m], rows x points x 3
+  std::vector<double> point_force;     // [N], rows x points x 3 (the lines' pull on the point)
+  std::vector<double> body_pose;       // [m, rad], rows x bodies x 6: x, y, z, about x, y, z
+  std::vector<double> body_load;       // [N, N m], rows x bodies x 6: force, moment about the
+                                       // reference point
 };
 
 struct MemoryRun {
   SceneDef scene;
   Run run;
-  MemoryRows rows;
+  std::vector<MemoryRows> lines;  // line i's rows
+  MemoryPointRows points;
 };
 
 // `model` is BuildModel(scene), checked by CheckModelLimits. Simulates from the scene's initial
-// state to its end, or until `stop` is raised. A blow-up ends the run with
-// run.summary.completed false and its message in run.summary.failure (the rows so far kept).
-// Throws Error when the initial state cannot be found.
-MemoryRun RunInMemory(const SceneDef& scene, const LineModel& model, const CancelFlag* stop);
+// state to its end, or until `stop` is raised, as `cablefilm run` does. A blow-up ends the run
+// with run.summary.completed false and its message in run.summary.failure (the rows so far
+// kept). Throws Error when the initial state cannot be found.
+MemoryRun RunInMemory(const SceneDef& scene, Model model, const CancelFlag* stop);
+
+// The scene's static equilibrium (its free bodies at their equilibrium poses, whatever their
+// initial offsets) as a run's first row: run.initial, rows holding that one row. Throws Error
+// when there is none.
+MemoryRun EquilibriumInMemory(const SceneDef& scene, Model model, const CancelFlag* stop);
 
 }  // namespace cablefilm

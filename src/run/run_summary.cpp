@@ -79,7 +79,7 @@ std::vector<std::string> SummaryCells(const RunSummary& s) {
   return cells;
 }
 
-std::vector<std::string> TrustWarnings(const LineModel& m, const StepStats& stats, bool in_system) {
+std::vector<std::string> TrustWarnings(const LineModel& m, const StepStats& stats) {
   std::vector<std::string> warnings;
   const StepRecord& r = stats.record;
   if (r.unresolved_snaps > 0) {
@@ -95,9 +95,8 @@ std::vector<std::string> TrustWarnings(const LineModel& m, const StepStats& stat
        << ", first at t = " << r.first_unresolved_time << " s; steps up to "
        << r.worst_snap_ratio << " tau). Snap loads and the ringing after them then depend on "
        << "where the steps fall. To resolve them: "
-       << (in_system ? "time_step <= " : "integrator = \"explicit\" with time_step <= ")
-       << kResolvedSnapFraction * shortest
-       << (in_system ? " s (fixed steps: a system of lines runs the implicit scheme only)" : " s")
+       << "integrator = \"explicit\" with time_step <= " << kResolvedSnapFraction * shortest
+       << " s"
        << ", or fewer, more compliant links; or avoid the slack (more pretension)";
     warnings.push_back(os.str());
   }

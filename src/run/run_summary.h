@@ -31,13 +31,13 @@ struct RunSummary {
   int min_tension_link = -1;
   // The largest end load over the rows (|force| the line exerts on what holds its start,
   // station 0, and its end, station s; core/end_loads.h) [N], and the first time of each [s].
-  // NaN where the rows held none (a system's summary).
+  // NaN where the rows held none (the summary of a run of several lines).
   double start_load_max = std::numeric_limits<double>::quiet_NaN();
   double start_load_t = std::numeric_limits<double>::quiet_NaN();
   double end_load_max = std::numeric_limits<double>::quiet_NaN();
   double end_load_t = std::numeric_limits<double>::quiet_NaN();
-  // A system's: the lines holding the peak and the least tension (their links are the line's);
-  // empty for a single line.
+  // A run of several lines: the lines holding the peak and the least tension (their links are
+  // the line's); empty for a line alone.
   std::string peak_line, min_tension_line;
   // The largest utilisation T / MBL over the rows and the links whose material has a
   // minimum_breaking_load (NaN: none has), the first row holding it: its time [s], link,
@@ -69,11 +69,9 @@ struct RunSummary {
 };
 
 // Reasons the peak tension cannot be trusted (empty: none found): snaps within steps too long to
-// resolve them (see core/snap_monitor.h), with what would resolve them: explicit steps for a
-// line, fixed implicit ones for a line of a system (`in_system`: it runs the implicit scheme
-// only).
-std::vector<std::string> TrustWarnings(const LineModel& m, const StepStats& stats,
-                                       bool in_system = false);
+// resolve them (see core/snap_monitor.h), with what would resolve them (explicit steps short
+// enough).
+std::vector<std::string> TrustWarnings(const LineModel& m, const StepStats& stats);
 
 // "N steps (M rejected) from a to b s[, k Newton iterations per step]".
 std::string DescribeSteps(const StepStats& stats);

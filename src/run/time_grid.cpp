@@ -19,7 +19,7 @@ double StartDuration(const LineModel& m) {
   return end;
 }
 
-TimeGrid ChooseTimeGrid(const LineModel& m, const SimulationDef& sim, double interval) {
+TimeGrid ChooseLineGrid(const LineModel& m, const SimulationDef& sim, double interval) {
   TimeGrid g;
   StepOptions& o = g.options;
   o.scheme = sim.integrator == IntegratorChoice::kExplicit ? Scheme::kExplicit : Scheme::kImplicit;
@@ -55,6 +55,32 @@ TimeGrid ChooseTimeGrid(const LineModel& m, const SimulationDef& sim, double int
   g.dt = interval / g.steps_per_output;
   g.outputs = static_cast<long>(std::floor(sim.duration / interval + 1e-9));
   return g;
+}
+
+TimeGrid ChooseTimeGrid(const Model& model, const SimulationDef& sim, double interval) {
+  TimeGrid grid;
+  double longest = -1, tolerance = 0, start_tolerance = 0, start_end = 0;
+  StepOptions elastic;  // an elastic line's scheme, if it has one (an inextensible line takes
+  bool any_elastic = false;  // its own: LineStepOptions)
+  for (size_t i = 0; i < model.lines.size(); ++i) {
+    const TimeGrid g = ChooseLineGrid(model.lines[i], sim, interval);
+    if (i == 0 || g.dt < grid.dt) grid = g;
+    if (!any_elastic && g.options.scheme != Scheme::kInextensible) {
+      elastic = g.options;
+      any_elastic = true;
+    }
+    if (model.lines[i].line.total_length() > longest) {
+      longest = model.lines[i].line.total_length();
+      tolerance = g.options.tolerance;
+      start_tolerance = g.options.start_tolerance;
+    }
+    start_end = std::max(start_end, g.options.start_end);  // every line's moving ends
+  }
+  if (any_elastic) grid.options = elastic;
+  grid.options.tolerance = tolerance;
+  grid.options.start_tolerance = start_tolerance;
+  grid.options.start_end = start_end;
+  return grid;
 }
 
 }  // namespace cablefilm

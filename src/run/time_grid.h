@@ -2,7 +2,7 @@
 // The time grid of a run: its output rows (every `interval`, up to the scene's duration), the
 // step asked of the scheme between them, and the scheme's options (core/line_data.h).
 #include "core/line_data.h"
-#include "core/line_model.h"
+#include "core/model.h"
 #include "core/stability.h"
 #include "scene/scene_def.h"
 
@@ -45,6 +45,12 @@ struct TimeGrid {
 // where links go slack or snap taut); for the implicit and the inextensible schemes an adaptive
 // step below the output interval, chosen by a local error estimate (independent of the
 // stations; the inextensible one also below its transverse-wave limit).
-TimeGrid ChooseTimeGrid(const LineModel& m, const SimulationDef& sim, double interval);
+TimeGrid ChooseLineGrid(const LineModel& m, const SimulationDef& sim, double interval);
+
+// The model's grid: each line's own (ChooseLineGrid); the finest step asked, and with "auto"
+// the longest line's tolerance (1e-6 of its length: the model's scale; the shortest line's
+// would make a short pendant set the steps of the whole mooring), the stricter start's until
+// the last of its lines' moving ends has started. A model of one line: its line's.
+TimeGrid ChooseTimeGrid(const Model& model, const SimulationDef& sim, double interval);
 
 }  // namespace cablefilm

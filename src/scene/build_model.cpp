@@ -129,12 +129,8 @@ void DescribeTables(const SceneDef& scene, std::vector<std::string>* notes,
   const double run_end =
       interval > 0 ? std::floor(scene.simulation.duration / interval + 1e-9) * interval
                    : scene.simulation.duration;
-  if (!scene.is_system()) {
-    DescribeTable("ends.start", scene.start, run_end, notes, warnings);
-    DescribeTable("ends.end", scene.end, run_end, notes, warnings);
-  }
   for (const PointDef& p : scene.points)
-    DescribeTable("point " + QuoteText(p.name), p.motion, run_end, notes, warnings);
+    DescribeTable(PointTitle(p), p.motion, run_end, notes, warnings);
   for (const BodyDef& b : scene.bodies) {
     DescribeTable("body " + QuoteText(b.name), b.motion, run_end, notes, warnings);
     DescribeTurn("body " + QuoteText(b.name), b.motion, run_end, notes, warnings);
@@ -154,10 +150,6 @@ WaveSpec MakeWaveSpec(const SceneDef& scene) {
   w.heading = d.heading * M_PI / 180.0;
   w.ramp_rate = d.ramp_rate;
   return w;
-}
-
-int StationAt(const SceneDef& scene, double arc_length) {
-  return StationAt(scene.sections, arc_length, scene.path);
 }
 
 int StationAt(const std::vector<SectionDef>& sections, double arc_length, const std::string& path) {
@@ -232,18 +224,7 @@ EnvironmentSpec MakeEnvironment(const SceneDef& scene) {
 
 }  // namespace
 
-LineModel BuildModel(const SceneDef& scene) {
-  if (scene.is_system())
-    throw Error(scene.path + ": a system of lines ([[line]] and [[point]]): `cablefilm run` and "
-                "`check` run it; this command takes a single line ([cable] and [ends])");
-  const LinkLaw law =
-      scene.model == CableModelKind::kElastic ? LinkLaw::kElastic : LinkLaw::kInextensible;
-  return MakeLineModel(MakeSections(scene, scene.sections),
-                   MakePrisms(scene.sections, scene.weights, scene.path), MakeEnvironment(scene),
-                   MakeEndMotion(scene.start), MakeEndMotion(scene.end), law);
-}
-
-Model BuildSystem(const SceneDef& scene) {
+Model BuildModel(const SceneDef& scene) {
   const double deg = M_PI / 180.0;
   std::vector<BodySpec> bodies;
   for (const BodyDef& d : scene.bodies) {
@@ -295,6 +276,7 @@ Model BuildSystem(const SceneDef& scene) {
   for (const LineDef& d : scene.lines) {
     LineSpec l;
     l.name = d.name;
+    l.law = d.model == CableModelKind::kElastic ? LinkLaw::kElastic : LinkLaw::kInextensible;
     l.sections = MakeSections(scene, d.sections);
     l.prisms = MakePrisms(d.sections, d.weights, scene.path);
     l.start_point = d.start;

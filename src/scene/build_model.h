@@ -1,16 +1,14 @@
 #pragma once
 // From the scene's plain data to the physics model (parse, then build).
-#include "core/line_model.h"
 #include "core/model.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {
 
-// A single line's model; throws Error for a system's scene.
-LineModel BuildModel(const SceneDef& scene);
-// A system's model ([[line]] and [[point]]); throws Error naming the scene when it cannot be
-// built (a free point no line holds, a line whose ends are both loose).
-Model BuildSystem(const SceneDef& scene);
+// The scene's model: its lines, points and bodies ([cable] and [ends]: one line between two
+// points). Throws Error naming the scene when it cannot be built (a free point no line holds,
+// a line whose ends are both loose, an inextensible line joined to others).
+Model BuildModel(const SceneDef& scene);
 
 // An end's (a point's, a body's reference point's) motion as the scene gives it.
 EndMotion MakeEndMotion(const EndDef& e);
@@ -30,7 +28,6 @@ void DescribeTables(const SceneDef& scene, std::vector<std::string>* notes,
 WaveSpec MakeWaveSpec(const SceneDef& scene);
 
 // The station a weight's arc length falls on (the loader has checked that it does).
-int StationAt(const SceneDef& scene, double arc_length);
 int StationAt(const std::vector<SectionDef>& sections, double arc_length, const std::string& path);
 
 }  // namespace cablefilm

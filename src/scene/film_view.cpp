@@ -37,8 +37,7 @@ const std::vector<std::string>& FilmViewNames() {
 }
 
 bool SceneIsPlanar(const SceneDef& scene) {
-  if (!scene.is_system() && (!EndIsPlanar(scene.start) || !EndIsPlanar(scene.end))) return false;
-  for (const PointDef& p : scene.points)  // a system's points: where its lines' ends are
+  for (const PointDef& p : scene.points)  // where its lines' ends are
     if (!EndIsPlanar(p.motion) || p.force[2] != 0) return false;
   for (const BodyDef& b : scene.bodies)
     if (!b.free && !BodyStaysInPlane(b)) return false;

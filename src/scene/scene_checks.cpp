@@ -35,17 +35,11 @@ double LowestElevation(const EndDef& e) {
 // it): an error naming seabed.y.
 void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::string& file) {
   if (!scene.seabed.present) return;
-  // The ends of a single line, or the points of a system: (name, its key, its motion).
+  // The points where lines end: (name, its key, its motion).
   std::vector<std::tuple<std::string, std::string, const EndDef*>> ends;
-  if (scene.is_system()) {
-    for (size_t i = 0; i < scene.points.size(); ++i)
-      if (scene.points[i].body < 0)  // a body's point is in its axes
-        ends.emplace_back("point " + QuoteText(scene.points[i].name),
-                        "point[" + std::to_string(i) + "]", &scene.points[i].motion);
-  } else {
-    ends.emplace_back("start end", "ends.start", &scene.start);
-    ends.emplace_back("end end", "ends.end", &scene.end);
-  }
+  for (const PointDef& p : scene.points)
+    if (p.body < 0)  // a body's point is in its axes
+      ends.emplace_back(p.label, p.key, &p.motion);
   for (const auto& [name, key, end] : ends) {
     if (end->motion == EndMotionKind::kFree) continue;
     const double lowest = LowestElevation(*end);
@@ -116,20 +110,18 @@ void CheckRunCounts(const toml::table& root, const SceneDef& scene, const std::s
 // inextensible line (an elastic one starts stretched: the run warns and solves, up to
 // kMaxStartStretch, which CheckModelLimits checks on the built model). The comparison is the
 // run's: ends exactly the cable's length apart are refused too.
-void CheckEndsReach(const toml::table* ends, const TableReader& r, const SceneDef& scene) {
-  if (scene.model != CableModelKind::kInextensible || scene.start.motion == EndMotionKind::kFree ||
-      scene.end.motion == EndMotionKind::kFree)
-    return;
+std::string LineReachProblem(const LineDef& line, const SceneDef& scene) {
+  if (line.model != CableModelKind::kInextensible) return "";
+  const PointDef &a = scene.points.at(line.start), &b = scene.points.at(line.end);
+  for (const PointDef* p : {&a, &b})
+    if (p->motion.motion == EndMotionKind::kFree || p->body >= 0) return "";
   double total = 0;
-  for (const SectionDef& sec : scene.sections) total += sec.length;
-  const double chord = std::hypot(scene.end.position[0] - scene.start.position[0],
-                                  scene.end.position[1] - scene.start.position[1],
-                                  scene.end.position[2] - scene.start.position[2]);
-  if (chord >= total)
-    r.Fail(ends->get("end")->as_table()->get("position"), "end.position",
-           "expected the ends less than the cable's length (" + TableReader::Fmt(total) +
-               " m) apart for an inextensible cable, they are " + TableReader::Fmt(chord) +
-               " m apart");
+  for (const SectionDef& sec : line.sections) total += sec.length;
+  const std::array<double, 3>&pa = a.motion.position, &pb = b.motion.position;
+  const double chord = std::hypot(pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]);
+  if (chord < total) return "";
+  return "expected the ends less than the cable's length (" + FormatNumber(total) +
+         " m) apart for an inextensible cable, they are " + FormatNumber(chord) + " m apart";
 }
 
 }  // namespace cablefilm

@@ -16,8 +16,9 @@ void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::stri
 void CheckRunCounts(const toml::table& root, const SceneDef& scene, const std::string& file,
                     bool interval_given);
 
-// An inextensible cable's ends less than its length apart (`ends`: the [ends] table, `r` its
-// reader).
-void CheckEndsReach(const toml::table* ends, const TableReader& r, const SceneDef& scene);
+// Why an inextensible line's ends, at points given in the world's axes (not free, not on a
+// body), are too far apart for it: as far as or further than its length ("" when they are
+// not, or the line is elastic).
+std::string LineReachProblem(const LineDef& line, const SceneDef& scene);
 
 }  // namespace cablefilm

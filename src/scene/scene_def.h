@@ -100,10 +100,13 @@ struct EndDef {
   std::array<double, 2> rz_rao{};
 };
 
-// [[point]]: where the lines of a system end (a mooring: anchors, fairleads, clump weights,
-// buoys, junctions). Its motion as an end's (EndDef); a free point's own physics as a weight's.
+// Where lines end: a [[point]] (a mooring's anchors, fairleads, clump weights, buoys,
+// junctions), or an end of [ends] (the one line of a [cable] scene ends at two points, "start"
+// and "end"). Its motion as an end's (EndDef); a free point's own physics as a weight's.
 struct PointDef {
   std::string name;                       // unique; the lines name it
+  std::string key;                        // its keys' table in messages: "point[2]", "ends.start"
+  std::string label;                      // how messages name it: point "anchor1", start end
   EndDef motion;                          // position and motion: fixed, free, trochoid, ...
   double mass = 0;                        // free: m* [kg]
   double volume = 0;                      // free: V* [m^3], buoyancy
@@ -143,16 +146,19 @@ struct BodyDef {
                                               // [deg] x3 (a decay test)
 };
 
-// [[line]]: one line of a system, between two points (elastic).
+enum class CableModelKind { kElastic, kInextensible };
+
+// A line between two points: a [[line]], or the [cable] of a scene of one line.
 struct LineDef {
-  std::string name;                 // unique; its results' folder is lines/<name>
+  std::string name;                 // unique; its results' folder is lines/<name> (a [cable]:
+                                    // "cable")
+  std::string key;                  // its keys' table in messages: "line[1]", "cable"
+  CableModelKind model = CableModelKind::kElastic;
   std::vector<SectionDef> sections;
   std::vector<WeightDef> weights;
   int start = 0;                    // index into SceneDef::points: station 0's point
   int end = 0;                      // station s's point
 };
-
-enum class CableModelKind { kElastic, kInextensible };
 enum class InitialStateKind { kEquilibrium, kStraight };
 
 enum class IntegratorChoice { kExplicit, kImplicit };
@@ -197,25 +203,27 @@ struct SceneDef {
   std::string name;              // its stem: the default output folder name
   std::string title;
   std::vector<std::string> warnings;  // what reading it left out (a MoorDyn file's EI, ...)
+  bool from_moordyn = false;     // read from a MoorDyn input file (through the scene it converts
+                                 // to): advice naming scene keys is not the file's to take
   EnvironmentDef environment;
   SeabedDef seabed;
   WavesDef waves;
   std::vector<MaterialDef> materials;
-  CableModelKind model = CableModelKind::kElastic;
-  std::vector<SectionDef> sections;
-  std::vector<WeightDef> weights;
-  EndDef start;                  // station 0
-  EndDef end;                    // station s
-  // A system of lines ([[point]] and [[line]] instead of [cable] and [ends]): several lines
-  // between points. Empty for a single line.
+  // The lines between points, and the bodies points may be on: a [cable] and its [ends] are
+  // read as one line between two points, [[line]], [[point]] and [[body]] as they are.
   std::vector<PointDef> points;
   std::vector<LineDef> lines;
   std::vector<BodyDef> bodies;
-  bool is_system() const { return !lines.empty(); }
   InitialStateKind initial = InitialStateKind::kEquilibrium;
   SimulationDef simulation;
   OutputDef output;
   FilmDef film;
 };
+
+// How messages name a point's motion: an end of [ends] by its table ("ends.start"), a
+// [[point]] by its name (point "anchor1").
+inline std::string PointTitle(const PointDef& p) {
+  return p.key.rfind("ends.", 0) == 0 ? p.key : p.label;
+}
 
 }  // namespace cablefilm

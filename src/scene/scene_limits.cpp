@@ -50,53 +50,61 @@ std::string FilmFramesProblem(double span, double fps, double speed) {
   return why;
 }
 
-void CheckModelLimits(const SceneDef& scene, const LineModel& m) {
+void CheckModelLimits(const SceneDef& scene, const Model& model) {
   const std::string file = EscapeText(scene.path);
   auto fail = [&](const std::string& key, const std::string& message) {
     throw Error(file + ": " + key + ": " + message);
   };
-  if (m.ends.start.prescribed() && m.ends.end.prescribed()) {
-    const double chord = (m.ends.end.Position(0) - m.ends.start.Position(0)).norm();
-    const double length = m.line.total_length();
-    // The same comparison as the inextensible equilibrium (chord >= length fails there).
-    if (m.line.law == LinkLaw::kInextensible && chord >= length)
-      fail("ends.end.position",
-           "expected the ends less than the inextensible cable's length (" +
-               FormatNumber(length) + " m) apart at t = 0, they are " + FormatNumber(chord) +
-               " m apart (an inextensible cable cannot reach)");
-    if (m.line.law == LinkLaw::kElastic && chord > length) {
-      // The most stretched link at t = 0: a straight start stretches every link alike; the
-      // equilibrium shares one tension, stretching the most compliant link most.
-      double stretch = chord / length;
-      if (scene.initial == InitialStateKind::kEquilibrium) {
-        const double compliance = (m.line.rest_length.array() / m.line.axial_stiffness.array()).sum();
-        const double tension = (chord - length) / compliance;
-        stretch = 1.0 + tension / m.line.axial_stiffness.minCoeff();
+  for (std::size_t i = 0; i < model.lines.size(); ++i) {
+    const LineModel& m = model.lines[i];
+    // The key of the line's end point's position, as the scene names it.
+    const int end = model.line_points[i][1];
+    const std::string key = (end < static_cast<int>(scene.points.size())
+                                 ? scene.points[end].key
+                                 : "line[" + std::to_string(i) + "].end") + ".position";
+    const std::string cable = model.lines.size() > 1 ? "line \"" + model.line_names[i] + "\"" : "cable";
+    if (m.ends.start.prescribed() && m.ends.end.prescribed()) {
+      const double chord = (m.ends.end.Position(0) - m.ends.start.Position(0)).norm();
+      const double length = m.line.total_length();
+      // The same comparison as the inextensible equilibrium (chord >= length fails there).
+      if (m.line.law == LinkLaw::kInextensible && chord >= length)
+        fail(key, "expected the ends less than the inextensible " + cable + "'s length (" +
+                      FormatNumber(length) + " m) apart at t = 0, they are " +
+                      FormatNumber(chord) + " m apart (an inextensible cable cannot reach)");
+      if (m.line.law == LinkLaw::kElastic && chord > length) {
+        // The most stretched link at t = 0: a straight start stretches every link alike; the
+        // equilibrium shares one tension, stretching the most compliant link most.
+        double stretch = chord / length;
+        if (scene.initial == InitialStateKind::kEquilibrium) {
+          const double compliance =
+              (m.line.rest_length.array() / m.line.axial_stiffness.array()).sum();
+          const double tension = (chord - length) / compliance;
+          stretch = 1.0 + tension / m.line.axial_stiffness.minCoeff();
+        }
+        if (!(stretch <= kMaxStartStretch))
+          fail(key, "the ends are " + FormatNumber(chord) + " m apart at t = 0, which stretches the " +
+                        FormatNumber(length) + " m " + cable + "'s links up to " +
+                        FormatNumber(stretch) + " times their rest length; expected at most " +
+                        FormatNumber(kMaxStartStretch) +
+                        " times (beyond it Hooke's law has no meaning and the run stops as a "
+                        "numerical blow-up): bring the ends closer or lengthen the cable");
       }
-      if (!(stretch <= kMaxStartStretch))
-        fail("ends.end.position",
-             "the ends are " + FormatNumber(chord) + " m apart at t = 0, which stretches the " +
-                 FormatNumber(length) + " m cable's links up to " + FormatNumber(stretch) +
-                 " times their rest length; expected at most " +
-                 FormatNumber(kMaxStartStretch) +
-                 " times (beyond it Hooke's law has no meaning and the run stops as a "
-                 "numerical blow-up): bring the ends closer or lengthen the cable");
     }
-  }
-  const SimulationDef& sim = scene.simulation;
-  if (m.line.law == LinkLaw::kElastic && sim.integrator == IntegratorChoice::kExplicit &&
-      sim.time_step <= 0) {
-    const StabilityLimit limit = ComputeStabilityLimit(m);
-    const double dt = sim.safety_factor * limit.time_step;
-    const double steps = RunSpan(sim.duration, scene.output.interval) / dt;
-    if (!(steps <= kMaxSteps))
-      fail("simulation.time_step",
-           "\"auto\" with integrator = \"explicit\" is " + FormatNumber(sim.safety_factor) +
-               " x the stability limit of the stiffest link, " + FormatNumber(dt) +
-               " s, which makes " + FormatNumber(steps) + " steps of the " +
-               FormatNumber(sim.duration) + " s run; expected at most " +
-               FormatNumber(kMaxSteps) +
-               " steps (use integrator = \"implicit\", fewer segments or a shorter duration)");
+    const SimulationDef& sim = scene.simulation;
+    if (m.line.law == LinkLaw::kElastic && sim.integrator == IntegratorChoice::kExplicit &&
+        sim.time_step <= 0) {
+      const StabilityLimit limit = ComputeStabilityLimit(m);
+      const double dt = sim.safety_factor * limit.time_step;
+      const double steps = RunSpan(sim.duration, scene.output.interval) / dt;
+      if (!(steps <= kMaxSteps))
+        fail("simulation.time_step",
+             "\"auto\" with integrator = \"explicit\" is " + FormatNumber(sim.safety_factor) +
+                 " x the stability limit of the stiffest link, " + FormatNumber(dt) +
+                 " s, which makes " + FormatNumber(steps) + " steps of the " +
+                 FormatNumber(sim.duration) + " s run; expected at most " +
+                 FormatNumber(kMaxSteps) +
+                 " steps (use integrator = \"implicit\", fewer segments or a shorter duration)");
+    }
   }
 }
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/line_model.h"
+#include "core/model.h"
 #include "scene/scene_def.h"
 
 namespace cablefilm {
@@ -92,6 +92,6 @@ std::string FilmFramesProblem(double span, double fps, double speed);
 // cable's reach (inextensible: less than its length apart; elastic: no link stretched beyond
 // kMaxStartStretch), and the explicit scheme's automatic step giving at most kMaxSteps.
 // Throws Error naming the scene file and the key.
-void CheckModelLimits(const SceneDef& scene, const LineModel& model);
+void CheckModelLimits(const SceneDef& scene, const Model& model);
 
 }  // namespace cablefilm

@@ -73,6 +73,7 @@ SceneDef LoadScene(const std::string& path) {
     throw Error(std::string(e.what()) + " (in the scene converted from this MoorDyn file: "
                 "'cablefilm convert " + EscapeText(path) + "' shows it)");
   }
+  scene.from_moordyn = true;
   scene.warnings = system.warnings;
   scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());
   return scene;

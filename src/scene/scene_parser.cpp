@@ -347,13 +347,20 @@ void ReadSections(TableReader& r, const std::string& name, const SceneDef& scene
   }
 }
 
-void ReadCable(TableReader& top, SceneDef& scene) {
+// [cable]: the one line of its scene, from the point "start" to the point "end" ([ends]).
+void ReadCable(TableReader& top, SceneDef& scene, CableModelKind model) {
   const toml::table* t = top.SubTable("cable", true);
   TableReader r = top.Child(*t, "cable");
   // The model is read first by the caller (materials depend on it); mark it used here.
   r.Get("model");
-  ReadSections(r, "cable", scene, scene.sections, scene.weights);
+  LineDef line;
+  line.name = line.key = "cable";
+  line.model = model;
+  line.start = 0;
+  line.end = 1;
+  ReadSections(r, "cable", scene, line.sections, line.weights);
   r.Finish();
+  scene.lines.push_back(line);
 }
 
 // motion = "wave": [ratio, phase in degrees], the ratio at most kMaxRao; `unit` the ratio's
@@ -456,12 +463,18 @@ std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const 
   return motion;
 }
 
-void ReadEnd(TableReader& ends, const std::string& which, EndDef& end, const std::string& file,
-             const SceneDef& scene) {
+// [ends.start] or [ends.end]: the point `which` of a [cable] scene.
+void ReadEnd(TableReader& ends, const std::string& which, const std::string& file,
+             SceneDef& scene) {
   const toml::table* t = ends.SubTable(which, true);
-  TableReader r = ends.Child(*t, "ends." + which);
-  const std::string motion = ReadMotion(r, t, end, file, scene);
+  PointDef p;
+  p.name = which;
+  p.key = "ends." + which;
+  p.label = which + " end";
+  TableReader r = ends.Child(*t, p.key);
+  const std::string motion = ReadMotion(r, t, p.motion, file, scene);
   r.Finish(" (motion = " + Quote(motion) + " uses only the keys it needs)");
+  scene.points.push_back(p);
 }
 
 // A name of a point or a line: used in file names (lines/<name>/) and in points.csv.
@@ -493,9 +506,11 @@ void ReadPoints(TableReader& top, SceneDef& scene, const std::string& file) {
   const toml::array* arr = top.TableArray("point", true);
   for (size_t i = 0; i < arr->size(); ++i) {
     const toml::table* t = arr->get(i)->as_table();
-    TableReader r = top.Child(*t, "point[" + std::to_string(i) + "]");
     PointDef p;
+    p.key = "point[" + std::to_string(i) + "]";
+    TableReader r = top.Child(*t, p.key);
     p.name = ReadName(r, t);
+    p.label = "point " + Quote(p.name);
     CheckUnique(r, t, p.name, scene.points, "points");
     if (t->contains("body")) {  // fixed to a body: its position in the body's axes
       const std::string body = r.String("body", "", true);
@@ -623,9 +638,14 @@ void ReadLines(TableReader& top, SceneDef& scene) {
     const std::string name = "line[" + std::to_string(i) + "]";
     TableReader r = top.Child(*t, name);
     LineDef line;
+    line.key = name;
     line.name = ReadName(r, t);
     CheckUnique(r, t, line.name, scene.lines, "lines");
-    r.Choice("model", "elastic", {"elastic"});  // the system's step is the elastic line's
+    // An inextensible line between points that hold it (the coupled step is the elastic
+    // lines': the model refuses one joined to others, naming it).
+    line.model = r.Choice("model", "elastic", {"elastic", "inextensible"}) == "inextensible"
+                     ? CableModelKind::kInextensible
+                     : CableModelKind::kElastic;
     for (const char* key : {"start", "end"}) {
       const std::string point = r.String(key, "", true);
       int index = -1;
@@ -637,6 +657,8 @@ void ReadLines(TableReader& top, SceneDef& scene) {
       (std::string(key) == "start" ? line.start : line.end) = index;
     }
     ReadSections(r, name, scene, line.sections, line.weights);
+    if (const std::string far = LineReachProblem(line, scene); !far.empty())
+      r.Fail(t->get("end"), "end", far);
     r.Finish();
     scene.lines.push_back(line);
   }
@@ -669,7 +691,6 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
     TableReader r = top.Child(*cable, "cable");
     const std::string model = r.Choice("model", "elastic", {"elastic", "inextensible"});
     elastic = model == "elastic";
-    scene.model = elastic ? CableModelKind::kElastic : CableModelKind::kInextensible;
   }
   ReadMaterials(top, scene, elastic);
   if (root.contains("line") || root.contains("point") || root.contains("body")) {
@@ -683,16 +704,18 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
     ReadPoints(top, scene, file);
     ReadLines(top, scene);
   } else {
-    ReadCable(top, scene);
+    ReadCable(top, scene, elastic ? CableModelKind::kElastic : CableModelKind::kInextensible);
     const toml::table* ends = top.SubTable("ends", true);
     TableReader r = top.Child(*ends, "ends");
-    ReadEnd(r, "start", scene.start, file, scene);
-    ReadEnd(r, "end", scene.end, file, scene);
-    if (scene.start.motion == EndMotionKind::kFree && scene.end.motion == EndMotionKind::kFree)
+    ReadEnd(r, "start", file, scene);
+    ReadEnd(r, "end", file, scene);
+    if (scene.points[0].motion.motion == EndMotionKind::kFree &&
+        scene.points[1].motion.motion == EndMotionKind::kFree)
       r.Fail(ends, "end.motion",
              "expected at least one end that is not \"free\" (a cable with two free ends has no "
              "equilibrium)");
-    CheckEndsReach(ends, r, scene);
+    if (const std::string far = LineReachProblem(scene.lines[0], scene); !far.empty())
+      r.Fail(ends->get("end")->as_table()->get("position"), "end.position", far);
     r.Finish();
   }
   if (const toml::table* t = top.SubTable("initial", false)) {
@@ -773,15 +796,6 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
     scene.output.film = r.Bool("film", true);
     scene.output.frames = r.Bool("frames", false);
     r.Finish();
-  }
-  if (scene.is_system()) {
-    // What a system runs with today: the static equilibrium, the implicit scheme.
-    if (scene.initial == InitialStateKind::kStraight)
-      top.Fail(root.at_path("initial.state").node(), "initial.state",
-               "a system of lines starts from its static equilibrium: expected \"equilibrium\"");
-    if (scene.simulation.integrator == IntegratorChoice::kExplicit)
-      top.Fail(root.at_path("simulation.integrator").node(), "simulation.integrator",
-               "a system of lines is stepped by the implicit scheme: expected \"implicit\"");
   }
   const bool interval_given = scene.output.interval > 0;
   if (!interval_given) scene.output.interval = scene.film.speed / scene.film.fps;

@@ -18,64 +18,120 @@
 #include "scene/text_escape.h"
 
 namespace cablefilm {
+namespace {
+
+// The name of a run's line among the film's lines.
+std::string FilmLineName(const Run& run, std::size_t i, bool several_runs) {
+  if (run.model.lines.size() == 1) return run.label;
+  return several_runs ? run.model.line_names[i] + " (" + run.label + ")" : run.model.line_names[i];
+}
+
+// How a time plot's rows name a run's line in messages.
+std::string RowsName(const Run& run, std::size_t i) {
+  if (run.model.lines.size() == 1) return "the " + run.label + " run";
+  return "line \"" + run.model.line_names[i] + "\" of the " + run.label + " run";
+}
+
+}  // namespace
 
 SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& runs,
                         const std::string& view) {
+  const Run& first = *runs.front();
+  const Model& model = first.model;
+  const bool alike = model.lines.size() > 1;
   std::vector<LineView> lines;
   for (const Run* run : runs)
-    lines.push_back(MakeLineView(scene, run->model, run->initial.state.x, run->initial.tension(),
-                                 run->label));
-  return MakeSceneView(scene, runs.front()->model, std::move(lines), DrawsInSpace(scene, view));
+    for (std::size_t i = 0; i < run->model.lines.size(); ++i) {
+      const LineData& d = run->initial.lines[i];
+      const std::vector<SectionDef> none;
+      const std::vector<SectionDef>& sections =
+          !alike && i < scene.lines.size() ? scene.lines[i].sections : none;
+      lines.push_back(MakeLineView(scene, sections, run->model.lines[i], d.state.x, d.tension(),
+                                   FilmLineName(*run, i, runs.size() > 1)));
+    }
+  SceneView v = MakeSceneView(scene, model.lines.front(), std::move(lines), DrawsInSpace(scene, view));
+  if (!alike) return v;
+  v.lines_alike = true;
+  v.bodies.resize(model.bodies.size());
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    BodyView& body = v.bodies[b];
+    body.name = model.bodies[b].name;
+    const Vec& a = model.bodies[b].angles;
+    body.rest_angles = {a.x(), a.y(), a.z()};
+    if (model.bodies[b].kind == BodyKind::kDriven && model.bodies[b].turn.moves())
+      body.angles_at = [turn = model.bodies[b].turn](double t) {
+        const Vec now = turn.Position(t);  // [rad]
+        return std::array<double, 3>{now.x(), now.y(), now.z()};
+      };
+    if (b < scene.bodies.size() && scene.bodies[b].has_box) {  // the scene's bodies, in order
+      body.has_box = true;
+      body.box = scene.bodies[b].box;
+      body.box_center = scene.bodies[b].box_center;
+    }
+  }
+  for (const Point& p : model.points) {
+    if (p.ends.empty()) continue;
+    if (p.on_body >= 0) {
+      v.bodies[p.on_body].points.push_back(static_cast<int>(v.points.size()));
+      v.bodies[p.on_body].local.push_back({p.local.x(), p.local.y(), p.local.z()});
+    }
+    v.points.push_back({p.name, p.ends[0].line, p.ends[0].station});
+  }
+  return v;
 }
 
 FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>& runs,
                            const FilmRequest& request, double duration) {
-  const Run& run = *runs.front();
   FixedPolicy policy;
   policy.duration = duration;
-  double t_lo = run.extent.tension_min, t_hi = run.extent.tension_max;
-  Vec lo = run.extent.box_min, hi = run.extent.box_max;
-  for (const Run* r : runs) {
-    t_lo = std::min(t_lo, r->extent.tension_min);
-    t_hi = std::max(t_hi, r->extent.tension_max);
-    lo = lo.cwiseMin(r->extent.box_min);
-    hi = hi.cwiseMax(r->extent.box_max);
-  }
-  // Colour range from zero (slack) to a little above the largest tension of every run.
+  const RunExtent& first = runs.front()->lines.front().extent;
+  double t_lo = first.tension_min, t_hi = first.tension_max;
+  Vec lo = first.box_min, hi = first.box_max;
+  for (const Run* r : runs)
+    for (const LineRecord& line : r->lines) {
+      t_lo = std::min(t_lo, line.extent.tension_min);
+      t_hi = std::max(t_hi, line.extent.tension_max);
+      lo = lo.cwiseMin(line.extent.box_min);
+      hi = hi.cwiseMax(line.extent.box_max);
+    }
+  // Colour range from zero (slack) to a little above the largest tension of every line.
   policy.tension_min = request.tension_min >= 0 ? request.tension_min : std::min(0.0, t_lo);
   policy.tension_max =
       request.tension_max >= 0 ? request.tension_max : 1.05 * std::max(t_hi, 1.0);
-  policy.box =
-      ShownBox({lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z()}, view.sea, run.model.env.wave);
+  policy.box = ShownBox({lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z()}, view.sea,
+                        runs.front()->model.lines.front().env.wave);
   return policy;
 }
 
 bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
                 const FilmRequest& request, const std::atomic<int>& stop, PictureReport* report) {
   const Run& main = *runs.front();
-  // Every run steps again from its initial LineData to the frames (film_clock.h), in lockstep so
+  // Every run steps again from its initial Data to the frames (film_clock.h), in lockstep so
   // that a run can be drawn over another.
   const FilmClock clock(request.speed, request.fps, main.grid);
-  const double frame_interval = clock.interval;
   const long last = clock.last;
-  auto frame_time = [&](long k) { return clock.Time(k); };
   struct Stepper {
     TimeGrid grid;
     Inputs inputs;
-    LineData data;
-    Eigen::VectorXd row_min, row_max;  // on_rows: each link's envelope over the rows since the
-                                       // last frame [N] (empty: none yet)
+    Data data;
+    // on_rows: each line's links' envelope over the rows since the last frame [N] (empty: none
+    // yet).
+    std::vector<Eigen::VectorXd> row_min, row_max;
   };
   std::vector<Stepper> steppers;
   steppers.reserve(runs.size());
-  std::vector<MaxTensionLog::Cursor> cursors;  // each run's output rows
+  std::vector<MaxTensionLog::Cursor> cursors;  // each line's output rows, run by run
   std::vector<std::string> names;
   for (const Run* run : runs) {
     Stepper st{clock.Grid(run->grid), run->inputs, run->initial, {}, {}};
     st.inputs.stop = &stop;
+    st.row_min.resize(run->lines.size());
+    st.row_max.resize(run->lines.size());
     steppers.push_back(std::move(st));
-    cursors.emplace_back(run->row_max);
-    names.push_back("the " + run->label + " run");
+    for (std::size_t i = 0; i < run->lines.size(); ++i) {
+      cursors.emplace_back(run->lines[i].row_max);
+      names.push_back(RowsName(*run, i));
+    }
   }
   std::vector<RowStepper> row_steppers;
   for (std::size_t r = 0; r < runs.size(); ++r)
@@ -89,12 +145,14 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
       const long target = clock.Row(k, st.grid.outputs);
       while (rows.row() < target) {
         rows.Next();
-        const Eigen::VectorXd& T = st.data.tension();
-        if (st.row_min.size() == 0) {
-          st.row_min = st.row_max = T;
-        } else {
-          st.row_min = st.row_min.cwiseMin(T);
-          st.row_max = st.row_max.cwiseMax(T);
+        for (std::size_t i = 0; i < st.data.lines.size(); ++i) {
+          const Eigen::VectorXd& T = st.data.lines[i].tension();
+          if (st.row_min[i].size() == 0) {
+            st.row_min[i] = st.row_max[i] = T;
+          } else {
+            st.row_min[i] = st.row_min[i].cwiseMin(T);
+            st.row_max[i] = st.row_max[i].cwiseMax(T);
+          }
         }
       }
       return;
@@ -104,13 +162,14 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
       return;
     }
     // The shorter last frame, with the step rule of the run's own grid.
-    const double span = frame_time(k) - frame_time(k - 1);
+    const double span = clock.Time(k) - clock.Time(k - 1);
     const int steps = clock.LastFrameSteps(runs[r]->grid);
     for (int i = 0; i < steps; ++i) {
       ThrowIfCancelled(&stop, "the film");
-      StepLine(runs[r]->model, st.data, st.inputs, span / steps);
+      Step(runs[r]->model, st.data, st.inputs, span / steps);
     }
-    st.data.state.t = frame_time(k);
+    st.data.t = clock.Time(k);
+    for (LineData& line : st.data.lines) line.state.t = st.data.t;
   };
   FilmOptions o;
   o.width = request.width;
@@ -121,11 +180,12 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
   o.write_frames = request.frames;
   o.shader_dir = request.shader_dir;
   o.write_max_tension = false;  // max_tension.png comes from the rows (WriteMaxTensionFigure)
-  o.series_label = main.label;
+  o.series_label = main.model.lines.size() == 1 ? main.label : main.model.line_names.front();
   const SceneView view = MakeFilmScene(scene, runs, request.view);
-  const FixedPolicy policy = MakeFilmPolicy(view, runs, request, frame_time(last));
+  const FixedPolicy policy = MakeFilmPolicy(view, runs, request, clock.Time(last));
   FilmWriter writer(o, view, policy, request.out_dir, static_cast<int>(last + 1));
-  const Vec current = TopCurrent(main.model, SceneWater(main.model));  // a run's is the scene's
+  const LineModel& any = main.model.lines.front();  // one environment: any line's is the scene's
+  const Vec current = TopCurrent(any, SceneWater(any));  // a run's is the scene's
   bool finished = true;
   std::string failure;  // a blow-up in this pass: the film is then partial too
   for (long k = 0; k <= last && failure.empty(); ++k) {
@@ -133,68 +193,79 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
       finished = false;
       break;
     }
-    for (size_t r = 0; k > 0 && r < steppers.size() && failure.empty(); ++r) {
+    for (std::size_t r = 0; k > 0 && r < steppers.size() && failure.empty(); ++r) {
       try {
         advance(r, k);
       } catch (const CancelledError&) {
         finished = false;
         break;
       } catch (const BlowUpError& e) {
-        failure = std::string(e.what()) + " (" + runs[r]->label + " run)";
+        failure = std::string(e.what()) + (runs.size() > 1 ? " (" + runs[r]->label + " run)" : "");
         break;
       }
     }
     if (!finished || !failure.empty()) break;
-    Snapshot snap;  // a line a run, each with its output rows since the last frame
-    snap.t = steppers[0].data.state.t;
-    snap.lines.resize(steppers.size());
-    for (std::size_t r = 0; r < steppers.size(); ++r)
-      SetLineState(steppers[r].data.state.x, steppers[r].data.tension(), &snap.lines[r]);
+    Snapshot snap;  // every line of every run, each with its output rows since the last frame
+    snap.t = steppers[0].data.t;
+    for (const Stepper& st : steppers)
+      for (const LineData& line : st.data.lines) {
+        snap.lines.emplace_back();
+        SetLineState(line.state.x, line.tension(), &snap.lines.back());
+      }
     if (view.sea.surface) {
-      AddWaterSurface(main.model.env.wave, policy.box, &snap);
-      snap.wave = main.model.env.wave;
+      AddWaterSurface(any.env.wave, policy.box, &snap);
+      snap.wave = any.env.wave;
     }
     snap.current = current;
-    // The output rows up to this frame (all that are left at the last frame): the first run's
-    // times, every run's largest tension at each.
+    // The output rows up to this frame (all that are left at the last frame): the first line's
+    // times, every line's largest tension at each.
     const double until = k == last ? std::numeric_limits<double>::infinity()
-                                   : steppers[0].data.state.t + 1e-9 * frame_interval;
+                                   : steppers[0].data.t + 1e-9 * clock.interval;
     TakeRows(cursors, names, until, &snap);
-    for (std::size_t r = 0; r < steppers.size(); ++r) {  // each link's envelope over those rows
-      Stepper& st = steppers[r];
-      if (st.row_min.size() != static_cast<Eigen::Index>(snap.lines[r].tension.size())) continue;
-      snap.lines[r].row_link_min.assign(st.row_min.data(), st.row_min.data() + st.row_min.size());
-      snap.lines[r].row_link_max.assign(st.row_max.data(), st.row_max.data() + st.row_max.size());
-      st.row_min.resize(0);
-      st.row_max.resize(0);
-    }
+    std::size_t at = 0;  // each link's envelope over those rows
+    for (Stepper& st : steppers)
+      for (std::size_t i = 0; i < st.data.lines.size(); ++i, ++at) {
+        LineSnapshot& line = snap.lines[at];
+        if (st.row_min[i].size() != static_cast<Eigen::Index>(line.tension.size())) continue;
+        line.row_link_min.assign(st.row_min[i].data(), st.row_min[i].data() + st.row_min[i].size());
+        line.row_link_max.assign(st.row_max[i].data(), st.row_max[i].data() + st.row_max[i].size());
+        st.row_min[i].resize(0);
+        st.row_max[i].resize(0);
+      }
     writer.Push(std::move(snap));
   }
+  const std::string out = EscapeText(request.out_dir);
   const bool complete = finished && failure.empty();
   if (complete) {
     writer.Finish();
     if (request.say_written)
-      std::printf("wrote %s/film.mp4%s\n", request.out_dir.c_str(),
-                  request.frames ? " and frames/" : "");
+      std::printf("wrote %s/film.mp4%s\n", out.c_str(), request.frames ? " and frames/" : "");
   } else {
     writer.FinishPartial();  // plays up to the last frame drawn
     if (request.say_written)
-      std::printf("wrote %s/film.partial.mp4 (%s at t = %.4g s)\n", request.out_dir.c_str(),
-                  failure.empty() ? "interrupted" : "the film pass failed",
-                  steppers[0].data.state.t);
+      std::printf("wrote %s/film.partial.mp4 (%s at t = %.4g s)\n", out.c_str(),
+                  failure.empty() ? "interrupted" : "the film pass failed", steppers[0].data.t);
   }
-  if (report) {
+  if (report) {  // over the first run's lines: the largest of any
     *report = PictureReport{};
-    const std::vector<MaxTensionSeries> shown = writer.all_max_tension_series();
-    FindPeak(shown[0].t, shown[0].tension, report);
     report->frames = writer.frames_done();
-    report->last_frame_max = steppers[0].data.tension().maxCoeff();
-    report->last_frame_t = steppers[0].data.state.t;
-    if (!shown[0].tension.empty()) report->last_row_max = shown[0].tension.back();
+    const Data& d = steppers[0].data;
+    report->last_frame_t = d.t;
+    for (const LineData& line : d.lines) {
+      const double now = line.tension().maxCoeff();
+      if (!(now <= report->last_frame_max)) report->last_frame_max = now;
+    }
+    const std::vector<MaxTensionSeries> shown = writer.all_max_tension_series();
+    for (std::size_t i = 0; i < d.lines.size() && i < shown.size(); ++i) {
+      const MaxTensionSeries& s = shown[i];
+      FindPeak(s.t, s.tension, report);
+      if (!s.tension.empty() && !(s.tension.back() <= report->last_row_max))
+        report->last_row_max = s.tension.back();
+    }
   }
   if (!failure.empty())
-    throw Error("the film pass failed: " + failure + "; the film up to then is " +
-                request.out_dir + "/film.partial.mp4");
+    throw Error("the film pass failed: " + failure + "; the film up to then is " + out +
+                "/film.partial.mp4");
   return finished;
 }
 

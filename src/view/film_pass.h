@@ -50,23 +50,29 @@ struct PictureReport {
 struct SceneView;    // view/scene_view.h
 struct FixedPolicy;  // view/history.h
 
-// The film's scene view: a line a run (each run's cable, ends, sections, initial state, named by
-// the run's label), the first drawn in full and the others over it, in space or in the plane
-// as `view` says (scene/film_view.h). Each run has been run once (run/run.h: ExecuteRun). Used
-// by RenderFilm, and to draw a frame on its own.
+// The film's scene view of `runs` (each run once: run/run.h, ExecuteRun), in space or in the
+// plane as `view` says (scene/film_view.h). A run of one line: its line, its sections named;
+// several runs of one line (compare): a line a run, named by its label, the first drawn in
+// full and the others over it. A model of several lines: every line of every run drawn alike
+// (SceneView::lines_alike), named (a second run's lines by their name and its label), the
+// first run's points named where their first line end is (a point no line is attached to is
+// not drawn) and its bodies. Used by RenderFilm, and to draw a frame on its own.
 SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& runs,
                         const std::string& view = "auto");
 
 // What stays fixed over the film of `runs` lasting `duration` simulated seconds: the colour
-// range and the world box of every run (or the request's range), the box reaching to the
-// seabed and the crests of `view` (MakeFilmScene's).
+// range over every line's rows of every run (or the request's range) and their world box, the
+// box reaching to the seabed and the crests of `view` (MakeFilmScene's).
 FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>& runs,
                            const FilmRequest& request, double duration);
 
-// Renders film.mp4 of the runs, a line each (MakeFilmScene): every run after the first drawn
-// over it on the same colour range. Frames are at k x speed / fps and, when the run's end is not on one, at its end.
-// Returns false if `stop` was raised (the film is then closed at the last frame drawn, as
-// film.partial.mp4). `report` (optional): the film's time plot at its last frame. Throws Error.
+// Renders film.mp4 of the runs (MakeFilmScene's lines): a second, deterministic pass that steps
+// each run's initial Data again through the frames (film_clock.h), in lockstep so that a run can
+// be drawn over another. Frames are at k x speed / fps and, when the run's end is not on one,
+// at its end. Returns false if `stop` was raised (the film is then closed at the last frame
+// drawn, as film.partial.mp4). `report` (optional): the film's time plot at its last frame,
+// over the first run's lines (its peak the largest row of any of them). Throws Error (a
+// blow-up in this pass: the film up to it stays partial).
 bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
                 const FilmRequest& request, const std::atomic<int>& stop,
                 PictureReport* report = nullptr);

@@ -92,18 +92,19 @@ PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<Row
 PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<const Run*>& runs,
                                     const std::string& out_dir, bool complete) {
   std::vector<RowMaxima> rows;
-  for (const Run* run : runs)
-    rows.push_back({run->label, &run->row_max, SingleBreakingLoad(run->model.line.breaking_load)});
-  return WriteMaxTensionFigure(scene, rows, out_dir, complete, "the cable");
-}
-
-PictureReport WriteSystemMaxTensionFigure(const SceneDef& scene, const SystemRun& run,
-                                          const std::string& out_dir, bool complete) {
-  std::vector<RowMaxima> rows;
-  for (std::size_t i = 0; i < run.row_max.size(); ++i)
-    rows.push_back({run.sys.line_names[i], &run.row_max[i],
-                    SingleBreakingLoad(run.sys.lines[i].line.breaking_load)});
-  return WriteMaxTensionFigure(scene, rows, out_dir, complete, "each line");
+  bool several = false;  // lines: a curve a line, named by it
+  for (const Run* run : runs) {
+    const Model& m = run->model;
+    several = several || m.lines.size() > 1;
+    for (std::size_t i = 0; i < m.lines.size(); ++i) {
+      std::string label = run->label;
+      if (m.lines.size() > 1)
+        label = runs.size() > 1 ? m.line_names[i] + " (" + run->label + ")" : m.line_names[i];
+      rows.push_back({label, &run->lines[i].row_max,
+                      SingleBreakingLoad(m.lines[i].line.breaking_load)});
+    }
+  }
+  return WriteMaxTensionFigure(scene, rows, out_dir, complete, several ? "each line" : "the cable");
 }
 
 }  // namespace cablefilm

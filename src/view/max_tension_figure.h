@@ -8,7 +8,6 @@
 
 #include "run/max_tension_log.h"
 #include "run/run.h"
-#include "run/system_run.h"
 #include "scene/scene_def.h"
 #include "view/film_pass.h"
 #include "view/frame_builder.h"
@@ -41,12 +40,9 @@ PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<Row
                                     const std::string& out_dir, bool complete,
                                     const std::string& what);
 
-// The same for runs of one line (their labels and row maxima).
+// The same for runs (their row maxima: a curve a line, named by the run's label for a model of
+// one line, else by the line's name).
 PictureReport WriteMaxTensionFigure(const SceneDef& scene, const std::vector<const Run*>& runs,
                                     const std::string& out_dir, bool complete);
-
-// The same for a system: a curve a line, named by it.
-PictureReport WriteSystemMaxTensionFigure(const SceneDef& scene, const SystemRun& run,
-                                          const std::string& out_dir, bool complete);
 
 }  // namespace cablefilm

@@ -27,22 +27,24 @@ bool RenderMemoryRunFilm(const MemoryRun& run, const FilmRequest& request,
 }
 
 Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& request) {
-  const MemoryRows& rows = run.rows;
-  if (row < 0 || row >= rows.rows)
+  const long rows = run.lines.front().rows;  // every line's rows alike
+  if (row < 0 || row >= rows)
     throw Error("row " + std::to_string(row) + ": expected a row from 0 to " +
-                std::to_string(rows.rows - 1));
-  const LineModel& model = run.run.model;
+                std::to_string(rows - 1));
+  const Model& model = run.run.model;
+  const std::size_t nl = model.lines.size();
   const SceneView scene = MakeFilmScene(run.scene, {&run.run}, request.view);
-  const Vec current = TopCurrent(model, SceneWater(model));
   const FixedPolicy policy = MakeFilmPolicy(scene, {&run.run}, request, run.run.grid.end());
+  const LineModel& any = model.lines.front();  // one environment: any line's is the scene's
+  const Vec current = TopCurrent(any, SceneWater(any));
   const Colormap colormap(request.colormap);
   History history(scene, policy);
   Snapshot snap;
-  snap.lines.resize(1);
+  snap.lines.resize(nl);
   for (long r = 0; r <= row; ++r) {
-    snap.t = rows.time[r];
-    SetRowLine(rows, r, model, &snap.lines[0]);
-    AddRowSnapshot(scene, policy, model.env.wave, current, &snap, &history);
+    snap.t = run.lines.front().time[r];
+    for (std::size_t i = 0; i < nl; ++i) SetRowLine(run.lines[i], r, model.lines[i], &snap.lines[i]);
+    AddRowSnapshot(scene, policy, any.env.wave, current, &snap, &history);
   }
   return DrawRowFrame(scene, history, snap, request, colormap);
 }

@@ -21,11 +21,11 @@ bool RenderMemoryRunFilm(const MemoryRun& run, const FilmRequest& request,
                          const std::atomic<int>& stop);
 
 // The film's frame showing output row `row` (0 to rows - 1) at request.width x request.height:
-// the cable at that row, the time plot and the tension envelope over every row up to it, on
+// every line at that row, the time plot and the tension envelope over every row up to it, on
 // the colour range and the world box of the whole run, as the film draws it. Throws Error.
 Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& request);
 
-// The steps of such a frame, shared with a system's (memory_system_film.h):
+// The steps of such a frame:
 // `line` as held rows r of `rows` (a run of `model`) show it;
 void SetRowLine(const MemoryRows& rows, long r, const LineModel& model, LineSnapshot* line);
 // `snap` (its time and lines set) added to the history as a row of its own, with the sea and

@@ -6,7 +6,8 @@
 
 namespace cablefilm {
 
-LineView MakeLineView(const SceneDef& scene, const LineModel& model, const Points& initial_x,
+LineView MakeLineView(const SceneDef& scene, const std::vector<SectionDef>& sections,
+                      const LineModel& model, const Points& initial_x,
                       const Eigen::VectorXd& initial_tension, std::string label) {
   const Line& line = model.line;
   LineView view;
@@ -15,7 +16,7 @@ LineView MakeLineView(const SceneDef& scene, const LineModel& model, const Point
   view.section_boundaries = line.section_boundaries;
   // Each section by its material's name, when every section has one (the model keeps one
   // boundary between each two sections, so the counts agree).
-  for (const SectionDef& section : scene.sections) {
+  for (const SectionDef& section : sections) {
     const bool named = section.material >= 0 &&
                        static_cast<std::size_t>(section.material) < scene.materials.size() &&
                        !scene.materials[section.material].name.empty();

@@ -13,11 +13,12 @@
 
 namespace cablefilm {
 
-// The line of `model` (of `scene`) named `label`: its stations' arc lengths, its sections (each
-// named by its material when every one has a name), its weights, its ends by role (fixed,
-// moving, free), and its initial state: positions `initial_x` [m], tensions `initial_tension`
-// [N].
-LineView MakeLineView(const SceneDef& scene, const LineModel& model, const Points& initial_x,
+// The line of `model` (of `scene`, made from `sections`) named `label`: its stations' arc
+// lengths, its sections (each named by its material when every one has a name; none named
+// when `sections` is empty), its weights, its ends by role (fixed, moving, free), and its
+// initial state: positions `initial_x` [m], tensions `initial_tension` [N].
+LineView MakeLineView(const SceneDef& scene, const std::vector<SectionDef>& sections,
+                      const LineModel& model, const Points& initial_x,
                       const Eigen::VectorXd& initial_tension, std::string label);
 
 // The scene's title, `lines`, the reference's name (the scene's initial state: an equilibrium

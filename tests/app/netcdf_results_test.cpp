@@ -30,6 +30,7 @@
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "../core/drive_support.h"
+#include "../core/scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -289,9 +290,9 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   // One time, bit for bit what the run computed (the same simulation in this process).
   const size_t at_row = 100;  // t = 3.333 s
   const SceneDef def = LoadScene(scene);
-  const LineModel m = BuildModel(def);
-  const TimeGrid grid = ChooseTimeGrid(m, def.simulation, def.output.interval);
-  State state = MakeInitialState(def, m, nullptr);
+  const LineModel m = LineOf(def);
+  const TimeGrid grid = ChooseLineGrid(m, def.simulation, def.output.interval);
+  State state = InitialStateOf(def);
   auto integrator = testing::MakeStepper(m, grid);
   size_t row = 0;
   Eigen::VectorXd computed;
@@ -347,7 +348,8 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
 TEST_F(NetcdfResultsTest, DeflatedOnlyWhenLarge) {
   const SceneDef scene = LoadScene(ShortP63("1.0"));
   const cablefilm::Run run = PrepareRun(scene, BuildModel(scene), "elastic", nullptr);
-  const int stations = run.model.stations(), links = run.model.line.links;
+  const LineModel& line = run.model.lines.front();
+  const int stations = line.stations(), links = line.line.links;
   const double row_bytes = 8.0 * (3 * stations + links + 7);
   const long small_rows = 200, large_rows = static_cast<long>(kDeflateAboveBytes / row_bytes) + 1;
   auto info_of = [](long rows, bool planar = true) {
@@ -371,11 +373,11 @@ TEST_F(NetcdfResultsTest, DeflatedOnlyWhenLarge) {
   for (const Case& c : {Case{"small", small_rows, true}, Case{"large", large_rows, true},
                         Case{"large_3d", large_rows, false}}) {
     const long rows = c.rows;
-    State state = run.initial.state;
-    Eigen::VectorXd tension = run.initial.tension();
+    State state = run.initial.lines.front().state;
+    Eigen::VectorXd tension = run.initial.lines.front().tension();
     const fs::path path = dir_ / (std::string(c.name) + ".nc");
     std::unique_ptr<LineResultsNc> nc = OpenLineResultsNc(path.string(), info_of(rows, c.planar),
-                                                          run.model, run.initial.state, tension);
+                                                          line, state, tension);
     std::uintmax_t open_size = 0;
     for (int r = 0; r < small_rows; ++r) {
       state.t = 0.1 * r;
@@ -481,7 +483,7 @@ TEST_F(NetcdfResultsTest, BlownUpRunLeavesAPartialFileThatOpens) {
   const std::string base_text = ReadText(fs::path(CABLEFILM_SOURCE_DIR) / "scenes/catenary.toml");
   const fs::path probe = dir_ / "probe.toml";
   std::ofstream(probe, std::ios::binary) << base_text;
-  const double limit = ComputeStabilityLimit(BuildModel(LoadScene(probe.string()))).time_step;
+  const double limit = ComputeStabilityLimit(LineOf(LoadScene(probe.string()))).time_step;
   const std::string dt = Format("%.17g", 3.0 * limit);
   std::string text = Replace(base_text, "time_step = \"auto\"",
                              "integrator = \"explicit\"\ntime_step = " + dt);

@@ -93,24 +93,24 @@ void ExpectTurned(const Case& c, double phi_deg, double bound, double position_b
   const MemoryRun b = RunScene(TurnedScene(phi_deg, c));
   ASSERT_TRUE(a.run.summary.completed) << a.run.summary.failure;
   ASSERT_TRUE(b.run.summary.completed) << b.run.summary.failure;
-  ASSERT_EQ(a.rows.rows, b.rows.rows);
-  ASSERT_EQ(a.rows.tension.size(), b.rows.tension.size());
-  ASSERT_EQ(a.rows.x.size(), b.rows.x.size());
+  ASSERT_EQ(a.lines[0].rows, b.lines[0].rows);
+  ASSERT_EQ(a.lines[0].tension.size(), b.lines[0].tension.size());
+  ASSERT_EQ(a.lines[0].x.size(), b.lines[0].x.size());
   double peak = 0, reach = 0;
-  for (double T : a.rows.tension) peak = std::max(peak, std::abs(T));
+  for (double T : a.lines[0].tension) peak = std::max(peak, std::abs(T));
   // rows.x: every row's stations, each (x, y, z) in turn.
-  for (std::size_t i = 0; i < a.rows.x.size(); i += 3) reach = std::max(reach, std::abs(a.rows.x[i]));
+  for (std::size_t i = 0; i < a.lines[0].x.size(); i += 3) reach = std::max(reach, std::abs(a.lines[0].x[i]));
   double tension_diff = 0, position_diff = 0, sideways = 0, initial_diff = 0;
-  const std::size_t links = a.rows.tension.size() / a.rows.rows;
-  for (std::size_t i = 0; i < a.rows.tension.size(); ++i) {
-    const double diff = std::abs(a.rows.tension[i] - b.rows.tension[i]);
+  const std::size_t links = a.lines[0].tension.size() / a.lines[0].rows;
+  for (std::size_t i = 0; i < a.lines[0].tension.size(); ++i) {
+    const double diff = std::abs(a.lines[0].tension[i] - b.lines[0].tension[i]);
     tension_diff = std::max(tension_diff, diff);
     if (i < links) initial_diff = std::max(initial_diff, diff);
   }
   const double phi = phi_deg * kDegree;
-  for (std::size_t i = 0; i < a.rows.x.size(); i += 3) {
-    const double* p = &a.rows.x[i];
-    const double* q = &b.rows.x[i];
+  for (std::size_t i = 0; i < a.lines[0].x.size(); i += 3) {
+    const double* p = &a.lines[0].x[i];
+    const double* q = &b.lines[0].x[i];
     double xt, zt;
     Turn(phi, p[0], p[2], &xt, &zt);
     position_diff = std::max({position_diff, std::abs(xt - q[0]), std::abs(p[1] - q[1]),

@@ -18,7 +18,7 @@
 #include "io/run_report_file.h"
 #include "run/driver.h"
 #include "run/initial_state.h"
-#include "run/system_run.h"
+#include "run/run.h"
 #include "run/time_grid.h"
 #include "core/error.h"
 #include "core/explicit_step.h"
@@ -27,6 +27,7 @@
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "../core/drive_support.h"
+#include "../core/scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -61,7 +62,7 @@ TEST_F(RunCommandTest, BlowUpIsDetectedAndNothingNonFiniteIsWritten) {
   // catenary.toml released from the straight chord, stepped at 3x the explicit stability limit
   // (velocity Verlet is stable only for omega dt < 2: the fastest axial mode grows ~30x a step).
   const std::string base = Write("probe.toml", Scene("catenary"));
-  const double limit = ComputeStabilityLimit(BuildModel(LoadScene(base))).time_step;
+  const double limit = ComputeStabilityLimit(LineOf(LoadScene(base))).time_step;
   char dt[64];
   std::snprintf(dt, sizeof dt, "%.17g", 3.0 * limit);
   std::string text = Replace(Scene("catenary"), "time_step = \"auto\"",
@@ -93,9 +94,9 @@ TEST_F(RunCommandTest, BlowUpIsDetectedAndNothingNonFiniteIsWritten) {
 
 TEST(BlowUp, IntegratorThrowsWithTimeAndStation) {
   const SceneDef s = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const LineModel m = BuildModel(s);
+  const LineModel m = LineOf(s);
   const double dt = 3.0 * ComputeStabilityLimit(m).time_step;
-  State st = MakeInitialState(s, m, nullptr);
+  State st = InitialStateOf(s);
   testing::Stepper integ(Scheme::kExplicit);
   integ.Initialize(m, st);
   try {
@@ -113,9 +114,9 @@ TEST(BlowUp, IntegratorThrowsWithTimeAndStation) {
 TEST(BlowUp, StableBelowTheLimit) {
   // The same scene at 0.9x the limit runs its 2 s without complaint (the limit is real).
   const SceneDef s = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const LineModel m = BuildModel(s);
+  const LineModel m = LineOf(s);
   const double dt = 0.9 * ComputeStabilityLimit(m).time_step;
-  State st = MakeInitialState(s, m, nullptr);
+  State st = InitialStateOf(s);
   testing::Stepper integ(Scheme::kExplicit);
   integ.Initialize(m, st);
   EXPECT_NO_THROW(for (double t = 0; t < 2.0; t += dt) integ.Step(m, st, dt));
@@ -124,9 +125,9 @@ TEST(BlowUp, StableBelowTheLimit) {
 // Runs a scene in-process and returns every output's state and tensions as raw doubles.
 std::vector<double> RunSeries(const std::string& path) {
   const SceneDef s = LoadScene(path);
-  const LineModel m = BuildModel(s);
-  const TimeGrid grid = ChooseTimeGrid(m, s.simulation, s.output.interval);
-  State st = MakeInitialState(s, m, nullptr);
+  const LineModel m = LineOf(s);
+  const TimeGrid grid = ChooseLineGrid(m, s.simulation, s.output.interval);
+  State st = InitialStateOf(s);
   auto integ = testing::MakeStepper(m, grid);
   std::vector<double> out;
   testing::Simulate(m, *integ, st, grid, [&](const State& c, const Eigen::VectorXd& T) {
@@ -285,8 +286,8 @@ TEST_F(RunCommandTest, ASystemsUnresolvedSnapsAreMeasuredByARefinedRun) {
       "spread_refined.toml", Replace(ReadText(spread), "[simulation]\n",
                                      std::string("[simulation]\n") + tolerance));
   const SceneDef scene = LoadScene(refined);
-  SystemRun run = PrepareSystemRun(scene, BuildSystem(scene), nullptr);
-  ExecuteSystemRun(run, std::vector<std::vector<RowSink*>>(run.sys.lines.size()), {});
+  cablefilm::Run run = PrepareRun(scene, BuildModel(scene), "elastic", nullptr);
+  ExecuteRun(run, {});
   ASSERT_TRUE(run.summary.completed) << run.summary.failure;
   // The report's 10 digits, each rounded within 5e-10 of itself.
   EXPECT_NEAR(run.summary.peak, s.refined_peak, 1e-9 * run.summary.peak);

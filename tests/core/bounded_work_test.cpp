@@ -14,6 +14,7 @@
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "drive_support.h"
+#include "scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -24,7 +25,7 @@ SceneDef P63() { return LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/p
 // in the current never advanced. It now goes in at once, and the answer is still water's.
 TEST(BoundedWork, AnUnderflowingCurrentStillReachesItsEquilibrium) {
   SceneDef scene = P63();
-  LineModel still = BuildModel(scene);
+  LineModel still = LineOf(scene);
   LineModel tiny = still;
   tiny.env.current = 5e-324;
   LineEquilibriumReport report;
@@ -36,7 +37,7 @@ TEST(BoundedWork, AnUnderflowingCurrentStillReachesItsEquilibrium) {
 }
 
 TEST(BoundedWork, ARaisedFlagStopsTheEquilibriumAtItsFirstIteration) {
-  LineModel m = BuildModel(P63());
+  LineModel m = LineOf(P63());
   CancelFlag flag{2};
   LineEquilibriumOptions options;
   options.cancel = &flag;
@@ -45,11 +46,11 @@ TEST(BoundedWork, ARaisedFlagStopsTheEquilibriumAtItsFirstIteration) {
 
 TEST(BoundedWork, ARaisedFlagStopsTheImplicitStepAndTheOutputLoop) {
   const SceneDef scene = P63();
-  const LineModel m = BuildModel(scene);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
+  const LineModel m = LineOf(scene);
+  const TimeGrid grid = ChooseLineGrid(m, scene.simulation, 1.0 / 30);
   auto integrator = testing::MakeStepper(m, grid);
   LineEquilibriumReport report;
-  State s = MakeInitialState(scene, m, &report);
+  State s = InitialStateOf(scene, &report);
   CancelFlag flag{0};
   int outputs = 0;
   // Raised by the third output: Simulate returns false with the rows so far.
@@ -73,13 +74,13 @@ TEST(BoundedWork, ARaisedFlagStopsTheImplicitStepAndTheOutputLoop) {
 // has a floor, a billionth of the interval, and the run ends with a blow-up that says why.
 TEST(BoundedWork, AMotionFasterThanAnyStepEndsInAClearError) {
   SceneDef scene = P63();
-  scene.end.motion = EndMotionKind::kTable;
-  scene.end.table = {{0, 0, 0}, {1e-9, 1, 0}, {0.2, 0, 0}};
-  const LineModel m = BuildModel(scene);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
+  scene.points[1].motion.motion = EndMotionKind::kTable;
+  scene.points[1].motion.table = {{0, 0, 0}, {1e-9, 1, 0}, {0.2, 0, 0}};
+  const LineModel m = LineOf(scene);
+  const TimeGrid grid = ChooseLineGrid(m, scene.simulation, 1.0 / 30);
   auto integrator = testing::MakeStepper(m, grid);
   LineEquilibriumReport report;
-  State s = MakeInitialState(scene, m, &report);
+  State s = InitialStateOf(scene, &report);
   try {
     testing::Simulate(m, *integrator, s, grid, [](const State&, const Eigen::VectorXd&) { return true; });
     FAIL() << "a 1e9 m/s end motion ran to the end";
@@ -96,10 +97,10 @@ TEST(BoundedWork, AMotionFasterThanAnyStepEndsInAClearError) {
 // does not reach changes nothing.
 TEST(BoundedWork, TheImplicitStepsOfACallStopAtTheirBound) {
   const SceneDef scene = P63();
-  const LineModel m = BuildModel(scene);
-  TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
+  const LineModel m = LineOf(scene);
+  TimeGrid grid = ChooseLineGrid(m, scene.simulation, 1.0 / 30);
   LineEquilibriumReport report;
-  const State start = MakeInitialState(scene, m, &report);
+  const State start = InitialStateOf(scene, &report);
   auto free_run = testing::MakeStepper(m, grid);
   State a = start;
   free_run->Initialize(m, a);

@@ -7,11 +7,12 @@
 #include <string>
 
 #include "core/line_equilibrium.h"
-#include "run/coarse_guess.h"
+#include "core/coarse_guess.h"
 #include "run/initial_state.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
+#include "scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -21,17 +22,17 @@ using testing::Figure;
 // P63 (a current, a weight 27.432 m from the anchor) with each section's links times `times`.
 SceneDef P63Links(int times) {
   SceneDef s = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml");
-  for (SectionDef& sec : s.sections) sec.segments *= times;
+  for (SectionDef& sec : s.lines[0].sections) sec.segments *= times;
   return s;
 }
 
 TEST(CoarseGuess, GivesTheChordsEquilibriumInAFewIterations) {
   const SceneDef scene = P63Links(50);  // 3 000 links
-  const LineModel m = BuildModel(scene);
+  const LineModel m = LineOf(scene);
   ASSERT_GE(m.line.links, kCoarseGuessFromLinks);
-  ASSERT_TRUE(CoarseEquilibriumGuess(scene, m, nullptr).has_value());
+  ASSERT_TRUE(CoarseEquilibriumGuess(BuildModel(scene), 0, nullptr).has_value());
   LineEquilibriumReport coarse, chord;
-  const State a = MakeInitialState(scene, m, &coarse);
+  const State a = InitialStateOf(scene, &coarse);
   const State b = SolveLineEquilibrium(m, &chord);
   const double gap = (a.x - b.x).cwiseAbs().maxCoeff();
   RecordProperty("gap_m", Figure(gap));
@@ -48,12 +49,12 @@ TEST(CoarseGuess, GivesTheChordsEquilibriumInAFewIterations) {
 
 TEST(CoarseGuess, NoneWhereNoMergeKeepsTheSectionsWhole) {
   SceneDef scene = P63Links(50);
-  scene.sections[1].segments += 1;  // 1 500 and 1 501 links: no common factor
-  const LineModel m = BuildModel(scene);
-  EXPECT_FALSE(CoarseEquilibriumGuess(scene, m, nullptr).has_value());
+  scene.lines[0].sections[1].segments += 1;  // 1 500 and 1 501 links: no common factor
+  const LineModel m = LineOf(scene);
+  EXPECT_FALSE(CoarseEquilibriumGuess(BuildModel(scene), 0, nullptr).has_value());
   // The line then starts from the chord, as lines of fewer links do.
   LineEquilibriumReport report;
-  const State s = MakeInitialState(scene, m, &report);
+  const State s = InitialStateOf(scene, &report);
   EXPECT_GT(report.iterations, 5);
   // Converged as the solver counts it: the tolerance, or the round-off floor of 3 000 stiff links.
   EXPECT_LE(report.residual, std::max(1e-9 * report.force_scale, report.roundoff_floor));
@@ -61,7 +62,7 @@ TEST(CoarseGuess, NoneWhereNoMergeKeepsTheSectionsWhole) {
 
 TEST(CoarseGuess, NoneForAShortLine) {
   const SceneDef scene = P63Links(1);
-  EXPECT_FALSE(CoarseEquilibriumGuess(scene, BuildModel(scene), nullptr).has_value());
+  EXPECT_FALSE(CoarseEquilibriumGuess(BuildModel(scene), 0, nullptr).has_value());
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
+#include "scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -202,12 +203,12 @@ TEST(P63Equilibrium, MatchesExactPiecewiseCatenary) {
               exact.V0(), std::hypot(exact.H(), exact.V0()));
 
   SceneDef scene = LoadScene(P63Path());
-  ASSERT_EQ(scene.sections.size(), 2u);
+  ASSERT_EQ(scene.lines[0].sections.size(), 2u);
   Errors prev;
   for (int factor : {1, 2, 4}) {  // 60, 120, 240 links
     SceneDef s = scene;
-    for (SectionDef& sec : s.sections) sec.segments *= factor;
-    const LineModel m = BuildModel(s);
+    for (SectionDef& sec : s.lines[0].sections) sec.segments *= factor;
+    const LineModel m = LineOf(s);
     LineEquilibriumReport rep;
     const State st = SolveLineEquilibrium(m, &rep);
     const Errors e = Compare(m, st, exact, Vec::Zero());
@@ -302,13 +303,13 @@ TEST(EquilibriumRobustness, FromStraightChord) {
 
   // P63 (buoyant nylon), and P63-C with a 0.5 m/s current.
   SceneDef p63 = LoadScene(P63Path());
-  ExpectConvergedFromChord(BuildModel(p63), "P63");
+  ExpectConvergedFromChord(LineOf(p63), "P63");
   p63.environment.current = 0.5;
-  const LineModel pc = BuildModel(p63);
+  const LineModel pc = LineOf(p63);
   ExpectConvergedFromChord(pc, "P63-C");
   // The current pushes the line downstream: the middle moves along +x from still water.
   p63.environment.current = 0.0;
-  const State still = SolveLineEquilibrium(BuildModel(p63));
+  const State still = SolveLineEquilibrium(LineOf(p63));
   LineEquilibriumReport rep;
   const State drift = SolveLineEquilibrium(pc, &rep);
   EXPECT_GT(rep.current_steps, 0);

@@ -21,6 +21,7 @@
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "drive_support.h"
+#include "scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -75,7 +76,7 @@ EnergyRun Auto(const LineModel& m, const State& s, double interval, double durat
   sim.integrator = IntegratorChoice::kExplicit;
   sim.time_step = 0;  // "auto"
   sim.duration = duration;
-  const TimeGrid grid = ChooseTimeGrid(m, sim, interval);
+  const TimeGrid grid = ChooseLineGrid(m, sim, interval);
   EXPECT_TRUE(grid.automatic);
   EXPECT_LE(grid.dt, 0.8 * grid.limit.time_step);
   auto integ = testing::MakeStepper(m, grid);
@@ -131,9 +132,9 @@ TEST(ExplicitAuto, CatenaryFallingFromItsChordGainsNoEnergy) {
   // scenes/catenary.toml: 100 m of chain (EA 1e7 N) between fixed points 82.5 m apart, released
   // from the straight chord: every link slack, it falls 20 m and snaps taut hard (1e5 N). 5 s.
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const LineModel m = BuildModel(scene);
+  const LineModel m = LineOf(scene);
   ASSERT_EQ(m.env.fluid_density, 0.0);
-  const State s = MakeInitialState(scene, m, nullptr);
+  const State s = InitialStateOf(scene, nullptr);
   ExpectNoEnergyPumped(m, s, scene.output.interval, 5.0);
 }
 
@@ -143,9 +144,9 @@ TEST(ExplicitAuto, WithoutSlackLinksItTakesTheStepsAsked) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml");
   scene.simulation.integrator = IntegratorChoice::kExplicit;
   scene.simulation.duration = 10;
-  const LineModel m = BuildModel(scene);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
-  State s = MakeInitialState(scene, m, nullptr);
+  const LineModel m = LineOf(scene);
+  const TimeGrid grid = ChooseLineGrid(m, scene.simulation, 1.0 / 30);
+  State s = InitialStateOf(scene, nullptr);
   auto integ = testing::MakeStepper(m, grid);
   ASSERT_TRUE(testing::Simulate(m, *integ, s, grid, [](const State&, const Eigen::VectorXd& T) {
     return T.minCoeff() > 0;

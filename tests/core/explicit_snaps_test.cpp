@@ -18,6 +18,7 @@
 #include "one_link_snap.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -87,8 +88,8 @@ SceneRun RunSnappingLine(IntegratorChoice integrator) {
   SceneDef scene =
       LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/snapping_line.toml");
   scene.simulation.integrator = integrator;
-  const LineModel m = BuildModel(scene);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
+  const LineModel m = LineOf(scene);
+  const TimeGrid grid = ChooseLineGrid(m, scene.simulation, scene.output.interval);
   State state = SolveLineEquilibrium(m);
   auto stepper = testing::MakeStepper(m, grid);
   double peak = 0, squares = 0;

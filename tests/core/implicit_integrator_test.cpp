@@ -28,6 +28,7 @@
 #include "scene/scene_loader.h"
 #include "test_support.h"
 #include "drive_support.h"
+#include "scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -135,8 +136,8 @@ TEST(ImplicitIntegrator, SecondOrderOnTautStringMode) {
 SceneDef P63Scene(int links = 60) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/polachek1963.toml");
   int base = 0;
-  for (const SectionDef& s : scene.sections) base += s.segments;
-  for (SectionDef& s : scene.sections) s.segments = s.segments * links / base;
+  for (const SectionDef& s : scene.lines[0].sections) base += s.segments;
+  for (SectionDef& s : scene.lines[0].sections) s.segments = s.segments * links / base;
   return scene;
 }
 
@@ -152,9 +153,9 @@ Series RunScene(const SceneDef& scene_in, IntegratorChoice kind, double time_ste
   scene.simulation.integrator = kind;
   scene.simulation.time_step = time_step;
   scene.simulation.duration = duration;
-  const LineModel m = BuildModel(scene);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30.0);
-  State state = MakeInitialState(scene, m, nullptr);
+  const LineModel m = LineOf(scene);
+  const TimeGrid grid = ChooseLineGrid(m, scene.simulation, 1.0 / 30.0);
+  State state = InitialStateOf(scene, nullptr);
   auto integ = testing::MakeStepper(m, grid);
   Series out;
   testing::Simulate(m, *integ, state, grid, [&](const State& s, const Eigen::VectorXd& T) {
@@ -397,8 +398,8 @@ TEST(ImplicitIntegrator, AgreesWithExplicitOnP63) {
 // away between t = 4 and 5 s (the slack line snaps taut), and held at +2 m to t = 10 s.
 SceneDef SnapScene() {
   SceneDef scene = P63Scene(60);
-  scene.end.motion = EndMotionKind::kTable;
-  scene.end.table = {{0, 0, 0}, {1, 0, 0}, {2, -2, 0}, {4, -2, 0}, {5, 2, 0}, {8, 2, 0}};
+  scene.points[1].motion.motion = EndMotionKind::kTable;
+  scene.points[1].motion.table = {{0, 0, 0}, {1, 0, 0}, {2, -2, 0}, {4, -2, 0}, {5, 2, 0}, {8, 2, 0}};
   return scene;
 }
 
@@ -410,8 +411,8 @@ struct SnapResult {
 
 SnapResult RunSnap(double rho_inf, double step_factor) {
   const SceneDef scene = SnapScene();
-  const LineModel m = BuildModel(scene);
-  State s = MakeInitialState(scene, m, nullptr);
+  const LineModel m = LineOf(scene);
+  State s = InitialStateOf(scene, nullptr);
   const double h = step_factor * ComputeStabilityLimit(m).time_step;
   auto integ = testing::MakeStepper(Scheme::kImplicit, m, rho_inf);
   integ->Initialize(m, s);
@@ -443,7 +444,7 @@ SnapResult RunSnap(double rho_inf, double step_factor) {
 // farthest point. A numerical blow-up breaks this bound.
 double SnapTensionBound() {
   SceneDef scene = SnapScene();
-  const LineModel m = BuildModel(scene);
+  const LineModel m = LineOf(scene);
   double end_speed = 0;
   for (double t = 0; t <= 10; t += 1e-3) end_speed = std::max(end_speed, m.ends.end.Velocity(t).norm());
   const double max_speed = end_speed + m.env.gravity * 3.0;
@@ -451,9 +452,9 @@ double SnapTensionBound() {
   for (int k = 0; k < m.line.links; ++k)
     z = std::max(z, std::sqrt(m.line.axial_stiffness[k] * (m.line.link_mass[k] + m.line.virtual_mass[k]) /
                               m.line.rest_length[k]));
-  scene.end.motion = EndMotionKind::kFixed;
-  scene.end.position[0] += 2.0;
-  const LineModel far = BuildModel(scene);
+  scene.points[1].motion.motion = EndMotionKind::kFixed;
+  scene.points[1].motion.position[0] += 2.0;
+  const LineModel far = LineOf(scene);
   State eq = SolveLineEquilibrium(far);
   ForceWorkspace ws(far.line.links);
   ComputeGeometry(eq.x, ws.geometry);
@@ -463,8 +464,8 @@ double SnapTensionBound() {
 
 void ExpectSnapRunsThrough(double rho_inf) {
   const SceneDef scene = SnapScene();
-  const LineModel m = BuildModel(scene);
-  State s0 = MakeInitialState(scene, m, nullptr);
+  const LineModel m = LineOf(scene);
+  State s0 = InitialStateOf(scene, nullptr);
   ForceWorkspace ws(m.line.links);
   ComputeGeometry(s0.x, ws.geometry);
   ComputeHookeTensions(m, ws.geometry, ws.tension);
@@ -506,10 +507,10 @@ TEST(ImplicitIntegrator, SlackThenSnapWithAdaptiveStepDefaultRhoInf) {
   scene.simulation.duration = 10;
   scene.simulation.time_step = 0;
   scene.simulation.integrator = IntegratorChoice::kImplicit;
-  const LineModel m = BuildModel(scene);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
+  const LineModel m = LineOf(scene);
+  const TimeGrid grid = ChooseLineGrid(m, scene.simulation, 1.0 / 30);
   ASSERT_GT(grid.options.tolerance, 0);
-  State s = MakeInitialState(scene, m, nullptr);
+  State s = InitialStateOf(scene, nullptr);
   auto integ = testing::MakeStepper(m, grid);
   double peak = 0;
   int most_slack = 0;

@@ -35,6 +35,7 @@
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "drive_support.h"
+#include "scene_line.h"
 
 #ifndef CABLEFILM_TEST_RENDER
 #define CABLEFILM_TEST_RENDER 0
@@ -304,7 +305,7 @@ AutoRun RunAuto(const LineModel& m, double tolerance, const std::vector<double>&
   sim.duration = times.back();
   sim.time_step = 0;  // "auto"
   sim.tolerance = tolerance;
-  const TimeGrid grid = ChooseTimeGrid(m, sim, 0.05);
+  const TimeGrid grid = ChooseLineGrid(m, sim, 0.05);
   EXPECT_EQ(grid.options.scheme, Scheme::kInextensible);
   EXPECT_EQ(grid.steps_per_output, 1);  // the substeps are the integrator's own
   EXPECT_NEAR(grid.options.tolerance, tolerance > 0 ? tolerance : 1e-6 * m.line.total_length(), 1e-18);
@@ -549,7 +550,7 @@ Eigen::VectorXd HookeTensions(const LineModel& m, const Points& x) {
 
 TEST(InextensibleLimit, ElasticP63EquilibriumApproachesItAsOneOverEA) {
   SceneDef scene = LoadScene(kP63);
-  const LineModel base = BuildModel(scene);  // elastic
+  const LineModel base = LineOf(scene);  // elastic
   const State rigid = SolveInextensibleEquilibrium(base, nullptr);
   double imbalance = 0;
   const Eigen::VectorXd T_rigid = ConstraintTensions(base, rigid.x, &imbalance);
@@ -587,13 +588,13 @@ TEST(InextensibleLimit, ElasticP63EquilibriumApproachesItAsOneOverEA) {
 // ---------------------------------------------------------------------------------------------
 TEST(InextensibleP63, LinkLengthsHeldOverTheFullRun) {
   SceneDef scene = LoadScene(kP63);
-  scene.model = CableModelKind::kInextensible;
-  const LineModel m = BuildModel(scene);
+  scene.lines[0].model = CableModelKind::kInextensible;
+  const LineModel m = LineOf(scene);
   ASSERT_EQ(m.line.law, LinkLaw::kInextensible);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
+  const TimeGrid grid = ChooseLineGrid(m, scene.simulation, scene.output.interval);
   ASSERT_EQ(grid.options.scheme, Scheme::kInextensible);
   LineEquilibriumReport report;
-  State state = MakeInitialState(scene, m, &report);
+  State state = InitialStateOf(scene, &report);
   auto integ = testing::MakeStepper(m, grid);
   double worst = 0, peak = 0;
   long rows = 0;

@@ -14,6 +14,7 @@
 #include "core/step.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "scene_line.h"
 
 namespace {
 std::atomic<long> g_allocations{0};
@@ -38,7 +39,7 @@ long AllocationsWhileStepping(Scheme kind, CableModelKind model, double dt,
                               const char* scene_file = "polachek1963.toml",
                               bool turning_end = false) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + scene_file);
-  scene.model = model;
+  scene.lines[0].model = model;
   if (!scene.seabed.present)
     scene.environment.current = 0.5;  // every force term active: drag with current, prisms
   if (waves) {  // and the waves' terms, the surface 2.5 m above the moving end's rest
@@ -49,7 +50,7 @@ long AllocationsWhileStepping(Scheme kind, CableModelKind model, double dt,
     scene.waves.surface_y = 33;
     scene.waves.ramp_rate = 0.5;
   }
-  LineModel m = BuildModel(scene);
+  LineModel m = LineOf(scene);
   if (turning_end)  // its far end a point 3 m from a driven body's reference point, turning
     m.ends.end = m.ends.end.WithTurn(
         EndMotion::Trochoid(Vec::Zero(), Vec(0.05, 0.1, 0.0), Vec(0.0, 0.05, 0.1), 0.6, 0.5),
@@ -135,7 +136,7 @@ TEST(NoAllocation, ExplicitAutoStepThroughSnaps) {
   // "auto" refines its substeps (the check that predicts the snaps, the cable's energy it then
   // needs) and takes them.
   const SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/catenary.toml");
-  const LineModel m = BuildModel(scene);
+  const LineModel m = LineOf(scene);
   State s;
   s.x = StraightChord(m);
   s.v = Points::Zero(kDim, m.stations());

@@ -26,6 +26,7 @@
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
+#include "scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -146,15 +147,15 @@ TEST(StickSlipFriction, GroundedMooringAnchorRangeConvergesAsTheLawSharpens) {
   auto range = [&](double shear) {
     SceneDef scene = LoadScene(path);
     scene.seabed.friction_stiffness = shear;
-    const LineModel m = BuildModel(scene);
-    CheckModelLimits(scene, m);
+    const LineModel m = LineOf(scene);
+    CheckModelLimits(scene, BuildModel(scene));
     EXPECT_TRUE(HasStickSlip(m));
-    const MemoryRun r = RunInMemory(scene, m, nullptr);
+    const MemoryRun r = RunInMemory(scene, BuildModel(scene), nullptr);
     EXPECT_TRUE(r.run.summary.completed) << r.run.summary.failure;
     const int links = m.line.links;
     double lo = 1e300, hi = 0;
-    for (long row = 0; row < r.rows.rows; ++row) {
-      const double t = r.rows.tension[row * links];  // the anchor's link [N]
+    for (long row = 0; row < r.lines[0].rows; ++row) {
+      const double t = r.lines[0].tension[row * links];  // the anchor's link [N]
       lo = std::min(lo, t);
       hi = std::max(hi, t);
     }

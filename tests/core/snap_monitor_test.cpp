@@ -18,6 +18,7 @@
 #include "test_support.h"
 #include "drive_support.h"
 #include "one_link_snap.h"
+#include "scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -101,8 +102,8 @@ TEST(SnapMonitor, RoundOffAtRestLengthIsNoSnap) {
 StepStats RunScene(const std::string& name, double duration = 0) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + name);
   if (duration > 0) scene.simulation.duration = duration;
-  const LineModel m = BuildModel(scene);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, scene.output.interval);
+  const LineModel m = LineOf(scene);
+  const TimeGrid grid = ChooseLineGrid(m, scene.simulation, scene.output.interval);
   State state = SolveLineEquilibrium(m);
   auto integrator = testing::MakeStepper(m, grid);
   integrator->Initialize(m, state);
@@ -116,7 +117,7 @@ TEST(SnapMonitor, SnappingLineDefaultSaysItsPeakIsNotConverged) {
   const StepStats st = RunScene("snapping_line.toml");
   const SceneDef scene =
       LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/snapping_line.toml");
-  const std::vector<std::string> w = TrustWarnings(BuildModel(scene), st);
+  const std::vector<std::string> w = TrustWarnings(LineOf(scene), st);
   std::printf("[ snap ] snapping line: %ld steps (%ld rejected) from %.3g to %.3g s, %ld snaps, "
               "%ld unresolved\n",
               st.steps, st.rejected, st.record.smallest_step, st.record.largest_step,

@@ -14,6 +14,7 @@
 #include "run/time_grid.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -25,55 +26,55 @@ SceneDef Scene(const std::string& name) {
 TEST(StartDuration, FiveRampTimesOfTheSlowestRamp) {
   // P63: eq. (3) with nu_s = 0.5 1/s: R(t) within 4 % of 1 at nu t = 5, t = 10 s.
   SceneDef p63 = Scene("polachek1963.toml");
-  EXPECT_DOUBLE_EQ(StartDuration(BuildModel(p63)), 10.0);
-  p63.end.ramp_rate = 0.25;
-  EXPECT_DOUBLE_EQ(StartDuration(BuildModel(p63)), 20.0);
+  EXPECT_DOUBLE_EQ(StartDuration(LineOf(p63)), 10.0);
+  p63.points[1].motion.ramp_rate = 0.25;
+  EXPECT_DOUBLE_EQ(StartDuration(LineOf(p63)), 20.0);
   // Without a ramp the orbit starts at once: one period, 10 s.
-  p63.end.ramp_rate = 0;
-  EXPECT_DOUBLE_EQ(StartDuration(BuildModel(p63)), 10.0);
+  p63.points[1].motion.ramp_rate = 0;
+  EXPECT_DOUBLE_EQ(StartDuration(LineOf(p63)), 10.0);
   // The grounded mooring's sea builds up at 0.2 1/s: 25 s (its end follows the waves).
   SceneDef mooring = Scene("grounded_mooring.toml");
-  EXPECT_DOUBLE_EQ(StartDuration(BuildModel(mooring)), 25.0);
+  EXPECT_DOUBLE_EQ(StartDuration(LineOf(mooring)), 25.0);
   // Still water (height 0, a converted MoorDyn file's surface) starts nothing: P63 under it
   // starts as P63, 10 s, not the still sea's 5 / 0.2 s.
-  p63.end.ramp_rate = 0.5;
+  p63.points[1].motion.ramp_rate = 0.5;
   p63.waves = mooring.waves;
   p63.waves.height = 0;
-  EXPECT_DOUBLE_EQ(StartDuration(BuildModel(p63)), 10.0);
+  EXPECT_DOUBLE_EQ(StartDuration(LineOf(p63)), 10.0);
   // Nothing moves, or only a table moves: no start.
-  EXPECT_EQ(StartDuration(BuildModel(Scene("catenary.toml"))), 0.0);
-  EXPECT_EQ(StartDuration(BuildModel(Scene("ship_table.toml"))), 0.0);
+  EXPECT_EQ(StartDuration(LineOf(Scene("catenary.toml"))), 0.0);
+  EXPECT_EQ(StartDuration(LineOf(Scene("ship_table.toml"))), 0.0);
 }
 
 TEST(StartDuration, TheTimeGridUsesItAndTheScenesKeys) {
   SceneDef p63 = Scene("polachek1963.toml");
-  TimeGrid g = ChooseTimeGrid(BuildModel(p63), p63.simulation, 1.0 / 30);
+  TimeGrid g = ChooseLineGrid(LineOf(p63), p63.simulation, 1.0 / 30);
   EXPECT_DOUBLE_EQ(g.options.start_end, 10.0);
   EXPECT_DOUBLE_EQ(g.options.start_tolerance, g.options.tolerance / kStartToleranceDivisor);
   EXPECT_DOUBLE_EQ(g.options.ToleranceAt(9.99), g.options.start_tolerance);
   EXPECT_DOUBLE_EQ(g.options.ToleranceAt(10.0), g.options.tolerance);
   p63.simulation.start_duration = 3;
   p63.simulation.start_tolerance = 1e-6;
-  g = ChooseTimeGrid(BuildModel(p63), p63.simulation, 1.0 / 30);
+  g = ChooseLineGrid(LineOf(p63), p63.simulation, 1.0 / 30);
   EXPECT_DOUBLE_EQ(g.options.start_end, 3.0);
   EXPECT_DOUBLE_EQ(g.options.start_tolerance, 1e-6);
   // A fixed step has no tolerance, nor a start's: the steps asked.
   p63.simulation.time_step = 0.01;
-  g = ChooseTimeGrid(BuildModel(p63), p63.simulation, 1.0 / 30);
+  g = ChooseLineGrid(LineOf(p63), p63.simulation, 1.0 / 30);
   EXPECT_EQ(g.options.ToleranceAt(0.0), 0.0);
   // The explicit scheme's automatic step has neither.
   p63.simulation.time_step = 0;
   p63.simulation.integrator = IntegratorChoice::kExplicit;
-  g = ChooseTimeGrid(BuildModel(p63), p63.simulation, 1.0 / 30);
+  g = ChooseLineGrid(LineOf(p63), p63.simulation, 1.0 / 30);
   EXPECT_EQ(g.options.start_end, 0.0);
 }
 
 // Steps P63 over [0, span] and returns the implicit steps taken.
 long StepsOver(const SceneDef& scene, double span) {
-  const LineModel m = BuildModel(scene);
-  const TimeGrid grid = ChooseTimeGrid(m, scene.simulation, 1.0 / 30);
+  const LineModel m = LineOf(scene);
+  const TimeGrid grid = ChooseLineGrid(m, scene.simulation, 1.0 / 30);
   const Inputs in = SceneInputs(m);
-  LineData d = MakeLineData(m, in, grid.options, MakeInitialState(scene, m, nullptr));
+  LineData d = MakeLineData(m, in, grid.options, InitialStateOf(scene, nullptr));
   for (double t = 0; t < span - 1e-9; t += 1.0 / 30) ImplicitStep(m, d, in, 1.0 / 30);
   return d.stats.steps;
 }

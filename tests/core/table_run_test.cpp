@@ -14,6 +14,7 @@
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
+#include "scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -71,19 +72,19 @@ struct Peaks {
 
 Peaks Simulate(const std::string& path) {
   const SceneDef scene = LoadScene(path);
-  const LineModel m = BuildModel(scene);
-  CheckModelLimits(scene, m);
-  const MemoryRun r = RunInMemory(scene, m, nullptr);
+  const LineModel m = LineOf(scene);
+  CheckModelLimits(scene, BuildModel(scene));
+  const MemoryRun r = RunInMemory(scene, BuildModel(scene), nullptr);
   EXPECT_TRUE(r.run.summary.completed) << r.run.summary.failure;
   Peaks p;
   p.steps = r.run.summary.stats.steps;
   const int links = m.line.links;
-  for (long i = 0; i < r.rows.rows; ++i) {
+  for (long i = 0; i < r.lines[0].rows; ++i) {
     double top = 0;
-    for (int k = 0; k < links; ++k) top = std::max(top, r.rows.tension[i * links + k]);
-    p.t.push_back(r.rows.time[i]);
+    for (int k = 0; k < links; ++k) top = std::max(top, r.lines[0].tension[i * links + k]);
+    p.t.push_back(r.lines[0].time[i]);
     p.tension.push_back(top);
-    p.fairlead.push_back(r.rows.tension[i * links + links - 1]);
+    p.fairlead.push_back(r.lines[0].tension[i * links + links - 1]);
   }
   return p;
 }

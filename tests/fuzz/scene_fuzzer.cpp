@@ -8,10 +8,9 @@
 //      links or a straight start; for larger ones (up to kMaxLinksChecked) what `check` does
 //      before the equilibrium (the equilibrium then runs in 2., within the time budget);
 //   2. for a scene of at most kMaxLinksSimulated links: the initial state (the static
-//      equilibrium) and the first kMaxOutputs outputs of the run, with its result files, for the
-//      scene's model and, when compare would accept it, for the other model too; for a system
-//      of lines ([[point]] and [[line]]) the system's equilibrium and its first kMaxOutputs
-//      outputs through the system's run (what RunSystem does: each line's files, points.csv).
+//      equilibrium) and the first kMaxOutputs outputs of the run, with its result files (each
+//      line's equilibrium.csv and timeseries.csv, points.csv of several lines), for the
+//      scene's model and, when compare would accept it, for the other model too.
 // Every cablefilm::Error is a clean answer. Anything else fails: a sanitizer report, another
 // exception (std::bad_alloc, std::out_of_range, ...; main() would abort on them), a hang
 // (libFuzzer -timeout; the replay driver's alarm). Runs long by design (a stiff explicit scene)
@@ -42,11 +41,11 @@
 #include "io/points_file.h"
 #include "io/result_files.h"
 #include "run/run.h"
-#include "run/system_run.h"
 #include "run/time_grid.h"
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
+#include "../core/scene_line.h"
 
 namespace cablefilm_fuzz {
 namespace {
@@ -62,7 +61,8 @@ constexpr long kMaxLinksSimulated = 1000;
 constexpr long kMaxOutputs = 20;          // outputs simulated after t = 0, per model
 constexpr double kBudgetSeconds = 0.3;    // wall time for the runs of an input
                                           // (CABLEFILM_FUZZ_BUDGET)
-constexpr double kSystemEquilibriumBudgets = 5;  // a system's equilibrium: 5 budgets
+constexpr double kCoupledEquilibriumBudgets = 5;  // statics of lines joined at points or
+                                                  // bodies: 5 budgets
 
 Counts g_counts;
 
@@ -142,80 +142,63 @@ void Explain(const char* what, const Error& e) {
 
 long Links(const SceneDef& scene) {
   long links = 0;
-  for (const SectionDef& s : scene.sections) links += s.segments;
-  for (const LineDef& line : scene.lines)  // a system's lines
+  for (const LineDef& line : scene.lines)
     for (const SectionDef& s : line.sections) links += s.segments;
   return links;
 }
 
 enum class Outcome { kFinished, kError, kBudget };
 
-// What SimulateToFiles does for `run` and `compare`, on the first kMaxOutputs outputs.
-Outcome RunModel(const SceneDef& scene, const std::string& suffix, const CancelFlag* cancel) {
-  try {
-    const LineModel m = BuildModel(scene);
-    CheckModelLimits(scene, m);
-    Run run = PrepareRun(scene, m, LawName(m.line.law), cancel);
-    const std::string out = g_setup->out.string();
-    WriteEquilibriumCsv(out + "/equilibrium" + suffix + ".csv", m, run.initial.state,
-                        run.initial.tension());
-    TimeseriesWriter series(out + "/timeseries" + suffix + ".csv", m, run.inputs);
-    long outputs = 0;
-    RowFunction enough([&](const LineData&) { return outputs++ < kMaxOutputs; });
-    ExecuteRun(run, {&series, &enough});
-    if (run.summary.completed)
-      series.Commit();
-    else
-      series.CommitPartial(out + "/timeseries" + suffix + ".partial.csv");
-  } catch (const Error& e) {
-    Explain("run", e);
-    return *cancel != 0 ? Outcome::kBudget : Outcome::kError;
-  }
-  return *cancel != 0 ? Outcome::kBudget : Outcome::kFinished;
+// Whether the model has lines joined at points or bodies: its statics take longer.
+bool Coupled(const Model& model) {
+  for (const Island& island : model.islands)
+    if (island.coupled()) return true;
+  return false;
 }
 
-// A system's run as RunSystem does it (system_command.cpp), on the first kMaxOutputs outputs:
-// the system's equilibrium, each line's equilibrium.csv and timeseries.csv, points.csv.
-class EnoughRows : public SystemRowSink {
- public:
-  bool Row(const Data&) override { return outputs_++ < kMaxOutputs; }
-
- private:
-  long outputs_ = 0;
-};
-
-Outcome RunSystemModel(const SceneDef& scene, const CancelFlag* cancel) {
+// What `run` and `compare` do (SimulateToFiles), on the first kMaxOutputs outputs: the initial
+// state, each line's equilibrium.csv and timeseries.csv, points.csv of several lines. The
+// statics of lines joined at points get kCoupledEquilibriumBudgets budgets, the steps one.
+Outcome RunModel(const SceneDef& scene, const std::string& suffix) {
+  const CancelFlag* cancel = g_setup->watchdog->Arm(g_setup->budget);
   try {
-    SystemRun run = PrepareSystemRun(scene, BuildSystem(scene), cancel);
-    g_setup->watchdog->Arm(g_setup->budget);  // the steps: the budget of a line's run
-    const Model& sys = run.sys;
+    const Model model = BuildModel(scene);
+    CheckModelLimits(scene, model);
+    if (Coupled(model)) cancel = g_setup->watchdog->Arm(g_setup->budget * kCoupledEquilibriumBudgets);
+    Run run = PrepareRun(scene, model, ModelLawName(model), cancel);
+    g_setup->watchdog->Arm(g_setup->budget);  // the steps: the budget of a run
     const std::string out = g_setup->out.string();
-    const std::size_t nl = sys.lines.size();
+    const std::size_t nl = run.model.lines.size();
     std::vector<std::unique_ptr<TimeseriesWriter>> series(nl);
-    std::vector<std::vector<RowSink*>> line_sinks(nl);
+    std::vector<RowSink*> sinks;
     for (std::size_t i = 0; i < nl; ++i) {
       const LineData& d = run.initial.lines[i];
-      const std::string name = out + "/line" + std::to_string(i);
-      WriteEquilibriumCsv(name + "_equilibrium.csv", sys.lines[i], d.state, d.tension());
-      series[i] = std::make_unique<TimeseriesWriter>(name + "_timeseries.csv", sys.lines[i],
-                                                   run.inputs);
-      line_sinks[i] = {series[i].get()};
+      const std::string name = out + "/line" + std::to_string(i) + suffix;
+      WriteEquilibriumCsv(name + "_equilibrium.csv", run.model.lines[i], d.state, d.tension());
+      series[i] = std::make_unique<TimeseriesWriter>(name + "_timeseries.csv", run.model.lines[i],
+                                                     static_cast<int>(i), run.inputs,
+                                                     &run.lines[i].row_ends);
+      sinks.push_back(series[i].get());
     }
-    PointsWriter points(out + "/points.csv", sys, run.inputs);
-    EnoughRows enough;
-    ExecuteSystemRun(run, line_sinks, {&points, &enough});
+    std::unique_ptr<PointsWriter> points;
+    if (nl > 1) {
+      points = std::make_unique<PointsWriter>(out + "/points" + suffix + ".csv", run.model, run.inputs);
+      sinks.push_back(points.get());
+    }
+    long outputs = 0;
+    RowFunction enough([&](const Data&) { return outputs++ < kMaxOutputs; });
+    sinks.push_back(&enough);
+    ExecuteRun(run, sinks);
     for (std::size_t i = 0; i < nl; ++i) {
       if (run.summary.completed)
         series[i]->Commit();
       else
-        series[i]->CommitPartial(out + "/line" + std::to_string(i) + "_timeseries.partial.csv");
+        series[i]->CommitPartial(out + "/line" + std::to_string(i) + suffix + "_timeseries.partial.csv");
     }
-    if (run.summary.completed)
-      points.Commit();
-    else
-      points.CommitPartial(out + "/points.partial.csv");
+    if (points && run.summary.completed) points->Commit();
+    if (points && !run.summary.completed) points->CommitPartial(out + "/points" + suffix + ".partial.csv");
   } catch (const Error& e) {
-    Explain("system run", e);
+    Explain("run", e);
     return *cancel != 0 ? Outcome::kBudget : Outcome::kError;
   }
   return *cancel != 0 ? Outcome::kBudget : Outcome::kFinished;
@@ -257,15 +240,12 @@ void RunOne(const char* data, std::size_t size) {
       ++g_counts.loaded_only;
       return;
     }
-    if (links <= kMaxLinksCheckedWithEquilibrium ||
-        (!scene.is_system() && scene.initial != InitialStateKind::kEquilibrium)) {
+    if (links <= kMaxLinksCheckedWithEquilibrium || scene.initial != InitialStateKind::kEquilibrium) {
       CheckCommand(g_setup->scene.string());
-    } else if (scene.is_system()) {
-      (void)BuildSystem(scene);  // `check` builds it, then solves its equilibrium (in 2.)
-    } else {
-      const LineModel m = BuildModel(scene);
-      CheckModelLimits(scene, m);
-      ChooseTimeGrid(m, scene.simulation, scene.output.interval);
+    } else {  // what `check` does before the equilibrium (which runs in 2., within the budget)
+      const Model model = BuildModel(scene);
+      CheckModelLimits(scene, model);
+      ChooseTimeGrid(model, scene.simulation, scene.output.interval);
     }
   } catch (const Error& e) {
     Explain("rejected", e);
@@ -278,24 +258,13 @@ void RunOne(const char* data, std::size_t size) {
     return;
   }
 
-  // 2. The run, and compare's second model when its limits allow it.
+  // 2. The run, and compare's second model (every line the other) when it can be built.
   ++g_counts.simulated;
-  if (scene.is_system()) {
-    // The system's equilibrium (all lines and shared points at once) takes longer than a
-    // line's: kSystemEquilibriumBudgets budgets for it, then one for the steps.
-    ++g_counts.systems;
-    const CancelFlag* cancel =
-        g_setup->watchdog->Arm(g_setup->budget * kSystemEquilibriumBudgets);
-    const Outcome end = RunSystemModel(scene, cancel);
-    g_setup->watchdog->Disarm();
-    if (end == Outcome::kError) ++g_counts.run_errors;
-    if (end == Outcome::kBudget) ++g_counts.budget_cut;
-    return;
-  }
-  const CancelFlag* cancel = g_setup->watchdog->Arm(g_setup->budget);
-  Outcome end = RunModel(scene, "", cancel);
+  if (scene.lines.size() > 1) ++g_counts.systems;
+  Outcome end = RunModel(scene, "");
   SceneDef other = scene;
-  other.model = scene.model == CableModelKind::kElastic ? CableModelKind::kInextensible
+  for (LineDef& line : other.lines)
+    line.model = line.model == CableModelKind::kElastic ? CableModelKind::kInextensible
                                                         : CableModelKind::kElastic;
   bool other_ok = true;
   try {
@@ -304,7 +273,7 @@ void RunOne(const char* data, std::size_t size) {
     other_ok = false;  // compare refuses the scene: nothing more to run
   }
   if (other_ok && end != Outcome::kBudget) {
-    const Outcome second = RunModel(other, "_other", cancel);
+    const Outcome second = RunModel(other, "_other");
     if (second != Outcome::kFinished) end = second;
   }
   g_setup->watchdog->Disarm();

@@ -432,22 +432,22 @@ class BrowserTest:
     # 4d
     def check_system(self):
         """A system (scenes/spread_mooring.toml: four lines, the vessel's fairleads in eq.
-        (3)'s orbit, no free body): the vessel's offsets shown, an end's amplitude and period,
-        the bodies' force and the waves' controls hidden; the offset slider reaches /state and
-        the vessel moves there; a refused offset shows the server's error and changes nothing;
-        the layout checks of 7 hold."""
+        (3)'s orbit, no free body): the driven motion's amplitude and period and the vessel's
+        offsets shown, the bodies' force and the waves' controls hidden; the offset slider
+        reaches /state and the vessel moves there; a refused offset shows the server's error
+        and changes nothing; the layout checks of 7 hold."""
         with self.on_scene('spread_mooring.toml', 'system'):
             s = self.state()
             names = [line['name'] for line in s.get('lines', [])]
-            if not s.get('system') or names != ['leg1_lower', 'leg1_upper', 'leg2', 'leg3']:
-                raise Failure('/state: system %r, lines %r' % (s.get('system'), names))
-            for id_ in ('offset_x', 'offset_z'):
+            if names != ['leg1_lower', 'leg1_upper', 'leg2', 'leg3']:
+                raise Failure('/state: lines %r' % names)
+            for id_ in ('offset_x', 'offset_z', 'amplitude', 'period'):
                 if not self.shown(id_):
-                    raise Failure('the %s control is hidden on a system with a vessel' % id_)
-            for id_ in ('amplitude', 'period', 'force_x', 'force_z', 'wave_height', 'wave_heading'):
+                    raise Failure('the %s control is hidden on a system that has it' % id_)
+            for id_ in ('force_x', 'force_z', 'wave_height', 'wave_heading'):
                 if self.shown(id_):
                     raise Failure('the %s control is shown on a system without it' % id_)
-            if self.text('sea-title').lower() != 'vessel and current':  # shown in capitals
+            if self.text('sea-title').lower() != 'motion and sea':  # shown in capitals
                 raise Failure('the panel is titled %r' % self.text('sea-title'))
             self.driver.execute_script(
                 'const e = document.getElementById("offset_x"); e.value = arguments[0];'

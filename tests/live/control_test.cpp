@@ -79,8 +79,9 @@ TEST(ParseControl, DeepNestingIsDescribedNotDumped) {
 TEST(ParseControl, UnknownFieldIsNamedAndEscaped) {
   EXPECT_EQ(Refusal(R"({"speed": 1, "sped": 2})"),
             "unknown field \"sped\"; expected any of pause, step, restart, speed, amplitude_scale, "
-            "period, current, current_heading, wave_height, wave_period, wave_heading, colormap, "
-            "lock_range, reset_range, tension_range, record, camera");
+            "period, current, current_heading, wave_height, wave_period, wave_heading, offset_x, "
+            "offset_z, force_x, force_z, colormap, lock_range, reset_range, tension_range, "
+            "record, camera");
   // A control character in a key comes back escaped, not raw to a terminal or page.
   EXPECT_EQ(Refusal("{\"a\\u001bb\": 1}").substr(0, 25), "unknown field \"a\\u001bb\";");
 }
@@ -172,7 +173,7 @@ TEST(ParseControl, NoDrivenEndRefusesItsControls) {
   ControlLimits l = Limits();
   l.has_driven_end = false;
   const std::string why =
-      "the scene has no driven end (an end with motion = \"trochoid\" or \"table\")";
+      "the scene has no driven end (an end or a point with motion = \"trochoid\", \"table\" or \"wave\")";
   EXPECT_EQ(Refusal(R"({"amplitude_scale": 1})", l), "amplitude_scale: " + why);
   EXPECT_EQ(Refusal(R"({"period": 10})", l), "period: " + why);
   EXPECT_NO_THROW(ParseControl(R"({"current": 1})", l));
@@ -252,6 +253,44 @@ TEST(ParseControl, ARefusalIsWhole) {
   // because nothing is returned.
   EXPECT_EQ(Refusal(R"({"pause": true, "speed": 99})"),
             "speed: expected a number in [0.1, 10] (simulated seconds per second), got 99");
+}
+
+TEST(ParseControl, EachControlIsOfferedByWhatTheSceneHas) {
+  ControlLimits vessel;
+  vessel.has_driven_end = false;
+  vessel.has_vessel = true;
+  vessel.offset_max = 25;
+  const ControlRequest r = ParseControl(R"({"offset_x": -6, "offset_z": 2.5})", vessel);
+  EXPECT_EQ(*r.offset_x, -6.0);
+  EXPECT_EQ(*r.offset_z, 2.5);
+  auto refusal = [](const std::string& body, const ControlLimits& l) {
+    try {
+      ParseControl(body, l);
+    } catch (const ControlError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(refusal(R"({"offset_x": 26})", vessel),
+            "offset_x: expected a number in [-25, 25] m (the vessel's offset from the scene's "
+            "position), got 26");
+  EXPECT_EQ(refusal(R"({"offset_z": "far"})", vessel).rfind("offset_z: expected a number", 0), 0u);
+  EXPECT_EQ(refusal(R"({"amplitude_scale": 1})", vessel).rfind("amplitude_scale: the scene has no driven end", 0), 0u);
+  EXPECT_EQ(refusal(R"({"period": 10})", vessel).rfind("period: the scene has no driven end", 0), 0u);
+  ControlLimits nothing;  // a driven end alone
+  EXPECT_EQ(refusal(R"({"offset_x": 1})", nothing).rfind("offset_x: the scene has no vessel", 0), 0u);
+  EXPECT_EQ(refusal(R"({"force_z": 1})", nothing).rfind("force_z: the scene has no free body", 0), 0u);
+  EXPECT_NE(refusal(R"({"ofset_x": 1})", vessel).find("offset_x, offset_z, force_x, force_z"),
+            std::string::npos);
+  EXPECT_EQ(refusal(R"({"force_x": 1})", vessel).rfind("force_x: the scene has no free body", 0), 0u);
+  ControlLimits platform = vessel;
+  platform.has_vessel = false;
+  platform.has_free_body = true;
+  platform.force_max = 3e5;
+  EXPECT_EQ(*ParseControl(R"({"force_z": -2e5})", platform).force_z, -2e5);
+  EXPECT_EQ(refusal(R"({"force_x": 4e5})", platform),
+            "force_x: expected a number in [-300000, 300000] N (an extra steady force on the free "
+            "bodies), got 400000");
 }
 
 }  // namespace

@@ -507,23 +507,26 @@ def run(args):
     def system():
         st = srv4.state()
         names = [l['name'] for l in st.get('lines', [])]
-        check(st['system'] and names == ['leg1_lower', 'leg1_upper', 'leg2', 'leg3'],
+        check(names == ['leg1_lower', 'leg1_upper', 'leg2', 'leg3'],
               f'the system\'s lines: {names}')
-        check(st['has_offset'] and not st['has_force'] and not st['has_period']
+        # Its controls are what it has: the fairleads' orbit (a driven end: amplitude and
+        # period), the ship that carries them (offsets); no free body, no waves.
+        check(st['has_offset'] and not st['has_force'] and st['has_period']
+              and st['period'] == 12 and not st['has_waves']
               and st['limits']['offset'] == [-25, 25],
               f'a system\'s controls: {st}')
         check(all(l['max'] > 0 for l in st['lines']), 'a line with no tension')
         check(st['tension']['max'] == max(l['max'] for l in st['lines']),
               'the maximum is not the largest of the lines\'')
-        # Controls that are not a system's, and hostile ones: 400 naming the field.
-        for body, start in (({'amplitude_scale': 2}, 'amplitude_scale: not a control of a system'),
-                            ({'period': 10}, 'period: not a control of a system'),
+        # Controls of what it does not have, and hostile ones: 400 naming the field.
+        for body, start in (({'wave_height': 2}, 'wave_height: the scene has no [waves]'),
+                            ({'amplitude_scale': 99}, 'amplitude_scale: expected a number'),
                             ({'offset_x': 26}, 'offset_x: expected a number in [-25, 25]'),
                             ({'offset_z': [1, 2]}, 'offset_z: expected a number'),
                             (b'{"offset_x": 1e999}', 'control: malformed JSON'),  # overflows the parser
                             (b'{"offset_z": -1e308}', 'offset_z: expected a number'),
                             ({'offset_x': None}, 'offset_x: expected a number'),
-                            ({'force_x': 1e5}, 'force_x: the system has no free body')):
+                            ({'force_x': 1e5}, 'force_x: the scene has no free body')):
             code, reply = srv4.control(body)
             check(code == 400 and reply.get('error', '').startswith(start),
                   f'{body!r} answered {code} {reply}')

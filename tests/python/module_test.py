@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Issue 12 part 4: the Python module `cablefilm` against the command line it shares its code
-with. Run by ctest with Debian's Python and PYTHONPATH=<build>/python; CABLEFILM_PROGRAM is
-the build's `cablefilm`, CABLEFILM_SOURCE_DIR the source tree, CABLEFILM_TEST_TMP a folder for
-what the tests write. One class per ctest test: module_test.py -v ReproducesTheCli.
+with, for scenes of one line ([cable] and [ends]; system_test.py has those of several). Run by
+ctest with Debian's Python and PYTHONPATH=<build>/python; CABLEFILM_PROGRAM is the build's
+`cablefilm`, CABLEFILM_SOURCE_DIR the source tree, CABLEFILM_TEST_TMP a folder for what the
+tests write. One class per ctest test: module_test.py -v ReproducesTheCli.
 
 The truths are independent of the module: the program's own results.nc (read with netCDF4),
 sweep.csv and `cablefilm check` messages, and a static balance of forces worked out here from
@@ -59,6 +60,12 @@ def assert_same_bits(test, a, b, what):
                      % (what, differ, a.size, np.max(np.abs(a - b)) if a.size else 0))
 
 
+# The keys of a Result's stats, the same for every scene (system_test.py checks a system's).
+STATS_KEYS = {"integrator", "steps", "rejected", "newton_iterations", "snaps", "unresolved_snaps",
+              "snap_windows", "explicit_steps", "equilibrium_iterations", "equilibrium_residual",
+              "equilibrium_relaxed"}
+
+
 def cli_results(scene_path, out):
     status, stdout, stderr = cli("run", scene_path, "--no-film", "--out", out)
     if status != 0:
@@ -99,6 +106,44 @@ class ReproducesTheCli(unittest.TestCase):
             self.assertEqual(result.peak_tension, ds.variables["tension"][:].data.max())
             self.assertTrue(result.completed)
             self.assertEqual(result.warnings, [])
+            # One Result for every scene: this one's single line is lines["cable"], whose
+            # arrays are the Result's own (views of the same rows, so results.nc's doubles too).
+            self.assertIsInstance(result, cablefilm.Result)
+            self.assertEqual(list(result.lines), ["cable"])
+            self.assertEqual(result.line_names, ["cable"])
+            line = result.lines["cable"]
+            self.assertIsInstance(line, cablefilm.Line)
+            self.assertNotIsInstance(line, cablefilm.Result)
+            self.assertEqual(line.name, "cable")
+            assert_result_is_file(self, line, ds)
+            self.assertTrue(np.shares_memory(result.tension, line.tension))
+            self.assertEqual((result.peak_line, result.min_tension_line), (None, None))
+            self.assertEqual((line.peak_tension, line.peak_time, line.peak_link),
+                             (result.peak_tension, result.peak_time, result.peak_link))
+            self.assertEqual(set(result.stats), STATS_KEYS)
+            self.assertEqual(line.stats, result.stats)   # a line alone: its run's
+            # Its ends are the points "start" and "end" ([ends]); no body. A point holding one
+            # line end carries that end's load (points.csv's force is the same function's
+            # doubles summed from zero: equal in value), at the end station's position.
+            self.assertEqual(result.point_names, ["start", "end"])
+            self.assertEqual(result.body_names, [])
+            self.assertEqual(result.point_force.shape, (1801, 2, 3))
+            self.assertEqual(result.body_pose.shape, (1801, 0, 6))
+            self.assertTrue(np.array_equal(result.point_force[:, 0], result.load_start))
+            self.assertTrue(np.array_equal(result.point_force[:, 1], result.load_end))
+            assert_same_bits(self, result.point_position[:, 0], result.position[:, 0], "start")
+            assert_same_bits(self, result.point_position[:, 1], result.position[:, -1], "end")
+            # The equilibrium's line is the same, and its statics are the line's own solve's,
+            # as `cablefilm check` prints them.
+            assert_same_bits(self, eq.lines["cable"].tension, eq.tension, "eq.lines")
+            assert_same_bits(self, eq.point_position, result.point_position[0], "eq points")
+            status, stdout, stderr = cli("check", P63)
+            self.assertEqual(status, 0, stderr)
+            self.assertIn("static equilibrium found: %d Newton iterations, residual %.3g N"
+                          % (eq.iterations, eq.residual), stdout)
+            self.assertFalse(eq.fallback)
+            self.assertEqual((result.stats["equilibrium_iterations"],
+                              result.stats["equilibrium_residual"]), (eq.iterations, eq.residual))
 
     def test_changed_value_bit_for_bit(self):
         # A value set from Python, then the program on the scene's text: the same doubles.
@@ -535,6 +580,12 @@ class Pictures(unittest.TestCase):
             cablefilm.render_film(scene, film, width=321)
         with self.assertRaises(ValueError):
             cablefilm.render_frame(scene, colormap="rainbow")
+        # A Line is drawn with its run: render_frame and render_film take the Result.
+        result = cablefilm.run(scene)
+        with self.assertRaisesRegex(TypeError, "Result"):
+            cablefilm.render_frame(result.lines["cable"])
+        with self.assertRaisesRegex(TypeError, "Result"):
+            cablefilm.render_film(result.lines["cable"], os.path.join(workdir("film"), "l.mp4"))
 
 
 if __name__ == "__main__":

@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
-"""Issue 20: the Python module for systems of lines ([[line]], [[point]], [[body]]) against the
-command line it shares its code with. Run by ctest as module_test.py is (PYTHONPATH,
+"""Issue 20: the Python module for scenes of several lines ([[line]], [[point]], [[body]])
+against the command line it shares its code with: the same Result and Equilibrium as a single
+line's, each line a Line. Run by ctest as module_test.py is (PYTHONPATH,
 CABLEFILM_PROGRAM, CABLEFILM_SOURCE_DIR, CABLEFILM_TEST_TMP); one class per ctest test:
 system_test.py -v SystemRun.
 
 The truths are the program's files, which the rest of the suite checks: each line's
-results.nc (bit for bit), timeseries.csv and equilibrium.csv, points.csv and body.csv (to the
-digits they print), the text `cablefilm stiffness` prints and the CSV `cablefilm offset`
-writes; and the statics themselves: the stiffness's K_xx is the offset curve's slope at the
-equilibrium, and a body at equilibrium carries its lines' load against its own.
+lines/<name>/results.nc (bit for bit), timeseries.csv and equilibrium.csv, points.csv and
+body.csv (to the digits they print), the text `cablefilm check` and `cablefilm stiffness` print
+and the CSV `cablefilm offset` writes; and the statics themselves: the stiffness's K_xx is the
+offset curve's slope at the equilibrium, and a body at equilibrium carries its lines' load
+against its own.
 """
 import atexit
 import csv
@@ -28,6 +30,11 @@ SOURCE = os.environ["CABLEFILM_SOURCE_DIR"]
 TMP = os.environ.get("CABLEFILM_TEST_TMP", tempfile.gettempdir())
 PLATFORM = os.path.join(SOURCE, "scenes", "floating_platform.toml")
 SPREAD = os.path.join(SOURCE, "scenes", "spread_mooring.toml")
+P63 = os.path.join(SOURCE, "scenes", "polachek1963.toml")
+# The keys of a Result's stats, the same for every scene (module_test.py checks a line's).
+STATS_KEYS = {"integrator", "steps", "rejected", "newton_iterations", "snaps", "unresolved_snaps",
+              "snap_windows", "explicit_steps", "equilibrium_iterations", "equilibrium_residual",
+              "equilibrium_relaxed"}
 
 
 def workdir(name):
@@ -81,16 +88,17 @@ def assert_same_bits(test, a, b, what):
 
 
 class SystemRun(unittest.TestCase):
-    """cablefilm.run of a system: every line's rows, the points and the body, as the files of
-    `cablefilm run` hold them."""
+    """cablefilm.run of several lines: every line's rows, the points and the body, as the files
+    of `cablefilm run` hold them."""
 
     def check_against_cli(self, source, seconds, name):
         scene, path, out = shortened(source, seconds, name)
-        self.assertTrue(scene.is_system)
+        self.assertGreater(len(scene.lines), 1)
         stdout = run_cli(path, out)
         r = cablefilm.run(scene)
-        self.assertIsInstance(r, cablefilm.SystemResult)
+        self.assertIsInstance(r, cablefilm.Result)
         self.assertTrue(r.completed)
+        self.assertEqual(set(r.stats), STATS_KEYS)
         self.assertEqual(list(r.lines), scene.lines)
         self.assertEqual(r.line_names, scene.lines)
         self.assertEqual(r.point_names, scene.points)
@@ -98,7 +106,9 @@ class SystemRun(unittest.TestCase):
         n = r.time.shape[0]
         self.assertEqual(r.time[-1], seconds)
         for name, line in r.lines.items():
-            self.assertIsInstance(line, cablefilm.Result)
+            self.assertIsInstance(line, cablefilm.Line)
+            self.assertEqual(line.name, name)
+            self.assertEqual(set(line.stats), STATS_KEYS)
             assert_same_bits(self, line.time, r.time, name + ": time")
             with netCDF4.Dataset(os.path.join(out, "lines", name, "results.nc")) as ds:
                 for v in ["time", "x", "y", "z", "tension", "x_start", "y_start", "z_start",
@@ -135,6 +145,13 @@ class SystemRun(unittest.TestCase):
                       % (r.peak_tension, r.peak_time, r.peak_line, r.peak_link), stdout)
         self.assertEqual(r.peak_tension, max(l.tension.max() for l in r.lines.values()))
         self.assertEqual(r.peak_tension, r.lines[r.peak_line].tension.max())
+        self.assertEqual(r.peak_tension, r.lines[r.peak_line].peak_tension)
+        # A line's arrays are its Line's alone: the Result of several lines has none, and says
+        # where they are.
+        for attribute in ("x", "tension", "load_start", "s"):
+            self.assertFalse(hasattr(r, attribute), attribute)
+        with self.assertRaisesRegex(AttributeError, r"r\.lines\[name\]\.tension"):
+            r.tension
         return r, out
 
     def test_spread_mooring(self):
@@ -179,14 +196,18 @@ class SystemRun(unittest.TestCase):
 
 
 class SystemEquilibrium(unittest.TestCase):
-    """cablefilm.equilibrium of a system: each line's equilibrium.csv, and the first row of
+    """cablefilm.equilibrium of several lines: each line's equilibrium.csv, and the first row of
     points.csv and body.csv with the body at its equilibrium (no initial offset)."""
 
     def test_spread_mooring(self):
         scene, path, out = shortened(SPREAD, 0.5, "spread_eq")
         run_cli(path, out)
         e = cablefilm.equilibrium(scene)
+        self.assertIsInstance(e, cablefilm.Equilibrium)
         self.assertEqual(list(e.lines), scene.lines)
+        self.assertFalse(hasattr(e, "tension"))
+        with self.assertRaises(TypeError):
+            x, y, tension = e   # a line's equilibrium unpacks; several lines' do not
         for name, line in e.lines.items():
             rows = read_csv(os.path.join(out, "lines", name, "equilibrium.csv"))
             for col, ours in [("x", line.x), ("y", line.y), ("z", line.z)]:
@@ -226,6 +247,16 @@ class SystemEquilibrium(unittest.TestCase):
             assert_same_bits(self, e.lines[name].tension, r.lines[name].tension[0], name)
         # At equilibrium the lines' horizontal pull balances the 200 kN wind.
         self.assertAlmostEqual(e.body_load[0, 0] / -2.0e5, 1.0, places=4)
+        # Its statics are the model's Newton on the free body, as `cablefilm check` prints them,
+        # and the run's stats say the same.
+        status, stdout, stderr = cli("check", PLATFORM)
+        self.assertEqual(status, 0, stderr)
+        self.assertIn("equilibrium: %d Newton iteration(s) on the shared points and free bodies, "
+                      "out-of-balance %.3g N" % (e.iterations, e.residual), stdout)
+        self.assertGreater(e.iterations, 0)
+        self.assertFalse(e.fallback)
+        self.assertEqual((r.stats["equilibrium_iterations"], r.stats["equilibrium_residual"]),
+                         (e.iterations, e.residual))
 
 
 ABOVE_ANCHOR = os.path.join(SOURCE, "tests", "scenes", "moordyn", "body_above_anchor.txt")
@@ -294,6 +325,17 @@ class BodyTools(unittest.TestCase):
         self.assertAlmostEqual(pose[1], -5 - 4 * (1 + T / 2000), delta=1e-8)
         c = cablefilm.offset_curve(path, offsets=[0.0])
         self.assertAlmostEqual(c["restoring"][0], 0.0, delta=1e-9)
+        # One line, but on a free body: its statics are the model's (Newton on the body after
+        # the relaxation), as `cablefilm check` prints them, not the held line's own solve.
+        e = cablefilm.equilibrium(path)
+        self.assertEqual(list(e.lines), ["1"])
+        status, stdout, stderr = cli("check", path)
+        self.assertEqual(status, 0, stderr)
+        self.assertIn("equilibrium: %d Newton iteration(s) on the shared points and free bodies, "
+                      "out-of-balance %.3g N" % (e.iterations, e.residual), stdout)
+        self.assertIn("not reached from the scene's positions", stdout)
+        self.assertTrue(e.fallback)
+        self.assertAlmostEqual(e.body_pose[0, 1], pose[1], delta=1e-8)
 
     def test_stiffness_is_the_curves_slope(self):
         # K_xx = -dFx/dx by central differences of h = 1e-4 of the shortest line (52 m); the
@@ -317,25 +359,30 @@ class BodyTools(unittest.TestCase):
             cablefilm.stiffness(PLATFORM, body="raft")
         with self.assertRaisesRegex(ValueError, "no \\[\\[body\\]\\]"):
             cablefilm.offset_curve(SPREAD)
-        with self.assertRaisesRegex(cablefilm.SceneError, "single line"):
-            cablefilm.stiffness(os.path.join(SOURCE, "scenes", "polachek1963.toml"))
+        # A scene with no body, of one line or several: a ValueError, not a SceneError (the
+        # scene is good; the tool has nothing to move).
+        for path in (P63, SPREAD):
+            with self.assertRaisesRegex(ValueError, "no \\[\\[body\\]\\]") as caught:
+                cablefilm.stiffness(path)
+            self.assertNotIsInstance(caught.exception, cablefilm.SceneError)
         with self.assertRaisesRegex(ValueError, "offsets"):
             cablefilm.offset_curve(PLATFORM, offsets=[float("nan")])
 
 
 class SystemScenes(unittest.TestCase):
-    """A system's Scene: its names, its keys read and set as a line's are, clear errors."""
+    """The Scene of several lines: its names, its keys read and set as a line's are, clear
+    errors."""
 
     def test_names_and_keys(self):
         scene = cablefilm.load(PLATFORM)
-        self.assertTrue(scene.is_system)
+        self.assertFalse(hasattr(scene, "is_system"))
         self.assertEqual(scene.lines, ["leg1", "leg2", "leg3"])
         self.assertEqual(scene.points, ["anchor1", "anchor2", "anchor3", "fairlead1",
                                         "fairlead2", "fairlead3"])
         self.assertEqual(scene.bodies, ["platform"])
         self.assertEqual(scene.links, {"leg1": 52, "leg2": 52, "leg3": 52})
         self.assertEqual(scene.stations, {"leg1": 53, "leg2": 53, "leg3": 53})
-        self.assertIn("a system of 3 lines", repr(scene))
+        self.assertIn("3 lines, 6 points, 1 body", repr(scene))
         self.assertEqual(scene["body[0].force"], [2.0e5, 0.0, 0.0])
         self.assertEqual(scene["point[3].position"], [20.0, -10.0, 0.0])
         scene["body[0].force"] = [1.0e5, 0.0, 0.0]
@@ -345,9 +392,11 @@ class SystemScenes(unittest.TestCase):
         e = cablefilm.equilibrium(scene)
         self.assertEqual(e.lines["leg1"].tension.shape, (40,))
         self.assertAlmostEqual(e.body_load[0, 0] / -1.0e5, 1.0, places=4)
-        single = cablefilm.load(os.path.join(SOURCE, "scenes", "polachek1963.toml"))
-        self.assertFalse(single.is_system)
-        self.assertEqual((single.lines, single.points, single.bodies), ([], [], []))
+        # A [cable] scene is one line, "cable", between the points "start" and "end".
+        single = cablefilm.load(P63)
+        self.assertEqual((single.lines, single.points, single.bodies),
+                         (["cable"], ["start", "end"], []))
+        self.assertEqual((single.stations, single.links), (61, 60))
 
     def test_bad_values_are_refused(self):
         scene = cablefilm.load(PLATFORM)
@@ -370,6 +419,7 @@ class SystemScenes(unittest.TestCase):
             alone["point[6].mass"] = mass
             r = cablefilm.run(alone)
             self.assertEqual(row["peak_tension"], r.peak_tension)
+            self.assertIsInstance(row["result"], cablefilm.Result)
             assert_same_bits(self, row["result"].point_force, r.point_force, "point forces")
 
     def test_ctrl_c_stops_a_run(self):
@@ -410,10 +460,11 @@ class SystemScenes(unittest.TestCase):
         differ = np.count_nonzero(np.any(png != frame, axis=2))
         self.assertEqual(differ, 0, "%d pixels differ from the film's frame 10" % differ)
         self.assertTrue(np.any(cablefilm.render_frame(r, row=0, width=320, height=180) != frame))
-        # A line of a system cannot be drawn alone; the system's film is an MP4.
-        with self.assertRaisesRegex(ValueError, "SystemResult"):
+        # A Line is not a run: its ends move with the others, drawn with the Result; the film
+        # is an MP4.
+        with self.assertRaisesRegex(TypeError, "Result"):
             cablefilm.render_frame(r.lines["leg2"])
-        with self.assertRaisesRegex(ValueError, "SystemResult"):
+        with self.assertRaisesRegex(TypeError, "Result"):
             cablefilm.render_film(r.lines["leg2"], os.path.join(workdir("film"), "leg2.mp4"))
         film_dir = workdir("film")
         path = cablefilm.render_film(r, os.path.join(film_dir, "platform.mp4"), width=320,

@@ -225,7 +225,7 @@ TEST(MoorDynConvert, BodyPointsAreFixedAtTheBodysPose) {
   ExpectNear(Vec(held["orientation"]), {0, 90, 0}, 0);  // a yaw: about cablefilm's y
   // Where the body puts it: MoorDyn (10, 21, -5) is cablefilm's (10, -5, -21).
   const SceneDef scene = ParseScene(c.text, "sys.toml");
-  EXPECT_LT((BuildSystem(scene).points[1].motion.rest() - Eigen::Vector3d(10, -5, -21)).norm(),
+  EXPECT_LT((BuildModel(scene).points[1].motion.rest() - Eigen::Vector3d(10, -5, -21)).norm(),
             1e-14);
   // No WtrDpth: MoorDyn's default 0, lowered to the deepest point (the anchor), as MoorDyn.
   EXPECT_EQ(Num(c.scene["seabed"]["y"]), -150.0);
@@ -243,7 +243,7 @@ TEST(MoorDynConvert, BodyPointsAreFixedAtTheBodysPose) {
   ExpectNear(Vec(free["center_of_gravity"]), {0, -2, -0.5}, 0);
   ExpectNear(Vec(free["inertia"]), {10, 30, 20}, 0);
   EXPECT_EQ(Num(free["added_mass"][1]), 1025.0 * 0.25 * 2);  // MoorDyn's z: cablefilm's y
-  EXPECT_EQ(BuildSystem(ParseScene(f.text, "sys.toml")).free_bodies.size(), 1u);
+  EXPECT_EQ(BuildModel(ParseScene(f.text, "sys.toml")).free_bodies.size(), 1u);
 }
 
 // A MoorDyn body's angles as cablefilm's: the same turn, whatever the angles. A body point at
@@ -424,7 +424,7 @@ ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
 10 WtrDpth
 )";
   const Converted c = Convert(ReadMoorDynText(text, "float.txt"));
-  const Model sys = BuildSystem(ParseScene(c.text, "float.toml"));
+  const Model sys = BuildModel(ParseScene(c.text, "float.toml"));
   const std::vector<State> states = SolveEquilibrium(sys);
   ASSERT_EQ(states.size(), 1u);
   const LineModel& m = sys.lines[0];
@@ -449,7 +449,7 @@ ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
 // 4 (1 + T / EA) = 4.547 m long (EA = 2000 N), straight down from the anchor.
 TEST(MoorDynConvert, BodyGivenAboveItsAnchorHangsBelowIt) {
   const Converted c = Convert(ReadMoorDynFile(kDir + "body_above_anchor.txt"));
-  const Model sys = BuildSystem(ParseScene(c.text, "above.toml"));
+  const Model sys = BuildModel(ParseScene(c.text, "above.toml"));
   EXPECT_THROW(SolveEquilibrium(sys), Error);  // what made this needed
   StepOptions step;
   step.scheme = Scheme::kImplicit;
@@ -479,7 +479,7 @@ TEST(MoorDynConvert, BodyGivenAboveItsAnchorHangsBelowIt) {
 // water level) and the hub hangs under it.
 TEST(MoorDynConvert, FloatAtTheSurfaceIsRelaxedIntoEquilibrium) {
   const Converted c = Convert(ReadMoorDynFile(kDir + "float_on_bridles.txt"));
-  const Model sys = BuildSystem(ParseScene(c.text, "float.toml"));
+  const Model sys = BuildModel(ParseScene(c.text, "float.toml"));
   StepOptions step;
   step.scheme = Scheme::kImplicit;
   step.tolerance = 1e-6 * 16.0;  // the default: 1e-6 of the longest line's length [m]
@@ -513,7 +513,7 @@ TEST(MoorDynConvert, FloatAtTheSurfaceIsRelaxedIntoEquilibrium) {
 // The statics of a MoorDyn file's system, as `run` finds them with the default tolerance (1e-6
 // of the longest line [m]): the Error's message when it has none; empty when it has.
 std::string StaticsFailure(const MoorDynSystem& file) {
-  const Model sys = BuildSystem(ParseScene(Convert(file).text, "file.toml"));
+  const Model sys = BuildModel(ParseScene(Convert(file).text, "file.toml"));
   double longest = 0;  // [m]
   for (const LineModel& m : sys.lines) longest = std::max(longest, m.line.total_length());
   StepOptions step;

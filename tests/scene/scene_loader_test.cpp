@@ -17,6 +17,7 @@
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "core/inputs.h"
+#include "../core/scene_line.h"
 
 namespace cablefilm {
 namespace {
@@ -108,10 +109,10 @@ void ExpectError(const std::string& text, const std::string& key,
 
 TEST(SceneLoader, BaseSceneLoads) {
   const SceneDef s = ParseScene(kBase, kFile);
-  EXPECT_EQ(s.sections.size(), 2u);
-  EXPECT_EQ(s.weights.size(), 1u);
+  EXPECT_EQ(s.lines[0].sections.size(), 2u);
+  EXPECT_EQ(s.lines[0].weights.size(), 1u);
   EXPECT_EQ(s.name, "bad_scene");
-  EXPECT_EQ(BuildModel(s).line.weight_stations, std::vector<int>{18});
+  EXPECT_EQ(LineOf(s).line.weight_stations, std::vector<int>{18});
 }
 
 TEST(SceneLoader, UnknownKeys) {
@@ -302,7 +303,7 @@ TEST(SceneLoader, InextensibleEndsTooFarApart) {
               {"expected", "91.44"});
   // ... while an elastic one starts stretched (a warning, not an error) and solves.
   const SceneDef s = ParseScene(far, kFile);
-  EXPECT_NO_THROW(SolveLineEquilibrium(BuildModel(s)));
+  EXPECT_NO_THROW(SolveLineEquilibrium(LineOf(s)));
 }
 
 // Table files live next to the scene; these tests write them into a temporary folder.
@@ -351,9 +352,9 @@ TEST_F(TableMotion, TextFileThatIsNeitherSaysWhatMoorDynNeeds) {
 TEST_F(TableMotion, GoodTableLoads) {
   WriteFile("ship.csv", "t,x,y\n0,0,0\n1,0.5,0.1\n2,0.2,-0.3\n");
   const SceneDef s = ParseScene(TableScene("ship.csv"), scene_);
-  ASSERT_EQ(s.end.table.size(), 3u);
-  EXPECT_DOUBLE_EQ(s.end.table[2][2], -0.3);
-  const LineModel m = BuildModel(s);
+  ASSERT_EQ(s.points[1].motion.table.size(), 3u);
+  EXPECT_DOUBLE_EQ(s.points[1].motion.table[2][2], -0.3);
+  const LineModel m = LineOf(s);
   EXPECT_NEAR(m.ends.end.Position(1.0).x(), 80.5, 1e-12);  // offsets from the rest position
 }
 
@@ -363,7 +364,7 @@ TEST(SceneLoader, MinimumBreakingLoad) {
   const SceneDef s = ParseScene(
       With("name = \"nylon\"", "name = \"nylon\"\nminimum_breaking_load = 2.5e5"), "s.toml");
   EXPECT_EQ(s.materials[1].minimum_breaking_load, 2.5e5);
-  const LineModel m = BuildModel(s);
+  const LineModel m = LineOf(s);
   EXPECT_EQ(m.line.breaking_load[0], 0.0);                  // wire: none
   EXPECT_EQ(m.line.breaking_load[m.line.links - 1], 2.5e5);  // nylon
   EXPECT_TRUE(m.line.has_breaking_load());
@@ -376,13 +377,13 @@ TEST(SceneLoader, MinimumBreakingLoad) {
 TEST_F(TableMotion, InterpolationKey) {
   WriteFile("ship.csv", "t,x,y\n0,0,0\n1,0.5,0.1\n2,0.2,-0.3\n");
   const std::string table = "motion = \"table\"\nfile = \"ship.csv\"\n";
-  EXPECT_EQ(ParseScene(TableScene("ship.csv"), scene_).end.interpolation,
+  EXPECT_EQ(ParseScene(TableScene("ship.csv"), scene_).points[1].motion.interpolation,
             TableInterpolation::kSpline);  // the default
   const SceneDef s = ParseScene(
       With(table, table + "interpolation = \"linear\"\n", TableScene("ship.csv")), scene_);
-  EXPECT_EQ(s.end.interpolation, TableInterpolation::kLinear);
+  EXPECT_EQ(s.points[1].motion.interpolation, TableInterpolation::kLinear);
   // Built: straight between rows, 0.5 m/s of x from t = 0 to 1 s.
-  const LineModel m = BuildModel(s);
+  const LineModel m = LineOf(s);
   EXPECT_NEAR(m.ends.end.Position(0.5).x(), 80.25, 1e-12);
   EXPECT_NEAR(m.ends.end.Velocity(0.5).x(), 0.5, 1e-12);
   ExpectError(With(table, table + "interpolation = \"cubic\"\n", TableScene("ship.csv")),
@@ -438,12 +439,12 @@ position = [8.0, 0.0]
   EXPECT_EQ(s.environment.current, 0.0);
   EXPECT_EQ(s.environment.gravity, 9.80665);
   EXPECT_EQ(s.environment.fluid_density, 1025.0);  // documented default: sea water
-  EXPECT_TRUE(s.weights.empty());
+  EXPECT_TRUE(s.lines[0].weights.empty());
   EXPECT_EQ(s.initial, InitialStateKind::kEquilibrium);
   EXPECT_EQ(s.simulation.time_step, 0.0);  // "auto"
-  EXPECT_EQ(s.model, CableModelKind::kElastic);
-  EXPECT_EQ(s.start.motion, EndMotionKind::kFixed);
-  EXPECT_EQ(s.end.motion, EndMotionKind::kFixed);
+  EXPECT_EQ(s.lines[0].model, CableModelKind::kElastic);
+  EXPECT_EQ(s.points[0].motion.motion, EndMotionKind::kFixed);
+  EXPECT_EQ(s.points[1].motion.motion, EndMotionKind::kFixed);
   EXPECT_EQ(s.materials[0].drag_coefficient, 1.2);
   EXPECT_EQ(s.materials[0].added_mass_coefficient, 1.0);
   EXPECT_GT(s.output.interval, 0.0);
@@ -454,7 +455,7 @@ TEST(SceneLoader, ShippedScenesLoadBuildAndSolve) {
     const std::string path = std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + name + ".toml";
     SceneDef s;
     ASSERT_NO_THROW(s = LoadScene(path)) << path;
-    const LineModel m = BuildModel(s);
+    const LineModel m = LineOf(s);
     LineEquilibriumReport rep;
     EXPECT_NO_THROW(SolveLineEquilibrium(m, &rep)) << path;
     EXPECT_LE(rep.residual, 1e-6 * rep.force_scale) << path;
@@ -609,8 +610,8 @@ TEST(SceneLoader, ElasticEndsTooFarApartForTheModel) {
   EXPECT_NO_THROW(CheckModelLimits(ok, BuildModel(ok)));
   // The model-level check of an inextensible line agrees with its equilibrium (>=).
   SceneDef inext = ParseScene(kBase, kFile);
-  inext.model = CableModelKind::kInextensible;
-  inext.end.position = {91.44, 0.0};
+  inext.lines[0].model = CableModelKind::kInextensible;
+  inext.points[1].motion.position = {91.44, 0.0};
   EXPECT_THROW(CheckModelLimits(inext, BuildModel(inext)), Error);
 }
 
@@ -727,12 +728,12 @@ TEST_F(TableMotion, StrictRows) {
   // ends, blank lines and comments.
   WriteFile("ok1.csv", "t,x,y\r\n0,0,0\r\n\r\n# pause\r\n1.5, -2.5e-1 ,+3E2\r\n.5e1,1.,0\n");
   const SceneDef s = ParseScene(TableScene("ok1.csv"), scene_);
-  ASSERT_EQ(s.end.table.size(), 3u);
-  EXPECT_EQ(s.end.table[1][1], -0.25);
-  EXPECT_EQ(s.end.table[1][2], 300.0);
-  EXPECT_EQ(s.end.table[2][0], 5.0);
+  ASSERT_EQ(s.points[1].motion.table.size(), 3u);
+  EXPECT_EQ(s.points[1].motion.table[1][1], -0.25);
+  EXPECT_EQ(s.points[1].motion.table[1][2], 300.0);
+  EXPECT_EQ(s.points[1].motion.table[2][0], 5.0);
   WriteFile("ok2.csv", "0,0,0\n1,0.5,0.1");  // no header, no final newline
-  EXPECT_EQ(ParseScene(TableScene("ok2.csv"), scene_).end.table.size(), 2u);
+  EXPECT_EQ(ParseScene(TableScene("ok2.csv"), scene_).points[1].motion.table.size(), 2u);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -748,7 +749,7 @@ TEST(SceneLoader, SeabedLoadsWithDefaults) {
   EXPECT_EQ(s.seabed.friction_velocity, 0.01);
   EXPECT_EQ(s.seabed.friction_model, FrictionModel::kStickSlip);
   EXPECT_LT(s.seabed.friction_stiffness, 0);  // the normal stiffness
-  const LineModel m = BuildModel(s);
+  const LineModel m = LineOf(s);
   ASSERT_TRUE(m.env.seabed.present);
   // Station 1: half of each of its two links of 45.72 / 30 m.
   EXPECT_DOUBLE_EQ(m.line.seabed_stiffness[1], 3e7 * 45.72 / 30);
@@ -764,7 +765,7 @@ TEST(SceneLoader, SeabedLoadsWithDefaults) {
   EXPECT_EQ(t.seabed.friction_velocity, 0.05);
   // Giving friction_velocity asks for the smoothed law (scenes written before stick-slip).
   EXPECT_EQ(t.seabed.friction_model, FrictionModel::kSmoothed);
-  EXPECT_DOUBLE_EQ(BuildModel(t).line.seabed_damping[1], 2e3 * 45.72 / 30);
+  EXPECT_DOUBLE_EQ(LineOf(t).line.seabed_damping[1], 2e3 * 45.72 / 30);
   // Stick-slip by name, with its own shear stiffness: the spring per station is K l_j and the
   // dashpot keeps the normal one's ratio to critical, c_j sqrt(K / k).
   const SceneDef u = ParseScene(kBase + "\n[seabed]\ny = 0\nstiffness = 1e6\ndamping = 2e3\n"
@@ -773,7 +774,7 @@ TEST(SceneLoader, SeabedLoadsWithDefaults) {
                                         "friction_stiffness = 4e6\n",
                                 kFile);
   EXPECT_EQ(u.seabed.friction_model, FrictionModel::kStickSlip);
-  const LineModel mu = BuildModel(u);
+  const LineModel mu = LineOf(u);
   EXPECT_DOUBLE_EQ(mu.line.friction_stiffness[1], 4e6 * 45.72 / 30);
   EXPECT_DOUBLE_EQ(mu.line.friction_damping[1], 2.0 * 2e3 * 45.72 / 30);
 }
@@ -809,12 +810,12 @@ TEST(SceneLoader, CurrentProfile) {
       ParseScene(With("current = 0.0", "current = [[-10, 0.2], [0.0, 1.0], [5, 1.5]]"), kFile);
   ASSERT_EQ(s.environment.current_profile.y.size(), 3u);
   EXPECT_EQ(s.environment.current, 0.0);
-  const LineModel m = BuildModel(s);
+  const LineModel m = LineOf(s);
   EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -5.0).x(), 0.6);
   EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), -50.0).x(), 0.2);
   EXPECT_DOUBLE_EQ(CurrentAt(m, SceneWater(m), 50.0).x(), 1.5);
   // One pair: a uniform current written as a table.
-  const LineModel one = BuildModel(ParseScene(With("current = 0.0", "current = [[3, -0.4]]"), kFile));
+  const LineModel one = LineOf(ParseScene(With("current = 0.0", "current = [[3, -0.4]]"), kFile));
   EXPECT_DOUBLE_EQ(CurrentAt(one, SceneWater(one), -20.0).x(), -0.4);
   const std::string key = "environment.current";
   ExpectError(With("current = 0.0", "current = []"), key, {"from 1 to 10000 pairs", "got 0"});
@@ -843,16 +844,16 @@ TEST(SceneLoader, Waves) {
   EXPECT_EQ(s.waves.surface_y, 0.0);     // default: the still water level at y = 0
   EXPECT_EQ(s.waves.phase, 0.0);         // degrees
   EXPECT_EQ(s.waves.ramp_rate, 0.5);     // 4 / T
-  const LineModel m = BuildModel(s);
+  const LineModel m = LineOf(s);
   ASSERT_TRUE(m.has_waves());
   EXPECT_DOUBLE_EQ(m.env.wave.k, WaveNumber(2 * M_PI / 8, 9.80665, 50));
-  EXPECT_FALSE(BuildModel(ParseScene(kBase, kFile)).has_waves());  // no table, no waves
+  EXPECT_FALSE(LineOf(ParseScene(kBase, kFile)).has_waves());  // no table, no waves
   // The depth defaults to the still water level's height above the seabed.
   const SceneDef d = ParseScene(kBase + "\n[seabed]\ny = -10\n\n[waves]\nheight = 1\nperiod = 8"
                                         "\nsurface_y = 40\nphase = -90\nramp_rate = 0.1\n", kFile);
   EXPECT_EQ(d.waves.depth, 50.0);
   EXPECT_EQ(d.waves.ramp_rate, 0.1);
-  EXPECT_DOUBLE_EQ(BuildModel(d).env.wave.spec.phase, -M_PI / 2);
+  EXPECT_DOUBLE_EQ(LineOf(d).env.wave.spec.phase, -M_PI / 2);
   // motion = "wave": x_rao = [1, 90], y_rao = [1, 0] is the water particle at the surface:
   // heave the surface elevation at the end's x, surge a cos(theta + 90 deg).
   const std::string wave_end =
@@ -861,8 +862,8 @@ TEST(SceneLoader, Waves) {
            "motion = \"wave\"\nx_rao = [1.0, 90.0]\ny_rao = [1.0, 0.0]") +
       "\n[waves]\nheight = 2\nperiod = 8\ndepth = 50\nsurface_y = 35\nphase = 30\n";
   const SceneDef w = ParseScene(wave_end, kFile);
-  EXPECT_TRUE(w.end.follows_wave);
-  const LineModel mw = BuildModel(w);
+  EXPECT_TRUE(w.points[1].motion.follows_wave);
+  const LineModel mw = LineOf(w);
   for (double t : {100.0, 103.3, 107.9}) {  // the ramp complete (R = 1 - 5e-16)
     const Vec p = mw.ends.end.Position(t) - mw.ends.end.rest();
     const double theta = mw.env.wave.k * 80.0 - mw.env.wave.omega * t + M_PI / 6;
@@ -1026,11 +1027,19 @@ std::string SystemWith(const std::string& from, const std::string& to) {
   return With(from, to, kSystem);
 }
 
+// A system runs as a line does: either scheme, from its equilibrium or its straight chords.
+TEST(SceneLoader, SystemTakesEverySchemeAndStart) {
+  const SceneDef s = ParseScene(kSystem + "\n[simulation]\nintegrator = \"explicit\"\n[initial]\n"
+                                "state = \"straight\"\n", kFile);
+  EXPECT_EQ(s.simulation.integrator, IntegratorChoice::kExplicit);
+  EXPECT_EQ(s.initial, InitialStateKind::kStraight);
+}
+
 TEST(SceneLoader, SystemLoads) {
   const SceneDef s = ParseScene(kSystem, kFile);
-  ASSERT_TRUE(s.is_system());
   ASSERT_EQ(s.points.size(), 3u);
   ASSERT_EQ(s.lines.size(), 2u);
+  EXPECT_EQ(s.lines[1].key, "line[1]");
   EXPECT_EQ(s.lines[1].start, 1);
   EXPECT_EQ(s.lines[1].end, 2);
   EXPECT_EQ(s.points[1].motion.motion, EndMotionKind::kFree);
@@ -1053,10 +1062,10 @@ TEST(SceneLoader, SystemErrors) {
               "point[0].mass", {"unknown key"});
   ExpectError(SystemWith("mass = 3000.0", "mass = 3000.0\nforce = [1.0, \"x\"]"), "point[1].force",
               {"expected"});
-  ExpectError(kSystem + "\n[simulation]\nintegrator = \"explicit\"\n", "simulation.integrator",
-              {"implicit"});
-  ExpectError(kSystem + "\n[initial]\nstate = \"straight\"\n", "initial.state",
-              {"equilibrium"});
+  // A line's model: elastic or inextensible (the model refuses an inextensible line joined to
+  // others: tests/core/system_test.cpp).
+  ExpectError(SystemWith("name = \"lower\"", "name = \"lower\"\nmodel = \"rigid\""),
+              "line[0].model", {"elastic", "inextensible"});
   ExpectError(SystemWith("segments = 18", "segments = 0"), "line[1].section[0].segments",
               {"expected"});
 }
@@ -1090,7 +1099,7 @@ TEST(SceneLoader, AxialStiffnessIsEATimesTheArea) {
   const std::string ea = "axial_stiffness = " + FormatNumber(E * area);
   const SceneDef s = ParseScene(With("youngs_modulus = 2.0e9", ea), kFile);
   EXPECT_NEAR(s.materials[1].youngs_modulus, E, 1e-15 * E);
-  const LineModel a = BuildModel(base), b = BuildModel(s);
+  const LineModel a = LineOf(base), b = LineOf(s);
   for (int j = 0; j < a.line.links; ++j)
     EXPECT_NEAR(b.line.axial_stiffness[j], a.line.axial_stiffness[j], 1e-14 * a.line.axial_stiffness[j]);
   ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = 2.0e9\n" + ea),
@@ -1109,7 +1118,7 @@ TEST(SceneLoader, BodyLoads) {
   EXPECT_EQ(s.points[2].motion.position[0], 2.0);
   EXPECT_EQ(s.bodies[0].inertia[2], 1.0e5);  // [x, y]: z like x
   EXPECT_EQ(s.bodies[0].added_mass[5], 6.0);
-  const Model sys = BuildSystem(s);
+  const Model sys = BuildModel(s);
   ASSERT_EQ(sys.free_bodies.size(), 1u);
   EXPECT_EQ(sys.points[2].kind, PointKind::kBody);
   EXPECT_NEAR(sys.bodies[0].initial_offset[5], 10 * M_PI / 180, 1e-15);
@@ -1144,7 +1153,7 @@ TEST(SceneLoader, BodyBox) {
   EXPECT_EQ(s.bodies[0].box[1], 2.5);
   EXPECT_EQ(s.bodies[0].box_center[1], -1.0);
   // No number of the model changes with it: the body's rest pose and loads are the same.
-  const Model a = BuildSystem(none), b = BuildSystem(s);
+  const Model a = BuildModel(none), b = BuildModel(s);
   EXPECT_EQ(a.bodies[0].mass, b.bodies[0].mass);
   EXPECT_EQ((a.points[2].motion.rest() - b.points[2].motion.rest()).norm(), 0.0);
   // A held body takes it too.
@@ -1204,7 +1213,7 @@ TEST(SceneLoader, DrivenBodyTurnsByItsTrochoid) {
   EXPECT_EQ(s.bodies[0].motion.rx_amplitudes[0], 2.0);
   EXPECT_EQ(s.bodies[0].motion.ry_amplitudes[1], 3.0);
   EXPECT_EQ(s.bodies[0].motion.rz_amplitudes[0], 0.0);
-  const Model sys = BuildSystem(s);
+  const Model sys = BuildModel(s);
   ASSERT_TRUE(sys.bodies[0].turn.moves());
   const EndMotion& fairlead = sys.points[2].motion;
   ASSERT_TRUE(fairlead.turns());
@@ -1221,7 +1230,7 @@ TEST(SceneLoader, DrivenBodyTurnsByItsTrochoid) {
     EXPECT_LT((fairlead.Position(t) - BodyPoint(pose, Vec(2.0, -1.0, 0.5))).norm(), 1e-13) << t;
   }
   // Without angle amplitudes nothing turns: the point's motion is the reference point's.
-  const Model plain = BuildSystem(ParseScene(
+  const Model plain = BuildModel(ParseScene(
       DrivenBodySystem("rx_amplitudes = [2.0, 0.0]\nry_amplitudes = [0.0, 3.0]\n", ""), kFile));
   EXPECT_FALSE(plain.bodies[0].turn.moves());
   EXPECT_FALSE(plain.points[2].motion.turns());
@@ -1260,7 +1269,7 @@ TEST(SceneLoader, WaveFollowingBodyTurnsThroughItsRaos) {
   EXPECT_NEAR(m.ry_amplitudes[1], 1.5 * std::sin(beta), 1e-12);
   EXPECT_NEAR(m.rz_amplitudes[0], 0.5 * std::cos(k * 70.0), 1e-12);
   EXPECT_EQ(m.rx_amplitudes[0], 0.0);
-  EXPECT_TRUE(BuildSystem(s).points[2].motion.turns());
+  EXPECT_TRUE(BuildModel(s).points[2].motion.turns());
   ExpectError(DrivenBodySystem(troch, "motion = \"wave\"\nposition = [70.0, 0.0, 10.0]\n"
                                       "rx_rao = [-1.0, 0.0]") + waves,
               "body[0].rx_rao", {"expected [amplitude ratio in deg/m from 0 to 1000", "got [-1, 0]"});
@@ -1279,7 +1288,7 @@ TEST_F(TableMotion, BodyTableWithAngles) {
   ASSERT_EQ(s.bodies[0].motion.table.size(), 3u);
   EXPECT_EQ(s.bodies[0].motion.table[1][6], 3.0);
   EXPECT_EQ(s.bodies[0].motion.table[2][5], 5.0);
-  const Model sys = BuildSystem(s);
+  const Model sys = BuildModel(s);
   // At a row the spline is the row: the pose (70.5, 0, 10), (1, 28, 3) degrees at t = 2.
   const double deg = M_PI / 180.0;
   Vec6 pose;
@@ -1288,10 +1297,10 @@ TEST_F(TableMotion, BodyTableWithAngles) {
             1e-12);
   // Headerless seven columns too; four columns turn nothing.
   WriteFile("bare.csv", "0,0,0,0,0,0,0\n1,0,0,0,0,1,0\n");
-  EXPECT_TRUE(BuildSystem(ParseScene(DrivenBodySystem(troch, With("turn.csv", "bare.csv", table)),
+  EXPECT_TRUE(BuildModel(ParseScene(DrivenBodySystem(troch, With("turn.csv", "bare.csv", table)),
                                      scene_)).points[2].motion.turns());
   WriteFile("four.csv", "t,x,y,z\n0,0,0,0\n1,0.5,0,0\n");
-  EXPECT_FALSE(BuildSystem(ParseScene(DrivenBodySystem(troch, With("turn.csv", "four.csv", table)),
+  EXPECT_FALSE(BuildModel(ParseScene(DrivenBodySystem(troch, With("turn.csv", "four.csv", table)),
                                       scene_)).points[2].motion.turns());
   // The errors name the file, its line, the key and what was expected.
   WriteFile("short.csv", "t,x,y,z,rx,ry,rz\n0,0,0,0,0,0,0\n1,0,0,0,0,1\n");

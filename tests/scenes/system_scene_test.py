@@ -120,7 +120,7 @@ def body_tools(args, tmp):
         failures.append(f"sweep peaks {[c['peak_tension'] for c in cases]}, the run's "
                         f"{peak(tmp / 'platform')}: the same case differs, or less wind pulls harder")
     for words, expected in ((("stiffness", args.source_dir / "scenes" / "polachek1963.toml"),
-                             "a single line has no body"),
+                             "the scene has no body"),
                             (("offset", scene, "--body", "hull"), 'no body is named "hull"')):
         done = cli(*words)
         if done.returncode != 1 or expected not in done.stderr:

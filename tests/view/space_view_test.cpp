@@ -281,10 +281,10 @@ TEST(FilmView, SceneOutOfThePlaneIsDrawnInSpace) {
   // Each way out of the plane alone is enough.
   SceneDef p63 = Scene("polachek1963.toml");
   SceneDef s = p63;
-  s.end.position[2] = 1;
+  s.points[1].motion.position[2] = 1;
   EXPECT_TRUE(DrawsInSpace(s, "auto"));
   s = p63;
-  s.end.z_amplitudes[1] = 0.5;
+  s.points[1].motion.z_amplitudes[1] = 0.5;
   EXPECT_TRUE(DrawsInSpace(s, "auto"));
 }
 

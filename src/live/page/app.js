@@ -133,8 +133,8 @@ function applyState(s) {
   $('t-end').textContent = kN(T.end);
   $('t-max').textContent = kN(T.max);
   $('t-max-link').textContent = T.link_max == null ? '' : 'in link ' + T.link_max;
-  if (s.system && s.lines) {
-    // A system: its two most loaded lines now in the end boxes, the largest of all in Maximum.
+  if (s.lines && s.lines.length > 1) {
+    // Several lines: the two most loaded now in the end boxes, the largest of all in Maximum.
     const top = s.lines.slice().sort((a, b) => b.max - a.max);
     $('start-label').textContent = top[0] ? top[0].name : 'Line';
     $('t-start').textContent = top[0] ? kN(top[0].max) : '–';
@@ -170,31 +170,29 @@ function applyState(s) {
   if (s.has_period) setSlider('amplitude', s.amplitude_scale, L.amplitude_scale);
   setSlider('current', s.current, L.current);
   setSlider('current_heading', s.current_heading);  // the dial is 0 to 360 whatever the limits
-  $('sea-title').textContent = s.has_period ? 'Motion and current'
-    : s.has_waves ? 'Waves and current' : 'Current';
   $('period-row').hidden = !s.has_period;
   $('period').disabled = !s.has_period;
   if (s.has_period) setSlider('period', s.period, L.period);
-  // A system's vessel: its offset along x and z.
+  // The vessel (the points a ship carries): its offset along x and z.
   for (const id of ['offset_x', 'offset_z']) {
     $(id.replace('_', '-') + '-row').hidden = !s.has_offset;
     $(id).disabled = !s.has_offset;
     if (s.has_offset) setSlider(id, s[id], L.offset);
   }
-  // A system's free bodies: an extra steady force along x and z (the slider's step a
-  // hundredth of its range).
+  // The free bodies: an extra steady force along x and z (the slider's step a hundredth of
+  // its range).
   for (const id of ['force_x', 'force_z']) {
     $(id.replace('_', '-') + '-row').hidden = !s.has_force;
     $(id).disabled = !s.has_force;
     if (s.has_force && L.force) $(id).step = String((L.force[1] - L.force[0]) / 200);
     if (s.has_force) setSlider(id, s[id], L.force);
   }
-  if (s.system) {
-    const parts = [s.has_offset && 'vessel', s.has_force && 'force', s.has_waves && 'waves',
-      'current'].filter(Boolean);
-    const title = parts.length > 1 ? parts.slice(0, -1).join(', ') + ' and ' + parts.at(-1) : parts[0];
-    $('sea-title').textContent = title[0].toUpperCase() + title.slice(1);
-  }
+  // The panel's title: what its controls move (a driven motion or the vessel that carries it,
+  // a free body's force, the sea: its current and its waves).
+  const parts = [(s.has_period || s.has_offset) && 'motion', s.has_force && 'force',
+    'sea'].filter(Boolean);
+  const title = parts.length > 1 ? parts.slice(0, -1).join(', ') + ' and ' + parts.at(-1) : parts[0];
+  $('sea-title').textContent = title[0].toUpperCase() + title.slice(1);
   $('wave-height-row').hidden = !s.has_waves;
   $('wave_height').disabled = !s.has_waves;
   if (s.has_waves) setSlider('wave_height', s.wave_height, L.wave_height);

@@ -1,7 +1,7 @@
 #pragma once
-// results.nc of a system of lines: what its points, lines and bodies do over time, one file
-// for the whole system (each line's stations are in lines/<name>/results.nc), NetCDF-4/CF-1.8,
-// written whole or not at all (a temporary name beside it, then a rename).
+// results.nc of a model of several lines: what its points, lines and bodies do over time, one
+// file for the whole model (each line's stations are in lines/<name>/results.nc),
+// NetCDF-4/CF-1.8, written whole or not at all (a temporary name beside it, then a rename).
 //
 //   dimensions  time (unlimited), line, point, and body when the system has bodies
 //   line_name(line), point_name(point), body_name(body): the scene's names (strings)
@@ -21,22 +21,22 @@
 
 #include "core/point_loads.h"
 #include "io/netcdf_support.h"
-#include "run/system_run.h"
+#include "io/results_nc.h"
 
 namespace cablefilm {
 
-class SystemResultsWriter : public SystemResultsNc {
+class ModelResultsWriter : public ModelResultsNc {
  public:
   static constexpr int kChunkRows = 256;
 
   // Creates `path`'s temporary file and writes what does not change. Throws Error.
-  SystemResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
-                      const Model& sys, const Inputs& in);
-  ~SystemResultsWriter() override;  // uncommitted: the temporary file removed
-  SystemResultsWriter(const SystemResultsWriter&) = delete;
-  SystemResultsWriter& operator=(const SystemResultsWriter&) = delete;
+  ModelResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
+                      const Model& model, const Inputs& in);
+  ~ModelResultsWriter() override;  // uncommitted: the temporary file removed
+  ModelResultsWriter(const ModelResultsWriter&) = delete;
+  ModelResultsWriter& operator=(const ModelResultsWriter&) = delete;
 
-  bool Row(const Data& sd) override;  // throws Error on a write error
+  bool Row(const Data& d) override;  // throws Error on a write error
   void Commit() override;                                // the complete file, under its name
   void CommitPartial(const std::string& path) override;  // an incomplete run, another name
 
@@ -50,7 +50,7 @@ class SystemResultsWriter : public SystemResultsNc {
   void Define(const NetcdfResultsInfo& info);
   void Flush();  // writes the rows gathered; throws Error
 
-  const Model& sys_;
+  const Model& model_;
   const Inputs& in_;
   PointLoads loads_;
   std::string path_, temp_path_;

@@ -1,4 +1,4 @@
-#include "io/system_netcdf.h"
+#include "io/model_netcdf.h"
 
 #include <netcdf.h>
 #include <unistd.h>
@@ -19,9 +19,9 @@ constexpr int kBodySeries = 12;  // body_x .. body_mz
 
 }  // namespace
 
-SystemResultsWriter::SystemResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
-                                         const Model& sys, const Inputs& in)
-    : sys_(sys), in_(in), loads_(sys), path_(path),
+ModelResultsWriter::ModelResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
+                                         const Model& model, const Inputs& in)
+    : model_(model), in_(in), loads_(model), path_(path),
       temp_path_(path + ".tmp" + std::to_string(::getpid())) {
   KeepFreedMemoryForTheCompressor();
   SkipHdf5CleanupAtExit();
@@ -34,21 +34,21 @@ SystemResultsWriter::SystemResultsWriter(const std::string& path, const NetcdfRe
   }
 }
 
-SystemResultsWriter::~SystemResultsWriter() {
+ModelResultsWriter::~ModelResultsWriter() {
   if (ncid_ >= 0) nc_close(ncid_);
   if (!committed_) std::remove(temp_path_.c_str());
 }
 
-void SystemResultsWriter::Define(const NetcdfResultsInfo& info) {
+void ModelResultsWriter::Define(const NetcdfResultsInfo& info) {
   const std::string& f = temp_path_;
   errno = 0;  // NetcdfCheck reads it
   int created = -1;
   NetcdfCheck(nc_create(f.c_str(), NC_NETCDF4 | NC_CLOBBER, &created), f, "create");
   ncid_ = created;
   const int nc = ncid_;
-  const int lines = static_cast<int>(sys_.lines.size());
-  const int points = static_cast<int>(sys_.points.size());
-  const int bodies = static_cast<int>(sys_.bodies.size());
+  const int lines = static_cast<int>(model_.lines.size());
+  const int points = static_cast<int>(model_.points.size());
+  const int bodies = static_cast<int>(model_.bodies.size());
 
   int dim_time = -1, dim_line = -1, dim_point = -1, dim_body = -1;
   NetcdfCheck(nc_def_dim(nc, "time", NC_UNLIMITED, &dim_time), f, "time");
@@ -134,20 +134,20 @@ void SystemResultsWriter::Define(const NetcdfResultsInfo& info) {
     if (!text.empty()) NetcdfCheck(nc_put_var_string(nc, var, text.data()), f, "names");
   };
   std::vector<const char*> text;
-  for (const std::string& n : sys_.line_names) text.push_back(n.c_str());
+  for (const std::string& n : model_.line_names) text.push_back(n.c_str());
   names(var_line_name, text);
   text.clear();
-  for (const Point& p : sys_.points) text.push_back(p.name.c_str());
+  for (const Point& p : model_.points) text.push_back(p.name.c_str());
   names(var_point_name, text);
   if (bodies > 0) {
     text.clear();
-    for (const BodySpec& b : sys_.bodies) text.push_back(b.name.c_str());
+    for (const BodySpec& b : model_.bodies) text.push_back(b.name.c_str());
     names(var_body_name, text);
   }
   std::vector<int> start(static_cast<size_t>(lines)), end(static_cast<size_t>(lines));
   for (int i = 0; i < lines; ++i) {
-    start[static_cast<size_t>(i)] = sys_.line_points[i][0];
-    end[static_cast<size_t>(i)] = sys_.line_points[i][1];
+    start[static_cast<size_t>(i)] = model_.line_points[i][0];
+    end[static_cast<size_t>(i)] = model_.line_points[i][1];
   }
   if (lines > 0) {
     NetcdfCheck(nc_put_var_int(nc, var_start, start.data()), f, "line_start_point");
@@ -155,15 +155,15 @@ void SystemResultsWriter::Define(const NetcdfResultsInfo& info) {
   }
 }
 
-bool SystemResultsWriter::Row(const Data& sd) {
-  loads_.Compute(sys_, sd, in_);
-  time_.push_back(sd.t);
+bool ModelResultsWriter::Row(const Data& d) {
+  loads_.Compute(model_, d, in_);
+  time_.push_back(d.t);
   std::vector<Series>::iterator s = series_.begin();
   for (int c = 0; c < 3; ++c, ++s)
     for (int p = 0; p < s->width; ++p) s->rows.push_back(loads_.positions()(c, p));
   for (int c = 0; c < 3; ++c, ++s)
     for (int p = 0; p < s->width; ++p) s->rows.push_back(loads_.forces()(c, p));
-  for (const LineData& d : sd.lines) {
+  for (const LineData& d : d.lines) {
     const Eigen::VectorXd& T = d.tension();
     Eigen::Index link = 0;
     const double t_max = T.maxCoeff(&link);
@@ -173,7 +173,7 @@ bool SystemResultsWriter::Row(const Data& sd) {
     s[3].rows.push_back(static_cast<double>(link));
   }
   s += kLineSeries;
-  if (!sys_.bodies.empty()) {
+  if (!model_.bodies.empty()) {
     const double deg = 180.0 / M_PI;
     for (int k = 0; k < 6; ++k)
       for (const Vec6& q : loads_.body_poses()) s[k].rows.push_back(k < 3 ? q[k] : q[k] * deg);
@@ -184,7 +184,7 @@ bool SystemResultsWriter::Row(const Data& sd) {
   return true;
 }
 
-void SystemResultsWriter::Flush() {
+void ModelResultsWriter::Flush() {
   if (time_.empty()) return;
   const std::string& f = temp_path_;
   errno = 0;
@@ -202,9 +202,9 @@ void SystemResultsWriter::Flush() {
   for (Series& s : series_) s.rows.clear();
 }
 
-void SystemResultsWriter::Commit() { CommitPartial(path_); }
+void ModelResultsWriter::Commit() { CommitPartial(path_); }
 
-void SystemResultsWriter::CommitPartial(const std::string& path) {
+void ModelResultsWriter::CommitPartial(const std::string& path) {
   if (committed_ || ncid_ < 0) throw Error("internal: " + path_ + " committed twice");
   Flush();
   const int id = ncid_;
