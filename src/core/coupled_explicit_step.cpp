@@ -130,7 +130,7 @@ void StepCoupledExplicit(const Model& model, int k, Data& d, const Inputs& in, d
     --id.refinement;
     id.quiet_time = 0;
   }
-  const double t0 = d.t;
+  const double t0 = id.t;
   long done = 0;  // substeps of dt / 2^refinement taken
   while (done < (1L << id.refinement)) {
     ThrowIfCancelled(in.stop, "the explicit step");
@@ -151,6 +151,7 @@ void StepCoupledExplicit(const Model& model, int k, Data& d, const Inputs& in, d
     for (int i = 0; i < v.lines(); ++i) v.L(i).state.t = t;
     id.quiet_time = changed ? 0.0 : id.quiet_time + h;
   }
+  id.t = t0 + dt;
 }
 
 }  // namespace cablefilm

@@ -17,8 +17,8 @@
 
 namespace cablefilm {
 
-// Advances coupled island k by dt [s] from d.t; its lines' clocks are left at d.t + dt.
-// Throws CancelledError (in.stop, each substep).
+// Advances coupled island k by dt [s] from its clock (IslandData::t), which it leaves at
+// t + dt (its lines' too). Throws CancelledError (in.stop, each substep).
 void StepCoupledExplicit(const Model& model, int k, Data& d, const Inputs& in, double dt);
 
 // The accelerations of island k's coupled stations and free bodies at the state of its

@@ -5,7 +5,9 @@
 #include <limits>
 #include <string>
 
+#include "core/coupled_explicit_step.h"
 #include "core/error.h"
+#include "core/explicit_snaps.h"
 #include "core/force_jacobian.h"
 #include "core/implicit_stages.h"
 #include "core/island_view.h"
@@ -226,7 +228,18 @@ struct CoupledStepper {
   double& ProposedStep() { return v.id.proposed_step; }
   long& Rejected() { return v.id.stats.rejected; }
   int WorstLink() const { return WorstLinkOf(nullptr); }
-  bool HandsOff(double) const { return false; }  // a coupled island's snaps: implicit steps
+  double handed_off = 0;  // the step it left to explicit ones [s]
+  // A solved step that snaps a line's link taut too fast for it, with a load that matters
+  // (explicit_snaps.h): left to the island's explicit steps.
+  bool HandsOff(double h) {
+    if (!(v.id.snap_window > 0)) return false;
+    for (int i = 0; i < lines(); ++i)
+      if (StepsThroughSnaps(v.L(i)) && SnapsUnresolved(v.M(i), v.L(i), h)) {
+        handed_off = h;
+        return true;
+      }
+    return false;
+  }
   double NextKink(double t) const {
     double kink = std::numeric_limits<double>::infinity();
     if (!ClockAsScene(in)) return kink;
@@ -439,7 +452,9 @@ void PrepareCoupledIsland(const Model& model, int k, Data& d) {
     if (ld.scratch.max_substep > 0)
       id.max_substep = id.max_substep > 0 ? std::min(id.max_substep, ld.scratch.max_substep)
                                           : ld.scratch.max_substep;
+    id.snap_window = std::max(id.snap_window, ld.scratch.snap_window);
   }
+  id.start_time = d.t;
   for (int b : isl.free_bodies)
     id.bodies.push_back(static_cast<int>(
         std::find(model.free_bodies.begin(), model.free_bodies.end(), b) -
@@ -486,16 +501,99 @@ void SyncCoupledState(const Model& model, int k, Data& d) {
 void StepCoupledIsland(const Model& model, int k, Data& d, const Inputs& in, double dt) {
   const IslandView v(model, k, d);
   const StepOptions& o = v.L(0).options;
-  v.id.t = d.t;
+  IslandData& id = v.id;
+  id.t = d.t;
   CoupledStepper stepper{v, in, GeneralizedAlphaCoefficients(o.rho_inf)};
+  const double t_end = id.t + dt;
   try {
-    AdaptiveImplicitSteps(stepper, o, in.stop, dt);
+    // Implicit steps, and explicit ones through the snaps they hand off (explicit_snaps.h).
+    double rest = dt;  // [s] (dt itself unless a window took part of it)
+    for (;;) {
+      if (id.t < id.explicit_until) {
+        StepCoupledExplicitWindow(model, k, d, in, t_end);
+        if (!(id.t < t_end)) break;
+        rest = t_end - id.t;
+      }
+      if (AdaptiveImplicitSteps(stepper, o, in.stop, rest, dt)) break;
+      EnterCoupledExplicitWindow(model, k, d, in, stepper.handed_off);
+      rest = t_end - id.t;
+    }
   } catch (const BlowUpError& e) {  // its link is the most stretched: name that link's line
     int line = 0;
     stepper.WorstLinkOf(&line);
     throw BlowUpError("line \"" + model.line_names[v.isl.lines[line]] + "\": " + e.what(),
                       e.time, e.station);
   }
+  id.t = t_end;
+}
+
+void EnterCoupledExplicitWindow(const Model& model, int k, Data& d, const Inputs& in, double h) {
+  const IslandView v(model, k, d);
+  IslandData& id = v.id;
+  // The state's forces (the trial step left its own in each line's) and its true
+  // accelerations, coupled, which the explicit step carries.
+  for (int i = 0; i < v.lines(); ++i) {
+    LineData& l = v.L(i);
+    ComputeAccelerations(v.M(i), in, l.water, l.state.t, l.state.x, l.state.v, l.forces, l.a);
+  }
+  for (int b = 0; b < v.bodies(); ++b) id.body_rates[b] = v.body(b).v;
+  CoupleAccelerations(model, k, d, id.t, id.body_rates);
+  id.explicit_until = id.t + h + id.snap_window;
+  // What the island has cost so far against what the explicit scheme would have, in explicit
+  // steps (explicit_snaps.cpp, EnterExplicitWindow): when snaps come so often that the windows
+  // and the implicit steps between them cost more, the explicit steps go on to the run's end.
+  const double explicit_alone = (id.t - id.start_time) / id.max_substep;
+  const double spent = static_cast<double>(id.stats.explicit_steps) +
+                       kNewtonIterationCost * static_cast<double>(v.L(0).stats.newton_iterations);
+  if (spent > explicit_alone) id.explicit_until = std::numeric_limits<double>::infinity();
+  id.refinement = 0;
+  id.quiet_time = 0;
+  ++id.stats.snap_windows;
+}
+
+void StepCoupledExplicitWindow(const Model& model, int k, Data& d, const Inputs& in,
+                               double t_end) {
+  const IslandView v(model, k, d);
+  IslandData& id = v.id;
+  // A window ending a rounding short of t_end is taken to it (no sliver of an implicit step).
+  if (id.explicit_until < t_end && t_end - id.explicit_until < 1e-9 * id.snap_window)
+    id.explicit_until = t_end;
+  const double stop = std::min(t_end, id.explicit_until);
+  const double span = stop - id.t;
+  const long before = id.stats.steps;
+  if (span > 0) {
+    // Steps as the explicit scheme's time grid cuts an interval: equal ones of at most its
+    // substep (StepCoupledExplicit refines them where links go slack or taut).
+    const double substeps = std::ceil(span / id.max_substep - 1e-9);
+    const long pieces = std::max(1L, static_cast<long>(substeps));
+    const double t0 = id.t, h = span / static_cast<double>(pieces);
+    for (long i = 1; i <= pieces; ++i) {
+      StepCoupledExplicit(model, k, d, in, h);
+      id.t = i == pieces ? stop : t0 + static_cast<double>(i) * h;
+      for (int l = 0; l < v.lines(); ++l) v.L(l).state.t = id.t;
+    }
+  }
+  id.stats.explicit_steps += id.stats.steps - before;
+  if (id.t < id.explicit_until) return;
+  // The implicit scheme starts afresh from the state, as at t = 0 (MakeData): its acceleration
+  // memory the state's true accelerations, coupled.
+  for (int i = 0; i < v.lines(); ++i) {
+    LineData& l = v.L(i);
+    ComputeAccelerations(v.M(i), in, l.water, l.state.t, l.state.x, l.state.v, l.forces, l.a);
+  }
+  for (int b = 0; b < v.bodies(); ++b) id.body_rates[b] = v.body(b).v;
+  CoupleAccelerations(model, k, d, id.t, id.body_rates);
+  for (int i = 0; i < v.lines(); ++i) {
+    LineData& l = v.L(i);
+    l.abar = l.abar_before = l.a;
+    l.last_step = 0;
+    l.smooth = false;
+  }
+  for (int b = 0; b < v.bodies(); ++b) {
+    BodyMotion& m = v.body(b);
+    m.abar = m.ta = m.tabar = m.a;
+  }
+  id.explicit_until = -1;
 }
 
 }  // namespace cablefilm

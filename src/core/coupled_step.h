@@ -21,10 +21,23 @@ namespace cablefilm {
 // Island k's memory sized and its couplings set (MakeData's part for a coupled island).
 void PrepareCoupledIsland(const Model& model, int k, Data& d);
 
-// Advances coupled island k by dt [s] (adaptive within it with the options' tolerance > 0),
-// from d.t. Throws BlowUpError (naming the line in its message), CancelledError as Step()
-// does. Its lines' clocks are left at d.t + dt.
+// Advances coupled island k by dt [s] (adaptive within it with the options' tolerance > 0,
+// through snaps by explicit steps with explicit_snaps), from d.t. Throws BlowUpError (naming
+// the line in its message), CancelledError as Step() does. Its lines' clocks are left at
+// d.t + dt.
 void StepCoupledIsland(const Model& model, int k, Data& d, const Inputs& in, double dt);
+
+// Explicit steps through snaps (explicit_snaps.h, as a line takes them): a solved implicit
+// step of h [s] that snapped a line's link taut too fast is left; the island's state's forces
+// and coupled accelerations computed and its explicit window opened over that step and its
+// lines' longest snap window after it (or to the run's end, when the windows and the implicit
+// steps between them have cost more than the explicit scheme alone would).
+void EnterCoupledExplicitWindow(const Model& model, int k, Data& d, const Inputs& in, double h);
+// Explicit steps (coupled_explicit_step.h) from the island's clock to t_end [s] or the
+// window's end, whichever is first; at the window's end the implicit scheme's memory is made
+// from the state.
+void StepCoupledExplicitWindow(const Model& model, int k, Data& d, const Inputs& in,
+                               double t_end);
 
 // A free body's own generalized load at pose q [N, N m]: weight, buoyancy, waterplane,
 // constant loads.

@@ -45,6 +45,7 @@ Data MakeData(const Model& model, const Inputs& in, const StepOptions& options,
     std::vector<Vec6> rates;
     for (int b : d.islands[k].bodies) rates.push_back(d.bodies[b].v);
     CoupleAccelerations(model, k, d, d.t, rates);
+    if (options.scheme != Scheme::kImplicit) continue;  // generalized-alpha's memory: abar = a
     for (int p : isl.shared_points)
       for (const LineEnd& e : model.points[p].ends)
         d.lines[e.line].abar.col(e.station) = d.lines[e.line].a.col(e.station);
@@ -94,6 +95,8 @@ StepStats LineStepStats(const Model& model, const Data& d, int i) {
   if (!model.islands[k].coupled()) return s;
   const StepStats& island = d.islands[k].stats;  // its steps are every line's of it
   s.rejected = island.rejected;
+  s.snap_windows = island.snap_windows;
+  s.explicit_steps = island.explicit_steps;
   if (island.finest_refinement > s.finest_refinement) s.finest_refinement = island.finest_refinement;
   return s;
 }
@@ -111,13 +114,10 @@ StepStats ModelStepStats(const Model& model, const Data& d) {
     // Each line of a coupled island counts every Newton iteration of its coupled solve: the
     // island's are any line's.
     all.newton_iterations += line.newton_iterations;
+    all.snap_windows += own.snap_windows;
+    all.explicit_steps += own.explicit_steps;
     for (int i : isl.lines) {
-      const StepStats s = d.lines[i].step_stats();
-      if (isl.coupled() || i == isl.lines.front()) {
-        all.snap_windows += s.snap_windows;
-        all.explicit_steps += s.explicit_steps;
-      }
-      AddRecord(s.record, first, all.record);
+      AddRecord(d.lines[i].step_stats().record, first, all.record);
       first = false;
     }
   }

@@ -45,7 +45,12 @@ struct IslandData {
                               // Newton iterations)
   int refinement = 0;         // explicit, automatic: k, steps asked are cut into 2^k substeps
   double quiet_time = 0;      // explicit, automatic: since a link last went slack or taut [s]
-  double max_substep = 0;     // explicit: the least of its lines' [s]
+  double max_substep = 0;     // explicit (and implicit's steps through snaps): the least of its
+                              // lines' [s]
+  double snap_window = 0;     // implicit, explicit_snaps: the window after a snap, its lines'
+                              // longest [s]
+  double explicit_until = -1; // implicit: explicit steps through a snap until then [s]
+  double start_time = 0;      // the clock when the Data was made [s]
   std::vector<int> bodies;    // its free bodies' indices in Data::bodies
   std::vector<std::array<EndCoupling, 2>> couplings;  // per line, its two ends'
   std::vector<std::array<PointMap, 2>> end_maps;      // their T at the trial pose

@@ -39,10 +39,12 @@ void Step(const Model& m, Data& d, const Inputs& in, double dt) {
       continue;
     }
     for (int i : isl.lines) UpdateWater(m.lines[i], in, d.t + 0.5 * dt, &d.lines[i].water);
-    if (d.lines[isl.lines.front()].options.scheme == Scheme::kExplicit)
+    if (d.lines[isl.lines.front()].options.scheme == Scheme::kExplicit) {
+      d.islands[k].t = d.t;
       StepCoupledExplicit(m, k, d, in, dt);
-    else
+    } else {
       StepCoupledIsland(m, k, d, in, dt);
+    }
     for (int i : isl.lines) {
       d.lines[i].state.t = t_end;
       try {

@@ -3,7 +3,6 @@
 
 #include "view/film_pass.h"
 #include "view/max_tension_figure.h"
-#include "view/system_film.h"
 
 namespace cablefilm {
 
@@ -12,17 +11,6 @@ PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<RowMaxima
   std::printf("%s: not drawn (this build has no renderer: CABLEFILM_RENDER=OFF)\n",
               complete ? "max_tension.png" : "max_tension.partial.png");
   return {};
-}
-
-PictureReport WriteSystemMaxTensionFigure(const SceneDef& scene, const SystemRun&,
-                                          const std::string& out_dir, bool complete) {
-  return WriteMaxTensionFigure(scene, std::vector<RowMaxima>{}, out_dir, complete, "");
-}
-
-bool RenderSystemFilm(const SceneDef&, const SystemRun&, const FilmRequest&,
-                      const std::atomic<int>&, PictureReport*) {
-  std::printf("film: not rendered (this build has no renderer: CABLEFILM_RENDER=OFF)\n");
-  return true;
 }
 
 PictureReport WriteMaxTensionFigure(const SceneDef&, const std::vector<const Run*>&,
