@@ -1,9 +1,11 @@
 #include "app/body_commands.h"
 
 #include <cmath>
+#include <memory>
 #include <cstdio>
 #include <sstream>
 
+#include "app/command.h"
 #include "app/progress.h"
 #include "app/run_support.h"
 #include "core/body_statics.h"
@@ -11,6 +13,8 @@
 #include "io/atomic_file.h"
 #include "run/initial_state.h"
 #include "scene/build_model.h"
+#include "scene/option_values.h"
+#include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "scene/text_escape.h"
 
@@ -138,6 +142,40 @@ int OffsetCommand(const std::string& scene_path, const OffsetOptions& o) {
   file.Commit();
   std::fprintf(stderr, "wrote %s\n", EscapeText(o.out).c_str());
   return 0;
+}
+
+Command DeclareStiffnessCommand(CLI::App& program, std::string* scene) {
+  auto body = std::make_shared<std::string>();
+  CLI::App* cmd = AddSceneCommand(
+      program, "stiffness", "print the moorings' 6x6 stiffness matrix of a body at equilibrium",
+      scene);
+  cmd->add_option("--body", *body, "the body (default: the scene's only one)")->type_name("NAME");
+  return {cmd, [scene, body] { return StiffnessCommand(*scene, *body); }};
+}
+
+Command DeclareOffsetCommand(CLI::App& program, std::string* scene) {
+  auto o = std::make_shared<OffsetOptions>();
+  CLI::App* cmd = AddSceneCommand(
+      program, "offset", "the offset-restoring curve of a body along a heading (CSV)", scene);
+  cmd->add_option("--body", o->body, "the body (default: the scene's only one)")->type_name("NAME");
+  Value(cmd, "--heading", "DEG", "direction of the offset from +x towards +z (default 0)",
+        [o](const std::string& v) {
+          o->heading = ParseNumber("--heading", v, -360, 360, false, " degrees");
+        });
+  Value(cmd, "--max", "M", "largest offset in m (default: a twentieth of the shortest line on the body)",
+        [o](const std::string& v) { o->max_offset = ParseNumber("--max", v, 0, kMaxLength, false, " m"); });
+  Value(cmd, "--points", "N", "offsets from 0 to --max, 1 to 10000 (default 11)",
+        [o](const std::string& v) {
+          o->points = static_cast<int>(ParseNumber("--points", v, 1, 10000, false, " points"));
+          if (o->points != std::stod(v)) Bad("--points: expected a whole number");
+        });
+  cmd->add_option("-o,--out", o->out, "the CSV file (default: standard output)")->type_name("FILE");
+  cmd->footer(
+      "Columns: offset [m], restoring (the moorings' horizontal force against the heading)\n"
+      "[N], fx, fy, fz [N], mx, my, mz [N m] (the moorings' load on the body), then the load\n"
+      "at each line's end on the body, tension_<line> [N]. The body moves from its\n"
+      "equilibrium; its other degrees of freedom are held. See docs/cli.md.");
+  return {cmd, [scene, o] { return OffsetCommand(*scene, *o); }};
 }
 
 }  // namespace cablefilm

@@ -1,5 +1,7 @@
 #include "app/commands.h"
 
+#include <memory>
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -274,6 +276,42 @@ int CheckCommand(const std::string& scene_path) {
   }
   std::printf("ok\n");
   return 0;
+}
+
+namespace {
+
+const char kOutputs[] =
+    "The results go to the output folder: a scene of one line its equilibrium.csv,\n"
+    "timeseries.csv, results.nc and run_report.toml; of several lines each line's in\n"
+    "lines/<name>/ and points.csv, results.nc (body.csv with bodies) and run_report.toml; then\n"
+    "max_tension.png and film.mp4 (with the film: duration x fps / speed must be 1 to 1e6\n"
+    "frames).";
+
+}  // namespace
+
+Command DeclareRunCommand(CLI::App& program, std::string* scene) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* cmd = AddSceneCommand(program, "run", "simulate, write the results and the film", scene);
+  AddRunOptions(cmd, options.get());
+  cmd->footer(kOutputs);
+  return {cmd, [scene, options] { return RunCommand(*scene, *options); }};
+}
+
+Command DeclareCompareCommand(CLI::App& program, std::string* scene) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* cmd = AddSceneCommand(program, "compare",
+                                  "elastic and inextensible runs: the paper's Figure 1", scene);
+  AddRunOptions(cmd, options.get());
+  cmd->footer(std::string(kOutputs) +
+              "\nAlso each line's equilibrium_inextensible.csv and timeseries_inextensible.csv.");
+  return {cmd, [scene, options] { return CompareCommand(*scene, *options); }};
+}
+
+Command DeclareCheckCommand(CLI::App& program, std::string* scene) {
+  CLI::App* cmd = AddSceneCommand(program, "check",
+                                  "validate a scene, print stations, mass, time step", scene);
+  cmd->footer("Refuses whatever run would, before anything is simulated.");
+  return {cmd, [scene] { return CheckCommand(*scene); }};
 }
 
 }  // namespace cablefilm

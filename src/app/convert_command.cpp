@@ -1,5 +1,7 @@
 #include "app/commands.h"
 
+#include <memory>
+
 #include <cstdio>
 
 #include "io/atomic_file.h"
@@ -21,6 +23,20 @@ int ConvertCommand(const std::string& path, const std::string& out_path) {
   file.Commit();
   std::fprintf(stderr, "wrote %s\n", EscapeText(out_path).c_str());
   return 0;
+}
+
+Command DeclareConvertCommand(CLI::App& program, std::string* scene) {
+  auto out = std::make_shared<std::string>();
+  CLI::App* cmd =
+      AddSceneCommand(program, "convert",
+                      "write a MoorDyn v2 input file as the equivalent scene (TOML)", scene,
+                      "the MoorDyn v2 input file");
+  cmd->add_option("-o,--out", *out, "the scene file to write (default: standard output)")
+      ->type_name("FILE");
+  cmd->footer(
+      "'run' and 'check' read a MoorDyn file as it is, through this scene; MoorDyn's\n"
+      "z-up axes become cablefilm's y-up ones: (x, y, z) -> (x, z, -y). See docs/moordyn.md.");
+  return {cmd, [scene, out] { return ConvertCommand(*scene, *out); }};
 }
 
 }  // namespace cablefilm

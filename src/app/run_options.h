@@ -3,6 +3,7 @@
 #include <limits>
 #include <string>
 
+#include "app/command.h"
 #include "run/run_summary.h"
 #include "scene/film_settings.h"
 #include "view/film_pass.h"
@@ -15,6 +16,10 @@ struct RunOptions : FilmOverrides {
   int film = -1;                // -1: as the scene says, 0: no film, 1: film
   std::string shader_dir;       // empty: CABLEFILM_SHADERS or the built-in path
 };
+
+// The film and output options of run and compare (and sweep, for each case) into `o`.
+void AddRunOptions(CLI::App* cmd, RunOptions* o,
+                   const std::string& out_help = "output folder (default output/<scene name>)");
 
 // What a run reports and what its pictures show (for the tests; NaN: not made). All come from
 // the same output rows, so the peaks agree: the film's to the last bit, the CSV's to its 10

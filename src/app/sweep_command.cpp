@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -20,10 +21,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "app/command.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/out_dir_lock.h"
 #include "io/result_files.h"
+#include "scene/option_values.h"
 #include "io/run_report_file.h"
 #include "run/run.h"
 #include "run/sweep.h"
@@ -517,6 +520,52 @@ int SweepCommand(const std::string& scene_path, const SweepOptions& options) {
     throw Error(std::string("--summary-only writes sweep.csv alone: ") +
                 (options.prepare ? "--prepare" : "a film") + " is not made with it");
   return Sweep(scene_path, options).Run();
+}
+
+Command DeclareSweepCommand(CLI::App& program, std::string* scene) {
+  auto o = std::make_shared<SweepOptions>();
+  CLI::App* cmd = AddSceneCommand(program, "sweep",
+                                  "run a scene over the cross product of values of its keys", scene);
+  Value(cmd, "--set", "KEY=V1,V2,...",
+        "a scene key (e.g. environment.current, ends.end.period, material[0].youngs_modulus) "
+        "and its values (TOML: 0.5, \"explicit\" or explicit, [1, 2]); repeat for more keys: "
+        "the cases are their cross product",
+        [o](const std::string& v) {
+          try {
+            o->sets.push_back(ParseSetOption(v));
+          } catch (const Error& e) {
+            Bad(std::string("--set: ") + e.what());
+          }
+        })
+      ->trigger_on_parse();
+  Value(cmd, "--cases", "CASES.csv",
+        "a CSV of cases: a header naming the keys, a row of values per case (times the --set "
+        "values)",
+        [o](const std::string& v) { o->cases_csv = v; });
+  Value(cmd, "--jobs", "N", "cases at a time (default: one per core)", [o](const std::string& v) {
+    const double jobs = ParseNumber("--jobs", v, 1, 1024, false, " cases at a time");
+    if (jobs != std::floor(jobs))
+      Bad("--jobs: expected a whole number from 1 to 1024, got " + Shown(v));
+    o->jobs = static_cast<int>(jobs);
+  });
+  Flag(cmd, "--prepare", "write the case folders (scene.toml) and sweep.csv, run nothing",
+       [o] { o->prepare = true; });
+  Flag(cmd, "--summary-only",
+       "run the cases in this process and write sweep.csv alone: no case folders, no per-case "
+       "files (the fastest for many short cases)",
+       [o] { o->summary_only = true; });
+  AddRunOptions(cmd, &o->run, "sweep folder (default output/<scene name>_sweep)");
+  cmd->footer(
+      "Each case is 'cablefilm run' in a process of its own (the film off unless --film), in\n"
+      "DIR/case_NNN/ with its scene.toml; every case's scene is checked as 'check' would before\n"
+      "any runs. The summary: DIR/sweep.csv (case, folder, the values, status, message, peak\n"
+      "tension, its time and link, minimum tension, its time and link, snaps, peak_converged).\n"
+      "Ctrl-C stops the running cases and leaves the finished ones.");
+  return {cmd, [scene, o] {
+            if (o->sets.empty() && o->cases_csv.empty())
+              Bad("nothing to sweep: give --set KEY=V1,V2,... or --cases CASES.csv");
+            return SweepCommand(*scene, *o);
+          }};
 }
 
 }  // namespace cablefilm

@@ -6,15 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
-#include <filesystem>
 #include <future>
 
 #include "core/line_data.h"
 #include "core/error.h"
+#include "live/live_recorder.h"
 #include "encode/png_writer.h"
 #include "encode/tiled_jpeg.h"
-#include "encode/video_encoder.h"
 #include "view/colormap.h"
 #include "view/frame_builder.h"
 #include "view/renderer.h"
@@ -341,200 +339,205 @@ std::string LiveSession::StatusLocked() const {
 
 // ---- The render thread ---------------------------------------------------------------------
 
-void LiveSession::RenderLoop() {
+// The frame as drawn, kept with what draws and packs it.
+struct LiveSession::Painter {
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<TiledJpegEncoder> jpeg;
+  // Each frame only what was drawn again is read back into it. A copy is published as the
+  // still (/snapshot.png) only when one is asked for.
+  Image canvas;
+  std::uint64_t number = 0;       // frames drawn
+  std::size_t message_bytes = 0;  // the last frame's: the next one's about as long
+};
+
+// What one frame draws, taken from the shared state under the lock.
+struct LiveSession::RenderWork {
+  History picture;  // the history as a frame shows it (its storage reused)
+  std::string status, colormap;
+  OrbitCamera camera;
+  std::uint64_t seq = 0, fresh = 0, step = 0;
+  std::uint64_t input = 0, view = ~0ull;  // the versions drawn
+  bool want_record = false;
+};
+
+void LiveSession::RenderLoop() {
+  Painter painter;
+  if (!StartRenderer(&painter)) return;
+  LiveRecorder recorder;
+  RenderWork work;
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    work.picture = history_;
+  }
+  while (WaitForWork(painter, &work)) {
+    if (!UpdateRecording(&recorder, work)) continue;
+    DrawFrame(&painter, &recorder, work);
+  }
+  FinishRecording(&recorder);
+}
+
+bool LiveSession::StartRenderer(Painter* painter) {
   try {
     RenderOptions ro;
     ro.width = options_.width;
     ro.height = options_.height;
     ro.shader_dir = options_.shader_dir;
     ro.redraw_changes = true;  // from one frame to the next, little of the picture changes
-    renderer = std::make_unique<Renderer>(ro);
-    jpeg = std::make_unique<TiledJpegEncoder>(options_.jpeg_quality);
+    painter->renderer = std::make_unique<Renderer>(ro);
+    painter->jpeg = std::make_unique<TiledJpegEncoder>(options_.jpeg_quality);
+    return true;
   } catch (const std::exception& e) {
     std::lock_guard<std::mutex> lock(mu_);
     render_error_ = std::string("live: cannot start the renderer: ") + e.what();
     frame_cv_.notify_all();
-    return;
+    return false;
   }
-  std::unique_ptr<VideoEncoder> video;
-  Recording current;
-  // A film has one frame per simulation step it covers (speed/fps of simulated time each, so it
-  // plays at the pace it was watched: at 1x, the simulated time), from the step of its first
-  // picture to the one at which it was stopped; each frame shows the newest picture drawn at
-  // or before its step. Its length thus follows the steps, not the render thread: however many
-  // states this thread skips (it draws only the newest) or however late it draws the last, no
-  // frame is missing, only pictures are repeated.
-  std::uint64_t film_first_step = 0;
-  Image film_picture;  // the newest picture drawn for the film (empty: none yet)
-  std::uint64_t drawn_input = 0, drawn_view = ~0ull, number = 0;
-  // The frame as drawn, kept: each frame only what was drawn again is read back into it. A
-  // copy is published as the still (/snapshot.png) only when one is asked for.
-  Image canvas;
-  // Publishes a copy of the canvas for SnapshotPng, if one was asked for (lock held).
-  auto publish_still = [&]() {
-    if (still_done_ == still_wanted_) return;
-    image_ = std::make_shared<const Image>(canvas);
-    still_done_ = still_wanted_;
-    frame_cv_.notify_all();
-  };
-  std::size_t message_bytes = 0;  // the last frame's: the next one's about as long
-  auto finish_recording = [&]() {
-    if (!video) return;
+}
+
+void LiveSession::PublishStillLocked(const Image& canvas) {
+  if (still_done_ == still_wanted_) return;
+  image_ = std::make_shared<const Image>(canvas);
+  still_done_ = still_wanted_;
+  frame_cv_.notify_all();
+}
+
+bool LiveSession::WaitForWork(const Painter& painter, RenderWork* work) {
+  std::unique_lock<std::mutex> lock(mu_);
+  while (true) {
+    // Nobody watching, nothing asked: no drawing, no encoding (the first frame is drawn
+    // regardless, for the constructor).
+    auto changed = [&] {
+      const bool watching = viewers_ > 0 || recording_ || record_wanted_ || !frame_;
+      return fresh_wanted_ != fresh_done_ ||
+             (watching && (input_version_ != work->input || view_version_ != work->view));
+    };
+    render_cv_.wait(lock, [&] {
+      return stop_ || changed() || record_wanted_ != recording_ ||
+             (still_wanted_ != still_done_ && frame_);
+    });
+    if (stop_) return false;
+    const bool redraw = changed();
+    if (!redraw) PublishStillLocked(painter.canvas);  // the newest frame drawn is the state now
+    if (!redraw && record_wanted_ == recording_) continue;
+    work->want_record = record_wanted_;
+    work->input = input_version_;
+    work->view = view_version_;
+    work->fresh = fresh_wanted_;
+    work->picture = history_;
+    work->status = StatusLocked();
+    work->colormap = colormap_;
+    work->camera = camera_;
+    work->seq = seq_applied_;
+    work->step = steps_;
+    return true;
+  }
+}
+
+bool LiveSession::UpdateRecording(LiveRecorder* recorder, const RenderWork& work) {
+  if (work.want_record && !recorder->recording()) {
     try {
-      std::uint64_t end_step;
-      {
-        std::lock_guard<std::mutex> lock(mu_);
-        end_step = record_end_step_;
-        current.t_end = record_end_t_;
-      }
-      // The steps after the last picture, up to the stop, show it.
-      if (!film_picture.rgba.empty())
-        while (video->frames_added() <= static_cast<long>(end_step) - static_cast<long>(film_first_step))
-          video->AddFrame(film_picture);
-      video->Finish();
+      recorder->Start(options_.out_dir, options_.width, options_.height, options_.fps,
+                      work.picture.now().t, work.step);
       std::lock_guard<std::mutex> lock(mu_);
-      current.frames = video->frames_added();
-      recordings_.push_back(current);
-      std::printf("live: wrote %s (%ld frames)\n", current.path.c_str(), current.frames);
-      std::fflush(stdout);
+      recording_ = true;
+      record_error_.clear();
+      ++state_version_;
     } catch (const std::exception& e) {
       std::lock_guard<std::mutex> lock(mu_);
       record_error_ = e.what();
-    }
-    video.reset();
-    film_picture = Image();
-    std::lock_guard<std::mutex> lock(mu_);
-    recording_ = false;
-    ++state_version_;
-  };
-  History picture = [&] {  // the history as a frame shows it (its storage reused)
-    std::lock_guard<std::mutex> lock(mu_);
-    return history_;
-  }();
-  while (true) {
-    std::string status, colormap;
-    OrbitCamera camera;
-    std::uint64_t seq = 0, fresh = 0, step = 0;
-    bool want_record = false;
-    {
-      std::unique_lock<std::mutex> lock(mu_);
-      // Nobody watching, nothing asked: no drawing, no encoding (the first frame is drawn
-      // regardless, for the constructor).
-      auto changed = [&] {
-        const bool watching = viewers_ > 0 || recording_ || record_wanted_ || !frame_;
-        return fresh_wanted_ != fresh_done_ ||
-               (watching && (input_version_ != drawn_input || view_version_ != drawn_view));
-      };
-      render_cv_.wait(lock, [&] {
-        return stop_ || changed() || record_wanted_ != recording_ ||
-               (still_wanted_ != still_done_ && frame_);
-      });
-      if (stop_) break;
-      want_record = record_wanted_;
-      const bool redraw = changed();
-      if (!redraw) publish_still();  // the newest frame drawn is the state now
-      if (!redraw && want_record == recording_) continue;
-      drawn_input = input_version_;
-      drawn_view = view_version_;
-      fresh = fresh_wanted_;
-      picture = history_;
-      status = StatusLocked();
-      colormap = colormap_;
-      camera = camera_;
-      seq = seq_applied_;
-      step = steps_;
-    }
-    if (want_record && !video) {
-      char stamp[32];
-      const std::time_t now = std::time(nullptr);
-      std::tm tm{};
-      localtime_r(&now, &tm);
-      std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
-      const double t = picture.now().t;
-      current = Recording{std::string("live-") + stamp + ".mp4", "", 0, t, t};
-      current.path = options_.out_dir + "/" + current.name;
-      try {
-        std::filesystem::create_directories(options_.out_dir);
-        VideoOptions vo;
-        vo.width = options_.width;
-        vo.height = options_.height;
-        vo.fps = options_.fps;
-        vo.threads = 1;  // the machine's cores belong to the simulation and the viewers
-        video = std::make_unique<VideoEncoder>(current.path, vo);
-        film_first_step = step;
-        std::lock_guard<std::mutex> lock(mu_);
-        recording_ = true;
-        record_error_.clear();
-        ++state_version_;
-      } catch (const std::exception& e) {
-        std::lock_guard<std::mutex> lock(mu_);
-        record_error_ = e.what();
-        record_wanted_ = false;
-        ++state_version_;
-        continue;
-      }
-    } else if (!want_record && video) {
-      finish_recording();
-    }
-    try {
-      const Snapshot& shown = picture.now();
-      const FrameLayout layout = MakeFrameLayout(view_, picture, options_.width, options_.height);
-      const Frame frame = MakeFrame(view_, picture, shown, layout, Colormap(colormap),
-                                    Theme::Dark(), status, &camera);
-      renderer->DrawOnto(frame, &canvas);
-      auto out = std::make_shared<LiveFrame>();
-      out->number = ++number;
-      out->t = shown.t;
-      out->seq = seq;
-      out->message.reserve(LiveFrame::kHeaderBytes + message_bytes + message_bytes / 4);
-      out->message.resize(LiveFrame::kHeaderBytes);
-      for (int i = 0; i < 8; ++i) {  // little-endian, whatever the machine
-        std::uint64_t t_bits;
-        std::memcpy(&t_bits, &out->t, 8);
-        out->message[i] = static_cast<char>((out->number >> (8 * i)) & 0xff);
-        out->message[8 + i] = static_cast<char>((t_bits >> (8 * i)) & 0xff);
-        out->message[16 + i] = static_cast<char>((out->seq >> (8 * i)) & 0xff);
-      }
-      // Only the tiles that changed encoded again, looked for where the renderer drew.
-      jpeg->Encode(canvas, &out->message,
-                   renderer->redrawn() < 1 ? &renderer->redrawn_rects() : nullptr);
-      message_bytes = out->message.size();
-      if (video) {
-        // The steps since the last picture show it (the first picture starts the film); this
-        // one shows from its own step on. A redraw with no step between (a view control) has
-        // its frame written already.
-        const long at = static_cast<long>(step) - static_cast<long>(film_first_step);
-        while (video->frames_added() < at)
-          video->AddFrame(film_picture.rgba.empty() ? canvas : film_picture);
-        if (video->frames_added() == at) video->AddFrame(canvas);
-        film_picture = canvas;  // its storage reused
-      }
-      const double now = Seconds(start_, Clock::now());
-      {
-        std::lock_guard<std::mutex> lock(mu_);
-        frame_ = std::move(out);
-        frame_input_ = drawn_input;
-        frame_view_ = drawn_view;
-        space_view_ = layout.space ? layout.space_view : PixelRect{};
-        if (fresh > fresh_done_) fresh_done_ = fresh;
-        publish_still();
-        frame_times_.push_back(now);
-        while (!frame_times_.empty() && frame_times_.front() < now - 1.0) frame_times_.pop_front();
-        render_error_.clear();
-        frame_cv_.notify_all();
-      }
-    } catch (const std::exception& e) {
-      std::lock_guard<std::mutex> lock(mu_);
-      render_error_ = e.what();
-      if (fresh > fresh_done_) fresh_done_ = fresh;  // the asker gets the newest there is
-      publish_still();
+      record_wanted_ = false;
       ++state_version_;
-      frame_cv_.notify_all();
+      return false;
     }
+  } else if (!work.want_record && recorder->recording()) {
+    FinishRecording(recorder);
   }
-  finish_recording();
+  return true;
+}
+
+void LiveSession::FinishRecording(LiveRecorder* recorder) {
+  if (!recorder->recording()) return;
+  std::uint64_t end_step;
+  double end_t;
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    end_step = record_end_step_;
+    end_t = record_end_t_;
+  }
+  try {
+    const LiveRecorder::Film film = recorder->Finish(end_step, end_t);
+    std::lock_guard<std::mutex> lock(mu_);
+    recordings_.push_back(film);
+    std::printf("live: wrote %s (%ld frames)\n", film.path.c_str(), film.frames);
+    std::fflush(stdout);
+  } catch (const std::exception& e) {
+    std::lock_guard<std::mutex> lock(mu_);
+    record_error_ = e.what();
+  }
+  std::lock_guard<std::mutex> lock(mu_);
+  recording_ = false;
+  ++state_version_;
+}
+
+std::shared_ptr<LiveFrame> LiveSession::PackFrame(Painter* painter, double t,
+                                                  std::uint64_t seq) const {
+  auto out = std::make_shared<LiveFrame>();
+  out->number = ++painter->number;
+  out->t = t;
+  out->seq = seq;
+  out->message.reserve(LiveFrame::kHeaderBytes + painter->message_bytes +
+                       painter->message_bytes / 4);
+  out->message.resize(LiveFrame::kHeaderBytes);
+  for (int i = 0; i < 8; ++i) {  // little-endian, whatever the machine
+    std::uint64_t t_bits;
+    std::memcpy(&t_bits, &out->t, 8);
+    out->message[i] = static_cast<char>((out->number >> (8 * i)) & 0xff);
+    out->message[8 + i] = static_cast<char>((t_bits >> (8 * i)) & 0xff);
+    out->message[16 + i] = static_cast<char>((out->seq >> (8 * i)) & 0xff);
+  }
+  // Only the tiles that changed encoded again, looked for where the renderer drew.
+  const Renderer& r = *painter->renderer;
+  painter->jpeg->Encode(painter->canvas, &out->message,
+                        r.redrawn() < 1 ? &r.redrawn_rects() : nullptr);
+  painter->message_bytes = out->message.size();
+  return out;
+}
+
+void LiveSession::DrawFrame(Painter* painter, LiveRecorder* recorder, const RenderWork& work) {
+  try {
+    const Snapshot& shown = work.picture.now();
+    const FrameLayout layout =
+        MakeFrameLayout(view_, work.picture, options_.width, options_.height);
+    const Frame frame = MakeFrame(view_, work.picture, shown, layout, Colormap(work.colormap),
+                                  Theme::Dark(), work.status, &work.camera);
+    painter->renderer->DrawOnto(frame, &painter->canvas);
+    std::shared_ptr<LiveFrame> out = PackFrame(painter, shown.t, work.seq);
+    recorder->Add(painter->canvas, work.step);
+    PublishFrame(std::move(out), *painter, work, layout.space ? layout.space_view : PixelRect{});
+  } catch (const std::exception& e) {
+    std::lock_guard<std::mutex> lock(mu_);
+    render_error_ = e.what();
+    if (work.fresh > fresh_done_) fresh_done_ = work.fresh;  // the asker gets the newest there is
+    PublishStillLocked(painter->canvas);
+    ++state_version_;
+    frame_cv_.notify_all();
+  }
+}
+
+void LiveSession::PublishFrame(std::shared_ptr<LiveFrame> frame, const Painter& painter,
+                               const RenderWork& work, const PixelRect& space_view) {
+  const double now = Seconds(start_, Clock::now());
+  std::lock_guard<std::mutex> lock(mu_);
+  frame_ = std::move(frame);
+  frame_input_ = work.input;
+  frame_view_ = work.view;
+  space_view_ = space_view;
+  if (work.fresh > fresh_done_) fresh_done_ = work.fresh;
+  PublishStillLocked(painter.canvas);
+  frame_times_.push_back(now);
+  while (!frame_times_.empty() && frame_times_.front() < now - 1.0) frame_times_.pop_front();
+  render_error_.clear();
+  frame_cv_.notify_all();
 }
 
 // ---- The face for the network --------------------------------------------------------------
@@ -632,7 +635,7 @@ std::string LiveSession::StateJsonLocked() const {
     if (wall > 0) realtime = (progress_.back().second - progress_.front().second) / wall;
   }
   Json recordings = Json::array();
-  for (const Recording& r : recordings_)
+  for (const LiveRecorder::Film& r : recordings_)
     recordings.push_back({{"name", r.name}, {"url", "/recordings/" + r.name}, {"frames", r.frames},
                           {"seconds", r.frames / options_.fps},
                           {"t_start", Finite(r.t_start)}, {"t_end", Finite(r.t_end)}});
@@ -787,7 +790,7 @@ void LiveSession::ReadTimeseries(const std::function<bool(const char*, std::size
 
 std::string LiveSession::RecordingPath(const std::string& name) const {
   std::lock_guard<std::mutex> lock(mu_);
-  for (const Recording& r : recordings_)
+  for (const LiveRecorder::Film& r : recordings_)
     if (r.name == name) return r.path;
   return "";
 }

@@ -21,6 +21,7 @@
 
 #include "encode/image.h"
 #include "live/control.h"
+#include "live/live_recorder.h"
 #include "live/live_simulation.h"
 #include "live/row_log.h"
 #include "scene/scene_def.h"
@@ -104,13 +105,23 @@ class LiveSession {
   int height() const { return options_.height; }
 
  private:
-  struct Recording {
-    std::string name, path;
-    long frames = 0;
-    double t_start = 0, t_end = 0;  // the simulated time it covers [s]
-  };
   void SimulationLoop();
+
+  // The render thread: it starts the renderer, waits for work (a viewer, a control, a still
+  // asked for), starts or ends a recording, draws the frame, packs it for the viewers and
+  // publishes it.
+  struct Painter;
+  struct RenderWork;
   void RenderLoop();
+  bool StartRenderer(Painter* painter);  // false: it could not (render_error_ says why)
+  bool WaitForWork(const Painter& painter, RenderWork* work);  // false: the session stops
+  bool UpdateRecording(LiveRecorder* recorder, const RenderWork& work);  // false: no film
+  void FinishRecording(LiveRecorder* recorder);
+  void DrawFrame(Painter* painter, LiveRecorder* recorder, const RenderWork& work);
+  std::shared_ptr<LiveFrame> PackFrame(Painter* painter, double t, std::uint64_t seq) const;
+  void PublishFrame(std::shared_ptr<LiveFrame> frame, const Painter& painter,
+                    const RenderWork& work, const PixelRect& space_view);
+  void PublishStillLocked(const Image& canvas);  // if a still was asked for (lock held)
   // Applies what the controls asked of the simulation; called on its thread, without the lock.
   void ApplyPending();
   // The simulation's state now into the history (and the time series), after a step or a
@@ -186,7 +197,7 @@ class LiveSession {
   // ends at the step (and time) at which it was asked to stop, whatever the render thread drew.
   std::uint64_t steps_ = 0, record_end_step_ = 0;
   double record_end_t_ = 0;
-  std::vector<Recording> recordings_;
+  std::vector<LiveRecorder::Film> recordings_;
   std::string record_error_;
 
   std::chrono::steady_clock::time_point start_;
