@@ -24,7 +24,7 @@
 #include "run/time_grid.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
-#include "../tests/core/scene_line.h"
+#include "../tests/run/scene_line.h"
 
 using namespace cablefilm;
 

@@ -242,12 +242,18 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
     return EndCutShort(scene, runs, rigid.summary.failure, out_dir, nullptr);
   for (std::size_t i = 0; i < elastic.lines.size(); ++i) {
     const RunSummary &e = elastic.lines[i].summary, &r = rigid.lines[i].summary;
+    const std::string of_line = elastic.lines.size() > 1
+                                    ? " of line " + QuoteText(elastic.model.line_names[i])
+                                    : "";
+    if (rigid_scene.lines[i].model != CableModelKind::kInextensible) {
+      std::printf("peak tension%s: elastic %.6g N (t = %.4g s); elastic in both runs (joined to "
+                  "other lines or to a free body)\n",
+                  of_line.c_str(), e.peak, e.peak_t);
+      continue;
+    }
     std::printf("peak tension%s: elastic %.6g N (t = %.4g s), inextensible %.6g N (t = %.4g s), "
                 "ratio inextensible/elastic %.4g\n",
-                elastic.lines.size() > 1
-                    ? (" of line " + QuoteText(elastic.model.line_names[i])).c_str()
-                    : "",
-                e.peak, e.peak_t, r.peak, r.peak_t, r.peak / e.peak);
+                of_line.c_str(), e.peak, e.peak_t, r.peak, r.peak_t, r.peak / e.peak);
   }
   return DrawPictures(scene, runs, film, look, options, out_dir, nullptr);
 }

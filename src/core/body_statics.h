@@ -18,8 +18,8 @@ struct MooringLoad {
   std::vector<State> states;  // the lines' equilibrium
 };
 
-// Body b's pose at the system's equilibrium (Newton's from the scene's positions: the tools
-// take run/system_run.h's SystemStatics, which relaxes where Newton fails).
+// Body b's pose at the system's equilibrium (Newton's from the scene's positions, or the
+// relaxation of options.relaxation where Newton fails: equilibrium.h).
 Vec6 EquilibriumPose(const Model& sys, int b, const EquilibriumOptions& options = {});
 
 // The moorings' load on body b held at `pose` (its statics from options.guess when given: the

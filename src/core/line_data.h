@@ -44,8 +44,8 @@ struct StepOptions {
                                // the stability limit, refined where links snap
                                // (explicit_step.h); 0: the steps asked, as they are; implicit
                                // with explicit_snaps: the same, for the steps through snaps
-  // Implicit, one line: a step that snaps a link taut too fast for it is left to explicit steps
-  // (explicit_snaps.h; needs safety_factor > 0).
+  // Implicit: a step that snaps a link taut too fast for it is left to explicit steps, a
+  // line's or its coupled island's (explicit_snaps.h; needs safety_factor > 0).
   bool explicit_snaps = false;
   // Implicit: the steps, accepted and rejected, that one call of the adaptive loop may take
   // before it gives up with an Error (0: no bound). Work with a bound of its own (the statics'

@@ -352,6 +352,7 @@ struct LiveSession::Painter {
 
 // What one frame draws, taken from the shared state under the lock.
 struct LiveSession::RenderWork {
+  explicit RenderWork(History history) : picture(std::move(history)) {}
   History picture;  // the history as a frame shows it (its storage reused)
   std::string status, colormap;
   OrbitCamera camera;
@@ -364,11 +365,10 @@ void LiveSession::RenderLoop() {
   Painter painter;
   if (!StartRenderer(&painter)) return;
   LiveRecorder recorder;
-  RenderWork work;
-  {
+  RenderWork work = [&] {
     std::lock_guard<std::mutex> lock(mu_);
-    work.picture = history_;
-  }
+    return RenderWork(history_);
+  }();
   while (WaitForWork(painter, &work)) {
     if (!UpdateRecording(&recorder, work)) continue;
     DrawFrame(&painter, &recorder, work);

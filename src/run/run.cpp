@@ -48,7 +48,8 @@ void StartFrom(const SceneDef& scene, Run& run, const std::vector<State>& states
     RunSummary& s = r.summary;
     s.scheme = SchemeName(run.model.lines[i], run.initial.lines[i].options);
     s.tolerance = run.grid.automatic ? run.grid.options.tolerance : 0.0;
-    if (run.grid.automatic && run.grid.options.start_end > 0) {
+    const bool implicit = run.initial.lines[i].options.scheme == Scheme::kImplicit;
+    if (run.grid.automatic && implicit && run.grid.options.start_end > 0) {  // its step's
       s.start_tolerance = run.grid.options.start_tolerance;
       s.start_end = run.grid.options.start_end;
     }

@@ -72,12 +72,16 @@ TimeGrid ChooseTimeGrid(const Model& model, const SimulationDef& sim, double int
     if (model.lines[i].line.total_length() > longest) {
       longest = model.lines[i].line.total_length();
       tolerance = g.options.tolerance;
-      start_tolerance = g.options.start_tolerance;
     }
     start_end = std::max(start_end, g.options.start_end);  // every line's moving ends
   }
   if (any_elastic) grid.options = elastic;
   grid.options.tolerance = tolerance;
+  // The start's tighter tolerance is the implicit step's, from the model's tolerance (the
+  // longest line's, whatever its model: an inextensible line has none of its own).
+  if (grid.options.scheme == Scheme::kImplicit && grid.automatic)
+    start_tolerance =
+        sim.start_tolerance > 0 ? sim.start_tolerance : tolerance / kStartToleranceDivisor;
   grid.options.start_tolerance = start_tolerance;
   grid.options.start_end = start_end;
   return grid;

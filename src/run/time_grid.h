@@ -12,7 +12,7 @@ namespace cablefilm {
 // "auto" and no tolerance is given, as a fraction of the cable's length: case P63's peak tension
 // is then within 0.1 % of the converged value at 60 to 6000 links (see bench_integrators); a
 // 5 m inextensible chain released from a horizontal line is within 0.1 mm of the exact N-link
-// pendulum over its first second (see tests/core/inextensible_test.cpp).
+// pendulum over its first second (see tests/run/inextensible_test.cpp).
 constexpr double kDefaultRelativeTolerance = 1e-6;
 
 // While the motion starts, the implicit scheme's default tolerance is divided by this: case

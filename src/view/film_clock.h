@@ -1,6 +1,5 @@
 #pragma once
-// When a film's frames are and how its second pass steps a run to them, for a line's film
-// (film_pass.h) and a system's (system_film.h) alike. Frames are at k x speed / fps and, when
+// When a film's frames are and how its second pass steps a run to them (film_pass.h). Frames are at k x speed / fps and, when
 // the run's end falls between two, at its end (so the film shows every row). When a frame is
 // a whole number of output rows (the default: a row a frame) the pass steps the run's own grid
 // and repeats the first pass step for step (deterministic: a frame's state is its row's);

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "text_support.h"
+#include "../core/text_support.h"
 
 namespace {
 
@@ -531,7 +531,7 @@ segments = 4
 
 // tests/scenes/moordyn/body_above_anchor.txt: a free body given above the anchor it hangs
 // below. Newton from there cannot balance it (its one link passes through the anchor on the way); the statics' relaxation
-// (system_relaxation.h) finds the equilibrium. Hand values (moordyn_convert_test,
+// (core/relaxation.h) finds the equilibrium. Hand values (moordyn_convert_test,
 // BodyGivenAboveItsAnchorHangsBelowIt): the body weighs (20 - 1025 x 0.004) 9.81 = 155.9 N in
 // water, the rope 4 m of (8 - 1025 pi 0.05^2 / 4) 9.81 = 58.78 N/m, half of it at the body's
 // station: the one link holds T = 155.9 + 2 x 58.78 = 273.5 N, 4 (1 + T / 2000) m long straight

@@ -1,7 +1,8 @@
-// results.nc read back with the netCDF C API (issue 12, part 3): its dimensions, units and
-// attributes, its compression and chunking, and its values against what the run computed and
-// against timeseries.csv and equilibrium.csv; the .partial file of a blown-up run; the names of
-// compare and the removal of earlier results.
+// results.nc as the run command writes it, read back with the netCDF C API: its dimensions,
+// units and attributes, and its values against what the run computed and against
+// timeseries.csv and equilibrium.csv; the .partial file of a blown-up run; the names of compare
+// and the removal of earlier results; the utilisation of a material's breaking load. (Its
+// compression and chunking, the writer's own: tests/io/results_nc_test.cpp.)
 #include <gtest/gtest.h>
 #include <netcdf.h>
 #include <unistd.h>
@@ -19,7 +20,6 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "io/netcdf_support.h"
 #include "io/results_nc.h"
 #include "io/run_report_file.h"
 #include "run/driver.h"
@@ -29,13 +29,15 @@
 #include "core/stability.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
-#include "../core/drive_support.h"
-#include "../core/scene_line.h"
+#include "../run/drive_support.h"
+#include "../run/scene_line.h"
+#include "../io/nc_file.h"
 
 namespace cablefilm {
 namespace {
 
 namespace fs = std::filesystem;
+using cablefilm_test::NcFile;
 
 std::string ReadText(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -73,73 +75,6 @@ std::string Format(const char* format, double v) {
   return buf;
 }
 
-// An open results file, closed at the end of the scope; every call checked.
-class NcFile {
- public:
-  explicit NcFile(const fs::path& p) {
-    const int status = nc_open(p.c_str(), NC_NOWRITE, &id_);
-    if (status != NC_NOERR) throw std::runtime_error(p.string() + ": " + nc_strerror(status));
-  }
-  ~NcFile() { nc_close(id_); }
-  int id() const { return id_; }
-  size_t Dim(const char* name) const {
-    int dim = -1;
-    size_t n = 0;
-    Ok(nc_inq_dimid(id_, name, &dim), name);
-    Ok(nc_inq_dimlen(id_, dim, &n), name);
-    return n;
-  }
-  int Var(const char* name) const {
-    int var = -1;
-    Ok(nc_inq_varid(id_, name, &var), name);
-    return var;
-  }
-  std::string Attr(int var, const char* name) const {
-    size_t n = 0;
-    if (nc_inq_attlen(id_, var, name, &n) != NC_NOERR) return "(no " + std::string(name) + ")";
-    std::string text(n, '\0');
-    Ok(nc_get_att_text(id_, var, name, text.data()), name);
-    return text;
-  }
-  std::string Attr(const char* var, const char* name) const { return Attr(Var(var), name); }
-  std::vector<double> Values(const char* name) const {
-    const int var = Var(name);
-    int ndims = 0;
-    Ok(nc_inq_varndims(id_, var, &ndims), name);
-    std::vector<int> dims(static_cast<size_t>(ndims));
-    Ok(nc_inq_vardimid(id_, var, dims.data()), name);
-    size_t n = 1;
-    for (int d : dims) {
-      size_t len = 0;
-      Ok(nc_inq_dimlen(id_, d, &len), name);
-      n *= len;
-    }
-    std::vector<double> v(n);
-    Ok(nc_get_var_double(id_, var, v.data()), name);
-    return v;
-  }
-  // The dimension names of a variable, comma separated.
-  std::string Dims(const char* name) const {
-    const int var = Var(name);
-    int ndims = 0;
-    Ok(nc_inq_varndims(id_, var, &ndims), name);
-    std::vector<int> dims(static_cast<size_t>(ndims));
-    Ok(nc_inq_vardimid(id_, var, dims.data()), name);
-    std::string out;
-    for (int d : dims) {
-      char dim_name[NC_MAX_NAME + 1];
-      Ok(nc_inq_dimname(id_, d, dim_name), name);
-      out += (out.empty() ? "" : ",") + std::string(dim_name);
-    }
-    return out;
-  }
-
- private:
-  static void Ok(int status, const char* what) {
-    if (status != NC_NOERR) throw std::runtime_error(std::string(what) + ": " + nc_strerror(status));
-  }
-  int id_ = -1;
-};
 
 class NetcdfResultsTest : public ::testing::Test {
  protected:
@@ -338,87 +273,6 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
   // The first row is the initial state.
   for (int j = 0; j <= 60; ++j) EXPECT_EQ(x[static_cast<size_t>(j)], x_eq[static_cast<size_t>(j)]);
   EXPECT_DOUBLE_EQ(s_link[0], 45.72 / 30 / 2);
-}
-
-// The variables over time are deflated (level 1, shuffle) when the rows a complete run writes
-// would make more than kDeflateAboveBytes of them, stored as they are below it; but along the
-// cable only z of a scene in the plane (zeros) is, x, y and tension never (deflating them cost
-// ten times the disk's time). The values read back are the same either way, and each chunk is
-// written as it comes (not kept for the close: the file grows while it is open).
-TEST_F(NetcdfResultsTest, DeflatedOnlyWhenLarge) {
-  const SceneDef scene = LoadScene(ShortP63("1.0"));
-  const cablefilm::Run run = PrepareRun(scene, BuildModel(scene), "elastic", nullptr);
-  const LineModel& line = run.model.lines.front();
-  const int stations = line.stations(), links = line.line.links;
-  const double row_bytes = 8.0 * (3 * stations + links + 7);
-  const long small_rows = 200, large_rows = static_cast<long>(kDeflateAboveBytes / row_bytes) + 1;
-  auto info_of = [](long rows, bool planar = true) {
-    NetcdfResultsInfo info;
-    info.model = "elastic";
-    info.initial_state = "equilibrium";
-    info.rows = rows;
-    info.planar = planar;
-    return info;
-  };
-  EXPECT_FALSE(DeflateResults(info_of(large_rows - 1), row_bytes));
-  EXPECT_TRUE(DeflateResults(info_of(large_rows), row_bytes));
-  EXPECT_TRUE(DeflateResults(info_of(0), row_bytes));  // rows not known
-  std::vector<std::vector<double>> values;
-  // Small; large in the plane; large out of it (the flag told otherwise: the same content).
-  struct Case {
-    const char* name;
-    long rows;
-    bool planar;
-  };
-  for (const Case& c : {Case{"small", small_rows, true}, Case{"large", large_rows, true},
-                        Case{"large_3d", large_rows, false}}) {
-    const long rows = c.rows;
-    State state = run.initial.lines.front().state;
-    Eigen::VectorXd tension = run.initial.lines.front().tension();
-    const fs::path path = dir_ / (std::string(c.name) + ".nc");
-    std::unique_ptr<LineResultsNc> nc = OpenLineResultsNc(path.string(), info_of(rows, c.planar),
-                                                          line, state, tension);
-    std::uintmax_t open_size = 0;
-    for (int r = 0; r < small_rows; ++r) {
-      state.t = 0.1 * r;
-      state.x(1, stations / 2) += 1e-3 * r;
-      tension[r % links] += r;
-      nc->Append(state, tension);
-      if (r == small_rows - 1 && rows == small_rows) {
-        // 3 chunks of 64 rows handed to the writer's thread: written before the close (more
-        // than 2 chunks of x's 64 x 61 doubles in the file), not held in a cache until then.
-        const std::uintmax_t two_chunks = 2 * 64 * 8 * static_cast<std::uintmax_t>(stations);
-        for (int wait = 0; wait < 300 && open_size <= two_chunks; ++wait) {
-          std::error_code ec;
-          for (const auto& e : fs::directory_iterator(dir_))
-            if (e.path().filename().string().rfind(path.filename().string() + ".tmp", 0) == 0)
-              open_size = fs::file_size(e.path(), ec);
-          if (open_size <= two_chunks) ::usleep(10000);
-        }
-        EXPECT_GT(open_size, two_chunks);
-      }
-    }
-    nc->Commit();
-    const NcFile f(path);
-    // Along the cable (x, y, z, tension) only z in the plane; over time alone, every one.
-    const bool large = rows == large_rows;
-    const std::pair<const char*, bool> expected[] = {
-        {"x", false}, {"y", false}, {"z", large && c.planar}, {"tension", false},
-        {"time", large}, {"x_end", large}};
-    for (const auto& [var, deflated] : expected) {
-      int shuffle = -1, deflate = -1, level = -1;
-      ASSERT_EQ(nc_inq_var_deflate(f.id(), f.Var(var), &shuffle, &deflate, &level), NC_NOERR);
-      EXPECT_EQ(deflate, deflated ? 1 : 0) << var << " " << c.name;
-      EXPECT_EQ(shuffle, deflated ? 1 : 0) << var << " " << c.name;
-      if (deflated) {
-        EXPECT_EQ(level, 1) << var;
-      }
-    }
-    EXPECT_EQ(f.Dim("time"), static_cast<size_t>(small_rows));
-    values.push_back(f.Values("y"));
-    values.push_back(f.Values("tension"));
-  }
-  for (size_t k = 2; k < values.size(); ++k) EXPECT_EQ(values[k % 2], values[k]);
 }
 
 // Case P63 turned out of its plane (issue 19): a current of 0.5 m/s along +z (heading 90

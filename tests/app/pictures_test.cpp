@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "text_support.h"
+#include "../core/text_support.h"
 #include "app/commands.h"
 #include "run/max_tension_log.h"
 #include "run/run_summary.h"

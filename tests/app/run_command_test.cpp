@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "text_support.h"
+#include "../core/text_support.h"
 #include "app/commands.h"
 #include "io/run_report_file.h"
 #include "run/driver.h"
@@ -26,8 +26,8 @@
 #include "core/stability.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
-#include "../core/drive_support.h"
-#include "../core/scene_line.h"
+#include "../run/drive_support.h"
+#include "../run/scene_line.h"
 
 namespace cablefilm {
 namespace {

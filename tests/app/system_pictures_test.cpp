@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "text_support.h"
+#include "../core/text_support.h"
 
 namespace cablefilm {
 namespace {

@@ -44,7 +44,7 @@ TEST(BlockTridiagonal, MatchesDenseSolve) {
   }
 }
 
-// A range of the rows factored alone (a system's line interior, system_step.h) and solved for
+// A range of the rows factored alone (a coupled line's interior, coupled_step.h) and solved for
 // kDim right-hand sides at once, against the dense solve of that range's blocks.
 TEST(BlockTridiagonal, RangeWithMatrixRightHandSidesMatchesDenseSolve) {
   std::mt19937 rng(777);

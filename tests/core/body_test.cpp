@@ -1,6 +1,6 @@
 // Rigid bodies of a mooring system (issue 20): a free body in the statics and in the coupled
-// step (system_equilibrium.h, system_step.h), and the quasi-static tools (body_statics.h). The
-// truths: a free point (the system's shared station, checked in system_test.cpp against one
+// step (coupled_equilibrium.h, coupled_step.h), and the quasi-static tools (body_statics.h). The
+// truths: a free point (the system's shared station, checked in coupled_island_test.cpp against one
 // line with a weight), the exact elastic catenary with a grounded part (test_support.h), and
 // the tools' own offset-restoring curve.
 #include <gtest/gtest.h>

@@ -45,7 +45,6 @@
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
-#include "../core/scene_line.h"
 
 namespace cablefilm_fuzz {
 namespace {

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Issue 12 part 4: the Python module `cablefilm` against the command line it shares its code
-with, for scenes of one line ([cable] and [ends]; system_test.py has those of several). Run by
+with, for scenes of one line ([cable] and [ends]; several_lines_test.py has those of several). Run by
 ctest with Debian's Python and PYTHONPATH=<build>/python; CABLEFILM_PROGRAM is the build's
 `cablefilm`, CABLEFILM_SOURCE_DIR the source tree, CABLEFILM_TEST_TMP a folder for what the
 tests write. One class per ctest test: module_test.py -v ReproducesTheCli.
@@ -60,7 +60,7 @@ def assert_same_bits(test, a, b, what):
                      % (what, differ, a.size, np.max(np.abs(a - b)) if a.size else 0))
 
 
-# The keys of a Result's stats, the same for every scene (system_test.py checks a system's).
+# The keys of a Result's stats, the same for every scene (several_lines_test.py checks one of several lines).
 STATS_KEYS = {"integrator", "steps", "rejected", "newton_iterations", "snaps", "unresolved_snaps",
               "snap_windows", "explicit_steps", "equilibrium_iterations", "equilibrium_residual",
               "equilibrium_relaxed"}

@@ -443,7 +443,7 @@ ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
 // A free body given above the anchor it hangs below (MoorDyn runs such a file from where it
 // puts things, TmaxIC = 0): Newton from there cannot balance it (its one link passes through
 // the anchor on the way); the system's damped motion brings it near enough
-// (system_relaxation.h). Hand values: the body weighs (20 - 1025 x 0.004) 9.81 = 155.9 N in
+// (core/relaxation.h). Hand values: the body weighs (20 - 1025 x 0.004) 9.81 = 155.9 N in
 // water, the line (4 m of 8 kg/m, d 0.05 m) (8 - 1025 pi 0.05^2 / 4) 9.81 = 58.78 N/m, half of
 // it lumped at the body's station: the one link holds T = 155.9 + 2 x 58.78 = 273.5 N and is
 // 4 (1 + T / EA) = 4.547 m long (EA = 2000 N), straight down from the anchor.

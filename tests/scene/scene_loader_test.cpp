@@ -17,7 +17,7 @@
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "core/inputs.h"
-#include "../core/scene_line.h"
+#include "line_of.h"
 
 namespace cablefilm {
 namespace {
@@ -1063,7 +1063,7 @@ TEST(SceneLoader, SystemErrors) {
   ExpectError(SystemWith("mass = 3000.0", "mass = 3000.0\nforce = [1.0, \"x\"]"), "point[1].force",
               {"expected"});
   // A line's model: elastic or inextensible (the model refuses an inextensible line joined to
-  // others: tests/core/system_test.cpp).
+  // others: tests/core/coupled_island_test.cpp).
   ExpectError(SystemWith("name = \"lower\"", "name = \"lower\"\nmodel = \"rigid\""),
               "line[0].model", {"elastic", "inextensible"});
   ExpectError(SystemWith("segments = 18", "segments = 0"), "line[1].section[0].segments",

@@ -152,7 +152,7 @@ def main():
         peak = max(float(r["tension_max"]) for r in single)
         # The same equations stepped with the same steps: they differ by Newton's tolerance
         # (1e-9 of a 2.5 m link per step) times EA / l = 1.6e8 N/m, 0.4 N, 5e-6 of the 85 kN
-        # peak (tests/core/system_test.cpp); positions by 1e-6 m.
+        # peak (tests/core/coupled_island_test.cpp); positions by 1e-6 m.
         worst_t = worst_x = 0.0
         for s, lo, up in zip(single, lower, upper):
             worst_t = max(worst_t, abs(float(s["tension_start"]) - float(lo["tension_start"])),

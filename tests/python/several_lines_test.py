@@ -3,7 +3,7 @@
 against the command line it shares its code with: the same Result and Equilibrium as a single
 line's, each line a Line. Run by ctest as module_test.py is (PYTHONPATH,
 CABLEFILM_PROGRAM, CABLEFILM_SOURCE_DIR, CABLEFILM_TEST_TMP); one class per ctest test:
-system_test.py -v SystemRun.
+several_lines_test.py -v RunOfLines.
 
 The truths are the program's files, which the rest of the suite checks: each line's
 lines/<name>/results.nc (bit for bit), timeseries.csv and equilibrium.csv, points.csv and
@@ -87,7 +87,7 @@ def assert_same_bits(test, a, b, what):
     test.assertEqual(differ, 0, "%s: %d of %d doubles differ" % (what, differ, a.size))
 
 
-class SystemRun(unittest.TestCase):
+class RunOfLines(unittest.TestCase):
     """cablefilm.run of several lines: every line's rows, the points and the body, as the files
     of `cablefilm run` hold them."""
 
@@ -195,7 +195,7 @@ class SystemRun(unittest.TestCase):
             force[0, 0, 0] = 1.0
 
 
-class SystemEquilibrium(unittest.TestCase):
+class EquilibriumOfLines(unittest.TestCase):
     """cablefilm.equilibrium of several lines: each line's equilibrium.csv, and the first row of
     points.csv and body.csv with the body at its equilibrium (no initial offset)."""
 
@@ -369,7 +369,7 @@ class BodyTools(unittest.TestCase):
             cablefilm.offset_curve(PLATFORM, offsets=[float("nan")])
 
 
-class SystemScenes(unittest.TestCase):
+class ScenesOfLines(unittest.TestCase):
     """The Scene of several lines: its names, its keys read and set as a line's are, clear
     errors."""
 

@@ -26,7 +26,7 @@
 #include "core/stability.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
-#include "test_support.h"
+#include "../core/test_support.h"
 #include "drive_support.h"
 #include "scene_line.h"
 

@@ -13,7 +13,7 @@
 #include "core/step.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
-#include "test_support.h"
+#include "../core/test_support.h"
 #include "scene_line.h"
 
 namespace cablefilm {

@@ -8,38 +8,26 @@
 //  - the elastic model tending to the inextensible one as 1/EA (static P63);
 //  - link lengths held over the 60 s run of P63 with its moving fairlead;
 //  - the equilibrium between two fixed points against the exact discrete chain (closed form per
-//    link, two unknowns) and the continuous inextensible catenary;
-//  - the `cablefilm compare` command's files.
+//    link, two unknowns) and the continuous inextensible catenary.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
-#include "app/commands.h"
 #include "run/driver.h"
 #include "run/initial_state.h"
 #include "run/time_grid.h"
 #include "core/line_equilibrium.h"
 #include "core/forces.h"
 #include "core/inextensible_step.h"
-#include "core/line_equilibrium.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
 #include "drive_support.h"
 #include "scene_line.h"
-
-#ifndef CABLEFILM_TEST_RENDER
-#define CABLEFILM_TEST_RENDER 0
-#endif
 
 namespace cablefilm {
 namespace {
@@ -758,52 +746,6 @@ TEST(InextensibleEquilibrium, EndsFurtherApartThanTheCableThrow) {
   // Just shorter than the cable is fine (and lies on the chord's rest lengths).
   const LineModel ok = Chain(10, 10, 1, EndMotion::Fixed(InPlane(0, 0)), EndMotion::Fixed(InPlane(6, 7.9)));
   EXPECT_NO_THROW(SolveInextensibleEquilibrium(ok, nullptr));
-}
-
-// ---------------------------------------------------------------------------------------------
-// Rows (after the header) of a CSV file; every field must parse as a finite number.
-long CountFiniteRows(const std::string& path, bool* all_finite) {
-  std::ifstream in(path);
-  std::string line;
-  long rows = 0;
-  *all_finite = true;
-  if (!std::getline(in, line)) return -1;  // header
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    std::stringstream ss(line);
-    std::string field;
-    while (std::getline(ss, field, ',')) {
-      char* end = nullptr;
-      const double v = std::strtod(field.c_str(), &end);
-      if (end == field.c_str() || !std::isfinite(v)) *all_finite = false;
-    }
-    ++rows;
-  }
-  return rows;
-}
-
-TEST(InextensibleCompare, CompareCommandWritesBothSeries) {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() /
-                       ("cablefilm_inextensible_compare_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  RunOptions o;
-  o.out_dir = dir.string();
-  o.film = 0;
-  ASSERT_EQ(CompareCommand(kP63, o), 0);
-  const SceneDef scene = LoadScene(kP63);
-  const long expected =
-      static_cast<long>(std::floor(scene.simulation.duration / scene.output.interval + 1e-9)) + 1;
-  bool finite_el = false, finite_in = false;
-  const long el = CountFiniteRows((dir / "timeseries.csv").string(), &finite_el);
-  const long in = CountFiniteRows((dir / "timeseries_inextensible.csv").string(), &finite_in);
-  EXPECT_EQ(el, expected);
-  EXPECT_EQ(in, el);
-  EXPECT_TRUE(finite_el);
-  EXPECT_TRUE(finite_in);
-  // The figure needs the renderer (CABLEFILM_RENDER); without it nothing pretends to write it.
-  EXPECT_EQ(fs::exists(dir / "max_tension.png"), CABLEFILM_TEST_RENDER != 0);
-  fs::remove_all(dir);
 }
 
 }  // namespace

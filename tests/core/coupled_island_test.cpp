@@ -1,6 +1,7 @@
-// Systems of lines (issue 20): lines joined at free points, stepped together through the Schur
-// complement on the shared stations (system_step.h), in equilibrium by Newton on the shared
-// points (system_equilibrium.h). The truths: the same system written as one line with a weight
+// Coupled islands: lines joined at free points, stepped together through the Schur complement
+// on the shared stations (coupled_step.h) or by the coupled explicit scheme
+// (coupled_explicit_step.h), in equilibrium by Newton on the shared points
+// (coupled_equilibrium.h). The truths: the same system written as one line with a weight
 // at the junction (a single line's model and step, which the rest of the suite checks against
 // closed forms and MoorDyn), and the exact elastic catenary (test_support.h).
 #include <gtest/gtest.h>
@@ -162,11 +163,11 @@ void ExpectClumpEquilibriumIsTheLine(bool axial) {
   EXPECT_GT(std::abs(states[0].x(2, 24) - 0.0), 0.5);  // the current bends it out of z = 0
 }
 
-TEST(SystemEquilibrium, ClumpJunctionIsTheLineWithAWeight) { ExpectClumpEquilibriumIsTheLine(false); }
+TEST(CoupledEquilibrium, ClumpJunctionIsTheLineWithAWeight) { ExpectClumpEquilibriumIsTheLine(false); }
 
 // With the tangential drag and added mass (issue 21) on both lines: the shared point's copies
 // carry each line's half link of them, as the one line's station does.
-TEST(SystemEquilibrium, ClumpJunctionWithTangentialTermsIsTheLineWithAWeight) {
+TEST(CoupledEquilibrium, ClumpJunctionWithTangentialTermsIsTheLineWithAWeight) {
   ExpectClumpEquilibriumIsTheLine(true);
 }
 
@@ -212,13 +213,13 @@ void ExpectClumpDynamicsIsTheLine(bool axial) {
   EXPECT_EQ(ModelStepStats(sys, sd).steps, one.stats.steps);
 }
 
-TEST(SystemDynamics, ClumpJunctionMovesAsTheLineWithAWeight) { ExpectClumpDynamicsIsTheLine(false); }
+TEST(CoupledDynamics, ClumpJunctionMovesAsTheLineWithAWeight) { ExpectClumpDynamicsIsTheLine(false); }
 
 // The explicit scheme on the same system and line, with the same fixed steps (a fifth of the
 // stability limit: velocity Verlet on each): the system's shared station accelerates by the sum
 // of its two copies' rows, the line's station by its own, the same sums in another order.
 // They differ by round-off grown by the motion (measured below 1e-9 m over 10 s).
-TEST(SystemDynamics, ExplicitClumpJunctionMovesAsTheLineWithAWeight) {
+TEST(CoupledDynamics, ExplicitClumpJunctionMovesAsTheLineWithAWeight) {
   const Model sys = ClumpSystem();
   const LineModel line = ClumpLine();
   const std::vector<State> rest = SolveEquilibrium(sys);
@@ -320,7 +321,7 @@ SystemEnergyRun RunReleasedSystem(double dt_fraction) {
   return r;
 }
 
-TEST(SystemDynamics, ExplicitSystemConservesEnergyToSecondOrder) {
+TEST(CoupledDynamics, ExplicitSystemConservesEnergyToSecondOrder) {
   const SystemEnergyRun a = RunReleasedSystem(0.2), b = RunReleasedSystem(0.1);
   const double ratio = a.max_error / b.max_error;
   std::printf("[ energy ] explicit system in vacuum: max |E - E0| %.3e J (0.2 x limit), %.3e J "
@@ -336,11 +337,11 @@ TEST(SystemDynamics, ExplicitSystemConservesEnergyToSecondOrder) {
     EXPECT_LT(std::abs(r->last_mean - r->first_mean), 0.2 * r->max_error);
 }
 
-TEST(SystemDynamics, ClumpJunctionWithTangentialTermsMovesAsTheLineWithAWeight) {
+TEST(CoupledDynamics, ClumpJunctionWithTangentialTermsMovesAsTheLineWithAWeight) {
   ExpectClumpDynamicsIsTheLine(true);
 }
 
-TEST(SystemDynamics, ABlowUpNamesItsLine) {
+TEST(CoupledDynamics, ABlowUpNamesItsLine) {
   // The fairlead shaken far faster than any step can follow: the step falls below its floor
   // and the error says so, naming the line that holds the most stretched link.
   std::vector<PointSpec> points(3);
@@ -439,7 +440,7 @@ struct Spread {
   }
 };
 
-TEST(SystemEquilibrium, SpreadMooringOffsetConvergesToTheExactCatenaries) {
+TEST(CoupledEquilibrium, SpreadMooringOffsetConvergesToTheExactCatenaries) {
   const Spread spread;
   const Vec exact = spread.ExactBuoy();
   double error[2];
@@ -474,7 +475,7 @@ TEST(SystemEquilibrium, SpreadMooringOffsetConvergesToTheExactCatenaries) {
 // The held lines' work is counted (each line solve's Newton iterations times its stations)
 // and bounded: a system whose statics would take more gives up with a message that says so,
 // in place of running for minutes (a fuzzed file's 100 000-link tether did).
-TEST(SystemEquilibrium, HeldLinesWorkIsCountedAndBounded) {
+TEST(CoupledEquilibrium, HeldLinesWorkIsCountedAndBounded) {
   const Spread spread;
   const Model sys = spread.System(35);
   std::vector<double> fractions;

@@ -2,7 +2,7 @@
 // A snap with a closed form (snap_monitor_test, explicit_snaps_test).
 #include <cmath>
 
-#include "test_support.h"
+#include "../core/test_support.h"
 
 namespace cablefilm::testing {
 

@@ -7,7 +7,7 @@
 #include "core/cancel.h"
 #include "core/step.h"
 #include "run/time_grid.h"
-#include "test_support.h"
+#include "../core/test_support.h"
 
 namespace cablefilm::testing {
 

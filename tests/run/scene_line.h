@@ -5,11 +5,9 @@
 #include "run/initial_state.h"
 #include "run/time_grid.h"
 #include "scene/build_model.h"
+#include "../scene/line_of.h"
 
 namespace cablefilm {
-
-// The one line of a scene of one line, as BuildModel makes it.
-inline LineModel LineOf(const SceneDef& scene) { return BuildModel(scene).lines.front(); }
 
 // A scene of one line's initial state as a run makes it (MakeInitialState), its line's statics'
 // report in `report`.

@@ -15,7 +15,7 @@
 #include "core/snap_monitor.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
-#include "test_support.h"
+#include "../core/test_support.h"
 #include "drive_support.h"
 #include "one_link_snap.h"
 #include "scene_line.h"

@@ -11,7 +11,7 @@
 #include "run/initial_state.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
-#include "test_support.h"
+#include "../core/test_support.h"
 #include "scene_line.h"
 
 namespace cablefilm {

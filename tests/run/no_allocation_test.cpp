@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/line_equilibrium.h"
-#include "test_support.h"
+#include "../core/test_support.h"
 #include "core/equilibrium.h"
 #include "core/explicit_step.h"
 #include "core/stability.h"

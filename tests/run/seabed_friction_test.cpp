@@ -25,7 +25,7 @@
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
-#include "test_support.h"
+#include "../core/test_support.h"
 #include "scene_line.h"
 
 namespace cablefilm {

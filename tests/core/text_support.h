@@ -1,5 +1,5 @@
 #pragma once
-// Small text helpers the app tests share: a whole file as a string, and a checked replacement
+// Small text helpers the tests share: a whole file as a string, and a checked replacement
 // (a scene text edited for one test case must contain what the test means to change).
 #include <filesystem>
 #include <fstream>
