@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <limits>
 
 #include "core/cancel.h"
 #include "core/coupled_step.h"
@@ -118,18 +119,10 @@ void StepCoupledExplicit(const Model& model, int k, Data& d, const Inputs& in, d
   const IslandView v(model, k, d);
   IslandData& id = v.id;
   const StepOptions& o = v.L(0).options;
-  // The least subdivision that keeps substeps below safety x the limit (a step asked just
-  // above it by round-off is not cut); fixed steps: the step asked.
-  int stable_level = 0;
-  while (o.safety_factor > 0 && stable_level < kMaxRefinement &&
-         dt / static_cast<double>(1L << stable_level) > id.max_substep * (1 + 1e-9))
-    ++stable_level;
-  if (id.refinement < stable_level) {
-    id.refinement = stable_level;
-  } else if (id.refinement > stable_level && id.quiet_time >= kQuietSteps * dt) {
-    --id.refinement;
-    id.quiet_time = 0;
-  }
+  // Fixed steps (no safety factor): the step asked, as it is.
+  const double max_substep =
+      o.safety_factor > 0 ? id.max_substep : std::numeric_limits<double>::infinity();
+  SettleRefinement(dt, max_substep, &id.refinement, &id.quiet_time);
   const double t0 = id.t;
   long done = 0;  // substeps of dt / 2^refinement taken
   while (done < (1L << id.refinement)) {

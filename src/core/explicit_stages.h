@@ -25,4 +25,10 @@ void MoveToDrift(const LineModel& m, LineData& d, const Inputs& in, double h);
 // friction anchors moved, the clock and the statistics advanced, the snaps observed.
 void FinishDrift(const LineModel& m, LineData& d, double h);
 
+// The refinement k of the steps asked (each cut into 2^k substeps) for a step of dt [s]: raised
+// at once to the least that keeps the substeps at most max_substep [s] (a step asked just above
+// it by round-off is not cut; an infinite max_substep asks for none), lowered by one after
+// kQuietSteps steps asked without a slack-taut change (quiet_time [s], reset then).
+void SettleRefinement(double dt, double max_substep, int* refinement, double* quiet_time);
+
 }  // namespace cablefilm

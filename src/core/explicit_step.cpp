@@ -92,6 +92,19 @@ void MoveToDrift(const LineModel& m, LineData& d, const Inputs& in, double h) {
   ComputeAccelerations(m, in, d.water, t1, s.x, w.v_pred, d.forces, d.a);
 }
 
+void SettleRefinement(double dt, double max_substep, int* refinement, double* quiet_time) {
+  int stable_level = 0;
+  while (stable_level < kMaxRefinement &&
+         dt / static_cast<double>(1L << stable_level) > max_substep * (1 + 1e-9))
+    ++stable_level;
+  if (*refinement < stable_level) {
+    *refinement = stable_level;
+  } else if (*refinement > stable_level && *quiet_time >= kQuietSteps * dt) {
+    --*refinement;
+    *quiet_time = 0;
+  }
+}
+
 void FinishDrift(const LineModel& m, LineData& d, double h) {
   State& s = d.state;
   const double t1 = s.t + h;
@@ -146,19 +159,7 @@ void ExplicitStep(const LineModel& m, LineData& d, const Inputs& in, double dt) 
     CheckStateSane(m, s, d.forces.geometry.length);
     return;
   }
-  const double max_substep = d.scratch.max_substep;
-  // The least subdivision that keeps substeps below safety x the limit (a step asked just
-  // above it by round-off is not cut).
-  int stable_level = 0;
-  while (stable_level < kMaxRefinement &&
-         dt / static_cast<double>(1L << stable_level) > max_substep * (1 + 1e-9))
-    ++stable_level;
-  if (d.refinement < stable_level) {
-    d.refinement = stable_level;
-  } else if (d.refinement > stable_level && d.quiet_time >= kQuietSteps * dt) {
-    --d.refinement;
-    d.quiet_time = 0;
-  }
+  SettleRefinement(dt, d.scratch.max_substep, &d.refinement, &d.quiet_time);
   const double t0 = s.t;
   long done = 0;  // substeps of dt / 2^refinement taken
   while (done < (1L << d.refinement)) {

@@ -2,7 +2,7 @@
 // body.csv of a system with bodies: t,body,x,y,z,rx,ry,rz,fx,fy,fz,mx,my,mz, one row per body
 // per output time: its pose (its reference point [m], its angles about x, then y, then z
 // [deg]) and the load its lines exert on it (force [N], moment about the reference point
-// [N m]; core/coupled_step.h, PointLoads); written whole or not at all.
+// [N m]; core/point_loads.h, PointLoads); written whole or not at all.
 #include <string>
 
 #include "core/point_loads.h"

@@ -1,6 +1,6 @@
 #pragma once
 // points.csv of a system of lines: t,point,x,y,z,fx,fy,fz, one row per point per output time,
-// the point's position [m] and the force its lines exert on it [N] (core/coupled_step.h,
+// the point's position [m] and the force its lines exert on it [N] (core/point_loads.h,
 // PointLoads); written whole or not at all.
 #include <string>
 
