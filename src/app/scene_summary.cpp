@@ -257,21 +257,22 @@ void PrintInitialState(const SceneDef& scene, const Run& run, const std::string&
   const Model& model = run.model;
   const bool straight = scene.initial == InitialStateKind::kStraight;
   if (model.lines.size() == 1 && !model.islands.front().coupled()) {  // a line alone
-    const LineEquilibriumReport& line = eq.lines.front();
     const Eigen::VectorXd& T0 = run.initial.lines.front().tension();
     const int last = model.lines.front().line.links - 1;
-    if (straight)
+    if (straight) {  // no statics, no report
       std::printf("initial state: the straight chord at rest (not an equilibrium), written to "
                   "equilibrium%s.csv; tension %.6g N at the start, %.6g N at the end\n",
                   suffix.c_str(), T0[0], T0[last]);
-    else
-      std::printf("equilibrium: %d Newton iterations%s, residual %.3g N (of %.4g N), %.2f ms; "
-                  "tension %.6g N at the start, %.6g N at the end\n",
-                  line.iterations,
-                  line.fallback ? (" (" + std::to_string(line.fallback_iterations) +
-                                   " pseudo-transient after Newton stalled)").c_str()
-                                : "",
-                  line.residual, line.force_scale, run.equilibrium_ms, T0[0], T0[last]);
+      return;
+    }
+    const LineEquilibriumReport& line = eq.lines.front();
+    std::printf("equilibrium: %d Newton iterations%s, residual %.3g N (of %.4g N), %.2f ms; "
+                "tension %.6g N at the start, %.6g N at the end\n",
+                line.iterations,
+                line.fallback ? (" (" + std::to_string(line.fallback_iterations) +
+                                 " pseudo-transient after Newton stalled)").c_str()
+                              : "",
+                line.residual, line.force_scale, run.equilibrium_ms, T0[0], T0[last]);
     return;
   }
   if (straight) {

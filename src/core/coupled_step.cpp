@@ -538,14 +538,9 @@ void EnterCoupledExplicitWindow(const Model& model, int k, Data& d, const Inputs
   }
   for (int b = 0; b < v.bodies(); ++b) id.body_rates[b] = v.body(b).v;
   CoupleAccelerations(model, k, d, id.t, id.body_rates);
-  id.explicit_until = id.t + h + id.snap_window;
-  // What the island has cost so far against what the explicit scheme would have, in explicit
-  // steps (explicit_snaps.cpp, EnterExplicitWindow): when snaps come so often that the windows
-  // and the implicit steps between them cost more, the explicit steps go on to the run's end.
-  const double explicit_alone = (id.t - id.start_time) / id.max_substep;
-  const double spent = static_cast<double>(id.stats.explicit_steps) +
-                       kNewtonIterationCost * static_cast<double>(v.L(0).stats.newton_iterations);
-  if (spent > explicit_alone) id.explicit_until = std::numeric_limits<double>::infinity();
+  id.explicit_until =
+      ExplicitWindowEnd(id.t, h, id.snap_window, id.start_time, id.max_substep,
+                        id.stats.explicit_steps, v.L(0).stats.newton_iterations);
   id.refinement = 0;
   id.quiet_time = 0;
   ++id.stats.snap_windows;
@@ -555,23 +550,14 @@ void StepCoupledExplicitWindow(const Model& model, int k, Data& d, const Inputs&
                                double t_end) {
   const IslandView v(model, k, d);
   IslandData& id = v.id;
-  // A window ending a rounding short of t_end is taken to it (no sliver of an implicit step).
-  if (id.explicit_until < t_end && t_end - id.explicit_until < 1e-9 * id.snap_window)
-    id.explicit_until = t_end;
-  const double stop = std::min(t_end, id.explicit_until);
-  const double span = stop - id.t;
+  const ExplicitWindowSpan w =
+      WindowSpan(id.t, t_end, id.snap_window, id.max_substep, &id.explicit_until);
   const long before = id.stats.steps;
-  if (span > 0) {
-    // Steps as the explicit scheme's time grid cuts an interval: equal ones of at most its
-    // substep (StepCoupledExplicit refines them where links go slack or taut).
-    const double substeps = std::ceil(span / id.max_substep - 1e-9);
-    const long pieces = std::max(1L, static_cast<long>(substeps));
-    const double t0 = id.t, h = span / static_cast<double>(pieces);
-    for (long i = 1; i <= pieces; ++i) {
-      StepCoupledExplicit(model, k, d, in, h);
-      id.t = i == pieces ? stop : t0 + static_cast<double>(i) * h;
-      for (int l = 0; l < v.lines(); ++l) v.L(l).state.t = id.t;
-    }
+  const double t0 = id.t;
+  for (long i = 1; i <= w.pieces; ++i) {  // refined where links go slack or taut
+    StepCoupledExplicit(model, k, d, in, w.h);
+    id.t = i == w.pieces ? w.stop : t0 + static_cast<double>(i) * w.h;
+    for (int l = 0; l < v.lines(); ++l) v.L(l).state.t = id.t;
   }
   id.stats.explicit_steps += id.stats.steps - before;
   if (id.t < id.explicit_until) return;

@@ -46,20 +46,37 @@ bool SnapsUnresolved(const LineModel& m, const LineData& d, double h) {
   return false;
 }
 
+double ExplicitWindowEnd(double t, double h, double snap_window, double start_time,
+                         double max_substep, long explicit_steps, long newton_iterations) {
+  const double explicit_alone = (t - start_time) / max_substep;
+  const double spent = static_cast<double>(explicit_steps) +
+                       kNewtonIterationCost * static_cast<double>(newton_iterations);
+  if (spent > explicit_alone) return std::numeric_limits<double>::infinity();
+  return t + h + snap_window;
+}
+
+ExplicitWindowSpan WindowSpan(double t, double t_end, double snap_window, double max_substep,
+                              double* explicit_until) {
+  if (*explicit_until < t_end && t_end - *explicit_until < 1e-9 * snap_window)
+    *explicit_until = t_end;
+  ExplicitWindowSpan w;
+  w.stop = std::min(t_end, *explicit_until);
+  const double span = w.stop - t;
+  if (!(span > 0)) return w;
+  const double substeps = std::ceil(span / max_substep - 1e-9);
+  w.pieces = std::max(1L, static_cast<long>(substeps));
+  w.h = span / static_cast<double>(w.pieces);
+  return w;
+}
+
 void EnterExplicitWindow(const LineModel& m, LineData& d, const Inputs& in, double h) {
   State& s = d.state;
   // The forces of the state (the trial step left its own in d.forces), and its accelerations,
   // which the explicit step carries.
   ComputeAccelerations(m, in, d.water, s.t, s.x, s.v, d.forces, d.a);
-  d.explicit_until = s.t + h + d.scratch.snap_window;
-  // What the run has cost so far against what the explicit scheme would have, in explicit
-  // steps: when snaps come so often that the windows and the implicit steps between them cost
-  // more, the explicit steps go on to the run's end (never dearer than the explicit scheme by
-  // more than the run's cost up to here).
-  const double explicit_alone = (s.t - d.start_time) / d.scratch.max_substep;
-  const double spent = static_cast<double>(d.stats.explicit_steps) +
-                       kNewtonIterationCost * static_cast<double>(d.stats.newton_iterations);
-  if (spent > explicit_alone) d.explicit_until = std::numeric_limits<double>::infinity();
+  d.explicit_until =
+      ExplicitWindowEnd(s.t, h, d.scratch.snap_window, d.start_time, d.scratch.max_substep,
+                        d.stats.explicit_steps, d.stats.newton_iterations);
   d.refinement = 0;
   d.quiet_time = 0;
   ++d.stats.snap_windows;
@@ -67,22 +84,13 @@ void EnterExplicitWindow(const LineModel& m, LineData& d, const Inputs& in, doub
 
 void StepExplicitWindow(const LineModel& m, LineData& d, const Inputs& in, double t_end) {
   State& s = d.state;
-  // A window ending a rounding short of t_end is taken to it (no sliver of an implicit step).
-  if (d.explicit_until < t_end && t_end - d.explicit_until < 1e-9 * d.scratch.snap_window)
-    d.explicit_until = t_end;
-  const double stop = std::min(t_end, d.explicit_until);
-  const double span = stop - s.t;
+  const ExplicitWindowSpan w =
+      WindowSpan(s.t, t_end, d.scratch.snap_window, d.scratch.max_substep, &d.explicit_until);
   const long before = d.stats.steps;
-  if (span > 0) {
-    // Steps as the explicit scheme's time grid cuts an interval: equal ones of at most its
-    // substep (ExplicitStep refines them where links go slack or taut).
-    const double substeps = std::ceil(span / d.scratch.max_substep - 1e-9);
-    const long pieces = std::max(1L, static_cast<long>(substeps));
-    const double t0 = s.t, h = span / static_cast<double>(pieces);
-    for (long i = 1; i <= pieces; ++i) {
-      ExplicitStep(m, d, in, h);
-      s.t = i == pieces ? stop : t0 + static_cast<double>(i) * h;
-    }
+  const double t0 = s.t;
+  for (long i = 1; i <= w.pieces; ++i) {  // ExplicitStep refines where links go slack or taut
+    ExplicitStep(m, d, in, w.h);
+    s.t = i == w.pieces ? w.stop : t0 + static_cast<double>(i) * w.h;
   }
   d.stats.explicit_steps += d.stats.steps - before;
   if (s.t < d.explicit_until) return;

@@ -50,6 +50,27 @@ bool StepsThroughSnaps(const LineData& d);
 // above kSnapLoadFraction of the largest tension.
 bool SnapsUnresolved(const LineModel& m, const LineData& d, double h);
 
+// When an explicit window opened at t [s] over the step of h [s] left to it ends: SnapWindow
+// [s] after that step (the snap fell somewhere within it); or never (infinity) once the windows
+// and the implicit steps so far have cost more, in explicit steps (Newton's iterations at
+// kNewtonIterationCost each), than the explicit scheme alone would have since start_time with
+// steps of max_substep [s]: a run never dearer than the explicit scheme by more than its cost
+// up to here. A line's and a coupled island's alike.
+double ExplicitWindowEnd(double t, double h, double snap_window, double start_time,
+                         double max_substep, long explicit_steps, long newton_iterations);
+
+// The explicit steps of a window from t towards t_end [s]: up to the window's end or t_end,
+// whichever is first (a window ending a rounding short of t_end is taken to it, no sliver of
+// an implicit step: *explicit_until moved there), in `pieces` equal steps `h` of at most
+// max_substep, as the explicit scheme's time grid cuts an interval.
+struct ExplicitWindowSpan {
+  double stop = 0;  // [s]
+  long pieces = 0;  // 0: nothing to step
+  double h = 0;     // [s]
+};
+ExplicitWindowSpan WindowSpan(double t, double t_end, double snap_window, double max_substep,
+                              double* explicit_until);
+
 // Leaves the implicit step of h [s] that snapped: the state's forces and (true) accelerations
 // computed, the explicit window opened (LineData::explicit_until) over that step and SnapWindow
 // after it (the snap fell somewhere within the step).

@@ -86,7 +86,7 @@ Snapshot SystemSnapshot(const SceneView& scene, double t) {
   return s;
 }
 
-class SystemFrameTest : public ::testing::Test {
+class SeveralLinesFrame : public ::testing::Test {
  protected:
   static constexpr int kW = 1920, kH = 1080;  // the design size: the thinnest curve 1.8 px
   void SetUp() override {
@@ -133,7 +133,7 @@ class SystemFrameTest : public ::testing::Test {
   Image image_;
 };
 
-TEST_F(SystemFrameTest, EachPlotHasACurveALineNamedInItsColour) {
+TEST_F(SeveralLinesFrame, EachPlotHasACurveALineNamedInItsColour) {
   // The legends: a named entry per line, in the line's colour, the two colours apart.
   const PanelHead tension = TensionPanelHead(scene_, true, "", th_);
   const PanelHead time = TimePanelHead(scene_, true, th_);
@@ -169,7 +169,7 @@ TEST_F(SystemFrameTest, EachPlotHasACurveALineNamedInItsColour) {
   }
 }
 
-TEST_F(SystemFrameTest, EveryLineIsDrawnInFullWithItsEndsAndIsNamed) {
+TEST_F(SeveralLinesFrame, EveryLineIsDrawnInFullWithItsEndsAndIsNamed) {
   // In the plan (x across, z down): each line at full width in its tension colour (an overlay
   // would be 0.6 of it wide, in a dotted rim), and a fixed point's square at each anchor (an
   // overlay's ends are not marked).
@@ -213,7 +213,7 @@ TEST_F(SystemFrameTest, EveryLineIsDrawnInFullWithItsEndsAndIsNamed) {
 // (two points give its place at its rest turn, none here): the plan and the elevation draw its
 // edges (in the outline's colour, th.text_dim) instead of today's outline, the segment through
 // the fairleads at x = 20; the 3D view draws them as tubes.
-TEST(SystemFrameBody, ABoxIsDrawnByItsEdgesInsteadOfTheOutline) {
+TEST(SeveralLinesFrameBody, ABoxIsDrawnByItsEdgesInsteadOfTheOutline) {
   constexpr int kW = 1920, kH = 1080;
   const Colormap map("viridis");
   const Theme th = Theme::Dark();
@@ -281,7 +281,7 @@ TEST(SystemFrameBody, ABoxIsDrawnByItsEdgesInsteadOfTheOutline) {
   EXPECT_GT(lit(image, L), lit(outline, L0) + 200);
 }
 
-TEST(SystemScene, PointsMustBeOnStationsOfTheirLines) {
+TEST(SeveralLinesScene, PointsMustBeOnStationsOfTheirLines) {
   SceneView scene = SystemScene();
   scene.points.push_back({"lost", 1, kLinks + 1});
   EXPECT_THROW(CheckSceneView(scene), Error);
@@ -291,7 +291,7 @@ TEST(SystemScene, PointsMustBeOnStationsOfTheirLines) {
 
 // film.view = "auto": a system is drawn in space when a point leaves the plane z = 0 (its line
 // ends are there), in the plane when every point, the current and the waves stay in it.
-TEST(SystemScene, AutoViewFollowsThePoints) {
+TEST(SeveralLinesScene, AutoViewFollowsThePoints) {
   const std::string path =
       std::string(CABLEFILM_SOURCE_DIR) + "/tests/scenes/system/clump_system.toml";
   std::string text = ReadSceneFile(path);
