@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "io/output_ledger.h"
 #include "io/run_report_file.h"
 #include "scene/text_escape.h"
 
@@ -24,9 +25,7 @@ RunFiles::RunFiles(const std::string& out_dir, const std::string& suffix, const 
     const LineData& d = run.initial.lines[i];
     LineFiles& f = lines_[i];
     f.dir = nl == 1 ? out_dir : out_dir + "/lines/" + model.line_names[i];
-    std::error_code ec;
-    std::filesystem::create_directories(f.dir, ec);
-    if (ec) throw Error("cannot create the folder " + EscapeText(f.dir) + ": " + ec.message());
+    CreateOutputFolder(f.dir);
     WriteEquilibriumCsv(LineFile(i, "equilibrium.csv"), m, d.state, d.tension());
     f.series = std::make_unique<TimeseriesWriter>(LineFile(i, "timeseries.csv"), m, i, run.inputs,
                                                   &run.lines[i].row_ends);

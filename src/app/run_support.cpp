@@ -56,8 +56,7 @@ std::string PrepareOutDir(const SceneDef& scene, const RunOptions& options, OutD
   std::filesystem::create_directories(out_dir, ec);
   if (ec)
     throw Error("cannot create the output folder " + EscapeText(out_dir) + ": " + ec.message());
-  lock.Lock(out_dir, "output folder");
-  RemoveEarlierResults(out_dir);  // a run's folder never mixes its results with older ones
+  lock.Lock(out_dir, "output folder");  // and removes what the earlier run there wrote
   return out_dir;
 }
 

@@ -9,8 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <regex>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -25,6 +23,7 @@
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/out_dir_lock.h"
+#include "io/output_ledger.h"
 #include "io/result_files.h"
 #include "scene/option_values.h"
 #include "io/run_report_file.h"
@@ -122,25 +121,6 @@ CaseOutcome RunCaseInProcess(const std::string& text, const std::string& path,
   return OutcomeOf(run.summary, *stop != 0);
 }
 
-// Case folders of an earlier, larger sweep: emptied of what a sweep writes and removed, so that
-// no stale case sits beside this sweep's.
-void RemoveStaleCases(const fs::path& dir, const std::set<std::string>& keep) {
-  static const std::regex name("case_[0-9]+");
-  std::error_code ec;
-  std::vector<fs::path> stale;
-  for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    const std::string n = entry.path().filename().string();
-    if (entry.is_directory(ec) && std::regex_match(n, name) && !keep.count(n))
-      stale.push_back(entry.path());
-  }
-  for (const fs::path& p : stale) {
-    RemoveEarlierResults(p.string());
-    for (const char* n : {"scene.toml", "run.log", OutDirLock::kFileName}) fs::remove(p / n, ec);
-    fs::remove(p / "frames", ec);  // only when empty
-    fs::remove(p, ec);
-  }
-}
-
 // The cases as child processes: each `cablefilm run` of its folder's scene.toml, in a process
 // group of its own, its output in the folder's run.log; its row from its run_report.toml (or
 // from how it ended).
@@ -210,6 +190,7 @@ class ProcessExecutor : public CaseExecutor {
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     const std::string log = (folder / "run.log").string();
+    RecordOutput(log);
     const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (out < 0) throw Error("cannot create " + EscapeText(log) + ": " + std::strerror(errno));
     const int in = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
@@ -316,19 +297,12 @@ class Sweep {
     if (ec)
       throw Error("cannot create the sweep folder " + EscapeText(dir_.string()) + ": " +
                   ec.message());
-    lock_.Lock(dir_.string(), "sweep folder");  // one sweep at a time in it
-    std::set<std::string> names;
-    if (!options_.summary_only)  // else no case folder: an earlier sweep's are all stale
-      for (std::size_t i = 0; i < n; ++i) names.insert(CaseFolderName(i, n));
-    RemoveStaleCases(dir_, names);
+    // One sweep at a time in it; what an earlier sweep wrote (its case folders and what their
+    // runs wrote) is removed, so that no stale case sits beside this sweep's.
+    lock_.Lock(dir_.string(), "sweep folder");
     for (std::size_t i = 0; i < n && !options_.summary_only; ++i) {
       const fs::path folder = dir_ / CaseFolderName(i, n);
-      fs::create_directories(folder, ec);
-      if (ec)
-        throw Error("cannot create the case folder " + EscapeText(folder.string()) + ": " +
-                    ec.message());
-      RemoveEarlierResults(folder.string());  // no result of an earlier sweep beside the scene
-      fs::remove(folder / "run.log", ec);
+      CreateOutputFolder(folder.string());
       AtomicFile scene((folder / "scene.toml").string());
       std::fputs(scenes[i].c_str(), scene.stream());
       scene.Commit();

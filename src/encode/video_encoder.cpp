@@ -15,6 +15,7 @@ extern "C" {
 #include <fstream>
 
 #include "core/error.h"
+#include "io/output_ledger.h"
 #include "encode/yuv_converter.h"
 
 namespace cablefilm {
@@ -77,6 +78,9 @@ VideoEncoder::VideoEncoder(const std::string& path, const VideoOptions& options)
   m.path = path;
   m.options = options;
   m.temp_path = PartialPath(path);
+  RecordOutput(path);  // and the film being made, then its remuxed copy (Finish)
+  RecordOutput(m.temp_path);
+  RecordOutput(path + ".tmp.mp4");
   if (options.width <= 0 || options.height <= 0 || options.width % 2 || options.height % 2)
     throw Error("video " + path + ": width and height must be positive and even, got " +
                 std::to_string(options.width) + "x" + std::to_string(options.height));

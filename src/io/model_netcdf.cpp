@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "io/output_ledger.h"
 
 namespace cablefilm {
 namespace {
@@ -25,6 +26,7 @@ ModelResultsWriter::ModelResultsWriter(const std::string& path, const NetcdfResu
       temp_path_(path + ".tmp" + std::to_string(::getpid())) {
   KeepFreedMemoryForTheCompressor();
   SkipHdf5CleanupAtExit();
+  RecordOutput(path_);
   try {
     Define(info);
   } catch (...) {
@@ -211,6 +213,7 @@ void ModelResultsWriter::CommitPartial(const std::string& path) {
   ncid_ = -1;
   errno = 0;
   NetcdfCheck(nc_close(id), temp_path_, "close");
+  RecordOutput(path);
   if (std::rename(temp_path_.c_str(), path.c_str()) != 0)
     throw Error("cannot rename " + temp_path_ + " to " + path + ": " + std::strerror(errno));
   committed_ = true;

@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "io/output_ledger.h"
 #include "io/netcdf_support.h"
 
 namespace cablefilm {
@@ -21,6 +22,7 @@ NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfRe
     : LineResultsNc(line), path_(path), temp_path_(path + ".tmp" + std::to_string(::getpid())) {
   KeepFreedMemoryForTheCompressor();
   SkipHdf5CleanupAtExit();
+  RecordOutput(path_);
   try {
     Define(info, m, initial, initial_tension);
     filling_ = NewBlock();
@@ -316,6 +318,7 @@ void NetcdfResultsWriter::Commit() { CommitPartial(path_); }
 
 void NetcdfResultsWriter::CommitPartial(const std::string& path) {
   Close();
+  RecordOutput(path);
   if (std::rename(temp_path_.c_str(), path.c_str()) != 0)
     throw Error("cannot rename " + temp_path_ + " to " + path + ": " + std::strerror(errno));
   committed_ = true;

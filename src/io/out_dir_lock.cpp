@@ -64,6 +64,7 @@ void OutDirLock::Lock(const std::string& folder, const std::string& what) {
       (void)written;
       fd_ = fd;
       path_ = path;
+      ledger_.Open(folder);
       return;
     }
     ::close(fd);  // removed or replaced after we opened it: again

@@ -4,8 +4,12 @@
 // exclusive lock (flock) on the file .cablefilm.lock in the folder from before it clears the
 // folder until it ends; a second run is refused with the first one's process id. The lock goes
 // with the process (whatever ends it); the file is removed when the holder lets it go, and a
-// file left by a killed run is taken over by the next.
+// file left by a killed run is taken over by the next. Holding the lock, the run keeps the
+// folder's ledger (io/output_ledger.h): it removes what the earlier run wrote and lists what
+// this one writes.
 #include <string>
+
+#include "io/output_ledger.h"
 
 namespace cablefilm {
 
@@ -17,7 +21,8 @@ class OutDirLock {
   OutDirLock& operator=(const OutDirLock&) = delete;
 
   // Locks `folder` (which exists) for this process, or throws Error naming the folder and the
-  // process that holds it. `what` names the folder in the message ("output folder").
+  // process that holds it. `what` names the folder in the message ("output folder"). Then
+  // removes what the earlier run there wrote and opens the folder's ledger.
   void Lock(const std::string& folder, const std::string& what);
 
   static const char kFileName[];  // ".cablefilm.lock"
@@ -26,6 +31,7 @@ class OutDirLock {
   void Release();
   std::string path_;
   int fd_ = -1;
+  OutputLedger ledger_;
 };
 
 }  // namespace cablefilm

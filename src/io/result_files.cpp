@@ -24,59 +24,6 @@ void WriteEquilibriumCsv(const std::string& path, const LineModel& m, const Stat
   file.Commit();
 }
 
-namespace {
-
-// The names a run writes in a folder (a line's, in lines/<name>/, has the first eight kinds).
-const char* const kResultNames[] = {
-    "equilibrium.csv", "equilibrium_inextensible.csv", "timeseries.csv",
-    "timeseries.partial.csv", "timeseries_inextensible.csv",
-    "timeseries_inextensible.partial.csv", "results.nc", "results.partial.nc",
-    "results_inextensible.nc", "results_inextensible.partial.nc", "run_report.toml",
-    "run_report_inextensible.toml", "film.mp4", "film.partial.mp4", "max_tension.png",
-    "max_tension.partial.png", "points.csv", "points.partial.csv", "points_inextensible.csv",
-    "points_inextensible.partial.csv", "body.csv", "body.partial.csv", "body_inextensible.csv",
-    "body_inextensible.partial.csv"};
-
-// Removes `dir`'s files of those names (plain files only) and its frames/frame_*.png.
-void RemoveResultsIn(const std::filesystem::path& dir) {
-  namespace fs = std::filesystem;
-  std::vector<fs::path> stale;
-  for (const char* name : kResultNames) stale.push_back(dir / name);
-  std::error_code ec;
-  const fs::path frames = dir / "frames";
-  if (fs::is_directory(fs::symlink_status(frames, ec)))
-    for (const auto& entry : fs::directory_iterator(frames, ec)) {
-      const std::string name = entry.path().filename().string();
-      if (name.rfind("frame_", 0) == 0 && entry.path().extension() == ".png")
-        stale.push_back(entry.path());
-    }
-  for (const fs::path& p : stale) {
-    if (!fs::is_regular_file(fs::symlink_status(p, ec))) continue;  // ours are plain files
-    fs::remove(p, ec);
-    if (ec) throw Error("cannot remove the earlier result " + p.string() + ": " + ec.message());
-  }
-}
-
-}  // namespace
-
-void RemoveEarlierResults(const std::string& out_dir) {
-  namespace fs = std::filesystem;
-  RemoveResultsIn(out_dir);
-  // A run of several lines has each in lines/<name>/ with a line's own files: those removed,
-  // and a folder they leave empty (a user's own files stay, and their folders with them).
-  std::error_code ec;
-  const fs::path lines = fs::path(out_dir) / "lines";
-  if (!fs::is_directory(fs::symlink_status(lines, ec))) return;
-  std::vector<fs::path> folders;
-  for (const auto& entry : fs::directory_iterator(lines, ec))
-    if (fs::is_directory(fs::symlink_status(entry.path(), ec))) folders.push_back(entry.path());
-  for (const fs::path& folder : folders) {
-    RemoveResultsIn(folder);
-    if (fs::is_empty(folder, ec)) fs::remove(folder, ec);
-  }
-  if (fs::is_empty(lines, ec)) fs::remove(lines, ec);
-}
-
 const char kTimeseriesHeader[] =
     "t,x_end,y_end,z_end,tension_start,tension_end,tension_max,link_max,"
     "fx_start,fy_start,fz_start,fx_end,fy_end,fz_end,angle_start,angle_end\n";

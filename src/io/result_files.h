@@ -17,14 +17,6 @@ namespace cablefilm {
 void WriteEquilibriumCsv(const std::string& path, const LineModel& m, const State& state,
                          const Eigen::VectorXd& tension);
 
-// Removes the result files an earlier run may have left in `out_dir` (only the names a run
-// writes: equilibrium*.csv, timeseries*.csv, results*[.partial].nc, run_report*.toml,
-// points*.csv, body*.csv, film[.partial].mp4, max_tension[.partial].png, frames/frame_*.png,
-// and in each folder of lines/ a line's own of those; a folder of lines/ left empty by that,
-// and lines/ itself then, too), so that stale results never sit beside new ones and nothing
-// else is touched. Throws Error.
-void RemoveEarlierResults(const std::string& out_dir);
-
 // One row of timeseries.csv, and its header line (shared with the live view's /timeseries.csv).
 // `ends` holds the end loads of the row's LineData (core/end_loads.h), computed here. With
 // `utilisation` (a line some of whose materials have a minimum_breaking_load) the row ends

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/version.h"
+#include "io/output_ledger.h"
 #include "io/results_nc.h"
 #include "live/live_command.h"
 #include "encode/image.h"
@@ -49,6 +50,7 @@ struct RenderModuleApi {
   // The Python module's films and frames of runs kept in memory (view/memory_film.h).
   bool (*render_memory_run_film)(const MemoryRun&, const FilmRequest&, const std::atomic<int>&);
   Image (*draw_memory_run_frame)(const MemoryRun&, long row, const FilmRequest&);
+  void (*record_outputs_through)(OutputRecorder);  // the program's ledgers (io/output_ledger.h)
 };
 
 struct NetcdfModuleApi {
@@ -58,6 +60,7 @@ struct NetcdfModuleApi {
                                               const Eigen::VectorXd&, int);
   std::unique_ptr<ModelResultsNc> (*open_model)(const std::string&, const NetcdfResultsInfo&,
                                                   const Model&, const Inputs&);
+  void (*record_outputs_through)(OutputRecorder);
 };
 
 // The modules' entry points (extern "C": looked up by name).

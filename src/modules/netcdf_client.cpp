@@ -7,8 +7,10 @@ namespace cablefilm {
 namespace {
 
 const NetcdfModuleApi& Netcdf() {
-  return *static_cast<const NetcdfModuleApi*>(
+  const auto* table = static_cast<const NetcdfModuleApi*>(
       LoadModuleTable(kNetcdfModuleFile, kNetcdfModuleEntry, ModuleAbi(), "results.nc"));
+  table->record_outputs_through(&RecordOutputOrSay);  // what it writes is the run's
+  return *table;
 }
 
 }  // namespace

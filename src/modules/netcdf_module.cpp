@@ -3,6 +3,7 @@
 
 extern "C" __attribute__((visibility("default"))) const void* cablefilm_netcdf_module() {
   using namespace cablefilm;
-  static const NetcdfModuleApi api{ModuleAbiText(), &OpenLineResultsNc, &OpenModelResultsNc};
+  static const NetcdfModuleApi api{ModuleAbiText(), &OpenLineResultsNc, &OpenModelResultsNc,
+                                     &RecordOutputsThrough};
   return &api;
 }

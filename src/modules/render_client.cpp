@@ -9,8 +9,10 @@ namespace cablefilm {
 namespace {
 
 const RenderModuleApi& Render(const std::string& what) {
-  return *static_cast<const RenderModuleApi*>(
+  const auto* table = static_cast<const RenderModuleApi*>(
       LoadModuleTable(kRenderModuleFile, kRenderModuleEntry, ModuleAbi(), what));
+  table->record_outputs_through(&RecordOutputOrSay);  // what the film writes is the run's
+  return *table;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 extern "C" __attribute__((visibility("default"))) const void* cablefilm_render_module() {
   using namespace cablefilm;
   static const RenderModuleApi api{ModuleAbiText(), &RenderFilm, &LiveCommand,
-                                   &RenderMemoryRunFilm, &DrawMemoryRunFrame};
+                                   &RenderMemoryRunFilm, &DrawMemoryRunFrame,
+                                   &RecordOutputsThrough};
   return &api;
 }

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "encode/png_writer.h"
 #include "encode/video_encoder.h"
+#include "io/output_ledger.h"
 #include "view/max_tension_figure.h"
 #include "view/renderer.h"
 
@@ -216,10 +217,7 @@ FilmWriter::FilmWriter(const FilmOptions& options, const SceneView& scene,
   std::error_code ec;
   std::filesystem::create_directories(m.out_dir, ec);
   if (ec) throw Error("film: cannot create " + m.out_dir + ": " + ec.message());
-  if (options.write_frames) {
-    std::filesystem::create_directories(m.out_dir + "/frames", ec);
-    if (ec) throw Error("film: cannot create " + m.out_dir + "/frames: " + ec.message());
-  }
+  if (options.write_frames) CreateOutputFolder(m.out_dir + "/frames");
   std::future<void> started = m.ready.get_future();
   m.worker = std::thread([&m] { m.Run(&m.ready); });
   try {

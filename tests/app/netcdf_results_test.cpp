@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "io/output_ledger.h"
 #include "io/results_nc.h"
 #include "io/run_report_file.h"
 #include "run/driver.h"
@@ -374,8 +375,13 @@ TEST_F(NetcdfResultsTest, CompareWritesBothModelsAndEarlierResultsGo) {
   const std::string scene = ShortP63("1.0");
   const fs::path out = dir_ / "out";
   fs::create_directories(out);
-  for (const char* stale : {"results.nc", "results.partial.nc", "results_inextensible.partial.nc"})
+  // An earlier run's results, listed in the folder's ledger as that run listed them.
+  std::ofstream ledger(out / OutputLedger::kFileName);
+  for (const char* stale : {"results.nc", "results.partial.nc", "results_inextensible.partial.nc"}) {
     std::ofstream(out / stale) << "stale result of an earlier run";
+    ledger << stale << "\n";
+  }
+  ledger.close();
   RunOptions opt;
   opt.out_dir = out.string();
   ASSERT_EQ(CompareCommand(scene, opt), 0);

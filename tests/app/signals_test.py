@@ -8,7 +8,7 @@ an earlier run sits beside the new ones.
         --out-dir /tmp/signals [--runs 9] [--seed 1]
 
 Each run goes into a folder that already holds the results of another scene (stale files of
-every name a run writes). The times are drawn from a seeded generator over the whole run
+every name a run writes, listed in the folder's ledger as that run listed them). The times are drawn from a seeded generator over the whole run
 (simulation, film pass, the still), so the test is repeatable. Prints one line per run and
 `N passed, M failed`.
 """
@@ -27,6 +27,7 @@ RESULTS = ['equilibrium.csv', 'timeseries.csv', 'timeseries.partial.csv', 'film.
            'film.partial.mp4', 'max_tension.png', 'max_tension.partial.png', 'results.nc',
            'results.partial.nc']
 STALE = b'stale result of an earlier run'
+LEDGER = '.cablefilm.written'  # what the last run in a folder wrote there (docs/cli.md)
 
 
 def boxes(data, start, end):
@@ -153,7 +154,7 @@ def check_folder(folder, expected_rows, expected_frames, killed):
                 problems.append(f'results.partial.nc has {n} rows, more than the run')
         elif name.endswith('.png') and not png_ok(path):
             problems.append(f'{name} is not a whole PNG')
-    for name in names:
+    for name in names - {LEDGER}:
         if name.startswith('.') or '.tmp' in name:
             if not killed:  # SIGKILL may leave a temporary file; a clean stop may not
                 problems.append(f'temporary file {name} left behind')
@@ -207,6 +208,8 @@ def main():
         for name in RESULTS:  # an earlier run of another scene left every result
             with open(os.path.join(folder, name), 'wb') as f:
                 f.write(STALE)
+        with open(os.path.join(folder, LEDGER), 'w') as f:  # and listed them, as runs do
+            f.write(''.join(name + '\n' for name in RESULTS))
         proc = subprocess.Popen(cmd + ['--out', folder], stdout=subprocess.PIPE,
                                 stderr=subprocess.PIPE, text=True)
         time.sleep(at)

@@ -306,8 +306,12 @@ def test_summary_only(work):
                  f'{with_folders / done.seconds:.2g} times faster)'):
         print(done.stdout, done.stderr)
         return
+    # Beside it the folder's list of what the sweep wrote (docs/cli.md: what a run removes).
     left = sorted(os.listdir(folders))
-    check(left == ['sweep.csv'], f'--summary-only leaves sweep.csv alone: {left}')
+    check(left == ['.cablefilm.written', 'sweep.csv'],
+          f'--summary-only leaves sweep.csv alone: {left}')
+    listed = open(os.path.join(folders, '.cablefilm.written')).read().split('\n')[1:]
+    check(listed == ['sweep.csv', ''], f'and its list names sweep.csv alone: {listed}')
     done = run(['sweep', scene, *sets(*SHORT, *SWEPT), '--out', out], work)
     _, rows_folders = read_csv(os.path.join(out, 'sweep.csv'))
     _, rows_summary = read_csv(os.path.join(folders, 'sweep.csv'))
