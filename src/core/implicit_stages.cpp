@@ -176,6 +176,13 @@ Vec FrictionStep(const LineModel& m, const Scratch& w, const LinkGeometry& g, do
   const Vec u = trial / size;      // the slide's force direction
   const Vec step = HorizontalPart(dx);
   const double per_metre = K + C * kv;  // [N/m]
+  // A zone narrower than the station's position can resolve (a friction of 1e-15 or less:
+  // mu N_j / (K l_j) below a few units in the last place of x_j) cannot be landed in, and
+  // cutting there never ends; stepping over it changes the force by 2 mu N_j, a friction too
+  // small for Newton to see, so the step goes whole.
+  const double resolution = 16 * std::numeric_limits<double>::epsilon() *
+                            (w.x.col(j).cwiseAbs().maxCoeff() + 1.0);  // [m]
+  if (limit / per_metre < resolution) return dx;
   const Vec after = trial - per_metre * step;
   if (!(after.dot(u) < 0) || !(after.norm() > limit)) return dx;  // no reversal past the zone
   const double along = per_metre * step.dot(u);  // > size here

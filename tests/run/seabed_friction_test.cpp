@@ -9,6 +9,7 @@
 // 3. Newton's step of a sliding station that would have it slide the other way stops in its
 //    stick zone (implicit_stages.cpp, FrictionStep), where the sticking force along the old
 //    slide vanishes; a step that does not reverse the slide is taken whole.
+// 4. A friction too small for its stick zone to be resolved runs as no friction.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -169,6 +170,37 @@ TEST(StickSlipFriction, GroundedMooringAnchorRangeConvergesAsTheLawSharpens) {
   // the default tolerance 108.81 and 109.88 kN, also 0.98 %: the law itself moves the range by
   // about the bound, and the default's own error in it is 1.8 %, docs/validation.md).
   EXPECT_NEAR(sharper, normal, 0.01 * normal);
+}
+
+// A friction too small to matter runs as none: mooring_leg_3d.toml (20 s of its 3D mooring leg
+// in waves and current, stick-slip on the bed) with mu from 1e-15 down to the smallest normal
+// double. Its stick zones, mu N_j / (K l_j) wide, are then narrower than the stations' positions
+// can resolve; Newton's steps were cut there and never ended ("the implicit step fell to
+// 9.3e-11 s at t = 1.5e-06 s"). Each must finish and match the frictionless run: the friction
+// force is at most mu N_j < 1e-9 N, nothing the run can show, and the steps are the same; the
+// bound, 1e-6 of the peak, leaves room for Newton's iterates at stations exactly at rest (there
+// the stick tangent's stiffness still enters, changing an iterate within Newton's tolerance).
+TEST(StickSlipFriction, AFrictionTooSmallToResolveRunsAsNone) {
+  const std::string path = std::string(CABLEFILM_SOURCE_DIR) + "/scenes/mooring_leg_3d.toml";
+  auto peak = [&](double mu, long* steps) {
+    SceneDef scene = LoadScene(path);
+    scene.simulation.duration = 20;
+    scene.seabed.friction = mu;
+    const MemoryRun r = RunInMemory(scene, BuildModel(scene), nullptr);
+    EXPECT_TRUE(r.run.summary.completed) << "mu " << mu << ": " << r.run.summary.failure;
+    *steps = r.run.summary.stats.steps;
+    return r.run.summary.peak;
+  };
+  long none_steps = 0;
+  const double none = peak(0, &none_steps);
+  for (const double mu : {1e-15, 1e-30, 1e-100, 2.2250738585072014e-308}) {
+    long steps = 0;
+    const double with = peak(mu, &steps);
+    std::printf("[ tiny friction ] mu %.3g: peak %.3f N in %ld steps (none: %.3f N in %ld)\n", mu,
+                with, steps, none, none_steps);
+    EXPECT_NEAR(with, none, 1e-6 * none) << "mu " << mu;
+    EXPECT_NEAR(static_cast<double>(steps), static_cast<double>(none_steps), 0.01 * none_steps);
+  }
 }
 
 // The chain of test 1 at rest on the bed, an implicit step's Newton iterate with station 50
