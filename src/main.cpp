@@ -2,10 +2,13 @@
 // (app/command.h, live/live_options.h); here they are gathered, the arguments parsed, and the
 // chosen command run. Every bad option is answered on stderr with a message that names it
 // (input text escaped) and exit status 2, before anything is read or simulated; --help and
-// --version exit 0.
+// --version exit 0. Whatever the command, standard output that could not be written is an
+// error, status 1.
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <regex>
 #include <string>
 #include <vector>
@@ -75,9 +78,21 @@ CLI::App* ChosenCommand(CLI::App& app) {
   return command;
 }
 
-}  // namespace
+// What the program printed must have reached standard output (a full disk, /dev/full, a closed
+// descriptor lose it silently otherwise): an error naming it, status 1 unless already failing.
+int CheckedStdout(int status) {
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (flushed && !std::ferror(stdout)) return status;
+  std::fprintf(stderr, "cablefilm: error: cannot write standard output: %s\n",
+               !flushed && error ? std::strerror(error)
+                                     : "a write to it failed, the output is incomplete");
+  return status == 0 ? 1 : status;
+}
 
-int main(int argc, char** argv) {
+// The program: parses the command line and runs the command; its exit status.
+int Main(int argc, char** argv) {
   CLI::App app("cablefilm " + std::string(cablefilm::kVersion) +
                    ": a lumped-mass cable in a fluid (Polachek et al. 1963), simulated and "
                    "filmed with its tension",
@@ -158,3 +173,7 @@ int main(int argc, char** argv) {
     return ReportError(scene, e);
   }
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return CheckedStdout(Main(argc, argv)); }

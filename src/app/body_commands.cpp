@@ -6,11 +6,12 @@
 #include <sstream>
 
 #include "app/command.h"
+#include "app/output_over_input.h"
 #include "app/progress.h"
 #include "app/run_support.h"
 #include "core/body_statics.h"
 #include "core/error.h"
-#include "io/atomic_file.h"
+#include "io/output_file.h"
 #include "run/initial_state.h"
 #include "scene/build_model.h"
 #include "scene/option_values.h"
@@ -105,6 +106,12 @@ int StiffnessCommand(const std::string& scene_path, const std::string& body) {
 int OffsetCommand(const std::string& scene_path, const OffsetOptions& o) {
   SceneDef scene;
   const Model sys = LoadWithBodies(scene_path, &scene);
+  std::vector<std::string> inputs{scene_path};  // the scene and the motion tables it reads
+  for (const PointDef& p : scene.points)
+    if (!p.motion.table_file.empty()) inputs.push_back(p.motion.table_file);
+  for (const BodyDef& b : scene.bodies)
+    if (!b.motion.table_file.empty()) inputs.push_back(b.motion.table_file);
+  RefuseOutputOverInput(o.out, inputs);
   const int b = FindBody(scene, sys, o.body);
   Equilibrium e;
   FindEquilibrium(scene, sys, e);
@@ -114,7 +121,7 @@ int OffsetCommand(const std::string& scene_path, const OffsetOptions& o) {
   for (int k = 0; k < o.points; ++k)
     offsets.push_back(o.points > 1 ? most * k / (o.points - 1) : most);
   const std::vector<OffsetPoint> curve =
-      OffsetCurve(sys, b, pose, o.heading * M_PI / 180.0, offsets, e.options);
+      OffsetCurve(sys, b, pose, o.heading, offsets, e.options);
   std::ostringstream csv;
   csv.precision(10);
   csv << "offset,restoring,fx,fy,fz,mx,my,mz";
@@ -134,12 +141,10 @@ int OffsetCommand(const std::string& scene_path, const OffsetOptions& o) {
   std::fprintf(stderr, "body %s from its equilibrium along %.6g deg, offsets 0 to %.6g m\n",
                QuoteText(sys.bodies[b].name).c_str(), o.heading, most);
   if (o.out.empty() || o.out == "-") {
-    std::fputs(csv.str().c_str(), stdout);
+    std::fputs(csv.str().c_str(), stdout);  // main checks that standard output took it
     return 0;
   }
-  AtomicFile file(o.out);
-  std::fputs(csv.str().c_str(), file.stream());
-  file.Commit();
+  WriteOutputFile(o.out, csv.str());
   std::fprintf(stderr, "wrote %s\n", EscapeText(o.out).c_str());
   return 0;
 }
@@ -160,7 +165,8 @@ Command DeclareOffsetCommand(CLI::App& program, std::string* scene) {
   cmd->add_option("--body", o->body, "the body (default: the scene's only one)")->type_name("NAME");
   Value(cmd, "--heading", "DEG", "direction of the offset from +x towards +z (default 0)",
         [o](const std::string& v) {
-          o->heading = ParseNumber("--heading", v, -360, 360, false, " degrees");
+          // The offset curve's own range, refused here before anything is read.
+          o->heading = ParseNumber("--heading", v, -kMaxHeading, kMaxHeading, false, " degrees");
         });
   Value(cmd, "--max", "M", "largest offset in m (default: a twentieth of the shortest line on the body)",
         [o](const std::string& v) { o->max_offset = ParseNumber("--max", v, 0, kMaxLength, false, " m"); });

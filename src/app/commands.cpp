@@ -14,6 +14,7 @@
 #include "app/run_files.h"
 #include "run/run.h"
 #include "scene/build_model.h"
+#include "scene/film_settings.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "scene/text_escape.h"
@@ -260,6 +261,7 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
 
 int CheckCommand(const std::string& scene_path) {
   const SceneDef scene = LoadScene(scene_path);
+  if (scene.output.film) ResolveFilm(scene, {}, kCommandLineNames);  // as `run` makes it
   const Model model = BuildModel(scene);
   CheckModelLimits(scene, model);
   const TimeGrid grid = ChooseTimeGrid(model, scene.simulation, scene.output.interval);

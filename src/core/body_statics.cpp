@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -56,7 +57,13 @@ Mat6 MooringStiffness(const Model& sys, int b, const Vec6& pose, double step,
 std::vector<OffsetPoint> OffsetCurve(const Model& sys, int b, const Vec6& pose,
                                      double heading, const std::vector<double>& offsets,
                                      const EquilibriumOptions& options) {
-  const Vec e = Horizontal(heading);
+  if (!(std::abs(heading) <= kMaxHeading)) {
+    char what[128];
+    std::snprintf(what, sizeof what, "heading: expected an angle from %g to %g degrees, got %.6g",
+                  -kMaxHeading, kMaxHeading, heading);
+    throw Error(what);
+  }
+  const Vec e = Horizontal(heading * M_PI / 180);
   std::vector<OffsetPoint> curve;
   for (double d : offsets) {
     Vec6 at = pose;

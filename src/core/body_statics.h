@@ -39,8 +39,13 @@ struct OffsetPoint {
   MooringLoad load;
 };
 
-// Body b moved from `pose` by each of `offsets` [m] along the horizontal heading [rad] from +x
-// towards +z, its other degrees of freedom held.
+// The headings the offset curve takes [deg], either way: a turn at most (beyond it a number is
+// a mistake, and 1e308 degrees overflows in radians).
+constexpr double kMaxHeading = 360;
+
+// Body b moved from `pose` by each of `offsets` [m] along the horizontal heading [deg] from +x
+// towards +z, its other degrees of freedom held. Throws Error naming the heading when it is not
+// within +-kMaxHeading: every front end's one check.
 std::vector<OffsetPoint> OffsetCurve(const Model& sys, int b, const Vec6& pose,
                                      double heading, const std::vector<double>& offsets,
                                      const EquilibriumOptions& options = {});

@@ -104,7 +104,6 @@ py::dict Offset(const py::object& source, const std::optional<std::string>& body
   const SceneHandle scene = SceneOf(source, std::nullopt);
   const int b = FindBody(scene, body);
   const Model& model = scene.model();
-  if (!std::isfinite(heading)) throw py::value_error("heading: expected a finite angle [deg]");
   if (given) {
     if (given->empty()) throw py::value_error("offsets: expected at least one offset [m]");
     for (double o : *given)
@@ -125,7 +124,7 @@ py::dict Offset(const py::object& source, const std::optional<std::string>& body
       const int points = 11;
       for (int k = 0; k < points; ++k) offsets.push_back(most * k / (points - 1));
     }
-    o.curve = OffsetCurve(model, b, o.pose, heading * M_PI / 180.0, offsets, options);
+    o.curve = OffsetCurve(model, b, o.pose, heading, offsets, options);  // checks the heading
     return o;
   });
   const auto k = static_cast<py::ssize_t>(out.curve.size());

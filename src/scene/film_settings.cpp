@@ -80,8 +80,8 @@ FilmSettings ResolveFilm(const SceneDef& scene, const FilmOverrides& o,
     s.look.tension_max = o.tension_max;
   }
   if (!whole_film) return s;
-  // The film of the run must have from 1 to kMaxFilmFrames frames (the loader checked the
-  // scene's own film when it is on; the overrides may change that).
+  // The film of the run must have from 1 to kMaxFilmFrames frames: counted here, not by the
+  // loader, so that a run without its film is not refused for it.
   const std::string problem = FilmFramesProblem(
       RunSpan(scene.simulation.duration, scene.output.interval), s.look.fps, s.look.speed);
   if (!problem.empty()) {

@@ -41,7 +41,8 @@ struct FilmSettings {
 };
 
 // The scene's film with the overrides, every value checked, and, for a whole film, its frame
-// count (1 to kMaxFilmFrames over the run's span). Throws Error "<key named as `names` says>:
+// count (1 to kMaxFilmFrames over the run's span: the one place it is checked, so call it
+// whenever a film will be made). Throws Error "<key named as `names` says>:
 // expected ..." (led by the scene's file for the frame count).
 FilmSettings ResolveFilm(const SceneDef& scene, const FilmOverrides& overrides,
                          const FilmKeyNames& names, bool whole_film = true);

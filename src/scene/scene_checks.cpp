@@ -56,8 +56,9 @@ void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::stri
   }
 }
 
-// The limits that involve several keys: output rows, fixed time steps and film frames, each
-// named by the key most likely at fault (the one given, when the other took its default).
+// The limits that involve several keys: output rows and fixed time steps, each named by the key
+// most likely at fault (the one given, when the other took its default). The film's frames are
+// the film's (ResolveFilm, film_settings.h): a run without its film does not count them.
 void CheckRunCounts(const toml::table& root, const SceneDef& scene, const std::string& file,
                     bool interval_given) {
   auto node = [&](const char* path) { return root.at_path(path).node(); };
@@ -99,11 +100,6 @@ void CheckRunCounts(const toml::table& root, const SceneDef& scene, const std::s
              " steps of the " + FormatNumber(span) + " s run; expected at most " +
              FormatNumber(kMaxSteps) + " steps: a time step of at least " +
              FormatNumber(span / kMaxSteps) + " s (or \"auto\")");
-  if (scene.output.film) {
-    const std::string problem = FilmFramesProblem(span, scene.film.fps, scene.film.speed);
-    if (!problem.empty())
-      fail(node("film.speed") || !node("film.fps") ? "film.speed" : "film.fps", problem);
-  }
 }
 
 // scene-format.md: ends further apart than the cable can reach are an error for an

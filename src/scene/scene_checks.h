@@ -12,7 +12,7 @@ namespace cablefilm {
 // it): an error naming seabed.y.
 void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::string& file);
 
-// The output rows, fixed time steps and film frames a run makes: within the stated limits.
+// The output rows and fixed time steps a run makes: within the stated limits.
 void CheckRunCounts(const toml::table& root, const SceneDef& scene, const std::string& file,
                     bool interval_given);
 

@@ -52,6 +52,8 @@ constexpr double kMaxBodyInertia = 1e18;    // kg m^2 (and a body's added mass a
 constexpr double kMinPeriod = 1e-6, kMaxPeriod = 1e9;  // s
 constexpr double kMaxRampRate = 1e6;        // 1/s
 constexpr double kMaxTime = 1e9;            // s: a duration, |a table's times|
+// 1/s: a slower ramp never starts within the longest run, and its start (5 / nu) stays finite.
+constexpr double kMinRampRate = 1 / kMaxTime;
 constexpr double kMaxTension = 1e15;         // N: a film's colour range
 constexpr double kMaxStartStretch = 2.0;    // an elastic link at t = 0, L / l (the integrators
                                             // call a link beyond it a blow-up)

@@ -182,7 +182,8 @@ void ReadWaves(TableReader& top, SceneDef& scene) {
   w.phase = r.Ranged("phase", 0.0, false, -kMaxPhase, kMaxPhase, " in degrees");
   w.heading = r.Ranged("heading", 0.0, false, -kMaxPhase, kMaxPhase,
                        " (the direction they travel, degrees from +x towards +z)");
-  w.ramp_rate = r.OptionalPositive("ramp_rate", 4.0 / w.period, " in 1/s", 0, kMaxRampRate);
+  w.ramp_rate =
+      r.OptionalPositive("ramp_rate", 4.0 / w.period, " in 1/s", kMinRampRate, kMaxRampRate);
   if (!(scene.environment.gravity > 0))
     r.Fail(t, "period", "expected gravity > 0 for waves (environment.gravity = 0)");
   WaveSpec spec;  // the wave number and the breaking height need the period and depth only
@@ -440,7 +441,7 @@ std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const 
       end.rz_amplitudes = r.Pair("rz_amplitudes", {0, 0}, false, false, deg, kMaxPhase);
     }
     end.period = r.Positive("period", " in s", kMinPeriod, kMaxPeriod);
-    end.ramp_rate = r.Positive("ramp_rate", " in 1/s", 0, kMaxRampRate);
+    end.ramp_rate = r.Positive("ramp_rate", " in 1/s", kMinRampRate, kMaxRampRate);
   }
   if (motion == "table") {
     end.motion = EndMotionKind::kTable;

@@ -626,4 +626,113 @@ TEST_F(CommandLine, BodyToolsStartFromTheRelaxedEquilibrium) {
   EXPECT_EQ(count, 3) << o.out;
 }
 
+// Output that never arrived was reported done, status 0: `convert X.txt > full/out.toml` left 0
+// bytes, `offset ... --points 2000 > full/off.csv` a row cut in half, `convert -o /dev/full`
+// said "wrote /dev/full", `stiffness` and `check` to /dev/full. Standard output that cannot be
+// written is an error naming it, status 1, whatever the command.
+TEST_F(CommandLine, StandardOutputThatCannotBeWrittenIsAnError) {
+  fs::copy_file(kBodyAboveAnchor, dir_ / "above.txt");
+  Scene("s.toml");
+  // Short outputs (left in the buffer until the end) and a long one (failing as it goes).
+  for (const std::string command :
+       {"check s.toml", "convert above.txt", "stiffness above.txt", "offset above.txt --points 3",
+        "offset above.txt --points 2000", "run s.toml --no-film --out out", "--version"}) {
+    const Outcome o = Run(command + " >/dev/full");
+    EXPECT_EQ(o.status, 1) << command << ": " << o.err;
+    EXPECT_NE(o.err.find("cablefilm: error: cannot write standard output"), std::string::npos)
+        << command << ": " << o.err;
+  }
+  const Outcome full = Run("check s.toml >/dev/full");
+  EXPECT_NE(full.err.find("cannot write standard output: No space left on device"),
+            std::string::npos)
+      << full.err;
+  // Given a device that takes it, as before.
+  EXPECT_EQ(Run("check s.toml >/dev/null").status, 0);
+}
+
+// The same for -o FILE: a device is written in place (it cannot be renamed over) and its
+// failure said. /dev/full is reached through a link in the test's folder: a regression that
+// renamed over the path given must not replace the machine's /dev/full (tests may run as root).
+TEST_F(CommandLine, OutputFileThatCannotBeWrittenIsAnError) {
+  fs::copy_file(kBodyAboveAnchor, dir_ / "above.txt");
+  fs::create_symlink("/dev/full", dir_ / "full");
+  for (const std::string command :
+       {"convert above.txt -o full", "offset above.txt --points 3 -o full"}) {
+    const Outcome o = Run(command);
+    EXPECT_EQ(o.status, 1) << command << ": " << o.err;
+    EXPECT_NE(o.err.find("cannot write full: No space left on device"), std::string::npos)
+        << command << ": " << o.err;
+    EXPECT_EQ(o.err.find("wrote"), std::string::npos) << command << ": " << o.err;
+    EXPECT_TRUE(fs::is_symlink(dir_ / "full")) << command;
+    EXPECT_TRUE(fs::is_character_file(dir_ / "full")) << command;
+  }
+  // A device that takes it (through a link too); a link to a file, written through the link
+  // (which stays).
+  fs::create_symlink("/dev/null", dir_ / "null");
+  EXPECT_EQ(Run("convert above.txt -o null").status, 0);
+  EXPECT_TRUE(fs::is_character_file(dir_ / "null"));
+  std::ofstream(dir_ / "old.toml") << "old\n";
+  fs::create_symlink("old.toml", dir_ / "link.toml");
+  const Outcome o = Run("convert above.txt -o link.toml");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.toml"));
+  EXPECT_NE(ReadText(dir_ / "old.toml").find("[[line]]"), std::string::npos);
+}
+
+// `convert X.txt -o X.txt` and `offset S.toml -o S.toml` replaced their input with their output.
+// -o naming an input, however spelled, is refused before anything is written (status 2),
+// naming both; the input stays as it was.
+TEST_F(CommandLine, OutputOverAnInputIsRefused) {
+  fs::copy_file(kBodyAboveAnchor, dir_ / "above.txt");
+  const std::string text = ReadText(dir_ / "above.txt");
+  fs::create_symlink("above.txt", dir_ / "link.txt");
+  fs::create_hard_link(dir_ / "above.txt", dir_ / "hard.txt");
+  for (const std::string command : {"convert", "offset"}) {
+    for (const std::string& out : std::vector<std::string>{
+             "above.txt", "./above.txt", "link.txt", "hard.txt", (dir_ / "above.txt").string()}) {
+      const Outcome o = Run(command + " above.txt -o '" + out + "'");
+      EXPECT_EQ(o.status, 2) << command << " -o " << out << ": " << o.err;
+      EXPECT_NE(o.err.find("-o: \"" + out + "\" is the input file \"above.txt\""),
+                std::string::npos)
+          << command << " -o " << out << ": " << o.err;
+      EXPECT_EQ(ReadText(dir_ / "above.txt"), text) << command << " -o " << out;
+    }
+  }
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.txt"));
+  // A scene's motion table is an input too.
+  const fs::path system = fs::path(CABLEFILM_SOURCE_DIR) / "tests" / "scenes" / "system";
+  for (const char* name : {"turning_platform.toml", "turning_platform.csv"})
+    fs::copy_file(system / name, dir_ / name);
+  const std::string table = ReadText(dir_ / "turning_platform.csv");
+  const Outcome o = Run("offset turning_platform.toml -o turning_platform.csv");
+  EXPECT_EQ(o.status, 2) << o.err;
+  EXPECT_NE(o.err.find("is the input file"), std::string::npos) << o.err;
+  EXPECT_EQ(ReadText(dir_ / "turning_platform.csv"), table);
+  // Another file is written.
+  EXPECT_EQ(Run("convert above.txt -o above.toml").status, 0);
+  EXPECT_NE(ReadText(dir_ / "above.toml").find("[[line]]"), std::string::npos);
+}
+
+// `--no-film` still refused a long run for its film ("film.speed: ... 3.6e6 frames"). The frame
+// count is the film's: without one nothing counts it; `check`, which has no --no-film, refuses
+// what `run` would do with the scene's film.
+TEST_F(CommandLine, NoFilmRunsWhatTheFilmCouldNotShow) {
+  Scene("long.toml", "duration = 2.0", "duration = 120000.0");
+  std::string text = ReadText(dir_ / "long.toml");
+  text = Replace(text, "state = \"straight\"", "state = \"equilibrium\"");
+  text = Replace(text, "interval = 0.05\nfilm = false", "interval = 1000.0\nfilm = true");
+  std::ofstream(dir_ / "long.toml", std::ios::binary) << text;
+  const Outcome run = Run("run long.toml --no-film --out out");
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "run_report.toml"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "film.mp4"));
+  for (const char* command : {"check long.toml", "run long.toml --out film"}) {
+    const Outcome o = Run(command);
+    EXPECT_EQ(o.status, 1) << command << ": " << o.err;
+    EXPECT_NE(o.err.find("long.toml: film.speed: "), std::string::npos) << command << ": " << o.err;
+    EXPECT_NE(o.err.find("3.6e6 frames"), std::string::npos) << command << ": " << o.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "film"));
+}
+
 }  // namespace

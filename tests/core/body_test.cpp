@@ -326,6 +326,32 @@ TEST(BodyStatics, FreeBodyUnderASteadyForceSitsOnTheOffsetCurve) {
   EXPECT_GT(curve[1].restoring, 1e4);   // a real load: the legs' pull changes by a tenth
 }
 
+// The offset curve's heading is in degrees, a turn at most either way: 1e308 degrees (from
+// Python) gave NaN loads. Every front end gets the refusal from here, naming the heading.
+TEST(BodyStatics, OffsetCurveTakesHeadingsWithinATurn) {
+  const Platform p;
+  const Model held = p.System(BodyKind::kHeld);
+  for (double heading : std::vector<double>{1e308, -1e308, -360.5, NAN, INFINITY}) {
+    try {
+      OffsetCurve(held, 0, Vec6::Zero(), heading, {1.0});
+      ADD_FAILURE() << "heading " << heading << " taken";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("heading: expected an angle from -360 to 360 degrees"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  // A whole turn either way is no turn; a quarter turn is +z.
+  const double along_x = OffsetCurve(held, 0, Vec6::Zero(), 0.0, {1.0})[0].restoring;
+  EXPECT_GT(along_x, 0.0);
+  for (double turn : {360.0, -360.0})
+    EXPECT_NEAR(OffsetCurve(held, 0, Vec6::Zero(), turn, {1.0})[0].restoring, along_x,
+                1e-6 * along_x);
+  const std::vector<OffsetPoint> along_z = OffsetCurve(held, 0, Vec6::Zero(), 90.0, {1.0});
+  EXPECT_LT(along_z[0].load.load[2], 0.0);  // pulled back towards -z
+  EXPECT_GT(along_z[0].restoring, 0.0);
+}
+
 // The platform in a surface current along Horizontal(0.6) with a quadratic damping in x and z
 // (a drag 0.5 rho CdA: CdA 80 m^2), pushed at rest in the flow by B_2 |c_k| c_k on each axis.
 constexpr double kCurrent = 0.5;  // [m/s]

@@ -368,6 +368,17 @@ class BodyTools(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "offsets"):
             cablefilm.offset_curve(PLATFORM, offsets=[float("nan")])
 
+    def test_heading_is_checked_as_the_commands(self):
+        # 1e308 degrees gave NaN loads; the command line refuses beyond a turn: one check, the
+        # offset curve's own.
+        for heading in (1e308, -361.0, float("nan")):
+            with self.assertRaisesRegex(ValueError,
+                                        "heading: expected an angle from -360 to 360 degrees"):
+                cablefilm.offset_curve(PLATFORM, heading=heading, offsets=[0.0])
+        status, _, stderr = cli("offset", PLATFORM, "--heading", "1e308")
+        self.assertEqual(status, 2)
+        self.assertIn("--heading: expected a number from -360 to 360 degrees", stderr)
+
 
 class ScenesOfLines(unittest.TestCase):
     """The Scene of several lines: its names, its keys read and set as a line's are, clear

@@ -13,6 +13,7 @@
 #include "run/initial_state.h"
 #include "run/time_grid.h"
 #include "scene/build_model.h"
+#include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "scene_line.h"
 
@@ -44,6 +45,19 @@ TEST(StartDuration, FiveRampTimesOfTheSlowestRamp) {
   // Nothing moves, or only a table moves: no start.
   EXPECT_EQ(StartDuration(LineOf(Scene("catenary.toml"))), 0.0);
   EXPECT_EQ(StartDuration(LineOf(Scene("ship_table.toml"))), 0.0);
+}
+
+// The slowest ramp the loader takes starts in finite time (5 / nu: 5e9 s), an end's and the
+// waves' alike, so the run's report says a number; a slower one is refused by the loader.
+TEST(StartDuration, FiniteForEveryRampTheLoaderTakes) {
+  SceneDef p63 = Scene("polachek1963.toml");
+  p63.points[1].motion.ramp_rate = kMinRampRate;
+  EXPECT_DOUBLE_EQ(StartDuration(LineOf(p63)), 5 / kMinRampRate);
+  const TimeGrid g = ChooseLineGrid(LineOf(p63), p63.simulation, 1.0 / 30);
+  EXPECT_TRUE(std::isfinite(g.options.start_end));
+  SceneDef mooring = Scene("grounded_mooring.toml");
+  mooring.waves.ramp_rate = kMinRampRate;
+  EXPECT_DOUBLE_EQ(StartDuration(LineOf(mooring)), 5 / kMinRampRate);
 }
 
 TEST(StartDuration, TheTimeGridUsesItAndTheScenesKeys) {

@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/waves.h"
 #include "scene/build_model.h"
+#include "scene/film_settings.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "core/inputs.h"
@@ -547,14 +548,40 @@ TEST(SceneLoader, RunCountsHaveLimits) {
               {"6e12 steps", "at most 1e9", "at least 6e-8 s"});
   const SceneDef fine = ParseScene(With("time_step = \"auto\"", "time_step = 1e-7"), kFile);
   EXPECT_EQ(fine.simulation.time_step, 1e-7);
-  // [film] speed = 1e-300 wrote a film of 0 frames and said "wrote film.mp4".
-  const std::string film = With("film = false", "film = true\ninterval = 0.05");
-  ExpectError(film + "[film]\nspeed = 1e-300\n", "film.speed",
-              {"frames", "expected 1 to 1e6 frames", "a speed from 0.0018 to 1800"});
-  ExpectError(film + "[film]\nspeed = 1e5\n", "film.speed", {"make 0 frames"});
   // Without an interval the rows follow the frames: named by the film key.
   ExpectError(With("film = false", "film = true") + "[film]\nspeed = 1e-300\n", "film.speed",
               {"rows"});
+}
+
+// The film's frame count is the film's: checked where a film is made (ResolveFilm, which
+// `run`, `compare`, `check` and the Python module call), not by the loader, so that a run
+// without its film (--no-film) is never refused for it.
+void ExpectFilmError(const std::string& text, const std::string& key,
+                     const std::vector<std::string>& expected) {
+  const SceneDef scene = ParseScene(text, kFile);
+  try {
+    ResolveFilm(scene, {}, kCommandLineNames);
+    ADD_FAILURE() << "no error for key " << key;
+  } catch (const Error& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(std::string(kFile) + ": " + key + ": "), std::string::npos) << msg;
+    for (const std::string& s : expected)
+      EXPECT_NE(msg.find(s), std::string::npos) << "\"" << s << "\" not in: " << msg;
+  }
+}
+
+TEST(SceneLoader, FilmFramesAreCountedForAFilmOnly) {
+  // [film] speed = 1e-300 wrote a film of 0 frames and said "wrote film.mp4".
+  const std::string film = With("film = false", "film = true\ninterval = 0.05");
+  ExpectFilmError(film + "[film]\nspeed = 1e-300\n", "film.speed",
+                  {"frames", "expected 1 to 1e6 frames", "a speed from 0.0018 to 1800"});
+  ExpectFilmError(film + "[film]\nspeed = 1e5\n", "film.speed", {"make 0 frames"});
+  // A long run with the scene's film on: 120000 s at 30 frames/s is 3.6e6 frames, too many
+  // for a film, yet the scene loads (`run --no-film` runs it).
+  const std::string longer = With("duration = 60.0", "duration = 120000.0",
+                                  With("film = false", "film = true\ninterval = 1000.0"));
+  EXPECT_NO_THROW(ParseScene(longer, kFile));
+  ExpectFilmError(longer, "film.speed", {"3.6e6 frames", "expected 1 to 1e6 frames"});
   // No film: its frame count does not matter (but its keys' own ranges do).
   EXPECT_NO_THROW(ParseScene(With("film = false", "film = false\ninterval = 0.05") +
                                  "[film]\nspeed = 1e5\n",
@@ -835,6 +862,21 @@ TEST(SceneLoader, CurrentProfile) {
   ExpectError(With("current = 0.0", "current = [[0, \"fast\"]]"), key + "[0]", {"speed in m/s"});
   ExpectError(With("current = 0.0", "current = \"fast\""), key,
               {"a speed in m/s", "or a profile [[y, speed], ...]"});
+}
+
+// ramp_rate = 1e-308 (above 0, as documented) made the start last 5 / nu = inf s, written as
+// start_end = inf into run_report.toml: a ramp is from kMinRampRate (1e-9 1/s, slower than any
+// run the loader takes) to kMaxRampRate, ends and waves alike.
+TEST(SceneLoader, RampRatesKeepTheStartFinite) {
+  for (const char* tiny : {"1e-308", "1e-300", "9.9e-10"}) {
+    ExpectError(With("ramp_rate = 0.5", std::string("ramp_rate = ") + tiny), "ends.end.ramp_rate",
+                {"expected a positive number in 1/s from 1e-9 to 1e6", std::string("got ") + tiny});
+    ExpectError(kBase + "\n[waves]\nheight = 2\nperiod = 8\ndepth = 50\nramp_rate = " + tiny +
+                    "\n",
+                "waves.ramp_rate", {"from 1e-9 to 1e6"});
+  }
+  const SceneDef slowest = ParseScene(With("ramp_rate = 0.5", "ramp_rate = 1e-9"), kFile);
+  EXPECT_EQ(slowest.points[1].motion.ramp_rate, kMinRampRate);
 }
 
 // Issue 10, part 3: [waves], and an end that follows them.
