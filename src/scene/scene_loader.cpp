@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "scene/input_file.h"
+#include "scene/key_source.h"
 #include "scene/moordyn_convert.h"
 #include "scene/moordyn_file.h"
 #include "scene/scene_limits.h"
@@ -64,16 +65,21 @@ SceneDef LoadScene(const std::string& path) {
   }
   SceneDef scene;
   std::vector<std::string> warnings;
+  KeySources sources;
   const MoorDynSystem system = ReadMoorDynText(text, path);
-  text = MoorDynToToml(system, &warnings);
+  text = MoorDynToToml(system, &warnings, &sources);
   try {
     scene = ParseScene(text, path);
   } catch (const Error& e) {
-    // The line numbers are the converted scene's: `cablefilm convert` shows it.
+    // The message's line is the converted scene's: told at the file's row and column instead,
+    // else pointed to `cablefilm convert`, which shows that scene.
+    const std::string told = MoorDynKeyMessage(e.what(), path, sources);
+    if (!told.empty()) throw Error(told);
     throw Error(std::string(e.what()) + " (in the scene converted from this MoorDyn file: "
                 "'cablefilm convert " + EscapeText(path) + "' shows it)");
   }
   scene.from_moordyn = true;
+  scene.sources = std::move(sources);
   scene.warnings = system.warnings;
   scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());
   return scene;
