@@ -43,11 +43,25 @@ bool IsMoorDynText(const std::string& text) {
   return false;
 }
 
-std::string MoorDynSceneText(const std::string& path, std::vector<std::string>* warnings) {
-  const MoorDynSystem system = ReadMoorDynText(ReadSceneFile(path), path);
+namespace {
+
+std::string ConvertMoorDynText(const std::string& text, const std::string& path,
+                               std::vector<std::string>* warnings) {
+  const MoorDynSystem system = ReadMoorDynText(text, path);
   // The reader's warnings first, then the conversion's (as LoadScene and the scene's header).
   if (warnings) warnings->insert(warnings->end(), system.warnings.begin(), system.warnings.end());
   return MoorDynToToml(system, warnings);
+}
+
+}  // namespace
+
+std::string MoorDynSceneText(const std::string& path, std::vector<std::string>* warnings) {
+  return ConvertMoorDynText(ReadSceneFile(path), path, warnings);
+}
+
+std::string EditableSceneText(const std::string& path, std::vector<std::string>* warnings) {
+  const std::string text = ReadSceneFile(path);
+  return IsMoorDynText(text) ? ConvertMoorDynText(text, path, warnings) : text;
 }
 
 SceneDef LoadScene(const std::string& path) {
