@@ -33,8 +33,9 @@ Command DeclareConvertCommand(CLI::App& program, std::string* scene) {
   cmd->add_option("-o,--out", *out, "the scene file to write (default: standard output)")
       ->type_name("FILE");
   cmd->footer(
-      "'run' and 'check' read a MoorDyn file as it is, through this scene; MoorDyn's\n"
-      "z-up axes become cablefilm's y-up ones: (x, y, z) -> (x, z, -y). See docs/moordyn.md.");
+      "'run', 'check' and 'sweep' read a MoorDyn file as it is, through this scene (a sweep\n"
+      "sets its keys); MoorDyn's z-up axes become cablefilm's y-up ones: (x, y, z) ->\n"
+      "(x, z, -y). See docs/moordyn.md.");
   return {cmd, [scene, out] { return ConvertCommand(*scene, *out); }};
 }
 

@@ -268,7 +268,9 @@ class Sweep {
       : scene_path_(std::move(scene_path)), options_(o) {}
 
   int Run() {
-    const std::string text = ReadSceneFile(scene_path_);
+    // A MoorDyn file is swept through its equivalent scene: the keys are the scene's.
+    std::vector<std::string> warnings;
+    const std::string text = EditableSceneText(scene_path_, &warnings);
     SweepCases listed;
     if (!options_.cases_csv.empty()) listed = ReadCasesCsv(options_.cases_csv);
     cases_ = ExpandCases(listed, options_.sets);
@@ -314,6 +316,7 @@ class Sweep {
     }
     outcomes_.assign(n, CaseOutcome());
     WriteSummary();
+    for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
     std::printf("sweep: %zu case%s of %s (%s) in %s\n", n, n == 1 ? "" : "s",
                 EscapeText(scene_path_).c_str(), KeysText().c_str(),
                 EscapeText(dir_.string()).c_str());

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "live/content_disposition.h"
 #include "live/page_assets.h"
 
 namespace cablefilm {
@@ -505,8 +506,8 @@ struct LiveServer::Impl {
       return 200;
     }
     if (uri == "/snapshot.png") {
-      const std::string name = "Content-Disposition: attachment; filename=\"" +
-                               session.scene_name() + "-t" + std::to_string(frame_t()) + ".png\"\r\n";
+      const std::string name =
+          ContentDisposition(session.scene_name() + "-t" + std::to_string(frame_t()) + ".png");
       if (IsHead(c)) {
         SendBody(c, 200, "image/png", "", name);
         return 200;
@@ -556,10 +557,10 @@ struct LiveServer::Impl {
   }
 
   int HandleTimeseries(mg_connection* c) {
-    const std::string name = session.scene_name() + "-live-timeseries.csv";
+    const std::string name = ContentDisposition(session.scene_name() + "-live-timeseries.csv");
     mg_printf(c,
               "HTTP/1.1 200 OK\r\nContent-Type: text/csv\r\nCache-Control: no-store\r\n"
-              "Content-Disposition: attachment; filename=\"%s\"\r\nConnection: close\r\n\r\n",
+              "%sConnection: close\r\n\r\n",
               name.c_str());
     if (IsHead(c)) return 200;
     session.ReadTimeseries([&](const char* data, std::size_t size) {

@@ -1,8 +1,5 @@
 #include "python/scene_handle.h"
 
-#include <fstream>
-#include <sstream>
-
 #include "core/error.h"
 #include "scene/build_model.h"
 #include "scene/scene_edit.h"
@@ -30,11 +27,14 @@ SceneHandle SceneHandle::FromFile(const std::string& path) {
     throw SceneProblem(SceneErrorMessage(path, e.what()));
   }
   // The loader has read it whole (a regular file, within the size limit): its text again, for
-  // later edits.
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return Checked(text.str(), path, std::move(def));
+  // later edits (a MoorDyn file's equivalent scene, whose keys are edited).
+  std::string text;
+  try {
+    text = EditableSceneText(path, nullptr);
+  } catch (const Error& e) {
+    throw SceneProblem(SceneErrorMessage(path, e.what()));
+  }
+  return Checked(std::move(text), path, std::move(def));
 }
 
 SceneHandle SceneHandle::FromText(const std::string& text, const std::string& path) {

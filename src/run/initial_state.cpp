@@ -5,6 +5,7 @@
 
 #include "core/cancel.h"
 #include "core/error.h"
+#include "scene/key_source.h"
 #include "scene/scene_limits.h"
 #include "scene/text_escape.h"
 
@@ -17,7 +18,8 @@ namespace {
 // said ok, and `run` stopped at t = 0 with a blow-up that named no key. Refused here, where both
 // make the initial state, naming the key at fault: the heaviest weight's mass when the weights
 // weigh more than the cable in the fluid and the cable alone would not stretch the link that
-// far, else the stretched link's material's youngs_modulus.
+// far, else the stretched link's material's youngs_modulus (of a MoorDyn file: the row and
+// column it came from, KeyPlace).
 // `line` is the line's key ("cable", "line[i]": keys cable.weight[k]), `which` " of line[i]
 // (\"its name\")" in a scene of several lines, else "".
 void CheckInitialStretch(const SceneDef& scene, const std::string& line, const std::string& which,
@@ -50,9 +52,14 @@ void CheckInitialStretch(const SceneDef& scene, const std::string& line, const s
   const int material_index = sections[static_cast<std::size_t>(section)].material;
   const MaterialDef& material = scene.materials[static_cast<std::size_t>(material_index)];
   const std::string modulus_key = "material[" + std::to_string(material_index) + "].youngs_modulus";
-  const std::string modulus = modulus_key + " = " + FormatNumber(material.youngs_modulus) +
-                              " Pa of " + QuoteText(material.name);
   const double ea = m.line.axial_stiffness[worst];
+  // A MoorDyn file names its stiffness by its row's EA, the scene by the modulus.
+  const std::string modulus =
+      scene.sources.count(modulus_key)
+          ? KeyName(scene, modulus_key) + " = " + FormatNumber(ea) + " N of " +
+                QuoteText(material.name)
+          : modulus_key + " = " + FormatNumber(material.youngs_modulus) + " Pa of " +
+                QuoteText(material.name);
   const std::string start = scene.initial == InitialStateKind::kEquilibrium
                                 ? "the static equilibrium at t = 0"
                                 : "the straight start at t = 0";
@@ -63,7 +70,7 @@ void CheckInitialStretch(const SceneDef& scene, const std::string& line, const s
   std::string key, cure;
   if (weights_at_fault) {
     key = line + ".weight[" + std::to_string(heaviest) + "].mass";
-    cure = "a lighter weight (" + key + " = " +
+    cure = "a lighter weight (" + KeyName(scene, key) + " = " +
            FormatNumber(weights[static_cast<std::size_t>(heaviest)].mass) +
            " kg, its net weight " + FormatNumber(heaviest_weight) + " N) or a stiffer material (" +
            modulus + ")";
@@ -71,7 +78,7 @@ void CheckInitialStretch(const SceneDef& scene, const std::string& line, const s
     key = modulus_key;
     cure = "a stiffer material (" + modulus + ") or a lighter load";
   }
-  throw Error(EscapeText(scene.path) + ": " + key + ": " + start + " stretches link " +
+  throw Error(KeyPlace(scene, key) + ": " + start + " stretches link " +
               std::to_string(worst) + " (stations " + std::to_string(worst) + "-" +
               std::to_string(worst + 1) + ", section " + std::to_string(section) + ")" + which +
               " to " +
@@ -134,8 +141,9 @@ std::vector<State> MakeInitialState(const SceneDef& scene, Model& model, const T
   for (std::size_t i = 0; i < model.lines.size() && i < scene.lines.size(); ++i) {
     const LineDef& line = scene.lines[i];
     // A [[line]] is named (the material's key does not say which line it is), the [cable] not.
-    const std::string which =
-        line.key == "cable" ? "" : " of " + line.key + " (" + QuoteText(line.name) + ")";
+    const std::string which = line.key == "cable" ? ""
+                              : " of " + KeyName(scene, line.key) + " (" +
+                                    QuoteText(line.name) + ")";
     CheckInitialStretch(scene, line.key, which, line.sections, line.weights, model.lines[i], states[i]);
   }
   if (report) *report = r;

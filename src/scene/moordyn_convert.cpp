@@ -49,31 +49,37 @@ void CheckSystem(const MoorDynSystem& system, const std::string& file) {
   CheckMoorDynReferences(file, &copy);
 }
 
-// `used`: a line of LINES is of this type (what a type no line uses has does not matter).
-void WriteMaterial(const MoorDynLineType& t, bool used, MoorDynTomlOut* out) {
+// Line type `index` (its row is index + 1). `used`: a line of LINES is of this type (what a
+// type no line uses has does not matter).
+void WriteMaterial(const MoorDynLineType& t, std::size_t index, bool used, MoorDynTomlOut* out) {
   const double area = M_PI * t.diameter * t.diameter / 4;  // m^2
   const std::string name = "LINE TYPES \"" + t.name + "\": ";
   out->text << "\n[[material]]                      # "
             << EscapeText("LINE TYPES \"" + t.name + "\", line " + std::to_string(t.line))
             << "\n";
-  out->Key("name", TomlString(t.name), "TypeName");
-  out->Key("diameter", TomlNumber(t.diameter), "Diam, m: volume-equivalent (buoyancy, drag)");
-  out->Key("area", TomlNumber(area), "pi d^2 / 4, m^2: the volume-equivalent section");
-  out->Key("mass_per_length", TomlNumber(t.mass_per_length), "Mass/m, kg/m");
+  out->Table("material[" + std::to_string(index) + "]", t.line,
+             "LINE TYPES row " + std::to_string(index + 1));
+  out->Key("name", TomlString(t.name), "TypeName", "TypeName");
+  out->Key("diameter", TomlNumber(t.diameter), "Diam, m: volume-equivalent (buoyancy, drag)",
+           "Diam");
+  out->Key("area", TomlNumber(area), "pi d^2 / 4, m^2: the volume-equivalent section", "Diam");
+  out->Key("mass_per_length", TomlNumber(t.mass_per_length), "Mass/m, kg/m", "Mass/m");
   out->Key("youngs_modulus", TomlNumber(t.ea / area),
-           name + "EA " + FormatNumber(t.ea) + " N / area, Pa");
-  out->Key("drag_coefficient", TomlNumber(t.cd), "Cd, normal, on d l");
-  out->Key("added_mass_coefficient", TomlNumber(t.ca), "Ca, normal");
+           name + "EA " + FormatNumber(t.ea) + " N / area, Pa", "EA");
+  out->Key("drag_coefficient", TomlNumber(t.cd), "Cd, normal, on d l", "Cd");
+  out->Key("added_mass_coefficient", TomlNumber(t.ca), "Ca, normal", "Ca");
   if (t.cd_ax != 0)
-    out->Key("tangential_drag_coefficient", TomlNumber(t.cd_ax), "CdAx, along, on pi d l");
+    out->Key("tangential_drag_coefficient", TomlNumber(t.cd_ax), "CdAx, along, on pi d l",
+             "CdAx");
   if (t.ca_ax != 0)
-    out->Key("tangential_added_mass_coefficient", TomlNumber(t.ca_ax), "CaAx, along");
+    out->Key("tangential_added_mass_coefficient", TomlNumber(t.ca_ax), "CaAx, along", "CaAx");
   if (t.ba >= 0)
     out->Key("axial_damping", TomlNumber(t.ba / area),
-             name + "BA " + FormatNumber(t.ba) + " N s / area, Pa s");
+             name + "BA " + FormatNumber(t.ba) + " N s / area, Pa s", "BA/-zeta");
   else
     out->Key("axial_damping_ratio", TomlNumber(-t.ba),
-             name + "BA/-zeta " + FormatNumber(t.ba) + ": a fraction of critical damping");
+             name + "BA/-zeta " + FormatNumber(t.ba) + ": a fraction of critical damping",
+             "BA/-zeta");
   if (!used) return;
   if (t.ei != 0)
     out->Warn(t.line, name + "EI " + FormatNumber(t.ei) + " N m^2: bending stiffness ignored");
@@ -103,15 +109,15 @@ std::string FixedReason(const MoorDynPoint& p) {
 // 0.5 rho CdA |u| u is cablefilm's per-axis rho/2 C S |u| u_i with C = 1, S = CdA on every
 // axis, and its added mass rho Ca V an added volume Ca V on every axis.
 void WriteFreePoint(const MoorDynPoint& p, MoorDynTomlOut* out) {
-  if (p.mass > 0) out->Key("mass", TomlNumber(p.mass), "Mass, kg");
-  if (p.volume > 0) out->Key("volume", TomlNumber(p.volume), "Volume, m^3: buoyancy");
+  if (p.mass > 0) out->Key("mass", TomlNumber(p.mass), "Mass, kg", "Mass");
+  if (p.volume > 0) out->Key("volume", TomlNumber(p.volume), "Volume, m^3: buoyancy", "Volume");
   const double added = p.ca * p.volume;  // m^3
   if (added > 0)
     out->Key("added_volume", Vector({added, added, added}),
-             "Ca " + FormatNumber(p.ca) + " x Volume, m^3");
+             "Ca " + FormatNumber(p.ca) + " x Volume, m^3", "Ca, Volume");
   if (p.cda > 0) {
-    out->Key("drag_coefficient", "[1.0, 1.0, 1.0]", "with drag_area: CdA on every axis");
-    out->Key("drag_area", Vector({p.cda, p.cda, p.cda}), "CdA, m^2");
+    out->Key("drag_coefficient", "[1.0, 1.0, 1.0]", "with drag_area: CdA on every axis", "CdA");
+    out->Key("drag_area", Vector({p.cda, p.cda, p.cda}), "CdA, m^2", "CdA");
   }
 }
 
@@ -120,33 +126,41 @@ void WritePoint(const MoorDynSystem& system, const MoorDynPoint& p, MoorDynTomlO
   const MoorDynVec global = MoorDynPointPosition(system, p);
   out->text << "\n[[point]]                         # "
             << EscapeText(Row("POINTS", p.id, p.line)) << "\n";
-  out->Key("name", TomlString(std::to_string(p.id)), "MoorDyn's point ID");
+  out->Table("point[" + std::to_string(p.id - 1) + "]", p.line,
+             "POINTS row " + std::to_string(p.id));
+  out->Key("name", TomlString(std::to_string(p.id)), "MoorDyn's point ID", "ID");
   if (p.attachment == MoorDynAttachment::kBody) {  // in the body's axes, moving with it
     const MoorDynBody& b = system.bodies[static_cast<std::size_t>(p.body - 1)];
     out->Key("body", TomlString(std::to_string(p.body)),
-             "Body" + std::to_string(p.body) + " (" + AttachmentName(b.attachment) + ")");
+             "Body" + std::to_string(p.body) + " (" + AttachmentName(b.attachment) + ")",
+             "Attachment");
     out->Key("position", Vector(MoorDynToCablefilm(p.position)),
-             "MoorDyn's body frame " + Triple(p.position) + "; at rest " + Triple(global));
+             "MoorDyn's body frame " + Triple(p.position) + "; at rest " + Triple(global),
+             "X, Y, Z");
     return;
   }
   out->Key("motion", TomlString(free ? "free" : "fixed"),
-           free ? "Free" : FixedReason(p));
+           free ? "Free" : FixedReason(p), "Attachment");
   out->Key("position", Vector(MoorDynToCablefilm(global)),
-           "MoorDyn " + Triple(global) + (free ? ", a first guess" : ""));
+           "MoorDyn " + Triple(global) + (free ? ", a first guess" : ""), "X, Y, Z");
   if (free) WriteFreePoint(p, out);
 }
 
 void WriteLine(const MoorDynLine& l, MoorDynTomlOut* out) {
   out->text << "\n[[line]]                          # " << EscapeText(Row("LINES", l.id, l.line))
             << "\n";
-  out->Key("name", TomlString(std::to_string(l.id)), "MoorDyn's line ID");
+  const std::string key = "line[" + std::to_string(l.id - 1) + "]";
+  const std::string row = "LINES row " + std::to_string(l.id);
+  out->Table(key, l.line, row);
+  out->Key("name", TomlString(std::to_string(l.id)), "MoorDyn's line ID", "ID");
   out->Key("model", TomlString("elastic"));
-  out->Key("start", TomlString(std::to_string(l.point_a)), "AttachA: node 0");
-  out->Key("end", TomlString(std::to_string(l.point_b)), "AttachB");
+  out->Key("start", TomlString(std::to_string(l.point_a)), "AttachA: node 0", "AttachA");
+  out->Key("end", TomlString(std::to_string(l.point_b)), "AttachB", "AttachB");
   out->text << "\n[[line.section]]\n";
-  out->Key("material", TomlString(l.type), "LineType");
-  out->Key("length", TomlNumber(l.length), "UnstrLen, m");
-  out->Key("segments", std::to_string(l.segments), "NumSegs");
+  out->Table(key + ".section[0]", l.line, row);
+  out->Key("material", TomlString(l.type), "LineType", "LineType");
+  out->Key("length", TomlNumber(l.length), "UnstrLen, m", "UnstrLen");
+  out->Key("segments", std::to_string(l.segments), "NumSegs", "NumSegs");
 }
 
 std::string Header(const MoorDynSystem& system, const std::vector<std::string>& warnings) {
@@ -163,15 +177,17 @@ std::string Header(const MoorDynSystem& system, const std::vector<std::string>& 
 
 }  // namespace
 
-std::string MoorDynToToml(const MoorDynSystem& system, std::vector<std::string>* warnings) {
+std::string MoorDynToToml(const MoorDynSystem& system, std::vector<std::string>* warnings,
+                          KeySources* sources) {
   MoorDynTomlOut out;
   out.file = EscapeText(system.file);
   CheckSystem(system, out.file);
   WriteMoorDynEnvironment(system, &out);
-  for (const MoorDynLineType& t : system.line_types) {
+  for (std::size_t i = 0; i < system.line_types.size(); ++i) {
+    const MoorDynLineType& t = system.line_types[i];
     bool used = false;
     for (const MoorDynLine& l : system.lines) used = used || l.type == t.name;
-    WriteMaterial(t, used, &out);
+    WriteMaterial(t, i, used, &out);
   }
   WriteMoorDynBodies(system, MoorDynDensity(system), &out);
   for (const MoorDynPoint& p : system.points) WritePoint(system, p, &out);
@@ -179,6 +195,7 @@ std::string MoorDynToToml(const MoorDynSystem& system, std::vector<std::string>*
   std::vector<std::string> all = system.warnings;
   all.insert(all.end(), out.warnings.begin(), out.warnings.end());
   if (warnings) warnings->insert(warnings->end(), out.warnings.begin(), out.warnings.end());
+  if (sources) *sources = std::move(out.sources);
   return Header(system, all) + out.text.str();
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/key_source.h"
 #include "scene/moordyn_file.h"
 
 namespace cablefilm {
@@ -13,7 +14,9 @@ namespace cablefilm {
 // options cablefilm ignores, a seabed lowered to the deepest point, ...) is appended to
 // `warnings` (may be null) as "file:line: ..." and also listed in the text's header comment,
 // with the reader's warnings (system.warnings). Throws Error "file:line: ..." for what has no
-// equivalent yet: a free body.
-std::string MoorDynToToml(const MoorDynSystem& system, std::vector<std::string>* warnings);
+// equivalent yet: a free body. `sources` (may be null): the row and column of the file each key
+// came from, for messages about the scene.
+std::string MoorDynToToml(const MoorDynSystem& system, std::vector<std::string>* warnings,
+                          KeySources* sources = nullptr);
 
 }  // namespace cablefilm

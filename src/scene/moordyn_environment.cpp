@@ -27,6 +27,7 @@ struct Sourced {
   double value;
   std::string source;  // for the comment
   int line;            // 0: MoorDyn's default
+  std::string place;   // "OPTIONS name" (a default: "")
 };
 
 Sourced OptionOr(const MoorDynSystem& system, MoorDynOptionKind kind, double fallback,
@@ -34,8 +35,9 @@ Sourced OptionOr(const MoorDynSystem& system, MoorDynOptionKind kind, double fal
   std::string name;
   if (const MoorDynOption* option = FindMoorDynOption(system, kind, &name))
     return {MoorDynOptionValue(*option),
-            "OPTIONS " + name + ", line " + std::to_string(option->line), option->line};
-  return {fallback, "MoorDyn's default " + default_name, 0};
+            "OPTIONS " + name + ", line " + std::to_string(option->line), option->line,
+            "OPTIONS " + name};
+  return {fallback, "MoorDyn's default " + default_name, 0, ""};
 }
 
 // MoorDyn's seabed: flat at z = -WtrDpth, WtrDpth raised to the deepest point's depth when a
@@ -57,7 +59,7 @@ Sourced SeabedDepth(const MoorDynSystem& system, MoorDynTomlOut* out) {
               "of WtrDpth " + FormatNumber(depth.value) + " m (z = " + FormatNumber(z) +
               " m): the seabed is lowered to it, as MoorDyn does");
   return {-z, depth.source + ", the seabed lowered to point " + std::to_string(deepest->id) +
-                  " as MoorDyn does", depth.line};
+                  " as MoorDyn does", depth.line, depth.place};
 }
 
 // The diameter the seabed's pressures act on: cablefilm's stiffness and damping are per metre
@@ -88,8 +90,11 @@ Sourced WriteEnvironment(const MoorDynSystem& system, MoorDynTomlOut* out) {
   const Sourced g = OptionOr(system, MoorDynOptionKind::kGravity, kDefaultGravity, "g");
   const Sourced rho = OptionOr(system, MoorDynOptionKind::kDensity, kDefaultDensity, "rho");
   out->text << "\n[environment]\n";
+  out->Table("environment", 0, "");
   out->Key("gravity", TomlNumber(g.value), "m/s^2; " + g.source);
+  out->Source("gravity", g.line, g.place);
   out->Key("fluid_density", TomlNumber(rho.value), "kg/m^3; " + rho.source);
+  out->Source("fluid_density", rho.line, rho.place);
   return g;
 }
 
@@ -104,18 +109,23 @@ Sourced WriteSeabed(const MoorDynSystem& system, MoorDynTomlOut* out) {
     out->Warn(k.line, "kBot 0: MoorDyn's seabed has no stiffness; the scene has no seabed");
     out->text << "\n";
     out->Comment("No [seabed]: " + k.source + " is 0.");
-    return {-1.0, k.source, k.line};
+    return {-1.0, k.source, k.line, k.place};
   }
   const Sourced depth = SeabedDepth(system, out);
   const MoorDynLineType& type = SeabedLineType(system, out);
   const std::string d = " x d " + FormatNumber(type.diameter) + " m of \"" + type.name + "\"";
   out->text << "\n[seabed]                          # MoorDyn's: flat, at z = -WtrDpth\n";
+  out->Table("seabed", 0, "");
   out->Key("y", TomlNumber(-depth.value), "m, -WtrDpth; " + depth.source);
+  out->Source("y", depth.line, depth.place);
   out->Key("stiffness", TomlNumber(k.value * type.diameter),
            "N/m per m: kBot " + FormatNumber(k.value) + " Pa/m" + d + "; " + k.source);
+  out->Source("stiffness", k.line, k.place);
   out->Key("damping", TomlNumber(c.value * type.diameter),
            "N s/m per m: cBot " + FormatNumber(c.value) + " Pa s/m" + d + "; " + c.source);
+  out->Source("damping", c.line, c.place);
   out->Key("friction", TomlNumber(mu.value), mu.source);
+  out->Source("friction", mu.line, mu.place);
   return depth;
 }
 
@@ -138,6 +148,7 @@ void WriteStillSurface(const MoorDynSystem& system, const Sourced& gravity, doub
     return;
   }
   out->text << "\n[waves]                           # MoorDyn's still water surface at z = 0\n";
+  out->Table("waves", 0, "");
   out->Key("height", "0.0", "m: still water; above the surface a line has no buoyancy, drag "
                             "or added mass, as MoorDyn's");
   out->Key("period", TomlNumber(kSomePeriod), "s: none in still water (a period is required)");

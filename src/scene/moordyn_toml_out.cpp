@@ -6,8 +6,22 @@
 
 namespace cablefilm {
 
+void MoorDynTomlOut::Table(const std::string& key, int line, const std::string& place) {
+  table = key;
+  row = {line, place};
+  if (line > 0) sources[key] = row;
+}
+
+void MoorDynTomlOut::Source(const std::string& key, int line, const std::string& place) {
+  if (line > 0) sources[table.empty() ? key : table + "." + key] = {line, place};
+}
+
 void MoorDynTomlOut::Key(const std::string& key, const std::string& value,
-                         const std::string& comment) {
+                         const std::string& comment, const std::string& columns) {
+  if (!columns.empty())
+    Source(key, row.line,
+           row.place + (columns.find(',') == std::string::npos ? ", column " : ", columns ") +
+               columns);
   std::string line = key + " = " + value;
   if (!comment.empty()) {
     constexpr std::size_t kCommentColumn = 34;  // lines up most comments

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/line_model.h"
+#include "scene/key_source.h"
 
 namespace cablefilm {
 
@@ -205,6 +206,7 @@ struct SceneDef {
   std::vector<std::string> warnings;  // what reading it left out (a MoorDyn file's EI, ...)
   bool from_moordyn = false;     // read from a MoorDyn input file (through the scene it converts
                                  // to): advice naming scene keys is not the file's to take
+  KeySources sources;            // a MoorDyn file's: the row and column of each key's value
   EnvironmentDef environment;
   SeabedDef seabed;
   WavesDef waves;

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/stability.h"
+#include "scene/key_source.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
@@ -51,9 +52,8 @@ std::string FilmFramesProblem(double span, double fps, double speed) {
 }
 
 void CheckModelLimits(const SceneDef& scene, const Model& model) {
-  const std::string file = EscapeText(scene.path);
   auto fail = [&](const std::string& key, const std::string& message) {
-    throw Error(file + ": " + key + ": " + message);
+    throw Error(KeyPlace(scene, key) + ": " + message);
   };
   for (std::size_t i = 0; i < model.lines.size(); ++i) {
     const LineModel& m = model.lines[i];

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "scene/input_file.h"
+#include "scene/key_source.h"
 #include "scene/moordyn_convert.h"
 #include "scene/moordyn_file.h"
 #include "scene/scene_limits.h"
@@ -42,11 +43,25 @@ bool IsMoorDynText(const std::string& text) {
   return false;
 }
 
-std::string MoorDynSceneText(const std::string& path, std::vector<std::string>* warnings) {
-  const MoorDynSystem system = ReadMoorDynText(ReadSceneFile(path), path);
+namespace {
+
+std::string ConvertMoorDynText(const std::string& text, const std::string& path,
+                               std::vector<std::string>* warnings) {
+  const MoorDynSystem system = ReadMoorDynText(text, path);
   // The reader's warnings first, then the conversion's (as LoadScene and the scene's header).
   if (warnings) warnings->insert(warnings->end(), system.warnings.begin(), system.warnings.end());
   return MoorDynToToml(system, warnings);
+}
+
+}  // namespace
+
+std::string MoorDynSceneText(const std::string& path, std::vector<std::string>* warnings) {
+  return ConvertMoorDynText(ReadSceneFile(path), path, warnings);
+}
+
+std::string EditableSceneText(const std::string& path, std::vector<std::string>* warnings) {
+  const std::string text = ReadSceneFile(path);
+  return IsMoorDynText(text) ? ConvertMoorDynText(text, path, warnings) : text;
 }
 
 SceneDef LoadScene(const std::string& path) {
@@ -64,16 +79,21 @@ SceneDef LoadScene(const std::string& path) {
   }
   SceneDef scene;
   std::vector<std::string> warnings;
+  KeySources sources;
   const MoorDynSystem system = ReadMoorDynText(text, path);
-  text = MoorDynToToml(system, &warnings);
+  text = MoorDynToToml(system, &warnings, &sources);
   try {
     scene = ParseScene(text, path);
   } catch (const Error& e) {
-    // The line numbers are the converted scene's: `cablefilm convert` shows it.
+    // The message's line is the converted scene's: told at the file's row and column instead,
+    // else pointed to `cablefilm convert`, which shows that scene.
+    const std::string told = MoorDynKeyMessage(e.what(), path, sources);
+    if (!told.empty()) throw Error(told);
     throw Error(std::string(e.what()) + " (in the scene converted from this MoorDyn file: "
                 "'cablefilm convert " + EscapeText(path) + "' shows it)");
   }
   scene.from_moordyn = true;
+  scene.sources = std::move(sources);
   scene.warnings = system.warnings;
   scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());
   return scene;

@@ -17,6 +17,9 @@ SceneDef LoadScene(const std::string& path);
 bool IsMoorDynText(const std::string& text);
 // The scene (TOML) equivalent to a MoorDyn input file; what it leaves out in `warnings`.
 std::string MoorDynSceneText(const std::string& path, std::vector<std::string>* warnings);
+// The scene text whose keys a sweep edits: a scene file's own, a MoorDyn file's equivalent scene
+// (MoorDynSceneText, its warnings in `warnings`), so that its keys are the scene's.
+std::string EditableSceneText(const std::string& path, std::vector<std::string>* warnings);
 // The text of a scene file, at most kMaxSceneBytes (checked while reading: /dev/zero is refused).
 std::string ReadSceneFile(const std::string& path);
 

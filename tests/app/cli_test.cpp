@@ -529,6 +529,62 @@ segments = 4
   EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.partial.csv"));
 }
 
+// A MoorDyn file's problems found after it is read, in the scene it converts to (the statics,
+// the built model's limits, a value out of the scene's range), are told at the file's row and
+// column, as the MoorDyn reader tells its own: never by a scene key the file does not have.
+TEST_F(CommandLine, MoorDynFileProblemsAfterItsImportNameItsRowsAndColumns) {
+  // The soft spring of the test above as a MoorDyn file: 200 kg on 1 m of EA = 1 kN in vacuum.
+  const std::string spring = R"(--------------------- MoorDyn Input File ---------------------
+A soft spring under a heavy bob, in vacuum
+---------------------- LINE TYPES -----------------------------------
+TypeName   Diam    Mass/m   EA       BA/-zeta   EI     Cd    Ca    CdAx   CaAx
+(name)     (m)     (kg/m)   (N)      (N-s/-)    (N-m^2) (-)  (-)   (-)    (-)
+spring     0.01    0.001    1000     0          0      1.2   1.0   0.0    0.0
+---------------------- POINTS ---------------------------------------
+ID   Attachment   X       Y      Z       Mass   Volume   CdA    Ca
+(#)  (-)          (m)     (m)    (m)     (kg)   (m^3)    (m^2)  (-)
+1    Fixed        0.0     0.0    0.0     0      0        0      0
+2    Free         0.0     0.0    -1.0    200    0        0      0
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA   AttachB   UnstrLen   NumSegs   LineOutputs
+(#)  (name)     (#)       (#)       (m)        (-)       (-)
+1    spring     1         2         1.0        4         -
+---------------------- OPTIONS --------------------------------------
+9.81      g         gravity (m/s^2)
+0.0       rho       vacuum
+100       WtrDpth   water depth (m)
+------------------------- need this line ----------------------------
+)";
+  std::ofstream(dir_ / "spring.txt", std::ios::binary) << spring;
+  // The bob held 3 m below a 1 m line: the ends alone stretch it three times.
+  std::ofstream(dir_ / "far.txt", std::ios::binary)
+      << Replace(spring, "2    Free         0.0     0.0    -1.0    200",
+                 "2    Fixed        0.0     0.0    -3.0    0  ");
+  // EA = 1e-6 N on 0.01 m: E = 0.0127 Pa, below the scene's 1 Pa.
+  std::ofstream(dir_ / "tiny.txt", std::ios::binary)
+      << Replace(spring, "0.001    1000     0", "0.001    1e-6     0");
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"spring.txt",
+       "spring.txt:6: LINE TYPES row 1, column EA: the static equilibrium at t = 0 stretches "
+       "link 0 (stations 0-1, section 0) of LINES row 1 (\"1\") to 2.96"},
+      {"spring.txt", "a stiffer material (LINE TYPES row 1, column EA = 1000 N of \"spring\")"},
+      {"far.txt", "far.txt:11: POINTS row 2, columns X, Y, Z: the ends are 3 m apart at t = 0"},
+      {"tiny.txt", "tiny.txt:6: LINE TYPES row 1, column EA (the scene's "
+                   "material[0].youngs_modulus): expected a positive number in Pa from 1 to "
+                   "1e13, got 0.0127324"}};
+  for (const auto& [scene, message] : cases) {
+    for (const std::string command : {"check", "run --no-film --out out"}) {
+      const Outcome o = Run(command + " " + scene);
+      EXPECT_EQ(o.status, 1) << command << " " << scene << ": " << o.out << o.err;
+      EXPECT_NE(o.err.find(message), std::string::npos) << command << ": " << o.err;
+      if (scene == "tiny.txt") continue;  // said in the scene's unit, its key in brackets
+      for (const char* key : {"material[", "line[", "point[", "cablefilm convert"})
+        EXPECT_EQ(o.err.find(key), std::string::npos) << command << ": " << o.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.csv"));
+}
+
 // tests/scenes/moordyn/body_above_anchor.txt: a free body given above the anchor it hangs
 // below. Newton from there cannot balance it (its one link passes through the anchor on the way); the statics' relaxation
 // (core/relaxation.h) finds the equilibrium. Hand values (moordyn_convert_test,

@@ -27,6 +27,9 @@ real program; each check failed against the server before these were fixed.
   film        a recording has one frame per step of the simulation (1/fps of simulated time at
               1x) from its first picture to the state at which it was stopped, exactly, however
               few pictures the machine could draw and encode meanwhile; the MP4 holds as many
+  names       a scene named with CR LF, a quote, a backslash and UTF-8 (x"\\ø CR LF Set-Cookie:
+              ...): its downloads carry one Content-Disposition each (an ASCII fallback and
+              the UTF-8 name percent-encoded) and no header of the name's making
 Prints one line per check and `N passed, M failed`; exits 1 on any failure. Waits poll with
 deadlines (generous: the sanitizer build is several times slower); none measures speed.
 """
@@ -639,6 +642,33 @@ def run(args):
             srv3.stop()
 
     step('film: as long as the time it covers, with frames dropped', film)
+
+    def names():
+        stem = 'x"\\\u00f8\r\nSet-Cookie: cf=evil\r\nX-A: 1'
+        scene = os.path.join(out_dir, stem + '.toml')
+        with open(args.scene, 'rb') as f, open(scene, 'wb') as g:
+            g.write(f.read())
+        srv5 = Server(args.cablefilm, scene, out_dir)
+        try:
+            fallback = 'x_____Set-Cookie: cf=evil__X-A: 1'
+            encoded = 'x%22%5C%C3%B8%0D%0ASet-Cookie%3A%20cf%3Devil%0D%0AX-A%3A%201'
+            for method in ('GET', 'HEAD'):
+                for path, tail in (('/timeseries.csv', '-live-timeseries.csv'),
+                                   ('/snapshot.png', '-t')):
+                    status, headers, _ = srv5.request(method, path)
+                    check(status == 200, f'{method} {path} answered {status}')
+                    check('set-cookie' not in headers and 'x-a' not in headers,
+                          f'{method} {path}: the name made headers: {headers}')
+                    got = headers.get('content-disposition', [])
+                    check(len(got) == 1, f'{method} {path}: Content-Disposition {got}')
+                    want = (f'attachment; filename="{fallback}{tail}',
+                            f"; filename*=UTF-8''{encoded}{tail}")
+                    check(got[0].startswith(want[0]) and want[1] in got[0],
+                          f'{method} {path}: Content-Disposition {got[0]!r}')
+        finally:
+            srv5.stop()
+
+    step('names: a hostile scene name makes no header of its own', names)
 
     failed = sum(1 for _, e in results if e)
     print(f'{len(results) - failed} passed, {failed} failed')

@@ -477,6 +477,27 @@ class Sweep(unittest.TestCase):
             single.update({k: row[k] for k in values})
             self.assertEqual(row["peak_tension"], cablefilm.run(single).peak_tension)
 
+    def test_sweep_of_a_moordyn_file(self):
+        # Its keys are those of its equivalent scene (`cablefilm convert`): the chain's 50 kg/m
+        # and twice that, as `cablefilm sweep` runs them.
+        leg = os.path.join(SOURCE, "tests", "scenes", "moordyn", "one_leg.txt")
+        self.assertEqual(cablefilm.load(leg)["material[0].mass_per_length"], 50.0)
+        rows = cablefilm.sweep(leg, {"material[0].mass_per_length": [50, 100]}, jobs=1)
+        out = workdir("sweep_moordyn")
+        status, stdout, stderr = cli("sweep", leg, "--set", "material[0].mass_per_length=50,100",
+                                     "--jobs", "1", "--out", out)
+        self.assertEqual(status, 0, stdout + stderr)
+        import csv
+        with open(os.path.join(out, "sweep.csv")) as f:
+            csv_rows = list(csv.DictReader(f))
+        self.assertEqual([r["status"] for r in rows], ["ok", "ok"])
+        for row, csv_row in zip(rows, csv_rows):
+            for name in ["peak_tension", "min_tension"]:
+                self.assertAlmostEqual(row[name], float(csv_row[name]),
+                                       delta=abs(row[name]) * 1e-9, msg=name)
+        self.assertEqual(rows[0]["peak_tension"], cablefilm.run(leg).peak_tension)
+        self.assertGreater(rows[1]["peak_tension"], 1.9 * rows[0]["peak_tension"])
+
     def test_refused_case(self):
         with self.assertRaises(cablefilm.SceneError) as caught:
             cablefilm.sweep(P63, {"environment.curent": [0]})

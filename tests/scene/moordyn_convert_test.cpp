@@ -179,6 +179,36 @@ TEST(MoorDynConvert, ThreeLegSpreadFollowsTheMapping) {
   EXPECT_TRUE(HasWarning(c.warnings, "three_leg_spread.txt:37: OPTIONS writeLog = 1: ignored"));
 }
 
+// Each key written from a row or an option knows the file's line, row and column it came from,
+// for messages about the scene (key_source.h); MoorDyn's defaults came from no row.
+TEST(MoorDynConvert, KeysKnowTheRowAndColumnTheyCameFrom) {
+  KeySources sources;
+  MoorDynToToml(ReadMoorDynFile(kDir + "three_leg_spread.txt"), nullptr, &sources);
+  auto place = [&](const std::string& key) {
+    const auto it = sources.find(key);
+    return it == sources.end() ? std::string("(none)")
+                               : std::to_string(it->second.line) + ": " + it->second.place;
+  };
+  EXPECT_EQ(place("material[1]"), "9: LINE TYPES row 2");
+  EXPECT_EQ(place("material[1].youngs_modulus"), "9: LINE TYPES row 2, column EA");
+  EXPECT_EQ(place("material[1].axial_damping"), "9: LINE TYPES row 2, column BA/-zeta");
+  EXPECT_EQ(place("material[0].axial_damping_ratio"), "8: LINE TYPES row 1, column BA/-zeta");
+  EXPECT_EQ(place("material[0].area"), "8: LINE TYPES row 1, column Diam");
+  EXPECT_EQ(place("point[4].motion"), "17: POINTS row 5, column Attachment");
+  EXPECT_EQ(place("point[6].position"), "20: POINTS row 7, columns X, Y, Z");
+  EXPECT_EQ(place("point[6].added_volume"), "20: POINTS row 7, columns Ca, Volume");
+  EXPECT_EQ(place("line[3]"), "27: LINES row 4");
+  EXPECT_EQ(place("line[3].start"), "27: LINES row 4, column AttachA");
+  EXPECT_EQ(place("line[3].section[0].length"), "27: LINES row 4, column UnstrLen");
+  EXPECT_EQ(place("environment.fluid_density"), "32: OPTIONS WtrDnsty");
+  EXPECT_EQ(place("seabed.y"), "33: OPTIONS WtrDpth");
+  EXPECT_EQ(place("seabed.stiffness"), "30: OPTIONS kBot");
+  EXPECT_EQ(place("seabed.friction"), "34: OPTIONS FrictionCoefficient");
+  EXPECT_EQ(place("environment.gravity"), "(none)");  // MoorDyn's default
+  EXPECT_EQ(place("waves.height"), "(none)");         // its still surface: from no row
+  EXPECT_EQ(place("line[3].model"), "(none)");
+}
+
 // A body's points: X0 + Rx(r0) Ry(p0) Rz(y0) p, then MoorDyn's axes to cablefilm's.
 TEST(MoorDynConvert, BodyPointsAreFixedAtTheBodysPose) {
   MoorDynBody body;

@@ -15,6 +15,9 @@ TEST is one of
                  key, with the message `check` gives for that case's scene
   cases          --cases CSV (times --set), values of every kind, a motion table's relative
                  file resolved from another folder, a blow-up case in the summary
+  moordyn        a MoorDyn file swept over one key of its equivalent scene: each case's scene is
+                 the one `cablefilm convert` writes with its value set, each row has the case's
+                 results, and the case of the file's own value is `cablefilm run` of the file
   interrupt      SIGINT while a case runs: the finished case stays whole, the running one
                  keeps its rows as .partial and is "interrupted", the rest "not run", exit 130
   dask           examples/dask_sweep.py on a local cluster of two workers writes the same
@@ -259,6 +262,44 @@ def test_cases(work):
           f'a blow-up is a row with its message, the sweep exits 1: {rows[1]["message"][:80]}...')
 
 
+def test_moordyn(work):
+    leg = os.path.join(ARGS.source_dir, 'tests', 'scenes', 'moordyn', 'one_leg.txt')
+    out = os.path.join(work, 'sweep')
+    # The chain's 50 kg/m (the file's) and twice that.
+    done = run(['sweep', leg, *sets('material[0].mass_per_length=50,100'), '--out', out], work)
+    if not check(done.returncode == 0, f'the sweep of a MoorDyn file exits 0 ({done.seconds:.2f} s)'):
+        print(done.stdout, done.stderr)
+        return
+    header, rows = read_csv(os.path.join(out, 'sweep.csv'))
+    check(header == ['case', 'folder', 'material[0].mass_per_length', 'status', 'message',
+                     *REPORT_KEYS], f'sweep.csv header: {header}')
+    check([(r['material[0].mass_per_length'], r['status']) for r in rows] ==
+          [('50', 'ok'), ('100', 'ok')], f'one row per case, each ok: {rows}')
+    converted = run(['convert', leg], work)
+    check(converted.returncode == 0, 'cablefilm convert of the file')
+    for row in rows:
+        want = tomllib.loads(converted.stdout)
+        set_key(want, 'material[0].mass_per_length', toml_value(row['material[0].mass_per_length']))
+        got = toml_load(os.path.join(out, row['folder'], 'scene.toml'))
+        check(got == want, f'case {row["case"]}: scene.toml is the converted scene with its value set')
+    # The file's own value: the file's own run, row for row.
+    single = os.path.join(work, 'single')
+    done = run(['run', leg, '--no-film', '--out', single], work)
+    if check(done.returncode == 0, 'cablefilm run of the MoorDyn file'):
+        cells = report_cells(toml_load(os.path.join(single, 'run_report.toml')))
+        check(all(rows[0][k] == cells[k] for k in REPORT_KEYS),
+              f'case 0 is the file\'s run: peak {rows[0]["peak_tension"]} N, minimum '
+              f'{rows[0]["min_tension"]} N (the run: {cells["peak_tension"]}, {cells["min_tension"]})')
+        with open(os.path.join(out, 'case_000', 'timeseries.csv'), 'rb') as a, \
+                open(os.path.join(single, 'timeseries.csv'), 'rb') as b:
+            check(a.read() == b.read(), 'case 0: timeseries.csv byte for byte as the file\'s run')
+    # Twice the chain's weight: its fairlead carries more than its first, every row.
+    peaks = [float(r['peak_tension']) for r in rows]
+    lows = [float(r['min_tension']) for r in rows]
+    check(peaks[0] > 1e4 and 1.9 * peaks[0] < peaks[1] < 2.5 * peaks[0] and lows[1] > lows[0] > 0,
+          f'the heavier chain is the more loaded: peaks {peaks} N, minima {lows} N')
+
+
 def test_interrupt(work):
     scene = os.path.join(ARGS.source_dir, 'scenes', 'polachek1963.toml')
     cases = os.path.join(work, 'cases.csv')
@@ -386,7 +427,8 @@ def test_dask(work):
 def main():
     global ARGS
     parser = argparse.ArgumentParser()
-    parser.add_argument('test', choices=['cross_product', 'refused', 'cases', 'interrupt', 'summary_only', 'dask'])
+    parser.add_argument('test', choices=['cross_product', 'refused', 'cases', 'moordyn', 'interrupt',
+                                         'summary_only', 'dask'])
     parser.add_argument('--cablefilm', required=True)
     parser.add_argument('--source-dir', required=True)
     parser.add_argument('--work-dir', required=True)
