@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <vector>
 #include <cstring>
 #include <filesystem>
@@ -42,11 +43,36 @@ bool IsMoorDynText(const std::string& text) {
   return false;
 }
 
+namespace {
+
+// The scene a MoorDyn file's `text` converts into, refused when larger than a scene file may be:
+// the file is then refused alike as it is and converted. The reader's warnings first, then the
+// conversion's (as the scene's header lists them).
+std::string ConvertMoorDyn(const std::string& text, const std::string& path,
+                           std::vector<std::string>* warnings) {
+  const MoorDynSystem system = ReadMoorDynText(text, path);
+  warnings->insert(warnings->end(), system.warnings.begin(), system.warnings.end());
+  std::string scene = MoorDynToToml(system, warnings);
+  if (scene.size() > kMaxSceneBytes) {
+    char mib[32];
+    std::snprintf(mib, sizeof mib, "%.1f", static_cast<double>(scene.size()) / (1 << 20));
+    throw Error(EscapeText(path) + ": the scene it converts into (cablefilm convert) is " + mib +
+                " MiB, from " + std::to_string(system.points.size()) + " rows of POINTS, " +
+                std::to_string(system.lines.size()) + " of LINES and " +
+                std::to_string(system.line_types.size()) + " of LINE TYPES; expected at most " +
+                std::to_string(kMaxSceneBytes >> 20) +
+                " MiB, the size limit of a scene file (fewer points or lines)");
+  }
+  return scene;
+}
+
+}  // namespace
+
 std::string MoorDynSceneText(const std::string& path, std::vector<std::string>* warnings) {
-  const MoorDynSystem system = ReadMoorDynText(ReadSceneFile(path), path);
-  // The reader's warnings first, then the conversion's (as LoadScene and the scene's header).
-  if (warnings) warnings->insert(warnings->end(), system.warnings.begin(), system.warnings.end());
-  return MoorDynToToml(system, warnings);
+  std::vector<std::string> all;
+  std::string scene = ConvertMoorDyn(ReadSceneFile(path), path, &all);
+  if (warnings) warnings->insert(warnings->end(), all.begin(), all.end());
+  return scene;
 }
 
 SceneDef LoadScene(const std::string& path) {
@@ -64,8 +90,7 @@ SceneDef LoadScene(const std::string& path) {
   }
   SceneDef scene;
   std::vector<std::string> warnings;
-  const MoorDynSystem system = ReadMoorDynText(text, path);
-  text = MoorDynToToml(system, &warnings);
+  text = ConvertMoorDyn(text, path, &warnings);
   try {
     scene = ParseScene(text, path);
   } catch (const Error& e) {
@@ -74,8 +99,7 @@ SceneDef LoadScene(const std::string& path) {
                 "'cablefilm convert " + EscapeText(path) + "' shows it)");
   }
   scene.from_moordyn = true;
-  scene.warnings = system.warnings;
-  scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());
+  scene.warnings = std::move(warnings);
   return scene;
 }
 
