@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/open_files.h"
 #include "app/progress.h"
 #include "app/run_support.h"
 #include "app/scene_summary.h"
@@ -208,6 +209,7 @@ int RunCommand(const std::string& scene_path, const RunOptions& options, RunRepo
   const FilmSettings look = film ? ResolveFilm(scene, options, kCommandLineNames) : FilmSettings{};
   const Model model = BuildModel(scene);
   CheckModelLimits(scene, model);
+  CheckOpenFiles(scene, model);
   OutDirLock lock;
   const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
@@ -229,6 +231,7 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
   const SceneDef rigid_scene = InextensibleScene(scene, elastic_model);
   const Model rigid_model = BuildModel(rigid_scene);
   CheckModelLimits(rigid_scene, rigid_model);
+  CheckOpenFiles(rigid_scene, rigid_model, 2);  // the elastic run's row maxima kept
   OutDirLock lock;
   const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
@@ -264,6 +267,7 @@ int CheckCommand(const std::string& scene_path) {
   if (scene.output.film) ResolveFilm(scene, {}, kCommandLineNames);  // as `run` makes it
   const Model model = BuildModel(scene);
   CheckModelLimits(scene, model);
+  CheckOpenFiles(scene, model);
   const TimeGrid grid = ChooseTimeGrid(model, scene.simulation, scene.output.interval);
   PrintScene(scene, model, grid);
   if (scene.initial == InitialStateKind::kEquilibrium) {

@@ -40,7 +40,7 @@ NetcdfResultsInfo MakeNetcdfInfo(const SceneDef& scene, const char* model, long 
   std::ifstream in(scene.path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
-  info.scene = text.str();
+  info.scene = std::make_shared<const std::string>(text.str());
   info.version = kVersion;
   if (*kGitDescribe) info.version += std::string(" (git ") + kGitDescribe + ")";
   info.model = model;

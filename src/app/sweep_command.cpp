@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "app/command.h"
+#include "app/open_files.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/out_dir_lock.h"
@@ -102,10 +103,14 @@ std::vector<std::string> ChildRunOptions(const RunOptions& o) {
 }
 
 // What `check` refuses of a case, refused before anything runs: the loader (every key known,
-// every value in range), the built model's limits, and the film's settings when on.
-void ValidateCase(const std::string& text, const std::string& path, const RunOptions& o) {
+// every value in range), the built model's limits, the files its run keeps open when it writes
+// them (`files`), and the film's settings when on.
+void ValidateCase(const std::string& text, const std::string& path, const RunOptions& o,
+                  bool files) {
   const SceneDef scene = ParseScene(text, path);
-  CheckModelLimits(scene, BuildModel(scene));
+  const Model model = BuildModel(scene);
+  CheckModelLimits(scene, model);
+  if (files) CheckOpenFiles(scene, model);
   if (o.film == 1) ResolveFilm(scene, o, kCommandLineNames);
 }
 
@@ -288,7 +293,7 @@ class Sweep {
           EscapeText(scene_path_) + " with " + DescribeCase(cases_, i) + "\n\n";
       try {
         scenes[i] = EditSceneText(text, scene_path_, cases_.keys, cases_.rows[i], comment);
-        ValidateCase(scenes[i], path, options_.run);
+        ValidateCase(scenes[i], path, options_.run, !options_.summary_only);
       } catch (const Error& e) {
         throw Error(EscapeText(scene_path_) + ": case " + std::to_string(i) + " (" +
                     DescribeCase(cases_, i) + ") is refused, so no case was run: " + e.what());

@@ -130,6 +130,7 @@ void ModelResultsWriter::Define(const NetcdfResultsInfo& info) {
   }
   time_.reserve(kChunkRows);
   NetcdfGlobalAttributes(nc, info, f);
+  NetcdfSceneAttribute(nc, info.scene, f);
   NetcdfCheck(nc_enddef(nc), f, "enddef");
 
   auto names = [&](int var, std::vector<const char*>& text) {

@@ -19,7 +19,10 @@ namespace cablefilm {
 NetcdfResultsWriter::NetcdfResultsWriter(const std::string& path, const NetcdfResultsInfo& info,
                                          const LineModel& m, const State& initial,
                                          const Eigen::VectorXd& initial_tension, int line)
-    : LineResultsNc(line), path_(path), temp_path_(path + ".tmp" + std::to_string(::getpid())) {
+    : LineResultsNc(line),
+      path_(path),
+      temp_path_(path + ".tmp" + std::to_string(::getpid())),
+      scene_(info.scene) {
   KeepFreedMemoryForTheCompressor();
   SkipHdf5CleanupAtExit();
   RecordOutput(path_);
@@ -308,9 +311,15 @@ void NetcdfResultsWriter::Close() {
   if (filling_ && filling_->rows > 0) Hand(std::move(filling_));
   StopWriter(false);  // the thread writes what waits, then ends
   if (!error_.empty()) throw Error(error_);
+  errno = 0;
+  // The scene's text, the last attribute, written as the file closes: netCDF keeps a copy of
+  // each attribute it has written while the file is open, and a system's text grows with its
+  // lines (400 lines of a 0.5 MB scene held 200 MB).
+  NetcdfCheck(nc_redef(ncid_), temp_path_, "redef");
+  NetcdfSceneAttribute(ncid_, scene_, temp_path_);
+  NetcdfCheck(nc_enddef(ncid_), temp_path_, "enddef");
   const int id = ncid_;
   ncid_ = -1;
-  errno = 0;
   NetcdfCheck(nc_close(id), temp_path_, "close");
 }
 

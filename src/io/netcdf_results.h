@@ -79,6 +79,7 @@ class NetcdfResultsWriter : public LineResultsNc {
   void Close();                             // the rest written, the file closed; throws Error
 
   std::string path_, temp_path_;
+  std::shared_ptr<const std::string> scene_;  // written as the file closes
   int ncid_ = -1;
   int stations_ = 0, links_ = 0, chunk_rows_ = 1;
   int var_time_ = -1, var_tension_ = -1;

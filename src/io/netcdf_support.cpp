@@ -72,7 +72,11 @@ void NetcdfGlobalAttributes(int nc, const NetcdfResultsInfo& info, const std::st
   NetcdfText(nc, NC_GLOBAL, "model", info.model, f);
   NetcdfText(nc, NC_GLOBAL, "initial_state", info.initial_state, f);
   NetcdfText(nc, NC_GLOBAL, "scene_file", info.scene_file, f);
-  NetcdfText(nc, NC_GLOBAL, "scene", info.scene, f);
+}
+
+void NetcdfSceneAttribute(int nc, const std::shared_ptr<const std::string>& scene,
+                          const std::string& f) {
+  NetcdfText(nc, NC_GLOBAL, "scene", scene ? *scene : std::string(), f);
 }
 
 }  // namespace cablefilm

@@ -2,6 +2,7 @@
 // What the NetCDF-4 result files share: the error check, text attributes, the global
 // attributes, and the process settings HDF5 and zlib need (io/netcdf_results.h, a line's file;
 // io/model_netcdf.h, a system's).
+#include <memory>
 #include <string>
 
 #include "io/results_nc.h"  // NetcdfResultsInfo
@@ -13,9 +14,11 @@ void NetcdfCheck(int status, const std::string& file, const char* what);
 // A text attribute of variable `var` (NC_GLOBAL: of the file).
 void NetcdfText(int ncid, int var, const char* name, const std::string& value,
                 const std::string& file);
-// Conventions, title, source, references, cablefilm_version, model, initial_state, scene_file,
-// scene.
+// Conventions, title, source, references, cablefilm_version, model, initial_state, scene_file;
+// then scene, the scene's text (empty when not given), the last.
 void NetcdfGlobalAttributes(int ncid, const NetcdfResultsInfo& info, const std::string& file);
+void NetcdfSceneAttribute(int ncid, const std::shared_ptr<const std::string>& scene,
+                          const std::string& file);
 
 // Whether a file's variables over time are deflated (level 1, shuffle): when their data
 // (info.rows rows of `row_bytes` bytes) would exceed kDeflateAboveBytes, or the rows are not

@@ -19,7 +19,9 @@ namespace cablefilm {
 struct NetcdfResultsInfo {
   std::string title;          // the scene's title
   std::string scene_file;     // its path, as given
-  std::string scene;          // its text
+  // Its text, shared: each line's file of a system writes it as the file closes, and a copy
+  // per line would grow with the square of the lines.
+  std::shared_ptr<const std::string> scene;
   std::string version;        // the program's: "0.1 (git 1a2b3c4)"
   std::string model;          // "elastic" or "inextensible"
   std::string initial_state;  // "equilibrium" or "straight"

@@ -12,12 +12,6 @@
 
 namespace cablefilm {
 
-MaxTensionLog::MaxTensionLog() : file_(std::tmpfile()) {
-  if (!file_)
-    throw Error(std::string("cannot create a temporary file for the maximum tension: ") +
-                std::strerror(errno));
-}
-
 MaxTensionLog::~MaxTensionLog() {
   if (file_) std::fclose(file_);
 }
@@ -36,10 +30,13 @@ void MaxTensionLog::Append(double t, double tension_max) {
   pending_.push_back(t);
   pending_.push_back(tension_max);
   ++rows_;
-  if (static_cast<long>(pending_.size()) >= 2 * kBlockRows) WritePending();
+  if (static_cast<long>(pending_.size()) >= 2 * kMemoryRows) WritePending();
 }
 
 void MaxTensionLog::WritePending() {
+  if (!file_ && !(file_ = std::tmpfile()))
+    throw Error(std::string("cannot create a temporary file for the maximum tension: ") +
+                std::strerror(errno));
   const char* data = reinterpret_cast<const char*>(pending_.data());
   std::size_t left = pending_.size() * sizeof(double);
   off_t at = static_cast<off_t>(written_) * 2 * sizeof(double);
@@ -65,7 +62,7 @@ bool MaxTensionLog::Cursor::Next(double t_until, double* t, double* tension_max)
     // Read ahead: from the file while the rows are there, else from the pending rows.
     block_first_ = next_;
     if (next_ < log.written_) {
-      const long n = std::min(kBlockRows, log.written_ - next_);
+      const long n = std::min(kMemoryRows, log.written_ - next_);
       block_.resize(static_cast<std::size_t>(2 * n));
       char* data = reinterpret_cast<char*>(block_.data());
       std::size_t left = block_.size() * sizeof(double);

@@ -1,7 +1,8 @@
 #pragma once
 // The largest link tension of every output row of a run (the tension_max column of
 // timeseries.csv, as exact doubles), kept in an anonymous temporary file (16 bytes a row, gone
-// when the program ends: memory stays bounded however long the run). The one source of
+// when the program ends: memory stays bounded however long the run), made once the rows reach
+// kMemoryRows: a short run of many lines holds no file per line. The one source of
 // max_tension.png and of the film's time plot, so that both agree with the CSV and the run's
 // reported peak (RunSummary, from the same rows).
 #include <cstdio>
@@ -12,7 +13,10 @@ namespace cablefilm {
 
 class MaxTensionLog {
  public:
-  MaxTensionLog();  // throws Error if no temporary file can be made
+  // Rows kept in memory: the temporary file is made when rows() reaches it.
+  static constexpr long kMemoryRows = 4096;
+
+  MaxTensionLog() = default;
   ~MaxTensionLog();
   MaxTensionLog(MaxTensionLog&& other) noexcept;
   MaxTensionLog& operator=(MaxTensionLog&&) = delete;
@@ -20,7 +24,7 @@ class MaxTensionLog {
   MaxTensionLog& operator=(const MaxTensionLog&) = delete;
 
   // One output row: its time t [s] (increasing) and its largest link tension [N]. Throws Error
-  // if the temporary file cannot be written.
+  // if the temporary file cannot be made or written.
   void Append(double t, double tension_max);
 
   long rows() const { return rows_; }
@@ -43,7 +47,6 @@ class MaxTensionLog {
   };
 
  private:
-  static constexpr long kBlockRows = 4096;
   void WritePending();
   std::FILE* file_ = nullptr;
   long rows_ = 0;

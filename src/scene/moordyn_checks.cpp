@@ -1,5 +1,6 @@
 #include "scene/moordyn_checks.h"
 
+#include <unordered_map>
 #include <vector>
 
 #include "core/error.h"
@@ -20,8 +21,10 @@ std::string TypeNames(const MoorDynSystem& system) {
   return names.empty() ? "none: the file has no LINE TYPES" : names;
 }
 
-void CheckType(const std::string& file, const MoorDynSystem& system, const MoorDynLine& line) {
-  if (FindMoorDynLineType(system, line.type)) return;
+void CheckType(const std::string& file, const MoorDynSystem& system,
+               const std::unordered_map<std::string, std::size_t>& types,
+               const MoorDynLine& line) {
+  if (types.count(line.type)) return;
   throw Error(Where(file, line.line, "LINES", line.id, "LineType") +
               "expected the name of a line type of LINE TYPES (" + TypeNames(system) +
               "), got " + QuoteText(line.type));
@@ -52,8 +55,9 @@ void CheckBody(const std::string& file, const MoorDynSystem& system, const MoorD
 
 void CheckMoorDynReferences(const std::string& file, MoorDynSystem* system) {
   std::vector<bool> used(system->points.size() + 1, false);
+  const auto types = MoorDynLineTypeIndex(*system);
   for (const MoorDynLine& line : system->lines) {
-    CheckType(file, *system, line);
+    CheckType(file, *system, types, line);
     CheckPoint(file, *system, line, line.point_a, "AttachA");
     CheckPoint(file, *system, line, line.point_b, "AttachB");
     used[line.point_a] = used[line.point_b] = true;

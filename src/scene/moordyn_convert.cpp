@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <unordered_set>
 
 #include "core/error.h"
 #include "scene/moordyn_axes.h"
@@ -183,11 +184,11 @@ std::string MoorDynToToml(const MoorDynSystem& system, std::vector<std::string>*
   out.file = EscapeText(system.file);
   CheckSystem(system, out.file);
   WriteMoorDynEnvironment(system, &out);
+  std::unordered_set<std::string> used;  // the types lines have
+  for (const MoorDynLine& l : system.lines) used.insert(l.type);
   for (std::size_t i = 0; i < system.line_types.size(); ++i) {
     const MoorDynLineType& t = system.line_types[i];
-    bool used = false;
-    for (const MoorDynLine& l : system.lines) used = used || l.type == t.name;
-    WriteMaterial(t, i, used, &out);
+    WriteMaterial(t, i, used.count(t.name) > 0, &out);
   }
   WriteMoorDynBodies(system, MoorDynDensity(system), &out);
   for (const MoorDynPoint& p : system.points) WritePoint(system, p, &out);

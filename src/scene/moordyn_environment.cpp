@@ -68,10 +68,11 @@ const MoorDynLineType& SeabedLineType(const MoorDynSystem& system, MoorDynTomlOu
   const MoorDynLine& longest = *std::max_element(
       system.lines.begin(), system.lines.end(),
       [](const MoorDynLine& a, const MoorDynLine& b) { return a.length < b.length; });
-  const MoorDynLineType& type = *FindMoorDynLineType(system, longest.type);
+  const auto types = MoorDynLineTypeIndex(system);
+  const MoorDynLineType& type = system.line_types[types.at(longest.type)];
   std::map<std::string, double> others;
   for (const MoorDynLine& line : system.lines) {
-    const MoorDynLineType& t = *FindMoorDynLineType(system, line.type);
+    const MoorDynLineType& t = system.line_types[types.at(line.type)];
     if (t.diameter != type.diameter) others[t.name] = t.diameter;
   }
   std::string names;

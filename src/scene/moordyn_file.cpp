@@ -41,13 +41,14 @@ void ForEachRow(const MoorDynSectionText& section, const std::string& file,
 }
 
 void ReadLineTypes(const MoorDynSectionText& s, const std::string& file, MoorDynSystem* sys) {
+  std::unordered_map<std::string, int> lines;  // each name's line of the file
   ForEachRow(s, file, kMoorDynLineTypeColumns, 10, &sys->warnings,
              [&](const MoorDynRow& row, int) {
                MoorDynLineType type = ReadMoorDynLineType(row);
-               for (const auto& other : sys->line_types)
-                 if (other.name == type.name)
-                   row.Refuse(0, QuoteText(type.name) + " is already the name of the line type "
-                                 "at line " + std::to_string(other.line) +
+               const auto [other, added] = lines.emplace(type.name, type.line);
+               if (!added)
+                 row.Refuse(0, QuoteText(type.name) + " is already the name of the line type "
+                                 "at line " + std::to_string(other->second) +
                                  "; expected a name of its own");
                sys->line_types.push_back(std::move(type));
              });
@@ -150,10 +151,11 @@ MoorDynSystem ReadMoorDynText(const std::string& text, const std::string& file) 
   return system;
 }
 
-const MoorDynLineType* FindMoorDynLineType(const MoorDynSystem& system, const std::string& name) {
-  for (const MoorDynLineType& type : system.line_types)
-    if (type.name == name) return &type;
-  return nullptr;
+std::unordered_map<std::string, std::size_t> MoorDynLineTypeIndex(const MoorDynSystem& system) {
+  std::unordered_map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < system.line_types.size(); ++i)
+    index.emplace(system.line_types[i].name, i);
+  return index;
 }
 
 MoorDynSystem ReadMoorDynFile(const std::string& path) {

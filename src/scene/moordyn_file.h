@@ -9,6 +9,7 @@
 #include <array>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace cablefilm {
@@ -95,8 +96,8 @@ MoorDynSystem ReadMoorDynFile(const std::string& path);
 // The same from the file's text; `file` names it in messages.
 MoorDynSystem ReadMoorDynText(const std::string& text, const std::string& file);
 
-// The line type of that name, or nullptr.
-const MoorDynLineType* FindMoorDynLineType(const MoorDynSystem& system, const std::string& name);
+// Each line type's name to its index in line_types: a lookup per line that does not scan.
+std::unordered_map<std::string, std::size_t> MoorDynLineTypeIndex(const MoorDynSystem& system);
 
 // A MoorDyn number ("1.5", "-3e6", "+2", "384.243E6"): finite, nothing else in the text.
 bool ParseMoorDynNumber(const std::string& text, double* value);

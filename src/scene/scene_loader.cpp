@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <vector>
 #include <cstring>
 #include <filesystem>
@@ -45,23 +46,38 @@ bool IsMoorDynText(const std::string& text) {
 
 namespace {
 
-std::string ConvertMoorDynText(const std::string& text, const std::string& path,
-                               std::vector<std::string>* warnings) {
+// The scene a MoorDyn file's `text` converts into, refused when larger than a scene file may be:
+// the file is then refused alike as it is and converted. The reader's warnings first, then the
+// conversion's (as the scene's header lists them); `sources` (optional): where in the file each
+// key of the scene came from.
+std::string ConvertMoorDyn(const std::string& text, const std::string& path,
+                           std::vector<std::string>* warnings, KeySources* sources = nullptr) {
   const MoorDynSystem system = ReadMoorDynText(text, path);
-  // The reader's warnings first, then the conversion's (as LoadScene and the scene's header).
-  if (warnings) warnings->insert(warnings->end(), system.warnings.begin(), system.warnings.end());
-  return MoorDynToToml(system, warnings);
+  std::vector<std::string> all = system.warnings;
+  std::string scene = MoorDynToToml(system, &all, sources);
+  if (scene.size() > kMaxSceneBytes) {
+    char mib[32];
+    std::snprintf(mib, sizeof mib, "%.1f", static_cast<double>(scene.size()) / (1 << 20));
+    throw Error(EscapeText(path) + ": the scene it converts into (cablefilm convert) is " + mib +
+                " MiB, from " + std::to_string(system.points.size()) + " rows of POINTS, " +
+                std::to_string(system.lines.size()) + " of LINES and " +
+                std::to_string(system.line_types.size()) + " of LINE TYPES; expected at most " +
+                std::to_string(kMaxSceneBytes >> 20) +
+                " MiB, the size limit of a scene file (fewer points or lines)");
+  }
+  if (warnings) warnings->insert(warnings->end(), all.begin(), all.end());
+  return scene;
 }
 
 }  // namespace
 
 std::string MoorDynSceneText(const std::string& path, std::vector<std::string>* warnings) {
-  return ConvertMoorDynText(ReadSceneFile(path), path, warnings);
+  return ConvertMoorDyn(ReadSceneFile(path), path, warnings);
 }
 
 std::string EditableSceneText(const std::string& path, std::vector<std::string>* warnings) {
   const std::string text = ReadSceneFile(path);
-  return IsMoorDynText(text) ? ConvertMoorDynText(text, path, warnings) : text;
+  return IsMoorDynText(text) ? ConvertMoorDyn(text, path, warnings) : text;
 }
 
 SceneDef LoadScene(const std::string& path) {
@@ -80,8 +96,7 @@ SceneDef LoadScene(const std::string& path) {
   SceneDef scene;
   std::vector<std::string> warnings;
   KeySources sources;
-  const MoorDynSystem system = ReadMoorDynText(text, path);
-  text = MoorDynToToml(system, &warnings, &sources);
+  text = ConvertMoorDyn(text, path, &warnings, &sources);
   try {
     scene = ParseScene(text, path);
   } catch (const Error& e) {
@@ -94,8 +109,7 @@ SceneDef LoadScene(const std::string& path) {
   }
   scene.from_moordyn = true;
   scene.sources = std::move(sources);
-  scene.warnings = system.warnings;
-  scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());
+  scene.warnings = std::move(warnings);
   return scene;
 }
 

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 #include <toml++/toml.h>
+#include <unordered_map>
 
 #include "core/error.h"
 #include "core/waves.h"
@@ -25,6 +26,22 @@ namespace cablefilm {
 namespace {
 
 std::string Quote(const std::string& s) { return QuoteText(s); }
+
+// Names to their indices: a file may name 1e5 points, so lookups must not scan.
+using NameIndex = std::unordered_map<std::string, int>;
+
+template <class Named>
+NameIndex IndexByName(const std::vector<Named>& named) {
+  NameIndex index;
+  for (std::size_t k = 0; k < named.size(); ++k) index.emplace(named[k].name, static_cast<int>(k));
+  return index;
+}
+
+// The index of `name` in `index`, or -1.
+int Find(const NameIndex& index, const std::string& name) {
+  const auto found = index.find(name);
+  return found == index.end() ? -1 : found->second;
+}
 
 // [[y, speed], ...]: elevations strictly increasing, each within the stated ranges.
 void ReadCurrentProfile(TableReader& r, const toml::array& a, CurrentProfile& profile) {
@@ -210,15 +227,15 @@ void ReadWaves(TableReader& top, SceneDef& scene) {
 
 void ReadMaterials(TableReader& top, SceneDef& scene, bool elastic) {
   const toml::array* arr = top.TableArray("material", true);
+  NameIndex names;
   for (size_t i = 0; i < arr->size(); ++i) {
     const std::string prefix = "material[" + std::to_string(i) + "]";
     TableReader r = top.Child(*arr->get(i)->as_table(), prefix);
     MaterialDef m;
     m.name = r.String("name", "", true);
-    for (const MaterialDef& other : scene.materials)
-      if (other.name == m.name)
-        r.Fail(arr->get(i)->as_table()->get("name"), "name",
-               "expected a unique name, " + Quote(m.name) + " is defined twice");
+    if (!names.emplace(m.name, static_cast<int>(i)).second)
+      r.Fail(arr->get(i)->as_table()->get("name"), "name",
+             "expected a unique name, " + Quote(m.name) + " is defined twice");
     m.diameter = r.Positive("diameter", " in m", kMinDiameter, kMaxDiameter);
     m.area = r.Positive("area", " in m^2", kMinArea, kMaxArea);
     m.mass_per_length =
@@ -282,7 +299,7 @@ void ReadPrism(TableReader& w, double& mass, double& volume, std::array<double, 
 
 // The sections and weights of a line, from the reader `r` of its table (`name`: "cable" or
 // "line[i]", as messages show it).
-void ReadSections(TableReader& r, const std::string& name, const SceneDef& scene,
+void ReadSections(TableReader& r, const std::string& name, const NameIndex& materials,
                   std::vector<SectionDef>& out_sections, std::vector<WeightDef>& out_weights) {
   const toml::array* sections = r.TableArray("section", true);
   if (sections->empty())
@@ -292,9 +309,7 @@ void ReadSections(TableReader& r, const std::string& name, const SceneDef& scene
     TableReader s = r.Child(*sections->get(i)->as_table(), prefix);
     SectionDef sec;
     const std::string material = s.String("material", "", true);
-    sec.material = -1;
-    for (size_t k = 0; k < scene.materials.size(); ++k)
-      if (scene.materials[k].name == material) sec.material = static_cast<int>(k);
+    sec.material = Find(materials, material);
     if (sec.material < 0)
       s.Fail(sections->get(i)->as_table()->get("material"), "material",
              "expected the name of a [[material]], no material is named " + Quote(material));
@@ -359,7 +374,7 @@ void ReadCable(TableReader& top, SceneDef& scene, CableModelKind model) {
   line.model = model;
   line.start = 0;
   line.end = 1;
-  ReadSections(r, "cable", scene, line.sections, line.weights);
+  ReadSections(r, "cable", IndexByName(scene.materials), line.sections, line.weights);
   r.Finish();
   scene.lines.push_back(line);
 }
@@ -492,19 +507,18 @@ std::string ReadName(TableReader& r, const toml::table* t) {
   return name;
 }
 
-// A point's or line's name not yet taken by one of `earlier`.
-template <class Named>
-void CheckUnique(TableReader& r, const toml::table* t, const std::string& name,
-                 const std::vector<Named>& earlier, const char* what) {
-  for (const Named& other : earlier)
-    if (other.name == name)
-      r.Fail(t->get("name"), "name",
-             "expected a unique name, " + Quote(name) + " names two " + what);
+// A point's, body's or line's name not yet taken by one of `earlier`, added to it as `index`.
+void CheckUnique(TableReader& r, const toml::table* t, const std::string& name, int index,
+                 NameIndex& earlier, const char* what) {
+  if (!earlier.emplace(name, index).second)
+    r.Fail(t->get("name"), "name", "expected a unique name, " + Quote(name) + " names two " + what);
 }
 
 // [[point]]: the points of a system.
 void ReadPoints(TableReader& top, SceneDef& scene, const std::string& file) {
   const toml::array* arr = top.TableArray("point", true);
+  const NameIndex bodies = IndexByName(scene.bodies);
+  NameIndex names;
   for (size_t i = 0; i < arr->size(); ++i) {
     const toml::table* t = arr->get(i)->as_table();
     PointDef p;
@@ -512,11 +526,10 @@ void ReadPoints(TableReader& top, SceneDef& scene, const std::string& file) {
     TableReader r = top.Child(*t, p.key);
     p.name = ReadName(r, t);
     p.label = "point " + Quote(p.name);
-    CheckUnique(r, t, p.name, scene.points, "points");
+    CheckUnique(r, t, p.name, static_cast<int>(i), names, "points");
     if (t->contains("body")) {  // fixed to a body: its position in the body's axes
       const std::string body = r.String("body", "", true);
-      for (size_t k = 0; k < scene.bodies.size(); ++k)
-        if (scene.bodies[k].name == body) p.body = static_cast<int>(k);
+      p.body = Find(bodies, body);
       if (p.body < 0)
         r.Fail(t->get("body"), "body", "expected the name of a [[body]], no body is named " +
                                            Quote(body));
@@ -582,12 +595,13 @@ std::array<double, 3> ReadThree(TableReader& r, const std::string& key,
 // [[body]]: the rigid bodies of a system.
 void ReadBodies(TableReader& top, SceneDef& scene, const std::string& file) {
   const toml::array* arr = top.TableArray("body", false);
+  NameIndex names;
   for (size_t i = 0; arr && i < arr->size(); ++i) {
     const toml::table* t = arr->get(i)->as_table();
     TableReader r = top.Child(*t, "body[" + std::to_string(i) + "]");
     BodyDef b;
     b.name = ReadName(r, t);
-    CheckUnique(r, t, b.name, scene.bodies, "bodies");
+    CheckUnique(r, t, b.name, static_cast<int>(i), names, "bodies");
     const std::string motion = ReadMotion(r, t, b.motion, file, scene, true);
     b.free = motion == "free";
     b.orientation = r.Triple("orientation", {0, 0, 0}, false, false,
@@ -634,6 +648,8 @@ void ReadBodies(TableReader& top, SceneDef& scene, const std::string& file) {
 // [[line]]: the lines of a system, each between two [[point]]s.
 void ReadLines(TableReader& top, SceneDef& scene) {
   const toml::array* arr = top.TableArray("line", true);
+  const NameIndex points = IndexByName(scene.points), materials = IndexByName(scene.materials);
+  NameIndex names;
   for (size_t i = 0; i < arr->size(); ++i) {
     const toml::table* t = arr->get(i)->as_table();
     const std::string name = "line[" + std::to_string(i) + "]";
@@ -641,7 +657,7 @@ void ReadLines(TableReader& top, SceneDef& scene) {
     LineDef line;
     line.key = name;
     line.name = ReadName(r, t);
-    CheckUnique(r, t, line.name, scene.lines, "lines");
+    CheckUnique(r, t, line.name, static_cast<int>(i), names, "lines");
     // An inextensible line between points that hold it (the coupled step is the elastic
     // lines': the model refuses one joined to others, naming it).
     line.model = r.Choice("model", "elastic", {"elastic", "inextensible"}) == "inextensible"
@@ -649,15 +665,13 @@ void ReadLines(TableReader& top, SceneDef& scene) {
                      : CableModelKind::kElastic;
     for (const char* key : {"start", "end"}) {
       const std::string point = r.String(key, "", true);
-      int index = -1;
-      for (size_t k = 0; k < scene.points.size(); ++k)
-        if (scene.points[k].name == point) index = static_cast<int>(k);
+      const int index = Find(points, point);
       if (index < 0)
         r.Fail(t->get(key), key, "expected the name of a [[point]], no point is named " +
                                      Quote(point));
       (std::string(key) == "start" ? line.start : line.end) = index;
     }
-    ReadSections(r, name, scene, line.sections, line.weights);
+    ReadSections(r, name, materials, line.sections, line.weights);
     if (const std::string far = LineReachProblem(line, scene); !far.empty())
       r.Fail(t->get("end"), "end", far);
     r.Finish();

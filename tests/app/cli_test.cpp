@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/file.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -789,6 +790,79 @@ TEST_F(CommandLine, NoFilmRunsWhatTheFilmCouldNotShow) {
     EXPECT_NE(o.err.find("3.6e6 frames"), std::string::npos) << command << ": " << o.err;
   }
   EXPECT_FALSE(fs::exists(dir_ / "film"));
+}
+
+
+// A system of `lines` lines, each of 2 links from an anchor to a fixed fairlead, `duration`
+// seconds at a row every 0.5 s, no film.
+std::string ManyLines(int lines, double duration) {
+  std::ostringstream t;
+  t << "[environment]\nfluid_density = 1025.0\n[[material]]\nname = \"chain\"\n"
+       "diameter = 0.1\narea = 0.008\nmass_per_length = 100.0\nyoungs_modulus = 1e11\n";
+  for (int i = 0; i < lines; ++i) {
+    const double a = 2 * M_PI * i / lines;
+    t << "[[point]]\nname = \"a" << i << "\"\nposition = [" << 500 * std::cos(a) << ", -100.0, "
+      << 500 * std::sin(a) << "]\n[[point]]\nname = \"f" << i << "\"\nposition = ["
+      << 20 * std::cos(a) << ", -10.0, " << 20 * std::sin(a) << "]\n";
+  }
+  for (int i = 0; i < lines; ++i)
+    t << "[[line]]\nname = \"l" << i << "\"\nstart = \"a" << i << "\"\nend = \"f" << i
+      << "\"\n[[line.section]]\nmaterial = \"chain\"\nlength = 550.0\nsegments = 2\n";
+  t << "[simulation]\nduration = " << duration << "\n[output]\ninterval = 0.5\nfilm = false\n";
+  return t.str();
+}
+
+// A system holds files open per line while it runs: 400 lines under `ulimit -n 1024` failed
+// midway ("Too many open files") after `check` said ok, leaving the line folders begun. `check`
+// and `run` refuse it alike before anything is written, with the count and the limit; the soft
+// limit is raised to the hard one when that is enough; a system within the limit runs.
+TEST_F(CommandLine, SystemBeyondTheOpenFileLimitIsRefusedBeforeItStarts) {
+  std::ofstream(dir_ / "many.toml", std::ios::binary) << ManyLines(60, 1.0);
+  const std::string refusal =
+      "cablefilm: error: many.toml: line: a run of its 60 lines keeps 154 files open at once (2 "
+      "a line: its timeseries.csv and results.nc; the model's points.csv and results.nc; 32 for "
+      "the program itself), more than the limit on open files, 100 (ulimit -n); expected at "
+      "most 33 lines under it: raise the limit (ulimit -n 154; beyond the hard limit as root) or "
+      "run fewer lines\n";
+  const Outcome check = Run("check many.toml", "ulimit -n 100;");
+  EXPECT_EQ(check.status, 1) << check.out;
+  EXPECT_EQ(check.err, refusal);
+  const Outcome run = Run("run --out out many.toml", "ulimit -n 100;");
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_EQ(run.err, refusal);
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+
+  // 2 files a line and the program's own fit in 160: both say so, and it runs.
+  const Outcome fits = Run("check many.toml", "ulimit -n 160;");
+  EXPECT_EQ(fits.status, 0) << fits.err;
+  EXPECT_NE(fits.out.find("\nok\n"), std::string::npos) << fits.out;
+  const Outcome ran = Run("run --out fits many.toml", "ulimit -n 160;");
+  ASSERT_EQ(ran.status, 0) << ran.err;
+  for (int i = 0; i < 60; ++i) {
+    const fs::path line = dir_ / "fits" / "lines" / ("l" + std::to_string(i));
+    EXPECT_TRUE(fs::exists(line / "timeseries.csv")) << line;
+    EXPECT_TRUE(fs::exists(line / "results.nc")) << line;
+  }
+
+  // A soft limit below the hard one is raised to it.
+  rlimit limit{};
+  ASSERT_EQ(::getrlimit(RLIMIT_NOFILE, &limit), 0);
+  if (limit.rlim_max != RLIM_INFINITY && limit.rlim_max < 154) GTEST_SKIP() << "hard limit";
+  const Outcome raised = Run("run --out raised many.toml", "ulimit -S -n 100;");
+  EXPECT_EQ(raised.status, 0) << raised.err;
+  EXPECT_TRUE(fs::exists(dir_ / "raised" / "lines" / "l59" / "results.nc"));
+
+  // From 4096 rows each line's row maxima take a file of their own too (3 a line: 214).
+  std::ofstream(dir_ / "long.toml", std::ios::binary) << ManyLines(60, 2048.0);
+  const Outcome long_check = Run("check long.toml", "ulimit -n 200;");
+  EXPECT_EQ(long_check.status, 1);
+  EXPECT_NE(long_check.err.find("long.toml: line: a run of its 60 lines keeps 214 files open at "
+                                "once (3 a line: its timeseries.csv, results.nc and the temporary "
+                                "file of its row maxima (from 4096 rows); "),
+            std::string::npos)
+      << long_check.err;
+  EXPECT_NE(long_check.err.find("expected at most 55 lines under it"), std::string::npos)
+      << long_check.err;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -15,6 +16,8 @@
 #include "core/waves.h"
 #include "scene/build_model.h"
 #include "scene/film_settings.h"
+#include "scene/moordyn_convert.h"
+#include "scene/moordyn_file.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "core/inputs.h"
@@ -1375,6 +1378,77 @@ TEST_F(TableMotion, BodyTableWithAngles) {
               {"turn.csv:1", "seven columns t,x,y,z,rx,ry,rz turn a body"}, scene_);
   ExpectError(TableScene("bare.csv"), "ends.end.file",
               {"bare.csv:1", "seven columns t,x,y,z,rx,ry,rz turn a body"}, scene_);
+}
+
+
+// A MoorDyn file of one line and `points` points, all but its two ends attached to no line.
+std::string ManyPointsMoorDyn(int points) {
+  std::string text =
+      "Many points no line uses\n"
+      "---------------------- LINE TYPES -----------------------\n"
+      "TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx\n"
+      "(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)\n"
+      "chain 0.1 100 1e9 -0.8 0 1.2 1 0 0\n"
+      "---------------------- POINTS ---------------------------\n"
+      "ID Attachment X Y Z Mass Volume CdA Ca\n"
+      "(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n"
+      "1 Fixed 400 0 -100 0 0 0 0\n"
+      "2 Fixed 0 0 -10 0 0 0 0\n";
+  for (int i = 3; i <= points; ++i)
+    text += std::to_string(i) + " Fixed " + std::to_string(i % 1000) + " " +
+            std::to_string(i / 1000) + " -50 0 0 0 0\n";
+  text +=
+      "---------------------- LINES ----------------------------\n"
+      "ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs\n"
+      "(#) (name) (#) (#) (m) (-) (-)\n"
+      "1 chain 1 2 450 20 -\n"
+      "---------------------- OPTIONS --------------------------\n"
+      "100 WtrDpth\n";
+  return text;
+}
+
+// A MoorDyn file of 60 000 points no line uses (1.8 MB) converts into a scene of more than
+// 16 MiB, which the loader refuses as a scene file, while the MoorDyn file itself loaded (in
+// 8 s: each name looked up among all the points before it). One limit for both forms: refused
+// alike, naming the file, the size and the limit; at 45 000 points both load, the same points.
+TEST_F(TableMotion, MoorDynFileAndItsSceneShareOneSizeLimit) {
+  auto refusal = [](auto load) {
+    try {
+      load();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string big = (dir_ / "big.txt").string();
+  WriteFile("big.txt", ManyPointsMoorDyn(60000));
+  const std::string converted = MoorDynToToml(ReadMoorDynFile(big), nullptr);
+  ASSERT_GT(converted.size(), kMaxSceneBytes);
+  char mib[32];  // 18.6 (its header lists a warning per point, each naming the file)
+  std::snprintf(mib, sizeof mib, "%.1f", static_cast<double>(converted.size()) / (1 << 20));
+  WriteFile("big.toml", converted);
+  const std::string too_large = refusal([&] { LoadScene((dir_ / "big.toml").string()); });
+  EXPECT_NE(too_large.find("big.toml: larger than 16 MiB"), std::string::npos) << too_large;
+  const std::string message = refusal([&] { LoadScene(big); });
+  EXPECT_EQ(message, big + ": the scene it converts into (cablefilm convert) is " + mib +
+                         " MiB, from 60000 rows of POINTS, 1 of LINES and 1 of LINE TYPES; "
+                         "expected at most 16 MiB, the size limit of a scene file (fewer points "
+                         "or lines)");
+  EXPECT_EQ(refusal([&] { MoorDynSceneText(big, nullptr); }), message);
+
+  const std::string fits = (dir_ / "fits.txt").string();
+  WriteFile("fits.txt", ManyPointsMoorDyn(45000));
+  std::vector<std::string> warnings;
+  const std::string text = MoorDynSceneText(fits, &warnings);
+  EXPECT_LT(text.size(), kMaxSceneBytes);
+  EXPECT_EQ(warnings.size(), 44998u);  // a point no line uses: each a warning
+  WriteFile("fits.toml", text);
+  const SceneDef as_moordyn = LoadScene(fits), as_scene = LoadScene((dir_ / "fits.toml").string());
+  ASSERT_EQ(as_moordyn.points.size(), 45000u);
+  ASSERT_EQ(as_scene.points.size(), 45000u);
+  EXPECT_EQ(as_scene.points[44999].name, "45000");
+  EXPECT_EQ(as_scene.points[44999].motion.position, as_moordyn.points[44999].motion.position);
+  EXPECT_EQ(as_moordyn.warnings.size(), 44998u);
 }
 
 }  // namespace
