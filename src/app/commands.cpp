@@ -132,7 +132,16 @@ Run SimulateToFiles(const SceneDef& scene, const Model& model, const std::string
     std::printf("wrote %s\n", EscapeText(files.File("results.nc")).c_str());
   }
   for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());
-  if (s.stats.record.unresolved_snaps > 0) CheckPeakUnderRefinement(scene, run);
+  if (s.stats.record.unresolved_snaps > 0) {
+    CheckPeakUnderRefinement(scene, run);
+  } else if (s.stats.snap_windows > 0) {
+    CheckPeakUnderRefinement(scene, run);
+    const std::string damped = RingingWarning(s);
+    if (!damped.empty()) {
+      s.warnings.push_back(damped);
+      std::printf("warning: %s\n", damped.c_str());
+    }
+  }
   WriteRunReports(files, run);
   if (!files.several())
     std::printf("wrote %s\n", EscapeText(files.File("run_report.toml")).c_str());

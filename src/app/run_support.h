@@ -41,5 +41,12 @@ std::string RefineStepControl(SimulationDef& sim, double tolerance, long snap_wi
 // again as `how` says (not completed: a failure or an interruption, said in s's refinement),
 // and prints them ("snap check: ...").
 void ReportRefinement(const std::string& how, const RunSummary& refined, RunSummary* s);
+// A run whose snaps were all stepped explicitly (explicit windows, core/explicit_snaps.h) is
+// checked all the same: the implicit steps after each window take the ringing the snap left at
+// the line's highest axial frequencies, which the refined run (without numerical damping)
+// keeps. The warning that makes its peak not converged when the refined peak differs by more
+// than kRingingTolerance (or the refined run did not finish); empty if within it.
+constexpr double kRingingTolerance = 0.02;
+std::string RingingWarning(const RunSummary& s);
 
 }  // namespace cablefilm

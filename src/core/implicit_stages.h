@@ -9,6 +9,7 @@
 
 #include "core/cancel.h"
 #include "core/line_data.h"
+#include "core/step_landing.h"
 #include "core/implicit_step.h"
 
 namespace cablefilm {
@@ -169,7 +170,7 @@ bool AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelF
   // A step this much smaller than the one asked for makes no useful progress: the motion (an
   // end's acceleration, a snap) is faster than any step can follow; say so rather than crawl.
   const double smallest = kSmallestStepFraction * largest;
-  while (t < t_end - 1e-12 * largest) {
+  while (!Landed(t, t_end, largest)) {
     ThrowIfCancelled(stop, "the implicit step");
     if (options.most_steps > 0 && ++taken > options.most_steps) {
       std::ostringstream os;
@@ -178,14 +179,14 @@ bool AdaptiveImplicitSteps(Stepper& s, const StepOptions& options, const CancelF
       throw Error(os.str());
     }
     const double tolerance = options.ToleranceAt(t);
-    double h = std::min(proposed, t_end - t);
     // Land on a kink of a prescribed motion within reach (one closer than the smallest step
     // is taken as passed: t may sit a rounding short of a row it has landed on). Not in equal
     // steps to it: that made the number of steps, and so the results, jump with a rounding of
     // the step asked (two runs of the same system drifted apart by the step's own error; full
-    // steps and a last sliver keep them together at 3 % of the spread mooring's work).
+    // steps and a last short one keep them together at 3 % of the spread mooring's work). A
+    // last piece under a hundredth of a step joins the step before (step_landing.h).
     const double kink = s.NextKink(t + smallest);
-    if (kink - t < h) h = kink - t;
+    const double h = StepToward(t, std::min(kink, t_end), proposed);
     if (h < smallest && h < t_end - t) {
       std::ostringstream os;
       os << "the implicit step fell to " << h << " s at t = " << t << " s (below "

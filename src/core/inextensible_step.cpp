@@ -6,6 +6,7 @@
 
 #include "core/cancel.h"
 #include "core/seabed_friction.h"
+#include "core/step_landing.h"
 
 namespace cablefilm {
 namespace {
@@ -104,7 +105,7 @@ void InextensibleStep(const LineModel& m, LineData& d, const Inputs& in, double 
   const double t_end = s.t + dt;
   const double tolerance = d.options.tolerance;
   if (!(tolerance > 0)) {
-    while (s.t < t_end - 1e-12 * dt) {
+    while (!Landed(s.t, t_end, dt)) {
       ThrowIfCancelled(in.stop, "the inextensible step");
       const double remaining = t_end - s.t;
       const int pieces = static_cast<int>(std::ceil(remaining / StableSubstep(m, d) - 1e-9));
@@ -124,10 +125,10 @@ void InextensibleStep(const LineModel& m, LineData& d, const Inputs& in, double 
   if (!(d.proposed_step > 0) || d.proposed_step > dt) d.proposed_step = dt;
   const double smallest = kSmallestSubstep * dt;
   int failures = 0;  // rejections in a row
-  while (s.t < t_end - 1e-12 * dt) {
+  while (!Landed(s.t, t_end, dt)) {
     ThrowIfCancelled(in.stop, "the inextensible step");
     const double longest = std::min(d.proposed_step, StableSubstep(m, d));
-    const double h = std::min(longest, t_end - s.t);
+    const double h = StepToward(s.t, t_end, longest);
     const bool limited = h < d.proposed_step;  // by the wave limit or the end of the step asked
     const bool projected = longest >= smallest && Trial(m, d, in, h);
     double error = 0;
