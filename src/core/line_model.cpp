@@ -104,6 +104,12 @@ LineModel MakeLineModel(const std::vector<SectionSpec>& sections, const std::vec
   j = 0;
   for (const SectionSpec& sec : sections) {
     for (int i = 0; i < sec.segments; ++i, ++j) {
+      if (sec.moordyn_axial_damping_ratio > 0) {
+        // MoorDyn's BA = zeta l sqrt(EA mu) [N s], whose tension BA (dL/dt) / l is c dL/dt.
+        m.axial_damping[j] =
+            sec.moordyn_axial_damping_ratio * std::sqrt(m.axial_stiffness[j] * sec.mass_per_length);
+        continue;
+      }
       if (sec.axial_damping_ratio == 0) continue;
       const double ma = m.cable_mass[j] + m.prism_mass.col(j).minCoeff();
       const double mb = m.cable_mass[j + 1] + m.prism_mass.col(j + 1).minCoeff();

@@ -232,6 +232,10 @@ struct SectionSpec {
   double axial_damping = 0;          // BA [Pa s]: c = BA sigma / l
   double axial_damping_ratio = 0;    // zeta: c = 2 zeta sqrt((sigma E / l) m_ab), m_ab the
                                      // reduced mass of the link's two stations
+  double moordyn_axial_damping_ratio = 0;  // zeta as MoorDyn's BA/-zeta defines it: c = zeta
+                                           // sqrt(sigma E mu) [N s/m] on every link (BA = zeta
+                                           // l sqrt(EA mu) [N s], EA's critical value for the
+                                           // line's own mass per length, any link length)
   double minimum_breaking_load = 0;  // MBL [N], for the utilisation T / MBL; 0 = not given
   double tangential_drag_coefficient = 0;       // C^T, on pi d l (MoorDyn's CdAx)
   double tangential_added_mass_coefficient = 0; // k^t, on sigma l along the link (CaAx)

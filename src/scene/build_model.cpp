@@ -184,6 +184,7 @@ std::vector<SectionSpec> MakeSections(const SceneDef& scene, const std::vector<S
     s.added_mass_coefficient = mat.added_mass_coefficient;
     s.axial_damping = mat.axial_damping;
     s.axial_damping_ratio = mat.axial_damping_ratio;
+    s.moordyn_axial_damping_ratio = mat.moordyn_axial_damping_ratio;
     s.minimum_breaking_load = mat.minimum_breaking_load;
     s.tangential_drag_coefficient = mat.tangential_drag_coefficient;
     s.tangential_added_mass_coefficient = mat.tangential_added_mass_coefficient;

@@ -78,8 +78,8 @@ void WriteMaterial(const MoorDynLineType& t, std::size_t index, bool used, MoorD
     out->Key("axial_damping", TomlNumber(t.ba / area),
              name + "BA " + FormatNumber(t.ba) + " N s / area, Pa s", "BA/-zeta");
   else
-    out->Key("axial_damping_ratio", TomlNumber(-t.ba),
-             name + "BA/-zeta " + FormatNumber(t.ba) + ": a fraction of critical damping",
+    out->Key("moordyn_axial_damping_ratio", TomlNumber(-t.ba),
+             name + "BA/-zeta " + FormatNumber(t.ba) + ": BA = zeta l sqrt(EA mu), as MoorDyn",
              "BA/-zeta");
   if (!used) return;
   if (t.ei != 0)

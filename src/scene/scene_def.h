@@ -47,6 +47,7 @@ struct MaterialDef {
   double added_mass_coefficient = 1.0; // k, normal virtual inertia
   double axial_damping = 0;            // internal axial damping BA [Pa s]: stress BA x strain rate
   double axial_damping_ratio = 0;      // or zeta, of critical for each link's axial mode
+  double moordyn_axial_damping_ratio = 0;  // or zeta as MoorDyn's negative BA: c = zeta sqrt(EA mu)
   double minimum_breaking_load = 0;    // MBL [N]: utilisation = tension / MBL; 0 = not given
   double tangential_drag_coefficient = 0;       // C^T, along the link on pi d l (MoorDyn's CdAx)
   double tangential_added_mass_coefficient = 0; // k^t, along the link (MoorDyn's CaAx)

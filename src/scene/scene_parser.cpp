@@ -272,6 +272,13 @@ void ReadMaterials(TableReader& top, SceneDef& scene, bool elastic) {
     if (m.axial_damping > 0 && m.axial_damping_ratio > 0)
       r.Fail(arr->get(i)->as_table()->get("axial_damping_ratio"), "axial_damping_ratio",
              "expected either axial_damping (Pa s) or axial_damping_ratio, not both");
+    m.moordyn_axial_damping_ratio = r.OptionalNonNegative(
+        "moordyn_axial_damping_ratio", 0.0, " (MoorDyn's -BA)", kMaxDampingRatio);
+    if (m.moordyn_axial_damping_ratio > 0 && (m.axial_damping > 0 || m.axial_damping_ratio > 0))
+      r.Fail(arr->get(i)->as_table()->get("moordyn_axial_damping_ratio"),
+             "moordyn_axial_damping_ratio",
+             "expected one of axial_damping (Pa s), axial_damping_ratio and "
+             "moordyn_axial_damping_ratio, not two");
     m.minimum_breaking_load = r.OptionalPositive("minimum_breaking_load", 0.0, " in N",
                                                  kMinBreakingLoad, kMaxBreakingLoad);
     r.Finish();

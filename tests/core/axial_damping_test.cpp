@@ -112,6 +112,43 @@ TEST(AxialDamping, RatioIsOfTheLinksOwnAxialMode) {
   EXPECT_NEAR(m.line.axial_damping[1], 1.4 * std::sqrt(k * m1 * m2 / (m1 + m2)), 1e-9);
 }
 
+// MoorDyn's BA/-zeta (its Line.cpp, and its documentation's "damping ratio"): BA = zeta l
+// sqrt(EA w) [N s] with l the line's segment length and w its mass per length, whatever the
+// prisms, and the tension BA / l dL/dt. On every link c = zeta sqrt(EA w) [N s/m], for links of
+// 2 m and 0.5 m alike: an inner link of a uniform line gets 1 / sqrt(2) of the damping of
+// `axial_damping_ratio`, whose mode is the link's two stations (reduced mass w l / 2).
+TEST(AxialDamping, MoorDynsRatioGivesMoorDynsDampingPerLink) {
+  for (const int links : {2, 8}) {
+    SectionSpec s;
+    s.length = 4.0;
+    s.segments = links;
+    s.diameter = 0.02;
+    s.area = 2e-4;
+    s.mass_per_length = 3.0;
+    s.youngs_modulus = 5e9;
+    s.moordyn_axial_damping_ratio = 0.8;
+    PrismSpec p;
+    p.station = 1;
+    p.mass = 5.0;  // MoorDyn's BA does not see it
+    EnvironmentSpec sea;
+    sea.fluid_density = 1000;
+    const LineModel m = MakeLineModel({s}, {p}, sea, EndMotion::Fixed(InPlane(0, 0)),
+                                      EndMotion::Free(InPlane(0, -4)), LinkLaw::kElastic);
+    const double EA = 2e-4 * 5e9, l = 4.0 / links;
+    const double BA = 0.8 * l * std::sqrt(EA * 3.0);  // MoorDyn's [N s]
+    for (int k = 0; k < links; ++k)
+      EXPECT_NEAR(m.line.axial_damping[k], BA / l, 1e-12 * BA / l) << links << " links, " << k;
+    if (links == 8) {
+      SectionSpec own = s;
+      own.moordyn_axial_damping_ratio = 0;
+      own.axial_damping_ratio = 0.8;
+      const LineModel n = MakeLineModel({own}, {}, sea, EndMotion::Fixed(InPlane(0, 0)),
+                                        EndMotion::Free(InPlane(0, -4)), LinkLaw::kElastic);
+      EXPECT_NEAR(n.line.axial_damping[4] / m.line.axial_damping[4], std::sqrt(2.0), 1e-12);
+    }
+  }
+}
+
 // The explicit limit shrinks by sqrt(1 + 4 zeta^2) - 2 zeta for the bound's zeta, and the scheme
 // is stable there: a critically damped link run at 0.95 of it settles without overshoot, where
 // 0.95 of the undamped limit grows.

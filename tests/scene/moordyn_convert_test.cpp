@@ -116,7 +116,7 @@ TEST(MoorDynConvert, ThreeLegSpreadFollowsTheMapping) {
   EXPECT_TRUE(HasWarning(c.warnings, "\"wire\" (d 0.076 m)"));
 
   // Materials: area = pi d^2 / 4 (MoorDyn's d is volume-equivalent), E = EA / area,
-  // BA >= 0 -> axial_damping = BA / area, BA < 0 -> axial_damping_ratio = -BA.
+  // BA >= 0 -> axial_damping = BA / area, BA < 0 -> moordyn_axial_damping_ratio = -BA.
   const auto chain = Named(s, "material", "chain");
   const double chain_area = M_PI * 0.137 * 0.137 / 4;
   EXPECT_EQ(Num(chain["diameter"]), 0.137);
@@ -125,8 +125,9 @@ TEST(MoorDynConvert, ThreeLegSpreadFollowsTheMapping) {
   EXPECT_NEAR(Num(chain["youngs_modulus"]) * Num(chain["area"]), 5.4e8, kRel * 5.4e8);
   EXPECT_EQ(Num(chain["drag_coefficient"]), 2.4);
   EXPECT_EQ(Num(chain["added_mass_coefficient"]), 1.0);
-  EXPECT_EQ(Num(chain["axial_damping_ratio"]), 0.8);
+  EXPECT_EQ(Num(chain["moordyn_axial_damping_ratio"]), 0.8);
   EXPECT_FALSE(chain["axial_damping"]);
+  EXPECT_FALSE(chain["axial_damping_ratio"]);
   const auto wire = Named(s, "material", "wire");
   const double wire_area = M_PI * 0.076 * 0.076 / 4;
   EXPECT_NEAR(Num(wire["youngs_modulus"]), 5.6e8 / wire_area, kRel * 5.6e8 / wire_area);
@@ -192,7 +193,8 @@ TEST(MoorDynConvert, KeysKnowTheRowAndColumnTheyCameFrom) {
   EXPECT_EQ(place("material[1]"), "9: LINE TYPES row 2");
   EXPECT_EQ(place("material[1].youngs_modulus"), "9: LINE TYPES row 2, column EA");
   EXPECT_EQ(place("material[1].axial_damping"), "9: LINE TYPES row 2, column BA/-zeta");
-  EXPECT_EQ(place("material[0].axial_damping_ratio"), "8: LINE TYPES row 1, column BA/-zeta");
+  EXPECT_EQ(place("material[0].moordyn_axial_damping_ratio"),
+            "8: LINE TYPES row 1, column BA/-zeta");
   EXPECT_EQ(place("material[0].area"), "8: LINE TYPES row 1, column Diam");
   EXPECT_EQ(place("point[4].motion"), "17: POINTS row 5, column Attachment");
   EXPECT_EQ(place("point[6].position"), "20: POINTS row 7, columns X, Y, Z");
