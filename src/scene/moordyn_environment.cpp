@@ -161,6 +161,25 @@ void WriteStillSurface(const MoorDynSystem& system, const Sourced& gravity, doub
   }
 }
 
+// TmaxIC (ICTmax) = 0: MoorDyn makes no initial-condition solve and starts from the file's
+// positions.
+bool StartsAsGiven(const std::string& name, const MoorDynOption& option) {
+  return (name == "TmaxIC" || name == "ICTmax") && MoorDynOptionValue(option) == 0;
+}
+
+void WriteInitialState(const MoorDynSystem& system, MoorDynTomlOut* out) {
+  for (const auto& [name, option] : system.options) {
+    if (!StartsAsGiven(name, option)) continue;
+    out->text << "\n[initial]                         # OPTIONS " << name << " = " << option.text
+              << ", line " << option.line << ": no statics, as MoorDyn\n";
+    out->Table("initial", 0, "");
+    out->Key("state", "\"straight\"",
+             "points and bodies where the file puts them, lines straight between them");
+    out->Source("state", option.line, "OPTIONS " + name);
+    return;
+  }
+}
+
 // The options not mapped above: a comment (returned) for the hints and the initial-condition
 // solver's settings, a warning for what changes the physics or is unknown.
 std::string NoteOption(const std::string& name, const MoorDynOption& option,
@@ -172,6 +191,7 @@ std::string NoteOption(const std::string& name, const MoorDynOption& option,
       return given + " s" + at + ": MoorDyn's time step, a hint only; cablefilm chooses its "
              "own (simulation.time_step)";
     case MoorDynOptionKind::kInitialCondition:
+      if (StartsAsGiven(name, option)) return "";  // mapped: [initial]
       return given + at + ": MoorDyn's initial-condition settings, ignored: cablefilm solves "
              "the statics by Newton";
     case MoorDynOptionKind::kWaveKin:
@@ -212,6 +232,7 @@ void WriteMoorDynEnvironment(const MoorDynSystem& system, MoorDynTomlOut* out) {
   const Sourced gravity = WriteEnvironment(system, out);
   const Sourced seabed = WriteSeabed(system, out);
   WriteStillSurface(system, gravity, MoorDynDensity(system), seabed, out);
+  WriteInitialState(system, out);
   NoteOptions(system, out);
 }
 

@@ -325,6 +325,38 @@ TEST(MoorDynConvert, NamesAndTitlesAreEscaped) {
   EXPECT_EQ(c.scene["title"].value<std::string>(), std::string(200, 'T'));  // at most 200
 }
 
+// TmaxIC = 0: MoorDyn makes no initial-condition solve and starts from the file's positions:
+// initial.state = "straight", traced to the option's line; any other TmaxIC leaves the statics.
+TEST(MoorDynConvert, NoInitialConditionSolveStartsAsGiven) {
+  const std::string text = R"(Pendulum
+---------------------- LINE TYPES -----------------------
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
+main 0.1 7.85398 1e9 -0.01 0 0 0 0 0
+---------------------- POINTS ---------------------------
+ID Attachment X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Fixed 0 0 0 0 0 0 0
+2 Free 10 0 -100 1e5 0 0 0
+---------------------- LINES ----------------------------
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 main 1 2 100.5 20 -
+---------------------- OPTIONS --------------------------
+1000 WtrDnsty
+500 WtrDpth
+)";
+  const Converted given = Convert(ReadMoorDynText(text + "0.0 TmaxIC\n", "pendulum.txt"));
+  EXPECT_EQ(given.scene["initial"]["state"].value<std::string>(), "straight");
+  KeySources sources;
+  MoorDynToToml(ReadMoorDynText(text + "0.0 TmaxIC\n", "pendulum.txt"), nullptr, &sources);
+  ASSERT_TRUE(sources.count("initial.state"));
+  EXPECT_EQ(sources.at("initial.state").line, 18);
+  EXPECT_EQ(sources.at("initial.state").place, "OPTIONS TmaxIC");
+  const Converted solved = Convert(ReadMoorDynText(text + "10000 TmaxIC\n", "pendulum.txt"));
+  EXPECT_FALSE(solved.scene["initial"]);
+}
+
 // The options: a seabed above a point is lowered to it (as MoorDyn), with a warning; kBot 0 is
 // no seabed; waves, currents and unknown options are warnings, and the defaults are written.
 TEST(MoorDynConvert, OptionsAndTheirDefaults) {
