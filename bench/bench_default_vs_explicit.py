@@ -102,11 +102,11 @@ def main():
             print(line, flush=True)
             if re_ == 0 and rd != 0:
                 failures.append(f"{scene.name}: {taild}")
-            if pd and pe:
-                try:
+            try:
+                if pd and pe and float(pe) > 0:
                     differences.append((abs(float(pd) - float(pe)) / float(pe), scene.name))
-                except ValueError:
-                    pass
+            except ValueError:
+                pass
     print(f"\nthe explicit scheme finished and the default did not: {len(failures)}")
     for f in failures:
         print("  " + f)
