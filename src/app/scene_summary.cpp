@@ -80,14 +80,19 @@ void PrintLines(const Model& model) {
 }
 
 // The materials beyond the paper's model: the tangential (axial) drag and added mass, one line
-// per material that has them (nothing for the others).
+// per material that has them (nothing for the others); in waves, a material that leaves out the
+// Froude-Krylov force along the line.
 void PrintTangentialMaterials(const SceneDef& scene) {
   for (const MaterialDef& m : scene.materials) {
-    if (m.tangential_drag_coefficient == 0 && m.tangential_added_mass_coefficient == 0) continue;
+    const bool fk_off = scene.waves.present && !m.axial_froude_krylov;
+    if (m.tangential_drag_coefficient == 0 && m.tangential_added_mass_coefficient == 0 && !fk_off)
+      continue;
     std::printf("  material %s: along the line tangential_drag_coefficient %.4g (on pi d l), "
-                "tangential_added_mass_coefficient %.4g\n",
+                "tangential_added_mass_coefficient %.4g%s\n",
                 QuoteText(m.name).c_str(), m.tangential_drag_coefficient,
-                m.tangential_added_mass_coefficient);
+                m.tangential_added_mass_coefficient,
+                fk_off ? ", no Froude-Krylov force along it in waves (axial_froude_krylov = false)"
+                       : "");
   }
 }
 
@@ -140,6 +145,15 @@ void PrintSeabed(const Model& model) {
                 QuoteText(model.line_names[deepest_line]).c_str(), deepest);
 }
 
+const char* KinematicsText(WaveKinematics k) {
+  switch (k) {
+    case WaveKinematics::kLinear: return "\"linear\" (unstretched)";
+    case WaveKinematics::kExtrapolated: return "\"extrapolated\" (linearly above the still water)";
+    case WaveKinematics::kWheeler: break;
+  }
+  return "\"wheeler\" (stretched to the surface)";
+}
+
 void PrintWaves(const SceneDef& scene, const LineModel& m) {
   if (m.has_waves() && m.env.wave.spec.height == 0) {
     std::printf("  still water with its surface at y = %.6g m (waves.height = 0): no buoyancy, "
@@ -153,12 +167,12 @@ void PrintWaves(const SceneDef& scene, const LineModel& m) {
   std::printf("  waves (linear Airy, along %s): height %.4g m, period %.4g s, depth %.6g m, "
               "still water level y = %.6g m: length %.6g m, k h = %.4g (%s), steepness H/L = "
               "%.4g (breaks above %.4g), crest speed %.4g m/s, phase %.4g deg, ramp rate %.4g "
-              "1/s\n",
+              "1/s, kinematics %s\n",
               HeadingText(w.direction).c_str(), w.spec.height, w.spec.period, w.spec.depth,
               w.spec.surface_y, w.length(), kh,
               kh > M_PI ? "deep" : kh < M_PI / 10 ? "shallow" : "intermediate depth",
               w.steepness(), w.breaking_steepness(), w.omega / w.k, scene.waves.phase,
-              w.spec.ramp_rate);
+              w.spec.ramp_rate, KinematicsText(w.spec.kinematics));
   for (const PointDef& p : scene.points) {
     const EndDef& end = p.motion;
     if (end.follows_wave)

@@ -156,11 +156,15 @@ LineModel MakeLineModel(const std::vector<SectionSpec>& sections, const std::vec
     m.station_buoyancy = Eigen::VectorXd::Zero(s + 1);
     m.wet_band = Eigen::VectorXd::Zero(s + 1);
     m.link_fluid_mass.resize(s);
+    m.link_axial_fluid_mass.resize(s);
     j = 0;
     for (const SectionSpec& sec : sections) {
       for (int i = 0; i < sec.segments; ++i, ++j) {
         const double l = m.rest_length[j], displaced = rho * sec.area * l;  // [kg]
         m.link_fluid_mass[j] = displaced + m.virtual_mass[j];
+        m.link_axial_fluid_mass[j] = sec.axial_froude_krylov
+                                         ? displaced + m.tangential_virtual_mass[j]
+                                         : m.tangential_virtual_mass[j];
         for (int st : {j, j + 1}) {
           m.station_buoyancy[st] += 0.5 * displaced * g;
           m.wet_band[st] += 0.5 * l;

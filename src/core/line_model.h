@@ -148,6 +148,11 @@ struct Line {
   Eigen::VectorXd link_fluid_mass;   // rho sigma l (1 + k) [kg] per link: Froude-Krylov plus
                                      // the normal added mass e, on the water's normal
                                      // acceleration (Morison's C_M = 1 + k)
+  Eigen::VectorXd link_axial_fluid_mass;  // rho sigma l (1 + k^t) [kg] per link: Froude-Krylov
+                                     // plus the tangential added mass e^t, on the water's
+                                     // acceleration along the link (MoorDyn's 1 + CaAx); e^t
+                                     // alone where the material leaves the Froude-Krylov
+                                     // part along the line out (axial_froude_krylov false)
   Points prism_added_mass;           // rho (V^x, V^y, V^z) [kg] per station
   Points prism_fluid_mass;           // rho (V* + V^x, V* + V^y, V* + V^z) [kg] per station
 
@@ -239,6 +244,8 @@ struct SectionSpec {
   double minimum_breaking_load = 0;  // MBL [N], for the utilisation T / MBL; 0 = not given
   double tangential_drag_coefficient = 0;       // C^T, on pi d l (MoorDyn's CdAx)
   double tangential_added_mass_coefficient = 0; // k^t, on sigma l along the link (CaAx)
+  bool axial_froude_krylov = true;   // in waves, the Froude-Krylov force along the link too,
+                                     // rho sigma l (t . A) (MoorDyn's); false: across it only
 };
 
 struct PrismSpec {

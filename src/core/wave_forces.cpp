@@ -149,10 +149,11 @@ void AddWaveExternalForces(const LineModel& m, const Water& water, const LinkGeo
     if (!sea.still) {  // the water's acceleration A (none in still water)
       const Vec A = 0.5 * (sea.acceleration.col(k) + sea.acceleration.col(k + 1));
       F += (0.5 * psi * m.line.link_fluid_mass[k]) * (A - t * t.dot(A));
-      // Along the link the tangential added mass e^t on the water's acceleration (no
-      // Froude-Krylov along it, as across it has: see model.md, Waves).
-      if (m.line.tangential_virtual_mass[k] != 0)
-        F += (0.5 * psi * m.line.tangential_virtual_mass[k] * t.dot(A)) * t;
+      // Along the link Froude-Krylov rho sigma l plus the tangential added mass e^t on the
+      // water's acceleration along it (MoorDyn's 1 + CaAx; e^t alone without the axial
+      // Froude-Krylov part: see model.md, Waves).
+      if (m.line.link_axial_fluid_mass[k] != 0)
+        F += (0.5 * psi * m.line.link_axial_fluid_mass[k] * t.dot(A)) * t;
     }
     force.col(k) += F;
     force.col(k + 1) += F;
@@ -235,10 +236,11 @@ void AddWaveForceJacobian(const LineModel& m, const Water& water, const LinkGeom
       Ja += across * Gradient(sea.acceleration_gradient, k);
       Jc += across * Gradient(sea.acceleration_gradient, k + 1);
     }
-    if (m.line.tangential_virtual_mass[k] != 0 && !sea.still) {
-      // (e^t / 2) (t . A) t: through t, d/dd = (e^t / 2)((t . A) P + t (P A)^T) / L, the
-      // negative of the part across's; through A, (e^t / 2) t t^T on each station's half.
-      const double Mt = 0.5 * m.line.tangential_virtual_mass[k];
+    if (m.line.link_axial_fluid_mass[k] != 0 && !sea.still) {
+      // (M^t / 2) (t . A) t, M^t = rho sigma l (1 + k^t) (or e^t alone): through t, d/dd =
+      // (M^t / 2)((t . A) P + t (P A)^T) / L, the negative of the part across's; through A,
+      // (M^t / 2) t t^T on each station's half.
+      const double Mt = 0.5 * m.line.link_axial_fluid_mass[k];  // [kg]
       const Vec A = 0.5 * (sea.acceleration.col(k) + sea.acceleration.col(k + 1));
       const Vec An = A - t * t.dot(A);
       F_dry += (Mt * t.dot(A)) * t;

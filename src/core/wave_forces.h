@@ -8,12 +8,14 @@
 // its wet fraction:
 //   drag      D = -psi f^D q |q|,  q = n . (mean station velocity - c(y_mid) e_x - mean U)
 //   inertia   F = psi rho sigma l (1 + k) (n . mean A) n        (Froude-Krylov + added mass)
+//   along     F^t = psi rho sigma l (1 + k^t) (t . mean A) t    (the same along the link, as
+//                                                               MoorDyn's 1 + CaAx; e^t alone
+//                                                               without axial Froude-Krylov)
 // with U, A the water's velocity and acceleration at the stations (waves.h). Per prism:
 //   drag      -phi u f (.) rel,  rel = v - c(y) e_x - U
 //   inertia   phi rho (V* + V^x, V* + V^y) (.) A
-// With the tangential coefficients (line_model.h) a link adds along itself
+// With the tangential drag coefficient (line_model.h) a link adds along itself
 //   drag      -psi f^T |p| p t,  p = t . (mean station velocity - c(y_mid) e_x - mean U)
-//   inertia   psi e^t (t . mean A) t                          (added mass only, no Froude-Krylov)
 // Buoyancy: a station loses (1 - phi_j) of its buoyancy B_j (its links' halves and V*). Added
 // masses in the inertia tensor: psi e (and psi e^t along) for the links, phi rho V for the prisms.
 //

@@ -89,41 +89,78 @@ WaterKinematics KinematicsAt(const Wave& wave, const Vec& position, double t,
   const Vec dtheta = k * e;  // d theta / d position
   out.eta_gradient = (-R * a * si) * dtheta;
   if (a == 0) return out;
-  // Wheeler stretching: z_s = h (z - eta) / (h + eta) on [-h, 0]; held at the ends beyond.
+  // The evaluation point z_e [m] (elevation above the still water level) and its gradient
+  // dz_e / d position [1], by the spec's kinematics; then the depth profiles at it:
+  //   C = cosh(k (z_e + h)) / sinh(k h),  S = sinh(k (z_e + h)) / sinh(k h)
+  // written without overflow at any k h as [e^{k z_e} +- e^{-k (z_e + 2h)}] / (1 - e^{-2 k h}),
+  // e^{-k (z_e + 2h)} = e^{-2 k h} / e^{k z_e} (both 0 when e^{k z_e} underflows: k h > 700).
+  // dC/dz_e = k S_slope and dS/dz_e = k C_slope [1/m]: S and C themselves, but for the Taylor
+  // extension above the still water level, whose slopes are those at z_e = 0.
   const double z = position[kVertical] - wave.spec.surface_y, eta = out.eta;
-  double zs = h * (z - eta) / (h + eta);
-  Vec dzs = -h * (h + z) / ((h + eta) * (h + eta)) * out.eta_gradient;  // d zs / d position
-  dzs[kVertical] = h / (h + eta);
-  if (zs > 0 || zs < -h) {
-    zs = std::clamp(zs, -h, 0.0);
-    dzs.setZero();
+  double ze = 0, C = 0, S = 0, C_slope = 0, S_slope = 0;
+  Vec dze = Vec::Zero();
+  const auto profiles = [&](double at) {
+    const double e1 = std::exp(k * at), e2 = e1 > 0 ? wave.decay / e1 : 0.0;
+    C = (e1 + e2) / wave.decay_gap;
+    S = (e1 - e2) / wave.decay_gap;
+    C_slope = C;
+    S_slope = S;
+  };
+  if (wave.spec.kinematics == WaveKinematics::kWheeler) {
+    // z_s = h (z - eta) / (h + eta) on [-h, 0]; held at the ends beyond.
+    ze = h * (z - eta) / (h + eta);
+    dze = -h * (h + z) / ((h + eta) * (h + eta)) * out.eta_gradient;
+    dze[kVertical] = h / (h + eta);
+    if (ze > 0 || ze < -h) {
+      ze = std::clamp(ze, -h, 0.0);
+      dze.setZero();
+    }
+    profiles(ze);
+  } else {
+    // z itself on [-h, eta]: above the surface the surface's own point (moving with eta), below
+    // the bed the bed.
+    ze = z;
+    dze[kVertical] = 1.0;
+    if (z > eta) {
+      ze = eta;
+      dze = out.eta_gradient;
+    } else if (z < -h) {
+      ze = -h;
+      dze.setZero();
+    }
+    if (wave.spec.kinematics == WaveKinematics::kExtrapolated && ze > 0) {
+      // q(0) + z_e dq/dz(0): C(0) + z_e k S(0), S(0) + z_e k C(0).
+      profiles(0.0);
+      const double C0 = C, S0 = S;
+      C = C0 + ze * k * S0;
+      S = S0 + ze * k * C0;
+      C_slope = C0;
+      S_slope = S0;
+    } else {
+      profiles(ze);
+    }
   }
-  // cosh(k (zs + h)) / sinh(k h) and sinh(...) / sinh(k h) without overflow at any k h:
-  // [e^{k zs} +- e^{-k (zs + 2h)}] / (1 - e^{-2 k h}), e^{-k (zs + 2h)} = e^{-2 k h} / e^{k zs}
-  // (both 0 when e^{k zs} underflows: k h > 700 then).
-  const double e1 = std::exp(k * zs), e2 = e1 > 0 ? wave.decay / e1 : 0.0;
-  const double C = (e1 + e2) / wave.decay_gap, S = (e1 - e2) / wave.decay_gap;
-  // Each component q = A(zs) trig(theta): dq/dx = A'(zs) dzs/dx trig + A trig' dtheta/dx,
-  // with C' = k S and S' = k C. The horizontal part along e, the vertical along y.
+  // Each component q = A(z_e) trig(theta): dq/dx = A'(z_e) dz_e/dx trig + A trig' dtheta/dx,
+  // with C' = k S_slope and S' = k C_slope. The horizontal part along e, the vertical along y.
   const double aw = a * w;
   const double uh = R * aw * C * co, uv = R * aw * S * si;
-  const double uh_z = R * aw * k * S * co, uh_th = -R * aw * C * si;
-  const double uv_z = R * aw * k * C * si, uv_th = R * aw * S * co;
-  // Acceleration d(R u)/dt at fixed zs: dR/dt u + R du/dt, d theta/dt = -omega.
+  const double uh_z = R * aw * k * S_slope * co, uh_th = -R * aw * C * si;
+  const double uv_z = R * aw * k * C_slope * si, uv_th = R * aw * S * co;
+  // Acceleration d(R u)/dt at fixed z_e: dR/dt u + R du/dt, d theta/dt = -omega.
   const double ah = aw * C * (R * w * si + dR * co);
   const double av = aw * S * (-R * w * co + dR * si);
-  const double ah_z = aw * k * S * (R * w * si + dR * co);
+  const double ah_z = aw * k * S_slope * (R * w * si + dR * co);
   const double ah_th = aw * C * (R * w * co - dR * si);
-  const double av_z = aw * k * C * (-R * w * co + dR * si);
+  const double av_z = aw * k * C_slope * (-R * w * co + dR * si);
   const double av_th = aw * S * (R * w * si + dR * co);
   Vec up = Vec::Zero();
   up[kVertical] = 1.0;
   out.velocity = uh * e + uv * up;
   out.acceleration = ah * e + av * up;
-  out.velocity_gradient = e * (uh_z * dzs + uh_th * dtheta).transpose() +
-                          up * (uv_z * dzs + uv_th * dtheta).transpose();
-  out.acceleration_gradient = e * (ah_z * dzs + ah_th * dtheta).transpose() +
-                              up * (av_z * dzs + av_th * dtheta).transpose();
+  out.velocity_gradient = e * (uh_z * dze + uh_th * dtheta).transpose() +
+                          up * (uv_z * dze + uv_th * dtheta).transpose();
+  out.acceleration_gradient = e * (ah_z * dze + ah_th * dtheta).transpose() +
+                              up * (av_z * dze + av_th * dtheta).transpose();
   return out;
 }
 

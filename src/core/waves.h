@@ -10,17 +10,28 @@
 //   omega^2 = g k tanh(k h)                                    (the dispersion relation)
 //
 // z = y - surface_y is the elevation above the still water level and R(t) = 1 - (1 + nu t)
-// e^{-nu t} the ramp of eq. (3) (the end motion's own), so the sea starts calm. Above the still
-// water level the kinematics are Wheeler-stretched: z is mapped from [-h, eta] onto [-h, 0],
-// z_s = h (z - eta) / (h + eta), and the formulas are evaluated at z_s (so the surface moves at
-// the linear surface velocity, not the exponentially growing extrapolation). Above the
-// instantaneous surface z_s is held at 0 and below the bed (z < -h) at -h. The acceleration is
-// the local one, d(R u)/dt at fixed z_s (the convective terms are second order in H / L).
+// e^{-nu t} the ramp of eq. (3) (the end motion's own), so the sea starts calm. Where in the water
+// column the formulas are evaluated is the WaveSpec's `kinematics` (WaveKinematics below):
+// Wheeler-stretched by default, z mapped from [-h, eta] onto [-h, 0]. Above the instantaneous
+// surface every mode holds the surface's value, and below the bed (z < -h) the bed's. The
+// acceleration is the local one, d(R u)/dt at fixed evaluation point (the convective terms are
+// second order in H / L).
 #include <vector>
 
 #include "core/vec.h"
 
 namespace cablefilm {
+
+// Where the Airy formulas are evaluated for a point at elevation z above the still water level
+// (eta the surface's elevation there, h the depth; z first held to [-h, eta]):
+enum class WaveKinematics {
+  kWheeler,       // at z_s = h (z - eta) / (h + eta): the column [-h, eta] mapped onto [-h, 0],
+                  // so the surface moves at the linear surface velocity (Wheeler 1970)
+  kLinear,        // at z itself: the formulas as written, in a crest above the still water
+                  // level too (their exponential growth, unstretched)
+  kExtrapolated,  // at z below the still water level; above it (in a crest) the first-order
+                  // Taylor extension from z = 0, q(0) + z dq/dz(0) (DNV's linear extrapolation)
+};
 
 struct WaveSpec {
   bool present = false;
@@ -31,6 +42,7 @@ struct WaveSpec {
   double phase = 0;       // [rad]: theta at x = 0, t = 0 (0: a crest at x = 0)
   double heading = 0;     // the direction they travel [rad] from +x towards +z
   double ramp_rate = 0;   // nu [1/s] of R(t); 0: no ramp (R = 1 from t = 0)
+  WaveKinematics kinematics = WaveKinematics::kWheeler;  // where the formulas are evaluated
 };
 
 // The wave number k [1/m] of omega^2 = g k tanh(k h): Newton's method on x tanh x = omega^2 h / g

@@ -149,6 +149,7 @@ WaveSpec MakeWaveSpec(const SceneDef& scene) {
   w.phase = d.phase * M_PI / 180.0;
   w.heading = d.heading * M_PI / 180.0;
   w.ramp_rate = d.ramp_rate;
+  w.kinematics = d.kinematics;
   return w;
 }
 
@@ -188,6 +189,7 @@ std::vector<SectionSpec> MakeSections(const SceneDef& scene, const std::vector<S
     s.minimum_breaking_load = mat.minimum_breaking_load;
     s.tangential_drag_coefficient = mat.tangential_drag_coefficient;
     s.tangential_added_mass_coefficient = mat.tangential_added_mass_coefficient;
+    s.axial_froude_krylov = mat.axial_froude_krylov;
     sections.push_back(s);
   }
   return sections;

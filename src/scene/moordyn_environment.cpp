@@ -130,6 +130,25 @@ Sourced WriteSeabed(const MoorDynSystem& system, MoorDynTomlOut* out) {
   return depth;
 }
 
+// Where MoorDyn takes its wave kinematics (WaveKin): its own waves (2, 3 from a grid, 7 at the
+// nodes; 0, none, alike) are stretched to the instantaneous surface and held at the surface's
+// above it, Wheeler's stretching (Waves.cpp, SpectrumKin.cpp); externally driven waves (1) are
+// the calling program's as it gives them at each node, stretched by nothing: the formulas at
+// the node's own elevation.
+void WriteKinematics(const MoorDynSystem& system, MoorDynTomlOut* out) {
+  std::string name;
+  const MoorDynOption* wavekin = FindMoorDynOption(system, MoorDynOptionKind::kWaveKin, &name);
+  if (wavekin && MoorDynOptionValue(*wavekin) == 1) {
+    out->Key("kinematics", TomlString("linear"),
+             "OPTIONS " + name + " = 1: MoorDyn stretches no kinematics it is given");
+    out->Source("kinematics", wavekin->line, "OPTIONS " + name);
+    return;
+  }
+  out->Key("kinematics", TomlString("wheeler"),
+           "MoorDyn's own waves are stretched to the instantaneous surface");
+  if (wavekin) out->Source("kinematics", wavekin->line, "OPTIONS " + name);
+}
+
 // MoorDyn's still water surface at z = 0: a line's segments above it have no buoyancy, drag or
 // added mass (Line.cpp, the submerged fraction of each segment, waves or not). In cablefilm a
 // surface comes with [waves]; height 0 is still water. Without it the fluid would fill all
@@ -159,6 +178,7 @@ void WriteStillSurface(const MoorDynSystem& system, const Sourced& gravity, doub
       depth = std::max(depth, -MoorDynPointPosition(system, p)[2]);
     out->Key("depth", TomlNumber(depth), "m: no seabed; the deepest point's depth");
   }
+  WriteKinematics(system, out);
 }
 
 // TmaxIC (ICTmax) = 0: MoorDyn makes no initial-condition solve and starts from the file's

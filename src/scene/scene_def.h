@@ -35,6 +35,8 @@ struct WavesDef {                  // [waves]: regular linear (Airy) waves along
   double phase = 0;                // [deg]: the phase of the surface at x = 0, t = 0 (0: a crest)
   double heading = 0;              // [deg]: the direction they travel, from +x towards +z
   double ramp_rate = 0;            // nu [1/s] of eq. (3)'s ramp R(t); default 4 / T
+  WaveKinematics kinematics = WaveKinematics::kWheeler;  // where the Airy formulas are
+                                   // evaluated (core/waves.h): "wheeler", "linear", "extrapolated"
 };
 
 struct MaterialDef {
@@ -51,6 +53,7 @@ struct MaterialDef {
   double minimum_breaking_load = 0;    // MBL [N]: utilisation = tension / MBL; 0 = not given
   double tangential_drag_coefficient = 0;       // C^T, along the link on pi d l (MoorDyn's CdAx)
   double tangential_added_mass_coefficient = 0; // k^t, along the link (MoorDyn's CaAx)
+  bool axial_froude_krylov = true;     // in waves, the Froude-Krylov force along the line too
 };
 
 struct SectionDef {

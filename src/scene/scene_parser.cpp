@@ -201,6 +201,11 @@ void ReadWaves(TableReader& top, SceneDef& scene) {
                        " (the direction they travel, degrees from +x towards +z)");
   w.ramp_rate =
       r.OptionalPositive("ramp_rate", 4.0 / w.period, " in 1/s", kMinRampRate, kMaxRampRate);
+  const std::string kinematics =
+      r.Choice("kinematics", "wheeler", {"wheeler", "linear", "extrapolated"});
+  w.kinematics = kinematics == "linear"         ? WaveKinematics::kLinear
+                 : kinematics == "extrapolated" ? WaveKinematics::kExtrapolated
+                                                : WaveKinematics::kWheeler;
   if (!(scene.environment.gravity > 0))
     r.Fail(t, "period", "expected gravity > 0 for waves (environment.gravity = 0)");
   WaveSpec spec;  // the wave number and the breaking height need the period and depth only
@@ -266,6 +271,7 @@ void ReadMaterials(TableReader& top, SceneDef& scene, bool elastic) {
         r.OptionalNonNegative("tangential_drag_coefficient", 0.0, "", kMaxCoefficient);
     m.tangential_added_mass_coefficient =
         r.OptionalNonNegative("tangential_added_mass_coefficient", 0.0, "", kMaxCoefficient);
+    m.axial_froude_krylov = r.Bool("axial_froude_krylov", true);
     m.axial_damping = r.OptionalNonNegative("axial_damping", 0.0, " in Pa s", kMaxAxialDamping);
     m.axial_damping_ratio =
         r.OptionalNonNegative("axial_damping_ratio", 0.0, " (of critical)", kMaxDampingRatio);

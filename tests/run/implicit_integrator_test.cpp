@@ -586,8 +586,14 @@ TEST(ImplicitIntegrator, PredictorSlopeKeepsNewtonAtTwoIterationsOnALongTautLine
 // `axial`: tangential drag and added mass too, of the size of the normal ones but not equal to
 // them (C^T pi = 1.6 and 1.3 against C^D = 1.2 and 1.0; k^t = 0.6 and 1.3 against k = 1.0 and
 // 0.8), so that a term swapped between across and along shows.
+// In waves, `kinematics` says where the Airy formulas are evaluated, and `axial_froude_krylov`
+// whether the Froude-Krylov force acts along the links as well as across them (the default).
+struct WaveOptions {
+  WaveKinematics kinematics = WaveKinematics::kWheeler;
+  bool axial_froude_krylov = true;
+};
 LineModel JacobianModel(double damping_ratio = 0, bool sea = false, bool waves = false,
-                    bool axial = false, bool stick_slip = false) {
+                    bool axial = false, bool stick_slip = false, WaveOptions wave_options = {}) {
   SectionSpec a{6.0, 6, 0.05, 1e-3, 1.5, 1e6, 1.2, 1.0};   // EA = 1 kN
   SectionSpec b{4.0, 5, 0.03, 5e-4, 0.8, 4e6, 1.0, 0.8};   // EA = 2 kN
   if (axial) {
@@ -596,6 +602,7 @@ LineModel JacobianModel(double damping_ratio = 0, bool sea = false, bool waves =
     b.tangential_drag_coefficient = 0.4;
     b.tangential_added_mass_coefficient = 1.3;
   }
+  a.axial_froude_krylov = b.axial_froude_krylov = wave_options.axial_froude_krylov;
   a.axial_damping_ratio = damping_ratio;
   b.axial_damping = 2e4 * damping_ratio;  // [Pa s]: c = BA sigma / l = 12.5 zeta N s/m
   PrismSpec p;
@@ -631,6 +638,7 @@ LineModel JacobianModel(double damping_ratio = 0, bool sea = false, bool waves =
     env.waves.surface_y = 0.5;
     env.waves.phase = 0.4;
     env.waves.ramp_rate = 0.8;  // [1/s]: R(2 s) = 0.48
+    env.waves.kinematics = wave_options.kinematics;
     env.current = 0;
     env.current_profile.y = {-3.0, -0.7, 0.4, 2.5};
     env.current_profile.speed = {0.2, 0.9, -0.4, 1.1};
@@ -689,8 +697,9 @@ double RelativeError(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& fd)
 
 void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = false,
                                              bool waves = false, bool axial = false,
-                                             bool stick_slip = false) {
-  const LineModel m = JacobianModel(damping_ratio, sea, waves, axial, stick_slip);
+                                             bool stick_slip = false,
+                                             WaveOptions wave_options = {}) {
+  const LineModel m = JacobianModel(damping_ratio, sea, waves, axial, stick_slip, wave_options);
   const double t = 2.0;  // [s]: the time of the sea (waves only)
   const int j0 = m.first_free(), j1 = m.last_free(), n = j1 - j0 + 1;
   ASSERT_EQ(j0, 1);
@@ -700,6 +709,7 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
   double worst_times = 0;  // StationInertiaTimes (Newton's residual) against M a
   int grounded = 0;  // stations on the bed, over the trials
   int surface = 0;   // stations in the surface's band (partly wet), over the trials
+  int crest = 0;     // stations above the still water level, wholly or partly wet
   int sticking = 0, sliding = 0;  // grounded stations of each friction branch (stick_slip)
   for (int trial = 0; trial < 5; ++trial) {
     Points x, v, a;
@@ -731,8 +741,10 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
     }
     if (waves) {
       ComputeGeometry(m, SceneWater(m), t, x, ws.geometry);
-      for (int j = j0; j <= j1; ++j)
+      for (int j = j0; j <= j1; ++j) {
         surface += ws.geometry.sea.wet[j] > 0 && ws.geometry.sea.wet[j] < 1;
+        crest += ws.geometry.sea.wet[j] > 0 && x(1, j) > m.env.wave.spec.surface_y;
+      }
     }
     auto forces = [&](const Points& xx, const Points& vv) {
       ComputeGeometry(m, SceneWater(m), t, xx, ws.geometry);
@@ -806,8 +818,10 @@ void ExpectJacobianMatchesCentralDifferences(double damping_ratio, bool sea = fa
     EXPECT_GE(sliding, 3);
   }
   if (waves) {
-    std::printf("[ jacobian ] %d of the 5 x %d free stations in the surface's band\n", surface, n);
+    std::printf("[ jacobian ] %d of the 5 x %d free stations in the surface's band, %d wet "
+                "above the still water level\n", surface, n, crest);
     EXPECT_GT(surface, 5);  // the wet fraction's terms are exercised
+    EXPECT_GT(crest, 3);    // so are the kinematics above the still water level
   }
   EXPECT_LT(worst_x, 1e-6);
   EXPECT_LT(worst_v, 1e-6);
@@ -863,6 +877,32 @@ TEST(ImplicitIntegrator, AnalyticJacobianWithTangentialTermsSeabedAndProfileMatc
 }
 TEST(ImplicitIntegrator, AnalyticJacobianWithTangentialTermsInWavesMatchesCentralDifferences) {
   ExpectJacobianMatchesCentralDifferences(0.2, false, true, true);
+}
+
+// In waves the Froude-Krylov force acts along the links too (by default, in every test with
+// waves above): rho sigma l (1 + k^t) (t . A) t, through the links' direction and the water's
+// acceleration gradient. Without it (a material's axial_froude_krylov = false) the force along
+// is the added mass's alone, with and without the tangential coefficients.
+TEST(ImplicitIntegrator, AnalyticJacobianInWavesWithoutAxialFroudeKrylovMatchesCentralDifferences) {
+  WaveOptions options;
+  options.axial_froude_krylov = false;
+  ExpectJacobianMatchesCentralDifferences(0.2, false, true, true, false, options);
+  ExpectJacobianMatchesCentralDifferences(0.2, false, true, false, false, options);
+}
+
+// The kinematics evaluated unstretched ("linear": the formulas at the station's own elevation)
+// and extrapolated linearly above the still water level: their gradients, above it in the
+// crests too, and held at the surface's (moving with it) above the surface.
+TEST(ImplicitIntegrator, AnalyticJacobianInWavesWithLinearKinematicsMatchesCentralDifferences) {
+  WaveOptions options;
+  options.kinematics = WaveKinematics::kLinear;
+  ExpectJacobianMatchesCentralDifferences(0.2, false, true, true, false, options);
+}
+TEST(ImplicitIntegrator,
+     AnalyticJacobianInWavesWithExtrapolatedKinematicsMatchesCentralDifferences) {
+  WaveOptions options;
+  options.kinematics = WaveKinematics::kExtrapolated;
+  ExpectJacobianMatchesCentralDifferences(0.2, false, true, true, false, options);
 }
 }  // namespace
 }  // namespace cablefilm

@@ -143,10 +143,16 @@ TEST(StickSlipFriction, PulledChainHoldsTheCoulombTensionWithoutCreep) {
 // touchdown moving along the bed), at the default shear stiffness (the bed's normal one,
 // 3e7 N/m^2) and ten times it. The smoothed law moves it by 35 % and 27 % for each tenfold
 // sharpening (272, 177, 129 kN at v_f = 0.01, 0.001, 1e-4 m/s).
+// The bound is the friction law's, measured on the scene's line and sea without the
+// Froude-Krylov force along the line (axial_froude_krylov = false): that force moves the anchor
+// tension by 0.08 kN RMS and the pair to 106.79 and 108.18 kN (1.30 %; converged, at a
+// thousandth of the default tolerance, 108.70 and 109.81 kN, 1.02 %), which the default's own
+// error in the range (1.8 %) swamps; the law's convergence is what is asked here.
 TEST(StickSlipFriction, GroundedMooringAnchorRangeConvergesAsTheLawSharpens) {
   const std::string path = std::string(CABLEFILM_SOURCE_DIR) + "/scenes/grounded_mooring.toml";
   auto range = [&](double shear) {
     SceneDef scene = LoadScene(path);
+    for (MaterialDef& material : scene.materials) material.axial_froude_krylov = false;
     scene.seabed.friction_stiffness = shear;
     const LineModel m = LineOf(scene);
     CheckModelLimits(scene, BuildModel(scene));

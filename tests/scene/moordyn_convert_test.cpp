@@ -389,6 +389,18 @@ euler tScheme
   EXPECT_EQ(Num(c.scene["waves"]["height"]), 0.0);
   EXPECT_FALSE(c.scene["waves"]["depth"]);
   EXPECT_FALSE(c.scene["waves"]["surface_y"]);  // 0, the default
+  // Externally driven waves (WaveKin 1) are the calling program's as given, stretched by
+  // nothing; MoorDyn's own (WaveKin 2, 3, 7) are stretched to the instantaneous surface, as
+  // Wheeler's; none (WaveKin 0 or not given) alike.
+  EXPECT_EQ(c.scene["waves"]["kinematics"].value<std::string>(), "linear");
+  for (const char* own : {"7 WaveKin", "3 WaveKin", "0 WaveKin", "0 Currents"}) {
+    std::string other = text;
+    other.replace(other.find("1 WaveKin"), 9, own);
+    EXPECT_EQ(Convert(ReadMoorDynText(other, "sys.txt")).scene["waves"]["kinematics"]
+                  .value<std::string>(),
+              "wheeler")
+        << own;
+  }
   EXPECT_FALSE(HasWarning(c.warnings, "Currents"));
   EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:19: OPTIONS tScheme = euler: ignored"));
   EXPECT_TRUE(HasWarning(c.warnings, "sys.txt:5: LINE TYPES \"chain\": EI 10000 N m^2: bending "

@@ -242,6 +242,50 @@ TEST(SceneLoader, TangentialDragAndAddedMass) {
               "material[1].tangential_drag_coefficient", {"non-finite"});
 }
 
+// The Froude-Krylov force along the line in waves: on unless the material leaves it out; the
+// model's fluid mass along each link is then rho sigma l (1 + k^t), else e^t = rho sigma l k^t.
+TEST(SceneLoader, AxialFroudeKrylov) {
+  const std::string waves = "\n[waves]\nheight = 2\nperiod = 8\ndepth = 50\n";
+  const SceneDef on = ParseScene(
+      With("youngs_modulus = 2.0e9", "youngs_modulus = 2.0e9\ntangential_added_mass_coefficient = 0.5") +
+          waves,
+      kFile);
+  for (const MaterialDef& m : on.materials) EXPECT_TRUE(m.axial_froude_krylov);
+  const SceneDef off = ParseScene(
+      With("youngs_modulus = 2.0e9", "youngs_modulus = 2.0e9\ntangential_added_mass_coefficient = "
+                                     "0.5\naxial_froude_krylov = false") +
+          waves,
+      kFile);
+  EXPECT_TRUE(off.materials[0].axial_froude_krylov);
+  EXPECT_FALSE(off.materials[1].axial_froude_krylov);
+  const LineModel m_on = LineOf(on), m_off = LineOf(off);
+  const int last = m_on.line.links - 1;  // a link of the nylon, material[1]
+  const double displaced = 1025.0 * 2.027e-3 * m_on.line.rest_length[last];  // rho sigma l [kg]
+  EXPECT_DOUBLE_EQ(m_on.line.link_axial_fluid_mass[last], 1.5 * displaced);
+  EXPECT_DOUBLE_EQ(m_off.line.link_axial_fluid_mass[last], 0.5 * displaced);
+  EXPECT_DOUBLE_EQ(m_off.line.link_axial_fluid_mass[0], m_on.line.link_axial_fluid_mass[0]);
+  ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = 2.0e9\naxial_froude_krylov = 0"),
+              "material[1].axial_froude_krylov", {"expected true or false"});
+}
+
+// Where the Airy formulas are evaluated: Wheeler's stretching unless the scene says otherwise;
+// any other name is refused with the file, the key and the three expected.
+TEST(SceneLoader, WaveKinematics) {
+  const std::string waves = kBase + "\n[waves]\nheight = 2\nperiod = 8\ndepth = 50\n";
+  EXPECT_EQ(ParseScene(waves, kFile).waves.kinematics, WaveKinematics::kWheeler);
+  EXPECT_EQ(LineOf(ParseScene(waves, kFile)).env.wave.spec.kinematics, WaveKinematics::kWheeler);
+  EXPECT_EQ(LineOf(ParseScene(waves + "kinematics = \"linear\"\n", kFile)).env.wave.spec.kinematics,
+            WaveKinematics::kLinear);
+  EXPECT_EQ(LineOf(ParseScene(waves + "kinematics = \"extrapolated\"\n", kFile))
+                .env.wave.spec.kinematics,
+            WaveKinematics::kExtrapolated);
+  EXPECT_EQ(ParseScene(waves + "kinematics = \"wheeler\"\n", kFile).waves.kinematics,
+            WaveKinematics::kWheeler);
+  ExpectError(waves + "kinematics = \"stretched\"\n", "waves.kinematics",
+              {"expected one of \"wheeler\", \"linear\", \"extrapolated\"", "got \"stretched\""});
+  ExpectError(waves + "kinematics = 1\n", "waves.kinematics", {"expected one of"});
+}
+
 TEST(SceneLoader, NonFiniteNumbers) {
   ExpectError(With("length = 45.72", "length = nan"), "cable.section[0].length", {"non-finite"});
   ExpectError(With("youngs_modulus = 2.0e9", "youngs_modulus = inf"),
