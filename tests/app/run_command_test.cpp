@@ -294,24 +294,34 @@ TEST_F(RunCommandTest, ASystemsUnresolvedSnapsAreMeasuredByARefinedRun) {
   EXPECT_NEAR(run.summary.peak, s.refined_peak, 1e-9 * run.summary.peak);
 }
 
-// The RMS of the rows' largest tension (column tension_max of timeseries.csv) from t0 [s] on.
-double RowMaximumRms(const fs::path& timeseries, double t0) {
+// A column of timeseries.csv by its name, with the rows' times: (t [s], value) per row.
+std::vector<std::pair<double, double>> TimeseriesColumn(const fs::path& timeseries,
+                                                        const std::string& name) {
   std::istringstream in(ReadText(timeseries));
   std::string line;
   std::getline(in, line);
   int column = 0;
   for (std::size_t at = 0, next; (next = line.find(',', at)) != std::string::npos; at = next + 1) {
-    if (line.substr(at, next - at) == "tension_max") break;
+    if (line.substr(at, next - at) == name) break;
     ++column;
   }
-  double squares = 0;
-  long rows = 0;
+  std::vector<std::pair<double, double>> rows;
   while (std::getline(in, line)) {
     std::vector<double> v;
     std::istringstream cells(line);
     for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::atof(cell.c_str()));
-    if (v.size() <= static_cast<std::size_t>(column) || v[0] < t0) continue;
-    squares += v[column] * v[column];
+    if (v.size() > static_cast<std::size_t>(column)) rows.push_back({v[0], v[column]});
+  }
+  return rows;
+}
+
+// The RMS of the rows' largest tension (tension_max) from t0 [s] on.
+double RowMaximumRms(const fs::path& timeseries, double t0) {
+  double squares = 0;
+  long rows = 0;
+  for (const auto& [t, tension] : TimeseriesColumn(timeseries, "tension_max")) {
+    if (t < t0) continue;
+    squares += tension * tension;
     ++rows;
   }
   return rows > 0 ? std::sqrt(squares / rows) : std::nan("");
@@ -447,22 +457,12 @@ ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
   o.film = 0;
   o.out_dir = (dir_ / "pendulum").string();
   ASSERT_EQ(RunCommand(file, o), 0);
-  std::istringstream rows(ReadText(dir_ / "pendulum" / "timeseries.csv"));
-  std::string line;
-  std::getline(rows, line);
-  int column = 0;
-  for (std::size_t at = 0, next; (next = line.find(',', at)) != std::string::npos; at = next + 1) {
-    if (line.substr(at, next - at) == "x_end") break;
-    ++column;
-  }
-  double x0 = std::nan(""), most_negative = 1e9, t_most = 0;
-  while (std::getline(rows, line)) {
-    std::vector<double> v;
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::atof(cell.c_str()));
-    if (std::isnan(x0)) x0 = v[column];
-    if (v[0] < 15 && v[column] < most_negative) most_negative = v[column], t_most = v[0];  // 1st swing
-  }
+  const auto rows = TimeseriesColumn(dir_ / "pendulum" / "timeseries.csv", "x_end");
+  ASSERT_FALSE(rows.empty());
+  const double x0 = rows.front().second;
+  double most_negative = 1e9, t_most = 0;
+  for (const auto& [t, x] : rows)
+    if (t < 15 && x < most_negative) most_negative = x, t_most = t;  // the first swing
   EXPECT_NEAR(x0, 10.0, 1e-9);  // released where the file puts it
   EXPECT_NEAR(most_negative, -10.0, 0.05);
   EXPECT_NEAR(t_most, 10.062, 0.05);  // the rows every 1/30 s, and the line's lag
