@@ -427,32 +427,14 @@ TEST(RingingCheck, APeakWhoseRingingWasDampedIsNotConverged) {
   EXPECT_NE(RingingWarning(s).find("did not finish"), std::string::npos) << RingingWarning(s);
 }
 
-// MoorDyn's pendulum (its tests/Mooring/pendulum.txt, TmaxIC = 0): 1e5 kg on a line of 100.5 m
+// MoorDyn's pendulum (tests/scenes/moordyn/pendulum.txt, TmaxIC = 0): 1e5 kg on a line of 100.5 m
 // from a fixed point, placed 10 m aside at its length and released there. From the file's
 // positions it swings: half a period later (pi sqrt(L / g) (1 + theta0^2 / 16) = 10.062 s for
 // theta0 = 0.0998 rad) it is 10 m to the other side, as MoorDyn's own test checks (within 0.1
 // m there; the line stretches 1e5 g / EA = 1 mm and its 785 kg of water-balanced steel lag the
 // mass a little: within 0.05 m here, 0.5 % of the swing).
 TEST_F(RunCommandTest, MoorDynsPendulumSwingsFromTheFilesPositions) {
-  const std::string file = Write("pendulum.txt", R"(Pendulum
----------------------- LINE TYPES -----------------------
-TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
-(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
-main 0.1 7.85398 1e9 -0.01 0 0 0 0 0
----------------------- POINTS ---------------------------
-ID Attachment X Y Z Mass Volume CdA Ca
-(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
-1 Fixed 0 0 0 0 0 0 0
-2 Free 10 0 -100 1e5 0 0 0
----------------------- LINES ----------------------------
-ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
-(#) (name) (#) (#) (m) (-) (-)
-1 main 1 2 100.5 20 -
----------------------- OPTIONS --------------------------
-1000 WtrDnsty
-500 WtrDpth
-0.0 TmaxIC
-)");
+  const std::string file = std::string(CABLEFILM_SOURCE_DIR) + "/tests/scenes/moordyn/pendulum.txt";
   RunOptions o;
   o.film = 0;
   o.out_dir = (dir_ / "pendulum").string();

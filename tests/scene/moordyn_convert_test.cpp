@@ -4,6 +4,9 @@
 // their own materials and geometry.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -328,33 +331,20 @@ TEST(MoorDynConvert, NamesAndTitlesAreEscaped) {
 // TmaxIC = 0: MoorDyn makes no initial-condition solve and starts from the file's positions:
 // initial.state = "straight", traced to the option's line; any other TmaxIC leaves the statics.
 TEST(MoorDynConvert, NoInitialConditionSolveStartsAsGiven) {
-  const std::string text = R"(Pendulum
----------------------- LINE TYPES -----------------------
-TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
-(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
-main 0.1 7.85398 1e9 -0.01 0 0 0 0 0
----------------------- POINTS ---------------------------
-ID Attachment X Y Z Mass Volume CdA Ca
-(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
-1 Fixed 0 0 0 0 0 0 0
-2 Free 10 0 -100 1e5 0 0 0
----------------------- LINES ----------------------------
-ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
-(#) (name) (#) (#) (m) (-) (-)
-1 main 1 2 100.5 20 -
----------------------- OPTIONS --------------------------
-1000 WtrDnsty
-500 WtrDpth
-)";
-  const Converted given = Convert(ReadMoorDynText(text + "0.0 TmaxIC\n", "pendulum.txt"));
+  const std::string path = kDir + "pendulum.txt";
+  const Converted given = Convert(ReadMoorDynFile(path));
   EXPECT_EQ(given.scene["initial"]["state"].value<std::string>(), "straight");
   KeySources sources;
-  MoorDynToToml(ReadMoorDynText(text + "0.0 TmaxIC\n", "pendulum.txt"), nullptr, &sources);
+  MoorDynToToml(ReadMoorDynFile(path), nullptr, &sources);
   ASSERT_TRUE(sources.count("initial.state"));
   EXPECT_EQ(sources.at("initial.state").line, 18);
   EXPECT_EQ(sources.at("initial.state").place, "OPTIONS TmaxIC");
-  const Converted solved = Convert(ReadMoorDynText(text + "10000 TmaxIC\n", "pendulum.txt"));
-  EXPECT_FALSE(solved.scene["initial"]);
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string solving = text.str();
+  solving.replace(solving.find("0.0 TmaxIC"), 10, "10000 TmaxIC");
+  EXPECT_FALSE(Convert(ReadMoorDynText(solving, "pendulum.txt")).scene["initial"]);
 }
 
 // The options: a seabed above a point is lowered to it (as MoorDyn), with a warning; kBot 0 is
