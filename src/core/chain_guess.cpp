@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/coarse_guess.h"
 #include "core/line_equilibrium.h"
 
 namespace cablefilm {
@@ -48,10 +49,14 @@ std::vector<ChainLink> Walk(const Model& sys, int i, int e) {
   return {};
 }
 
-// The chain as one line's model: its lines' sections end to end (a line walked from its
-// station s reversed), their weights and the joints' own terms as prisms at their stations,
-// held where its first and last lines are held.
-LineModel ChainModel(const Model& sys, const std::vector<ChainLink>& chain) {
+// The chain as one line: its lines' sections end to end (a line walked from its station s
+// reversed), their weights and the joints' own terms as prisms at their stations, held where
+// its first and last lines are held; and what it is made of (its coarse copies' making).
+struct ChainLine {
+  LineMaking making;
+  LineModel model;
+};
+ChainLine ChainModel(const Model& sys, const std::vector<ChainLink>& chain) {
   std::vector<SectionSpec> sections;
   std::vector<PrismSpec> prisms;
   int offset = 0;
@@ -76,12 +81,17 @@ LineModel ChainModel(const Model& sys, const std::vector<ChainLink>& chain) {
   const LineModel& last = sys.lines[chain.back().line];
   const EndMotion start = chain.front().from == 0 ? first.ends.start : first.ends.end;
   const EndMotion end = chain.back().from == 0 ? last.ends.end : last.ends.start;
-  return MakeLineModel(sections, prisms, sys.env, start, end, LinkLaw::kElastic);
+  ChainLine line{LineMaking{std::move(sections), std::move(prisms), sys.env, LinkLaw::kElastic},
+                 LineModel{}};
+  line.model = MakeLineModel(line.making.sections, line.making.prisms, sys.env, start, end,
+                             LinkLaw::kElastic);
+  return line;
 }
 
 }  // namespace
 
-ChainGuess GuessChains(const Model& sys, const CancelFlag* cancel) {
+ChainGuess GuessChains(const Model& sys, const CancelFlag* cancel, double* work,
+                       double max_work) {
   const int nl = static_cast<int>(sys.lines.size());
   ChainGuess g;
   g.states.resize(nl);
@@ -98,15 +108,32 @@ ChainGuess GuessChains(const Model& sys, const CancelFlag* cancel) {
       const std::vector<ChainLink> chain = Walk(sys, i, e);
       if (chain.empty()) continue;
       for (const ChainLink& l : chain) used[l.line] = 1;
+      // A chain too long for the statics' bound as one line is left out (its lines each fit
+      // it: the system's Newton starts there from the scene's guess).
+      double stations = 1;
+      for (const ChainLink& l : chain) stations += sys.lines[l.line].line.links;
+      if (kLeastStaticPasses * stations > max_work) continue;
       State rest;
+      double own = 0;  // this chain's station-passes, its coarse copies' included
       try {
-        const LineModel m = ChainModel(sys, chain);
+        // From its coarse copies' shape when long, as a single line's.
+        const ChainLine line = ChainModel(sys, chain);
         LineEquilibriumOptions options;
         options.cancel = cancel;
-        rest = SolveLineEquilibrium(m, EquilibriumGuess(m), nullptr, options);
+        options.max_work = max_work;
+        options.work = &own;
+        rest = SolveLongLineEquilibrium(line.model, line.making, nullptr, options);
+        if (work) *work += own;
       } catch (const CancelledError&) {
         throw;
+      } catch (const StaticsWorkError& e) {
+        std::string names;
+        for (const ChainLink& l : chain)
+          names += (names.empty() ? "\"" : ", \"") + sys.line_names[l.line] + "\"";
+        throw StaticsWorkError("the chain of lines " + names + " solved as one line: " +
+                               e.what());
       } catch (const Error&) {
+        if (work) *work += own;
         continue;  // the system's Newton from the scene's guesses
       }
       int offset = 0;

@@ -11,6 +11,7 @@
 
 #include "core/cancel.h"
 #include "core/line_data.h"
+#include "core/line_equilibrium.h"
 #include "core/model.h"
 
 namespace cablefilm {
@@ -23,8 +24,12 @@ struct ChainGuess {
 };
 
 // Finds the chains (shared free points with exactly two line ends, the lines beyond them
-// ending at held points) and solves each as one line at rest. A chain whose one-line statics
-// fails is left out (the system's Newton starts there from the scene's guess, as before).
-ChainGuess GuessChains(const Model& sys, const CancelFlag* cancel = nullptr);
+// ending at held points) and solves each as one line at rest (from its coarse copies' shape
+// when long). A chain whose one-line statics fails is left out (the system's Newton starts
+// there from the scene's guess, as before). Each chain's solve is bounded by max_work
+// station-passes (StaticsWorkError past it, naming the chain's lines; a chain whose stations
+// could not fit is left out), and they are added up in *work when given.
+ChainGuess GuessChains(const Model& sys, const CancelFlag* cancel = nullptr,
+                       double* work = nullptr, double max_work = kMostLineStaticsWork);
 
 }  // namespace cablefilm

@@ -22,12 +22,21 @@ struct HeldFirstGuess {
 };
 HeldFirstGuess HoldAtFirstGuess(const Model& sys,
                                   const EquilibriumOptions& options = {});
+// The same with `models`, sys.lines or a copy of them, held where they are (their ends moved,
+// and put back as they were before it returns or throws): no copy of a long line's model.
+HeldFirstGuess HoldAtFirstGuessInPlace(const Model& sys, std::vector<LineModel>& models,
+                                       const EquilibriumOptions& options);
 
 // Each line's state at rest (t = 0), Newton's alone (from options.guess when given). Throws
 // Error naming the line that has no equilibrium, or the points and bodies when they do not
 // balance.
 std::vector<State> SolveCoupledEquilibrium(const Model& sys, EquilibriumReport* report = nullptr,
                                            const EquilibriumOptions& options = {});
+// The same with `models` held in place, as HoldAtFirstGuessInPlace.
+std::vector<State> SolveCoupledEquilibriumInPlace(const Model& sys,
+                                                  std::vector<LineModel>& models,
+                                                  EquilibriumReport* report,
+                                                  const EquilibriumOptions& options);
 
 // The force on station j of a line at rest in its scene's water [N]: its links' tensions, its
 // weight, buoyancy, the current's drag and the seabed's reaction (an end station's: what its

@@ -12,22 +12,35 @@ namespace cablefilm {
 namespace {
 
 // Line i alone between points that hold it: the line's statics (the inextensible line's
-// own; an elastic one from its coarse line's shape when long, Newton in the full current from
-// there, else continued in the current from its catenary).
+// own; an elastic one from its coarse copies' shape when long, Newton in the full current from
+// there, else continued in the current from its catenary), within options.max_line_statics
+// station-passes.
 State SolveSingleLine(const Model& model, int i, const EquilibriumOptions& options,
                       LineEquilibriumReport* report) {
   const LineModel& m = model.lines[i];
   if (m.line.law == LinkLaw::kInextensible)
-    return SolveInextensibleEquilibrium(m, report, options.cancel);
+    return SolveInextensibleEquilibrium(m, report, options.cancel, options.max_line_statics);
   LineEquilibriumOptions line;
   line.cancel = options.cancel;
-  if (const std::optional<Points> guess = CoarseEquilibriumGuess(model, i, options.cancel)) {
-    // Near the answer, in the full current: Newton from it directly (the continuation from
-    // still water only if that fails).
-    line.warm_start = true;
-    return SolveLineEquilibrium(m, *guess, report, line);
+  line.max_work = options.max_line_statics;
+  double work = 0;
+  line.work = &work;
+  try {
+    // A model made in code may have no specs: no coarse copies then.
+    const bool specs = i < static_cast<int>(model.line_specs.size()) &&
+                       i < static_cast<int>(model.line_prisms.size());
+    const State s =
+        specs ? SolveLongLineEquilibrium(m,
+                                         LineMaking{model.line_specs[i].sections,
+                                                    model.line_prisms[i], model.env, m.line.law},
+                                         report, line)
+              : SolveLineEquilibrium(m, report, line);
+    report->work = work;
+    return s;
+  } catch (const Error&) {
+    report->work = work;
+    throw;
   }
-  return SolveLineEquilibrium(m, report, line);
 }
 
 // Island k's statics: Newton on its shared points and free bodies (and the relaxation where it
@@ -36,8 +49,9 @@ void SolveIsland(const Model& model, int k, const EquilibriumOptions& options,
                  std::vector<State>& states, EquilibriumReport& report) {
   std::vector<int> lines, points, bodies;
   const bool whole = model.islands.size() == 1;
-  const Model sub = whole ? Model{} : IslandModel(model, k, &lines, &points, &bodies);
-  const Model& m = whole ? model : sub;
+  // The island's own model, whose lines are held in place (their ends moved and put back):
+  // one copy of its lines, not two.
+  Model m = whole ? model : IslandModel(model, k, &lines, &points, &bodies);
   if (whole) {
     for (int i = 0; i < static_cast<int>(model.lines.size()); ++i) lines.push_back(i);
     for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b) bodies.push_back(b);
@@ -53,8 +67,9 @@ void SolveIsland(const Model& model, int k, const EquilibriumOptions& options,
   }
   EquilibriumReport r;
   const std::vector<State> solved =
-      options.relaxation ? SolveCoupledEquilibriumRelaxing(m, options.inputs, *options.relaxation, &r, o)
-                         : SolveCoupledEquilibrium(m, &r, o);
+      options.relaxation
+          ? SolveCoupledEquilibriumRelaxing(m, options.inputs, *options.relaxation, &r, o)
+          : SolveCoupledEquilibriumInPlace(m, m.lines, &r, o);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     states[lines[i]] = solved[i];
     if (i < r.lines.size()) report.lines[lines[i]] = r.lines[i];
@@ -90,12 +105,16 @@ std::vector<State> SolveEquilibrium(const Model& model, EquilibriumReport* repor
       states[i] = SolveSingleLine(model, i, options, &r.lines[i]);
     } catch (const CancelledError&) {
       throw;
+    } catch (const StaticsWorkError& e) {
+      if (nl == 1) throw;
+      throw StaticsWorkError("line \"" + model.line_names[i] + "\": " + e.what());
     } catch (const Error& e) {
       if (nl == 1) throw;
       throw Error("line \"" + model.line_names[i] + "\": no static equilibrium: " + e.what());
     }
     r.residual = std::max(r.residual, r.lines[i].residual);
-    r.line_work += double(r.lines[i].iterations) * model.lines[i].stations();
+    r.line_work += r.lines[i].work;
+
   }
   if (report) *report = r;
   return states;

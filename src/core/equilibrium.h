@@ -2,7 +2,8 @@
 // The static equilibrium of a model (model.h), its initial state at rest with its ends at
 // their t = 0 positions (the paper's): each island on its own. An island of one line between
 // points that hold it is the line's statics (line_equilibrium.h: Newton continued in the
-// current, from a coarse line's shape for a long one; the inextensible line's own); a coupled
+// current, from its coarse copies' shape for a long one: coarse_guess.h; the inextensible
+// line's own), within a bound on its work (kMostLineStaticsWork); a coupled
 // island's shared points and free bodies are where their lines' loads balance
 // (coupled_equilibrium.h), found, where Newton does not reach them from the scene's positions,
 // from where the island's own damped motion brings it (relaxation.h).
@@ -23,20 +24,23 @@ struct EquilibriumReport {
   double residual = 0;        // the largest out-of-balance force on a shared point or body at
                               // the end [N] (a body's moment divided by its size [m])
   double force_scale = 0;     // the load it is measured against: the lines' (StaticForceScale)
-  double line_work = 0;       // the held lines' solves, in station-iterations
+  double line_work = 0;       // the lines' solves, in station-passes (a single line's its own,
+                              // a coupled island's its held lines' and its chains')
   std::vector<LineEquilibriumReport> lines;  // each line's (last) solve
   std::vector<Vec6> body_poses;          // each body's pose (a free body's as solved)
   double relaxed = 0;  // s of the system's damped motion it took to get near enough for Newton
                        // (relaxation.h); 0: none, from the scene's first guess
 };
 
-// The held lines' solves at most, in station-iterations (each solve's Newton iterations times
-// its line's stations, summed): a system that needs more is not near its equilibrium, and the
-// statics should give way (to the relaxation: relaxation.h) in seconds, not minutes
-// (some 10 s at 0.5 us a station-iteration). The shipped scenes and MoorDyn's own inputs
-// use 2e2 to 8e5; a fuzzed file's tether of 100 000 links used 6.8e6 before Newton's first
-// step (its first guess and the first Jacobian's differences) and ran for minutes.
-constexpr double kMostStaticLineWork = 2e7;
+// The held lines' solves at most, in station-passes (each pass over a line's stations: a
+// residual, a step along its links, a Newton matrix; kMostLineStaticsWork, summed over the
+// solves of a coupled island's lines, a chain's solve as one line not counted): a system that
+// needs more is not near its equilibrium, and the statics should give way (to the relaxation:
+// relaxation.h) in seconds, not minutes (some 5 to 15 s at 0.05 to 0.15 us a station-pass).
+// The shipped scenes and MoorDyn's own inputs use 2e2 to 4e6 (a clump chain of 10^6 links
+// between two lines: 5e6); a fuzzed file's tether of 100 000 links used 6.8e6
+// station-iterations before Newton's first step and ran for minutes.
+constexpr double kMostStaticLineWork = 1e8;
 
 struct EquilibriumOptions {
   // Where Newton fails on a coupled island: the relaxation's steps (the run's scheme and
@@ -46,7 +50,10 @@ struct EquilibriumOptions {
   int max_iterations = 100;   // Newton iterations on the shared points
   int stall_iterations = 0;   // given up when so many in a row gain less than 1 % (0: never)
   double tolerance = 1e-9;    // converged when residual <= tolerance * force_scale
-  double max_line_work = kMostStaticLineWork;  // station-iterations, above
+  double max_line_work = kMostStaticLineWork;  // station-passes, above
+  // Each line's solve at most (a single line's, a chain's as one line, a held line's), in
+  // station-passes (kMostLineStaticsWork): StaticsWorkError past it, which no fallback catches.
+  double max_line_statics = kMostLineStaticsWork;
   // Where the held lines' work is added up, across calls that share one bound (the
   // relaxation's tries); null: this call's own, from 0.
   double* line_work = nullptr;

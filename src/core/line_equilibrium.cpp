@@ -93,16 +93,59 @@ Points CatenaryGuess(const LineModel& m, const Vec& a, const Vec& b, double leng
   return x;
 }
 
+// The work of a line's statics as it is done, in station-passes: each pass over the line's
+// stations (a residual, an energy, a step along the links, a Newton matrix assembled, factored
+// and solved) counts its stations. Past the bound it throws StaticsWorkError.
+class WorkCount {
+ public:
+  WorkCount(const LineModel& m, const LineEquilibriumOptions& options)
+      : stations_(m.stations()), most_(options.max_work),
+        total_(options.work ? options.work : &own_) {}
+  void Pass() {
+    *total_ += stations_;
+    done_ += stations_;
+    if (*total_ > most_) {
+      std::ostringstream os;
+      os << "the static equilibrium of its " << static_cast<long long>(stations_)
+         << " stations gave up at its bound of " << most_ << " station-passes (each residual, "
+         << "step along the links and Newton matrix counts the stations it passes over; a long "
+         << "line's statics take some 9 to 19 passes over its stations)";
+      throw StaticsWorkError(os.str());
+    }
+  }
+  double done() const { return done_; }  // this solve's own [station-passes]
+
+ private:
+  double stations_, most_;
+  double* total_;
+  double own_ = 0, done_ = 0;
+};
+
 // Residual (out-of-balance force on every station, ends at rest) and, when `system` is given,
-// the negated Jacobian -dR/dx of the free stations plus beta on the diagonal.
+// the negated Jacobian -dR/dx of the free stations plus beta on the diagonal. One for a solve:
+// its water set for each stage of the continuation in the current (SetWater).
 class StaticProblem {
  public:
-  StaticProblem(const LineModel& m, const Water& water)
-      : m_(m), water_(water), ws_(m.line.links), zero_v_(Points::Zero(kDim, m.stations())),
-        system_(m.last_free() - m.first_free() + 1),
-        slack_tension_(m.env.seabed.present ? StaticForceScale(m, water) : 0.0) {}
+  StaticProblem(const LineModel& m, const Water& water, WorkCount& work)
+      : m_(m), water_(water), work_(work), ws_(m.line.links),
+        zero_v_(Points::Zero(kDim, m.stations())),
+        slack_tension_(m.env.seabed.present ? StaticForceScale(m, water) : 0.0) {
+    // Backward stable (a chain's pivots are cond 5e4: their inverses left Newton's step an
+    // out-of-balance force of several newtons where a long line curves), and over the matrix
+    // it makes anew for each solve.
+    system_.factored_pivots = true;
+    system_.in_place = true;
+    system_.Resize(m.last_free() - m.first_free() + 1);
+  }
+  void SetWater(const Water& water) {
+    water_ = water;
+    slack_tension_ = m_.env.seabed.present ? StaticForceScale(m_, water) : 0.0;
+  }
+  const Water& water() const { return water_; }
+  WorkCount& work() { return work_; }
 
   const Points& Residual(const Points& x) {
+    work_.Pass();
     ComputeGeometry(m_, water_, 0.0, x, ws_.geometry);
     ComputeHookeTensions(m_, ws_.geometry, ws_.tension);
     ComputeStationForces(m_, water_, ws_.geometry, ws_.tension, zero_v_, ws_.force);
@@ -119,6 +162,11 @@ class StaticProblem {
     }
     return r;
   }
+  // The forces on the end stations at the last residual's positions, into the report.
+  void EndForces(LineEquilibriumReport& report) const {
+    report.start_force = ws_.force.col(0);
+    report.end_force = ws_.force.col(m_.line.links);
+  }
   double ResidualDot(const Points& dx) const {
     double d = 0;
     for (int j = m_.first_free(); j <= m_.last_free(); ++j) d += ws_.force.col(j).dot(dx.col(j));
@@ -130,6 +178,7 @@ class StaticProblem {
   }
   // Total potential energy of the conservative forces: strain energy plus net weight [J].
   double Energy(const Points& x) {
+    work_.Pass();
     ComputeGeometry(x, ws_.geometry);
     return ElasticEnergy(m_, ws_.geometry) + PotentialEnergy(m_, x);
   }
@@ -148,6 +197,7 @@ class StaticProblem {
       for (int j = j0; j <= j1; ++j) landed_[j] = m_.env.seabed.y - ws_.geometry.elevation[j] > 0;
     }
     for (int pass = 0; pass < kActiveSetPasses; ++pass) {
+      work_.Pass();
       system_.SetZero();
       AddForceJacobian(m_, water_, ws_.geometry, ws_.tension, zero_v_, 0.0, system_);
       for (int j = j0; j <= j1; ++j) {
@@ -211,7 +261,8 @@ class StaticProblem {
   }
 
   const LineModel& m_;
-  const Water& water_;
+  Water water_;
+  WorkCount& work_;
   ForceWorkspace ws_;
   Points zero_v_;
   BlockTridiagonal system_;
@@ -224,13 +275,13 @@ class StaticProblem {
 // l (1/cos(phi) - 1), which for stiff links is a force far larger than any load and makes
 // Newton and the pseudo-transient flow crawl. Stations are rebuilt from station 0 and the
 // closure error at a prescribed last station is taken up by the links by their compliance.
-void CurvilinearUpdate(const LineModel& m, const Points& x, const Points& dx,
+void CurvilinearUpdate(const LineModel& m, const Points& x, const Points& dx, double alpha,
                        Points& y) {
-  y.col(0) = x.col(0) + dx.col(0);
+  y.col(0) = x.col(0) + alpha * dx.col(0);
   for (int j = 0; j < m.line.links; ++j) {
     const Vec d = x.col(j + 1) - x.col(j);
     const double L = d.norm();
-    const Vec delta = dx.col(j + 1) - dx.col(j);
+    const Vec delta = alpha * (dx.col(j + 1) - dx.col(j));
     if (!(L > 1e-12 * m.line.rest_length[j])) {
       y.col(j + 1) = y.col(j) + d + delta;
       continue;
@@ -254,15 +305,17 @@ void CurvilinearUpdate(const LineModel& m, const Points& x, const Points& dx,
   // from a 0.1 mm closure on a 550 m chain, and Newton crawled in a current at 1/32 steps); a
   // slack or turning link takes it almost free.
   const int s = m.line.links;
-  const Vec closure = y.col(s) - (x.col(s) + dx.col(s));
+  const Vec closure = y.col(s) - (x.col(s) + alpha * dx.col(s));
   const SeabedSpec& bed = m.env.seabed;
-  auto compliance = [&](int k, const Vec& d) {  // d: the link as rebuilt
+  // C_k, and its largest eigenvalue over l_k into *most (L / T across it, or L / EA along it).
+  auto compliance = [&](int k, const Vec& d, double* most) {  // d: the link as rebuilt
     const double L = std::max(d.norm(), 1e-12 * m.line.rest_length[k]);
     const Vec t = d / L;
     const double EA = m.line.axial_stiffness[k], l0 = m.line.rest_length[k];
     // A floor of 1e-9 EA on the tension: a slack link's turning is a billion times softer
     // than its stretch, not infinitely (the sum stays invertible).
     const double T = std::max(EA * (L - l0) / l0, 1e-9 * EA);
+    if (most) *most = std::max(*most, std::max(L / T, L / EA) / l0);
     Mat C = (L / T) * Mat::Identity();
     C.noalias() += (L / EA - L / T) * (t * t.transpose());
     // A link on the seabed turns freely along it only: the bed holds it up or down as firmly
@@ -279,14 +332,17 @@ void CurvilinearUpdate(const LineModel& m, const Points& x, const Points& dx,
     return C;
   };
   Mat total = Mat::Zero();
-  for (int k = 0; k < s; ++k) total += compliance(k, y.col(k + 1) - y.col(k));
+  double most = 0;  // max over k of |C_k| / l_k [1/N]
+  for (int k = 0; k < s; ++k) total += compliance(k, y.col(k + 1) - y.col(k), &most);
   const Vec lambda = -total.ldlt().solve(closure);
   // That is a small correction's model: a closure that would move a link by a tenth of its
   // length (a far step of a very soft line, its slack links taking all) is spread along the
-  // arc length as it comes.
+  // arc length as it comes. |C_k lambda| <= |C_k| |lambda| tells most steps so without a pass.
   bool small = lambda.allFinite();
-  for (int k = 0; k < s && small; ++k)
-    small = (compliance(k, y.col(k + 1) - y.col(k)) * lambda).norm() <= 0.1 * m.line.rest_length[k];
+  if (small && most * lambda.norm() > 0.1)
+    for (int k = 0; k < s && small; ++k)
+      small = (compliance(k, y.col(k + 1) - y.col(k), nullptr) * lambda).norm() <=
+              0.1 * m.line.rest_length[k];
   if (!small) {
     for (int j = 1; j <= s; ++j) y.col(j) -= (m.line.arc_length[j] / m.line.total_length()) * closure;
     return;
@@ -294,7 +350,7 @@ void CurvilinearUpdate(const LineModel& m, const Points& x, const Points& dx,
   Vec shift = Vec::Zero(), from = y.col(0);
   for (int k = 0; k < s; ++k) {
     const Vec to = y.col(k + 1);
-    shift += compliance(k, to - from) * lambda;
+    shift += compliance(k, to - from, nullptr) * lambda;
     y.col(k + 1) = to + shift;
     from = to;
   }
@@ -325,6 +381,11 @@ class RoundoffStall {
   int since_best_ = 0;
 };
 
+// The line search's halvings of Newton's step at most, and within the round-off floor
+// (RoundoffStall::NoStep).
+constexpr int kHalvings = 30;
+constexpr int kFloorHalvings = 1;
+
 // Newton with Levenberg-Marquardt damping, each step taken along the links (CurvilinearUpdate). Without current the problem is the minimum of the
 // potential energy, and (-J + beta I) is positive definite for beta > 0 (tensions are never
 // negative), so the step descends the energy: an Armijo line search on it makes the iteration
@@ -332,9 +393,9 @@ class RoundoffStall {
 // conservative and the residual norm is the merit function instead. Returns true if converged:
 // within tol_force, or stalled within `floor`, the residual the tensions' round-off allows
 // (RoundoffStall).
-bool Newton(const LineModel& m, const Water& water, Points& x, double tol_force, double floor,
-            int max_iter, LineEquilibriumReport& report, const CancelFlag* cancel) {
-  StaticProblem problem(m, water);
+bool Newton(const LineModel& m, StaticProblem& problem, Points& x, double tol_force,
+            double floor, int max_iter, LineEquilibriumReport& report, const CancelFlag* cancel) {
+  const Water& water = problem.water();
   // The seabed's spring is conservative too (its energy is in PotentialEnergy); its damping
   // and friction vanish at rest.
   const bool conservative = !HasCurrent(m, water);
@@ -343,13 +404,15 @@ bool Newton(const LineModel& m, const Water& water, Points& x, double tol_force,
   // iteration cycle. Near the solution the energy's changes fall below its round-off and the
   // residual decides alone, as without a seabed.
   const bool energy_first = conservative && m.env.seabed.present;
-  Points dx(kDim, m.stations()), scaled(kDim, m.stations()), trial(kDim, m.stations());
+  Points dx(kDim, m.stations()), trial(kDim, m.stations());
   const double length_scale = m.line.total_length();
   problem.Residual(x);
   double r_inf = problem.MaxResidual();
   double beta = 0;
   const double beta_start = std::max(r_inf, 1e-12) / (0.05 * length_scale);
   RoundoffStall stall(floor, r_inf);
+  double energy_x = 0;        // the energy at x [J] (conservative only)
+  bool energy_known = false;  // energy_x is x's
   for (; report.iterations < max_iter; ++report.iterations) {
     if (r_inf <= tol_force) return true;
     ThrowIfCancelled(cancel, "the static equilibrium");
@@ -359,13 +422,21 @@ bool Newton(const LineModel& m, const Water& water, Points& x, double tol_force,
       continue;
     }
     const double descent = problem.ResidualDot(dx);  // -dEnergy/dalpha at alpha = 0
-    const double energy = conservative ? problem.Energy(x) : 0.0;
+    // The energy at x: the accepted trial's (a pass less an iteration), or found.
+    if (conservative && !energy_known) energy_x = problem.Energy(x);
+    energy_known = conservative;
+    const double energy = energy_x;
     bool accepted = false;
-    double alpha = 1.0;
-    for (int ls = 0; ls < 30 && !accepted; ++ls, alpha *= 0.5) {
-      scaled = alpha * dx;
-      CurvilinearUpdate(m, x, scaled, trial);
-      const double e_trial = conservative ? problem.Energy(trial) : 0.0;
+    double alpha = 1.0, e_trial = 0;
+    // Within the round-off floor the merit is the tensions' round-off, which a shorter step
+    // does not lower: a whole step that does not lower it is the stall NoStep means (the 30
+    // halvings there cost 60 passes over the whole line for nothing, 3/4 of the statics of a
+    // chain of 10^6 links).
+    const int halvings = stall.NoStep(r_inf) ? kFloorHalvings : kHalvings;
+    for (int ls = 0; ls < halvings && !accepted; ++ls, alpha *= 0.5) {
+      problem.work().Pass();  // the step along the links
+      CurvilinearUpdate(m, x, dx, alpha, trial);
+      e_trial = conservative ? problem.Energy(trial) : 0.0;
       problem.Residual(trial);
       const double r2_trial = problem.ResidualNorm2();
       const bool energy_ok = conservative && e_trial <= energy - 1e-4 * alpha * descent;
@@ -382,6 +453,7 @@ bool Newton(const LineModel& m, const Water& water, Points& x, double tol_force,
     }
     const double step = (alpha * dx).lpNorm<Eigen::Infinity>();
     x = trial;
+    energy_x = e_trial;
     r_inf = problem.MaxResidual();
     if (stall.Stalled(r_inf)) return true;
     beta = alpha == 1.0 ? beta * 0.1 : std::max(2.0 * beta, beta_start * 1e-3);
@@ -400,10 +472,8 @@ bool Newton(const LineModel& m, const Water& water, Points& x, double tol_force,
 // doubles after one that raised it, so the last steps are Newton's. No link is stretched or
 // turned by more than a quarter of its length in one step, so no step folds the line. Returns
 // true if converged within tol_force.
-bool PseudoTransient(const LineModel& m, const Water& water, Points& x, double tol_force,
-                     int max_iter,
-                     LineEquilibriumReport& report, const CancelFlag* cancel) {
-  StaticProblem problem(m, water);
+bool PseudoTransient(const LineModel& m, StaticProblem& problem, Points& x, double tol_force,
+                     int max_iter, LineEquilibriumReport& report, const CancelFlag* cancel) {
   Points dx(kDim, m.stations()), trial(kDim, m.stations());
   problem.Residual(x);
   double r_inf = problem.MaxResidual();
@@ -424,7 +494,8 @@ bool PseudoTransient(const LineModel& m, const Water& water, Points& x, double t
       if (relative * scale > 0.25 * m.line.rest_length[j]) scale = 0.25 * m.line.rest_length[j] / relative;
     }
     dx *= scale;
-    CurvilinearUpdate(m, x, dx, trial);
+    problem.work().Pass();  // the step along the links
+    CurvilinearUpdate(m, x, dx, 1.0, trial);
     problem.Residual(trial);
     const double r2_trial = problem.ResidualNorm2();
     if (!(r2_trial <= 100.0 * r2)) {  // also catches NaN: back to x with a shorter pseudo-step
@@ -582,10 +653,22 @@ State SolveLineEquilibrium(const LineModel& m, LineEquilibriumReport* report,
 
 constexpr int kWarmStartIterations = 150;
 
+void RefuseIfTooLarge(const LineModel& m, const LineEquilibriumOptions& options) {
+  const double left = options.max_work - (options.work ? *options.work : 0.0);
+  if (!(kLeastStaticPasses * m.stations() > left)) return;
+  std::ostringstream os;
+  os << "the static equilibrium of its " << m.stations() << " stations takes some "
+     << kLeastStaticPasses * m.stations() << " station-passes at the least ("
+     << kLeastStaticPasses << " passes over its stations), more than the " << left
+     << " left of its bound of " << options.max_work;
+  throw StaticsWorkError(os.str());
+}
+
 State SolveLineEquilibrium(const LineModel& m, const Points& guess,
                             LineEquilibriumReport* report_out, const LineEquilibriumOptions& options) {
   if (!m.ends.start.prescribed() && !m.ends.end.prescribed())
     throw Error("the cable needs at least one prescribed end (fixed or moving)");
+  RefuseIfTooLarge(m, options);
   LineEquilibriumReport report;
   Points x = guess;
   x.col(0) = m.ends.start.prescribed() ? m.ends.start.Position(0) : x.col(0);
@@ -626,23 +709,38 @@ State SolveLineEquilibrium(const LineModel& m, const Points& guess,
   // going on. On the spread mooring's statics (3 x 200 links, a clump landing on the bed) a
   // cap of 75 / 100 / 150 / 200 / 300 / 500 iterations took 594 / 542 / 541 / 507 / 742 /
   // 1091 ms for the same equilibrium.
+  // One problem for the whole solve (its matrix is the solve's memory: some 0.5 kB a station),
+  // its water set for each stage; its passes counted against the bound.
+  WorkCount work(m, options);
+  StaticProblem problem(m, calm, work);
+  // Written into the report also when a solve throws (a held line's work is counted then too).
+  struct Tally {
+    LineEquilibriumReport& report;
+    LineEquilibriumReport* out;
+    const WorkCount& work;
+    ~Tally() {
+      report.work = work.done();
+      if (out) *out = report;
+    }
+  } tally{report, report_out, work};
   if (options.warm_start) {
     Points trial = x;
-    if (Newton(m, with_current(full), trial, tol, report.roundoff_floor,
+    problem.SetWater(with_current(full));
+    if (Newton(m, problem, trial, tol, report.roundoff_floor,
                std::min(options.max_iterations, kWarmStartIterations), report,
                options.cancel)) {
-      StaticProblem problem(m, calm);
+      problem.SetWater(calm);
       problem.Residual(trial);
       report.residual = problem.MaxResidual(nullptr);
-      if (report_out) *report_out = report;
+      problem.EndForces(report);
       State state;
-      state.x = trial;
+      state.x = std::move(trial);
       state.v = Points::Zero(kDim, m.stations());
       return state;
     }
   }
-  const Water still = with_current(0.0);
-  bool ok = Newton(m, still, x, tol, report.roundoff_floor, options.max_iterations, report,
+  problem.SetWater(with_current(0.0));
+  bool ok = Newton(m, problem, x, tol, report.roundoff_floor, options.max_iterations, report,
                    options.cancel);
   double reached = 0;
   double increment = 0.25 * full;
@@ -652,12 +750,12 @@ State SolveLineEquilibrium(const LineModel& m, const Points& guess,
                         ? full
                         : reached + increment;
     if (target == reached) target = full;
-    const Water step = with_current(target);
     Points trial = x;
     ++report.current_steps;
-    if (Newton(m, step, trial, tol, report.roundoff_floor, options.max_iterations, report,
+    problem.SetWater(with_current(target));
+    if (Newton(m, problem, trial, tol, report.roundoff_floor, options.max_iterations, report,
                options.cancel)) {
-      x = trial;
+      x = std::move(trial);
       reached = target;
     } else if (std::abs(increment) > 1e-3 * std::abs(full) &&
                report.iterations < options.max_iterations) {
@@ -673,15 +771,16 @@ State SolveLineEquilibrium(const LineModel& m, const Points& guess,
     // first guess) does not need one.
     report.fallback = true;
     const int before = report.iterations;
-    ok = PseudoTransient(m, calm, x, tol, options.max_pseudo_transient_iterations, report,
+    problem.SetWater(calm);
+    ok = PseudoTransient(m, problem, x, tol, options.max_pseudo_transient_iterations, report,
                          options.cancel);
     report.fallback_iterations = report.iterations - before;
   }
-  StaticProblem problem(m, calm);
+  problem.SetWater(calm);
   problem.Residual(x);
   int worst = 0;
   report.residual = problem.MaxResidual(&worst);
-  if (report_out) *report_out = report;
+  problem.EndForces(report);
   ok = ok || report.residual <= report.roundoff_floor;
   if (!ok || !(report.residual <= std::max(1e3 * tol, report.roundoff_floor))) {
     std::ostringstream os;
@@ -695,14 +794,14 @@ State SolveLineEquilibrium(const LineModel& m, const Points& guess,
   }
   State state;
   state.t = 0;
-  state.x = x;
+  state.x = std::move(x);
   state.v = Points::Zero(kDim, m.stations());
   return state;
 }
 
 
 State SolveInextensibleEquilibrium(const LineModel& m, LineEquilibriumReport* report,
-                                  const CancelFlag* cancel) {
+                                  const CancelFlag* cancel, double max_work) {
   if (m.ends.start.prescribed() && m.ends.end.prescribed()) {
     const double chord = (m.ends.end.Position(0) - m.ends.start.Position(0)).norm();
     if (chord >= m.line.total_length()) {
@@ -723,11 +822,18 @@ State SolveInextensibleEquilibrium(const LineModel& m, LineEquilibriumReport* re
   // a seed ran 11 s under the sanitizers).
   LineEquilibriumOptions options;
   options.cancel = cancel;
+  double work = 0;  // both solves on one count
+  options.max_work = max_work;
+  options.work = &work;
+  RefuseIfTooLarge(m, options);
   LineEquilibriumReport first;
   const State soft = SolveLineEquilibrium(stiff, &first, options);
   stiff.line.axial_stiffness *= 2.0;
   State hard = SolveLineEquilibrium(stiff, soft.x, report, options);
-  if (report) report->iterations += first.iterations;
+  if (report) {
+    report->iterations += first.iterations;
+    report->work += first.work;
+  }
   hard.x = 2.0 * hard.x - soft.x;  // the limit EA -> infinity, error O(1/EA^2)
   ConstraintSolver solver(m);
   if (!solver.ProjectPositions(m, hard.x, 1e-13))

@@ -5,12 +5,36 @@
 // tridiagonal (kDim x kDim blocks), so each iteration costs O(s).
 #include <Eigen/Core>
 
+#include <string>
+
 #include "core/line_model.h"
 #include "core/cancel.h"
+#include "core/error.h"
 #include "core/line_data.h"
 #include "core/inputs.h"
 
 namespace cablefilm {
+
+// The statics of a line at most, in station-passes: each pass over its stations (a residual, an
+// energy, a step along the links, a Newton matrix assembled, factored and solved) counts them,
+// its coarse copies' solves included (coarse_guess.h). A long line's statics take 9 to 19
+// passes (a chain on the seabed in a sheared current: 9 at 2 x 10^6 links, 13 at 10^6; a
+// catenary in vacuum: 19), at 0.1 to 0.16 us a station-pass; 4e7 (some 5 s) lets a line of
+// 10^6 links take twice that, and gives up in seconds on one that would take minutes.
+constexpr double kMostLineStaticsWork = 4e7;
+// The passes a long line's statics take at the least (a residual, two Newton matrices with
+// their steps along the links and residuals, the residual at the answer; measured 9 and more):
+// a line whose stations times these exceed what is left of the bound is refused before its
+// problem is made (and by the scene's checks: scene_checks.h).
+constexpr double kLeastStaticPasses = 8;
+
+// The bound's error: not a line without an equilibrium, but one too large to look for it in the
+// time allowed (the fallbacks that catch Error, a coarse guess's or the relaxation, let it
+// through).
+class StaticsWorkError : public Error {
+ public:
+  explicit StaticsWorkError(const std::string& what) : Error(what) {}
+};
 
 struct LineEquilibriumReport {
   int iterations = 0;       // Newton iterations, all continuation steps together
@@ -21,6 +45,10 @@ struct LineEquilibriumReport {
                               // iteration that stalls below it has converged
   bool fallback = false;    // Newton failed and pseudo-transient continuation took over
   int fallback_iterations = 0;  // of `iterations`, those of the pseudo-transient fallback
+  double work = 0;          // station-passes (kMostLineStaticsWork), its coarse copies' not
+  // The forces on stations 0 and s at the answer, in its water without waves [N] (a held end's:
+  // what holds it; coupled_equilibrium.h).
+  Vec start_force = Vec::Zero(), end_force = Vec::Zero();
 };
 
 struct LineEquilibriumOptions {
@@ -32,6 +60,10 @@ struct LineEquilibriumOptions {
   bool warm_start = false;      // the guess is an equilibrium nearby in the same current (a
                                 // held end moved a little): Newton from it in the full current
                                 // first, the continuation only if that fails
+  double max_work = kMostLineStaticsWork;  // station-passes at most: StaticsWorkError past it
+  // Where the passes are added up against max_work, across solves that share the bound (a
+  // line's and its coarse copies'); null: this solve's own, from 0.
+  double* work = nullptr;
 };
 
 // The static load the residual is measured against [N]: net weights plus the current's drag
@@ -60,7 +92,13 @@ State SolveLineEquilibrium(const LineModel& m, LineEquilibriumReport* report = n
 // Static equilibrium of the inextensible cable: the elastic equilibrium with a stiffness so
 // high that the stretch is negligible, extrapolated to infinite stiffness, projected exactly
 // onto the rest lengths. Throws Error if the ends are further apart than the cable is long.
+// Its two solves share one bound of max_work station-passes.
 State SolveInextensibleEquilibrium(const LineModel& m, LineEquilibriumReport* report,
-                                  const CancelFlag* cancel = nullptr);
+                                  const CancelFlag* cancel = nullptr,
+                                  double max_work = kMostLineStaticsWork);
+
+// Throws StaticsWorkError when the least a solve of `m` takes (kLeastStaticPasses over its
+// stations) exceeds what is left of options' bound: before anything of its size is made.
+void RefuseIfTooLarge(const LineModel& m, const LineEquilibriumOptions& options);
 
 }  // namespace cablefilm

@@ -36,7 +36,7 @@ StepOptions RelaxationSteps(StepOptions step) {
 
 }  // namespace
 
-std::vector<State> SolveCoupledEquilibriumRelaxing(const Model& sys, const Inputs& in,
+std::vector<State> SolveCoupledEquilibriumRelaxing(Model& sys, const Inputs& in,
                                                    const StepOptions& step,
                                                    EquilibriumReport* report,
                                                    const EquilibriumOptions& options) {
@@ -46,13 +46,15 @@ std::vector<State> SolveCoupledEquilibriumRelaxing(const Model& sys, const Input
   // own besides: the relaxation ends when they have used it.
   double tries_work = 0;
   try {
-    return SolveCoupledEquilibrium(sys, report, first_try);
+    return SolveCoupledEquilibriumInPlace(sys, sys.lines, report, first_try);
   } catch (const CancelledError&) {
     throw;
+  } catch (const StaticsWorkError&) {
+    throw;  // a line too large for the statics' bound: its motion would cost more still
   } catch (const Error& first) {
     std::string motion_failure;  // how the motion itself failed, if it did
     try {
-      const HeldFirstGuess guess = HoldAtFirstGuess(sys, options);
+      const HeldFirstGuess guess = HoldAtFirstGuessInPlace(sys, sys.lines, options);
       Model let_go = sys;  // its free bodies start where the first guess has them
       let_go.body_poses = guess.body_poses;
       Data sd = MakeData(let_go, in, RelaxationSteps(step), guess.states);
@@ -102,10 +104,13 @@ std::vector<State> SolveCoupledEquilibriumRelaxing(const Model& sys, const Input
         from_here.guess = &states;
         from_here.guess_poses = poses.data();
         try {
-          std::vector<State> rest = SolveCoupledEquilibrium(sys, report, from_here);
+          std::vector<State> rest =
+              SolveCoupledEquilibriumInPlace(sys, sys.lines, report, from_here);
           if (report) report->relaxed = span * kSpan;
           return rest;
         } catch (const CancelledError&) {
+          throw;
+        } catch (const StaticsWorkError&) {
           throw;
         } catch (const Error&) {
           if (tries_work > options.max_line_work) break;  // no more tries
@@ -113,6 +118,8 @@ std::vector<State> SolveCoupledEquilibriumRelaxing(const Model& sys, const Input
         }
       }
     } catch (const CancelledError&) {
+      throw;
+    } catch (const StaticsWorkError&) {
       throw;
     } catch (const Error&) {
       // The lines not held at the first guess (the first error says why).

@@ -30,7 +30,8 @@ constexpr double kMostRelaxationStationSteps = 7.2e7;
 // says how many seconds of motion it took). Throws the first Error when the relaxation finds
 // none either (or the motion blows up), CancelledError when options.cancel is raised.
 // `step`: the implicit scheme's options (MakeData).
-std::vector<State> SolveCoupledEquilibriumRelaxing(const Model& sys, const Inputs& in,
+// `sys` is the island's own (a copy): its lines are held in place (their ends put back after).
+std::vector<State> SolveCoupledEquilibriumRelaxing(Model& sys, const Inputs& in,
                                                    const StepOptions& step,
                                                    EquilibriumReport* report,
                                                    const EquilibriumOptions& options);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/line_equilibrium.h"
 #include "scene/scene_limits.h"
 #include "scene/text_escape.h"
 
@@ -52,6 +53,39 @@ void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::stri
        << FormatNumber(end->position[1]) << " m";
     if (lowest != end->position[1]) os << ", down to " << FormatNumber(lowest) << " m as it moves";
     os << "); expected a seabed at or below the cable's prescribed ends";
+    throw Error(os.str());
+  }
+}
+
+// A line whose statics take more than their bound at the least (kLeastStaticPasses over its
+// stations; the inextensible model's two solves twice that) is refused here, before its model
+// and the statics' workspaces are made (10^7 links: 3.5 GB and some 5 s before the statics
+// gave up), naming its longest section's segments.
+void CheckStaticsSize(const toml::table& root, const SceneDef& scene, const std::string& file) {
+  if (scene.initial != InitialStateKind::kEquilibrium) return;
+  for (const LineDef& line : scene.lines) {
+    double links = 0;
+    std::size_t longest = 0;
+    for (std::size_t i = 0; i < line.sections.size(); ++i) {
+      links += line.sections[i].segments;
+      if (line.sections[i].segments > line.sections[longest].segments) longest = i;
+    }
+    const double solves = line.model == CableModelKind::kInextensible ? 2.0 : 1.0;
+    const double least = solves * kLeastStaticPasses * (links + 1);
+    if (line.sections.empty() || !(least > kMostLineStaticsWork)) continue;
+    const double most = std::floor(kMostLineStaticsWork / (solves * kLeastStaticPasses)) - 1;
+    const std::string key = line.key + ".section[" + std::to_string(longest) + "].segments";
+    std::ostringstream os;
+    os << EscapeText(file) << ":";
+    if (const toml::node* n = root.at_path(key).node()) os << n->source().begin.line << ":";
+    os << " " << key << ": the static equilibrium of " << (line.key == "cable" ? "the cable" : "line \"" + line.name + "\"")
+       << " (" << static_cast<long long>(links) << " links), the initial state, takes some "
+       << FormatNumber(least) << " station-passes at the least (" << FormatNumber(kLeastStaticPasses)
+       << " passes over its " << static_cast<long long>(links) + 1 << " stations"
+       << (solves > 1 ? ", twice for the inextensible model" : "") << "), more than the statics' bound of "
+       << FormatNumber(kMostLineStaticsWork) << " (some 5 s); expected at most "
+       << static_cast<long long>(most)
+       << " links in all for an equilibrium start: fewer segments, or [initial] state = \"straight\"";
     throw Error(os.str());
   }
 }

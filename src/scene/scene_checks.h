@@ -16,6 +16,10 @@ void CheckSeabed(const toml::table& root, const SceneDef& scene, const std::stri
 void CheckRunCounts(const toml::table& root, const SceneDef& scene, const std::string& file,
                     bool interval_given);
 
+// With the equilibrium start, no line too long for the statics' bound (kMostLineStaticsWork,
+// line_equilibrium.h): an error naming its longest section's segments, before its model is made.
+void CheckStaticsSize(const toml::table& root, const SceneDef& scene, const std::string& file);
+
 // Why an inextensible line's ends, at points given in the world's axes (not free, not on a
 // body), are too far apart for it: as far as or further than its length ("" when they are
 // not, or the line is elastic).

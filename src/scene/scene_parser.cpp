@@ -830,6 +830,7 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
   top.Finish();
   CheckSeabed(root, scene, file);
   CheckRunCounts(root, scene, file, interval_given);
+  CheckStaticsSize(root, scene, file);
   return scene;
 }
 

@@ -145,6 +145,27 @@ TEST(SceneLoader, WeightNotOnAStation) {
   EXPECT_NO_THROW(ParseScene(With("at = 27.432", "at = 60.96"), kFile));
 }
 
+// A cable too long for the statics' bound (kMostLineStaticsWork station-passes, and a line's
+// statics take kLeastStaticPasses over its stations at the least) is refused at its longest
+// section's segments when it starts from its equilibrium, before its model is made (10^7 links
+// made 3.5 GB of it, and the statics gave up seconds later); from the chord it runs.
+TEST(SceneLoader, ACableTooLongForTheStaticsIsRefusedAtItsSegments) {
+  const double most = std::floor(kMostLineStaticsWork / kLeastStaticPasses) - 1;  // links
+  // Sections of a multiple of 5 links: the weight 0.6 of the way along the first on a station.
+  const int half = 5 * (static_cast<int>(most / 10) + 1);  // 3 x half > most
+  const std::string longer = With(
+      "segments = 30\n\n[[cable.section]]\nmaterial = \"nylon\"\nlength = 45.72\nsegments = 30",
+      "segments = " + std::to_string(2 * half) + "\n\n[[cable.section]]\nmaterial = \"nylon\"\n"
+      "length = 45.72\nsegments = " + std::to_string(half));
+  ExpectError(longer, "cable.section[0].segments",
+              {"station-passes", "[initial] state = \"straight\"",
+               "expected at most " + std::to_string(static_cast<long long>(most)) + " links"});
+  EXPECT_NO_THROW(ParseScene(longer + "\n[initial]\nstate = \"straight\"\n", kFile));
+  // Just within it, it is taken.
+  const int first = 5 * (static_cast<int>(most / 5) - 6);  // with the other's 30
+  EXPECT_NO_THROW(ParseScene(With("segments = 30", "segments = " + std::to_string(first)), kFile));
+}
+
 TEST(SceneLoader, SectionWithoutSegments) {
   ExpectError(With("segments = 30", "segments = 0"), "cable.section[0].segments",
               {"expected a whole number from 1"});
