@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sea_components.h"
 #include "scene/build_model.h"
 #include "scene/text_escape.h"
 
@@ -164,6 +165,30 @@ void PrintWaves(const SceneDef& scene, const LineModel& m) {
   if (!m.has_waves()) return;
   const Wave& w = m.env.wave;
   const double kh = w.k * w.spec.depth;
+  if (w.irregular()) {
+    const SeaComponents& sea = *w.sea;
+    const WavesDef& d = scene.waves;
+    const char* kinds[] = {"regular", "JONSWAP", "Pierson-Moskowitz", "table", "recorded"};
+    std::printf("  irregular sea (%s, linear Airy components, mean direction %s): Hs %.4g m "
+                "(components' 4 sqrt(m0) %.4g m), Tp %.4g s, depth %.6g m, still water level "
+                "y = %.6g m; %d components from %.4g to %.4g rad/s",
+                kinds[static_cast<int>(d.sea)], HeadingText(w.direction).c_str(),
+                w.spec.height, sea.SignificantHeight(), w.spec.period, w.spec.depth,
+                w.spec.surface_y, sea.size(), sea.omega.empty() ? 0.0 : *std::min_element(
+                    sea.omega.begin(), sea.omega.end()),
+                sea.omega.empty() ? 0.0 : *std::max_element(sea.omega.begin(), sea.omega.end()));
+    if (d.sea == SeaKind::kJonswap) std::printf(", gamma %.4g", d.gamma);
+    if (d.sea == SeaKind::kRecord)
+      std::printf(", the record's, repeating every %.6g s", sea.repeat_period);
+    else
+      std::printf(", seed %llu, bins %.4g rad/s wide (drawn frequencies: no repeat)%s",
+                  static_cast<unsigned long long>(d.seed), sea.frequency_step,
+                  d.spreading > 0 ? "" : ", long-crested");
+    if (d.spreading > 0) std::printf(", short-crested (cos-2s, s = %.4g)", d.spreading);
+    std::printf("; shortest wave %.4g m, ramp rate %.4g 1/s, kinematics %s\n",
+                sea.ShortestLength(), w.spec.ramp_rate, KinematicsText(w.spec.kinematics));
+    return;
+  }
   std::printf("  waves (linear Airy, along %s): height %.4g m, period %.4g s, depth %.6g m, "
               "still water level y = %.6g m: length %.6g m, k h = %.4g (%s), steepness H/L = "
               "%.4g (breaks above %.4g), crest speed %.4g m/s, phase %.4g deg, ramp rate %.4g "

@@ -36,6 +36,22 @@ EndMotion EndMotion::Trochoid(Vec rest, Vec cos_amplitudes, Vec sin_amplitudes, 
   return m;
 }
 
+EndMotion EndMotion::Harmonics(Vec rest, std::vector<Harmonic> harmonics, double nu) {
+  if (harmonics.empty()) throw Error("internal: an orbit of no harmonic");
+  // The largest first: its period is the motion's period().
+  const auto size = [](const Harmonic& h) { return h.cos.squaredNorm() + h.sin.squaredNorm(); };
+  std::iter_swap(harmonics.begin(),
+                 std::max_element(harmonics.begin(), harmonics.end(),
+                                  [&](const Harmonic& a, const Harmonic& b) {
+                                    return size(a) < size(b);
+                                  }));
+  EndMotion m = Trochoid(rest, harmonics[0].cos, harmonics[0].sin, harmonics[0].omega, nu);
+  if (harmonics.size() > 1)
+    m.more_ = std::make_shared<const std::vector<Harmonic>>(harmonics.begin() + 1,
+                                                            harmonics.end());
+  return m;
+}
+
 EndMotion EndMotion::Table(Vec rest, const std::vector<double>& times,
                            const std::vector<Vec>& offsets, TableInterpolation interpolation) {
   if (times.size() < 2 || offsets.size() != times.size())
@@ -126,14 +142,27 @@ Vec EndMotion::EvaluateTrochoid(double t, int order) const {
   const double e = std::exp(-nu_ * t);
   const double ramp[3] = {1.0 - (1.0 + nu_ * t) * e, nu_ * nu_ * t * e,
                           nu_ * nu_ * (1.0 - nu_ * t) * e};
-  // Orbit P(t) = (a cos wt + b sin wt, c cos wt + d sin wt) and its derivatives.
-  const double co = std::cos(omega_ * t), si = std::sin(omega_ * t);
-  const Vec p0 = cos_ * co + sin_ * si;
-  const Vec p1 = omega_ * (sin_ * co - cos_ * si);
-  const Vec p2 = -omega_ * omega_ * p0;
-  if (order == 0) return rest_ + ramp[0] * p0;
-  if (order == 1) return ramp[1] * p0 + ramp[0] * p1;
-  return ramp[2] * p0 + 2.0 * ramp[1] * p1 + ramp[0] * p2;
+  Vec p[3];
+  Orbit(t, p);
+  if (order == 0) return rest_ + ramp[0] * p[0];
+  if (order == 1) return ramp[1] * p[0] + ramp[0] * p[1];
+  return ramp[2] * p[0] + 2.0 * ramp[1] * p[1] + ramp[0] * p[2];
+}
+
+void EndMotion::Orbit(double tau, Vec p[3]) const {
+  // P(t) = (a cos wt + b sin wt, c cos wt + d sin wt) and its derivatives, each harmonic's.
+  const double co = std::cos(omega_ * tau), si = std::sin(omega_ * tau);
+  p[0] = cos_ * co + sin_ * si;
+  p[1] = omega_ * (sin_ * co - cos_ * si);
+  p[2] = -omega_ * omega_ * p[0];
+  if (!more_) return;
+  for (const Harmonic& h : *more_) {
+    const double c = std::cos(h.omega * tau), s = std::sin(h.omega * tau);
+    const Vec q = h.cos * c + h.sin * s;
+    p[0] += q;
+    p[1] += h.omega * (h.sin * c - h.cos * s);
+    p[2] += -h.omega * h.omega * q;
+  }
 }
 
 Vec EndMotion::Evaluate(double t, int order, const SmoothSchedule& scale,
@@ -164,10 +193,7 @@ Vec EndMotion::Translation(double t, int order, const SmoothSchedule& scale,
     g[2] = s.rate2 * ramp[0] + 2 * s.rate * ramp[1] + s.value * ramp[2];
     g[1] = s.rate * ramp[0] + s.value * ramp[1];
     g[0] = s.value * ramp[0];
-    const double co = std::cos(omega_ * tau), si = std::sin(omega_ * tau);
-    p[0] = cos_ * co + sin_ * si;
-    p[1] = omega_ * (sin_ * co - cos_ * si);
-    p[2] = -omega_ * omega_ * p[0];
+    Orbit(tau, p);
   } else {
     p[0] = EvaluateTable(tau, 0) - rest_;
     p[1] = EvaluateTable(tau, 1);

@@ -33,6 +33,15 @@ class EndMotion {
   // (a, c, e), `sin_amplitudes` = (b, d, f) [m].
   static EndMotion Trochoid(Vec rest, Vec cos_amplitudes, Vec sin_amplitudes, double omega,
                             double nu);
+  // Eq. (3) over many frequencies under the one ramp R(t): x = x0 + R(t) sum_i (a_i cos w_i t +
+  // b_i sin w_i t) and the same for y, z (an end following an irregular sea through its RAOs).
+  // At least one harmonic; period() is the largest one's.
+  struct Harmonic {
+    double omega = 0;        // [rad/s]
+    Vec cos = Vec::Zero();   // [m] (or [rad] for a body's angles)
+    Vec sin = Vec::Zero();
+  };
+  static EndMotion Harmonics(Vec rest, std::vector<Harmonic> harmonics, double nu);
   // Rows: times t [s], strictly increasing, at least two, and offsets [m] added to `rest`,
   // joined by `interpolation` on the closed span [t_first, t_last]: at a row the motion is the
   // one arriving at it (the segment before it; the first row: the first segment), so the last
@@ -115,6 +124,8 @@ class EndMotion {
   // [rad/s^2]: (R(theta) - R(theta_0)) local [m], R' local [m/s], R'' local [m/s^2].
   Vec TurnPart(const Vec& theta, const Vec& rate, const Vec& rate2, int order) const;
   Vec EvaluateTrochoid(double t, int order) const;
+  // The orbit P(tau) of eq. (3) and its first two derivatives, every harmonic summed.
+  void Orbit(double tau, Vec p[3]) const;
   Vec EvaluateTable(double t, int order) const;
 
   EndKind kind_ = EndKind::kFixed;
@@ -123,6 +134,9 @@ class EndMotion {
   Vec cos_ = Vec::Zero(), sin_ = Vec::Zero();  // (a, c, e), (b, d, f) [m]
   double omega_ = 0;                      // omega_s [rad/s]
   double nu_ = 0;                         // nu_s [1/s]
+  // Harmonics beyond (cos_, sin_, omega_), the largest, of an orbit over many frequencies
+  // (Harmonics()); shared: never changed in place.
+  std::shared_ptr<const std::vector<Harmonic>> more_;
   // Table: knots and the spline's second derivatives at the knots.
   std::vector<double> knot_t_;
   std::vector<Vec> knot_p_, knot_m_;  // offsets [m]; spline: d2/dt2 [m/s^2] (linear: 0)

@@ -48,6 +48,15 @@ void UpdateWater(const LineModel& m, const Inputs& in, double t, Water* water) {
   if (as_scene && wave.spec.height == scene.height && wave.spec.period == scene.period &&
       wave.spec.heading == scene.heading)
     return;  // the scene's wave, as it was (its phase too)
+  if (wave.irregular()) {
+    // An irregular sea: a new height scales every component (Hs); its spectrum's shape, period
+    // and heading stay the scene's.
+    const double hs = in.wave_height.ValueAt(t);
+    wave.spec.height = hs;
+    wave.amplitude = 0.5 * hs;
+    wave.sea_scale = scene.height > 0 ? hs / scene.height : 0.0;
+    return;
+  }
   const double period = in.wave_period.ValueAt(t), heading_now = in.wave_heading.ValueAt(t);
   if (period != wave.spec.period || heading_now != wave.spec.heading) {
     // theta = k e . x - omega t + phase kept at the phase point: the new phase takes up the old

@@ -16,11 +16,14 @@
 // surface every mode holds the surface's value, and below the bed (z < -h) the bed's. The
 // acceleration is the local one, d(R u)/dt at fixed evaluation point (the convective terms are
 // second order in H / L).
+#include <memory>
 #include <vector>
 
 #include "core/vec.h"
 
 namespace cablefilm {
+
+struct SeaComponents;  // sea_components.h: an irregular sea's components
 
 // Where the Airy formulas are evaluated for a point at elevation z above the still water level
 // (eta the surface's elevation there, h the depth; z first held to [-h, eta]):
@@ -43,6 +46,10 @@ struct WaveSpec {
   double heading = 0;     // the direction they travel [rad] from +x towards +z
   double ramp_rate = 0;   // nu [1/s] of R(t); 0: no ramp (R = 1 from t = 0)
   WaveKinematics kinematics = WaveKinematics::kWheeler;  // where the formulas are evaluated
+  // An irregular sea: the sum of these components in place of the one wave above (whose height
+  // and period are then the sea's Hs and Tp, for summaries, the breaking check and the ramp's
+  // default). Null: the regular wave.
+  std::shared_ptr<const SeaComponents> sea;
 };
 
 // The wave number k [1/m] of omega^2 = g k tanh(k h): Newton's method on x tanh x = omega^2 h / g
@@ -65,6 +72,16 @@ struct Wave {
   Vec direction = Vec(1.0, 0.0, 0.0);  // e: the horizontal unit vector of the heading
   double decay = 0;       // e^{-2 k h}: the depth profiles' constants (KinematicsAt), set by
   double decay_gap = 1;   // 1 - e^{-2 k h}  MakeWave with k
+  // An irregular sea's components (spec.sea), each amplitude times sea_scale (the live view's
+  // Hs over the scene's; 1 in a run). Its omega and k above are then the peak period's.
+  std::shared_ptr<const SeaComponents> sea;
+  double sea_scale = 1;
+  bool irregular() const { return sea != nullptr; }
+  // The shortest wave length present [m]: the regular wave's, or the shortest component's.
+  double shortest_length() const;
+  // The highest crest to expect above the still water level [m]: a, or for a sea Hs (about the
+  // most probable largest crest of a 3-hour storm).
+  double crest() const;
   double length() const;  // L = 2 pi / k [m]
   double steepness() const { return spec.height / length(); }  // H / L
   // Miche's (1944) breaking limit: H / L at most tanh(k h) / 7 (1/7 in deep water, H <= 0.88 h

@@ -18,6 +18,12 @@ EndMotion MakeEndMotion(const EndDef& e) {
     case EndMotionKind::kFree:
       return EndMotion::Free(rest);
     case EndMotionKind::kTrochoid:
+      if (!e.harmonics.empty()) {  // following an irregular sea
+        std::vector<EndMotion::Harmonic> h;
+        for (const auto& row : e.harmonics)
+          h.push_back({row[0], Vec(row[1], row[3], row[5]), Vec(row[2], row[4], row[6])});
+        return EndMotion::Harmonics(rest, std::move(h), e.ramp_rate);
+      }
       return EndMotion::Trochoid(
           rest, Vec(e.x_amplitudes[0], e.y_amplitudes[0], e.z_amplitudes[0]),
           Vec(e.x_amplitudes[1], e.y_amplitudes[1], e.z_amplitudes[1]), 2.0 * M_PI / e.period,
@@ -39,6 +45,17 @@ EndMotion MakeTurnMotion(const EndDef& e, const Vec& rest_angles) {
   const double deg = M_PI / 180.0;
   switch (e.motion) {
     case EndMotionKind::kTrochoid: {
+      if (!e.harmonics.empty()) {  // following an irregular sea: the angles' columns
+        std::vector<EndMotion::Harmonic> h;
+        bool turns = false;
+        for (const auto& row : e.harmonics) {
+          h.push_back({row[0], Vec(row[7], row[9], row[11]) * deg,
+                       Vec(row[8], row[10], row[12]) * deg});
+          turns = turns || !h.back().cos.isZero(0) || !h.back().sin.isZero(0);
+        }
+        if (!turns) break;
+        return EndMotion::Harmonics(rest_angles, std::move(h), e.ramp_rate);
+      }
       const Vec cos_amplitudes(e.rx_amplitudes[0], e.ry_amplitudes[0], e.rz_amplitudes[0]);
       const Vec sin_amplitudes(e.rx_amplitudes[1], e.ry_amplitudes[1], e.rz_amplitudes[1]);
       if (cos_amplitudes.isZero(0) && sin_amplitudes.isZero(0)) break;
@@ -150,6 +167,7 @@ WaveSpec MakeWaveSpec(const SceneDef& scene) {
   w.heading = d.heading * M_PI / 180.0;
   w.ramp_rate = d.ramp_rate;
   w.kinematics = d.kinematics;
+  if (d.sea != SeaKind::kRegular) w.sea = d.components_made;
   return w;
 }
 

@@ -2,11 +2,15 @@
 // The scene as read from its TOML file: plain data with defaults and units, no behaviour.
 // Field names follow scene-format.md; symbols in brackets are those of Polachek et al. (1963).
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/line_model.h"
+#include "core/sea_components.h"
 #include "scene/key_source.h"
+#include "scene/rao_table.h"
 
 namespace cablefilm {
 
@@ -25,10 +29,17 @@ struct EnvironmentDef {
 // [seabed]: a flat seabed (optional), as the core takes it (core/line_model.h).
 using SeabedDef = SeabedSpec;
 
-struct WavesDef {                  // [waves]: regular linear (Airy) waves along +x (optional)
+// [waves]: what sea: the regular wave, a spectrum's components, or a recorded elevation's.
+enum class SeaKind { kRegular, kJonswap, kPiersonMoskowitz, kTable, kRecord };
+
+struct WavesDef {                  // [waves]: linear (Airy) waves (optional)
   bool present = false;
-  double height = 0;               // H [m], crest to trough (0: still water with a surface)
-  double period = 0;               // T [s]
+  SeaKind sea = SeaKind::kRegular; // `spectrum`
+  double height = 0;               // H [m], crest to trough (0: still water with a surface);
+                                   // an irregular sea's Hs (given, or 4 sqrt(m0) of its table
+                                   // or record)
+  double period = 0;               // T [s]; an irregular sea's Tp (given, or its table's or
+                                   // record's peak)
   double depth = 0;                // h [m], still water level to the bed; default
                                    // surface_y - seabed.y with a [seabed]
   double surface_y = 0;            // the still water level's elevation [m]
@@ -37,6 +48,17 @@ struct WavesDef {                  // [waves]: regular linear (Airy) waves along
   double ramp_rate = 0;            // nu [1/s] of eq. (3)'s ramp R(t); default 4 / T
   WaveKinematics kinematics = WaveKinematics::kWheeler;  // where the Airy formulas are
                                    // evaluated (core/waves.h): "wheeler", "linear", "extrapolated"
+  // An irregular sea (sea != kRegular):
+  double gamma = 0;                // JONSWAP's peak enhancement (given, or DNV's rule)
+  std::string file;                // resolved path of its table ("omega,S") or record ("t,eta")
+  std::vector<double> table_omega, table_density;  // [rad/s], [m^2 s/rad]
+  std::vector<double> record_t, record_eta;        // [s], [m]
+  std::array<double, 2> record_point{};  // (x, z) [m] where the record was measured
+  std::uint64_t seed = 1;          // a spectrum's random phases, frequencies and directions
+  int components = 200;            // a spectrum's components
+  std::array<double, 2> band{};    // a spectrum's band [rad/s]; 0, 0: its own
+  double spreading = 0;            // s of cos-2s; 0: long-crested
+  std::shared_ptr<const SeaComponents> components_made;  // what the loader made of the above
 };
 
 struct MaterialDef {
@@ -103,6 +125,13 @@ struct EndDef {
   std::array<double, 2> rx_rao{};
   std::array<double, 2> ry_rao{};
   std::array<double, 2> rz_rao{};
+  // Or the RAOs by heading and frequency from a file (rao_table.h): its resolved path and rows.
+  std::string rao_file;
+  std::shared_ptr<const RaoTable> rao_table;
+  // Following an irregular sea: the harmonics the loader made of its components through the
+  // RAOs, each [omega rad/s, then (cos, sin) amplitudes of x, y, z [m] and rx, ry, rz [deg]],
+  // in place of the one above (empty: the regular wave's trochoid).
+  std::vector<std::array<double, 13>> harmonics;
 };
 
 // Where lines end: a [[point]] (a mooring's anchors, fairleads, clump weights, buoys,

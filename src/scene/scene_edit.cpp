@@ -146,24 +146,30 @@ void SetValue(toml::table& root, const std::string& key, const std::vector<PathS
   }
 }
 
-// A relative `file` of a table motion, made absolute from the scene's folder: the case's scene
+// A relative file a scene names (a motion's table `file`, a vessel's `rao_file`, a sea's
+// spectrum table or record `file`), made absolute from the scene's folder: the case's scene
 // lives elsewhere.
-void AbsoluteTablePaths(toml::table& root, const std::string& scene_path) {
-  toml::table* ends = root["ends"].as_table();
-  if (!ends) return;
+void AbsoluteFilePaths(toml::table& root, const std::string& scene_path) {
   namespace fs = std::filesystem;
-  for (const char* which : {"start", "end"}) {
-    toml::table* end = (*ends)[which].as_table();
-    if (!end) continue;
-    const toml::value<std::string>* file = (*end)["file"].as_string();
-    if (!file || file->get().empty() || file->get().find('\0') != std::string::npos) continue;
-    const fs::path name(file->get());
-    if (name.is_absolute()) continue;
-    std::error_code ec;
-    const fs::path base = fs::absolute(fs::path(scene_path).parent_path(), ec);
-    if (ec) continue;
-    end->insert_or_assign("file", (base / name).lexically_normal().string());
-  }
+  std::error_code ec;
+  const fs::path base = fs::absolute(fs::path(scene_path).parent_path(), ec);
+  if (ec) return;
+  auto fix = [&](toml::table* t) {
+    if (!t) return;
+    for (const char* key : {"file", "rao_file"}) {
+      const toml::value<std::string>* file = (*t)[key].as_string();
+      if (!file || file->get().empty() || file->get().find('\0') != std::string::npos) continue;
+      const fs::path name(file->get());
+      if (name.is_absolute()) continue;
+      t->insert_or_assign(key, (base / name).lexically_normal().string());
+    }
+  };
+  if (toml::table* ends = root["ends"].as_table())
+    for (const char* which : {"start", "end"}) fix((*ends)[which].as_table());
+  fix(root["waves"].as_table());
+  for (const char* list : {"point", "body"})
+    if (toml::array* a = root[list].as_array())
+      for (toml::node& n : *a) fix(n.as_table());
 }
 
 // The scene's text as a TOML table; not TOML: an Error naming the file and line.
@@ -204,7 +210,7 @@ std::string EditSceneText(const std::string& scene_text, const std::string& scen
       throw Error(EscapeText(keys[i]) + ": not a TOML value: " + QuoteText(values[i]));
     SetValue(root, keys[i], ParseKeyPath(keys[i]), *value.get("v"));
   }
-  AbsoluteTablePaths(root, scene_path);
+  AbsoluteFilePaths(root, scene_path);
   // The title a scene without one gets is its file's name: the original's, not "scene".
   if (!root.contains("title"))
     root.insert("title", std::filesystem::path(scene_path).stem().string());

@@ -16,6 +16,8 @@
 #include "core/error.h"
 #include "core/waves.h"
 #include "scene/film_view.h"
+#include "scene/number_table.h"
+#include "scene/recorded_sea.h"
 #include "scene/scene_checks.h"
 #include "scene/scene_limits.h"
 #include "scene/table_file.h"
@@ -159,15 +161,166 @@ void ReadSeabed(TableReader& top, SceneDef& scene) {
 // [waves]: read after [environment] and [seabed] (the default depth is the seabed's). The wave
 // is checked against breaking: H / L at most tanh(k h) / 7 (Miche 1944: 1/7 in deep water,
 // H <= 0.88 h in shallow water), an error naming waves.height.
-void ReadWaves(TableReader& top, SceneDef& scene) {
+// An irregular sea's keys (spectrum != "regular"): the spectrum's, or a table's or record's
+// file, and how its components are drawn; the sea made into components (its Hs and Tp into
+// height and period).
+void ReadSea(TableReader& r, const toml::table* t, SceneDef& scene, const std::string& file,
+             const std::string& spectrum) {
+  WavesDef& w = scene.waves;
+  for (const char* regular : {"height", "period", "phase"})
+    if (r.Has(regular))
+      r.Fail(t->get(regular), regular,
+             std::string(regular) + " is the regular wave's; a sea of spectrum = " +
+                 QuoteText(spectrum) +
+                 " takes hs and tp (jonswap, pierson-moskowitz) or a file (table, record)");
+  const bool drawn = w.sea != SeaKind::kRecord;  // the components are drawn from a spectrum
+  if (!drawn)
+    for (const char* key : {"seed", "components", "band", "spreading"})
+      if (r.Has(key))
+        r.Fail(t->get(key), key,
+               std::string(key) + " draws a spectrum's components; a record's are its own");
+  const bool formula = w.sea == SeaKind::kJonswap || w.sea == SeaKind::kPiersonMoskowitz;
+  SpectrumSpec spec;
+  if (formula) {
+    spec.kind = w.sea == SeaKind::kJonswap ? SpectrumKind::kJonswap
+                                           : SpectrumKind::kPiersonMoskowitz;
+    spec.hs = r.Positive("hs", " (significant wave height, in m)", 1e-6, kMaxWaveHeight);
+    spec.tp = r.Ranged("tp", 0.0, true, kMinWavePeriod, kMaxWavePeriod, " (peak period, in s)");
+    spec.gamma = 1.0;
+    if (w.sea == SeaKind::kJonswap)
+      spec.gamma = r.Has("gamma")
+                       ? r.Ranged("gamma", 0.0, true, 1.0, 10.0,
+                                  " (JONSWAP's peak enhancement; DNV's rule if left out)")
+                       : DnvJonswapGamma(spec.hs, spec.tp);
+    w.gamma = spec.gamma;
+  } else {
+    for (const char* formula_key : {"hs", "tp", "gamma"})
+      if (r.Has(formula_key))
+        r.Fail(t->get(formula_key), formula_key,
+               std::string(formula_key) + " belongs to spectrum = \"jonswap\" or " +
+                   "\"pierson-moskowitz\"; a sea of spectrum = " + QuoteText(spectrum) +
+                   " is its file's");
+    const std::string name = r.String("file", "", true);
+    if (name.empty() || name.find('\0') != std::string::npos)
+      r.Fail(t->get("file"), "file",
+             std::string("expected the name of a CSV file ") +
+                 (w.sea == SeaKind::kTable ? "omega,S" : "t,eta") + ", got " + Quote(name));
+    w.file = (std::filesystem::path(file).parent_path() / name).string();
+    try {
+      if (w.sea == SeaKind::kTable) {
+        for (const auto& row : ReadNumberTable(w.file, {"omega", "S"}, "the spectrum table",
+                                               "(omega in rad/s, S in m^2 s/rad)")) {
+          if (!(row[0] > 0 && row[0] <= 1e3) || !(row[1] >= 0 && row[1] <= 1e9) ||
+              (!w.table_omega.empty() && !(row[0] > w.table_omega.back())))
+            throw Error(EscapeText(w.file) + ": expected omega increasing from above 0 to 1000 "
+                        "rad/s and S from 0 to 1e9 m^2 s/rad, got omega = " +
+                        TableReader::Fmt(row[0]) + ", S = " + TableReader::Fmt(row[1]));
+          w.table_omega.push_back(row[0]);
+          w.table_density.push_back(row[1]);
+        }
+      } else {
+        for (const auto& row : ReadNumberTable(w.file, {"t", "eta"}, "the recorded elevation",
+                                               "(t in s, eta in m)", 4)) {
+          if (!(std::abs(row[0]) <= kMaxTime) || !(std::abs(row[1]) <= kMaxWaveHeight) ||
+              (!w.record_t.empty() && !(row[0] > w.record_t.back())))
+            throw Error(EscapeText(w.file) + ": expected t increasing, within " +
+                        TableReader::Fmt(kMaxTime) + " s, and |eta| at most " +
+                        TableReader::Fmt(kMaxWaveHeight) + " m, got t = " +
+                        TableReader::Fmt(row[0]) + ", eta = " + TableReader::Fmt(row[1]));
+          w.record_t.push_back(row[0]);
+          w.record_eta.push_back(row[1]);
+        }
+      }
+    } catch (const Error& e) {
+      r.Fail(t->get("file"), "file", e.what());
+    }
+  }
+  if (drawn) {
+    w.seed = static_cast<std::uint64_t>(r.Integer("seed", 1, 0, 2147483647, false));
+    w.components = r.Integer("components", 200, 1, 20000, false);
+    w.band = r.Pair("band", {0, 0}, false, false, " ([lowest, highest] omega in rad/s)", 1e3);
+    if (r.Has("band") && !(w.band[0] > 0 && w.band[1] > w.band[0]))
+      r.Fail(t->get("band"), "band",
+             "expected [lowest, highest] omega in rad/s with 0 < lowest < highest, got [" +
+                 TableReader::Fmt(w.band[0]) + ", " + TableReader::Fmt(w.band[1]) + "]");
+    w.spreading = r.Ranged("spreading", 0.0, false, 0.0, 1000.0,
+                           " (s of the cos-2s spreading function; 0: long-crested)");
+  } else {
+    w.record_point = r.Pair("record_point", {0, 0}, false, false,
+                            " ([x, z] in m, where the record was measured)", kMaxLength);
+  }
+  const double g = scene.environment.gravity;
+  if (!(g > 0)) r.Fail(t, "spectrum", "expected gravity > 0 for waves (environment.gravity = 0)");
+  SeaComponents sea;
+  try {
+    if (w.sea == SeaKind::kRecord) {
+      sea = RecordComponents(w.record_t, w.record_eta, w.record_point[0], w.record_point[1],
+                             w.heading * M_PI / 180.0, g, w.depth);
+    } else {
+      if (w.sea == SeaKind::kTable) {
+        spec.kind = SpectrumKind::kTable;
+        spec.omega = w.table_omega;
+        spec.density = w.table_density;
+        if (!(SpectrumArea(spec, spec.omega.front(), spec.omega.back(), 20000) > 0))
+          throw Error(EscapeText(w.file) + ": the spectrum's area is 0; expected S > 0 somewhere");
+      }
+      SeaDiscretization d;
+      d.components = w.components;
+      d.band_lo = w.band[0];
+      d.band_hi = w.band[1];
+      d.seed = w.seed;
+      d.heading = w.heading * M_PI / 180.0;
+      d.spreading = w.spreading;
+      sea = SpectrumComponents(spec, d, g, w.depth);
+    }
+  } catch (const Error& e) {
+    r.Fail(t->get("file"), w.sea == SeaKind::kRecord ? "file" : "spectrum", e.what());
+  }
+  if (sea.size() == 0)
+    r.Fail(t->get("band"), "band", "the band holds none of the spectrum: expected a band where "
+                                   "its density is above 0");
+  // Hs and Tp: the formulas' as given; a table's and a record's from their components (4 sqrt(m0),
+  // and the period of the largest).
+  int largest = 0;
+  for (int i = 1; i < sea.size(); ++i)
+    if (sea.amplitude[i] > sea.amplitude[largest]) largest = i;
+  w.height = formula ? spec.hs : sea.SignificantHeight();
+  w.period = formula ? spec.tp : 2.0 * M_PI / sea.omega[largest];
+  if (w.sea == SeaKind::kTable) {  // the table's own peak
+    std::size_t peak = 0;
+    for (std::size_t i = 1; i < w.table_density.size(); ++i)
+      if (w.table_density[i] > w.table_density[peak]) peak = i;
+    w.period = 2.0 * M_PI / w.table_omega[peak];
+  }
+  w.components_made = std::make_shared<const SeaComponents>(std::move(sea));
+}
+
+void ReadWaves(TableReader& top, SceneDef& scene, const std::string& file) {
   const toml::table* t = top.SubTable("waves", false);
   if (!t) return;
   TableReader r = top.Child(*t, "waves");
   WavesDef& w = scene.waves;
   w.present = true;
-  w.height = r.Ranged("height", 0.0, true, 0.0, kMaxWaveHeight,
-                      " (crest to trough, in m; 0: still water with a surface)");
-  w.period = r.Ranged("period", 0.0, true, kMinWavePeriod, kMaxWavePeriod, " in s");
+  const std::string spectrum = r.Choice(
+      "spectrum", "regular", {"regular", "jonswap", "pierson-moskowitz", "table", "record"});
+  w.sea = spectrum == "jonswap"             ? SeaKind::kJonswap
+          : spectrum == "pierson-moskowitz" ? SeaKind::kPiersonMoskowitz
+          : spectrum == "table"             ? SeaKind::kTable
+          : spectrum == "record"            ? SeaKind::kRecord
+                                            : SeaKind::kRegular;
+  const bool regular = w.sea == SeaKind::kRegular;
+  if (regular) {
+    for (const char* sea_key : {"hs", "tp", "gamma", "file", "seed", "components", "band",
+                                "spreading", "record_point"})
+      if (r.Has(sea_key))
+        r.Fail(t->get(sea_key), sea_key,
+               std::string(sea_key) + " belongs to an irregular sea: expected spectrum = "
+               "\"jonswap\", \"pierson-moskowitz\", \"table\" or \"record\" with it (the "
+               "regular wave takes height and period)");
+    w.height = r.Ranged("height", 0.0, true, 0.0, kMaxWaveHeight,
+                        " (crest to trough, in m; 0: still water with a surface)");
+    w.period = r.Ranged("period", 0.0, true, kMinWavePeriod, kMaxWavePeriod, " in s");
+  }
   w.surface_y = r.Ranged("surface_y", 0.0, false, -kMaxLength, kMaxLength,
                          " (the still water level's elevation in m)");
   // With a [seabed], the depth is the water's over it: given, it must be surface_y - seabed.y
@@ -196,9 +349,11 @@ void ReadWaves(TableReader& top, SceneDef& scene) {
     r.Get("depth");
     w.depth = over_bed;
   }
-  w.phase = r.Ranged("phase", 0.0, false, -kMaxPhase, kMaxPhase, " in degrees");
+  if (regular) w.phase = r.Ranged("phase", 0.0, false, -kMaxPhase, kMaxPhase, " in degrees");
   w.heading = r.Ranged("heading", 0.0, false, -kMaxPhase, kMaxPhase,
-                       " (the direction they travel, degrees from +x towards +z)");
+                       regular ? " (the direction they travel, degrees from +x towards +z)"
+                               : " (the sea's mean direction, degrees from +x towards +z)");
+  if (!regular) ReadSea(r, t, scene, file, spectrum);
   w.ramp_rate =
       r.OptionalPositive("ramp_rate", 4.0 / w.period, " in 1/s", kMinRampRate, kMaxRampRate);
   const std::string kinematics =
@@ -220,6 +375,15 @@ void ReadWaves(TableReader& top, SceneDef& scene) {
                TableReader::Fmt(scene.environment.gravity) +
                " m/s^2; expected a period, depth and gravity whose deep-water wave length "
                "g T^2 / (2 pi) is finite and above 0");
+  if (!regular && !(w.height <= limit))
+    r.Fail(t->get(w.sea == SeaKind::kJonswap || w.sea == SeaKind::kPiersonMoskowitz ? "hs"
+                                                                                   : "file"),
+           "hs",
+           "the sea breaks: Hs / L = " + TableReader::Fmt(w.height / L) + " at Tp = " +
+               TableReader::Fmt(w.period) + " s (L = " + TableReader::Fmt(L) + " m in " +
+               TableReader::Fmt(w.depth) + " m of water); expected Hs of at most " +
+               TableReader::Fmt(limit) + " m (Miche's limit at the peak period), got " +
+               TableReader::Fmt(w.height) + " m");
   if (!(w.height <= limit))
     r.Fail(t->get("height"), "height",
            "the wave breaks: H / L = " + TableReader::Fmt(w.height / L) + " (L = " +
@@ -407,28 +571,55 @@ std::array<double, 2> ReadRao(TableReader& r, const std::string& key,
   return rao;
 }
 
-// The end's motion following the wave at its rest x, as eq. (3)'s trochoid: a response
-// r A cos(theta(x0, t) + p) with theta = k x0 - omega t + phase is
-// r A (cos(beta) cos(omega t) + sin(beta) sin(omega t)), beta = k x0 + phase + p.
+// The end's motion following the waves at its rest x, as eq. (3)'s trochoid: for each
+// component a response r a cos(theta(x0, t) + p) with theta = k e . x0 - omega t + phase, which
+// is r a (cos(beta) cos(omega t) + sin(beta) sin(omega t)), beta = k e . x0 + phase + p; r and
+// p the RAO's at the component's frequency and heading (the end's table's, or its x_rao ...
+// pairs at every frequency). The regular wave: one component, written as the trochoid's
+// amplitudes; an irregular sea: one harmonic a component.
 void FollowWave(const WavesDef& w, double gravity, EndDef& end) {
+  const double deg = M_PI / 180.0;
+  const std::array<double, 2>* pairs[6] = {&end.x_rao,  &end.y_rao,  &end.z_rao,
+                                           &end.rx_rao, &end.ry_rao, &end.rz_rao};
+  auto raos = [&](double omega, double heading_rad) {
+    if (end.rao_table) return RaoAt(*end.rao_table, omega, heading_rad / deg);
+    std::array<std::array<double, 2>, 6> out{};
+    for (int axis = 0; axis < 6; ++axis) out[axis] = *pairs[axis];
+    return out;
+  };
+  end.period = w.period;
+  end.ramp_rate = w.ramp_rate;
+  if (w.sea != SeaKind::kRegular) {
+    const SeaComponents& sea = *w.components_made;
+    end.harmonics.clear();
+    for (int i = 0; i < sea.size(); ++i) {
+      const double along = sea.dir_x[i] * end.position[0] + sea.dir_z[i] * end.position[2];
+      const auto r = raos(sea.omega[i], std::atan2(sea.dir_z[i], sea.dir_x[i]));
+      std::array<double, 13> h{};
+      h[0] = sea.omega[i];
+      for (int axis = 0; axis < 6; ++axis) {
+        const double beta = sea.k[i] * along + sea.phase[i] + r[axis][1] * deg;
+        h[1 + 2 * axis] = r[axis][0] * sea.amplitude[i] * std::cos(beta);
+        h[2 + 2 * axis] = r[axis][0] * sea.amplitude[i] * std::sin(beta);
+      }
+      end.harmonics.push_back(h);
+    }
+    return;
+  }
   const double omega = 2.0 * M_PI / w.period;
   const double k = WaveNumber(omega, gravity, w.depth);
-  const double A = 0.5 * w.height, deg = M_PI / 180.0;
+  const double A = 0.5 * w.height;
   // theta at the end's rest point: k e . x0 with e the heading's direction.
   const Vec e = Horizontal(w.heading * deg);
   const double along = e.x() * end.position[0] + e.z() * end.position[2];
+  const auto r = raos(omega, w.heading * deg);
   // The offsets [m] and a body's angles [deg], each from its RAO [m/m or deg/m].
-  const std::array<double, 2>* raos[6] = {&end.x_rao,  &end.y_rao,  &end.z_rao,
-                                          &end.rx_rao, &end.ry_rao, &end.rz_rao};
   std::array<double, 2>* amps[6] = {&end.x_amplitudes,  &end.y_amplitudes,  &end.z_amplitudes,
                                     &end.rx_amplitudes, &end.ry_amplitudes, &end.rz_amplitudes};
   for (int axis = 0; axis < 6; ++axis) {
-    const std::array<double, 2>& rao = *raos[axis];
-    const double beta = k * along + (w.phase + rao[1]) * deg;
-    *amps[axis] = {rao[0] * A * std::cos(beta), rao[0] * A * std::sin(beta)};
+    const double beta = k * along + (w.phase + r[axis][1]) * deg;
+    *amps[axis] = {r[axis][0] * A * std::cos(beta), r[axis][0] * A * std::sin(beta)};
   }
-  end.period = w.period;
-  end.ramp_rate = w.ramp_rate;
 }
 
 // An end's (or a point's, or a body's: `body`, whose angles may move too) position and motion
@@ -445,6 +636,22 @@ std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const 
              "motion = \"wave\" follows the waves: expected a [waves] table");
     end.motion = EndMotionKind::kTrochoid;
     end.follows_wave = true;
+    if (r.Has("rao_file")) {
+      for (const char* pair : {"x_rao", "y_rao", "z_rao", "rx_rao", "ry_rao", "rz_rao"})
+        if (r.Has(pair))
+          r.Fail(t->get(pair), pair,
+                 std::string(pair) + " and rao_file both give the RAOs: expected one of them");
+      const std::string name = r.String("rao_file", "", true);
+      if (name.empty() || name.find('\0') != std::string::npos)
+        r.Fail(t->get("rao_file"), "rao_file",
+               "expected the name of a CSV file of RAOs, got " + Quote(name));
+      end.rao_file = (std::filesystem::path(file).parent_path() / name).string();
+      try {
+        end.rao_table = std::make_shared<const RaoTable>(ReadRaoTable(end.rao_file, body));
+      } catch (const Error& e) {
+        r.Fail(t->get("rao_file"), "rao_file", e.what());
+      }
+    }
     end.x_rao = ReadRao(r, "x_rao");
     end.y_rao = ReadRao(r, "y_rao");
     end.z_rao = ReadRao(r, "z_rao");
@@ -712,7 +919,7 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
   }
   ReadEnvironment(top, scene);
   ReadSeabed(top, scene);
-  ReadWaves(top, scene);
+  ReadWaves(top, scene, file);
 
   bool elastic = true;
   if (const toml::table* cable = root.get_as<toml::table>("cable")) {

@@ -22,8 +22,8 @@ constexpr char kHeaderTurn[] = "t,x,y,z,rx,ry,rz";  // a body's, its angles too
 
 bool IsBlank(char c) { return c == ' ' || c == '\t'; }
 
-// A plain decimal number, surrounded by blanks at most: [+-]digits[.digits][(e|E)[+-]digits]
-// (or .digits). No hexadecimal, inf or nan, which strtod alone would take.
+}  // namespace
+
 bool ParseDecimal(const std::string& cell, double* value) {
   std::size_t b = 0, e = cell.size();
   while (b < e && IsBlank(cell[b])) ++b;
@@ -51,6 +51,8 @@ bool ParseDecimal(const std::string& cell, double* value) {
   *value = std::strtod(number.c_str(), nullptr);
   return true;
 }
+
+namespace {
 
 // `columns` (3, 4 or 7) decimal numbers separated by commas, nothing else.
 bool ParseRow(const std::string& line, int columns, std::array<double, 7>& row) {

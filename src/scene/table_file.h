@@ -16,4 +16,9 @@ namespace cablefilm {
 // angles 0 for one of three or four. `angles`: seven columns are allowed (a body's table).
 std::vector<std::array<double, 7>> ReadMotionTable(const std::string& path, bool angles = false);
 
+// A plain decimal number, surrounded by blanks at most: [+-]digits[.digits][(e|E)[+-]digits]
+// (or .digits). No hexadecimal, inf or nan, which strtod alone would take. False if `cell` is
+// not one.
+bool ParseDecimal(const std::string& cell, double* value);
+
 }  // namespace cablefilm

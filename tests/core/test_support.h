@@ -14,8 +14,22 @@
 #include "core/line_data.h"
 #include "core/line_model.h"
 #include "core/step.h"
+#include "core/waves.h"
 
 namespace cablefilm::testing {
+
+// The gradients of the water's velocity and acceleration at `at` [m], time t [s], by central
+// differences of step d [m] (KinematicsAt's own gradients are checked against them).
+inline void KinematicsGradientsByDifferences(const Wave& wave, const Vec& at, double t, double d,
+                                             Mat* Gu, Mat* Ga) {
+  for (int axis = 0; axis < kDim; ++axis) {
+    const Vec e = d * Vec::Unit(axis);
+    const WaterKinematics p = KinematicsAt(wave, at + e, t);
+    const WaterKinematics m = KinematicsAt(wave, at - e, t);
+    Gu->col(axis) = (p.velocity - m.velocity) / (2 * d);
+    Ga->col(axis) = (p.acceleration - m.acceleration) / (2 * d);
+  }
+}
 
 // The LineData a test steps: state `s` under a scheme, with the model's own inputs.
 inline LineData StartData(const LineModel& m, const State& s, Scheme scheme, double rho_inf = 0.5,

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "test_support.h"
 #include "core/waves.h"
 
 namespace cablefilm {
@@ -145,13 +146,7 @@ TEST(WaveKinematicsModes, GradientsMatchCentralDifferences) {
         above_surface += y > eta;
         const WaterKinematics w = KinematicsAt(wave, at, t);
         Mat Gu, Ga;
-        for (int axis = 0; axis < kDim; ++axis) {
-          const Vec e = d * Vec::Unit(axis);
-          const WaterKinematics p = KinematicsAt(wave, at + e, t);
-          const WaterKinematics m = KinematicsAt(wave, at - e, t);
-          Gu.col(axis) = (p.velocity - m.velocity) / (2 * d);
-          Ga.col(axis) = (p.acceleration - m.acceleration) / (2 * d);
-        }
+        testing::KinematicsGradientsByDifferences(wave, at, t, d, &Gu, &Ga);
         worst = std::max(worst, (w.velocity_gradient - Gu).cwiseAbs().maxCoeff() / su);
         worst = std::max(worst, (w.acceleration_gradient - Ga).cwiseAbs().maxCoeff() /
                                     (su * wave.omega));

@@ -209,13 +209,7 @@ TEST(WaveKinematics, GradientsMatchCentralDifferences) {
         const Vec at(xf * L, zf * c.h, -0.4 * xf * L);
         const WaterKinematics w = KinematicsAt(wave, at, t);
         Mat Gu, Ga;
-        for (int axis = 0; axis < kDim; ++axis) {
-          const Vec e = d * Vec::Unit(axis);
-          const WaterKinematics p = KinematicsAt(wave, at + e, t);
-          const WaterKinematics m = KinematicsAt(wave, at - e, t);
-          Gu.col(axis) = (p.velocity - m.velocity) / (2 * d);
-          Ga.col(axis) = (p.acceleration - m.acceleration) / (2 * d);
-        }
+        testing::KinematicsGradientsByDifferences(wave, at, t, d, &Gu, &Ga);
         const double su = wave.k * wave.amplitude * wave.omega / std::tanh(wave.k * c.h);
         worst = std::max(worst, (w.velocity_gradient - Gu).cwiseAbs().maxCoeff() / su);
         worst = std::max(worst,
