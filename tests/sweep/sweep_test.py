@@ -40,7 +40,9 @@ SHORT = ['simulation.duration=5', 'output.interval=0.1', 'cable.section[0].segme
          'cable.section[1].segments=10']
 SWEPT = ['environment.current=0,0.25,0.5', 'ends.end.period=8,10,12']
 REPORT_KEYS = ['peak_tension', 'peak_time', 'peak_link', 'min_tension', 'min_tension_time',
-               'min_tension_link', 'snaps', 'peak_converged']
+               'min_tension_link', 'snaps', 'peak_converged',
+               *[f'tension_{end}_{name}' for end in ('start', 'end')
+                 for name in ('mean', 'std', 'min', 'max', 'upcrossings', 'mpm')]]
 
 passed = failed = 0
 
@@ -113,7 +115,8 @@ def report_cells(report):
         v = report[key]
         if isinstance(v, bool):
             cells[key] = 'true' if v else 'false'
-        elif isinstance(v, int) and (key.endswith('_link') or key == 'snaps'):
+        elif isinstance(v, int) and (key.endswith('_link') or key.endswith('_upcrossings') or
+                                     key == 'snaps'):
             cells[key] = str(v)
         else:
             cells[key] = '%.10g' % float(v)
