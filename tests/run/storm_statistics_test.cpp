@@ -1,6 +1,7 @@
 // The statistics of a storm's end tensions (run/end_tension_pass.h, run/welch_spectrum.h,
 // run/gumbel_fit.h) against independent truths: a synthetic Gaussian record of known variance
-// and bandwidth, a sinusoid of known frequency and power, closed forms of the Gumbel fit.
+// and bandwidth, a sinusoid of known frequency and power, closed forms of the Gumbel fit; and
+// the --set ranges A..B of a sweep (run/sweep_plan.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,9 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "run/end_tension_pass.h"
 #include "run/gumbel_fit.h"
 #include "run/running_moments.h"
+#include "run/sweep_plan.h"
 #include "run/tension_statistics.h"
 #include "run/welch_spectrum.h"
 
@@ -233,6 +236,42 @@ TEST(GumbelFit, RecoversTheDistributionOfItsQuantiles) {
   EXPECT_NEAR(g.beta, beta, 2e-3 * beta);
   EXPECT_NEAR(g.mu, mu, 2e-3 * beta);
   EXPECT_NEAR(g.p90, mu - beta * std::log(-std::log(0.9)), 4e-3 * beta);
+}
+
+TEST(SweepRange, WholeNumbersExpand) {
+  EXPECT_EQ(ParseSetOption("waves.seed=1..4").values,
+            (std::vector<std::string>{"1", "2", "3", "4"}));
+  EXPECT_EQ(ParseSetOption("k = 0, 5 .. 7, 9").values,
+            (std::vector<std::string>{"0", "5", "6", "7", "9"}));
+  EXPECT_EQ(ParseSetOption("k=-2..1").values,
+            (std::vector<std::string>{"-2", "-1", "0", "1"}));
+  EXPECT_EQ(ParseSetOption("k=3..3").values, (std::vector<std::string>{"3"}));
+  EXPECT_EQ(ParseSetOption("k=1..10000").values.size(), 10000u);
+  // Not a range: a string holding "..".
+  EXPECT_EQ(ParseSetOption("k=\"a..b\"").values, (std::vector<std::string>{"\"a..b\""}));
+}
+
+TEST(SweepRange, BadRangesAreRefusedNamingTheKey) {
+  auto message = [](const std::string& option) {
+    try {
+      ParseSetOption(option);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string down = message("waves.seed=5..1");
+  EXPECT_NE(down.find("waves.seed"), std::string::npos) << down;
+  EXPECT_NE(down.find("A <= B"), std::string::npos) << down;
+  for (const char* bad : {"waves.seed=1..x", "waves.seed=1.5..3", "waves.seed=..3",
+                          "waves.seed=1...3", "waves.seed=1..99999999999999999999"}) {
+    const std::string m = message(bad);
+    EXPECT_NE(m.find("waves.seed"), std::string::npos) << bad << ": " << m;
+    EXPECT_NE(m.find("whole numbers"), std::string::npos) << bad << ": " << m;
+  }
+  const std::string many = message("waves.seed=1..10001");
+  EXPECT_NE(many.find("10001 values"), std::string::npos) << many;
+  EXPECT_NE(many.find("at most 10000"), std::string::npos) << many;
 }
 
 }  // namespace
