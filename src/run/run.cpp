@@ -23,10 +23,10 @@ class RecordSink : public RowSink {
       LineRecord& r = run_.lines[i];
       const Eigen::VectorXd& T = line.tension();
       r.extent.Add(line.state, T);
-      const double t_start = T[0], t_end = T[m.line.links - 1];
-      r.row_max.Append(line.state.t, T.maxCoeff(), t_start, t_end);
-      r.end_moments[0].Add(t_start);
-      r.end_moments[1].Add(t_end);
+      const double tension_start = T[0], tension_end = T[m.line.links - 1];  // [N]
+      r.row_max.Append(line.state.t, T.maxCoeff(), tension_start, tension_end);
+      r.end_moments[0].Add(tension_start);
+      r.end_moments[1].Add(tension_end);
       r.summary.AddRow(line.state.t, T, m.line.breaking_load);
       r.row_ends.Compute(m, line, run_.inputs);
       r.summary.AddEndLoads(line.state.t, r.row_ends.at(0), r.row_ends.at(1));
