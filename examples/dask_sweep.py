@@ -37,13 +37,15 @@ import tomllib
 
 # After the case, folder and value columns of sweep.csv (as cablefilm sweep writes them).
 RESULT_COLUMNS = ['status', 'message', 'peak_tension', 'peak_time', 'peak_link', 'min_tension',
-                  'min_tension_time', 'min_tension_link', 'snaps', 'peak_converged']
+                  'min_tension_time', 'min_tension_link', 'snaps', 'peak_converged',
+                  *[f'tension_{end}_{name}' for end in ('start', 'end')
+                    for name in ('mean', 'std', 'min', 'max', 'upcrossings', 'mpm')]]
 REPORT_KEYS = RESULT_COLUMNS[2:]
 
 
 def number(value):
-    """A number as sweep.csv prints it: whole numbers (links, snaps) as they are, the others
-    with 10 significant digits, as run_report.toml has them."""
+    """A number as sweep.csv prints it: whole numbers (links, snaps, up-crossings) as they are,
+    the others with 10 significant digits, as run_report.toml has them."""
     return '%.10g' % float(value)
 
 
@@ -77,7 +79,8 @@ def summarize(folder, returncode):
                 value = report.get(key)
                 if isinstance(value, bool):
                     row[key] = 'true' if value else 'false'
-                elif isinstance(value, int) and (key.endswith('_link') or key == 'snaps'):
+                elif isinstance(value, int) and (key.endswith('_link') or
+                                                 key.endswith('_upcrossings') or key == 'snaps'):
                     row[key] = str(value)
                 elif isinstance(value, (int, float)):
                     row[key] = number(value)

@@ -9,7 +9,7 @@ packages=(
   libosmesa6-dev libpng-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libfreetype-dev libfontconfig-dev fonts-dejavu-core
   libcivetweb-dev libjpeg62-turbo-dev nlohmann-json3-dev libnetcdf-dev
-  libfftw3-dev                             # a recorded sea's and a tension's spectra
+  libfftw3-dev                             # a recorded sea's and the tensions' spectra
   pybind11-dev python3-dev python3-numpy   # the Python module (src/python) and its arrays
 )
 if [ "${1:-}" = "--tests" ]; then

@@ -94,6 +94,15 @@ void PrintRunEnd(const Run& run) {
                 "%.4g s) (fx..fz_start, fx..fz_end of the time series)\n",
                 alone ? "" : ("line " + QuoteText(model.line_names[i]) + ": ").c_str(),
                 l.start_load_max, l.start_load_t, l.end_load_max, l.end_load_t);
+    const char* names[2] = {"start", "end"};
+    for (int e = 0; e < 2; ++e) {
+      const TensionStatistics& t = l.ends[e];
+      if (!t.known()) continue;
+      std::printf("%stension_%s over the rows: mean %.6g N, std %.4g N, max %.6g N, most probable "
+                  "maximum %.6g N (%ld up-crossings of the mean)\n",
+                  alone ? "" : ("line " + QuoteText(model.line_names[i]) + ": ").c_str(), names[e],
+                  t.mean, t.sigma, t.max, t.mpm, t.upcrossings);
+    }
   }
 }
 
@@ -130,6 +139,8 @@ Run SimulateToFiles(const SceneDef& scene, const Model& model, const std::string
   if (!files.several()) {
     std::printf("wrote %s\n", EscapeText(files.File("timeseries.csv")).c_str());
     std::printf("wrote %s\n", EscapeText(files.File("results.nc")).c_str());
+    if (!run.lines.front().spectrum.empty())
+      std::printf("wrote %s\n", EscapeText(files.File("tension_spectrum.csv")).c_str());
   }
   for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());
   if (s.stats.record.unresolved_snaps > 0) {

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "io/output_ledger.h"
 #include "io/run_report_file.h"
+#include "io/tension_spectrum_file.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
@@ -16,7 +17,7 @@ std::string Suffixed(const std::string& name, const std::string& suffix) {
 
 RunFiles::RunFiles(const std::string& out_dir, const std::string& suffix, const Run& run,
                    const NetcdfResultsInfo& info)
-    : out_dir_(out_dir), suffix_(suffix) {
+    : run_(run), out_dir_(out_dir), suffix_(suffix) {
   const Model& model = run.model;
   const int nl = static_cast<int>(model.lines.size());
   lines_.resize(nl);
@@ -59,9 +60,14 @@ bool RunFiles::Row(const Data& d) {
 }
 
 void RunFiles::Commit() {
-  for (LineFiles& f : lines_) {
+  for (std::size_t i = 0; i < lines_.size(); ++i) {
+    LineFiles& f = lines_[i];
+    const LineRecord& r = run_.lines[i];
     f.series->Commit();
+    f.results->SetEndStatistics(r.summary.ends);
     f.results->Commit();
+    if (!r.spectrum.empty())
+      WriteTensionSpectrumCsv(LineFile(static_cast<int>(i), "tension_spectrum.csv"), r.spectrum);
   }
   if (points_) points_->Commit();
   if (model_results_) model_results_->Commit();

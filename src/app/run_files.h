@@ -2,7 +2,8 @@
 // The files a run writes into its output folder as its rows come, laid out as its model has
 // lines: a model of one line its equilibrium.csv, timeseries.csv and results.nc in the folder;
 // of several, each line's in lines/<name>/ and the points' points.csv and the model's
-// results.nc (points, lines' ends, bodies) in the folder; body.csv when it has bodies. A
+// results.nc (points, lines' ends, bodies) in the folder; body.csv when it has bodies; a
+// complete run's tension_spectrum.csv beside each line's timeseries.csv. A
 // `suffix` goes before each name's extension (compare's second run: "_inextensible"). Every
 // file is written whole or not at all: Commit gives them their names, CommitPartial their
 // .partial names (a run cut short).
@@ -25,6 +26,8 @@ class RunFiles : public RowSink {
   RunFiles(const std::string& out_dir, const std::string& suffix, const Run& run,
            const NetcdfResultsInfo& info);
   bool Row(const Data& d) override;
+  // The complete files, with the end tensions' statistics (results.nc) and spectra
+  // (tension_spectrum.csv, when the run had rows enough) of the run's record.
   void Commit();
   void CommitPartial();
   // Where a cut-short run's rows are, for its message ("DIR/timeseries.partial.csv and ...").
@@ -43,6 +46,7 @@ class RunFiles : public RowSink {
     std::unique_ptr<TimeseriesWriter> series;
     std::unique_ptr<LineResultsNc> results;
   };
+  const Run& run_;
   std::string out_dir_, suffix_;
   std::vector<LineFiles> lines_;
   std::unique_ptr<PointsWriter> points_;

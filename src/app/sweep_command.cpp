@@ -30,6 +30,7 @@
 #include "io/run_report_file.h"
 #include "run/run.h"
 #include "run/sweep.h"
+#include "run/sweep_maxima.h"
 #include "scene/build_model.h"
 #include "scene/scene_edit.h"
 #include "scene/scene_limits.h"
@@ -453,6 +454,12 @@ class Sweep {
     }
     clear_status();
     WriteSummary();
+    const std::vector<SweepMaxima> maxima = CollectSweepMaxima(outcomes_);
+    {
+      AtomicFile file((dir_ / "sweep_maxima.toml").string());
+      std::fputs(SweepMaximaToml(maxima).c_str(), file.stream());
+      file.Commit();
+    }
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     std::signal(SIGCHLD, SIG_DFL);
@@ -472,7 +479,10 @@ class Sweep {
     std::printf("sweep: %zu case%s in %.3g s: %zu ok, %zu blow-up, %zu error", n,
                 n == 1 ? "" : "s", wall, ok, blowups, errors);
     if (stopped) std::printf(", %zu interrupted, %zu not run", interrupted, not_run);
-    std::printf("\nwrote %s\n", EscapeText((dir_ / "sweep.csv").string()).c_str());
+    std::printf("\n");
+    for (const std::string& line : DescribeSweepMaxima(maxima)) std::printf("%s\n", line.c_str());
+    std::printf("wrote %s and %s\n", EscapeText((dir_ / "sweep.csv").string()).c_str(),
+                EscapeText((dir_ / "sweep_maxima.toml").string()).c_str());
     std::fflush(stdout);
     if (stopped) return 128 + g_signal.load();
     if (ok < n) {
@@ -499,7 +509,7 @@ int SweepCommand(const std::string& scene_path, const SweepOptions& options) {
   if (options.jobs < 0 || options.jobs > kMaxJobs)
     throw Error("--jobs: expected 1 to " + std::to_string(kMaxJobs));
   if (options.summary_only && (options.run.film == 1 || options.prepare))
-    throw Error(std::string("--summary-only writes sweep.csv alone: ") +
+    throw Error(std::string("--summary-only writes sweep.csv and sweep_maxima.toml alone: ") +
                 (options.prepare ? "--prepare" : "a film") + " is not made with it");
   return Sweep(scene_path, options).Run();
 }
@@ -510,8 +520,8 @@ Command DeclareSweepCommand(CLI::App& program, std::string* scene) {
                                   "run a scene over the cross product of values of its keys", scene);
   Value(cmd, "--set", "KEY=V1,V2,...",
         "a scene key (e.g. environment.current, ends.end.period, material[0].youngs_modulus) "
-        "and its values (TOML: 0.5, \"explicit\" or explicit, [1, 2]); repeat for more keys: "
-        "the cases are their cross product",
+        "and its values (TOML: 0.5, \"explicit\" or explicit, [1, 2]; A..B: the whole numbers "
+        "from A to B); repeat for more keys: the cases are their cross product",
         [o](const std::string& v) {
           try {
             o->sets.push_back(ParseSetOption(v));
@@ -533,15 +543,18 @@ Command DeclareSweepCommand(CLI::App& program, std::string* scene) {
   Flag(cmd, "--prepare", "write the case folders (scene.toml) and sweep.csv, run nothing",
        [o] { o->prepare = true; });
   Flag(cmd, "--summary-only",
-       "run the cases in this process and write sweep.csv alone: no case folders, no per-case "
-       "files (the fastest for many short cases)",
+       "run the cases in this process and write sweep.csv and sweep_maxima.toml alone: no case "
+       "folders, no per-case files (the fastest for many short cases)",
        [o] { o->summary_only = true; });
   AddRunOptions(cmd, &o->run, "sweep folder (default output/<scene name>_sweep)");
   cmd->footer(
       "Each case is 'cablefilm run' in a process of its own (the film off unless --film), in\n"
       "DIR/case_NNN/ with its scene.toml; every case's scene is checked as 'check' would before\n"
       "any runs. The summary: DIR/sweep.csv (case, folder, the values, status, message, peak\n"
-      "tension, its time and link, minimum tension, its time and link, snaps, peak_converged).\n"
+      "tension, its time and link, minimum tension, its time and link, snaps, peak_converged,\n"
+      "each end tension's mean, std, min, max, up-crossings and most probable maximum), and\n"
+      "DIR/sweep_maxima.toml (the cases' maxima; from 3 cases their Gumbel fit). A value A..B\n"
+      "(whole numbers) stands for A, A+1, ..., B: --set waves.seed=1..10.\n"
       "Ctrl-C stops the running cases and leaves the finished ones.");
   return {cmd, [scene, o] {
             if (o->sets.empty() && o->cases_csv.empty())

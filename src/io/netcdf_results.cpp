@@ -317,10 +317,52 @@ void NetcdfResultsWriter::Close() {
   // lines (400 lines of a 0.5 MB scene held 200 MB).
   NetcdfCheck(nc_redef(ncid_), temp_path_, "redef");
   NetcdfSceneAttribute(ncid_, scene_, temp_path_);
+  const std::vector<std::pair<int, double>> statistics = DefineEndStatistics();
   NetcdfCheck(nc_enddef(ncid_), temp_path_, "enddef");
+  for (const auto& [var, value] : statistics)
+    NetcdfCheck(nc_put_var_double(ncid_, var, &value), temp_path_, "end tension statistics");
   const int id = ncid_;
   ncid_ = -1;
   NetcdfCheck(nc_close(id), temp_path_, "close");
+}
+
+std::vector<std::pair<int, double>> NetcdfResultsWriter::DefineEndStatistics() {
+  std::vector<std::pair<int, double>> values;
+  if (!ends_[0].known()) return values;
+  const std::string& f = temp_path_;
+  const char* names[2] = {"start", "end"};
+  const char* where[2] = {"station 0", "station s"};
+  for (int e = 0; e < 2; ++e) {
+    const TensionStatistics& t = ends_[e];
+    const std::string of = std::string(" of the tension of the end link at ") + where[e] +
+                           " over the rows";
+    const struct {
+      const char* name;
+      nc_type type;
+      const char* units;
+      std::string long_name;
+      double value;
+    } vars[] = {
+        {"mean", NC_DOUBLE, "N", "mean" + of, t.mean},
+        {"std", NC_DOUBLE, "N", "standard deviation" + of, t.sigma},
+        {"min", NC_DOUBLE, "N", "minimum" + of, t.min},
+        {"max", NC_DOUBLE, "N", "maximum" + of, t.max},
+        {"upcrossings", NC_INT, "1", "upward crossings of the mean" + of,
+         static_cast<double>(t.upcrossings)},
+        {"mpm", NC_DOUBLE, "N",
+         "most probable maximum (Rayleigh: mean + std sqrt(2 ln upcrossings))" + of, t.mpm},
+        {"psd_m0", NC_DOUBLE, "N^2", "integral of the Welch spectrum" + of, t.psd_m0},
+    };
+    for (const auto& v : vars) {
+      const std::string name = std::string("tension_") + names[e] + "_" + v.name;
+      int var = -1;
+      NetcdfCheck(nc_def_var(ncid_, name.c_str(), v.type, 0, nullptr, &var), f, name.c_str());
+      NetcdfText(ncid_, var, "units", v.units, f);
+      NetcdfText(ncid_, var, "long_name", v.long_name, f);
+      values.emplace_back(var, v.value);
+    }
+  }
+  return values;
 }
 
 void NetcdfResultsWriter::Commit() { CommitPartial(path_); }

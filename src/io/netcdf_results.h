@@ -10,6 +10,9 @@
 //   x_start, y_start, z_start, x_end, y_end, z_end (time) [m]: the ends' motion
 //   x_equilibrium, y_equilibrium, z_equilibrium (station) [m], tension_equilibrium (link) [N]:
 //   the initial state
+//   tension_start_mean, _std, _min, _max, _upcrossings, _mpm, _psd_m0 and the same of
+//   tension_end (scalars) [N, 1, N^2]: the end links' tensions' statistics over the rows, when
+//   the run set them (a complete run; run/end_tension_pass.h)
 // (z is 0 throughout for a cable in the x-y plane: a 2D scene.)
 //
 // Time-dependent variables are chunked by time: a chunk is up to kChunkRows rows of all
@@ -26,6 +29,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "core/line_model.h"
@@ -60,6 +64,9 @@ class NetcdfResultsWriter : public LineResultsNc {
   int chunk_rows() const { return chunk_rows_; }
 
  private:
+  // Defines the end tensions' statistics (ends_) as scalar variables, in define mode: each
+  // variable and the value to put once out of it; none when not set.
+  std::vector<std::pair<int, double>> DefineEndStatistics();
   // Up to a chunk of rows, row-major, from row `first`.
   struct Block {
     long first = 0;

@@ -12,6 +12,7 @@
 #include "core/inputs.h"
 #include "core/model.h"
 #include "run/driver.h"
+#include "run/tension_statistics.h"
 
 namespace cablefilm {
 
@@ -43,9 +44,18 @@ class LineResultsNc : public RowSink {
     Append(d.lines[line_].state, d.lines[line_].tension());
     return true;
   }
+  // The statistics of the end links' tensions over the rows (RunSummary::ends), written as
+  // scalar variables (tension_start_mean, ...) when the file closes; none unless set.
+  void SetEndStatistics(const TensionStatistics ends[2]) {
+    ends_[0] = ends[0];
+    ends_[1] = ends[1];
+  }
   // Writes the rows still waiting, closes and renames; throws Error on a write error.
   virtual void Commit() = 0;                                // the complete file, under its name
   virtual void CommitPartial(const std::string& path) = 0;  // an incomplete run, another name
+
+ protected:
+  TensionStatistics ends_[2];
 
  private:
   int line_;

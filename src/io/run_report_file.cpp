@@ -68,6 +68,29 @@ void WriteRunReport(const std::string& path, const RunSummary& f) {
                  "end_load_max = %.10g         # [N], on its end (fx_end, fy_end, fz_end)\n"
                  "end_load_time = %.10g        # [s]\n",
                  f.start_load_max, f.start_load_t, f.end_load_max, f.end_load_t);
+  if (f.ends[0].known()) {  // the end tensions' statistics (run/end_tension_pass.h)
+    if (!f.ends_line.empty())  // a system's: the line holding the peak
+      std::fprintf(out, "statistics_line = %s\n", TomlString(f.ends_line).c_str());
+    std::fprintf(out, "statistics_rows = %ld        # the rows the end tensions' statistics are over (every row, t = 0 included)\n",
+                 f.ends[0].samples);
+    const char* names[2] = {"start", "end"};
+    const char* where[2] = {"station 0", "station s"};
+    for (int e = 0; e < 2; ++e) {
+      const TensionStatistics& t = f.ends[e];
+      const char* n = names[e];
+      std::fprintf(out, "tension_%s_mean = %.10g     # [N], tension_%s (the link at %s) over the rows\n",
+                   n, t.mean, n, where[e]);
+      std::fprintf(out, "tension_%s_std = %.10g      # [N], its standard deviation\n", n, t.sigma);
+      std::fprintf(out, "tension_%s_min = %.10g      # [N]\ntension_%s_max = %.10g      # [N]\n", n,
+                   t.min, n, t.max);
+      std::fprintf(out, "tension_%s_upcrossings = %ld  # upward crossings of its mean\n", n,
+                   t.upcrossings);
+      std::fprintf(out, "tension_%s_mpm = %.10g      # [N], most probable maximum: mean + std sqrt(2 ln upcrossings)\n",
+                   n, t.mpm);
+      std::fprintf(out, "tension_%s_psd_m0 = %.10g   # [N^2], the integral of its spectrum (tension_spectrum.csv), about std^2\n",
+                   n, t.psd_m0);
+    }
+  }
   if (f.utilisation_link >= 0) {  // some material has a minimum_breaking_load
     std::fprintf(out, "utilisation_max = %.10g      # [1], the largest tension / minimum_breaking_load of the rows\n",
                  f.utilisation);
@@ -145,6 +168,22 @@ bool ReadRunReport(const std::string& path, RunSummary* s) {
   s->refinement = r["refinement"].value<std::string>().value_or("");
   s->refined_peak = number("peak_refined", nan);
   s->refined_peak_change = number("peak_refined_change", nan);
+  const char* names[2] = {"start", "end"};
+  for (int e = 0; e < 2; ++e) {
+    TensionStatistics& t = s->ends[e];
+    const std::string n = std::string("tension_") + names[e] + "_";
+    t = TensionStatistics();
+    if (!r.contains(n + "mean")) continue;
+    t.samples = whole("statistics_rows");
+    t.mean = number((n + "mean").c_str(), nan);
+    t.sigma = number((n + "std").c_str(), nan);
+    t.min = number((n + "min").c_str(), nan);
+    t.max = number((n + "max").c_str(), nan);
+    t.upcrossings = std::max(0L, whole((n + "upcrossings").c_str()));
+    t.mpm = number((n + "mpm").c_str(), nan);
+    t.psd_m0 = number((n + "psd_m0").c_str(), nan);
+  }
+  s->ends_line = r["statistics_line"].value<std::string>().value_or("");
   s->warnings.clear();
   if (const toml::array* w = r["warnings"].as_array())
     for (const toml::node& n : *w) s->warnings.push_back(n.value<std::string>().value_or(""));

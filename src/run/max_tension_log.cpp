@@ -26,11 +26,14 @@ MaxTensionLog::MaxTensionLog(MaxTensionLog&& o) noexcept
   o.pending_.clear();
 }
 
-void MaxTensionLog::Append(double t, double tension_max) {
+void MaxTensionLog::Append(double t, double tension_max, double tension_start,
+                           double tension_end) {
   pending_.push_back(t);
   pending_.push_back(tension_max);
+  pending_.push_back(tension_start);
+  pending_.push_back(tension_end);
   ++rows_;
-  if (static_cast<long>(pending_.size()) >= 2 * kMemoryRows) WritePending();
+  if (static_cast<long>(pending_.size()) >= kWidth * kMemoryRows) WritePending();
 }
 
 void MaxTensionLog::WritePending() {
@@ -39,7 +42,7 @@ void MaxTensionLog::WritePending() {
                 std::strerror(errno));
   const char* data = reinterpret_cast<const char*>(pending_.data());
   std::size_t left = pending_.size() * sizeof(double);
-  off_t at = static_cast<off_t>(written_) * 2 * sizeof(double);
+  off_t at = static_cast<off_t>(written_) * kWidth * sizeof(double);
   while (left > 0) {
     const ssize_t n = ::pwrite(fileno(file_), data, left, at);
     if (n < 0 && errno == EINTR) continue;
@@ -50,23 +53,29 @@ void MaxTensionLog::WritePending() {
     at += n;
     left -= static_cast<std::size_t>(n);
   }
-  written_ += static_cast<long>(pending_.size() / 2);
+  written_ += static_cast<long>(pending_.size() / kWidth);
   pending_.clear();
 }
 
 bool MaxTensionLog::Cursor::Next(double t_until, double* t, double* tension_max) {
+  double start = 0, end = 0;
+  return Next(t_until, t, tension_max, &start, &end);
+}
+
+bool MaxTensionLog::Cursor::Next(double t_until, double* t, double* tension_max,
+                                 double* tension_start, double* tension_end) {
   const MaxTensionLog& log = *log_;
   if (next_ >= log.rows_) return false;
   const long in_block = next_ - block_first_;
-  if (in_block < 0 || 2 * in_block >= static_cast<long>(block_.size())) {
+  if (in_block < 0 || kWidth * in_block >= static_cast<long>(block_.size())) {
     // Read ahead: from the file while the rows are there, else from the pending rows.
     block_first_ = next_;
     if (next_ < log.written_) {
       const long n = std::min(kMemoryRows, log.written_ - next_);
-      block_.resize(static_cast<std::size_t>(2 * n));
+      block_.resize(static_cast<std::size_t>(kWidth * n));
       char* data = reinterpret_cast<char*>(block_.data());
       std::size_t left = block_.size() * sizeof(double);
-      off_t at = static_cast<off_t>(next_) * 2 * sizeof(double);
+      off_t at = static_cast<off_t>(next_) * kWidth * sizeof(double);
       while (left > 0) {
         const ssize_t r = ::pread(fileno(log.file_), data, left, at);
         if (r < 0 && errno == EINTR) continue;
@@ -78,14 +87,16 @@ bool MaxTensionLog::Cursor::Next(double t_until, double* t, double* tension_max)
         left -= static_cast<std::size_t>(r);
       }
     } else {
-      const std::size_t from = static_cast<std::size_t>(2 * (next_ - log.written_));
+      const std::size_t from = static_cast<std::size_t>(kWidth * (next_ - log.written_));
       block_.assign(log.pending_.begin() + static_cast<std::ptrdiff_t>(from), log.pending_.end());
     }
   }
-  const std::size_t i = static_cast<std::size_t>(2 * (next_ - block_first_));
+  const std::size_t i = static_cast<std::size_t>(kWidth * (next_ - block_first_));
   if (!(block_[i] <= t_until)) return false;
   *t = block_[i];
   *tension_max = block_[i + 1];
+  *tension_start = block_[i + 2];
+  *tension_end = block_[i + 3];
   ++next_;
   return true;
 }

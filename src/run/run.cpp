@@ -23,7 +23,10 @@ class RecordSink : public RowSink {
       LineRecord& r = run_.lines[i];
       const Eigen::VectorXd& T = line.tension();
       r.extent.Add(line.state, T);
-      r.row_max.Append(line.state.t, T.maxCoeff());
+      const double tension_start = T[0], tension_end = T[m.line.links - 1];  // [N]
+      r.row_max.Append(line.state.t, T.maxCoeff(), tension_start, tension_end);
+      r.end_moments[0].Add(tension_start);
+      r.end_moments[1].Add(tension_end);
       r.summary.AddRow(line.state.t, T, m.line.breaking_load);
       r.row_ends.Compute(m, line, run_.inputs);
       r.summary.AddEndLoads(line.state.t, r.row_ends.at(0), r.row_ends.at(1));
@@ -58,7 +61,8 @@ void StartFrom(const SceneDef& scene, Run& run, const std::vector<State>& states
 }
 
 // The run's summary of several lines from theirs: the largest peak and utilisation and the
-// least tension of any line (the first line holding each), every line's warnings named.
+// least tension of any line (the first line holding each), the end tensions' statistics of the
+// line holding the peak, every line's warnings named.
 void MergeLines(Run& run) {
   RunSummary& s = run.summary;
   for (std::size_t i = 0; i < run.lines.size(); ++i) {
@@ -71,6 +75,9 @@ void MergeLines(Run& run) {
       s.peak_link = l.peak_link;
       s.peak_line = name;
       run.peak_line = static_cast<int>(i);
+      s.ends[0] = l.ends[0];
+      s.ends[1] = l.ends[1];
+      s.ends_line = name;
     }
     if (l.utilisation_link >= 0 && !(l.utilisation <= s.utilisation)) {  // the first largest
       s.utilisation = l.utilisation;
@@ -161,6 +168,8 @@ void ExecuteRun(Run& run, const std::vector<RowSink*>& sinks) {
     l.failure = failure;
     l.stats = LineStepStats(run.model, d, static_cast<int>(i));
     l.warnings = TrustWarnings(run.model.lines[i], l.stats);
+    LineRecord& r = run.lines[i];
+    EndTensionPass(r.row_max, r.end_moments, run.grid.interval, l.ends, &r.spectrum);
     const std::vector<std::string>& materials = run.lines[i].section_materials;
     if (l.utilisation_link >= 0 && !materials.empty())
       l.utilisation_material =

@@ -12,6 +12,7 @@
 #include "core/inputs.h"
 #include "core/model.h"
 #include "run/driver.h"
+#include "run/end_tension_pass.h"
 #include "run/initial_state.h"
 #include "run/max_tension_log.h"
 #include "run/run_extent.h"
@@ -25,6 +26,9 @@ namespace cablefilm {
 struct LineRecord {
   RunExtent extent;          // over every row: the film's colour range and world box
   MaxTensionLog row_max;     // the largest link tension of every row (the pictures' time plots)
+                             // and its end links' (the end tensions' second pass)
+  RunningMoments end_moments[2];  // of tension_start and tension_end over the rows
+  EndTensionSpectrum spectrum;    // theirs after the run (tension_spectrum.csv)
   RunSummary summary;        // its peak, least tension, end loads, utilisation, steps
   EndLoads row_ends;         // of the row the sinks are given (ExecuteRun's record, first)
   std::vector<std::string> section_materials;  // each section's material name (the
@@ -62,7 +66,8 @@ Run RestartRun(const SceneDef& scene, const Run& run);
 
 // Steps a copy of run.initial through the grid (run/driver.h), every row to `sinks` and to the
 // run's own record (each line's extent, row maxima, summary; the run's summary: how it ended,
-// its steps, its warnings). The record sees each row first: `sinks` may read its end loads,
+// its steps, its warnings); then each line's end tensions' statistics and spectrum from the
+// rows it kept (run/end_tension_pass.h). The record sees each row first: `sinks` may read its end loads,
 // run.lines[i].row_ends.
 void ExecuteRun(Run& run, const std::vector<RowSink*>& sinks);
 

@@ -49,7 +49,21 @@ void RunSummary::AddEndLoads(double t, const Vec& start, const Vec& end) {
   }
 }
 
-const SummaryColumn kSummaryColumns[8] = {
+namespace {
+
+// A statistic of end e's tension (RunSummary::ends).
+template <int e, double TensionStatistics::*statistic>
+double EndValue(const RunSummary& s) {
+  return s.ends[e].*statistic;
+}
+template <int e>
+double EndUpcrossings(const RunSummary& s) {
+  return static_cast<double>(s.ends[e].upcrossings);
+}
+
+}  // namespace
+
+const SummaryColumn kSummaryColumns[20] = {
     {SummaryColumn::Kind::kNumber, "peak_tension", [](const RunSummary& s) { return s.peak; }},
     {SummaryColumn::Kind::kNumber, "peak_time", [](const RunSummary& s) { return s.peak_t; }},
     {SummaryColumn::Kind::kWhole, "peak_link",
@@ -64,6 +78,18 @@ const SummaryColumn kSummaryColumns[8] = {
      [](const RunSummary& s) { return static_cast<double>(s.stats.record.snaps); }},
     {SummaryColumn::Kind::kFlag, "peak_converged",
      [](const RunSummary& s) { return s.peak_converged() ? 1.0 : 0.0; }},
+    {SummaryColumn::Kind::kNumber, "tension_start_mean", EndValue<0, &TensionStatistics::mean>},
+    {SummaryColumn::Kind::kNumber, "tension_start_std", EndValue<0, &TensionStatistics::sigma>},
+    {SummaryColumn::Kind::kNumber, "tension_start_min", EndValue<0, &TensionStatistics::min>},
+    {SummaryColumn::Kind::kNumber, "tension_start_max", EndValue<0, &TensionStatistics::max>},
+    {SummaryColumn::Kind::kWhole, "tension_start_upcrossings", EndUpcrossings<0>},
+    {SummaryColumn::Kind::kNumber, "tension_start_mpm", EndValue<0, &TensionStatistics::mpm>},
+    {SummaryColumn::Kind::kNumber, "tension_end_mean", EndValue<1, &TensionStatistics::mean>},
+    {SummaryColumn::Kind::kNumber, "tension_end_std", EndValue<1, &TensionStatistics::sigma>},
+    {SummaryColumn::Kind::kNumber, "tension_end_min", EndValue<1, &TensionStatistics::min>},
+    {SummaryColumn::Kind::kNumber, "tension_end_max", EndValue<1, &TensionStatistics::max>},
+    {SummaryColumn::Kind::kWhole, "tension_end_upcrossings", EndUpcrossings<1>},
+    {SummaryColumn::Kind::kNumber, "tension_end_mpm", EndValue<1, &TensionStatistics::mpm>},
 };
 
 std::vector<std::string> SummaryCells(const RunSummary& s) {

@@ -9,6 +9,7 @@
 
 #include "core/line_data.h"
 #include "core/line_model.h"
+#include "run/tension_statistics.h"
 
 namespace cablefilm {
 
@@ -36,6 +37,11 @@ struct RunSummary {
   double start_load_t = std::numeric_limits<double>::quiet_NaN();
   double end_load_max = std::numeric_limits<double>::quiet_NaN();
   double end_load_t = std::numeric_limits<double>::quiet_NaN();
+  // The statistics of the end links' tensions over the rows (tension_start and tension_end of
+  // timeseries.csv; run/end_tension_pass.h): [0] at station 0, [1] at station s. A run of
+  // several lines: those of the line holding the peak (`ends_line`).
+  TensionStatistics ends[2];
+  std::string ends_line;
   // A run of several lines: the lines holding the peak and the least tension (their links are
   // the line's); empty for a line alone.
   std::string peak_line, min_tension_line;
@@ -78,13 +84,14 @@ std::string DescribeSteps(const StepStats& stats);
 
 // The columns of a sweep's row from a run's summary (after the case's status and message): each
 // its name, its kind and its value; the one place they are spelled (sweep.csv, the Python
-// module's sweep rows).
+// module's sweep rows). The peak's and the least tension's, then each end tension's statistics
+// (tension_start_mean, ..., tension_end_mpm).
 struct SummaryColumn {
   enum class Kind { kNumber, kWhole, kFlag } kind;
   const char* name;
   double (*value)(const RunSummary&);
 };
-extern const SummaryColumn kSummaryColumns[8];
+extern const SummaryColumn kSummaryColumns[20];
 // The cells of the columns: numbers with 10 significant digits (as run_report.toml has them),
 // whole numbers, true or false.
 std::vector<std::string> SummaryCells(const RunSummary& s);

@@ -73,7 +73,49 @@ std::vector<std::string> CsvRecord(const std::string& text, std::size_t* at, lon
   return cells;
 }
 
+// Whether `v` is meant as a range A..B: ".." outside quotes, brackets and braces (no TOML value
+// has it there).
+bool LooksLikeRange(const std::string& v) {
+  const std::size_t dots = v.find("..");
+  return dots != std::string::npos && v.find_first_of("\"'[{") == std::string::npos;
+}
+
+// A whole number of a range's end, or Error naming the key and the range.
+long long RangeEnd(const std::string& text, const std::string& key, const std::string& range) {
+  const std::string t = Trim(text);
+  std::size_t used = 0;
+  long long v = 0;
+  bool ok = !t.empty() && t.find_first_not_of("+-0123456789") == std::string::npos;
+  if (ok) {
+    try {
+      v = std::stoll(t, &used);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+  }
+  if (!ok || used != t.size())
+    throw Error(EscapeText(key) + ": the range " + QuoteText(range) +
+                ": expected whole numbers A..B (e.g. 1..10), got " + QuoteText(t));
+  return v;
+}
+
 }  // namespace
+
+std::vector<std::string> ExpandWholeRange(const std::string& range, const std::string& key) {
+  const std::size_t dots = range.find("..");
+  const long long a = RangeEnd(range.substr(0, dots), key, range);
+  const long long b = RangeEnd(range.substr(dots + 2), key, range);
+  if (b < a)
+    throw Error(EscapeText(key) + ": the range " + QuoteText(range) +
+                " is empty; expected A..B with A <= B");
+  if (static_cast<double>(b) - static_cast<double>(a) + 1 > kMaxSweepRange)
+    throw Error(EscapeText(key) + ": the range " + QuoteText(range) + " has " +
+                FormatNumber(static_cast<double>(b) - static_cast<double>(a) + 1) +
+                " values; expected at most " + FormatNumber(kMaxSweepRange));
+  std::vector<std::string> values;
+  for (long long v = a; v <= b; ++v) values.push_back(std::to_string(v));
+  return values;
+}
 
 SweepKey ParseSetOption(const std::string& text) {
   const std::size_t eq = text.find('=');
@@ -89,9 +131,13 @@ SweepKey ParseSetOption(const std::string& text) {
   char quote = 0;
   auto take = [&] {
     const std::string v = Trim(cell);
+    cell.clear();
+    if (LooksLikeRange(v)) {
+      for (std::string& w : ExpandWholeRange(v, k.key)) k.values.push_back(std::move(w));
+      return;
+    }
     CheckValueText(v, EscapeText(k.key) + ": value " + std::to_string(k.values.size() + 1));
     k.values.push_back(v);
-    cell.clear();
   };
   for (std::size_t i = 0; i < list.size(); ++i) {
     const char c = list[i];

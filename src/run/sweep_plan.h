@@ -17,10 +17,19 @@ struct SweepKey {
   std::vector<std::string> values;
 };
 
-// "KEY=V1,V2,...": the values split at the commas outside brackets, braces and quotes. Throws
-// Error with a message naming the key (or the option) when the key is no dotted path or a
-// value is no TOML value.
+// At most this many values in one range A..B of a --set.
+constexpr double kMaxSweepRange = 10000;
+
+// "KEY=V1,V2,...": the values split at the commas outside brackets, braces and quotes; a value
+// A..B (whole numbers, A <= B) stands for A, A+1, ..., B (ExpandWholeRange). Throws Error with
+// a message naming the key (or the option) when the key is no dotted path, a value is no TOML
+// value or a range is bad.
 SweepKey ParseSetOption(const std::string& text);
+
+// The whole numbers A, A+1, ..., B of "A..B" (spaces allowed around each), as texts. Throws
+// Error naming `key` when A or B is no whole number, B < A, or there are more than
+// kMaxSweepRange of them.
+std::vector<std::string> ExpandWholeRange(const std::string& range, const std::string& key);
 
 // The cases: keys (columns) and one row of value texts per case.
 struct SweepCases {

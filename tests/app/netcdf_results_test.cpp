@@ -153,7 +153,13 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
       {"x_start", "m"},       {"y_start", "m"},    {"z_start", "m"},
       {"x_end", "m"},         {"y_end", "m"},      {"z_end", "m"},
       {"x_equilibrium", "m"}, {"y_equilibrium", "m"}, {"z_equilibrium", "m"},
-      {"tension_equilibrium", "N"}, {"station", "1"}, {"link", "1"}};
+      {"tension_equilibrium", "N"}, {"station", "1"}, {"link", "1"},
+      {"tension_start_mean", "N"}, {"tension_start_std", "N"}, {"tension_start_min", "N"},
+      {"tension_start_max", "N"}, {"tension_start_upcrossings", "1"},
+      {"tension_start_mpm", "N"}, {"tension_start_psd_m0", "N^2"},
+      {"tension_end_mean", "N"}, {"tension_end_std", "N"}, {"tension_end_min", "N"},
+      {"tension_end_max", "N"}, {"tension_end_upcrossings", "1"},
+      {"tension_end_mpm", "N"}, {"tension_end_psd_m0", "N^2"}};
   for (const auto& [var, unit] : units) EXPECT_EQ(nc.Attr(var, "units"), unit) << var;
   int nvars = 0;
   ASSERT_EQ(nc_inq_nvars(nc.id(), &nvars), NC_NOERR);
@@ -281,6 +287,86 @@ TEST_F(NetcdfResultsTest, EveryLinkOverTimeAgreesWithTheRunAndTheCsv) {
 // columns of timeseries.csv and equilibrium.csv and the z variables of results.nc agree as the
 // CSV prints them; z_end is eq. (3)'s trochoid along z, worked out here from the scene's numbers;
 // the anchor stays at z = 0; and the current pushes every other station towards +z.
+TEST_F(NetcdfResultsTest, EndTensionStatisticsAgreeWithTheCsvInEveryFile) {
+  // P63 for 20 s at its 1/30 s rows (601): the statistics of tension_start and tension_end
+  // recomputed from timeseries.csv (10 significant digits) against run_report.toml,
+  // results.nc and tension_spectrum.csv.
+  const std::string scene = ShortP63("20.0");
+  RunOptions opt;
+  opt.out_dir = (dir_ / "out").string();
+  ASSERT_EQ(RunCommand(scene, opt), 0);
+  const fs::path out = dir_ / "out";
+  const auto csv = ReadCsv(out / "timeseries.csv");
+  RunSummary report;
+  ASSERT_TRUE(ReadRunReport((out / "run_report.toml").string(), &report));
+  NcFile nc(out / "results.nc");
+  const auto spectrum = ReadCsv(out / "tension_spectrum.csv");
+  ASSERT_EQ(spectrum[0],
+            (std::vector<std::string>{"frequency", "tension_start_psd", "tension_end_psd"}));
+  const std::size_t n = csv.size() - 1;
+  ASSERT_EQ(n, 601u);
+  const char* names[2] = {"tension_start", "tension_end"};
+  for (int e = 0; e < 2; ++e) {
+    const std::size_t column = 4 + static_cast<std::size_t>(e);
+    ASSERT_EQ(csv[0][column], names[e]);
+    std::vector<double> x;
+    for (std::size_t r = 1; r <= n; ++r) x.push_back(std::stod(csv[r][column]));
+    double mean = 0;
+    for (double v : x) mean += v;
+    mean /= static_cast<double>(n);
+    double var = 0;
+    for (double v : x) var += (v - mean) * (v - mean);
+    var /= static_cast<double>(n);
+    long up = 0;
+    for (std::size_t r = 1; r < n; ++r) up += x[r - 1] < mean && x[r] >= mean;
+    const TensionStatistics& s = report.ends[e];
+    const std::string what = names[e];
+    // The CSV's 10 digits: a relative 5e-10 each, and less on their mean.
+    EXPECT_EQ(s.samples, static_cast<long>(n)) << what;
+    EXPECT_NEAR(s.mean, mean, 1e-9 * mean) << what;
+    EXPECT_NEAR(s.sigma, std::sqrt(var), 1e-6 * std::sqrt(var) + 1e-9 * mean) << what;
+    EXPECT_EQ(Format("%.10g", s.max), Format("%.10g", *std::max_element(x.begin(), x.end())));
+    EXPECT_EQ(Format("%.10g", s.min), Format("%.10g", *std::min_element(x.begin(), x.end())));
+    EXPECT_EQ(s.upcrossings, up) << what;
+    EXPECT_GT(up, 3) << what;  // P63's 6 s period over 20 s
+    EXPECT_NEAR(s.mpm, mean + std::sqrt(var) * std::sqrt(2 * std::log(double(up))),
+                1e-6 * mean) << what;
+    // results.nc: the same numbers (the report has 10 digits).
+    const std::string prefix = what + "_";
+    EXPECT_NEAR(nc.Values((prefix + "mean").c_str())[0], s.mean, 1e-9 * s.mean);
+    EXPECT_NEAR(nc.Values((prefix + "std").c_str())[0], s.sigma, 1e-9 * s.sigma);
+    EXPECT_NEAR(nc.Values((prefix + "max").c_str())[0], s.max, 1e-9 * s.max);
+    EXPECT_NEAR(nc.Values((prefix + "min").c_str())[0], s.min, 1e-9 * s.min);
+    EXPECT_EQ(nc.Values((prefix + "upcrossings").c_str())[0], static_cast<double>(up));
+    EXPECT_NEAR(nc.Values((prefix + "mpm").c_str())[0], s.mpm, 1e-9 * s.mpm);
+    // The spectrum: 601 rows, segments of 64 (601 / 8 = 75), 33 frequencies to 15 Hz; its
+    // integral the report's psd_m0 and, by Parseval, the Hann-weighted mean square about the
+    // mean of the 17 half-overlapping segments, summed here in the time domain.
+    ASSERT_EQ(spectrum.size(), 34u);
+    const double df = std::stod(spectrum[2][0]) - std::stod(spectrum[1][0]);
+    EXPECT_NEAR(df, 1 / (64 / 30.0), 1e-9);
+    double m0 = 0;
+    for (std::size_t k = 1; k < spectrum.size(); ++k) m0 += std::stod(spectrum[k][1 + e]) * df;
+    EXPECT_NEAR(m0, s.psd_m0, 1e-8 * m0) << what;
+    double weighted = 0;
+    int segments = 0;
+    for (std::size_t first = 0; first + 64 <= n; first += 32, ++segments) {
+      double sum = 0, power = 0;
+      for (int j = 0; j < 64; ++j) {
+        const double w = 0.5 * (1 - std::cos(2 * M_PI * j / 64));
+        sum += w * w * std::pow(x[first + j] - s.mean, 2);
+        power += w * w;
+      }
+      weighted += sum / power;
+    }
+    EXPECT_EQ(segments, 17);
+    EXPECT_NEAR(m0, weighted / segments, 1e-8 * m0) << what;
+  }
+  // The run's report of one line is its line's; a sweep's row would have the same cells.
+  const std::vector<std::string> cells = SummaryCells(report);
+  EXPECT_EQ(cells.size(), std::size(kSummaryColumns));
+}
+
 TEST_F(NetcdfResultsTest, ThreeDimensionalSceneHasZEverywhere) {
   const fs::path scene = dir_ / "p63_3d.toml";
   {

@@ -28,6 +28,7 @@ Prints PASS/FAIL lines and `N passed, M failed`.
 """
 import argparse
 import csv
+import math
 import os
 import shutil
 import signal
@@ -40,7 +41,9 @@ SHORT = ['simulation.duration=5', 'output.interval=0.1', 'cable.section[0].segme
          'cable.section[1].segments=10']
 SWEPT = ['environment.current=0,0.25,0.5', 'ends.end.period=8,10,12']
 REPORT_KEYS = ['peak_tension', 'peak_time', 'peak_link', 'min_tension', 'min_tension_time',
-               'min_tension_link', 'snaps', 'peak_converged']
+               'min_tension_link', 'snaps', 'peak_converged',
+               *[f'tension_{end}_{name}' for end in ('start', 'end')
+                 for name in ('mean', 'std', 'min', 'max', 'upcrossings', 'mpm')]]
 
 passed = failed = 0
 
@@ -113,7 +116,8 @@ def report_cells(report):
         v = report[key]
         if isinstance(v, bool):
             cells[key] = 'true' if v else 'false'
-        elif isinstance(v, int) and (key.endswith('_link') or key == 'snaps'):
+        elif isinstance(v, int) and (key.endswith('_link') or key.endswith('_upcrossings') or
+                                     key == 'snaps'):
             cells[key] = str(v)
         else:
             cells[key] = '%.10g' % float(v)
@@ -210,6 +214,56 @@ def test_refused(work):
     refused(work, 'not_toml', sets('ends.end.x_amplitudes=[1,0],[2'), 'ends.end.x_amplitudes', 2)
     refused(work, 'no_values', sets('environment.current'), '--set', 2)
     refused(work, 'nothing', [], 'nothing to sweep', 2)
+    # Ranges A..B: a usage error naming the key.
+    refused(work, 'range_down', sets('cable.section[0].segments=5..1'),
+            'cable.section[0].segments', 2)
+    refused(work, 'range_not_whole', sets('cable.section[0].segments=1..x'),
+            'cable.section[0].segments', 2)
+    refused(work, 'range_too_long', sets('cable.section[0].segments=1..20000'),
+            'cable.section[0].segments', 2)
+
+
+def test_seeds(work):
+    """A range A..B of a whole-number key, and the Gumbel fit of the cases' maxima
+    (sweep_maxima.toml) against one made here from sweep.csv's columns."""
+    scene = os.path.join(ARGS.source_dir, 'scenes', 'polachek1963.toml')
+    out = os.path.join(work, 'sweep')
+    done = run(['sweep', scene, *sets(*SHORT[:3], 'cable.section[1].segments=8..11'),
+                '--summary-only', '--out', out], work)
+    if not check(done.returncode == 0, f'the sweep exits 0 ({done.seconds:.2f} s)'):
+        print(done.stdout, done.stderr)
+        return
+    header, rows = read_csv(os.path.join(out, 'sweep.csv'))
+    check([r['cable.section[1].segments'] for r in rows] == ['8', '9', '10', '11'],
+          '8..11: four cases, 8, 9, 10 and 11 segments')
+    maxima = toml_load(os.path.join(out, 'sweep_maxima.toml'))
+    gamma = 0.5772156649015329
+    for column in ('peak_tension', 'tension_start_max', 'tension_end_max'):
+        x = [float(r[column]) for r in rows]
+        n = len(x)
+        mean = sum(x) / n
+        std = math.sqrt(sum((v - mean) ** 2 for v in x) / (n - 1))
+        beta = std * math.sqrt(6) / math.pi
+        mu = mean - gamma * beta
+        p90 = mu - beta * math.log(-math.log(0.9))
+        got = maxima[column]
+        check(got['cases'] == [0, 1, 2, 3] and got['maxima'] == x,
+              f'{column}: the maxima of the four cases as sweep.csv has them: {x}')
+        check(all(abs(got[k] - v) <= 1e-8 * abs(v) + 1e-9 * mean for k, v in
+                  (('mean', mean), ('std', std), ('gumbel_beta', beta), ('gumbel_mu', mu),
+                   ('gumbel_p90', p90))),
+              f'{column}: Gumbel fit mu {got["gumbel_mu"]} N, beta {got["gumbel_beta"]} N, '
+              f'p90 {got["gumbel_p90"]} N (here: {mu:.10g}, {beta:.10g}, {p90:.10g})')
+        check(f'{column}: Gumbel fit of 4 maxima: most probable maximum (mode) ' in done.stdout,
+              f'{column}: the fit printed')
+    # Two cases: their maxima, no fit.
+    out2 = os.path.join(work, 'two')
+    done = run(['sweep', scene, *sets(*SHORT[:3], 'cable.section[1].segments=8..9'),
+                '--summary-only', '--out', out2], work)
+    two = toml_load(os.path.join(out2, 'sweep_maxima.toml'))
+    check(done.returncode == 0 and len(two['peak_tension']['maxima']) == 2 and
+          'gumbel_mu' not in two['peak_tension'] and 'Gumbel' not in done.stdout,
+          'two cases: their maxima, no Gumbel fit')
 
 
 def test_cases(work):
@@ -349,10 +403,11 @@ def test_summary_only(work):
         return
     # Beside it the folder's list of what the sweep wrote (docs/cli.md: what a run removes).
     left = sorted(os.listdir(folders))
-    check(left == ['.cablefilm.written', 'sweep.csv'],
-          f'--summary-only leaves sweep.csv alone: {left}')
+    check(left == ['.cablefilm.written', 'sweep.csv', 'sweep_maxima.toml'],
+          f'--summary-only leaves sweep.csv and sweep_maxima.toml alone: {left}')
     listed = open(os.path.join(folders, '.cablefilm.written')).read().split('\n')[1:]
-    check(listed == ['sweep.csv', ''], f'and its list names sweep.csv alone: {listed}')
+    check(listed == ['sweep.csv', 'sweep_maxima.toml', ''],
+          f'and its list names them alone: {listed}')
     done = run(['sweep', scene, *sets(*SHORT, *SWEPT), '--out', out], work)
     _, rows_folders = read_csv(os.path.join(out, 'sweep.csv'))
     _, rows_summary = read_csv(os.path.join(folders, 'sweep.csv'))
@@ -428,7 +483,7 @@ def main():
     global ARGS
     parser = argparse.ArgumentParser()
     parser.add_argument('test', choices=['cross_product', 'refused', 'cases', 'moordyn', 'interrupt',
-                                         'summary_only', 'dask'])
+                                         'summary_only', 'seeds', 'dask'])
     parser.add_argument('--cablefilm', required=True)
     parser.add_argument('--source-dir', required=True)
     parser.add_argument('--work-dir', required=True)
