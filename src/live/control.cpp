@@ -136,10 +136,16 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
                                  " m (crest to trough, at most the breaking height)");
     } else if (key == "wave_period") {
       if (!limits.has_waves) throw ControlError("wave_period: the scene has no [waves]");
+      if (limits.irregular_sea)
+        throw ControlError("wave_period: an irregular sea's periods are its spectrum's; its "
+                           "height (Hs) can change");
       r.wave_period = ReadNumber(v, "wave_period", limits.wave_period_min,
                                  limits.wave_period_max, " s");
     } else if (key == "wave_heading") {
       if (!limits.has_waves) throw ControlError("wave_heading: the scene has no [waves]");
+      if (limits.irregular_sea)
+        throw ControlError("wave_heading: an irregular sea's directions are its spectrum's; its "
+                           "height (Hs) can change");
       r.wave_heading = ReadNumber(v, "wave_heading", -limits.heading_max, limits.heading_max,
                                   " degrees from +x towards +z (the way the waves travel)");
     } else if (key == "offset_x" || key == "offset_z") {

@@ -48,6 +48,7 @@ ControlLimits MakeLimits(const LiveSimulation& sim) {
   if (sim.has_waves()) {  // up to the breaking height (Miche's, as the scene's check)
     const Wave& w = sim.model().lines.front().env.wave;
     l.has_waves = true;
+    l.irregular_sea = w.irregular();
     l.wave_height_max = w.breaking_height();
     // A third to three times the scene's period, within 1 s to 60 s (a shorter period lowers
     // the breaking height: a higher wave is held at it, live_simulation.h).
