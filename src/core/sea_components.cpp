@@ -40,6 +40,8 @@ void SeaComponents::Add(double a, double w, double phi, double heading, double g
   dir_z.push_back(std::sin(heading));
   decay.push_back(std::exp(-2.0 * ki * h));
   decay_gap.push_back(-std::expm1(-2.0 * ki * h));
+  max_omega = std::max(max_omega, w);
+  max_k = std::max(max_k, ki);
 }
 
 namespace {

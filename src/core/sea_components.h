@@ -32,6 +32,8 @@ struct SeaComponents {
   double Variance() const;        // m0 = sum a_i^2 / 2 [m^2]
   double SignificantHeight() const;  // Hs = 4 sqrt(m0) [m]
   double ShortestLength() const;  // 2 pi / max k_i [m]: the shortest component's wave length
+  double max_omega = 0;           // the largest omega_i [rad/s] and k_i [1/m] (Add keeps them)
+  double max_k = 0;
   // Adds a component: amplitude a [m], omega [rad/s], phase [rad], heading [rad] from +x
   // towards +z; its k from the dispersion relation at depth h [m] and gravity g [m/s^2].
   void Add(double a, double omega, double phase, double heading, double g, double h);

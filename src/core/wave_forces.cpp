@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/sea_components.h"
 
 namespace cablefilm {
 namespace {
@@ -59,6 +60,83 @@ double SurfaceBuoyancyEnergy(const LineModel& m, const Points& x) {
   return e;
 }
 
+namespace {
+
+// Station j's wet fraction and its gradient from the surface's elevation eta [m] above the
+// still water level there and its gradient `ddepth` (d eta / d position; y set here).
+void SetWetFraction(const LineModel& m, const Wave& wave, const Points& x, int j, double eta,
+                    Vec ddepth, SeaState& sea) {
+  // Depth below the instantaneous surface over the station's band: u = 1/2 at the surface.
+  const double band = m.line.wet_band[j];
+  const double depth = wave.spec.surface_y + eta - x(kVertical, j);
+  const double u = depth / band + 0.5;
+  sea.wet[j] = WetFraction(u);
+  ddepth[kVertical] = -1.0;
+  sea.wet_gradient.col(j) = (WetFractionSlope(u) / band) * ddepth;
+}
+
+// An irregular sea: its sum over every component costs N trigonometric and exponential
+// evaluations a station, so each station's kinematics are evaluated exactly at a base (t_0,
+// x_0) and carried from it by Taylor's first order while the time and every station stay within
+// the sea's reach (Wave::sea_reach over omega_max and k_max): U + A dt + G_u dx, A + J dt + G_a
+// dx, eta + eta' dt + grad eta . dx, the gradients the base's. Within a step's Newton
+// iterations (one time, positions moving by corrections) and an explicit window's steps (each
+// a fraction of a millisecond) the base serves many evaluations.
+void ComputeIrregularSea(const LineModel& m, const Wave& wave, double t, const Points& x,
+                         SeaState& sea) {
+  const int n = m.stations();
+  const double reach = wave.sea_reach;
+  const double reach_t = reach / wave.sea->max_omega, reach_x = reach / wave.sea->max_k;
+  bool near = sea.base_valid && sea.base_scale == wave.sea_scale &&
+              std::abs(t - sea.base_t) <= reach_t && sea.base_x.cols() == n;
+  for (int j = 0; j < n && near; ++j) near = (x.col(j) - sea.base_x.col(j)).norm() <= reach_x;
+  if (!near) {
+    if (sea.base_x.cols() != n) {
+      sea.base_x.resize(kDim, n);
+      sea.base_velocity.resize(kDim, n);
+      sea.base_acceleration.resize(kDim, n);
+      sea.base_jerk.resize(kDim, n);
+      sea.base_eta_gradient.resize(kDim, n);
+      sea.base_velocity_gradient.resize(kDim * kDim, n);
+      sea.base_acceleration_gradient.resize(kDim * kDim, n);
+      sea.base_eta.resize(n);
+      sea.base_eta_rate.resize(n);
+    }
+    const WaveRamp ramp = RampAt(wave.spec, t);
+    for (int j = 0; j < n; ++j) {
+      const WaterKinematics w = KinematicsAt(wave, x.col(j), t, ramp);
+      sea.base_velocity.col(j) = w.velocity;
+      sea.base_acceleration.col(j) = w.acceleration;
+      sea.base_jerk.col(j) = w.jerk;
+      Eigen::Map<Mat>(sea.base_velocity_gradient.col(j).data()) = w.velocity_gradient;
+      Eigen::Map<Mat>(sea.base_acceleration_gradient.col(j).data()) = w.acceleration_gradient;
+      sea.base_eta[j] = w.eta;
+      sea.base_eta_rate[j] = w.eta_rate;
+      sea.base_eta_gradient.col(j) = w.eta_gradient;
+    }
+    sea.base_x = x;
+    sea.base_t = t;
+    sea.base_scale = wave.sea_scale;
+    sea.base_valid = true;
+    ++sea.exact_evaluations;
+  }
+  const double dt = t - sea.base_t;  // [s]
+  sea.velocity_gradient = sea.base_velocity_gradient;
+  sea.acceleration_gradient = sea.base_acceleration_gradient;
+  for (int j = 0; j < n; ++j) {
+    const Vec dx = x.col(j) - sea.base_x.col(j);  // [m]
+    const Eigen::Map<const Mat> Gu(sea.base_velocity_gradient.col(j).data());
+    const Eigen::Map<const Mat> Ga(sea.base_acceleration_gradient.col(j).data());
+    sea.velocity.col(j) = sea.base_velocity.col(j) + sea.base_acceleration.col(j) * dt + Gu * dx;
+    sea.acceleration.col(j) = sea.base_acceleration.col(j) + sea.base_jerk.col(j) * dt + Ga * dx;
+    const Vec grad = sea.base_eta_gradient.col(j);
+    const double eta = sea.base_eta[j] + sea.base_eta_rate[j] * dt + grad.dot(dx);
+    SetWetFraction(m, wave, x, j, eta, grad, sea);
+  }
+}
+
+}  // namespace
+
 void ComputeSea(const LineModel& m, const Water& water, double t, const Points& x, SeaState& sea) {
   const int n = m.stations();
   if (sea.wet.size() != n) {
@@ -97,6 +175,10 @@ void ComputeSea(const LineModel& m, const Water& water, double t, const Points& 
   }
   sea.still = still;
   sea.still_under = false;
+  if (!still && wave.irregular()) {
+    ComputeIrregularSea(m, wave, t, x, sea);
+    return;
+  }
   const WaveRamp ramp = RampAt(wave.spec, t);
   for (int j = 0; j < n; ++j) {
     double eta = 0;
@@ -110,13 +192,7 @@ void ComputeSea(const LineModel& m, const Water& water, double t, const Points& 
       eta = w.eta;
       ddepth = w.eta_gradient;
     }
-    // Depth below the instantaneous surface over the station's band: u = 1/2 at the surface.
-    const double band = m.line.wet_band[j];
-    const double depth = wave.spec.surface_y + eta - x(kVertical, j);
-    const double u = depth / band + 0.5;
-    sea.wet[j] = WetFraction(u);
-    ddepth[kVertical] = -1.0;
-    sea.wet_gradient.col(j) = (WetFractionSlope(u) / band) * ddepth;
+    SetWetFraction(m, wave, x, j, eta, ddepth, sea);
   }
 }
 

@@ -54,12 +54,13 @@ double WaveNumber(double omega, double g, double h) {
 WaveRamp RampAt(const WaveSpec& w, double t) {
   WaveRamp r;
   if (w.ramp_rate == 0) return r;
-  if (t <= 0) return WaveRamp{0.0, 0.0};
+  if (t <= 0) return WaveRamp{0.0, 0.0, 0.0};
   // Eq. (3)'s ramp, as the end motion's (end_motion.cpp): R = 1 - (1 + nu t) e^{-nu t},
   // R' = nu^2 t e^{-nu t}.
   const double nu = w.ramp_rate, e = std::exp(-nu * t);
   r.value = 1.0 - (1.0 + nu * t) * e;
   r.rate = nu * nu * t * e;
+  r.rate2 = nu * nu * (1.0 - nu * t) * e;
   return r;
 }
 
@@ -126,7 +127,7 @@ WaterKinematics SumKinematics(const WaveSpec& spec, int n, const Components& com
                               const Vec& position, double t, const WaveRamp& ramp,
                               double* trig) {
   WaterKinematics out;
-  const double R = ramp.value, dR = ramp.rate, h = spec.depth;
+  const double R = ramp.value, dR = ramp.rate, ddR = ramp.rate2, h = spec.depth;
   const double px = position[0], pz = position[2];
   bool moving = false;
   for (int i = 0; i < n; ++i) {
@@ -136,6 +137,7 @@ WaterKinematics SumKinematics(const WaveSpec& spec, int n, const Components& com
     trig[2 * i] = co;
     trig[2 * i + 1] = si;
     out.eta += R * c.a * co;
+    out.eta_rate += c.a * (dR * co + R * c.w * si);
     const Vec dtheta = c.k * Vec(c.ex, 0.0, c.ez);  // d theta / d position
     out.eta_gradient += (-R * c.a * si) * dtheta;
     moving = moving || c.a != 0;
@@ -215,6 +217,7 @@ WaterKinematics SumKinematics(const WaveSpec& spec, int n, const Components& com
     }
   };
   Sums u, acc;
+  double jx = 0, jz = 0, jv = 0;  // the jerk's sums: sum j_h e, sum j_v
   for (int i = 0; i < n; ++i) {
     const Component c = component(i);
     if (c.a == 0) continue;
@@ -253,11 +256,17 @@ WaterKinematics SumKinematics(const WaveSpec& spec, int n, const Components& com
     const double ah_th = aw * C * (R * w * co - dR * si);
     const double av_z = aw * k * C_slope * (-R * w * co + dR * si);
     const double av_th = aw * S * (R * w * si + dR * co);
+    // Its rate d(acceleration)/dt at fixed z_e, for carrying the acceleration in time.
+    const double jh = aw * C * (2 * dR * w * si - R * w * w * co + ddR * co);
+    jx += jh * c.ex;
+    jz += jh * c.ez;
+    jv += aw * S * (-2 * dR * w * co - R * w * w * si + ddR * si);
     u.Add(c.ex, c.ez, k, uh, uv, uh_z, uv_z, uh_th, uv_th);
     acc.Add(c.ex, c.ez, k, ah, av, ah_z, av_z, ah_th, av_th);
   }
   u.Write(dze, &out.velocity, &out.velocity_gradient);
   acc.Write(dze, &out.acceleration, &out.acceleration_gradient);
+  out.jerk = Vec(jx, jv, jz);
   return out;
 }
 

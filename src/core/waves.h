@@ -59,7 +59,7 @@ double WaveNumber(double omega, double g, double h);
 
 // R(t), dR/dt [1/s] of the ramp (eq. 3's form); R = 1 for nu = 0; R = 0 for t <= 0 otherwise.
 struct WaveRamp {
-  double value = 1, rate = 0;
+  double value = 1, rate = 0, rate2 = 0;  // R, dR/dt [1/s], d2R/dt2 [1/s^2]
 };
 WaveRamp RampAt(const WaveSpec& w, double t);
 
@@ -77,6 +77,11 @@ struct Wave {
   std::shared_ptr<const SeaComponents> sea;
   double sea_scale = 1;
   bool irregular() const { return sea != nullptr; }
+  // How far an irregular sea's kinematics at a station are carried from their last exact
+  // evaluation by Taylor's first order in time and position (ComputeSea, wave_forces.h): while
+  // omega_max |t - t_0| and k_max |x - x_0| stay below it, the error is at most about half its
+  // square (5e-5 at 0.01) of the shortest component's own part. 0: every evaluation exact.
+  double sea_reach = 0.01;
   // The shortest wave length present [m]: the regular wave's, or the shortest component's.
   double shortest_length() const;
   // The highest crest to expect above the still water level [m]: a, or for a sea Hs (about the
@@ -99,6 +104,8 @@ struct WaterKinematics {
   Vec acceleration = Vec::Zero();        // its local rate [m/s^2]
   Mat velocity_gradient = Mat::Zero();   // d velocity / d position [1/s]
   Mat acceleration_gradient = Mat::Zero();  // d acceleration / d position [1/s^2]
+  double eta_rate = 0;                   // d eta / dt [m/s]
+  Vec jerk = Vec::Zero();                // the acceleration's local rate [m/s^3]
 };
 WaterKinematics KinematicsAt(const Wave& wave, const Vec& position, double t);
 // The same with the ramp at t given (RampAt(wave.spec, t)): one ramp for many points.

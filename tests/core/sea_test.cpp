@@ -258,5 +258,31 @@ TEST(SeaComponents, KinematicsAreTheSumOfTheComponentsAndTheirGradientsHold) {
   }
 }
 
+// The rates the carried kinematics use (wave_forces.cpp): d eta / dt and the acceleration's
+// rate against central differences in time at a fixed point under the troughs, unstretched
+// ("linear": there z_e is the point's own elevation), during the ramp (its second derivative
+// enters) and after it. Step 1e-4 s: truncation (omega_max h)^2 / 6 ~ 3e-8, round-off 1e-16 /
+// 1e-4; 1e-6 of the scale.
+TEST(SeaComponents, RatesInTimeMatchDifferences) {
+  SeaDiscretization d;
+  d.components = 30;
+  d.seed = 4;
+  const SeaComponents sea = SpectrumComponents(Jonswap(3.0, 8.0, 3.3), d, kG, 60.0);
+  const Wave wave = SeaWave(sea, 3.0, 8.0, 60.0, WaveKinematics::kLinear, 0.5);
+  double se = 0, sj = 0;  // scales [m/s] and [m/s^3]
+  for (int i = 0; i < sea.size(); ++i) {
+    se += sea.amplitude[i] * sea.omega[i];
+    sj += sea.amplitude[i] * std::pow(sea.omega[i], 3);
+  }
+  const double h = 1e-4;
+  for (double t : {1.0, 4.0, 30.0}) {
+    const Vec at(7.0, -9.0, 3.0);
+    const WaterKinematics w = KinematicsAt(wave, at, t);
+    const WaterKinematics p = KinematicsAt(wave, at, t + h), m = KinematicsAt(wave, at, t - h);
+    EXPECT_NEAR(w.eta_rate, (p.eta - m.eta) / (2 * h), 1e-6 * se) << t;
+    EXPECT_LE((w.jerk - (p.acceleration - m.acceleration) / (2 * h)).norm(), 1e-6 * sj) << t;
+  }
+}
+
 }  // namespace
 }  // namespace cablefilm
