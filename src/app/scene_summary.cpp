@@ -98,6 +98,18 @@ void PrintTangentialMaterials(const SceneDef& scene) {
 }
 
 void PrintCurrent(const Environment& env) {
+  if (const CurrentHistory* h = env.current_history.get()) {
+    const auto [lo, hi] = std::minmax_element(h->heading.begin(), h->heading.end());
+    const auto [f_lo, f_hi] = std::minmax_element(h->factor.begin(), h->factor.end());
+    const bool profile = !env.current_profile.empty();
+    std::printf("  current over time: %zu row(s) from t = %.6g to %.6g s, %s%.4g to %.4g%s, "
+                "along %.4g to %.4g degrees from +x towards +z, linear between rows, held "
+                "before and after\n",
+                h->t.size(), h->t.front(), h->t.back(), profile ? "the profile below times " : "",
+                profile ? *f_lo : *f_lo * env.current, profile ? *f_hi : *f_hi * env.current,
+                profile ? "" : " m/s", *lo * 180.0 / M_PI, *hi * 180.0 / M_PI);
+    if (!profile) return;
+  }
   if (!env.current_profile.empty()) {
     const CurrentProfile& p = env.current_profile;
     const auto [lo, hi] = std::minmax_element(p.speed.begin(), p.speed.end());

@@ -123,7 +123,20 @@ double EndMotion::period() const {
   return 0;
 }
 
+EndMotion EndMotion::WithAdded(const EndMotion& table) const {
+  if (table.kind() != EndKind::kTable || table.turns() || table.has_added())
+    throw Error("end motion: an added motion must be a plain table");
+  EndMotion m = *this;
+  m.added_ = std::make_shared<const EndMotion>(table);
+  return m;
+}
+
 Vec EndMotion::Evaluate(double t, int order) const {
+  if (!added_) return Own(t, order);
+  return Own(t, order) + added_->EvaluateTable(t, order);
+}
+
+Vec EndMotion::Own(double t, int order) const {
   switch (kind_) {
     case EndKind::kTrochoid:
       return EvaluateTrochoid(t, order);
@@ -178,7 +191,13 @@ Vec EndMotion::Translation(double t, int order, const SmoothSchedule& scale,
                            const SmoothSchedule& clock) const {
   const bool as_scene = scale.constant() && clock.constant() && scale.target() == 1.0 &&
                         clock.target() == 1.0;
-  if (as_scene || !translates()) return Evaluate(t, order);
+  if (as_scene || !own_translates()) return Evaluate(t, order);
+  if (added_) return Scaled(t, order, scale, clock) + added_->EvaluateTable(t, order);
+  return Scaled(t, order, scale, clock);
+}
+
+Vec EndMotion::Scaled(double t, int order, const SmoothSchedule& scale,
+                      const SmoothSchedule& clock) const {
   if (kind_ == EndKind::kTrochoid && t <= 0) return order == 0 ? rest_ : Vec::Zero();
   // offset(t) = G(t) P(tau(t)), G = scale x the ramp R of eq. (3) (1 for a table), tau the
   // motion's clock (tau' = rate); the derivatives by the product and chain rules.
@@ -217,10 +236,12 @@ double EndMotion::NextKink(double t) const {
 }
 
 double EndMotion::OffsetKink(double t) const {
-  constexpr double kNone = std::numeric_limits<double>::infinity();
-  if (kind_ != EndKind::kTable || interpolation_ != TableInterpolation::kLinear) return kNone;
-  const auto it = std::upper_bound(knot_t_.begin(), knot_t_.end(), t);
-  return it == knot_t_.end() ? kNone : *it;
+  double kink = std::numeric_limits<double>::infinity();
+  if (kind_ == EndKind::kTable && interpolation_ == TableInterpolation::kLinear) {
+    const auto it = std::upper_bound(knot_t_.begin(), knot_t_.end(), t);
+    if (it != knot_t_.end()) kink = *it;
+  }
+  return added_ ? std::min(kink, added_->OffsetKink(t)) : kink;
 }
 
 Vec EndMotion::EvaluateTable(double t, int order) const {

@@ -72,6 +72,14 @@ class EndMotion {
   // The angles' motion [rad] (turns() only).
   const EndMotion& angles() const { return *angles_; }
 
+  // The same motion with a table's offsets added (a low-frequency drift or a recorded motion on
+  // top of a wave-frequency one): `table` a Table() about a rest of zero, evaluated in real
+  // time (the live view's scale and clock apply to this motion's own part, not to it). Its
+  // kinks (a linear table's rows) are this motion's too.
+  EndMotion WithAdded(const EndMotion& table) const;
+  bool has_added() const { return added_ != nullptr; }
+  const EndMotion& added() const { return *added_; }
+
   // The same motion, carried by the vessel the live view offsets (a ship's fairlead, a point
   // of a driven or held body): its position, velocity and acceleration then add Inputs'
   // offset (inputs.h), ramped. No run sets it: a run's ends move as the scene says.
@@ -114,12 +122,16 @@ class EndMotion {
   double NextKink(double t) const;
 
  private:
-  bool translates() const { return kind_ == EndKind::kTrochoid || kind_ == EndKind::kTable; }
+  bool translates() const { return own_translates() || added_ != nullptr; }
+  bool own_translates() const { return kind_ == EndKind::kTrochoid || kind_ == EndKind::kTable; }
   double OffsetKink(double t) const;  // NextKink of the offsets alone
   Vec At(double t, int order) const;  // as the scene gives it, the turn included
-  Vec Evaluate(double t, int order) const;  // the offsets' part (no turn)
+  Vec Evaluate(double t, int order) const;  // the offsets' part (no turn), the added table's in
+  Vec Own(double t, int order) const;       // the offsets' part without the added table
   Vec Translation(double t, int order, const SmoothSchedule& scale,
                   const SmoothSchedule& clock) const;
+  Vec Scaled(double t, int order, const SmoothSchedule& scale,  // Translation's own part, the
+             const SmoothSchedule& clock) const;                // scale and clock applied
   // The turn's part, order 0, 1, 2, from the angles theta [rad] and their rates [rad/s],
   // [rad/s^2]: (R(theta) - R(theta_0)) local [m], R' local [m/s], R'' local [m/s^2].
   Vec TurnPart(const Vec& theta, const Vec& rate, const Vec& rate2, int order) const;
@@ -146,6 +158,8 @@ class EndMotion {
   // R(theta_0) local [m]. Shared: the angles' motion is never changed in place.
   std::shared_ptr<const EndMotion> angles_;
   Vec local_ = Vec::Zero(), rest_turn_ = Vec::Zero();
+  // A table added to the offsets (WithAdded); shared, never changed in place.
+  std::shared_ptr<const EndMotion> added_;
 };
 
 }  // namespace cablefilm

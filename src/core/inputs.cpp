@@ -24,6 +24,10 @@ Water SceneWater(const LineModel& m, double current_scale) {
   w.current = m.env.current;
   w.current_scale = current_scale;
   w.current_direction = m.env.current_direction;
+  if (const CurrentHistory* h = m.env.current_history.get()) {  // as at t = 0
+    w.current_scale *= h->FactorAt(0.0);
+    w.current_direction = Horizontal(h->HeadingAt(0.0));
+  }
   w.wave = m.env.wave;
   return w;
 }
@@ -38,6 +42,10 @@ void UpdateWater(const LineModel& m, const Inputs& in, double t, Water* water) {
                                      heading == HeadingOf(m.env.current_direction)
                                  ? m.env.current_direction
                                  : Horizontal(heading);
+  if (const CurrentHistory* h = m.env.current_history.get()) {  // the table's at t
+    water->current_scale *= h->FactorAt(t);
+    water->current_direction = Horizontal(h->HeadingAt(t));
+  }
   if (!m.has_waves()) return;
   Wave& wave = water->wave;
   const WaveSpec& scene = m.env.wave.spec;

@@ -52,10 +52,11 @@ struct Water {
   Wave wave;                 // the waves (wave.spec.present as the model's)
 };
 
-// The model's water, as the scene gives it (scaled by `current_scale`).
+// The model's water, as the scene gives it at t = 0 (scaled by `current_scale`).
 Water SceneWater(const LineModel& m, double current_scale = 1.0);
 // The water of the inputs at time t [s], from the water of the step before (`water`): the
-// current (speed and heading) and the waves' height at t; a new period or heading with the
+// current (speed and heading; a current history's factor and heading at t) and the waves'
+// height at t; a new period or heading with the
 // phase kept at wave_phase_point (where a ship would see the wave change), so the waves' phase
 // carries over; the height held at Miche's breaking limit of the period at t. Exactly the
 // model's water while the inputs are the scene's.

@@ -23,6 +23,7 @@ LineModel MakeLineModel(const std::vector<SectionSpec>& sections, const std::vec
   e.current = env.current;
   e.current_profile = env.current_profile;
   e.current_direction = env.current_direction;
+  e.current_history = env.current_history;
   if (e.current_profile.y.size() != e.current_profile.speed.size())
     throw Error("the current profile has " + std::to_string(e.current_profile.y.size()) +
                 " elevations but " + std::to_string(e.current_profile.speed.size()) + " speeds");

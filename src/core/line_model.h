@@ -7,8 +7,10 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <limits>
+#include <memory>
 #include <vector>
 
+#include "core/current_history.h"
 #include "core/end_motion.h"
 #include "core/vec.h"
 #include "core/waves.h"
@@ -192,6 +194,8 @@ struct Environment {
   double current = 0;             // c [m/s] along current_direction, uniform
   CurrentProfile current_profile; // added to c: the current at y is c + profile(y) [m/s]
   Vec current_direction = Vec(1.0, 0.0, 0.0);  // horizontal unit vector the current flows along
+  // The current over time: scales and turns the current above (null: steady).
+  std::shared_ptr<const CurrentHistory> current_history;
   SeabedSpec seabed;              // seabed.present: contact on the stations below seabed.y
   Wave wave;                      // wave.spec.present: regular waves with a free surface
 };
@@ -264,6 +268,7 @@ struct EnvironmentSpec {
   double current = 0;          // c [m/s] along current_direction
   CurrentProfile current_profile;  // added to c (empty: uniform)
   Vec current_direction = Vec(1.0, 0.0, 0.0);  // horizontal unit vector
+  std::shared_ptr<const CurrentHistory> current_history;  // over time (null: steady)
   SeabedSpec seabed;           // none unless present
   WaveSpec waves;              // none unless present
 };

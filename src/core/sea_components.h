@@ -15,6 +15,10 @@
 
 namespace cablefilm {
 
+// The most components a sea may hold: each costs a cosine, a sine and an exponential per
+// station evaluated (waves.components' range; a record's are counted after its band).
+constexpr int kMaxSeaComponents = 20000;
+
 struct SeaComponents {
   // One entry per component, as arrays (the kinematics' loop reads them in order).
   std::vector<double> amplitude;  // a_i [m]

@@ -126,8 +126,13 @@ ControlRequest ParseControl(const std::string& body, const ControlLimits& limits
         r.amplitude_scale = ReadNumber(v, "amplitude_scale", 0, limits.amplitude_max,
                                        " (times the scene's amplitudes)");
     } else if (key == "current") {
+      if (limits.current_history)
+        throw ControlError("current: the current follows the scene's environment.current_file");
       r.current = ReadNumber(v, "current", -limits.current_max, limits.current_max, " m/s");
     } else if (key == "current_heading") {
+      if (limits.current_history)
+        throw ControlError("current_heading: the current follows the scene's "
+                           "environment.current_file");
       r.current_heading = ReadNumber(v, "current_heading", -limits.heading_max,
                                      limits.heading_max, " degrees from +x towards +z");
     } else if (key == "wave_height") {

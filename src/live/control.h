@@ -23,6 +23,7 @@ struct ControlLimits {
   bool has_driven_end = true;               // a trochoid or table end: amplitude, period
   bool has_waves = false;                   // [waves]: their height, period and heading
   bool irregular_sea = false;               // an irregular sea: its height (Hs) alone
+  bool current_history = false;             // a current over time: the table's, no control
   double wave_height_max = 0;               // the breaking height of the scene's wave [m]
   double wave_period_min = 0, wave_period_max = 0;  // the waves' period range [s]
   std::vector<std::string> colormaps;       // the known colour maps

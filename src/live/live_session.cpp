@@ -45,6 +45,7 @@ ControlLimits MakeLimits(const LiveSimulation& sim) {
     l.period_max = sea.period * 10;
   }
   l.current_max = std::max(3.0, 2 * std::abs(sea.current));
+  l.current_history = sim.model().lines.front().env.current_history != nullptr;
   if (sim.has_waves()) {  // up to the breaking height (Miche's, as the scene's check)
     const Wave& w = sim.model().lines.front().env.wave;
     l.has_waves = true;

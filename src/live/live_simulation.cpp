@@ -194,8 +194,13 @@ SeaTargets LiveSimulation::targets() const {
   return s;
 }
 
-double LiveSimulation::current_now() const { return inputs_.current.ValueAt(t()); }
+double LiveSimulation::current_now() const {
+  const CurrentHistory* h = model().lines.front().env.current_history.get();
+  return inputs_.current.ValueAt(t()) * (h ? h->FactorAt(t()) : 1.0);
+}
 double LiveSimulation::current_heading_now() const {
+  if (const CurrentHistory* h = model().lines.front().env.current_history.get())
+    return h->HeadingAt(t()) / kDegree;
   return inputs_.current_heading.ValueAt(t()) / kDegree;
 }
 double LiveSimulation::wave_heading_now() const {

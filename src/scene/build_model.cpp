@@ -3,12 +3,41 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "core/error.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
+
+namespace {
+
+// The table's offsets [m] (`angles` false) or angles [rad] about `rest` (of a wave-following
+// end: zero, the table added to the waves' motion); nothing when the table has none that move
+// (its angles all 0).
+std::optional<EndMotion> TableMotion(const EndDef& e, const Vec& rest, bool angles) {
+  if (e.table.empty()) return std::nullopt;
+  const double deg = M_PI / 180.0;
+  std::vector<double> times;
+  std::vector<Vec> values;
+  bool moves = !angles;
+  for (const auto& r : e.table) {
+    times.push_back(r[0]);
+    values.push_back(angles ? Vec(r[4], r[5], r[6]) * deg : Vec(r[1], r[2], r[3]));
+    moves = moves || r[4] != 0 || r[5] != 0 || r[6] != 0;
+  }
+  if (!moves) return std::nullopt;
+  return EndMotion::Table(rest, times, values, e.interpolation);
+}
+
+// A wave-following end's motion (`own`) with its drift table added, if it has one.
+EndMotion WithDrift(const EndDef& e, const EndMotion& own, bool angles) {
+  const std::optional<EndMotion> drift = TableMotion(e, Vec::Zero(), angles);
+  return drift ? own.WithAdded(*drift) : own;
+}
+
+}  // namespace
 
 EndMotion MakeEndMotion(const EndDef& e) {
   const Vec rest(e.position[0], e.position[1], e.position[2]);
@@ -22,21 +51,16 @@ EndMotion MakeEndMotion(const EndDef& e) {
         std::vector<EndMotion::Harmonic> h;
         for (const auto& row : e.harmonics)
           h.push_back({row[0], Vec(row[1], row[3], row[5]), Vec(row[2], row[4], row[6])});
-        return EndMotion::Harmonics(rest, std::move(h), e.ramp_rate);
+        return WithDrift(e, EndMotion::Harmonics(rest, std::move(h), e.ramp_rate), false);
       }
-      return EndMotion::Trochoid(
-          rest, Vec(e.x_amplitudes[0], e.y_amplitudes[0], e.z_amplitudes[0]),
-          Vec(e.x_amplitudes[1], e.y_amplitudes[1], e.z_amplitudes[1]), 2.0 * M_PI / e.period,
-          e.ramp_rate);
-    case EndMotionKind::kTable: {
-      std::vector<double> times;
-      std::vector<Vec> offsets;
-      for (const auto& r : e.table) {
-        times.push_back(r[0]);
-        offsets.emplace_back(r[1], r[2], r[3]);
-      }
-      return EndMotion::Table(rest, times, offsets, e.interpolation);
-    }
+      return WithDrift(
+          e,
+          EndMotion::Trochoid(rest, Vec(e.x_amplitudes[0], e.y_amplitudes[0], e.z_amplitudes[0]),
+                              Vec(e.x_amplitudes[1], e.y_amplitudes[1], e.z_amplitudes[1]),
+                              2.0 * M_PI / e.period, e.ramp_rate),
+          false);
+    case EndMotionKind::kTable:
+      return *TableMotion(e, rest, false);
   }
   throw Error("unknown end motion");
 }
@@ -45,6 +69,7 @@ EndMotion MakeTurnMotion(const EndDef& e, const Vec& rest_angles) {
   const double deg = M_PI / 180.0;
   switch (e.motion) {
     case EndMotionKind::kTrochoid: {
+      std::optional<EndMotion> waves;  // the waves' angles, if they turn it
       if (!e.harmonics.empty()) {  // following an irregular sea: the angles' columns
         std::vector<EndMotion::Harmonic> h;
         bool turns = false;
@@ -53,27 +78,21 @@ EndMotion MakeTurnMotion(const EndDef& e, const Vec& rest_angles) {
                        Vec(row[8], row[10], row[12]) * deg});
           turns = turns || !h.back().cos.isZero(0) || !h.back().sin.isZero(0);
         }
-        if (!turns) break;
-        return EndMotion::Harmonics(rest_angles, std::move(h), e.ramp_rate);
+        if (turns) waves = EndMotion::Harmonics(rest_angles, std::move(h), e.ramp_rate);
+      } else {
+        const Vec cos_amplitudes(e.rx_amplitudes[0], e.ry_amplitudes[0], e.rz_amplitudes[0]);
+        const Vec sin_amplitudes(e.rx_amplitudes[1], e.ry_amplitudes[1], e.rz_amplitudes[1]);
+        if (!cos_amplitudes.isZero(0) || !sin_amplitudes.isZero(0))
+          waves = EndMotion::Trochoid(rest_angles, cos_amplitudes * deg, sin_amplitudes * deg,
+                                      2.0 * M_PI / e.period, e.ramp_rate);
       }
-      const Vec cos_amplitudes(e.rx_amplitudes[0], e.ry_amplitudes[0], e.rz_amplitudes[0]);
-      const Vec sin_amplitudes(e.rx_amplitudes[1], e.ry_amplitudes[1], e.rz_amplitudes[1]);
-      if (cos_amplitudes.isZero(0) && sin_amplitudes.isZero(0)) break;
-      return EndMotion::Trochoid(rest_angles, cos_amplitudes * deg, sin_amplitudes * deg,
-                                 2.0 * M_PI / e.period, e.ramp_rate);
+      if (waves) return WithDrift(e, *waves, true);
+      if (auto drift = TableMotion(e, rest_angles, true)) return *drift;  // the drift's alone
+      break;
     }
-    case EndMotionKind::kTable: {
-      std::vector<double> times;
-      std::vector<Vec> angles;  // [rad]
-      bool turns = false;
-      for (const auto& r : e.table) {
-        times.push_back(r[0]);
-        angles.emplace_back(Vec(r[4], r[5], r[6]) * deg);
-        turns = turns || r[4] != 0 || r[5] != 0 || r[6] != 0;
-      }
-      if (!turns) break;
-      return EndMotion::Table(rest_angles, times, angles, e.interpolation);
-    }
+    case EndMotionKind::kTable:
+      if (auto table = TableMotion(e, rest_angles, true)) return *table;
+      break;
     case EndMotionKind::kFixed:
     case EndMotionKind::kFree:
       break;
@@ -96,25 +115,29 @@ std::string Figure(double v) {
 
 void DescribeTable(const std::string& what, const EndDef& e, double run_end,
                    std::vector<std::string>* notes, std::vector<std::string>* warnings) {
-  if (e.motion != EndMotionKind::kTable) return;
-  const EndMotion m = MakeEndMotion(e);
+  const bool drift = e.motion == EndMotionKind::kTrochoid && !e.table.empty();
+  if (e.motion != EndMotionKind::kTable && !drift) return;
+  // The table's own motion: a drift's alone, about a rest of zero.
+  const EndMotion m = drift ? MakeEndMotion(e).added() : MakeEndMotion(e);
   const bool linear = m.interpolation() == TableInterpolation::kLinear;
   const double first = m.Velocity(m.table_start()).norm(), last = m.EndSpeed();
   if (notes)
-    notes->push_back(what + ": table " + EscapeText(std::filesystem::path(e.table_file).filename().string()) +
+    notes->push_back(what + ": " + (drift ? "drift table " : "table ") +
+                     EscapeText(std::filesystem::path(e.table_file).filename().string()) +
                      ", " + std::to_string(e.table.size()) + " rows from t = " +
                      Figure(m.table_start()) + " to " + Figure(m.table_end()) + " s, " +
                      (linear ? "linear between rows" : "natural cubic spline") +
                      " (interpolation = \"" + (linear ? "linear" : "spline") +
                      "\"), speed " + Figure(first) + " m/s at its first row and " +
-                     Figure(last) + " m/s at its last; held still before and after");
+                     Figure(last) + " m/s at its last; held still before and after" +
+                     (drift ? ", added to the waves' motion" : ""));
   if (warnings && run_end > m.table_end() && last > kRestSpeed)
     warnings->push_back(what + ": the run goes on to t = " + Figure(run_end) +
-                        " s, past the table's last row at t = " + Figure(m.table_end()) +
-                        " s, where it still moves at " + Figure(last) +
-                        " m/s: after that row the end holds still, stopping dead (a jump in "
-                        "velocity no recorded motion has). End the run at the table's last row, "
-                        "or the table at rest");
+                        " s, past the " + (drift ? "drift " : "") + "table's last row at t = " +
+                        Figure(m.table_end()) + " s, where it still moves at " + Figure(last) +
+                        " m/s: after that row " + (drift ? "its drift" : "the end") +
+                        " holds still, stopping dead (a jump in velocity no recorded motion "
+                        "has). End the run at the table's last row, or the table at rest");
 }
 
 // A body's table that turns it: its rates of turn [deg/s] at the first and last rows, and the
@@ -152,6 +175,14 @@ void DescribeTables(const SceneDef& scene, std::vector<std::string>* notes,
     DescribeTable("body " + QuoteText(b.name), b.motion, run_end, notes, warnings);
     DescribeTurn("body " + QuoteText(b.name), b.motion, run_end, notes, warnings);
   }
+  const WavesDef& w = scene.waves;
+  if (warnings && w.present && w.sea == SeaKind::kRecord && w.components_made &&
+      run_end > w.components_made->repeat_period)
+    warnings->push_back("waves.file " + EscapeText(w.file) + ": the record spans " +
+                        Figure(w.components_made->repeat_period) + " s and the run " +
+                        Figure(run_end) + " s: the sea repeats the record after " +
+                        Figure(w.components_made->repeat_period) +
+                        " s (its components are the record's Fourier series)");
 }
 
 WaveSpec MakeWaveSpec(const SceneDef& scene) {
@@ -238,6 +269,7 @@ EnvironmentSpec MakeEnvironment(const SceneDef& scene) {
   env.current = scene.environment.current;
   env.current_profile = scene.environment.current_profile;
   env.current_direction = scene.environment.current_direction;
+  env.current_history = scene.environment.current_history;
   env.seabed = scene.seabed;
   env.waves = MakeWaveSpec(scene);
   return env;

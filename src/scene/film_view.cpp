@@ -43,7 +43,11 @@ bool SceneIsPlanar(const SceneDef& scene) {
     if (!b.free && !BodyStaysInPlane(b)) return false;
   const EnvironmentDef& env = scene.environment;
   const bool current = env.current != 0 || !env.current_profile.empty();
-  if (current && std::fabs(env.current_direction.z()) > kAcross) return false;
+  if (current && std::fabs(env.current_direction.z()) > kAcross && !env.current_history)
+    return false;
+  if (current && env.current_history)  // every heading it turns to (linear between rows)
+    for (double heading : env.current_history->heading)
+      if (std::fabs(std::sin(heading)) > kAcross) return false;
   const WavesDef& w = scene.waves;
   if (w.present && w.height > 0 && std::fabs(std::sin(w.heading * M_PI / 180.0)) > kAcross)
     return false;

@@ -1,31 +1,15 @@
 #include "scene/number_table.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <memory>
 
 #include "core/error.h"
 #include "scene/scene_limits.h"
 #include "scene/table_file.h"
+#include "scene/table_lines.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
-namespace {
-
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-
-std::string Shown(const std::string& line) {
-  constexpr std::size_t kShown = 60;
-  return line.size() <= kShown ? QuoteText(line) : QuoteText(line.substr(0, kShown)) + "...";
-}
-
-}  // namespace
 
 std::vector<std::vector<double>> ReadNumberTable(const std::string& path,
                                                  const std::vector<std::string>& columns,
@@ -36,7 +20,7 @@ std::vector<std::vector<double>> ReadNumberTable(const std::string& path,
 
 std::vector<std::vector<double>> ReadNumberTableOfForms(
     const std::string& path, const std::vector<std::vector<std::string>>& forms,
-    const std::string& what, const std::string& units, int min_rows) {
+    const std::string& what, const std::string& units, int min_rows, int* form) {
   const std::string name = EscapeText(path);
   std::vector<std::string> headers;
   for (const std::vector<std::string>& form : forms) {
@@ -49,27 +33,22 @@ std::vector<std::vector<double>> ReadNumberTableOfForms(
   all += "\"";
   std::vector<std::string> columns = forms.front();
   std::string expected = "rows " + all + " " + units;
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw Error(name + ": is a directory; expected " + what + ", a CSV file of " + expected);
-  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-  if (!file) throw Error(name + ": cannot open " + what + ": " + std::strerror(errno));
   std::vector<std::vector<double>> rows;
   bool seen_header = false;
   long number = 0;
-  std::uintmax_t bytes = 0;
   auto where = [&] { return name + ":" + std::to_string(number) + ": "; };
-  auto take = [&](std::string line) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+  ReadTableLines(path, what, expected, [&](std::string&& line, long line_number) {
+    number = line_number;
     const std::size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#') return;
     if (!seen_header) {
       const auto it = std::find(headers.begin(), headers.end(), line);
       if (it == headers.end())
         throw Error(where() + "expected the header row exactly " + all + " (" + what + ": " +
-                    expected + "), got " + Shown(line));
+                    expected + "), got " + ShownLine(line));
       header = *it;
       columns = forms[static_cast<std::size_t>(it - headers.begin())];
+      if (form) *form = static_cast<int>(it - headers.begin());
       expected = "rows " + header + " " + units;
       seen_header = true;
       return;
@@ -84,46 +63,14 @@ std::vector<std::vector<double>> ReadNumberTableOfForms(
           !std::isfinite(row[i]))
         throw Error(where() + "expected " + std::to_string(columns.size()) + " numbers " +
                     header + " " + units + " (finite decimals, separated by commas), got " +
-                    Shown(line));
+                    ShownLine(line));
       from = comma + 1;
     }
     if (static_cast<long>(rows.size()) >= kMaxTableRows)
       throw Error(where() + "more than " + std::to_string(kMaxTableRows) +
                   " rows; expected at most that many");
     rows.push_back(std::move(row));
-  };
-  std::string line;
-  char buffer[1 << 16];
-  for (;;) {
-    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get());
-    if (n == 0) {
-      if (std::ferror(file.get()))
-        throw Error(name + ": cannot read " + what + ": " + std::strerror(errno));
-      break;
-    }
-    bytes += n;
-    if (bytes > kMaxTableBytes)
-      throw Error(name + ": larger than " + std::to_string(kMaxTableBytes >> 20) +
-                  " MiB; expected " + what + " of at most that size");
-    for (std::size_t i = 0; i < n; ++i) {
-      if (buffer[i] == '\n') {
-        ++number;
-        take(std::move(line));
-        line.clear();
-        continue;
-      }
-      if (line.size() >= kMaxTableLineLength) {
-        ++number;
-        throw Error(where() + "longer than " + std::to_string(kMaxTableLineLength) +
-                    " characters; expected " + expected);
-      }
-      line += buffer[i];
-    }
-  }
-  if (!line.empty()) {
-    ++number;
-    take(std::move(line));
-  }
+  });
   if (static_cast<int>(rows.size()) < min_rows)
     throw Error(name + ": expected at least " + std::to_string(min_rows) + " " + expected +
                 ", found " + std::to_string(rows.size()));

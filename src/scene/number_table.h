@@ -18,9 +18,9 @@ std::vector<std::vector<double>> ReadNumberTable(const std::string& path,
                                                  const std::string& what,
                                                  const std::string& units, int min_rows = 2);
 // The same with any of several headers (`forms`): each row as many numbers as the one the
-// file's header row is.
+// file's header row is; `form` (if given) set to that header's index in `forms`.
 std::vector<std::vector<double>> ReadNumberTableOfForms(
     const std::string& path, const std::vector<std::vector<std::string>>& forms,
-    const std::string& what, const std::string& units, int min_rows = 2);
+    const std::string& what, const std::string& units, int min_rows = 2, int* form = nullptr);
 
 }  // namespace cablefilm

@@ -16,7 +16,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 SeaComponents RecordComponents(const std::vector<double>& times, const std::vector<double>& eta,
                                double x0, double z0, double heading, double gravity,
-                               double depth) {
+                               double depth, double band_lo, double band_hi) {
   const int n = static_cast<int>(times.size());
   if (n < 4 || eta.size() != times.size())
     throw Error("a recorded elevation needs at least 4 rows, got " + std::to_string(n));
@@ -55,8 +55,21 @@ SeaComponents RecordComponents(const std::vector<double>& times, const std::vect
     largest = std::max(largest, amplitude[j]);
   }
   const double along = std::cos(heading) * x0 + std::sin(heading) * z0;  // e . x0 [m]
+  const auto kept = [&](int j) {
+    const double w = j * sea.frequency_step;
+    return amplitude[j] > 1e-9 * largest && (band_hi <= 0 || (w >= band_lo && w <= band_hi));
+  };
+  int count = 0;
+  for (int j = 1; j < m; ++j) count += kept(j);
+  if (count > kMaxSeaComponents)
+    throw Error("the record makes " + std::to_string(count) + " components (one every " +
+                std::to_string(sea.frequency_step) + " rad/s up to " +
+                std::to_string((m - 1) * sea.frequency_step) + " rad/s), more than " +
+                std::to_string(kMaxSeaComponents) +
+                "; expected a band = [lowest, highest] (rad/s) that keeps at most that many, "
+                "or a shorter or coarser record");
   for (int j = 1; j < m; ++j) {
-    if (!(amplitude[j] > 1e-9 * largest)) continue;
+    if (!kept(j)) continue;
     // a cos(k e.x0 - omega t + phi) = A cos(omega (t - t0) + psi) at x0 for every t:
     // phi = omega t0 - psi - k e . x0.
     const double w = j * sea.frequency_step;

@@ -11,9 +11,11 @@ namespace cablefilm {
 // at the reference point (x0, z0) [m]: its discrete Fourier transform (FFTW), the mean removed,
 // each frequency 2 pi j / (N dt) travelling along `heading` [rad]. The sum reproduces the
 // record at its times and repeats after N dt. Components below 1e-9 of the largest amplitude are
-// left out. Throws Error when the times are not equally spaced (to 1e-6 of the step) or there
-// are fewer than 4.
+// left out, and with band_hi > 0 those outside [band_lo, band_hi] [rad/s] (the record filtered).
+// Throws Error when the times are not equally spaced (to 1e-6 of the step), there are fewer
+// than 4, or more than kMaxSeaComponents components are left.
 SeaComponents RecordComponents(const std::vector<double>& times, const std::vector<double>& eta,
-                               double x0, double z0, double heading, double gravity, double depth);
+                               double x0, double z0, double heading, double gravity, double depth,
+                               double band_lo = 0, double band_hi = 0);
 
 }  // namespace cablefilm

@@ -15,14 +15,14 @@
 namespace cablefilm {
 
 // A prescribed end's lowest elevation over its motion [m]: its rest position less the
-// trochoid's largest vertical excursion (the ramp R(t) <= 1), or plus the table's lowest
-// offset (at its rows).
+// trochoid's largest vertical excursion (the ramp R(t) <= 1), plus the table's lowest offset (at
+// its rows: a table motion's, or the drift added to a wave-following end's).
 namespace {
 
 double LowestElevation(const EndDef& e) {
   double y = e.position[1];
   if (e.motion == EndMotionKind::kTrochoid) y -= std::hypot(e.y_amplitudes[0], e.y_amplitudes[1]);
-  if (e.motion == EndMotionKind::kTable && !e.table.empty()) {
+  if (!e.table.empty()) {  // a table motion's rows, or a wave-following end's drift
     double lowest = e.table.front()[2];
     for (const auto& row : e.table) lowest = std::min(lowest, row[2]);
     y += lowest;

@@ -24,6 +24,11 @@ struct EnvironmentDef {
   // The horizontal direction the current (uniform and profile) flows along: +x unless
   // current_heading [deg from +x towards +z] or the vector form [u, w] says otherwise.
   Vec current_direction = Vec(1.0, 0.0, 0.0);
+  // Or over time: current_file's rows t,speed,heading (a uniform current of that speed) or
+  // t,scale,heading (the current above scaled), each turned to the heading (deg in the file,
+  // rad here). Null: steady.
+  std::string current_file;
+  std::shared_ptr<const CurrentHistory> current_history;
 };
 
 // [seabed]: a flat seabed (optional), as the core takes it (core/line_model.h).
@@ -109,6 +114,8 @@ struct EndDef {
   std::array<double, 2> rx_amplitudes{};
   std::array<double, 2> ry_amplitudes{};
   std::array<double, 2> rz_amplitudes{};
+  // motion = "table": the table's; motion = "wave": the table added to the waves' motion (a
+  // drift or a recorded motion; `drift_file`), empty if none.
   std::string table_file;                 // resolved path of the CSV (t, x, y[, z[, rx, ry, rz]])
   // Rows (t [s], dx, dy, dz [m], drx, dry, drz [deg]); the angles (a body's only) 0 unless the
   // table gives them.

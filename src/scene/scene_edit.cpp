@@ -147,7 +147,8 @@ void SetValue(toml::table& root, const std::string& key, const std::vector<PathS
 }
 
 // A relative file a scene names (a motion's table `file`, a vessel's `rao_file`, a sea's
-// spectrum table or record `file`), made absolute from the scene's folder: the case's scene
+// spectrum table or record `file`, the current's `current_file`, a drift's `drift_file`), made
+// absolute from the scene's folder: the case's scene
 // lives elsewhere.
 void AbsoluteFilePaths(toml::table& root, const std::string& scene_path) {
   namespace fs = std::filesystem;
@@ -156,7 +157,7 @@ void AbsoluteFilePaths(toml::table& root, const std::string& scene_path) {
   if (ec) return;
   auto fix = [&](toml::table* t) {
     if (!t) return;
-    for (const char* key : {"file", "rao_file"}) {
+    for (const char* key : {"file", "rao_file", "current_file", "drift_file"}) {
       const toml::value<std::string>* file = (*t)[key].as_string();
       if (!file || file->get().empty() || file->get().find('\0') != std::string::npos) continue;
       const fs::path name(file->get());
@@ -167,6 +168,7 @@ void AbsoluteFilePaths(toml::table& root, const std::string& scene_path) {
   if (toml::table* ends = root["ends"].as_table())
     for (const char* which : {"start", "end"}) fix((*ends)[which].as_table());
   fix(root["waves"].as_table());
+  fix(root["environment"].as_table());
   for (const char* list : {"point", "body"})
     if (toml::array* a = root[list].as_array())
       for (toml::node& n : *a) fix(n.as_table());

@@ -77,7 +77,69 @@ void ReadCurrentProfile(TableReader& r, const toml::array& a, CurrentProfile& pr
   }
 }
 
-void ReadEnvironment(TableReader& top, SceneDef& scene) {
+// environment.current_file: the current over time, rows t,speed,heading (a uniform current
+// of that speed; no `current` beside it) or t,scale,heading (the scene's current scaled; not the
+// vector [u, w], whose direction is its own); either way the heading column turns it (no
+// current_heading beside it).
+void ReadCurrentFile(TableReader& r, const toml::table* t, EnvironmentDef& env,
+                     const std::string& file, bool current_given, bool vector) {
+  const std::string name = r.String("current_file", "", true);
+  if (name.empty() || name.find('\0') != std::string::npos)
+    r.Fail(t->get("current_file"), "current_file",
+           "expected the name of a CSV file t,speed,heading or t,scale,heading, got " +
+               Quote(name));
+  if (r.Has("current_heading"))
+    r.Fail(t->get("current_heading"), "current_heading",
+           "the current_file's heading column turns the current; expected no current_heading "
+           "beside it");
+  env.current_file = (std::filesystem::path(file).parent_path() / name).string();
+  auto history = std::make_shared<CurrentHistory>();
+  bool speeds = false;
+  try {
+    int form = 0;
+    const auto rows = ReadNumberTableOfForms(
+        env.current_file, {{"t", "speed", "heading"}, {"t", "scale", "heading"}},
+        "the current over time", "(t in s, the speed in m/s or the scale, heading in degrees)",
+        1, &form);
+    speeds = form == 0;
+    double base = std::abs(env.current);  // the largest speed the table scales [m/s]
+    for (double v : env.current_profile.speed) base = std::max(base, std::abs(env.current + v));
+    if (speeds) base = 1.0;
+    for (const auto& row : rows) {
+      const double limit = speeds ? kMaxCurrent : (base > 0 ? kMaxCurrent / base : kMaxCurrent);
+      if (!(std::abs(row[0]) <= kMaxTime) || !(std::abs(row[1]) <= limit) ||
+          !(std::abs(row[2]) <= 2 * kMaxPhase) ||
+          (!history->t.empty() && !(row[0] > history->t.back())))
+        throw Error(EscapeText(env.current_file) + ": expected t increasing within " +
+                    TableReader::Fmt(kMaxTime) + " s, " +
+                    (speeds ? "a speed within " + TableReader::Fmt(kMaxCurrent) + " m/s"
+                            : "a scale within " + TableReader::Fmt(limit) +
+                                  " (the current at most " + TableReader::Fmt(kMaxCurrent) +
+                                  " m/s)") +
+                    " and a heading within " + TableReader::Fmt(2 * kMaxPhase) +
+                    " degrees, got t = " + TableReader::Fmt(row[0]) + ", " +
+                    (speeds ? "speed = " : "scale = ") + TableReader::Fmt(row[1]) +
+                    ", heading = " + TableReader::Fmt(row[2]));
+      history->t.push_back(row[0]);
+      history->factor.push_back(row[1]);
+      history->heading.push_back(row[2] * M_PI / 180.0);
+    }
+  } catch (const Error& e) {
+    r.Fail(t->get("current_file"), "current_file", e.what());
+  }
+  if (speeds && current_given)
+    r.Fail(t->get("current"), "current",
+           "the current_file's rows t,speed,heading give the current; expected no current "
+           "beside them (or rows t,scale,heading to scale this one)");
+  if (vector)
+    r.Fail(t->get("current"), "current",
+           "the current [u, w] has its direction already, and the current_file turns it; "
+           "expected a speed or a profile [[y, speed], ...] with a current_file");
+  if (speeds) env.current = 1.0;  // the table's speed is its factor on 1 m/s
+  env.current_history = std::move(history);
+}
+
+void ReadEnvironment(TableReader& top, SceneDef& scene, const std::string& file) {
   const toml::table* t = top.SubTable("environment", false);
   if (!t) return;
   TableReader r = top.Child(*t, "environment");
@@ -121,6 +183,7 @@ void ReadEnvironment(TableReader& top, SceneDef& scene) {
   const double heading = r.Ranged("current_heading", 0.0, false, -kMaxPhase, kMaxPhase,
                                   " (degrees from +x towards +z)");
   if (heading != 0) env.current_direction = Horizontal(heading * M_PI / 180.0);
+  if (r.Has("current_file")) ReadCurrentFile(r, t, env, file, current != nullptr, vector);
   r.Finish();
 }
 
@@ -175,7 +238,7 @@ void ReadSea(TableReader& r, const toml::table* t, SceneDef& scene, const std::s
                  " takes hs and tp (jonswap, pierson-moskowitz) or a file (table, record)");
   const bool drawn = w.sea != SeaKind::kRecord;  // the components are drawn from a spectrum
   if (!drawn)
-    for (const char* key : {"seed", "components", "band", "spreading"})
+    for (const char* key : {"seed", "components", "spreading"})
       if (r.Has(key))
         r.Fail(t->get(key), key,
                std::string(key) + " draws a spectrum's components; a record's are its own");
@@ -235,14 +298,14 @@ void ReadSea(TableReader& r, const toml::table* t, SceneDef& scene, const std::s
       r.Fail(t->get("file"), "file", e.what());
     }
   }
+  w.band = r.Pair("band", {0, 0}, false, false, " ([lowest, highest] omega in rad/s)", 1e3);
+  if (r.Has("band") && !(w.band[0] > 0 && w.band[1] > w.band[0]))
+    r.Fail(t->get("band"), "band",
+           "expected [lowest, highest] omega in rad/s with 0 < lowest < highest, got [" +
+               TableReader::Fmt(w.band[0]) + ", " + TableReader::Fmt(w.band[1]) + "]");
   if (drawn) {
     w.seed = static_cast<std::uint64_t>(r.Integer("seed", 1, 0, 2147483647, false));
-    w.components = r.Integer("components", 200, 1, 20000, false);
-    w.band = r.Pair("band", {0, 0}, false, false, " ([lowest, highest] omega in rad/s)", 1e3);
-    if (r.Has("band") && !(w.band[0] > 0 && w.band[1] > w.band[0]))
-      r.Fail(t->get("band"), "band",
-             "expected [lowest, highest] omega in rad/s with 0 < lowest < highest, got [" +
-                 TableReader::Fmt(w.band[0]) + ", " + TableReader::Fmt(w.band[1]) + "]");
+    w.components = r.Integer("components", 200, 1, kMaxSeaComponents, false);
     w.spreading = r.Ranged("spreading", 0.0, false, 0.0, 1000.0,
                            " (s of the cos-2s spreading function; 0: long-crested)");
   } else {
@@ -255,7 +318,7 @@ void ReadSea(TableReader& r, const toml::table* t, SceneDef& scene, const std::s
   try {
     if (w.sea == SeaKind::kRecord) {
       sea = RecordComponents(w.record_t, w.record_eta, w.record_point[0], w.record_point[1],
-                             w.heading * M_PI / 180.0, g, w.depth);
+                             w.heading * M_PI / 180.0, g, w.depth, w.band[0], w.band[1]);
     } else {
       if (w.sea == SeaKind::kTable) {
         spec.kind = SpectrumKind::kTable;
@@ -581,45 +644,76 @@ void FollowWave(const WavesDef& w, double gravity, EndDef& end) {
   const double deg = M_PI / 180.0;
   const std::array<double, 2>* pairs[6] = {&end.x_rao,  &end.y_rao,  &end.z_rao,
                                            &end.rx_rao, &end.ry_rao, &end.rz_rao};
-  auto raos = [&](double omega, double heading_rad) {
-    if (end.rao_table) return RaoAt(*end.rao_table, omega, heading_rad / deg);
-    std::array<std::array<double, 2>, 6> out{};
-    for (int axis = 0; axis < 6; ++axis) out[axis] = *pairs[axis];
+  // The six responses [m or deg] to a component of amplitude a [m], frequency omega [rad/s]
+  // and direction `heading` [rad], as (cos, sin) amplitudes: r a (cos(beta), sin(beta)),
+  // beta(axis) its phase at the end's rest point with the RAO's phase added.
+  using Responses = std::array<std::array<double, 2>, 6>;
+  auto respond = [&](double a, double omega, double heading, auto beta) {
+    Responses r{};
+    if (end.rao_table) {
+      r = RaoAt(*end.rao_table, omega, heading / deg);
+    } else {
+      for (int axis = 0; axis < 6; ++axis) r[axis] = *pairs[axis];
+    }
+    Responses out;
+    for (int axis = 0; axis < 6; ++axis) {
+      const double b = beta(r[axis][1]);
+      out[axis] = {r[axis][0] * a * std::cos(b), r[axis][0] * a * std::sin(b)};
+    }
     return out;
   };
   end.period = w.period;
   end.ramp_rate = w.ramp_rate;
-  if (w.sea != SeaKind::kRegular) {
+  if (w.sea != SeaKind::kRegular) {  // one harmonic a component
     const SeaComponents& sea = *w.components_made;
     end.harmonics.clear();
     for (int i = 0; i < sea.size(); ++i) {
       const double along = sea.dir_x[i] * end.position[0] + sea.dir_z[i] * end.position[2];
-      const auto r = raos(sea.omega[i], std::atan2(sea.dir_z[i], sea.dir_x[i]));
+      const Responses r =
+          respond(sea.amplitude[i], sea.omega[i], std::atan2(sea.dir_z[i], sea.dir_x[i]),
+                  [&](double p) { return sea.k[i] * along + sea.phase[i] + p * deg; });
       std::array<double, 13> h{};
       h[0] = sea.omega[i];
       for (int axis = 0; axis < 6; ++axis) {
-        const double beta = sea.k[i] * along + sea.phase[i] + r[axis][1] * deg;
-        h[1 + 2 * axis] = r[axis][0] * sea.amplitude[i] * std::cos(beta);
-        h[2 + 2 * axis] = r[axis][0] * sea.amplitude[i] * std::sin(beta);
+        h[1 + 2 * axis] = r[axis][0];
+        h[2 + 2 * axis] = r[axis][1];
       }
       end.harmonics.push_back(h);
     }
     return;
   }
+  // The regular wave: its one component as the trochoid's amplitudes, the offsets [m] and a
+  // body's angles [deg].
   const double omega = 2.0 * M_PI / w.period;
   const double k = WaveNumber(omega, gravity, w.depth);
-  const double A = 0.5 * w.height;
-  // theta at the end's rest point: k e . x0 with e the heading's direction.
-  const Vec e = Horizontal(w.heading * deg);
+  const Vec e = Horizontal(w.heading * deg);  // theta at the rest point: k e . x0
   const double along = e.x() * end.position[0] + e.z() * end.position[2];
-  const auto r = raos(omega, w.heading * deg);
-  // The offsets [m] and a body's angles [deg], each from its RAO [m/m or deg/m].
+  const Responses r = respond(0.5 * w.height, omega, w.heading * deg,
+                              [&](double p) { return k * along + (w.phase + p) * deg; });
   std::array<double, 2>* amps[6] = {&end.x_amplitudes,  &end.y_amplitudes,  &end.z_amplitudes,
                                     &end.rx_amplitudes, &end.ry_amplitudes, &end.rz_amplitudes};
-  for (int axis = 0; axis < 6; ++axis) {
-    const double beta = k * along + (w.phase + r[axis][1]) * deg;
-    *amps[axis] = {r[axis][0] * A * std::cos(beta), r[axis][0] * A * std::sin(beta)};
+  for (int axis = 0; axis < 6; ++axis) *amps[axis] = r[axis];
+}
+
+// A motion table named by `key` ("file": a table motion's; "drift_file": the table added to a
+// wave-following end's motion) into end.table_file, end.table and end.interpolation.
+void ReadMotionFile(TableReader& r, const toml::table* t, EndDef& end, const std::string& file,
+                    bool body, const char* key) {
+  const std::string name = r.String(key, "", true);
+  if (name.empty() || name.find('\0') != std::string::npos)
+    r.Fail(t->get(key), key,
+           std::string("expected the name of a CSV file t,x,y") +
+               (body ? " (or t,x,y,z,rx,ry,rz)" : "") + ", got " + Quote(name));
+  const std::filesystem::path base = std::filesystem::path(file).parent_path();
+  end.table_file = (base / name).string();
+  try {
+    end.table = ReadMotionTable(end.table_file, body);
+  } catch (const Error& e) {
+    r.Fail(t->get(key), key, e.what());
   }
+  end.interpolation = r.Choice("interpolation", "spline", {"spline", "linear"}) == "linear"
+                          ? TableInterpolation::kLinear
+                          : TableInterpolation::kSpline;
 }
 
 // An end's (or a point's, or a body's: `body`, whose angles may move too) position and motion
@@ -661,6 +755,7 @@ std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const 
       end.rz_rao = ReadRao(r, "rz_rao", "deg/m");
     }
     FollowWave(scene.waves, scene.environment.gravity, end);
+    if (r.Has("drift_file")) ReadMotionFile(r, t, end, file, body, "drift_file");
   }
   if (motion == "fixed") end.motion = EndMotionKind::kFixed;
   if (motion == "free") end.motion = EndMotionKind::kFree;
@@ -680,21 +775,7 @@ std::string ReadMotion(TableReader& r, const toml::table* t, EndDef& end, const 
   }
   if (motion == "table") {
     end.motion = EndMotionKind::kTable;
-    const std::string name = r.String("file", "", true);
-    if (name.empty() || name.find('\0') != std::string::npos)
-      r.Fail(t->get("file"), "file",
-             std::string("expected the name of a CSV file t,x,y") +
-                 (body ? " (or t,x,y,z,rx,ry,rz)" : "") + ", got " + Quote(name));
-    const std::filesystem::path base = std::filesystem::path(file).parent_path();
-    end.table_file = (base / name).string();
-    try {
-      end.table = ReadMotionTable(end.table_file, body);
-    } catch (const Error& e) {
-      r.Fail(t->get("file"), "file", e.what());
-    }
-    end.interpolation = r.Choice("interpolation", "spline", {"spline", "linear"}) == "linear"
-                            ? TableInterpolation::kLinear
-                            : TableInterpolation::kSpline;
+    ReadMotionFile(r, t, end, file, body, "file");
   }
   return motion;
 }
@@ -917,7 +998,7 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
                    " characters (it is drawn on one line of the film), got " +
                    std::to_string(characters));
   }
-  ReadEnvironment(top, scene);
+  ReadEnvironment(top, scene, file);
   ReadSeabed(top, scene);
   ReadWaves(top, scene, file);
 

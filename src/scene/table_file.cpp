@@ -1,16 +1,12 @@
 #include "scene/table_file.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <filesystem>
-#include <memory>
 
 #include "core/error.h"
 #include "scene/scene_limits.h"
+#include "scene/table_lines.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
@@ -69,33 +65,16 @@ bool ParseRow(const std::string& line, int columns, std::array<double, 7>& row) 
   return true;
 }
 
-// The line as it may be shown: escaped, and cut if long.
-std::string Shown(const std::string& line) {
-  constexpr std::size_t kShown = 60;
-  return line.size() <= kShown ? QuoteText(line) : QuoteText(line.substr(0, kShown)) + "...";
-}
-
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-
 }  // namespace
 
 std::vector<std::array<double, 7>> ReadMotionTable(const std::string& path, bool angles) {
   const std::string name = EscapeText(path);
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw Error(name + ": is a directory; expected a CSV file of rows t,x,y or t,x,y,z");
-  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-  if (!file)
-    throw Error(name + ": cannot open the motion table: " + std::strerror(errno));
 
   std::vector<std::array<double, 7>> rows;
   bool header = false;      // the first row was the header "t,x,y", "t,x,y,z" or a body's
   bool first = true;        // no row (header or data) seen yet
   int columns = 3;          // t,x,y, t,x,y,z or t,x,y,z,rx,ry,rz: the header's, or the first row's
   long number = 0;          // line number
-  std::uintmax_t bytes = 0;
   auto where = [&] { return name + ":" + std::to_string(number) + ": "; };
   auto names = [&] {
     return std::string(columns == 7 ? kHeaderTurn : columns == 4 ? kHeader3D : kHeader);
@@ -109,15 +88,15 @@ std::vector<std::array<double, 7>> ReadMotionTable(const std::string& path, bool
     return header ? " (after the header row \"" + names() + "\")"
                   : " (this table has no header row \"" + names() + "\")";
   };
-  auto take = [&](std::string line) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+  auto take = [&](std::string&& line, long line_number) {
+    number = line_number;
     const std::size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#') return;  // blank or comment
     std::array<double, 7> row{};
     const long commas = std::count(line.begin(), line.end(), ',');
     if (first && !angles && (line == kHeaderTurn || commas == 6))
       throw Error(where() + "seven columns t,x,y,z,rx,ry,rz turn a body; an end's or a point's "
-                  "table has rows t,x,y or t,x,y,z (in s and m), got " + Shown(line));
+                  "table has rows t,x,y or t,x,y,z (in s and m), got " + ShownLine(line));
     if (first && (line == kHeader || line == kHeader3D || line == kHeaderTurn)) {
       header = true;
       first = false;
@@ -129,27 +108,27 @@ std::vector<std::array<double, 7>> ReadMotionTable(const std::string& path, bool
     if (!ParseRow(line, columns, row)) {
       if (first)
         throw Error(where() + "expected a header row exactly " + forms + ", or numbers " +
-                    number_forms + " (finite decimals, separated by commas), got " + Shown(line));
+                    number_forms + " (finite decimals, separated by commas), got " + ShownLine(line));
       throw Error(where() + "expected " +
                   std::string(columns == 3 ? "three" : columns == 4 ? "four" : "seven") +
                   " numbers " + names() + " " + units() +
-                  " (finite decimals, separated by commas)" + which() + ", got " + Shown(line));
+                  " (finite decimals, separated by commas)" + which() + ", got " + ShownLine(line));
     }
     first = false;
     for (double v : row)
       if (!std::isfinite(v))
-        throw Error(where() + "expected finite numbers, got " + Shown(line));
+        throw Error(where() + "expected finite numbers, got " + ShownLine(line));
     if (!(std::abs(row[0]) <= kMaxTime))
       throw Error(where() + "expected a time t from -" + FormatNumber(kMaxTime) + " to " +
                   FormatNumber(kMaxTime) + " s, got " + FormatNumber(row[0]));
     if (!(std::abs(row[1]) <= kMaxLength && std::abs(row[2]) <= kMaxLength &&
           std::abs(row[3]) <= kMaxLength))
       throw Error(where() + "expected offsets from -" + FormatNumber(kMaxLength) + " to " +
-                  FormatNumber(kMaxLength) + " m, got " + Shown(line));
+                  FormatNumber(kMaxLength) + " m, got " + ShownLine(line));
     if (!(std::abs(row[4]) <= kMaxPhase && std::abs(row[5]) <= kMaxPhase &&
           std::abs(row[6]) <= kMaxPhase))
       throw Error(where() + "expected angles rx, ry, rz from -" + FormatNumber(kMaxPhase) +
-                  " to " + FormatNumber(kMaxPhase) + " degrees, got " + Shown(line));
+                  " to " + FormatNumber(kMaxPhase) + " degrees, got " + ShownLine(line));
     if (!rows.empty() && !(row[0] > rows.back()[0]))
       throw Error(where() + "expected the time to increase, got " + FormatNumber(row[0]) +
                   " after " + FormatNumber(rows.back()[0]));
@@ -158,40 +137,9 @@ std::vector<std::array<double, 7>> ReadMotionTable(const std::string& path, bool
                   " rows; expected at most that many");
     rows.push_back(row);
   };
-
-  std::string line;
-  char buffer[1 << 16];
-  for (;;) {
-    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get());
-    if (n == 0) {
-      if (std::ferror(file.get()))
-        throw Error(name + ": cannot read the motion table: " + std::strerror(errno));
-      break;
-    }
-    bytes += n;
-    if (bytes > kMaxTableBytes)
-      throw Error(name + ": larger than " + std::to_string(kMaxTableBytes >> 20) +
-                  " MiB; expected a motion table of at most that size (" +
-                  FormatNumber(static_cast<double>(kMaxTableRows)) + " rows)");
-    for (std::size_t i = 0; i < n; ++i) {
-      if (buffer[i] == '\n') {
-        ++number;
-        take(std::move(line));
-        line.clear();
-        continue;
-      }
-      if (line.size() >= kMaxTableLineLength) {
-        ++number;
-        throw Error(where() + "longer than " + std::to_string(kMaxTableLineLength) +
-                    " characters; expected a row " + names() + ", got " + Shown(line));
-      }
-      line += buffer[i];
-    }
-  }
-  if (!line.empty()) {
-    ++number;
-    take(std::move(line));
-  }
+  ReadTableLines(path, "the motion table",
+                 "rows t,x,y or t,x,y,z" + std::string(angles ? " or t,x,y,z,rx,ry,rz" : ""),
+                 take);
   if (rows.size() < 2)
     throw Error(name + ": expected at least two rows " + names() + which() + ", found " +
                 std::to_string(rows.size()));

@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/end_motion.h"
 #include "core/error.h"
+#include "core/smooth_schedule.h"
 #include "test_support.h"
 
 namespace cablefilm {
@@ -45,6 +47,43 @@ TEST(EndMotion, TrochoidFollowsEquation3) {
   // Late on the ramp is done: a circle of radius 1.83 m about rest (a = d, b = -c would be
   // exact; here only check it stays within the amplitude bound).
   EXPECT_LT((e.Position(60.0) - rest).norm(), std::hypot(a, b) + std::hypot(c, d) + std::hypot(ez, fz));
+}
+
+// A table added to eq. (3) (a drift on a wave-frequency motion): position, velocity and
+// acceleration the trochoid's plus the linear table's (its slope between rows, no
+// acceleration), to round-off; its rows are the motion's kinks; the live view's scale and
+// clock act on the trochoid only (the drift is real time).
+TEST(EndMotion, AnAddedTableIsTheSumOfBoth) {
+  const Vec rest(80.0, 30.48, -4.0);
+  const double w = 2 * M_PI / 10, nu = 0.5;
+  const EndMotion wave = EndMotion::Trochoid(rest, Vec(1.5, 0.4, 0.2), Vec(0.3, 1.2, -0.1), w, nu);
+  const EndMotion drift = EndMotion::Table(
+      Vec::Zero(), {0.0, 100.0, 250.0}, {Vec::Zero(), Vec(12.0, 0.0, 3.0), Vec(2.0, 0.0, -4.0)},
+      TableInterpolation::kLinear);
+  const EndMotion both = wave.WithAdded(drift);
+  EXPECT_TRUE(both.has_added());
+  for (double t : {0.0, 1.0, 37.5, 100.0, 140.0, 250.0, 300.0}) {
+    // By hand: 0.12 m/s along x and 0.03 along z to t = 100 s, then (-10, 0, -7) over 150 s.
+    const Vec offset = t <= 100 ? Vec(0.12 * t, 0, 0.03 * t)
+                       : t <= 250 ? Vec(12.0 - (t - 100) / 15, 0, 3.0 - 7.0 * (t - 100) / 150)
+                                  : Vec(2.0, 0, -4.0);
+    const Vec rate = t <= 100 ? Vec(0.12, 0, 0.03) : t <= 250 ? Vec(-1.0 / 15, 0, -7.0 / 150)
+                                                               : Vec::Zero();
+    EXPECT_LT((both.Position(t) - wave.Position(t) - offset).norm(), 1e-12) << t;
+    EXPECT_LT((both.Velocity(t) - wave.Velocity(t) - rate).norm(), 1e-14) << t;
+    EXPECT_LT((both.Acceleration(t) - wave.Acceleration(t)).norm(), 1e-14) << t;
+  }
+  EXPECT_EQ(both.NextKink(50.0), 100.0);  // the table's rows, where a step should land
+  EXPECT_EQ(both.NextKink(100.0), 250.0);
+  EXPECT_EQ(wave.NextKink(50.0), std::numeric_limits<double>::infinity());
+  // Twice the amplitude (the live view's scale): the trochoid's offsets double, the drift not.
+  SmoothSchedule scale(2.0), clock(1.0);
+  const double t = 140.0;
+  const Vec doubled = rest + 2.0 * (wave.Position(t) - rest);
+  EXPECT_LT((both.Evaluate(t, 0, scale, clock) - doubled - (both.Position(t) - wave.Position(t)))
+                .norm(),
+            1e-12);
+  EXPECT_THROW(wave.WithAdded(wave), Error);  // only a plain table adds
 }
 
 TEST(EndMotion, FixedAndFreeHoldStill) {

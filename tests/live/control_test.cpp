@@ -179,6 +179,16 @@ TEST(ParseControl, NoDrivenEndRefusesItsControls) {
   EXPECT_NO_THROW(ParseControl(R"({"current": 1})", l));
 }
 
+// A current over time is its table's: neither its speed nor its heading has a control.
+TEST(ParseControl, ACurrentOverTimeRefusesTheCurrentControls) {
+  ControlLimits l = Limits();
+  EXPECT_NO_THROW(ParseControl(R"({"current": 1, "current_heading": 30})", l));
+  l.current_history = true;
+  const std::string why = "the current follows the scene's environment.current_file";
+  EXPECT_EQ(Refusal(R"({"current": 1})", l), "current: " + why);
+  EXPECT_EQ(Refusal(R"({"current_heading": 30})", l), "current_heading: " + why);
+}
+
 // The waves' height: only with [waves], from 0 to the scene's breaking height.
 TEST(ParseControl, WaveHeightWithinTheBreakingHeight) {
   ControlLimits l = Limits();

@@ -14,46 +14,15 @@
 #include "scene/build_model.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
+#include "../scene/sea_chain_scene.h"
 
 namespace cablefilm {
 namespace {
 
-// A chain from the bed to a fairlead that heaves with a JONSWAP sea (Hs 4 m, Tp 10 s), 30 s.
-const char* kScene = R"(title = "chain in a storm"
-[environment]
-fluid_density = 1025.0
-[seabed]
-y = -100.0
-[waves]
-spectrum = "jonswap"
-hs = 4.0
-tp = 10.0
-seed = 2
-components = 100
-[[material]]
-name = "chain"
-diameter = 0.137
-area = 0.01465
-mass_per_length = 115.0
-youngs_modulus = 3.365e10
-[cable]
-[[cable.section]]
-material = "chain"
-length = 550.0
-segments = 40
-[ends.start]
-position = [-500.0, -100.0]
-[ends.end]
-position = [0.0, -10.0]
-motion = "wave"
-x_rao = [0.3, 90.0]
-y_rao = [0.4, 0.0]
-[simulation]
-duration = 30.0
-[output]
-interval = 0.5
-film = false
-)";
+// The chain with its fairlead heaving and surging with a JONSWAP sea (Hs 4 m, Tp 10 s), 30 s.
+const std::string kScene = SeaChainScene(
+    "spectrum = \"jonswap\"\nhs = 4.0\ntp = 10.0\nseed = 2\ncomponents = 100",
+    "x_rao = [0.3, 90.0]\ny_rao = [0.4, 0.0]", 30.0, "interval = 0.5");
 
 // The carried kinematics err by at most about (reach)^2 / 2 = 5e-5 of the shortest component's
 // part (far less for the energetic ones, whose k and omega are several times smaller), and the

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <memory>
 #include <cstdlib>
 #include <new>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "../core/test_support.h"
 #include "core/equilibrium.h"
 #include "core/explicit_step.h"
+#include "core/sea_components.h"
 #include "core/stability.h"
 #include "core/step.h"
 #include "scene/build_model.h"
@@ -35,21 +37,37 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 namespace cablefilm {
 namespace {
 
+// The water: still, a regular wave, or an irregular sea (its kinematics carried from their
+// last exact evaluation, and evaluated afresh as the stations move away: both paths stepped).
+enum class Water { kStill, kRegular, kIrregular };
+
 long AllocationsWhileStepping(Scheme kind, CableModelKind model, double dt,
-                              double error_tolerance, bool waves = false,
+                              double error_tolerance, Water water = Water::kStill,
                               const char* scene_file = "polachek1963.toml",
                               bool turning_end = false) {
   SceneDef scene = LoadScene(std::string(CABLEFILM_SOURCE_DIR) + "/scenes/" + scene_file);
   scene.lines[0].model = model;
   if (!scene.seabed.present)
     scene.environment.current = 0.5;  // every force term active: drag with current, prisms
-  if (waves) {  // and the waves' terms, the surface 2.5 m above the moving end's rest
+  if (water != Water::kStill) {  // and the waves' terms, the surface 2.5 m above the moving end
     scene.waves.present = true;
     scene.waves.height = 2;
     scene.waves.period = 8;
     scene.waves.depth = 50;
     scene.waves.surface_y = 33;
     scene.waves.ramp_rate = 0.5;
+  }
+  if (water == Water::kIrregular) {  // a JONSWAP sea of Hs 2 m, Tp 8 s in 50 components
+    SpectrumSpec spectrum;
+    spectrum.hs = 2;
+    spectrum.tp = 8;
+    spectrum.gamma = 3.3;
+    SeaDiscretization d;
+    d.components = 50;
+    d.spreading = 4;
+    scene.waves.sea = SeaKind::kJonswap;
+    scene.waves.components_made = std::make_shared<const SeaComponents>(
+        SpectrumComponents(spectrum, d, scene.environment.gravity, scene.waves.depth));
   }
   LineModel m = LineOf(scene);
   if (turning_end)  // its far end a point 3 m from a driven body's reference point, turning
@@ -91,7 +109,7 @@ TEST(NoAllocation, ImplicitStepFixedAndAdaptive) {
 // without allocating.
 TEST(NoAllocation, ImplicitStepWithATurningEnd) {
   EXPECT_EQ(AllocationsWhileStepping(Scheme::kImplicit, CableModelKind::kElastic, 1.0 / 30, 1e-5,
-                                     false, "polachek1963.toml", true),
+                                     Water::kStill, "polachek1963.toml", true),
             0);
 }
 
@@ -107,16 +125,19 @@ TEST(NoAllocation, InextensibleStepUnderErrorControl) {
             0);
 }
 
-TEST(NoAllocation, EverySchemeInWaves) {
-  EXPECT_EQ(AllocationsWhileStepping(Scheme::kExplicit, CableModelKind::kElastic, 2e-4, 0,
-                                     true),
-            0);
-  EXPECT_EQ(AllocationsWhileStepping(Scheme::kImplicit, CableModelKind::kElastic, 1.0 / 30,
-                                     1e-5, true),
-            0);
-  EXPECT_EQ(AllocationsWhileStepping(Scheme::kInextensible, CableModelKind::kInextensible,
-                                     1.0 / 30, 1e-6, true),
-            0);
+TEST(NoAllocation, EverySchemeInWavesAndAnIrregularSea) {
+  for (const Water water : {Water::kRegular, Water::kIrregular}) {
+    SCOPED_TRACE(water == Water::kRegular ? "regular wave" : "irregular sea");
+    EXPECT_EQ(AllocationsWhileStepping(Scheme::kExplicit, CableModelKind::kElastic, 2e-4, 0,
+                                       water),
+              0);
+    EXPECT_EQ(AllocationsWhileStepping(Scheme::kImplicit, CableModelKind::kElastic, 1.0 / 30,
+                                       1e-5, water),
+              0);
+    EXPECT_EQ(AllocationsWhileStepping(Scheme::kInextensible, CableModelKind::kInextensible,
+                                       1.0 / 30, 1e-6, water),
+              0);
+  }
 }
 
 // On the seabed with the stick-slip friction (its anchors move as steps are accepted), in waves
@@ -124,13 +145,13 @@ TEST(NoAllocation, EverySchemeInWaves) {
 TEST(NoAllocation, EverySchemeOnTheSeabedWithStickSlipFriction) {
   const char* grounded = "grounded_mooring.toml";
   EXPECT_EQ(AllocationsWhileStepping(Scheme::kExplicit, CableModelKind::kElastic, 2e-4, 0,
-                                     false, grounded),
+                                     Water::kStill, grounded),
             0);
   EXPECT_EQ(AllocationsWhileStepping(Scheme::kImplicit, CableModelKind::kElastic, 1.0 / 30,
-                                     1e-4, false, grounded),
+                                     1e-4, Water::kStill, grounded),
             0);
   EXPECT_EQ(AllocationsWhileStepping(Scheme::kInextensible, CableModelKind::kInextensible,
-                                     1.0 / 30, 1e-4, false, grounded),
+                                     1.0 / 30, 1e-4, Water::kStill, grounded),
             0);
 }
 

@@ -5,6 +5,7 @@
 // component over the components.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,44 +18,16 @@
 #include "core/waves.h"
 #include "scene/build_model.h"
 #include "scene/scene_loader.h"
+#include "sea_chain_scene.h"
 
 namespace cablefilm {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// A scene of one chain from the bed to a fairlead that follows the waves, with `waves` as its
-// [waves] table and `fairlead` the fairlead's motion keys.
+// The chain in a sea of `waves`, its fairlead moving by `fairlead`, for 60 s.
 std::string Scene(const std::string& waves, const std::string& fairlead) {
-  return R"(title = "sea"
-[environment]
-fluid_density = 1025.0
-[seabed]
-y = -100.0
-[waves]
-)" + waves + R"(
-[[material]]
-name = "chain"
-diameter = 0.137
-area = 0.01465
-mass_per_length = 115.0
-youngs_modulus = 3.365e10
-[cable]
-[[cable.section]]
-material = "chain"
-length = 550.0
-segments = 40
-[ends.start]
-position = [-500.0, -100.0]
-[ends.end]
-position = [0.0, -10.0]
-motion = "wave"
-)" + fairlead + R"(
-[simulation]
-duration = 60.0
-[output]
-film = false
-)";
+  return SeaChainScene(waves, fairlead, 60.0);
 }
 
 // A folder of its own for the test's files.
@@ -145,6 +118,50 @@ TEST(SeaScene, RecordIsReproducedAtItsPoint) {
   EXPECT_LT(worst, 1e-9);
 }
 
+// A record's band filters it (the components outside it left out), a record of more
+// components than a sea may hold is refused naming waves.file and the band that would take it,
+// and a record shorter than the run is said to repeat.
+TEST(SeaScene, RecordBandFiltersAndBoundsIt) {
+  const auto dir = Folder("record_band");
+  const auto write = [&](const std::string& name, int n, double dt) {
+    std::ofstream csv(dir / name);
+    csv << "t,eta\n";
+    for (int i = 0; i < n; ++i) {  // components 9, 23 and 61 of the record's Fourier series
+      const double t = i * dt, span = n * dt;
+      csv << t << "," << 0.8 * std::cos(2 * kPi * 9 * t / span) +
+                             0.5 * std::sin(2 * kPi * 23 * t / span) +
+                             0.01 * std::cos(2 * kPi * 61 * t / span) + 1e-3 * std::sin(i * i)
+          << "\n";
+    }
+  };
+  write("short.csv", 400, 0.1);  // 40 s: omega_j = 2 pi j / 40 s, 9 -> 1.41, 23 -> 3.61 rad/s
+  const std::string file = (dir / "sea.toml").string();
+  const std::string record = "spectrum = \"record\"\nfile = \"short.csv\"";
+  const SceneDef all = ParseScene(Scene(record, "y_rao = [1.0, 0.0]"), file);
+  const SceneDef band = ParseScene(Scene(record + "\nband = [1.0, 2.0]", "y_rao = [1.0, 0.0]"), file);
+  EXPECT_GT(all.waves.components_made->size(), 100);  // the noise's 199 (1e-3 m of it)
+  ASSERT_EQ(band.waves.components_made->size(), 6);   // j = 7 to 12: 1.10 to 1.88 rad/s
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_GE(band.waves.components_made->omega[i], 1.0);
+    EXPECT_LE(band.waves.components_made->omega[i], 2.0);
+  }
+  std::vector<std::string> notes, warnings;
+  DescribeTables(all, &notes, &warnings);  // 60 s of run, 40 s of record
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("waves.file"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("repeats the record after 40 s"), std::string::npos) << warnings[0];
+
+  write("long.csv", 50000, 0.05);  // 24 999 components, more than 20 000
+  const std::string big = "spectrum = \"record\"\nfile = \"long.csv\"";
+  const std::string message = Expect(Scene(big, "y_rao = [1.0, 0.0]"), file);
+  EXPECT_NE(message.find("waves.file"), std::string::npos) << message;
+  EXPECT_NE(message.find("more than 20000"), std::string::npos) << message;
+  EXPECT_NE(message.find("band"), std::string::npos) << message;
+  EXPECT_EQ(ParseScene(Scene(big + "\nband = [0.2, 2.0]", "y_rao = [1.0, 0.0]"), file)
+                .waves.components_made->size(),
+            716);  // j = 80 to 795 at 2 pi / 2500 s: ceil(0.2 / d omega) to floor(2 / d omega)
+}
+
 // A one-row RAO table is the x_rao pair: the end's motion the same to round-off, in the regular
 // wave; in a sea, a table of a heave RAO falling with frequency moves the end by the sum over
 // the components of r(omega_i) a_i cos(theta_i(x0, t) + p(omega_i)), computed here from the
@@ -204,6 +221,67 @@ TEST(SeaScene, EndFollowsTheSeaThroughItsRaos) {
   }
   EXPECT_LT(worst, 1e-9);
   EXPECT_NEAR(sum2 / samples, variance, 3 * 0.03 * variance);
+}
+
+
+// A drift table on a wave-following end (drift_file, joined linearly): the end's motion is the
+// waves' plus the table's offsets, by hand at and between its rows; in an irregular sea as in
+// the regular wave; its rows are named in check's notes.
+TEST(SeaScene, ADriftIsAddedToTheWavesMotion) {
+  const auto dir = Folder("drift");
+  std::ofstream(dir / "drift.csv") << "t,x,y,z\n0,0,0,0\n300,-20,0.5,6\n600,-20,0.5,6\n";
+  const std::string file = (dir / "sea.toml").string();
+  for (const std::string& waves :
+       {std::string("height = 4.0\nperiod = 10.0"),
+        std::string("spectrum = \"jonswap\"\nhs = 4.0\ntp = 10.0\ncomponents = 50")}) {
+    SCOPED_TRACE(waves);
+    const std::string rao = "x_rao = [0.8, 90.0]\ny_rao = [1.0, 0.0]";
+    const SceneDef plain = ParseScene(Scene(waves, rao), file);
+    const SceneDef drifting = ParseScene(
+        Scene(waves, rao + "\ndrift_file = \"drift.csv\"\ninterpolation = \"linear\""), file);
+    const EndMotion a = MakeEndMotion(plain.points[1].motion);
+    const EndMotion b = MakeEndMotion(drifting.points[1].motion);
+    for (double t : {0.0, 75.0, 300.0, 451.0}) {
+      const double f = std::min(t, 300.0) / 300.0;
+      const Vec offset(-20.0 * f, 0.5 * f, 6.0 * f);
+      EXPECT_LT((b.Position(t) - a.Position(t) - offset).norm(), 1e-12) << t;
+      const Vec rate = t <= 300 ? Vec(Vec(-20.0, 0.5, 6.0) / 300.0) : Vec(Vec::Zero());
+      EXPECT_LT((b.Velocity(t) - a.Velocity(t) - rate).norm(), 1e-13) << t;
+    }
+    std::vector<std::string> notes, warnings;
+    DescribeTables(drifting, &notes, &warnings);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_NE(notes[0].find("drift table drift.csv, 3 rows"), std::string::npos) << notes[0];
+    EXPECT_TRUE(warnings.empty());  // at rest at its last row
+  }
+  // Where a drift_file is not expected, or not readable: named.
+  const std::string bad = Expect(
+      Scene("height = 4.0\nperiod = 10.0", "y_rao = [1.0, 0.0]\ndrift_file = \"none.csv\""), file);
+  EXPECT_NE(bad.find("ends.end.drift_file"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("none.csv"), std::string::npos) << bad;
+}
+
+
+// A body's drift turns it too: its angle columns added to the waves' angles (in radians), or
+// alone where the waves do not turn it.
+TEST(SeaScene, ADriftTurnsABodyToo) {
+  EndDef e;
+  e.motion = EndMotionKind::kTrochoid;
+  e.follows_wave = true;
+  e.period = 10.0;
+  e.ramp_rate = 0.4;
+  e.table = {{0, 0, 0, 0, 0, 0, 0}, {100, 1, 0, 0, 2, 0, -4}};
+  e.interpolation = TableInterpolation::kLinear;
+  const Vec rest(0.1, 0.0, 0.2);
+  const double deg = kPi / 180;
+  const EndMotion alone = MakeTurnMotion(e, rest);  // no wave angles: the drift's
+  EXPECT_LT((alone.Position(50.0) - rest - Vec(1.0, 0.0, -2.0) * deg).norm(), 1e-15);
+  e.rx_amplitudes = {3.0, 0.0};  // 3 degrees of roll in the wave
+  const EndMotion both = MakeTurnMotion(e, rest);
+  e.table.clear();
+  const EndMotion wave = MakeTurnMotion(e, rest);
+  EXPECT_LT((both.Position(50.0) - wave.Position(50.0) - Vec(1.0, 0.0, -2.0) * deg).norm(),
+            1e-15);
 }
 
 }  // namespace
