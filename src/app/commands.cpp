@@ -13,6 +13,7 @@
 #include "app/scene_summary.h"
 #include "io/out_dir_lock.h"
 #include "app/run_files.h"
+#include "run/peak_windows.h"
 #include "run/run.h"
 #include "scene/build_model.h"
 #include "scene/film_settings.h"
@@ -39,20 +40,70 @@ class ProgressSink : public RowSink {
   ProgressLine line_;
 };
 
-// The snap check of a run (RefineStepControl): the run again from its initial state, in
-// memory, its step control stricter; sets its summary's refinement, refined_peak,
-// refined_peak_change.
-void CheckPeakUnderRefinement(const SceneDef& scene, Run& run) {
+// The snap check of a long run refines only windows around its highest peaks: spans of
+// kPeakSpan [s] (whole rows), the kPeakWindows spans with the highest row peaks, each run again
+// from the checkpoint one span before it (the lead-in that brings the ringing of the snaps
+// before it). A run of fewer than kLeastSpans spans, or with free bodies (whose motion a
+// checkpoint of the lines does not hold), is run again whole.
+constexpr double kPeakSpan = 60;
+constexpr int kPeakWindows = 3;
+constexpr long kLeastSpans = 10;
+
+// The windows' sink for a run whose snap check may refine windows; null when it would run
+// again whole.
+std::unique_ptr<PeakWindows> PeakWindowsOf(const Run& run) {
+  const long span = static_cast<long>(std::ceil(kPeakSpan / run.grid.interval - 1e-9));
+  if (!run.model.free_bodies.empty() || run.grid.outputs < kLeastSpans * span) return nullptr;
+  return std::make_unique<PeakWindows>(run.grid.interval, span, kPeakWindows);
+}
+
+// The snap check of a run (RefineStepControl): the run again, in memory, its step control
+// stricter, from its initial state, or from the checkpoints of `windows` over them alone; sets
+// its summary's refinement, refined_peak, refined_peak_change.
+void CheckPeakUnderRefinement(const SceneDef& scene, Run& run, const PeakWindows* windows) {
   RunSummary& s = run.summary;
   SceneDef refined = scene;
-  const std::string how = RefineStepControl(refined.simulation, s.tolerance, s.stats.snap_windows);
+  std::string how = RefineStepControl(refined.simulation, s.tolerance, s.stats.snap_windows);
   RunSummary rs;
   try {  // the run's own files are written: a failure here is reported, not thrown
-    Run again = RestartRun(refined, run);
-    ProgressSink progress("checking the peak under refinement (" + how + ")", again.grid.end());
-    ExecuteRun(again, {&progress});
-    progress.Finish();
-    rs = again.summary;
+    if (!windows) {
+      Run again = RestartRun(refined, run);
+      ProgressSink progress("checking the peak under refinement (" + how + ")", again.grid.end());
+      ExecuteRun(again, {&progress});
+      progress.Finish();
+      rs = again.summary;
+    } else {
+      const std::vector<PeakWindow> list = windows->Windows();
+      std::string spans;
+      rs.completed = true;
+      rs.peak = 0;
+      for (std::size_t k = 0; k < list.size() && rs.completed; ++k) {
+        const PeakWindow& w = list[k];
+        Run again = WindowRun(refined, run, w.states, w.first_row, w.last_row);
+        char label[160];
+        std::snprintf(label, sizeof label,
+                      "checking the peak under refinement (%s), window %zu of %zu: %.6g to %.6g s",
+                      how.c_str(), k + 1, list.size(), w.first_row * run.grid.interval,
+                      again.grid.end());
+        ProgressSink progress(label, again.grid.end());
+        ExecuteRun(again, {&progress});
+        progress.Finish();
+        const RunSummary& ws = again.summary;
+        rs.completed = ws.completed;
+        rs.failure = ws.failure;
+        rs.stats.steps += ws.stats.steps;
+        if (ws.peak > rs.peak) {
+          rs.peak = ws.peak;
+          rs.peak_t = ws.peak_t;
+        }
+        char span[64];
+        std::snprintf(span, sizeof span, "%s%.6g-%.6g s", spans.empty() ? "" : ", ",
+                      w.first_row * run.grid.interval, again.grid.end());
+        spans += span;
+      }
+      how += "; over the " + std::to_string(list.size()) + " windows of the highest peaks, " +
+             spans + ", from the run's states";
+    }
   } catch (const Error& e) {
     rs.completed = false;
     rs.failure = e.what();
@@ -121,7 +172,10 @@ Run SimulateToFiles(const SceneDef& scene, const Model& model, const std::string
   PrintInitialState(scene, run, suffix);
   RunFiles files(out_dir, suffix, run, MakeNetcdfInfo(scene, label.c_str(), run.grid.outputs + 1));
   ProgressSink progress(std::string("simulating (") + run.label + ")", run.grid.end());
-  ExecuteRun(run, {&files, &progress});
+  const std::unique_ptr<PeakWindows> windows = PeakWindowsOf(run);
+  std::vector<RowSink*> sinks{&files, &progress};
+  if (windows) sinks.push_back(windows.get());
+  ExecuteRun(run, sinks);
   progress.Finish();
   RunSummary& s = run.summary;
   if (!s.completed) {
@@ -144,9 +198,9 @@ Run SimulateToFiles(const SceneDef& scene, const Model& model, const std::string
   }
   for (const std::string& w : s.warnings) std::printf("warning: %s\n", w.c_str());
   if (s.stats.record.unresolved_snaps > 0) {
-    CheckPeakUnderRefinement(scene, run);
+    CheckPeakUnderRefinement(scene, run, windows.get());
   } else if (s.stats.snap_windows > 0) {
-    CheckPeakUnderRefinement(scene, run);
+    CheckPeakUnderRefinement(scene, run, windows.get());
     const std::string damped = RingingWarning(s);
     if (!damped.empty()) {
       s.warnings.push_back(damped);

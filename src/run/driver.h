@@ -36,8 +36,8 @@ class RowFunction : public RowSink {
 class RowStepper {
  public:
   RowStepper(const Model& m, Data& d, const Inputs& in, const TimeGrid& grid)
-      : m_(m), d_(d), in_(in), grid_(grid) {}
-  long row() const { return row_; }  // the row reached: 0 is the initial state
+      : m_(m), d_(d), in_(in), grid_(grid), row_(grid.first_output) {}
+  long row() const { return row_; }  // the row reached: grid.first_output is the initial state
   bool done() const { return row_ >= grid_.outputs; }
   // Steps to the next row, its time exactly row x interval (every line's; no round-off drift
   // over long runs). Throws BlowUpError, CancelledError (in.stop; the state part way to the
@@ -49,7 +49,7 @@ class RowStepper {
   Data& d_;
   const Inputs& in_;
   const TimeGrid& grid_;
-  long row_ = 0;
+  long row_;
 };
 
 // How a run ended.
@@ -60,7 +60,8 @@ struct RunEnd {
   double failure_time = 0; // [s]
 };
 
-// Hands the row of `d` (t = 0) to the sinks, then every row of the grid.
+// Hands the row of `d` (t = 0, or the grid's first_output's time) to the sinks, then every row
+// of the grid after it.
 RunEnd Drive(const Model& m, Data& d, const Inputs& in, const TimeGrid& grid,
              const std::vector<RowSink*>& sinks);
 

@@ -1,5 +1,6 @@
 #include "run/run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -143,6 +144,21 @@ Run RestartRun(const SceneDef& scene, const Run& run) {
   again.equilibrium_ms = run.equilibrium_ms;
   std::vector<State> states;
   for (const LineData& d : run.initial.lines) states.push_back(d.state);
+  StartFrom(scene, again, states);
+  return again;
+}
+
+Run WindowRun(const SceneDef& scene, const Run& run, const std::vector<State>& states,
+              long first_row, long last_row) {
+  Run again;
+  again.label = run.label;
+  again.model = run.model;
+  again.grid = ChooseTimeGrid(again.model, scene.simulation, scene.output.interval);
+  again.grid.first_output = first_row;
+  again.grid.outputs = std::min(last_row, again.grid.outputs);
+  again.inputs = run.inputs;
+  again.equilibrium = run.equilibrium;
+  again.equilibrium_ms = run.equilibrium_ms;
   StartFrom(scene, again, states);
   return again;
 }

@@ -34,6 +34,7 @@ struct TimeGrid {
   double dt = 0;             // the step asked of the scheme [s], interval / steps_per_output
   int steps_per_output = 1;
   long outputs = 0;          // outputs after t = 0; the run ends at outputs * interval
+  long first_output = 0;     // the row the run starts at (a window of a run: its first row)
   bool automatic = true;     // dt chosen by the program (else the scene's time_step)
   StabilityLimit limit;      // of the explicit scheme
   double safety_factor = 0.8;

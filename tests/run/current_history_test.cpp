@@ -53,8 +53,11 @@ film = false
 )";
 }
 
+// A folder of the test's own (ctest runs the tests at once, each in its own process).
 std::filesystem::path Folder() {
-  const auto dir = std::filesystem::temp_directory_path() / "cablefilm_current_history";
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("cablefilm_current_history_" +
+                    std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
