@@ -16,7 +16,6 @@ namespace cablefilm {
 namespace {
 
 constexpr double kG = 9.80665;  // [m/s^2]
-constexpr double kPi = 3.14159265358979323846;
 
 // A steep wave, so that the modes differ by much in a crest: T = 8 s in h = 30 m (L = 95 m,
 // k h = 1.98), H = 6 m (H / L = 0.063, Miche's limit 0.14). Along +x, no ramp (R = 1), phase 0.

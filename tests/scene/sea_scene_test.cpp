@@ -130,7 +130,7 @@ TEST(SeaScene, RecordBandFiltersAndBoundsIt) {
       const double t = i * dt, span = n * dt;
       csv << t << "," << 0.8 * std::cos(2 * kPi * 9 * t / span) +
                              0.5 * std::sin(2 * kPi * 23 * t / span) +
-                             0.01 * std::cos(2 * kPi * 61 * t / span) + 1e-3 * std::sin(i * i)
+                             0.01 * std::cos(2 * kPi * 61 * t / span) + 1e-3 * std::sin(static_cast<double>(i) * i)
           << "\n";
     }
   };
