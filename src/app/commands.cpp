@@ -13,6 +13,7 @@
 #include "app/scene_summary.h"
 #include "io/out_dir_lock.h"
 #include "app/run_files.h"
+#include "run/film_checkpoint.h"
 #include "run/peak_windows.h"
 #include "run/run.h"
 #include "scene/build_model.h"
@@ -162,9 +163,12 @@ void PrintRunEnd(const Run& run) {
 // `suffix` before each name's extension; the run keeps the largest tension of every row (for
 // the pictures) and what the film needs. A run cut short (summary.completed false) has
 // committed its rows under the .partial names; summary.failure then holds a blow-up's message
-// (empty: stopped by a signal).
+// (empty: stopped by a signal). `film_window` (null: no film): the film's window, whose start
+// the run keeps in *checkpoint (null for the whole run).
 Run SimulateToFiles(const SceneDef& scene, const Model& model, const std::string& out_dir,
-                    const std::string& suffix, const std::string& label) {
+                    const std::string& suffix, const std::string& label,
+                    const FilmWindow* film_window = nullptr,
+                    std::unique_ptr<FilmCheckpoint>* checkpoint = nullptr) {
   const TimeGrid grid = ChooseTimeGrid(model, scene.simulation, scene.output.interval);
   PrintScene(scene, model, grid);
   StaticsProgress statics;
@@ -175,6 +179,10 @@ Run SimulateToFiles(const SceneDef& scene, const Model& model, const std::string
   const std::unique_ptr<PeakWindows> windows = PeakWindowsOf(run);
   std::vector<RowSink*> sinks{&files, &progress};
   if (windows) sinks.push_back(windows.get());
+  if (film_window && checkpoint) {
+    *checkpoint = FilmCheckpoint::For(*film_window, run.grid);
+    if (*checkpoint) sinks.push_back(checkpoint->get());
+  }
   ExecuteRun(run, sinks);
   progress.Finish();
   RunSummary& s = run.summary;
@@ -238,16 +246,17 @@ int EndCutShort(const SceneDef& scene, const std::vector<const Run*>& runs,
 }
 
 // The pictures of finished runs: Figure 1 from every row, film or not (a film cut short leaves
-// it whole: it has every row); the film when asked.
+// it whole: it has every row); the film when asked, of its window from the runs' checkpoints.
 int DrawPictures(const SceneDef& scene, const std::vector<const Run*>& runs, bool film,
                  const FilmSettings& look, const RunOptions& options, const std::string& out_dir,
-                 RunReport* report) {
+                 RunReport* report, std::vector<const FilmCheckpoint*> starts = {}) {
   const PictureReport figure = WriteMaxTensionFigure(scene, runs, out_dir, true);
   if (report) report->figure = figure;
   if (!film) return 0;
   PictureReport shown;
-  const bool finished =
-      RenderFilm(scene, runs, MakeFilmRequest(look, out_dir, options.shader_dir), g_signal, &shown);
+  FilmRequest request = MakeFilmRequest(look, out_dir, options.shader_dir);
+  request.starts = std::move(starts);
+  const bool finished = RenderFilm(scene, runs, request, g_signal, &shown);
   if (report) report->film = shown;
   return finished ? 0 : InterruptedExitStatus();
 }
@@ -287,12 +296,14 @@ int RunCommand(const std::string& scene_path, const RunOptions& options, RunRepo
   OutDirLock lock;
   const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
-  const Run run = SimulateToFiles(scene, model, out_dir, "", ModelLawName(model));
+  std::unique_ptr<FilmCheckpoint> start;
+  const Run run = SimulateToFiles(scene, model, out_dir, "", ModelLawName(model),
+                                  film ? &look.look.window : nullptr, &start);
   if (report) report->summary = run.summary;
   const std::vector<const Run*> runs{&run};
   if (!run.summary.completed)
     return EndCutShort(scene, runs, run.summary.failure, out_dir, report);
-  return DrawPictures(scene, runs, film, look, options, out_dir, report);
+  return DrawPictures(scene, runs, film, look, options, out_dir, report, {start.get()});
 }
 
 int CompareCommand(const std::string& scene_path, const RunOptions& options) {
@@ -309,12 +320,20 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
   OutDirLock lock;
   const std::string out_dir = PrepareOutDir(scene, options, lock);
   InstallSignalHandlers();
-  const Run elastic = SimulateToFiles(scene, elastic_model, out_dir, "", "elastic");
+  std::unique_ptr<FilmCheckpoint> elastic_start, rigid_start;
+  const Run elastic = SimulateToFiles(scene, elastic_model, out_dir, "", "elastic",
+                                      film ? &look.look.window : nullptr, &elastic_start);
   std::vector<const Run*> runs{&elastic};
   if (!elastic.summary.completed)
     return EndCutShort(scene, runs, elastic.summary.failure, out_dir, nullptr);
-  const Run rigid =
-      SimulateToFiles(rigid_scene, rigid_model, out_dir, "_inextensible", "inextensible");
+  // The film's window is the first run's (about its peak): the second keeps the same rows' start.
+  FilmWindow rows = look.look.window;
+  if (!rows.whole()) {
+    const RowSpan span = WindowRows(rows, elastic.grid, elastic.summary.peak_t);
+    rows = FilmWindow{0, span.first * elastic.grid.interval, span.last * elastic.grid.interval};
+  }
+  const Run rigid = SimulateToFiles(rigid_scene, rigid_model, out_dir, "_inextensible",
+                                    "inextensible", film ? &rows : nullptr, &rigid_start);
   runs.push_back(&rigid);
   if (!rigid.summary.completed)
     return EndCutShort(scene, runs, rigid.summary.failure, out_dir, nullptr);
@@ -333,7 +352,8 @@ int CompareCommand(const std::string& scene_path, const RunOptions& options) {
                 "ratio inextensible/elastic %.4g\n",
                 of_line.c_str(), e.peak, e.peak_t, r.peak, r.peak_t, r.peak / e.peak);
   }
-  return DrawPictures(scene, runs, film, look, options, out_dir, nullptr);
+  return DrawPictures(scene, runs, film, look, options, out_dir, nullptr,
+                      {elastic_start.get(), rigid_start.get()});
 }
 
 int CheckCommand(const std::string& scene_path) {

@@ -34,6 +34,15 @@ void AddRunOptions(CLI::App* cmd, RunOptions* o, const std::string& out_help) {
   Value(cmd, "--view", "VIEW",
         "auto (default: 3D unless the scene stays in the plane z = 0), 2d, 3d",
         [o](const std::string& v) { o->view = ParseView("--view", v); });
+  Value(cmd, "--film-window", "WINDOW",
+        "film only part of the run: peak:SECONDS (around its peak), T0,T1 or whole (default: "
+        "the scene's film.window, else whole)",
+        [o](const std::string& v) {
+          const std::string problem = FilmWindowProblem(v, &o->window);
+          if (!problem.empty()) Bad("--film-window: " + problem);
+          o->window_given = true;
+          if (o->film < 0) o->film = 1;
+        });
   Value(cmd, "--shaders", "DIR", "GLSL shader folder (default: $CABLEFILM_SHADERS, else built in)",
         [o](const std::string& v) { o->shader_dir = ParseShaderDir("--shaders", v); });
 }

@@ -100,6 +100,10 @@ std::vector<std::string> ChildRunOptions(const RunOptions& o) {
   if (o.tension_min >= 0)
     args.insert(args.end(), {"--tension-range", number(o.tension_min) + "," + number(o.tension_max)});
   if (!o.shader_dir.empty()) args.insert(args.end(), {"--shaders", o.shader_dir});
+  if (o.window_given)
+    args.insert(args.end(), {"--film-window", o.window.peak_width > 0 ? "peak:" + number(o.window.peak_width)
+                                              : o.window.end < 0 ? std::string("whole")
+                                              : number(o.window.start) + "," + number(o.window.end)});
   return args;
 }
 

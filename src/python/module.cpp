@@ -118,7 +118,8 @@ const MemoryRun& RunOf(const py::object& obj, py::object* holder) {
 FilmRequest FilmOptions(const SceneDef& scene, std::optional<int> width, std::optional<int> height,
                         std::optional<double> fps, std::optional<double> speed,
                         std::optional<std::string> colormap,
-                        std::optional<std::pair<double, double>> tension_range, bool whole_film) {
+                        std::optional<std::pair<double, double>> tension_range, bool whole_film,
+                        std::optional<std::string> window = std::nullopt) {
   auto check = [](const char* key, const std::string& problem) {
     if (!problem.empty()) throw py::value_error(std::string(key) + ": " + problem);
   };
@@ -134,6 +135,10 @@ FilmRequest FilmOptions(const SceneDef& scene, std::optional<int> width, std::op
   if (tension_range) {
     std::tie(o.tension_min, o.tension_max) = *tension_range;
     check("tension_range", TensionRangeProblem(o.tension_min, o.tension_max));
+  }
+  if (window) {
+    check("window", FilmWindowProblem(*window, &o.window));
+    o.window_given = true;
   }
   o.frames = 0;
   try {
@@ -180,7 +185,8 @@ std::string RenderFilmTo(const py::object& obj, const std::string& path,
                          std::optional<int> width, std::optional<int> height,
                          std::optional<double> fps, std::optional<double> speed,
                          std::optional<std::string> colormap,
-                         std::optional<std::pair<double, double>> tension_range) {
+                         std::optional<std::pair<double, double>> tension_range,
+                         std::optional<std::string> window) {
   namespace fs = std::filesystem;
   py::object holder;
   const MemoryRun& run = RunOf(obj, &holder);
@@ -190,7 +196,8 @@ std::string RenderFilmTo(const py::object& obj, const std::string& path,
     throw py::value_error("the run did not reach its end" +
                           (summary.failure.empty() ? std::string() : ": " + summary.failure) +
                           "; a film is made of a whole run");
-  FilmRequest request = FilmOptions(run.scene, width, height, fps, speed, colormap, tension_range, true);
+  FilmRequest request =
+      FilmOptions(run.scene, width, height, fps, speed, colormap, tension_range, true, window);
   // PATH.mp4: the film itself, made in a folder of its own beside it, then renamed; else a
   // folder that gets film.mp4, as `cablefilm run --out PATH` does.
   const fs::path target(path);
@@ -482,10 +489,10 @@ the loader: a bad key or value raises SceneError and leaves the scene as it was.
   m.def("render_film", &RenderFilmTo, py::arg("run"), py::arg("path"), py::kw_only(),
         py::arg("width") = py::none(), py::arg("height") = py::none(), py::arg("fps") = py::none(),
         py::arg("speed") = py::none(), py::arg("colormap") = py::none(),
-        py::arg("tension_range") = py::none(),
+        py::arg("tension_range") = py::none(), py::arg("window") = py::none(),
         "The film of a Result (a scene is run first), as `cablefilm run` makes it: into PATH "
-        "when it ends in .mp4, else PATH/film.mp4. The scene's [film] unless given. Returns "
-        "the film's path.");
+        "when it ends in .mp4, else PATH/film.mp4. The scene's [film] unless given; window: "
+        "'peak:SECONDS', 'T0,T1' or 'whole'. Returns the film's path.");
 #endif
 
   BindBodyTools(m);

@@ -4,14 +4,17 @@
 
 #include "core/error.h"
 #include "scene/film_view.h"
+#include "scene/option_values.h"
 #include "scene/scene_limits.h"
 #include "scene/text_escape.h"
 
 namespace cablefilm {
 
 const FilmKeyNames kCommandLineNames{"--size",     "--fps",           "--speed",
-                                     "--colormap", "--tension-range", "--view"};
-const FilmKeyNames kPythonNames{"width", "fps", "speed", "colormap", "tension_range", "view"};
+                                     "--colormap", "--tension-range", "--view",
+                                     "--film-window"};
+const FilmKeyNames kPythonNames{"width", "fps",  "speed", "colormap", "tension_range",
+                                "view",  "window"};
 
 std::string FilmSizeProblem(int width, int height) {
   auto bad = [](int v, int hi) { return v < kMinFilmSize || v > hi || v % 2 != 0; };
@@ -56,6 +59,44 @@ std::string ViewProblem(const std::string& view) {
   return "expected one of " + known + ", got " + QuoteText(view);
 }
 
+std::string FilmWindowProblem(const std::string& text, FilmWindow* window) {
+  const std::string expected =
+      "expected peak:SECONDS (the film of that many seconds around the run's peak), T0,T1 (from "
+      "T0 to T1 seconds) or whole, got " + QuoteText(text);
+  FilmWindow w;
+  if (text == "whole") {
+    *window = w;
+    return "";
+  }
+  if (text.rfind("peak:", 0) == 0) {
+    if (!ParseDouble(text.substr(5), &w.peak_width) || !(w.peak_width > 0) ||
+        w.peak_width > kMaxTime)
+      return expected;
+    *window = w;
+    return "";
+  }
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos || !ParseDouble(text.substr(0, comma), &w.start) ||
+      !ParseDouble(text.substr(comma + 1), &w.end) || !(w.start >= 0) || !(w.end > w.start) ||
+      w.end > kMaxTime)
+    return expected;
+  *window = w;
+  return "";
+}
+
+std::string FilmWindowFitProblem(const FilmWindow& w, double span) {
+  if (w.whole() || w.peak_width > 0) return "";
+  if (w.start >= 0 && w.end > w.start && w.end <= span * (1 + 1e-9)) return "";
+  return "expected a window within the run, from 0 to " + FormatNumber(span) + " s, got " +
+         FormatNumber(w.start) + " to " + FormatNumber(w.end) + " s";
+}
+
+double FilmWindowLength(const FilmWindow& w, double span) {
+  if (w.peak_width > 0) return std::min(w.peak_width, span);
+  if (w.end < 0) return span;
+  return std::min(w.end, span) - w.start;
+}
+
 FilmSettings ResolveFilm(const SceneDef& scene, const FilmOverrides& o,
                          const FilmKeyNames& names, bool whole_film) {
   auto check = [](const std::string& key, const std::string& problem) {
@@ -79,11 +120,17 @@ FilmSettings ResolveFilm(const SceneDef& scene, const FilmOverrides& o,
     s.look.tension_min = o.tension_min;
     s.look.tension_max = o.tension_max;
   }
+  if (o.window_given) s.look.window = o.window;
   if (!whole_film) return s;
-  // The film of the run must have from 1 to kMaxFilmFrames frames: counted here, not by the
-  // loader, so that a run without its film is not refused for it.
-  const std::string problem = FilmFramesProblem(
-      RunSpan(scene.simulation.duration, scene.output.interval), s.look.fps, s.look.speed);
+  // The window must fit the run and the film have from 1 to kMaxFilmFrames frames: counted
+  // here, not by the loader, so that a run without its film is not refused for it.
+  const double span = RunSpan(scene.simulation.duration, scene.output.interval);
+  const std::string misfit = FilmWindowFitProblem(s.look.window, span);
+  if (!misfit.empty())
+    throw Error(EscapeText(scene.path) + ": " + (o.window_given ? names.window : "film.window") +
+                ": " + misfit);
+  const std::string problem =
+      FilmFramesProblem(FilmWindowLength(s.look.window, span), s.look.fps, s.look.speed);
   if (!problem.empty()) {
     const std::string key = o.speed > 0 ? names.speed : o.fps > 0 ? names.fps : "film.speed";
     throw Error(EscapeText(scene.path) + ": " + key + ": " + problem);

@@ -16,6 +16,8 @@ struct FilmOverrides {
   double tension_min = -1, tension_max = -1;  // colour range [N]
   int frames = -1;              // 0/1: keep every frame as PNG or not
   std::string view;             // "auto", "2d", "3d" (film_view.h)
+  bool window_given = false;    // window over the scene's film.window
+  FilmWindow window;
 };
 
 // What each value must be, as "" (fine) or "expected ..., got ..." for a message after its key.
@@ -25,12 +27,19 @@ std::string SpeedProblem(double speed);
 std::string ColormapProblem(const std::string& name);
 std::string TensionRangeProblem(double lo, double hi);
 std::string ViewProblem(const std::string& view);
+// A window from its text: "peak:W" (W seconds around the run's peak), "T0,T1" (from T0 to T1
+// seconds) or "whole"; "" (then *window is it) or "expected ..., got ...".
+std::string FilmWindowProblem(const std::string& text, FilmWindow* window);
+// The seconds of a run of `span` seconds a window shows; "" or "expected ..." when it does not
+// fit the run (a span within 0 to the run's end, a positive width).
+std::string FilmWindowFitProblem(const FilmWindow& window, double span);
+double FilmWindowLength(const FilmWindow& window, double span);
 
 // The names a front end gives its settings, for its messages.
 struct FilmKeyNames {
   std::string size = "film.width", fps = "film.fps", speed = "film.speed",
               colormap = "film.colormap", tension_range = "film.tension_range",
-              view = "film.view";
+              view = "film.view", window = "film.window";
 };
 extern const FilmKeyNames kCommandLineNames;  // --size, --fps, --speed, ..., --view
 extern const FilmKeyNames kPythonNames;       // width, fps, speed, colormap, tension_range, view
@@ -40,9 +49,9 @@ struct FilmSettings {
   bool frames = false;  // every frame as PNG too
 };
 
-// The scene's film with the overrides, every value checked, and, for a whole film, its frame
-// count (1 to kMaxFilmFrames over the run's span: the one place it is checked, so call it
-// whenever a film will be made). Throws Error "<key named as `names` says>:
+// The scene's film with the overrides, every value checked, and, for a whole film, its window
+// against the run and its frame count (1 to kMaxFilmFrames over the window: the one place it is
+// checked, so call it whenever a film will be made). Throws Error "<key named as `names` says>:
 // expected ..." (led by the scene's file for the frame count).
 FilmSettings ResolveFilm(const SceneDef& scene, const FilmOverrides& overrides,
                          const FilmKeyNames& names, bool whole_film = true);

@@ -227,6 +227,12 @@ struct OutputDef {
   bool frames = false;
 };
 
+struct FilmWindow {              // which span of the run a film shows (film.window)
+  double peak_width = 0;         // > 0: this many seconds around the run's peak [s]
+  double start = 0, end = -1;    // else from start to end [s]; end < 0: the whole run
+  bool whole() const { return peak_width <= 0 && end < 0; }
+};
+
 struct FilmDef {                 // [film]: how the film looks (all optional)
   int width = 1920;
   int height = 1080;
@@ -237,6 +243,7 @@ struct FilmDef {                 // [film]: how the film looks (all optional)
   double tension_min = -1;       // colour range [N]; negative = from the run
   double tension_max = -1;
   std::string view = "auto";     // "2d", "3d", or "auto": 3D unless all of it stays in z = 0
+  FilmWindow window;             // the whole run unless given
 };
 
 struct SceneDef {

@@ -15,6 +15,7 @@
 
 #include "core/error.h"
 #include "core/waves.h"
+#include "scene/film_settings.h"
 #include "scene/film_view.h"
 #include "scene/number_table.h"
 #include "scene/recorded_sea.h"
@@ -1103,6 +1104,23 @@ SceneDef ParseScene(const std::string& text, const std::string& file, KeyLog* ke
         r.Fail(t->get("tension_range"), "tension_range", "expected [min, max] with max > min");
       f.tension_min = range[0];
       f.tension_max = range[1];
+    }
+    // "peak:60" or "whole", or [T0, T1]; its fit to the run is checked where a film is made.
+    if (r.Has("window") && t->get("window")->is_array()) {
+      const auto span = r.Pair("window", {0, 0}, true, true, " of seconds", kMaxTime);
+      if (!(span[1] > span[0]))
+        r.Fail(t->get("window"), "window", "expected [T0, T1] with T1 > T0, in seconds");
+      f.window.start = span[0];
+      f.window.end = span[1];
+    } else if (r.Has("window")) {
+      const toml::node* n = r.Get("window");
+      const std::string text = n->is_string() ? n->value<std::string>().value() : "";
+      const std::string problem = FilmWindowProblem(text, &f.window);
+      if (!n->is_string() || !problem.empty())
+        r.Fail(n, "window",
+               "expected \"peak:SECONDS\" (the film of that many seconds around the run's "
+               "peak), [T0, T1] or \"T0,T1\" (from T0 to T1 seconds) or \"whole\"" +
+                   (n->is_string() ? ", got " + QuoteText(text) : std::string()));
     }
     r.Finish();
   }

@@ -7,27 +7,23 @@
 
 namespace cablefilm {
 
-FilmClock::FilmClock(double speed, double fps, const TimeGrid& run)
-    : interval(speed / fps), end(run.end()) {
-  whole = static_cast<long>(std::floor(end / interval + 1e-9));
-  last = whole + (end - whole * interval > 1e-9 * interval ? 1 : 0);
+FilmClock::FilmClock(double speed, double fps, const TimeGrid& run, long first, long last_row_)
+    : interval(speed / fps),
+      start(first * run.interval),
+      end(last_row_ * run.interval),
+      first_row(first),
+      last_row(last_row_) {
+  whole = static_cast<long>(std::floor((end - start) / interval + 1e-9));
+  last = whole + (end - Time(whole) > 1e-9 * interval ? 1 : 0);
   const double rows = std::round(interval / run.interval);
   on_rows = rows >= 1 && std::fabs(rows * run.interval - interval) <= 1e-9 * interval;
   rows_per_frame = on_rows ? static_cast<long>(rows) : 0;
+  steps_per_frame = std::max(1, static_cast<int>(std::ceil(interval / run.dt - 1e-9)));
 }
 
-TimeGrid FilmClock::Grid(const TimeGrid& run) const {
-  if (on_rows) return run;
-  TimeGrid g = run;
-  g.steps_per_output = std::max(1, static_cast<int>(std::ceil(interval / run.dt - 1e-9)));
-  g.interval = interval;
-  g.dt = interval / g.steps_per_output;
-  g.outputs = whole;
-  return g;
-}
-
-int FilmClock::LastFrameSteps(const TimeGrid& run) const {
-  const double span = Time(last) - Time(last - 1);
+int FilmClock::FrameSteps(long k, const TimeGrid& run) const {
+  if (k <= whole) return steps_per_frame;
+  const double span = Time(k) - Time(k - 1);
   return std::max(1, static_cast<int>(std::ceil(span / run.dt - 1e-9)));
 }
 

@@ -81,9 +81,10 @@ SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& ru
 }
 
 FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>& runs,
-                           const FilmRequest& request, double duration) {
+                           const FilmRequest& request, double start, double end) {
   FixedPolicy policy;
-  policy.duration = duration;
+  policy.start = start;
+  policy.duration = end - start;
   const RunExtent& first = runs.front()->lines.front().extent;
   double t_lo = first.tension_min, t_hi = first.tension_max;
   Vec lo = first.box_min, hi = first.box_max;
@@ -106,12 +107,13 @@ FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>&
 bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
                 const FilmRequest& request, const std::atomic<int>& stop, PictureReport* report) {
   const Run& main = *runs.front();
-  // Every run steps again from its initial Data to the frames (film_clock.h), in lockstep so
-  // that a run can be drawn over another.
-  const FilmClock clock(request.speed, request.fps, main.grid);
+  // Every run steps again from its initial Data (or a checkpoint before its window) to the
+  // frames (film_clock.h), in lockstep so that a run can be drawn over another.
+  const RowSpan window = WindowRows(request.window, main.grid, main.summary.peak_t);
+  const FilmClock clock(request.speed, request.fps, main.grid, window.first, window.last);
   const long last = clock.last;
   struct Stepper {
-    TimeGrid grid;
+    TimeGrid grid;  // the run's, from the row its Data is at
     Inputs inputs;
     Data data;
     // on_rows: each line's links' envelope over the rows since the last frame [N] (empty: none
@@ -122,8 +124,14 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
   steppers.reserve(runs.size());
   std::vector<MaxTensionLog::Cursor> cursors;  // each line's output rows, run by run
   std::vector<std::string> names;
-  for (const Run* run : runs) {
-    Stepper st{clock.Grid(run->grid), run->inputs, run->initial, {}, {}};
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const Run* run = runs[r];
+    long from = 0;  // the row of the Data it steps from
+    const Data* start = r < request.starts.size() && request.starts[r]
+                            ? request.starts[r]->StartFor(window.first, &from)
+                            : nullptr;
+    Stepper st{run->grid, run->inputs, start ? *start : run->initial, {}, {}};
+    st.grid.first_output = start ? from : 0;
     st.inputs.stop = &stop;
     st.row_min.resize(run->lines.size());
     st.row_max.resize(run->lines.size());
@@ -137,12 +145,16 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
   for (std::size_t r = 0; r < runs.size(); ++r)
     row_steppers.emplace_back(runs[r]->model, steppers[r].data, steppers[r].inputs,
                               steppers[r].grid);
+  // Steps run r to the window's first row, undrawn. Throws BlowUpError, CancelledError.
+  auto lead_in = [&](std::size_t r) {
+    while (row_steppers[r].row() < window.first) row_steppers[r].Next();
+  };
   // Steps run r to frame k (k >= 1). Throws BlowUpError, CancelledError.
   auto advance = [&](std::size_t r, long k) {
     Stepper& st = steppers[r];
     RowStepper& rows = row_steppers[r];
     if (clock.on_rows) {
-      const long target = clock.Row(k, st.grid.outputs);
+      const long target = clock.Row(k);
       while (rows.row() < target) {
         rows.Next();
         for (std::size_t i = 0; i < st.data.lines.size(); ++i) {
@@ -157,16 +169,13 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
       }
       return;
     }
-    if (k <= clock.whole) {
-      rows.Next();
-      return;
-    }
-    // The shorter last frame, with the step rule of the run's own grid.
-    const double span = clock.Time(k) - clock.Time(k - 1);
-    const int steps = clock.LastFrameSteps(runs[r]->grid);
+    // Off the rows: the frame's steps with the step rule of the run's own grid.
+    const int steps = clock.FrameSteps(k, runs[r]->grid);
+    const double h = k <= clock.whole ? clock.interval / steps
+                                      : (clock.Time(k) - clock.Time(k - 1)) / steps;
     for (int i = 0; i < steps; ++i) {
       ThrowIfCancelled(&stop, "the film");
-      Step(runs[r]->model, st.data, st.inputs, span / steps);
+      Step(runs[r]->model, st.data, st.inputs, h);
     }
     st.data.t = clock.Time(k);
     for (LineData& line : st.data.lines) line.state.t = st.data.t;
@@ -182,20 +191,29 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
   o.write_max_tension = false;  // max_tension.png comes from the rows (WriteMaxTensionFigure)
   o.series_label = main.model.lines.size() == 1 ? main.label : main.model.line_names.front();
   const SceneView view = MakeFilmScene(scene, runs, request.view);
-  const FixedPolicy policy = MakeFilmPolicy(view, runs, request, clock.Time(last));
+  const FixedPolicy policy = MakeFilmPolicy(view, runs, request, clock.start, clock.Time(last));
   FilmWriter writer(o, view, policy, request.out_dir, static_cast<int>(last + 1));
   const LineModel& any = main.model.lines.front();  // one environment: any line's is the scene's
   const Vec current = TopCurrent(any, SceneWater(any));  // a run's is the scene's
   bool finished = true;
   std::string failure;  // a blow-up in this pass: the film is then partial too
+  // The rows before the window are not the film's.
+  if (window.first > 0) {
+    Snapshot before;
+    before.lines.resize(cursors.size());
+    TakeRows(cursors, names, clock.start - 1e-9 * main.grid.interval, &before);
+  }
   for (long k = 0; k <= last && failure.empty(); ++k) {
     if (stop != 0) {
       finished = false;
       break;
     }
-    for (std::size_t r = 0; k > 0 && r < steppers.size() && failure.empty(); ++r) {
+    for (std::size_t r = 0; r < steppers.size() && failure.empty(); ++r) {
       try {
-        advance(r, k);
+        if (k == 0)
+          lead_in(r);
+        else
+          advance(r, k);
       } catch (const CancelledError&) {
         finished = false;
         break;
@@ -217,10 +235,11 @@ bool RenderFilm(const SceneDef& scene, const std::vector<const Run*>& runs,
       snap.wave = any.env.wave;
     }
     snap.current = current;
-    // The output rows up to this frame (all that are left at the last frame): the first line's
+    // The output rows up to this frame (all that are left at the run's end): the first line's
     // times, every line's largest tension at each.
-    const double until = k == last ? std::numeric_limits<double>::infinity()
-                                   : steppers[0].data.t + 1e-9 * clock.interval;
+    const double until = k == last && window.last == main.grid.outputs
+                             ? std::numeric_limits<double>::infinity()
+                             : steppers[0].data.t + 1e-9 * clock.interval;
     TakeRows(cursors, names, until, &snap);
     std::size_t at = 0;  // each link's envelope over those rows
     for (Stepper& st : steppers)

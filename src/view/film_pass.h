@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "run/film_checkpoint.h"
 #include "run/run.h"
 #include "scene/film_settings.h"
 #include "scene/scene_def.h"
@@ -29,6 +30,10 @@ struct FilmRequest {
   std::string view = "auto";    // "auto", "2d", "3d" (scene/film_view.h)
   std::string shader_dir;       // empty: CABLEFILM_SHADERS or the built-in shaders
   bool say_written = true;      // print "wrote DIR/film.mp4" (the Python module names its own file)
+  FilmWindow window;            // the span of the runs it shows (the first run's peak's)
+  // Per run, the states kept during it that its window's pass starts from (run/
+  // film_checkpoint.h); absent or null: it steps from the run's start to the window.
+  std::vector<const FilmCheckpoint*> starts;
 };
 
 // The film of `settings` (scene/film_settings.h) into `out_dir`.
@@ -60,16 +65,18 @@ struct FixedPolicy;  // view/history.h
 SceneView MakeFilmScene(const SceneDef& scene, const std::vector<const Run*>& runs,
                         const std::string& view = "auto");
 
-// What stays fixed over the film of `runs` lasting `duration` simulated seconds: the colour
+// What stays fixed over the film of `runs` from `start` to `end` simulated seconds: the colour
 // range over every line's rows of every run (or the request's range) and their world box, the
 // box reaching to the seabed and the crests of `view` (MakeFilmScene's).
 FixedPolicy MakeFilmPolicy(const SceneView& view, const std::vector<const Run*>& runs,
-                           const FilmRequest& request, double duration);
+                           const FilmRequest& request, double start, double end);
 
 // Renders film.mp4 of the runs (MakeFilmScene's lines): a second, deterministic pass that steps
 // each run's initial Data again through the frames (film_clock.h), in lockstep so that a run can
 // be drawn over another. Frames are at k x speed / fps and, when the run's end is not on one,
-// at its end. Returns false if `stop` was raised (the film is then closed at the last frame
+// at its end. A window of the runs (request.window): its rows (WindowRows, about the first
+// run's peak), each run stepped from its checkpoint (request.starts) or its start to the
+// window's first row undrawn, the frames from there. Returns false if `stop` was raised (the film is then closed at the last frame
 // drawn, as film.partial.mp4). `report` (optional): the film's time plot at its last frame,
 // over the first run's lines (its peak the largest row of any of them). Throws Error (a
 // blow-up in this pass: the film up to it stays partial).

@@ -17,6 +17,7 @@ FilmRequest MakeFilmRequest(const FilmSettings& s, const std::string& out_dir,
   r.tension_min = s.look.tension_min;
   r.tension_max = s.look.tension_max;
   r.view = s.look.view;
+  r.window = s.look.window;
   r.shader_dir = shader_dir;
   return r;
 }

@@ -74,9 +74,12 @@ std::string Subtitle(const SceneView& scene, const History& history) {
 // Under the time: the film's length and its progress, or the live view's peak so far.
 void HeaderNote(const SceneView& scene, const History& history, double t, HeaderInput* header) {
   if (!history.following()) {
-    if (history.duration() > 0) {
-      header->note = "of " + FormatValue("%.1f", history.duration()) + " s";
-      header->progress = std::clamp(t / history.duration(), 0.0, 1.0);
+    const double start = history.start(), span = history.duration();
+    if (span > 0) {
+      header->note = start > 0 ? "window " + FormatValue("%.1f", start) + " to " +
+                                     FormatValue("%.1f", start + span) + " s"
+                               : "of " + FormatValue("%.1f", span) + " s";
+      header->progress = std::clamp((t - start) / span, 0.0, 1.0);
     }
     return;
   }

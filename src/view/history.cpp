@@ -348,11 +348,11 @@ double History::layout_aspect() const {
 }
 
 double History::time_min() const {
-  return following_ ? std::max(0.0, now().t - follow_.window) : 0;
+  return following_ ? std::max(0.0, now().t - follow_.window) : fixed_.start;
 }
 
 double History::time_max() const {
-  if (!following_) return fixed_.duration > 0 ? fixed_.duration : 1;
+  if (!following_) return fixed_.start + (fixed_.duration > 0 ? fixed_.duration : 1);
   return std::max(follow_.window, now().t);
 }
 

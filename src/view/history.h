@@ -32,6 +32,7 @@
 namespace cablefilm {
 
 struct FixedPolicy {                        // the film's
+  double start = 0;                         // the film's first time (a window's) [s]
   double duration = 0;                      // simulated seconds the film covers [s]
   double tension_min = 0, tension_max = 1;  // colour and plot range [N], finite, increasing
   WorldBox box;                             // what the cable panel shows [m] (ShownBox)
@@ -85,6 +86,7 @@ class History {
   double time_min() const;  // the time plot's axis [s]
   double time_max() const;
   double duration() const { return following_ ? 0 : fixed_.duration; }  // fixed [s]
+  double start() const { return following_ ? 0 : fixed_.start; }        // fixed [s]
 
   // The time trace: its times [s] and, per line, the largest tension [N] at each.
   const std::vector<double>& times() const;

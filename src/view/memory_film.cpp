@@ -34,7 +34,7 @@ Image DrawMemoryRunFrame(const MemoryRun& run, long row, const FilmRequest& requ
   const Model& model = run.run.model;
   const std::size_t nl = model.lines.size();
   const SceneView scene = MakeFilmScene(run.scene, {&run.run}, request.view);
-  const FixedPolicy policy = MakeFilmPolicy(scene, {&run.run}, request, run.run.grid.end());
+  const FixedPolicy policy = MakeFilmPolicy(scene, {&run.run}, request, 0, run.run.grid.end());
   const LineModel& any = model.lines.front();  // one environment: any line's is the scene's
   const Vec current = TopCurrent(any, SceneWater(any));
   const Colormap colormap(request.colormap);

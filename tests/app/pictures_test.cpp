@@ -325,5 +325,122 @@ TEST_F(Pictures, SeveralLinesNoFilmStillDrawsTheFigure) {
   EXPECT_EQ(r.film.frames, 0);
 }
 
+// A window of the run (film.window) is filmed from the state the run kept at its first row (a
+// copy of the run's Data, which stepped on goes on as the run did): its frames are the run's
+// rows bit for bit, as the whole film's are, and its time plot holds the window's rows alone.
+// `rows`: the run's; `first`, `last`: the window's times [s].
+void ExpectWindowFilm(const RunReport& r, const std::vector<Row>& rows, double first, double last,
+                      long frames) {
+  EXPECT_EQ(r.film.frames, frames);
+  EXPECT_DOUBLE_EQ(r.film.last_frame_t, last);
+  Row in{0, -1}, at_last{0, -1};
+  for (const Row& row : rows) {
+    if (row.t >= first - 1e-9 && row.t <= last + 1e-9 && row.tension_max > in.tension_max)
+      in = row;
+    if (std::fabs(row.t - last) < 1e-9) at_last = row;
+  }
+  ASSERT_GT(at_last.tension_max, 0) << "no row at " << last << " s";
+  // The last frame's cable is its row's, bit for bit: the CSV's 10 significant digits.
+  EXPECT_NEAR(r.film.last_frame_max, at_last.tension_max, 1e-9 * at_last.tension_max);
+  EXPECT_EQ(r.film.last_frame_max, r.film.last_row_max);
+  // The time plot: the window's rows, its peak theirs.
+  EXPECT_NEAR(r.film.peak, in.tension_max, 1e-9 * in.tension_max);
+  EXPECT_DOUBLE_EQ(r.film.peak_t, in.t);
+}
+
+TEST_F(Pictures, AWindowOfTheRunIsFilmedFromItsStateThere) {
+  RunOptions o;
+  o.out_dir = (dir_ / "out").string();
+  o.window_given = true;
+  o.window.start = 0.5;
+  o.window.end = 1.5;
+  RunReport r;
+  ASSERT_EQ(RunCommand(Scene(), o, &r), 0);
+  const std::vector<Row> rows = ReadRows(dir_ / "out" / "timeseries.csv");
+  ASSERT_EQ(rows.size(), 201u);  // the run is whole: only its film is the window
+  ExpectWindowFilm(r, rows, 0.5, 1.5, 3);  // frames at 0.5, 1.0 and 1.5 s
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "film.mp4"));
+}
+
+TEST_F(Pictures, APeakWindowIsTheSecondsAroundTheRunsPeak) {
+  // 0.2 s around the peak at 20 frames a second (a frame every 5 rows): the run keeps its state
+  // every 10 rows, 20 times over, and the window starts 10 rows before the peak.
+  RunOptions o;
+  o.out_dir = (dir_ / "out").string();
+  o.fps = 20;
+  o.window_given = true;
+  o.window.peak_width = 0.2;
+  RunReport r;
+  ASSERT_EQ(RunCommand(Scene(), o, &r), 0);
+  const std::vector<Row> rows = ReadRows(dir_ / "out" / "timeseries.csv");
+  const double first = std::max(0.0, r.summary.peak_t - 0.1);
+  const double last = std::min(2.0, r.summary.peak_t + 0.1);
+  std::printf("[ window ] peak %.10g N at %.4g s: frames %.4g to %.4g s\n", r.summary.peak,
+              r.summary.peak_t, first, last);
+  ASSERT_GT(r.summary.peak_t, 0.2);  // a window the run reaches by its checkpoints
+  // A frame every 0.05 s from the first, and one at the last if it falls between two.
+  const long whole = std::lround(std::floor((last - first) / 0.05 + 1e-9));
+  ExpectWindowFilm(r, rows, first, last, whole + 1 + (last - first - whole * 0.05 > 1e-9));
+  EXPECT_EQ(r.film.peak, r.summary.peak);
+  EXPECT_EQ(r.film.peak_t, r.summary.peak_t);
+}
+
+TEST_F(Pictures, AWindowOffTheRowsStepsItsFramesFromItsFirstRow) {
+  // 3 frames a second do not fall on the 0.1 s rows: frames at 1.0, 4/3, 5/3 and 2.0 s, stepped
+  // from the clump system's state at its row of 1.0 s (its free clump's motion in it).
+  RunOptions o;
+  o.out_dir = (dir_ / "out").string();
+  o.window_given = true;
+  o.window.start = 1.0;
+  o.window.end = 2.0;
+  RunReport r;
+  ASSERT_EQ(RunCommand(ClumpSystem("3.0", "3"), o, &r), 0);
+  EXPECT_EQ(r.film.frames, 4);
+  EXPECT_DOUBLE_EQ(r.film.last_frame_t, 2.0);
+  const Row peak = SystemPeak();
+  if (peak.t >= 1.0 - 1e-9 && peak.t <= 2.0 + 1e-9) {
+    EXPECT_EQ(r.film.peak, r.summary.peak);
+  }
+  EXPECT_LE(r.film.peak, r.summary.peak);
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "film.mp4"));
+}
+
+TEST_F(Pictures, AWindowOfASystemIsItsRowsBitForBit) {
+  // On the rows (5 frames a second, 0.1 s rows), from the state kept at 1.0 s: the lines and the
+  // free clump go on as the run did.
+  RunOptions o;
+  o.out_dir = (dir_ / "out").string();
+  o.window_given = true;
+  o.window.start = 1.0;
+  o.window.end = 2.0;
+  RunReport r;
+  ASSERT_EQ(RunCommand(ClumpSystem("3.0", "5"), o, &r), 0);
+  EXPECT_EQ(r.film.frames, 6);
+  EXPECT_DOUBLE_EQ(r.film.last_frame_t, 2.0);
+  double at_end = 0;
+  for (const char* line : {"lower", "upper"})
+    for (const Row& row : ReadRows(dir_ / "out" / "lines" / line / "timeseries.csv"))
+      if (std::fabs(row.t - 2.0) < 1e-9) at_end = std::max(at_end, row.tension_max);
+  EXPECT_NEAR(r.film.last_frame_max, at_end, 1e-9 * at_end);
+}
+
+TEST_F(Pictures, AWindowOutsideTheRunIsRefusedBeforeItRuns) {
+  RunOptions o;
+  o.out_dir = (dir_ / "out").string();
+  o.window_given = true;
+  o.window.start = 1.0;
+  o.window.end = 5.0;
+  try {
+    RunCommand(Scene(), o, nullptr);
+    FAIL() << "a window past the run's end was taken";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "--film-window: expected a window within the run, from 0 to 2 s, got 1 to 5 s"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "timeseries.csv"));
+}
+
 }  // namespace
 }  // namespace cablefilm

@@ -599,6 +599,16 @@ class Pictures(unittest.TestCase):
         self.assertEqual(os.listdir(out), ["p63.mp4"])   # nothing else left beside it
         with self.assertRaises(ValueError):
             cablefilm.render_film(scene, film, width=321)
+        # A window of the run: within it, or refused naming the window before anything is made.
+        part = os.path.join(out, "part.mp4")
+        self.assertEqual(cablefilm.render_film(scene, part, width=320, height=180,
+                                               window="0.5,1"), part)
+        with self.assertRaisesRegex(ValueError, "window: expected a window within the run, "
+                                                "from 0 to 1 s, got 0.5 to 2 s"):
+            cablefilm.render_film(scene, part, window="0.5,2")
+        with self.assertRaisesRegex(ValueError, "window: expected peak:SECONDS"):
+            cablefilm.render_film(scene, part, window="peak:-1")
+        os.remove(part)
         with self.assertRaises(ValueError):
             cablefilm.render_frame(scene, colormap="rainbow")
         # A Line is drawn with its run: render_frame and render_film take the Result.

@@ -656,6 +656,32 @@ TEST(SceneLoader, FilmFramesAreCountedForAFilmOnly) {
                              kFile));
 }
 
+// A film of part of the run: its forms, each refusal naming what it takes; its fit to the run
+// (within the run's 60 s) and its frame count are checked where a film is made.
+TEST(SceneLoader, AFilmWindowIsAPeakWidthOrASpanWithinTheRun) {
+  const FilmWindow peak = ParseScene(kBase + "[film]\nwindow = \"peak:20\"\n", kFile).film.window;
+  EXPECT_EQ(peak.peak_width, 20.0);
+  EXPECT_FALSE(peak.whole());
+  const FilmWindow span = ParseScene(kBase + "[film]\nwindow = [10, 25.5]\n", kFile).film.window;
+  EXPECT_EQ(span.start, 10.0);
+  EXPECT_EQ(span.end, 25.5);
+  EXPECT_EQ(ParseScene(kBase + "[film]\nwindow = \"10,25.5\"\n", kFile).film.window.end, 25.5);
+  EXPECT_TRUE(ParseScene(kBase + "[film]\nwindow = \"whole\"\n", kFile).film.window.whole());
+  EXPECT_TRUE(ParseScene(kBase, kFile).film.window.whole());
+  for (const char* bad : {"\"peak:0\"", "\"peak:-5\"", "\"peak\"", "\"20,10\"", "\"a,b\"", "5"})
+    ExpectError(kBase + "[film]\nwindow = " + bad + "\n", "film.window",
+                {"expected \"peak:SECONDS\"", "[T0, T1]"});
+  ExpectError(kBase + "[film]\nwindow = [20, 10]\n", "film.window", {"T1 > T0"});
+  ExpectError(kBase + "[film]\nwindow = [-1, 10]\n", "film.window", {">= 0"});
+  const std::string film = With("film = false", "film = true\ninterval = 0.05");
+  ExpectFilmError(film + "[film]\nwindow = [10, 61]\n", "film.window",
+                  {"expected a window within the run, from 0 to 60 s, got 10 to 61 s"});
+  ExpectFilmError(film + "[film]\nwindow = \"peak:0.01\"\n", "film.speed",
+                  {"0.01 s simulated", "make 0 frames"});
+  EXPECT_NO_THROW(ResolveFilm(ParseScene(film + "[film]\nwindow = \"peak:600\"\n", kFile), {},
+                              kCommandLineNames));  // wider than the run: the whole run
+}
+
 // Defect 6: film settings that only failed in run, after the whole simulation (libx264), are
 // refused by the loader, so `check` catches them.
 TEST(SceneLoader, FilmRatesHaveStatedRanges) {
