@@ -113,10 +113,12 @@ void PrintCurrent(const Environment& env) {
   if (!env.current_profile.empty()) {
     const CurrentProfile& p = env.current_profile;
     const auto [lo, hi] = std::minmax_element(p.speed.begin(), p.speed.end());
+    // Under a table over time the table's headings turn it (printed above).
     std::printf("  current profile: %zu point(s) from y = %.6g to %.6g m, %.4g to %.4g m/s along "
                 "%s, linear between them, constant beyond\n",
                 p.y.size(), p.y.front(), p.y.back(), env.current + *lo, env.current + *hi,
-                HeadingText(env.current_direction).c_str());
+                env.current_history ? "the table's heading"
+                                    : HeadingText(env.current_direction).c_str());
   } else if (env.current != 0) {
     std::printf("  current: %.4g m/s along %s\n", env.current,
                 HeadingText(env.current_direction).c_str());

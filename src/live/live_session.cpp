@@ -656,6 +656,7 @@ std::string LiveSession::StateJsonLocked() const {
       {"current_now", Finite(current_now_)},
       {"current_heading", targets_.current_heading},
       {"current_heading_now", Finite(current_heading_now_)},
+      {"current_from_table", limits_.current_history},
       {"wave_height", limits_.has_waves ? Json(targets_.wave_height) : Json(nullptr)},
       {"wave_period", limits_.has_waves ? Json(targets_.wave_period) : Json(nullptr)},
       {"wave_heading", limits_.has_waves ? Json(targets_.wave_heading) : Json(nullptr)},

@@ -294,6 +294,8 @@ TEST_F(CommandLine, BadOptionsAreNamed) {
              {"--tension-range 5,1", "--tension-range: expected MIN,MAX"},
              {"--shaders nowhere", "--shaders: expected a folder of GLSL shaders, got \"nowhere\""},
              {"--size", "--size: missing value (expected WxH)"},
+             {"--film-window 5,1", "--film-window: expected peak:SECONDS"},
+             {"--film-window peak:0", "--film-window: expected peak:SECONDS"},
              {"--fps 30 --bogus", "unknown option \"--bogus\" for " + command},
              {"--port 80", "unknown option \"--port\" for " + command},
          })

@@ -512,7 +512,7 @@ def run(args):
         # Its controls are what it has: the fairleads' orbit (a driven end: amplitude and
         # period), the ship that carries them (offsets); no free body, no waves.
         check(st['has_offset'] and not st['has_force'] and st['has_period']
-              and st['period'] == 12 and not st['has_waves']
+              and st['period'] == 12 and not st['has_waves'] and not st['current_from_table']
               and st['limits']['offset'] == [-25, 25],
               f'a system\'s controls: {st}')
         check(all(l['max'] > 0 for l in st['lines']), 'a line with no tension')
@@ -576,6 +576,37 @@ def run(args):
     finally:
         if srv4.proc.poll() is None:
             srv4.proc.kill()
+
+    # A current over time (environment.current_file): the table's, which the page shows and
+    # does not offer as a control.
+    scenes = os.path.dirname(os.path.abspath(args.scene))
+    with open(os.path.join(scenes, 'spread_mooring.toml'), encoding='utf-8') as f:
+        text = f.read()
+    text = re.sub(r'^current_heading = .*$', '', text, flags=re.M)
+    text = re.sub(r'^(current = \[\[.*)$', r'\1\ncurrent_file = "current.csv"', text, count=1,
+                  flags=re.M)
+    with open(os.path.join(out_dir, 'current.csv'), 'w', encoding='utf-8') as f:
+        f.write('t,scale,heading\n0,1,0\n100,0.5,90\n')
+    with open(os.path.join(out_dir, 'current_table.toml'), 'w', encoding='utf-8') as f:
+        f.write(text)
+    srv5 = Server(args.cablefilm, os.path.join(out_dir, 'current_table.toml'), out_dir)
+
+    def current_table():
+        st = srv5.state()
+        # The table turns it from 0 to 90 degrees over 100 s: 0.9 t (within a frame's 0.03).
+        check(st['current_from_table'] and
+              abs(st['current_heading_now'] - 0.9 * st['t']) < 0.1,
+              f'a current table: heading {st["current_heading_now"]} at t = {st["t"]} s')
+        code, reply = srv5.control({'current': 1})
+        check(code == 400 and 'current' in reply.get('error', ''),
+              f'a current control over a table answered {code} {reply}')
+        check(srv5.stop() == 0, 'SIGTERM exit status')
+
+    try:
+        step('a current over time is the table\'s, no control', current_table)
+    finally:
+        if srv5.proc.poll() is None:
+            srv5.proc.kill()
 
     failed = sum(1 for _, e in results if e)
     print(f'{len(results) - failed} passed, {failed} failed')

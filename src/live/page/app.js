@@ -168,8 +168,15 @@ function applyState(s) {
   $('amplitude-row').hidden = !s.has_period;
   $('amplitude').disabled = !s.has_period;
   if (s.has_period) setSlider('amplitude', s.amplitude_scale, L.amplitude_scale);
-  setSlider('current', s.current, L.current);
-  setSlider('current_heading', s.current_heading);  // the dial is 0 to 360 whatever the limits
+  // A current over time is the scene's table's: shown as it is now, not a control.
+  const table = !!s.current_from_table;
+  for (const id of ['current', 'current_heading']) {
+    $(id).disabled = table;
+    $(id).title = table ? 'The scene\'s current table sets it; shown as it is now' : '';
+  }
+  setSlider('current', table ? s.current_now : s.current, L.current);
+  // The dial is 0 to 360 whatever the limits.
+  setSlider('current_heading', table ? s.current_heading_now : s.current_heading);
   $('period-row').hidden = !s.has_period;
   $('period').disabled = !s.has_period;
   if (s.has_period) setSlider('period', s.period, L.period);
