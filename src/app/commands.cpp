@@ -41,23 +41,6 @@ class ProgressSink : public RowSink {
   ProgressLine line_;
 };
 
-// The snap check of a long run refines only windows around its highest peaks: spans of
-// kPeakSpan [s] (whole rows), the kPeakWindows spans with the highest row peaks, each run again
-// from the checkpoint one span before it (the lead-in that brings the ringing of the snaps
-// before it). A run of fewer than kLeastSpans spans, or with free bodies (whose motion a
-// checkpoint of the lines does not hold), is run again whole.
-constexpr double kPeakSpan = 60;
-constexpr int kPeakWindows = 3;
-constexpr long kLeastSpans = 10;
-
-// The windows' sink for a run whose snap check may refine windows; null when it would run
-// again whole.
-std::unique_ptr<PeakWindows> PeakWindowsOf(const Run& run) {
-  const long span = static_cast<long>(std::ceil(kPeakSpan / run.grid.interval - 1e-9));
-  if (!run.model.free_bodies.empty() || run.grid.outputs < kLeastSpans * span) return nullptr;
-  return std::make_unique<PeakWindows>(run.grid.interval, span, kPeakWindows);
-}
-
 // The snap check of a run (RefineStepControl): the run again, in memory, its step control
 // stricter, from its initial state, or from the checkpoints of `windows` over them alone; sets
 // its summary's refinement, refined_peak, refined_peak_change.
@@ -80,7 +63,7 @@ void CheckPeakUnderRefinement(const SceneDef& scene, Run& run, const PeakWindows
       rs.peak = 0;
       for (std::size_t k = 0; k < list.size() && rs.completed; ++k) {
         const PeakWindow& w = list[k];
-        Run again = WindowRun(refined, run, w.states, w.first_row, w.last_row);
+        Run again = WindowRun(refined, run, w.states, w.anchors, w.first_row, w.last_row);
         char label[160];
         std::snprintf(label, sizeof label,
                       "checking the peak under refinement (%s), window %zu of %zu: %.6g to %.6g s",
@@ -176,7 +159,7 @@ Run SimulateToFiles(const SceneDef& scene, const Model& model, const std::string
   PrintInitialState(scene, run, suffix);
   RunFiles files(out_dir, suffix, run, MakeNetcdfInfo(scene, label.c_str(), run.grid.outputs + 1));
   ProgressSink progress(std::string("simulating (") + run.label + ")", run.grid.end());
-  const std::unique_ptr<PeakWindows> windows = PeakWindowsOf(run);
+  const std::unique_ptr<PeakWindows> windows = SnapCheckWindows(run);
   std::vector<RowSink*> sinks{&files, &progress};
   if (windows) sinks.push_back(windows.get());
   if (film_window && checkpoint) {

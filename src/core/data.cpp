@@ -10,15 +10,18 @@
 namespace cablefilm {
 
 Data MakeData(const Model& model, const Inputs& in, const StepOptions& options,
-              const std::vector<State>& states) {
+              const std::vector<State>& states, const std::vector<Points>* friction_anchors) {
   const int nl = static_cast<int>(model.lines.size());
   if (static_cast<int>(states.size()) != nl)
     throw Error("MakeData: one state per line is needed");
   Data d;
   d.t = nl > 0 ? states[0].t : 0.0;
   for (int i = 0; i < nl; ++i)
-    d.lines.push_back(MakeLineData(model.lines[i], in, LineStepOptions(options, model.lines[i]),
-                                   states[i]));
+    d.lines.push_back(MakeLineData(
+        model.lines[i], in, LineStepOptions(options, model.lines[i]), states[i],
+        friction_anchors && i < static_cast<int>(friction_anchors->size())
+            ? &(*friction_anchors)[i]
+            : nullptr));
   for (int b : model.free_bodies) {
     const BodySpec& body = model.bodies[b];
     Vec6 inertia;

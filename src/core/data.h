@@ -83,7 +83,8 @@ struct Data {
 // bodies accelerated by the sum of their rows. Throws BlowUpError for a state that is not
 // sane, Error for a free body without mass.
 Data MakeData(const Model& model, const Inputs& in, const StepOptions& options,
-              const std::vector<State>& states);
+              const std::vector<State>& states,
+              const std::vector<Points>* friction_anchors = nullptr);
 
 // The steps of the model's run so far: its islands' steps, rejections and Newton iterations
 // added up (an island of one line its line's), the explicit windows and steps too, the

@@ -23,7 +23,8 @@ void PrepareExplicitSteps(const LineModel& m, const StepOptions& options, Scratc
 
 }  // namespace
 
-LineData MakeLineData(const LineModel& m, const Inputs& in, const StepOptions& options, const State& state) {
+LineData MakeLineData(const LineModel& m, const Inputs& in, const StepOptions& options,
+                      const State& state, const Points* friction_anchor) {
   const int n = m.stations(), links = m.line.links;
   LineData d;
   d.options = options;
@@ -31,6 +32,8 @@ LineData MakeLineData(const LineModel& m, const Inputs& in, const StepOptions& o
   d.start_time = state.t;
   d.forces.Resize(links);
   ResetFrictionAnchors(m, state.x, d.forces.geometry);  // the state starts at rest on the bed
+  Points& anchor = d.forces.geometry.friction_anchor;   // or where a run had them
+  if (friction_anchor && friction_anchor->cols() == anchor.cols()) anchor = *friction_anchor;
   d.water = SceneWater(m);
   UpdateWater(m, in, state.t, &d.water);
   d.a = Points::Zero(kDim, n);

@@ -140,7 +140,10 @@ StepOptions LineStepOptions(const StepOptions& model, const LineModel& m);
 // The LineData of `state` under `options`: its accelerations and tensions computed (in the water of
 // the inputs at state.t), the scratch sized. Throws BlowUpError if the state is not finite or
 // a link is stretched beyond any physical meaning.
-LineData MakeLineData(const LineModel& m, const Inputs& in, const StepOptions& options, const State& state);
+// `friction_anchor` (optional): a restart's stick-slip anchors (where its stations last slid);
+// without, every anchor is where its station is (at rest on the bed).
+LineData MakeLineData(const LineModel& m, const Inputs& in, const StepOptions& options,
+                      const State& state, const Points* friction_anchor = nullptr);
 
 // The scheme's name, as a run reports it ("implicit (generalized-alpha, rho_inf = 0.5)").
 std::string SchemeName(const LineModel& m, const StepOptions& options);

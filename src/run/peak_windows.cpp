@@ -5,6 +5,12 @@
 
 namespace cablefilm {
 
+std::unique_ptr<PeakWindows> SnapCheckWindows(const Run& run) {
+  const long span = static_cast<long>(std::ceil(kPeakSpan / run.grid.interval - 1e-9));
+  if (!run.model.free_bodies.empty() || run.grid.outputs < kLeastSpans * span) return nullptr;
+  return std::make_unique<PeakWindows>(run.grid.interval, span, kPeakWindows);
+}
+
 PeakWindows::PeakWindows(double interval, long span_rows, int keep)
     : interval_(interval), span_rows_(std::max(1L, span_rows)), keep_(std::max(1, keep)) {}
 
@@ -14,9 +20,14 @@ bool PeakWindows::Row(const Data& d) {
   if (start_row_ < 0 || row % span_rows_ == 0) {  // a span starts here
     if (start_row_ >= 0 && row > start_row_) Offer(Open(row));  // the one before it ends
     before_ = std::move(start_);
+    before_anchors_ = std::move(start_anchors_);
     before_row_ = start_row_;
     start_.clear();
-    for (const LineData& l : d.lines) start_.push_back(l.state);
+    start_anchors_.clear();
+    for (const LineData& l : d.lines) {
+      start_.push_back(l.state);
+      start_anchors_.push_back(l.forces.geometry.friction_anchor);
+    }
     start_row_ = row;
     peak_ = -1;
   }
@@ -38,6 +49,7 @@ PeakWindow PeakWindows::Open(long last_row) const {
   w.peak = peak_;
   w.peak_t = peak_t_;
   w.states = lead_in ? before_ : start_;
+  w.anchors = lead_in ? before_anchors_ : start_anchors_;
   return w;
 }
 

@@ -41,8 +41,9 @@ class RecordSink : public RowSink {
 
 // run's initial data (the lines at `states`, the bodies where run.model has them) and its
 // records, empty, for the grid's step options.
-void StartFrom(const SceneDef& scene, Run& run, const std::vector<State>& states) {
-  run.initial = MakeData(run.model, run.inputs, run.grid.options, states);
+void StartFrom(const SceneDef& scene, Run& run, const std::vector<State>& states,
+               const std::vector<Points>* friction_anchors = nullptr) {
+  run.initial = MakeData(run.model, run.inputs, run.grid.options, states, friction_anchors);
   run.lines.clear();
   run.lines.resize(run.model.lines.size());
   for (std::size_t i = 0; i < run.lines.size(); ++i) {
@@ -149,7 +150,7 @@ Run RestartRun(const SceneDef& scene, const Run& run) {
 }
 
 Run WindowRun(const SceneDef& scene, const Run& run, const std::vector<State>& states,
-              long first_row, long last_row) {
+              const std::vector<Points>& friction_anchors, long first_row, long last_row) {
   Run again;
   again.label = run.label;
   again.model = run.model;
@@ -159,7 +160,7 @@ Run WindowRun(const SceneDef& scene, const Run& run, const std::vector<State>& s
   again.inputs = run.inputs;
   again.equilibrium = run.equilibrium;
   again.equilibrium_ms = run.equilibrium_ms;
-  StartFrom(scene, again, states);
+  StartFrom(scene, again, states, &friction_anchors);
   return again;
 }
 

@@ -66,10 +66,10 @@ Run RestartRun(const SceneDef& scene, const Run& run);
 
 // A window of `run` (of a model without free bodies) made ready to run again with the step
 // settings of `scene`, as RestartRun: from the lines' `states` at row `first_row` (their
-// positions and velocities; the schemes started afresh there, a stick-slip anchor where its
-// station lies) to row `last_row` of its grid. What the snap check of a long run runs.
+// positions and velocities, and their stick-slip anchors `friction_anchors`: the schemes
+// started afresh there) to row `last_row` of its grid. What the snap check of a long run runs.
 Run WindowRun(const SceneDef& scene, const Run& run, const std::vector<State>& states,
-              long first_row, long last_row);
+              const std::vector<Points>& friction_anchors, long first_row, long last_row);
 
 // Steps a copy of run.initial through the grid (run/driver.h), every row to `sinks` and to the
 // run's own record (each line's extent, row maxima, summary; the run's summary: how it ended,

@@ -70,5 +70,26 @@ TEST(PeakWindows, TheSpanOpenAtTheEndCounts) {
   EXPECT_EQ(w[0].last_row, 18);
 }
 
+// The snap check's choice: a run of at least ten 60 s spans is refined over the 3 windows of
+// its highest peaks; a shorter one, or one with free bodies, again whole.
+TEST(PeakWindows, ASnapCheckRefinesWindowsOfRunsOfTenSpans) {
+  cablefilm::Run run;
+  run.grid.interval = 0.5;  // spans of 120 rows
+  run.grid.outputs = 10 * 120 - 1;
+  EXPECT_EQ(SnapCheckWindows(run), nullptr);
+  run.grid.outputs = 10 * 120;
+  std::unique_ptr<PeakWindows> w = SnapCheckWindows(run);
+  ASSERT_NE(w, nullptr);
+  EXPECT_EQ(w->span_rows(), 120);
+  EXPECT_EQ(w->keep(), 3);
+  run.grid.interval = 0.7;  // spans of whole rows, at least 60 s: 86 rows
+  run.grid.outputs = 860;
+  w = SnapCheckWindows(run);
+  ASSERT_NE(w, nullptr);
+  EXPECT_EQ(w->span_rows(), 86);
+  run.model.free_bodies.push_back(0);  // a free body's motion is not in the lines' checkpoint
+  EXPECT_EQ(SnapCheckWindows(run), nullptr);
+}
+
 }  // namespace
 }  // namespace cablefilm
