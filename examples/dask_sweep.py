@@ -17,7 +17,10 @@ a Dask task, and the same summary table, DIR/sweep.csv.
    `cablefilm run DIR/case_NNN/scene.toml --out DIR/case_NNN --no-film [RUN OPTIONS]` as a
    subprocess (its output in the case's run.log) and returns its row from run_report.toml.
 3. The client writes DIR/sweep.csv (atomically: a temporary file renamed), with the columns
-   and the number formats of `cablefilm sweep`.
+   and the number formats of `cablefilm sweep`, and DIR/sweep_maxima.toml as it does: the
+   finished cases' maxima of peak_tension, tension_start_max and tension_end_max and, from 3 of
+   them, their Gumbel fit (DNV-OS-E301's most probable maximum of a storm run with several
+   seeds: `--set waves.seed=1..10`).
 
 On a real cluster the workers need `cablefilm` (--cablefilm: its path on the workers, default
 the one found here) and DIR on a file system they share with the client (the paths are made
@@ -28,6 +31,7 @@ Needs Debian's python3-distributed (`apt-get install python3-distributed`).
 """
 import argparse
 import csv
+import math
 import os
 import shutil
 import signal
@@ -111,6 +115,59 @@ def run_case(folder, cablefilm, run_options):
                                folder, *run_options],
                               stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT)
     return summarize(folder, done.returncode)
+
+
+# Euler's constant: the mean of a Gumbel distribution is mu + GAMMA beta.
+GAMMA = 0.5772156649015329
+MAXIMA_COLUMNS = ['peak_tension', 'tension_start_max', 'tension_end_max']
+
+
+def gumbel_fit(maxima):
+    """The Gumbel (type I extreme value) fit of `maxima` [N] by the method of moments, as
+    cablefilm sweep makes it: F(x) = exp(-exp(-(x - mu) / beta)), beta = std sqrt(6) / pi,
+    mu = mean - GAMMA beta (the mode: the most probable maximum), and its 90 % quantile."""
+    n = len(maxima)
+    mean = sum(maxima) / n
+    std = math.sqrt(sum((x - mean) ** 2 for x in maxima) / (n - 1))
+    beta = std * math.sqrt(6) / math.pi
+    mu = mean - GAMMA * beta
+    return {'mean': mean, 'std': std, 'gumbel_beta': beta, 'gumbel_mu': mu,
+            'gumbel_p90': mu - beta * math.log(-math.log(0.9))}
+
+
+def write_maxima(path, rows, header):
+    """sweep_maxima.toml, as cablefilm sweep writes it, whole or not at all; returns the lines
+    that describe the fits."""
+    said = []
+    text = ('# cablefilm sweep: the maxima of the finished cases and, from 3 of them, their '
+            'Gumbel fit\n# (method of moments: beta = std sqrt(6) / pi, mu = mean - 0.5772 beta; '
+            'F(x) =\n# exp(-exp(-(x - mu) / beta)))\n')
+    status = header.index('status')
+    for column in MAXIMA_COLUMNS:
+        at = header.index(column)
+        cases = [i for i, row in enumerate(rows) if row[status] == 'ok' and row[at] != '' and
+                 math.isfinite(float(row[at]))]
+        maxima = [float(rows[i][at]) for i in cases]
+        text += (f'\n[{column}]\ncases = [{", ".join(str(i) for i in cases)}]\nmaxima = ['
+                 f'{", ".join(number(x) for x in maxima)}]  # [N], case by case\n')
+        if len(maxima) < 3:
+            continue
+        fit = gumbel_fit(maxima)
+        text += (f'mean = {number(fit["mean"])}  # [N], of the maxima\n'
+                 f'std = {number(fit["std"])}  # [N], their sample standard deviation (over n - 1)\n'
+                 f'gumbel_beta = {number(fit["gumbel_beta"])}  # [N], scale\n'
+                 f'gumbel_mu = {number(fit["gumbel_mu"])}  # [N], location: the mode, the most '
+                 f'probable maximum\n'
+                 f'gumbel_p90 = {number(fit["gumbel_p90"])}  # [N], the 90 % quantile, mu - beta '
+                 f'ln(-ln 0.9)\n')
+        said.append(f'{column}: Gumbel fit of {len(maxima)} maxima: most probable maximum (mode) '
+                    f'{number(fit["gumbel_mu"])} N, 90 % quantile {number(fit["gumbel_p90"])} N '
+                    f'(mean {number(fit["mean"])} N, std {number(fit["std"])} N)')
+    temp = f'{path}.tmp{os.getpid()}'
+    with open(temp, 'w', encoding='utf-8') as f:
+        f.write(text)
+    os.replace(temp, path)
+    return said
 
 
 def write_summary(path, header, rows):
@@ -200,7 +257,10 @@ def main():
         row = results.get(i, {'status': 'not run', 'message': ''})
         rows.append(case[:values] + [row.get(c, '') for c in RESULT_COLUMNS])
     write_summary(summary, header, rows)
-    print(f'wrote {summary}')
+    maxima = os.path.join(out, 'sweep_maxima.toml')
+    for line in write_maxima(maxima, rows, header):
+        print(line)
+    print(f'wrote {summary} and {maxima}')
     if interrupted:
         return 130
     return 0 if failed == 0 else 1

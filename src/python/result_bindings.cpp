@@ -101,6 +101,20 @@ py::dict StatsDict(const RunSummary& s, const StaticsFigures& statics, double re
   return d;
 }
 
+// An end's tension statistics (run/tension_statistics.h), as run_report.toml names them.
+py::dict StatisticsDict(const TensionStatistics& t) {
+  py::dict d;
+  d["samples"] = t.samples;
+  d["mean"] = t.mean;
+  d["std"] = t.sigma;
+  d["min"] = t.min;
+  d["max"] = t.max;
+  d["upcrossings"] = t.upcrossings;
+  d["mpm"] = t.mpm;
+  d["psd_m0"] = t.psd_m0;
+  return d;
+}
+
 std::string Count(std::size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
@@ -313,6 +327,35 @@ warnings. A part of its run, drawn with it. The arrays are read-only views of th
       }, "The line's steps (its island's), and its own statics' solve.")
       .def_property_readonly("warnings", [](const Line& l) { return SummaryOf(l).warnings; },
                              "Why the line's peak cannot be trusted (empty: converged).")
+      .def_property_readonly(
+          "tension_statistics",
+          [](const Line& l) {
+            py::dict d;
+            d["start"] = StatisticsDict(SummaryOf(l).ends[0]);
+            d["end"] = StatisticsDict(SummaryOf(l).ends[1]);
+            return d;
+          },
+          "The end links' tensions over the rows, {'start': ..., 'end': ...}, each with samples, "
+          "mean, std (over n), min, max, upcrossings (of the mean), mpm (the most probable "
+          "maximum, mean + std sqrt(2 ln upcrossings)) and psd_m0 (the spectrum's integral) "
+          "[N, N^2], as run_report.toml has them.")
+      .def_property_readonly(
+          "tension_spectrum",
+          [](const Line& l) -> py::object {
+            const EndTensionSpectrum& s = l.run->run.lines[l.index].spectrum;
+            if (s.empty()) return py::none();
+            py::dict d;
+            auto copy = [](const std::vector<double>& v) {  // py::array_t copies the data
+              return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+            };
+            d["frequency"] = copy(s.frequency);
+            d["start"] = copy(s.density[0]);
+            d["end"] = copy(s.density[1]);
+            return std::move(d);
+          },
+          "The end links' tensions' one-sided Welch spectral density, as tension_spectrum.csv "
+          "has it: {'frequency' [Hz], 'start', 'end' [N^2/Hz]}; None when the run had too few "
+          "rows.")
       .def("__repr__", [](const Line& l) {
         return "<cablefilm.Line \"" + l.run->run.model.line_names[l.index] + "\": " +
                std::to_string(RowsOf(l).rows) + " rows, " +

@@ -11,6 +11,7 @@ the scene's numbers.
 """
 import atexit
 import csv
+import math
 import os
 import shutil
 import struct
@@ -144,6 +145,31 @@ class ReproducesTheCli(unittest.TestCase):
             self.assertFalse(eq.fallback)
             self.assertEqual((result.stats["equilibrium_iterations"],
                               result.stats["equilibrium_residual"]), (eq.iterations, eq.residual))
+
+    def test_tension_statistics(self):
+        # The end links' statistics and spectrum of a Result, against numpy on its own rows:
+        # the moments within their one-pass round-off (1e-9), the extremes and the crossings
+        # exactly, the most probable maximum by its formula, m0 as the spectrum's sum.
+        result = cablefilm.run(cablefilm.load(P63))
+        line = result.lines["cable"]
+        stats = line.tension_statistics
+        spectrum = line.tension_spectrum
+        self.assertEqual(set(stats), {"start", "end"})
+        self.assertEqual(set(spectrum), {"frequency", "start", "end"})
+        df = spectrum["frequency"][1] - spectrum["frequency"][0]
+        for end, column in (("start", 0), ("end", -1)):
+            x = np.asarray(line.tension[:, column])
+            s = stats[end]
+            self.assertEqual(s["samples"], len(x))
+            self.assertAlmostEqual(s["mean"] / x.mean(), 1, delta=1e-9)
+            self.assertAlmostEqual(s["std"] / x.std(), 1, delta=1e-9)
+            self.assertEqual((s["min"], s["max"]), (x.min(), x.max()))
+            crossings = int(np.count_nonzero((x[:-1] < s["mean"]) & (x[1:] >= s["mean"])))
+            self.assertEqual(s["upcrossings"], crossings)
+            self.assertGreaterEqual(crossings, 5)   # P63's minute of ship motion: cycles of 8 s
+            self.assertAlmostEqual(
+                s["mpm"], s["mean"] + s["std"] * math.sqrt(2 * math.log(crossings)), delta=1e-6)
+            self.assertAlmostEqual(s["psd_m0"] / (spectrum[end].sum() * df), 1, delta=1e-9)
 
     def test_changed_value_bit_for_bit(self):
         # A value set from Python, then the program on the scene's text: the same doubles.

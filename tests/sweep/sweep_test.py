@@ -477,6 +477,18 @@ def test_dask(work):
         check(f.read() == g.read(), 'the same sweep.csv, byte for byte')
     check(all(os.path.exists(os.path.join(work, 'dask', r['folder'], 'timeseries.csv'))
               for r in b), 'each case ran in its folder')
+    # The cases' maxima and their Gumbel fit, as cablefilm sweep gives them (the same 10 digits
+    # of each maximum; the fit's sums may round apart in the last bit, then print within 1e-9).
+    ours = toml_load(os.path.join(cpp, 'sweep_maxima.toml'))
+    theirs = toml_load(os.path.join(work, 'dask', 'sweep_maxima.toml'))
+    for column in ('peak_tension', 'tension_start_max', 'tension_end_max'):
+        a, b = ours[column], theirs.get(column, {})
+        check(a['cases'] == b.get('cases') and a['maxima'] == b.get('maxima') and
+              all(abs(b.get(k, 0) - a[k]) <= 1e-9 * abs(a[k]) for k in
+                  ('mean', 'std', 'gumbel_beta', 'gumbel_mu', 'gumbel_p90')),
+              f'{column}: the maxima and their Gumbel fit as cablefilm sweep\'s: {b}')
+    check('peak_tension: Gumbel fit of 9 maxima: most probable maximum (mode) ' in dask.stdout,
+          'the example prints the fit')
 
 
 def main():
