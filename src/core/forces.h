@@ -28,16 +28,19 @@ struct SeaState {
   // Still water (no wave running): the water at rest (velocity, acceleration and their
   // gradients zero), only the wet fractions computed.
   bool still = false;
-  // An irregular sea's last exact evaluation (the base, ComputeSea): its time [s] and sea
-  // scale, the stations' positions [m] then, and there the surface's elevation [m], its rate
-  // [m/s] and gradient, the water's velocity, acceleration, their gradients (as above) and the
-  // acceleration's rate [m/s^3]. Empty until the first.
+  // An irregular sea's last exact evaluation at each station (its base, ComputeSea): the sea
+  // scale then, each station's time [s] and position [m] then, how far in time [s] and space
+  // [m] it is carried (its reach over the highest frequency and wave number it sums), and there
+  // the surface's elevation [m], its rate [m/s] and gradient, the water's velocity,
+  // acceleration, their gradients (as above) and the acceleration's rate [m/s^3]. Empty until
+  // the first.
   bool base_valid = false;
-  double base_t = 0, base_scale = 1;
+  double base_scale = 1;
+  Eigen::VectorXd base_t, base_reach_t, base_reach_x;
   Points base_x, base_velocity, base_acceleration, base_jerk, base_eta_gradient;
   Gradients base_velocity_gradient, base_acceleration_gradient;
   Eigen::VectorXd base_eta, base_eta_rate;
-  long exact_evaluations = 0;  // how many times the base was made (for the tests and bench)
+  long exact_evaluations = 0;  // stations evaluated exactly (for the tests and bench)
 };
 
 // psi_k, link k's wet fraction: the mean of its two stations' (wave_forces.h).

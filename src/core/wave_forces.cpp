@@ -77,53 +77,65 @@ void SetWetFraction(const LineModel& m, const Wave& wave, const Points& x, int j
 
 // An irregular sea: its sum over every component costs N trigonometric and exponential
 // evaluations a station, so each station's kinematics are evaluated exactly at a base (t_0,
-// x_0) and carried from it by Taylor's first order while the time and every station stay within
-// the sea's reach (Wave::sea_reach over omega_max and k_max): U + A dt + G_u dx, A + J dt + G_a
-// dx, eta + eta' dt + grad eta . dx, the gradients the base's. Within a step's Newton
-// iterations (one time, positions moving by corrections) and an explicit window's steps (each
-// a fraction of a millisecond) the base serves many evaluations.
+// x_0) of its own and carried from it by Taylor's first order while its time and position stay
+// within the sea's reach (Wave::sea_reach) over the highest frequency and wave number summed
+// there: U + A dt + G_u dx, A + J dt + G_a dx, eta + eta' dt + grad eta . dx, the gradients the
+// base's. Within a step's Newton iterations (one time, positions moving by corrections) and an
+// explicit window's steps (each a fraction of a millisecond) a base serves many evaluations,
+// and a deep station, whose short components the depth has taken out (Wave::sea_cutoff), is
+// carried longer than one near the surface.
 void ComputeIrregularSea(const LineModel& m, const Wave& wave, double t, const Points& x,
                          SeaState& sea) {
   const int n = m.stations();
   const double reach = wave.sea_reach;
-  const double reach_t = reach / wave.sea->max_omega, reach_x = reach / wave.sea->max_k;
-  bool near = sea.base_valid && sea.base_scale == wave.sea_scale &&
-              std::abs(t - sea.base_t) <= reach_t && sea.base_x.cols() == n;
-  for (int j = 0; j < n && near; ++j) near = (x.col(j) - sea.base_x.col(j)).norm() <= reach_x;
-  if (!near) {
-    if (sea.base_x.cols() != n) {
-      sea.base_x.resize(kDim, n);
-      sea.base_velocity.resize(kDim, n);
-      sea.base_acceleration.resize(kDim, n);
-      sea.base_jerk.resize(kDim, n);
-      sea.base_eta_gradient.resize(kDim, n);
-      sea.base_velocity_gradient.resize(kDim * kDim, n);
-      sea.base_acceleration_gradient.resize(kDim * kDim, n);
-      sea.base_eta.resize(n);
-      sea.base_eta_rate.resize(n);
+  const bool valid = sea.base_valid && sea.base_scale == wave.sea_scale && sea.base_x.cols() == n;
+  // Each station's base, made anew where the station is out of its reach.
+  if (sea.base_x.cols() != n) {
+    sea.base_x.resize(kDim, n);
+    sea.base_velocity.resize(kDim, n);
+    sea.base_acceleration.resize(kDim, n);
+    sea.base_jerk.resize(kDim, n);
+    sea.base_eta_gradient.resize(kDim, n);
+    sea.base_velocity_gradient.resize(kDim * kDim, n);
+    sea.base_acceleration_gradient.resize(kDim * kDim, n);
+    sea.base_eta.resize(n);
+    sea.base_eta_rate.resize(n);
+    sea.base_t.resize(n);
+    sea.base_reach_t.resize(n);
+    sea.base_reach_x.resize(n);
+  }
+  WaveRamp ramp;
+  bool ramped = false;  // the ramp at t, found for the first station evaluated
+  for (int j = 0; j < n; ++j) {
+    if (valid && std::abs(t - sea.base_t[j]) <= sea.base_reach_t[j] &&
+        (x.col(j) - sea.base_x.col(j)).norm() <= sea.base_reach_x[j])
+      continue;  // carried
+    if (!ramped) {
+      ramp = RampAt(wave.spec, t);
+      ramped = true;
     }
-    const WaveRamp ramp = RampAt(wave.spec, t);
-    for (int j = 0; j < n; ++j) {
-      const WaterKinematics w = KinematicsAt(wave, x.col(j), t, ramp);
-      sea.base_velocity.col(j) = w.velocity;
-      sea.base_acceleration.col(j) = w.acceleration;
-      sea.base_jerk.col(j) = w.jerk;
-      Eigen::Map<Mat>(sea.base_velocity_gradient.col(j).data()) = w.velocity_gradient;
-      Eigen::Map<Mat>(sea.base_acceleration_gradient.col(j).data()) = w.acceleration_gradient;
-      sea.base_eta[j] = w.eta;
-      sea.base_eta_rate[j] = w.eta_rate;
-      sea.base_eta_gradient.col(j) = w.eta_gradient;
-    }
-    sea.base_x = x;
-    sea.base_t = t;
-    sea.base_scale = wave.sea_scale;
-    sea.base_valid = true;
+    const WaterKinematics w = KinematicsAt(wave, x.col(j), t, ramp);
+    sea.base_velocity.col(j) = w.velocity;
+    sea.base_acceleration.col(j) = w.acceleration;
+    sea.base_jerk.col(j) = w.jerk;
+    Eigen::Map<Mat>(sea.base_velocity_gradient.col(j).data()) = w.velocity_gradient;
+    Eigen::Map<Mat>(sea.base_acceleration_gradient.col(j).data()) = w.acceleration_gradient;
+    sea.base_eta[j] = w.eta;
+    sea.base_eta_rate[j] = w.eta_rate;
+    sea.base_eta_gradient.col(j) = w.eta_gradient;
+    sea.base_x.col(j) = x.col(j);
+    sea.base_t[j] = t;
+    // Without a component summed (none: too deep for all), the whole sea's highest.
+    sea.base_reach_t[j] = reach / (w.omega_max > 0 ? w.omega_max : wave.sea->max_omega);
+    sea.base_reach_x[j] = reach / (w.k_max > 0 ? w.k_max : wave.sea->max_k);
     ++sea.exact_evaluations;
   }
-  const double dt = t - sea.base_t;  // [s]
+  sea.base_scale = wave.sea_scale;
+  sea.base_valid = true;
   sea.velocity_gradient = sea.base_velocity_gradient;
   sea.acceleration_gradient = sea.base_acceleration_gradient;
   for (int j = 0; j < n; ++j) {
+    const double dt = t - sea.base_t[j];          // [s]
     const Vec dx = x.col(j) - sea.base_x.col(j);  // [m]
     const Eigen::Map<const Mat> Gu(sea.base_velocity_gradient.col(j).data());
     const Eigen::Map<const Mat> Ga(sea.base_acceleration_gradient.col(j).data());

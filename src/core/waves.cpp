@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/sea_components.h"
 
@@ -125,7 +126,7 @@ namespace {
 template <class Components>
 WaterKinematics SumKinematics(const WaveSpec& spec, int n, const Components& component,
                               const Vec& position, double t, const WaveRamp& ramp,
-                              double* trig) {
+                              double* trig, double cutoff) {
   WaterKinematics out;
   const double R = ramp.value, dR = ramp.rate, ddR = ramp.rate2, h = spec.depth;
   const double px = position[0], pz = position[2];
@@ -218,10 +219,15 @@ WaterKinematics SumKinematics(const WaveSpec& spec, int n, const Components& com
   };
   Sums u, acc;
   double jx = 0, jz = 0, jv = 0;  // the jerk's sums: sum j_h e, sum j_v
+  // The components too deep here to matter: 2 e^{k z_e} < cutoff, k above k_cut [1/m].
+  const double k_cut = cutoff > 0 && ze < 0 ? std::log(2 / cutoff) / -ze
+                                            : std::numeric_limits<double>::infinity();
   for (int i = 0; i < n; ++i) {
     const Component c = component(i);
-    if (c.a == 0) continue;
+    if (c.a == 0 || c.k > k_cut) continue;
     const double k = c.k, w = c.w;
+    out.omega_max = std::max(out.omega_max, w);
+    out.k_max = std::max(out.k_max, k);
     const auto profile = [&](double at, double* C, double* S) {
       const double e1 = std::exp(k * at), e2 = e1 > 0 ? c.decay / e1 : 0.0;
       *C = (e1 + e2) / c.decay_gap;
@@ -277,14 +283,14 @@ WaterKinematics KinematicsAt(const Wave& wave, const Vec& position, double t,
   if (!wave.irregular()) {
     double trig[2];
     const Component c = RegularComponent(wave);
-    return SumKinematics(wave.spec, 1, [&](int) { return c; }, position, t, ramp, trig);
+    return SumKinematics(wave.spec, 1, [&](int) { return c; }, position, t, ramp, trig, 0.0);
   }
   // The cosines and sines of every component's phase: a buffer per thread, sized once.
   thread_local std::vector<double> trig;
   const int n = wave.sea->size();
   if (static_cast<int>(trig.size()) < 2 * n) trig.resize(2 * n);
   return SumKinematics(wave.spec, n, [&](int i) { return SeaComponent(wave, i); }, position, t,
-                       ramp, trig.data());
+                       ramp, trig.data(), wave.sea_cutoff);
 }
 
 }  // namespace cablefilm

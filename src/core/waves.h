@@ -82,6 +82,12 @@ struct Wave {
   // omega_max |t - t_0| and k_max |x - x_0| stay below it, the error is at most about half its
   // square (5e-5 at 0.01) of the shortest component's own part. 0: every evaluation exact.
   double sea_reach = 0.01;
+  // An irregular sea's components whose depth profile at a station, cosh(k (z_e + h)) /
+  // cosh(k h) <= 2 e^{k z_e}, is below this fraction of its value at the surface are left out
+  // of the station's velocity and acceleration (not of the surface's elevation): at 1e-8, 20 m
+  // down in a JONSWAP sea of Tp 10 s every component shorter than 6.6 m (omega above 3.1
+  // rad/s), 100 m down those shorter than 33 m. 0: every component everywhere.
+  double sea_cutoff = 1e-8;
   // The shortest wave length present [m]: the regular wave's, or the shortest component's.
   double shortest_length() const;
   // The highest crest to expect above the still water level [m]: a, or for a sea Hs (about the
@@ -106,6 +112,10 @@ struct WaterKinematics {
   Mat acceleration_gradient = Mat::Zero();  // d acceleration / d position [1/s^2]
   double eta_rate = 0;                   // d eta / dt [m/s]
   Vec jerk = Vec::Zero();                // the acceleration's local rate [m/s^3]
+  // An irregular sea: the highest frequency [rad/s] and wave number [1/m] of the components
+  // summed into the velocity and acceleration here (Wave::sea_cutoff leaves out those too deep
+  // to matter); 0 when none.
+  double omega_max = 0, k_max = 0;
 };
 WaterKinematics KinematicsAt(const Wave& wave, const Vec& position, double t);
 // The same with the ramp at t given (RampAt(wave.spec, t)): one ramp for many points.

@@ -218,7 +218,8 @@ TEST(SeaComponents, KinematicsAreTheSumOfTheComponentsAndTheirGradientsHold) {
   d.spreading = 5;
   d.seed = 11;
   const SeaComponents sea = SpectrumComponents(Jonswap(3.0, 8.0, 3.3), d, kG, 60.0);
-  const Wave linear = SeaWave(sea, 3.0, 8.0, 60.0, WaveKinematics::kLinear);
+  Wave linear = SeaWave(sea, 3.0, 8.0, 60.0, WaveKinematics::kLinear);
+  linear.sea_cutoff = 0;  // every component, as the regular waves sum them
   double su = 0, sa = 0;  // scales of the velocity [m/s] and acceleration [m/s^2]
   for (int i = 0; i < sea.size(); ++i) {
     su += sea.amplitude[i] * sea.omega[i];
@@ -255,6 +256,47 @@ TEST(SeaComponents, KinematicsAreTheSumOfTheComponentsAndTheirGradientsHold) {
     for (double k : sea.k) kmax = std::max(kmax, k);
     EXPECT_LE((w.velocity_gradient - Gu).cwiseAbs().maxCoeff(), 1e-6 * su * kmax) << y;
     EXPECT_LE((w.acceleration_gradient - Ga).cwiseAbs().maxCoeff(), 1e-6 * sa * kmax) << y;
+  }
+}
+
+// A component whose depth profile at a station is under the cutoff (1e-8) of its surface value
+// is left out of the station's velocity and acceleration: each left out moves them by at most
+// the cutoff times its part at the surface, so all together by at most 1e-8 of the scales
+// sum a omega and sum a omega^2 (and their gradients by that times k_max). A JONSWAP storm (Hs
+// 6 m, Tp 10 s, 200 components to 4 rad/s) in 100 m of water: near the surface nothing is left
+// out (the same sums to the bit); deeper the shortest components are.
+TEST(SeaComponents, ComponentsTooDeepToMatterAreLeftOut) {
+  SeaDiscretization d;
+  d.seed = 5;
+  const SeaComponents sea = SpectrumComponents(Jonswap(6.0, 10.0, 3.3), d, kG, 100.0);
+  const Wave cut = SeaWave(sea, 6.0, 10.0, 100.0);
+  Wave all = cut;
+  all.sea_cutoff = 0;
+  double su = 0, sa = 0;  // the scales [m/s], [m/s^2]
+  for (int i = 0; i < sea.size(); ++i) {
+    su += sea.amplitude[i] * sea.omega[i];
+    sa += sea.amplitude[i] * sea.omega[i] * sea.omega[i];
+  }
+  for (double t : {20.0, 75.0}) {
+    for (double y : {-2.0, -20.0, -50.0, -99.0}) {
+      const Vec at(30.0, y, -8.0);
+      const WaterKinematics a = KinematicsAt(cut, at, t), b = KinematicsAt(all, at, t);
+      EXPECT_EQ(a.eta, b.eta);  // the surface is every component's
+      EXPECT_LE((a.velocity - b.velocity).norm(), 1e-8 * su) << y;
+      EXPECT_LE((a.acceleration - b.acceleration).norm(), 1e-8 * sa) << y;
+      EXPECT_LE((a.velocity_gradient - b.velocity_gradient).cwiseAbs().maxCoeff(),
+                1e-8 * su * sea.max_k) << y;
+      EXPECT_LE((a.acceleration_gradient - b.acceleration_gradient).cwiseAbs().maxCoeff(),
+                1e-8 * sa * sea.max_k) << y;
+      EXPECT_EQ(b.omega_max, sea.max_omega);
+      if (y == -2.0) {  // nothing left out near the surface
+        EXPECT_EQ(a.velocity, b.velocity);
+        EXPECT_EQ(a.omega_max, sea.max_omega);
+      } else {  // the short ones left out: 2 e^{k z_e} < 1e-8 for k above 19.1 / |z_e|
+        EXPECT_LT(a.omega_max, 0.8 * sea.max_omega) << y;
+        EXPECT_LT(a.k_max, 19.2 / (-y - 6.0)) << y;  // z_e within the crests' 6 m of y
+      }
+    }
   }
 }
 
