@@ -348,12 +348,18 @@ void ExpectWindowFilm(const RunReport& r, const std::vector<Row>& rows, double f
   EXPECT_DOUBLE_EQ(r.film.peak_t, in.t);
 }
 
-TEST_F(Pictures, AWindowOfTheRunIsFilmedFromItsStateThere) {
+// The options of a run into dir/out whose film is the window from `start` to `end` [s].
+RunOptions WindowOptions(const fs::path& dir, double start, double end) {
   RunOptions o;
-  o.out_dir = (dir_ / "out").string();
+  o.out_dir = (dir / "out").string();
   o.window_given = true;
-  o.window.start = 0.5;
-  o.window.end = 1.5;
+  o.window.start = start;
+  o.window.end = end;
+  return o;
+}
+
+TEST_F(Pictures, AWindowOfTheRunIsFilmedFromItsStateThere) {
+  const RunOptions o = WindowOptions(dir_, 0.5, 1.5);
   RunReport r;
   ASSERT_EQ(RunCommand(Scene(), o, &r), 0);
   const std::vector<Row> rows = ReadRows(dir_ / "out" / "timeseries.csv");
@@ -388,11 +394,7 @@ TEST_F(Pictures, APeakWindowIsTheSecondsAroundTheRunsPeak) {
 TEST_F(Pictures, AWindowOffTheRowsStepsItsFramesFromItsFirstRow) {
   // 3 frames a second do not fall on the 0.1 s rows: frames at 1.0, 4/3, 5/3 and 2.0 s, stepped
   // from the clump system's state at its row of 1.0 s (its free clump's motion in it).
-  RunOptions o;
-  o.out_dir = (dir_ / "out").string();
-  o.window_given = true;
-  o.window.start = 1.0;
-  o.window.end = 2.0;
+  const RunOptions o = WindowOptions(dir_, 1.0, 2.0);
   RunReport r;
   ASSERT_EQ(RunCommand(ClumpSystem("3.0", "3"), o, &r), 0);
   EXPECT_EQ(r.film.frames, 4);
@@ -408,11 +410,7 @@ TEST_F(Pictures, AWindowOffTheRowsStepsItsFramesFromItsFirstRow) {
 TEST_F(Pictures, AWindowOfASystemIsItsRowsBitForBit) {
   // On the rows (5 frames a second, 0.1 s rows), from the state kept at 1.0 s: the lines and the
   // free clump go on as the run did.
-  RunOptions o;
-  o.out_dir = (dir_ / "out").string();
-  o.window_given = true;
-  o.window.start = 1.0;
-  o.window.end = 2.0;
+  const RunOptions o = WindowOptions(dir_, 1.0, 2.0);
   RunReport r;
   ASSERT_EQ(RunCommand(ClumpSystem("3.0", "5"), o, &r), 0);
   EXPECT_EQ(r.film.frames, 6);
@@ -425,11 +423,7 @@ TEST_F(Pictures, AWindowOfASystemIsItsRowsBitForBit) {
 }
 
 TEST_F(Pictures, AWindowOutsideTheRunIsRefusedBeforeItRuns) {
-  RunOptions o;
-  o.out_dir = (dir_ / "out").string();
-  o.window_given = true;
-  o.window.start = 1.0;
-  o.window.end = 5.0;
+  const RunOptions o = WindowOptions(dir_, 1.0, 5.0);
   try {
     RunCommand(Scene(), o, nullptr);
     FAIL() << "a window past the run's end was taken";

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/sea_components.h"
@@ -46,16 +47,21 @@ std::vector<double> Tensions(const SceneDef& scene, double reach, double cutoff)
   return r.lines[0].tension;
 }
 
+// The largest tension of `reference` and the largest difference of `other` from it [N].
+std::pair<double, double> PeakAndWorst(const std::vector<double>& other,
+                                       const std::vector<double>& reference) {
+  EXPECT_EQ(other.size(), reference.size());
+  double peak = 0, worst = 0;
+  for (std::size_t i = 0; i < reference.size() && i < other.size(); ++i) {
+    peak = std::max(peak, std::abs(reference[i]));
+    worst = std::max(worst, std::abs(other[i] - reference[i]));
+  }
+  return {peak, worst};
+}
+
 TEST(IrregularSea, CarriedKinematicsAgreeWithExactOnes) {
   const SceneDef scene = ParseScene(kScene, "scenes/storm.toml");
-  auto tensions = [&](double reach) { return Tensions(scene, reach, 1e-8); };
-  const auto carried = tensions(0.01), exact = tensions(0.0);
-  ASSERT_EQ(carried.size(), exact.size());
-  double peak = 0, worst = 0;
-  for (std::size_t i = 0; i < exact.size(); ++i) {
-    peak = std::max(peak, std::abs(exact[i]));
-    worst = std::max(worst, std::abs(carried[i] - exact[i]));
-  }
+  const auto [peak, worst] = PeakAndWorst(Tensions(scene, 0.01, 1e-8), Tensions(scene, 0.0, 1e-8));
   std::printf("[ chain in a JONSWAP sea, 30 s ] peak %.1f kN; carried kinematics within %.2e of "
               "it\n", peak / 1e3, worst / peak);
   EXPECT_GT(peak, 1e5);
@@ -69,13 +75,7 @@ TEST(IrregularSea, CarriedKinematicsAgreeWithExactOnes) {
 // (3.4e-8 above). Measured 3.3e-8 of the peak; bound 1e-6, far under the scheme's own error.
 TEST(IrregularSea, ComponentsLeftOutAtDepthChangeNoTension) {
   const SceneDef scene = ParseScene(kScene, "scenes/storm.toml");
-  const std::vector<double> cut = Tensions(scene, 0.01, 1e-8), all = Tensions(scene, 0.01, 0.0);
-  ASSERT_EQ(cut.size(), all.size());
-  double peak = 0, worst = 0;
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    peak = std::max(peak, std::abs(all[i]));
-    worst = std::max(worst, std::abs(cut[i] - all[i]));
-  }
+  const auto [peak, worst] = PeakAndWorst(Tensions(scene, 0.01, 1e-8), Tensions(scene, 0.01, 0.0));
   std::printf("[ chain in a JONSWAP sea, 30 s ] peak %.1f kN; components left out at depth move "
               "the tensions by %.2e of it\n", peak / 1e3, worst / peak);
   EXPECT_GT(peak, 1e5);
@@ -84,9 +84,8 @@ TEST(IrregularSea, ComponentsLeftOutAtDepthChangeNoTension) {
 
 // A body driven through RAO tables in a sea, as a run moves it: each row's pose is the sum over
 // the components of R(t) r(omega_i) a_i cos(theta_i(x0, t) + p(omega_i)) for its heave and its
-// pitch (R the sea's ramp),
-// computed here from the components and the tables by hand (1e-9 m, 1e-9 rad: the run's poses
-// are the motion's own doubles). So its motion spectrum is |RAO|^2 S, the component variances
+// pitch (R the sea's ramp), computed here from the components and the tables by hand (1e-9 m,
+// 1e-9 rad: the run's poses are the motion's own doubles). So its motion spectrum is |RAO|^2 S, the component variances
 // r^2 a^2 / 2 (its variance over three hours within the sampling error of such a record is
 // SeaScene.EndFollowsTheSeaThroughItsRaos's, on the same motion). A chain hangs from it.
 TEST(IrregularSea, ABodyFollowsTheSeaThroughItsRaosInARun) {
