@@ -290,6 +290,13 @@ void PrintScene(const SceneDef& scene, const Model& model, const TimeGrid& grid)
   std::vector<std::string> notes, warnings;
   DescribeTables(scene, &notes, &warnings);
   for (const std::string& n : notes) std::printf("  %s\n", n.c_str());
+  const FilmWindow& window = scene.film.window;
+  if (scene.output.film && window.peak_width > 0)
+    std::printf("  film: the %.6g s around the run's peak (film.window), from the state the run "
+                "keeps there\n", window.peak_width);
+  else if (scene.output.film && !window.whole())
+    std::printf("  film: from %.6g to %.6g s (film.window), from the state the run keeps there\n",
+                window.start, window.end);
   for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
   for (const std::string& w : warnings) std::printf("  warning: %s\n", w.c_str());
   for (std::size_t i = 0; i < model.lines.size(); ++i) {
