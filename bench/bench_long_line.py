@@ -49,8 +49,8 @@ def run_once(program, scene, out):
     text = log.read_text(errors='replace')
     if os.waitstatus_to_exitcode(status) != 0:
         raise SystemExit(f'{program} run {scene} failed:\n{text}')
-    sim = re.search(r'simulated \S+ s in (\S+) s of computer time: (\d+) steps \((\d+) rejected\)'
-                    r'.*?, (\S+) Newton iterations per step', text)
+    sim = re.search(r'simulated \S+ s in \S+ s of computer time \((\S+) s of CPU\): (\d+) steps '
+                    r'\((\d+) rejected\).*?, (\S+) Newton iterations per step', text)
     if not sim:
         raise SystemExit(f'no "simulated ..." line in the output of {program}:\n{text}')
     return {'simulation': float(sim.group(1)), 'steps': int(sim.group(2)),

@@ -102,8 +102,8 @@ void PrintRunEnd(const Run& run) {
   const bool alone = model.lines.size() == 1;
   long stations = 0;
   for (const LineModel& m : model.lines) stations += m.stations();
-  std::printf("simulated %.6g s in %.3g s of computer time: %s", s.duration, s.wall,
-              DescribeSteps(s.stats).c_str());
+  std::printf("simulated %.6g s in %.3g s of computer time (%.3g s of CPU): %s", s.duration,
+              s.wall, s.cpu, DescribeSteps(s.stats).c_str());
   if (alone)
     std::printf(", %.3g station-steps/s", static_cast<double>(s.stats.steps) * stations / s.wall);
   std::printf("\n");

@@ -37,7 +37,9 @@ void WriteRunReport(const std::string& path, const RunSummary& f) {
                f.start_tolerance);
   std::fprintf(out, "start_end = %.17g            # the start's end [s]\n", f.start_end);
   std::fprintf(out, "duration = %.17g             # simulated [s]\n", f.duration);
-  std::fprintf(out, "computer_time = %.6g        # [s]\n", f.wall);
+  std::fprintf(out, "computer_time = %.6g        # [s] wall time of the simulation\n", f.wall);
+  std::fprintf(out, "cpu_time = %.6g             # [s] its CPU time (the stepping thread's)\n",
+               f.cpu);
   std::fprintf(out, "steps = %ld\nrejected_steps = %ld\nnewton_iterations = %ld\n", f.stats.steps,
                f.stats.rejected, f.stats.newton_iterations);
   std::fprintf(out, "snap_windows = %ld           # times the implicit steps left a snap to explicit ones\n",
@@ -136,6 +138,7 @@ bool ReadRunReport(const std::string& path, RunSummary* s) {
   s->start_end = number("start_end", 0);
   s->duration = number("duration", 0);
   s->wall = number("computer_time", 0);
+  s->cpu = number("cpu_time", 0);
   s->stats.steps = whole("steps");
   s->stats.rejected = whole("rejected_steps");
   s->stats.newton_iterations = whole("newton_iterations");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 
 #include "core/end_loads.h"
@@ -169,9 +170,17 @@ void ExecuteRun(Run& run, const std::vector<RowSink*>& sinks) {
   std::vector<RowSink*> all{&record};
   all.insert(all.end(), sinks.begin(), sinks.end());
   Data d = run.initial;
+  // The wall time drifts with the machine's load; the stepping thread's CPU time does not.
+  auto cpu_now = [] {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);  // [s]
+  };
+  const double cpu0 = cpu_now();
   const auto t0 = std::chrono::steady_clock::now();
   const RunEnd end = Drive(run.model, d, run.inputs, run.grid, all);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double cpu = cpu_now() - cpu0;
   const RunSummary& first = run.lines.front().summary;
   std::string failure;
   if (!end.failure.empty())
@@ -180,6 +189,7 @@ void ExecuteRun(Run& run, const std::vector<RowSink*>& sinks) {
   for (std::size_t i = 0; i < run.lines.size(); ++i) {
     RunSummary& l = run.lines[i].summary;
     l.wall = wall;
+    l.cpu = cpu;
     l.duration = d.t;
     l.completed = end.completed;
     l.failure = failure;
@@ -199,6 +209,7 @@ void ExecuteRun(Run& run, const std::vector<RowSink*>& sinks) {
   }
   RunSummary& s = run.summary;
   s.wall = wall;
+  s.cpu = cpu;
   s.duration = d.t;
   s.rows = first.rows;
   s.completed = end.completed;

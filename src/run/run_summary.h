@@ -19,7 +19,8 @@ struct RunSummary {
   double start_tolerance = 0;     // the stricter one while the motion starts [m]; 0: none
   double start_end = 0;           // until then [s]
   double duration = 0;            // simulated: the time reached [s]
-  double wall = 0;                // computer time of the stepping [s]
+  double wall = 0;                // computer time of the stepping: wall time [s]
+  double cpu = 0;                 // its CPU time, the stepping thread's (steady under load) [s]
   StepStats stats;
   long rows = 0;                  // output rows handed out (t = 0 included)
   // Over the rows, as timeseries.csv has them: the largest tension_max (the first row holding

@@ -123,7 +123,8 @@ def same_results(a, b, what):
     for name in ("equilibrium.csv", "timeseries.csv"):
         if (a / name).read_bytes() != (b / name).read_bytes():
             failures.append(f"{what}: {name} differs")
-    keep = lambda p: [l for l in p.read_text().splitlines() if not l.startswith("computer_time")]
+    keep = lambda p: [l for l in p.read_text().splitlines()
+                      if not l.startswith(("computer_time", "cpu_time"))]
     if keep(a / "run_report.toml") != keep(b / "run_report.toml"):
         failures.append(f"{what}: run_report.toml differs beyond the computer time")
     fa, fb = netCDF4.Dataset(a / "results.nc"), netCDF4.Dataset(b / "results.nc")

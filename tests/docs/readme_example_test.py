@@ -74,7 +74,7 @@ def main():
                       'run: end tensions')
     same('end tensions [N]', (int(anchor), int(buoy)), (round(float(start)), round(float(end))))
     steps, = find(r'simulates the 60 s in (\d+) steps', readme, 'README: steps')
-    same('steps', steps, find(r'simulated 60 s in [\d.e+-]+ s of computer time: (\d+) steps',
+    same('steps', steps, find(r'simulated 60 s in [\d.e+-]+ s of computer time \([\d.e+-]+ s of CPU\): (\d+) steps',
                               result, 'run: steps')[0])
     peak, = find(r'prints `(peak tension [^`]+)`', readme, 'README: peak')
     same('peak line', peak, find(r'(peak tension [\d.]+ N at t = [\d.]+ s in link \d+)', result,
