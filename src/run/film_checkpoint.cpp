@@ -6,8 +6,17 @@
 namespace cablefilm {
 namespace {
 
-long HalfRows(const FilmWindow& w, double interval) {
-  return std::lround(0.5 * w.peak_width / interval);
+// A time [s] as a row of `grid`, rounded by `round` and held within the run's rows (in doubles
+// first: a time of 1e9 s over rows of 1e-10 s is no long).
+template <class Round>
+long RowOf(double t, const TimeGrid& grid, Round round) {
+  const double row = round(t / grid.interval);
+  return static_cast<long>(std::clamp(std::isfinite(row) ? row : 0.0, 0.0,
+                                      static_cast<double>(grid.outputs)));
+}
+
+long HalfRows(const FilmWindow& w, const TimeGrid& grid) {
+  return RowOf(0.5 * w.peak_width, grid, [](double r) { return std::round(r); });
 }
 
 }  // namespace
@@ -15,14 +24,13 @@ long HalfRows(const FilmWindow& w, double interval) {
 RowSpan WindowRows(const FilmWindow& w, const TimeGrid& grid, double peak_t) {
   const long outputs = grid.outputs;
   if (w.peak_width > 0) {
-    const long half = HalfRows(w, grid.interval);
-    const long peak = std::isfinite(peak_t) ? std::lround(peak_t / grid.interval) : 0;
-    return {std::clamp(peak - half, 0L, outputs), std::clamp(peak + half, 0L, outputs)};
+    const long half = HalfRows(w, grid);
+    const long peak = RowOf(peak_t, grid, [](double r) { return std::round(r); });
+    return {std::max(peak - half, 0L), std::min(peak + half, outputs)};
   }
   if (w.end < 0) return {0, outputs};
-  const long first = static_cast<long>(std::floor(w.start / grid.interval + 1e-9));
-  const long last = static_cast<long>(std::ceil(w.end / grid.interval - 1e-9));
-  return {std::clamp(first, 0L, outputs), std::clamp(last, 0L, outputs)};
+  return {RowOf(w.start, grid, [](double r) { return std::floor(r + 1e-9); }),
+          RowOf(w.end, grid, [](double r) { return std::ceil(r - 1e-9); })};
 }
 
 std::unique_ptr<FilmCheckpoint> FilmCheckpoint::AtRow(long row) {
@@ -36,7 +44,7 @@ std::unique_ptr<FilmCheckpoint> FilmCheckpoint::AroundPeak(long half_rows) {
 
 std::unique_ptr<FilmCheckpoint> FilmCheckpoint::For(const FilmWindow& w, const TimeGrid& grid) {
   if (w.whole()) return nullptr;
-  if (w.peak_width > 0) return AroundPeak(HalfRows(w, grid.interval));
+  if (w.peak_width > 0) return AroundPeak(HalfRows(w, grid));
   return AtRow(WindowRows(w, grid, 0).first);
 }
 

@@ -1,6 +1,7 @@
 #include "scene/film_settings.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 #include "scene/film_view.h"
@@ -91,10 +92,12 @@ std::string FilmWindowFitProblem(const FilmWindow& w, double span) {
          FormatNumber(w.start) + " to " + FormatNumber(w.end) + " s";
 }
 
-double FilmWindowLength(const FilmWindow& w, double span) {
-  if (w.peak_width > 0) return std::min(w.peak_width, span);
+double FilmWindowLength(const FilmWindow& w, double span, double interval) {
+  if (w.peak_width > 0) return std::min(2 * std::round(0.5 * w.peak_width / interval) * interval, span);
   if (w.end < 0) return span;
-  return std::min(w.end, span) - w.start;
+  const double first = std::floor(w.start / interval + 1e-9) * interval;
+  const double last = std::ceil(w.end / interval - 1e-9) * interval;
+  return std::min(last, span) - std::min(first, span);
 }
 
 FilmSettings ResolveFilm(const SceneDef& scene, const FilmOverrides& o,
@@ -130,7 +133,8 @@ FilmSettings ResolveFilm(const SceneDef& scene, const FilmOverrides& o,
     throw Error(EscapeText(scene.path) + ": " + (o.window_given ? names.window : "film.window") +
                 ": " + misfit);
   const std::string problem =
-      FilmFramesProblem(FilmWindowLength(s.look.window, span), s.look.fps, s.look.speed);
+      FilmFramesProblem(FilmWindowLength(s.look.window, span, scene.output.interval), s.look.fps,
+                        s.look.speed);
   if (!problem.empty()) {
     const std::string key = o.speed > 0 ? names.speed : o.fps > 0 ? names.fps : "film.speed";
     throw Error(EscapeText(scene.path) + ": " + key + ": " + problem);

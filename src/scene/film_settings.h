@@ -30,10 +30,12 @@ std::string ViewProblem(const std::string& view);
 // A window from its text: "peak:W" (W seconds around the run's peak), "T0,T1" (from T0 to T1
 // seconds) or "whole"; "" (then *window is it) or "expected ..., got ...".
 std::string FilmWindowProblem(const std::string& text, FilmWindow* window);
-// The seconds of a run of `span` seconds a window shows; "" or "expected ..." when it does not
-// fit the run (a span within 0 to the run's end, a positive width).
+// "" or "expected ..." when a window does not fit a run of `span` seconds (a span within 0 to
+// the run's end, a positive width).
 std::string FilmWindowFitProblem(const FilmWindow& window, double span);
-double FilmWindowLength(const FilmWindow& window, double span);
+// The seconds a window shows of a run of `span` seconds with rows every `interval`: its ends on
+// rows as the film takes them (run/film_checkpoint.h, WindowRows), at most the run.
+double FilmWindowLength(const FilmWindow& window, double span, double interval);
 
 // The names a front end gives its settings, for its messages.
 struct FilmKeyNames {

@@ -2,6 +2,7 @@
 // Data the run keeps for it while it goes, the latest at or before the window's first row.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 
 #include "run/film_checkpoint.h"
@@ -93,6 +94,19 @@ TEST(FilmCheckpoint, TheRowsOfAWindow) {
   r = WindowRows(FilmWindow{}, grid, 7.0);  // the whole run
   EXPECT_EQ(r.first, 0);
   EXPECT_EQ(r.last, 40);
+  // Times of no row a long holds (1e9 s over rows of 1e-10 s), and no peak: within the run.
+  TimeGrid fine;
+  fine.interval = 1e-10;
+  fine.outputs = 100;
+  peak.peak_width = 1e9;
+  r = WindowRows(peak, fine, std::nan(""));
+  EXPECT_EQ(r.first, 0);
+  EXPECT_EQ(r.last, 100);
+  span.start = 1e8;
+  span.end = 1e9;
+  r = WindowRows(span, fine, 0.0);
+  EXPECT_EQ(r.first, 100);
+  EXPECT_EQ(r.last, 100);
 }
 
 }  // namespace

@@ -676,8 +676,13 @@ TEST(SceneLoader, AFilmWindowIsAPeakWidthOrASpanWithinTheRun) {
   const std::string film = With("film = false", "film = true\ninterval = 0.05");
   ExpectFilmError(film + "[film]\nwindow = [10, 61]\n", "film.window",
                   {"expected a window within the run, from 0 to 60 s, got 10 to 61 s"});
+  // Its frames are counted over its rows as the film takes them: 0.01 s around the peak is no
+  // row either side at rows of 0.05 s; [0.1, 0.2] s at rows of 30 s is the first 30 s.
   ExpectFilmError(film + "[film]\nwindow = \"peak:0.01\"\n", "film.speed",
-                  {"0.01 s simulated", "make 0 frames"});
+                  {"0 s simulated", "make 0 frames"});
+  const std::string coarse = With("film = false", "film = true\ninterval = 30.0");
+  ExpectFilmError(coarse + "[film]\nwindow = [0.1, 0.2]\nfps = 240\nspeed = 0.001\n", "film.speed",
+                  {"30 s simulated", "7.2e6 frames"});
   EXPECT_NO_THROW(ResolveFilm(ParseScene(film + "[film]\nwindow = \"peak:600\"\n", kFile), {},
                               kCommandLineNames));  // wider than the run: the whole run
 }
