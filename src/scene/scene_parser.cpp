@@ -973,6 +973,12 @@ void ReadLines(TableReader& top, SceneDef& scene) {
                                      Quote(point));
       (std::string(key) == "start" ? line.start : line.end) = index;
     }
+    // A line from a point back to itself has no chord to hang along (its statics' motion took
+    // a fuzzed one through seconds of steps a millisecond long).
+    if (line.start == line.end)
+      r.Fail(t->get("end"), "end",
+             "expected another point than its start, " + Quote(scene.points[line.start].name) +
+                 ": a line runs between two points");
     ReadSections(r, name, materials, line.sections, line.weights);
     if (const std::string far = LineReachProblem(line, scene); !far.empty())
       r.Fail(t->get("end"), "end", far);

@@ -1192,6 +1192,9 @@ TEST(SceneLoader, SystemErrors) {
   ExpectError(kSystem + "\n[cable]\n", "cable", {"either one line", "this one has both"});
   ExpectError(SystemWith("end = \"clump\"", "end = \"clamp\""), "line[0].end",
               {"no point is named \"clamp\""});
+  // A line from a point back to itself (a fuzzed scene's: its statics crawled for seconds).
+  ExpectError(SystemWith("start = \"anchor\"", "start = \"clump\""), "line[0].end",
+              {"expected another point than its start, \"clump\""});
   ExpectError(SystemWith("name = \"fairlead\"", "name = \"clump\""), "point[2].name",
               {"unique name"});
   ExpectError(SystemWith("name = \"upper\"", "name = \"lower\""), "line[1].name",
